@@ -1,0 +1,110 @@
+//! GL constants with their C names and values (`GL/gl.h`).
+#![allow(missing_docs)]
+
+use super::types::{GLboolean, GLenum};
+
+pub const GL_FALSE: GLboolean = 0;
+pub const GL_TRUE: GLboolean = 1;
+
+// Errors.
+pub const GL_NO_ERROR: GLenum = 0;
+pub const GL_INVALID_ENUM: GLenum = 0x0500;
+pub const GL_INVALID_VALUE: GLenum = 0x0501;
+pub const GL_INVALID_OPERATION: GLenum = 0x0502;
+pub const GL_STACK_OVERFLOW: GLenum = 0x0503;
+pub const GL_STACK_UNDERFLOW: GLenum = 0x0504;
+pub const GL_OUT_OF_MEMORY: GLenum = 0x0505;
+
+// Primitives.
+pub const GL_POINTS: GLenum = 0x0000;
+pub const GL_LINES: GLenum = 0x0001;
+pub const GL_LINE_LOOP: GLenum = 0x0002;
+pub const GL_LINE_STRIP: GLenum = 0x0003;
+pub const GL_TRIANGLES: GLenum = 0x0004;
+pub const GL_TRIANGLE_STRIP: GLenum = 0x0005;
+pub const GL_TRIANGLE_FAN: GLenum = 0x0006;
+pub const GL_QUADS: GLenum = 0x0007;
+pub const GL_QUAD_STRIP: GLenum = 0x0008;
+pub const GL_POLYGON: GLenum = 0x0009;
+
+// Polygon / mesh modes.
+pub const GL_POINT: GLenum = 0x1B00;
+pub const GL_LINE: GLenum = 0x1B01;
+pub const GL_FILL: GLenum = 0x1B02;
+
+// Evaluator targets (GL 1.1 spec table 5.1).
+pub const GL_MAP1_COLOR_4: GLenum = 0x0D90;
+pub const GL_MAP1_INDEX: GLenum = 0x0D91;
+pub const GL_MAP1_NORMAL: GLenum = 0x0D92;
+pub const GL_MAP1_TEXTURE_COORD_1: GLenum = 0x0D93;
+pub const GL_MAP1_TEXTURE_COORD_2: GLenum = 0x0D94;
+pub const GL_MAP1_TEXTURE_COORD_3: GLenum = 0x0D95;
+pub const GL_MAP1_TEXTURE_COORD_4: GLenum = 0x0D96;
+pub const GL_MAP1_VERTEX_3: GLenum = 0x0D97;
+pub const GL_MAP1_VERTEX_4: GLenum = 0x0D98;
+pub const GL_MAP2_COLOR_4: GLenum = 0x0DB0;
+pub const GL_MAP2_INDEX: GLenum = 0x0DB1;
+pub const GL_MAP2_NORMAL: GLenum = 0x0DB2;
+pub const GL_MAP2_TEXTURE_COORD_1: GLenum = 0x0DB3;
+pub const GL_MAP2_TEXTURE_COORD_2: GLenum = 0x0DB4;
+pub const GL_MAP2_TEXTURE_COORD_3: GLenum = 0x0DB5;
+pub const GL_MAP2_TEXTURE_COORD_4: GLenum = 0x0DB6;
+pub const GL_MAP2_VERTEX_3: GLenum = 0x0DB7;
+pub const GL_MAP2_VERTEX_4: GLenum = 0x0DB8;
+pub const GL_AUTO_NORMAL: GLenum = 0x0D80;
+
+// Evaluator queries.
+pub const GL_COEFF: GLenum = 0x0A00;
+pub const GL_ORDER: GLenum = 0x0A01;
+pub const GL_DOMAIN: GLenum = 0x0A02;
+pub const GL_MAX_EVAL_ORDER: GLenum = 0x0D30;
+pub const GL_MAP1_GRID_DOMAIN: GLenum = 0x0DD0;
+pub const GL_MAP1_GRID_SEGMENTS: GLenum = 0x0DD1;
+pub const GL_MAP2_GRID_DOMAIN: GLenum = 0x0DD2;
+pub const GL_MAP2_GRID_SEGMENTS: GLenum = 0x0DD3;
+
+// Capabilities accepted by enable/disable/is_enabled besides the maps.
+pub const GL_POINT_SMOOTH: GLenum = 0x0B10;
+pub const GL_LINE_SMOOTH: GLenum = 0x0B20;
+pub const GL_LINE_STIPPLE: GLenum = 0x0B24;
+pub const GL_POLYGON_SMOOTH: GLenum = 0x0B41;
+pub const GL_CULL_FACE: GLenum = 0x0B44;
+pub const GL_LIGHTING: GLenum = 0x0B50;
+pub const GL_COLOR_MATERIAL: GLenum = 0x0B57;
+pub const GL_FOG: GLenum = 0x0B60;
+pub const GL_DEPTH_TEST: GLenum = 0x0B71;
+pub const GL_NORMALIZE: GLenum = 0x0BA1;
+pub const GL_ALPHA_TEST: GLenum = 0x0BC0;
+pub const GL_DITHER: GLenum = 0x0BD0;
+pub const GL_BLEND: GLenum = 0x0BE2;
+pub const GL_SCISSOR_TEST: GLenum = 0x0C11;
+pub const GL_TEXTURE_GEN_S: GLenum = 0x0C60;
+pub const GL_TEXTURE_GEN_T: GLenum = 0x0C61;
+pub const GL_TEXTURE_GEN_R: GLenum = 0x0C62;
+pub const GL_TEXTURE_GEN_Q: GLenum = 0x0C63;
+pub const GL_TEXTURE_1D: GLenum = 0x0DE0;
+pub const GL_TEXTURE_2D: GLenum = 0x0DE1;
+pub const GL_POLYGON_OFFSET_FILL: GLenum = 0x8037;
+pub const GL_RESCALE_NORMAL: GLenum = 0x803A;
+pub const GL_MULTISAMPLE: GLenum = 0x809D;
+pub const GL_LIGHT0: GLenum = 0x4000;
+pub const GL_LIGHT1: GLenum = 0x4001;
+pub const GL_LIGHT2: GLenum = 0x4002;
+pub const GL_LIGHT3: GLenum = 0x4003;
+pub const GL_LIGHT4: GLenum = 0x4004;
+pub const GL_LIGHT5: GLenum = 0x4005;
+pub const GL_LIGHT6: GLenum = 0x4006;
+pub const GL_LIGHT7: GLenum = 0x4007;
+
+// Texture units.
+pub const GL_TEXTURE0: GLenum = 0x84C0;
+pub const GL_TEXTURE1: GLenum = 0x84C1;
+pub const GL_TEXTURE31: GLenum = 0x84DF;
+
+// Attribute bits.
+pub const GL_DEPTH_BUFFER_BIT: GLenum = 0x0000_0100;
+pub const GL_COLOR_BUFFER_BIT: GLenum = 0x0000_4000;
+pub const GL_EVAL_BIT: GLenum = 0x0001_0000;
+
+// Mesa's limit on evaluator order (`src/mesa/main/config.h` MAX_EVAL_ORDER).
+pub const MAX_EVAL_ORDER: i32 = 30;

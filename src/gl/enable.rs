@@ -1,0 +1,112 @@
+//! `glEnable` / `glDisable` / `glIsEnabled` for the capabilities this façade knows.
+
+use super::consts::*;
+use super::types::*;
+use super::Gl;
+use std::collections::BTreeSet;
+
+/// Capabilities other than the evaluator maps, which live in the evaluator state.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub(crate) struct Caps {
+    on: BTreeSet<GLenum>,
+}
+
+/// Capabilities accepted besides the maps and `GL_AUTO_NORMAL` (all initially off, except
+/// `GL_DITHER` and `GL_MULTISAMPLE`, which GL starts enabled).
+const KNOWN: &[GLenum] = &[
+    GL_POINT_SMOOTH,
+    GL_LINE_SMOOTH,
+    GL_LINE_STIPPLE,
+    GL_POLYGON_SMOOTH,
+    GL_CULL_FACE,
+    GL_LIGHTING,
+    GL_COLOR_MATERIAL,
+    GL_FOG,
+    GL_DEPTH_TEST,
+    GL_NORMALIZE,
+    GL_ALPHA_TEST,
+    GL_DITHER,
+    GL_BLEND,
+    GL_SCISSOR_TEST,
+    GL_TEXTURE_GEN_S,
+    GL_TEXTURE_GEN_T,
+    GL_TEXTURE_GEN_R,
+    GL_TEXTURE_GEN_Q,
+    GL_TEXTURE_1D,
+    GL_TEXTURE_2D,
+    GL_POLYGON_OFFSET_FILL,
+    GL_RESCALE_NORMAL,
+    GL_MULTISAMPLE,
+];
+
+impl Caps {
+    fn known(cap: GLenum) -> bool {
+        KNOWN.contains(&cap) || (GL_LIGHT0..=GL_LIGHT7).contains(&cap)
+    }
+
+    pub(crate) fn is_on(&self, cap: GLenum) -> bool {
+        let default_on = cap == GL_DITHER || cap == GL_MULTISAMPLE;
+        self.on.contains(&cap) != default_on
+    }
+
+    fn set(&mut self, cap: GLenum, on: bool) {
+        let default_on = cap == GL_DITHER || cap == GL_MULTISAMPLE;
+        if on != default_on {
+            self.on.insert(cap);
+        } else {
+            self.on.remove(&cap);
+        }
+    }
+}
+
+impl Gl {
+    /// `glEnable`.
+    pub fn enable(&mut self, cap: GLenum) {
+        self.set_capability(cap, true);
+    }
+
+    /// `glDisable`.
+    pub fn disable(&mut self, cap: GLenum) {
+        self.set_capability(cap, false);
+    }
+
+    /// `glIsEnabled`: `GL_TRUE` or `GL_FALSE`; an unknown capability gives `GL_INVALID_ENUM`.
+    pub fn is_enabled(&mut self, cap: GLenum) -> GLboolean {
+        if self.reject_inside_begin_end() {
+            return GL_FALSE;
+        }
+        let on = if let Some(on) = self.eval.is_enabled(cap) {
+            on
+        } else if Caps::known(cap) {
+            self.caps.is_on(cap)
+        } else {
+            self.set_error(GL_INVALID_ENUM);
+            return GL_FALSE;
+        };
+        if on {
+            GL_TRUE
+        } else {
+            GL_FALSE
+        }
+    }
+
+    fn set_capability(&mut self, cap: GLenum, on: bool) {
+        if self.reject_inside_begin_end() {
+            return;
+        }
+        if self.eval.set_enabled(cap, on) {
+            return;
+        }
+        if Caps::known(cap) {
+            self.caps.set(cap, on);
+        } else {
+            self.set_error(GL_INVALID_ENUM);
+        }
+    }
+
+    /// Whether a non-evaluator capability is on (for the renderer).
+    #[must_use]
+    pub fn capability(&self, cap: GLenum) -> bool {
+        self.eval.is_enabled(cap).unwrap_or_else(|| self.caps.is_on(cap))
+    }
+}

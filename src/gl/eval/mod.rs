@@ -1,0 +1,190 @@
+//! The evaluator state (GL 1.1 spec §5.1; Mesa `main/eval.c`, `vbo/vbo_exec_eval.c`): the 18
+//! maps with their control points, the enables, `GL_AUTO_NORMAL` and the two grids.
+
+mod coord;
+mod map;
+mod mesh;
+mod query;
+mod target;
+
+pub use target::{MapTarget, Slot};
+
+use super::consts::*;
+use super::types::*;
+pub(crate) use map::Map;
+
+
+/// A `glMapGrid` grid: `n` segments over [a, b], with the step GL stores (computed in float).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Grid {
+    pub n: i32,
+    pub a: f32,
+    pub b: f32,
+    pub step: f32,
+}
+
+impl Grid {
+    /// Initial grid: one segment over [0, 1]. Mesa leaves the step 0 here (a quirk, spec 1.4);
+    /// we use the step the spec implies, 1.
+    fn initial() -> Self {
+        Self { n: 1, a: 0.0, b: 1.0, step: 1.0 }
+    }
+
+    fn new(n: i32, a: f32, b: f32) -> Self {
+        Self { n, a, b, step: (b - a) / n as f32 }
+    }
+
+    /// The parameter of grid line `i`: exactly `b` at `i == n` (GL's one absolute numeric
+    /// requirement, §5.1), `a + i·step` otherwise (also outside 0..=n, extrapolating).
+    pub fn param(&self, i: i64) -> f32 {
+        if i == i64::from(self.n) {
+            self.b
+        } else {
+            self.a + i as f32 * self.step
+        }
+    }
+}
+
+/// Which map feeds each vertex attribute, after GL's precedence rules (spec 1.2).
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct ActiveMaps {
+    pub vertex: Option<Slot>,
+    pub color: Option<Slot>,
+    pub normal: Option<Slot>,
+    pub tex: Option<Slot>,
+}
+
+/// The evaluator part of a GL context.
+#[derive(Clone, Debug)]
+pub(crate) struct EvalState {
+    pub map1: [Map; Slot::COUNT],
+    pub map2: [Map; Slot::COUNT],
+    enabled1: [bool; Slot::COUNT],
+    enabled2: [bool; Slot::COUNT],
+    pub auto_normal: bool,
+    pub grid1: Grid,
+    pub grid2: (Grid, Grid),
+}
+
+impl Default for EvalState {
+    fn default() -> Self {
+        Self {
+            map1: Slot::ALL.map(|s| Map::initial(s, 1)),
+            map2: Slot::ALL.map(|s| Map::initial(s, 2)),
+            enabled1: [false; Slot::COUNT],
+            enabled2: [false; Slot::COUNT],
+            auto_normal: false,
+            grid1: Grid::initial(),
+            grid2: (Grid::initial(), Grid::initial()),
+        }
+    }
+}
+
+impl EvalState {
+    /// `Some(state)` if `cap` is a map target or `GL_AUTO_NORMAL`.
+    pub fn is_enabled(&self, cap: GLenum) -> Option<bool> {
+        if cap == GL_AUTO_NORMAL {
+            return Some(self.auto_normal);
+        }
+        let t = MapTarget::from_enum(cap)?;
+        Some(if t.dims == 1 { self.enabled1[t.slot as usize] } else { self.enabled2[t.slot as usize] })
+    }
+
+    /// Sets an evaluator enable; false if `cap` is not one.
+    pub fn set_enabled(&mut self, cap: GLenum, on: bool) -> bool {
+        if cap == GL_AUTO_NORMAL {
+            self.auto_normal = on;
+            return true;
+        }
+        match MapTarget::from_enum(cap) {
+            Some(t) if t.dims == 1 => self.enabled1[t.slot as usize] = on,
+            Some(t) => self.enabled2[t.slot as usize] = on,
+            None => return false,
+        }
+        true
+    }
+
+    /// GL's precedence (Mesa `vbo_exec_eval_update`): VERTEX_4 over VERTEX_3, the texture
+    /// map with most coordinates wins, COLOR_4 and NORMAL independent; INDEX never active.
+    pub fn active(&self, dims: u8) -> ActiveMaps {
+        let on = if dims == 1 { &self.enabled1 } else { &self.enabled2 };
+        let pick = |slots: &[Slot]| slots.iter().copied().find(|s| on[*s as usize]);
+        ActiveMaps {
+            vertex: pick(&[Slot::Vertex4, Slot::Vertex3]),
+            color: pick(&[Slot::Color4]),
+            normal: pick(&[Slot::Normal]),
+            tex: pick(&[Slot::TexCoord4, Slot::TexCoord3, Slot::TexCoord2, Slot::TexCoord1]),
+        }
+    }
+
+    /// The map of a given dimension and slot.
+    pub fn map(&self, dims: u8, slot: Slot) -> &Map {
+        if dims == 1 {
+            &self.map1[slot as usize]
+        } else {
+            &self.map2[slot as usize]
+        }
+    }
+
+    /// `glGet` of the grid state; `None` for other names.
+    pub fn grid_query(&self, pname: GLenum, out: &mut [f64; 4]) -> Option<usize> {
+        let (u, v) = self.grid2;
+        let values: &[f64] = match pname {
+            GL_MAP1_GRID_DOMAIN => &[self.grid1.a.into(), self.grid1.b.into()],
+            GL_MAP1_GRID_SEGMENTS => &[self.grid1.n.into()],
+            GL_MAP2_GRID_DOMAIN => &[u.a.into(), u.b.into(), v.a.into(), v.b.into()],
+            GL_MAP2_GRID_SEGMENTS => &[u.n.into(), v.n.into()],
+            _ => return None,
+        };
+        out[..values.len()].copy_from_slice(values);
+        Some(values.len())
+    }
+}
+
+impl super::Gl {
+    /// `glMapGrid1f`: `un` < 1 → `GL_INVALID_VALUE`. A zero-length or reversed domain is allowed.
+    pub fn map_grid1f(&mut self, un: GLint, u1: GLfloat, u2: GLfloat) {
+        if self.reject_inside_begin_end() {
+            return;
+        }
+        if un < 1 {
+            self.set_error(GL_INVALID_VALUE);
+            return;
+        }
+        self.eval.grid1 = Grid::new(un, u1, u2);
+    }
+
+    /// `glMapGrid1d` (cast to float, as Mesa stores grids).
+    pub fn map_grid1d(&mut self, un: GLint, u1: GLdouble, u2: GLdouble) {
+        self.map_grid1f(un, u1 as f32, u2 as f32);
+    }
+
+    /// `glMapGrid2f`: `un` < 1 or `vn` < 1 → `GL_INVALID_VALUE`.
+    pub fn map_grid2f(&mut self, un: GLint, u1: GLfloat, u2: GLfloat, vn: GLint, v1: GLfloat, v2: GLfloat) {
+        if self.reject_inside_begin_end() {
+            return;
+        }
+        if un < 1 || vn < 1 {
+            self.set_error(GL_INVALID_VALUE);
+            return;
+        }
+        self.eval.grid2 = (Grid::new(un, u1, u2), Grid::new(vn, v1, v2));
+    }
+
+    /// `glMapGrid2d` (cast to float).
+    pub fn map_grid2d(&mut self, un: GLint, u1: GLdouble, u2: GLdouble, vn: GLint, v1: GLdouble, v2: GLdouble) {
+        self.map_grid2f(un, u1 as f32, u2 as f32, vn, v1 as f32, v2 as f32);
+    }
+
+    /// `glEvalPoint1(i)`: `glEvalCoord1f` at grid line `i` (not range-checked; extrapolates).
+    pub fn eval_point1(&mut self, i: GLint) {
+        let u = self.eval.grid1.param(i.into());
+        self.eval_coord1f(u);
+    }
+
+    /// `glEvalPoint2(i, j)`: `glEvalCoord2f` at grid point (i, j).
+    pub fn eval_point2(&mut self, i: GLint, j: GLint) {
+        let (gu, gv) = self.eval.grid2;
+        self.eval_coord2f(gu.param(i.into()), gv.param(j.into()));
+    }
+}

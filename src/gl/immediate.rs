@@ -1,0 +1,194 @@
+//! Immediate mode: `glBegin`/`glEnd`, `glVertex*`, and the current colour, normal and
+//! texture coordinate (GL 1.1 spec §2.6–2.7).
+
+use super::consts::*;
+use super::frame::{Call, Primitive, Vertex};
+use super::types::*;
+use super::Gl;
+
+impl Gl {
+    /// `glBegin`: starts a primitive. Nested begin → `GL_INVALID_OPERATION`; a mode outside
+    /// `GL_POINTS..=GL_POLYGON` → `GL_INVALID_ENUM` (checked in that order, as Mesa does).
+    pub fn begin(&mut self, mode: GLenum) {
+        if self.reject_inside_begin_end() {
+            return;
+        }
+        if mode > GL_POLYGON {
+            self.set_error(GL_INVALID_ENUM);
+            return;
+        }
+        self.frame.calls.push(Call::Begin(mode));
+        self.open_primitive_raw(mode);
+    }
+
+    /// `glEnd`: closes the primitive; outside `begin` → `GL_INVALID_OPERATION`.
+    pub fn end(&mut self) {
+        if !self.inside_begin_end() {
+            self.set_error(GL_INVALID_OPERATION);
+            return;
+        }
+        self.frame.calls.push(Call::End);
+        self.open_primitive = None;
+    }
+
+    /// Begins a primitive on behalf of the evaluators (not logged as a user call).
+    pub(crate) fn open_primitive_raw(&mut self, mode: GLenum) {
+        let first = self.frame.vertices.len();
+        self.frame.primitives.push(Primitive { mode, first, count: 0 });
+        self.open_primitive = Some(self.frame.primitives.len() - 1);
+    }
+
+    /// Adds a finished vertex to the open primitive; outside `begin`/`end` a vertex only
+    /// moves the current position, so nothing is recorded.
+    pub(crate) fn emit_vertex(&mut self, v: Vertex) {
+        if let Some(p) = self.open_primitive {
+            self.frame.vertices.push(v);
+            self.frame.primitives[p].count += 1;
+        }
+    }
+
+    /// The vertex that `glVertex4f(x, y, z, w)` issues now, with the current attributes.
+    pub(crate) fn current_vertex(&self, position: [f32; 4]) -> Vertex {
+        Vertex {
+            position,
+            color: self.current.color,
+            normal: self.current.normal,
+            tex_coord: self.current.tex_coord,
+        }
+    }
+
+    fn vertex(&mut self, position: [f32; 4]) {
+        self.frame.calls.push(Call::Vertex(position));
+        let v = self.current_vertex(position);
+        self.emit_vertex(v);
+    }
+
+    /// `glVertex2f` (z = 0, w = 1).
+    pub fn vertex2f(&mut self, x: GLfloat, y: GLfloat) {
+        self.vertex([x, y, 0.0, 1.0]);
+    }
+
+    /// `glVertex2d` (cast to float, as Mesa stores vertices).
+    pub fn vertex2d(&mut self, x: GLdouble, y: GLdouble) {
+        self.vertex([x as f32, y as f32, 0.0, 1.0]);
+    }
+
+    /// `glVertex3f` (w = 1).
+    pub fn vertex3f(&mut self, x: GLfloat, y: GLfloat, z: GLfloat) {
+        self.vertex([x, y, z, 1.0]);
+    }
+
+    /// `glVertex3d`.
+    pub fn vertex3d(&mut self, x: GLdouble, y: GLdouble, z: GLdouble) {
+        self.vertex([x as f32, y as f32, z as f32, 1.0]);
+    }
+
+    /// `glVertex4f`.
+    pub fn vertex4f(&mut self, x: GLfloat, y: GLfloat, z: GLfloat, w: GLfloat) {
+        self.vertex([x, y, z, w]);
+    }
+
+    /// `glVertex2fv`: `v` needs 2 values.
+    pub fn vertex2fv(&mut self, v: &[GLfloat]) {
+        if let Some(v) = self.needs::<2>(v) {
+            self.vertex2f(v[0], v[1]);
+        }
+    }
+
+    /// `glVertex3fv`: `v` needs 3 values.
+    pub fn vertex3fv(&mut self, v: &[GLfloat]) {
+        if let Some(v) = self.needs::<3>(v) {
+            self.vertex3f(v[0], v[1], v[2]);
+        }
+    }
+
+    /// `glVertex4fv`: `v` needs 4 values.
+    pub fn vertex4fv(&mut self, v: &[GLfloat]) {
+        if let Some(v) = self.needs::<4>(v) {
+            self.vertex4f(v[0], v[1], v[2], v[3]);
+        }
+    }
+
+    /// `glColor3f` (alpha = 1).
+    pub fn color3f(&mut self, r: GLfloat, g: GLfloat, b: GLfloat) {
+        self.color4f(r, g, b, 1.0);
+    }
+
+    /// `glColor4f`.
+    pub fn color4f(&mut self, r: GLfloat, g: GLfloat, b: GLfloat, a: GLfloat) {
+        self.current.color = [r, g, b, a];
+        self.frame.calls.push(Call::Color(self.current.color));
+    }
+
+    /// `glColor3fv`: `v` needs 3 values.
+    pub fn color3fv(&mut self, v: &[GLfloat]) {
+        if let Some(v) = self.needs::<3>(v) {
+            self.color3f(v[0], v[1], v[2]);
+        }
+    }
+
+    /// `glColor4fv`: `v` needs 4 values.
+    pub fn color4fv(&mut self, v: &[GLfloat]) {
+        if let Some(v) = self.needs::<4>(v) {
+            self.color4f(v[0], v[1], v[2], v[3]);
+        }
+    }
+
+    /// `glColor3ub`: bytes map to [0, 1] as GL converts unsigned bytes (c / 255).
+    pub fn color3ub(&mut self, r: u8, g: u8, b: u8) {
+        let f = |c: u8| f32::from(c) / 255.0;
+        self.color4f(f(r), f(g), f(b), 1.0);
+    }
+
+    /// `glNormal3f`.
+    pub fn normal3f(&mut self, x: GLfloat, y: GLfloat, z: GLfloat) {
+        self.current.normal = [x, y, z];
+        self.frame.calls.push(Call::Normal(self.current.normal));
+    }
+
+    /// `glNormal3fv`: `v` needs 3 values.
+    pub fn normal3fv(&mut self, v: &[GLfloat]) {
+        if let Some(v) = self.needs::<3>(v) {
+            self.normal3f(v[0], v[1], v[2]);
+        }
+    }
+
+    /// `glTexCoord1f` (t = r = 0, q = 1).
+    pub fn tex_coord1f(&mut self, s: GLfloat) {
+        self.tex_coord4f(s, 0.0, 0.0, 1.0);
+    }
+
+    /// `glTexCoord2f`.
+    pub fn tex_coord2f(&mut self, s: GLfloat, t: GLfloat) {
+        self.tex_coord4f(s, t, 0.0, 1.0);
+    }
+
+    /// `glTexCoord3f`.
+    pub fn tex_coord3f(&mut self, s: GLfloat, t: GLfloat, r: GLfloat) {
+        self.tex_coord4f(s, t, r, 1.0);
+    }
+
+    /// `glTexCoord4f`.
+    pub fn tex_coord4f(&mut self, s: GLfloat, t: GLfloat, r: GLfloat, q: GLfloat) {
+        self.current.tex_coord = [s, t, r, q];
+        self.frame.calls.push(Call::TexCoord(self.current.tex_coord));
+    }
+
+    /// `glTexCoord2fv`: `v` needs 2 values.
+    pub fn tex_coord2fv(&mut self, v: &[GLfloat]) {
+        if let Some(v) = self.needs::<2>(v) {
+            self.tex_coord2f(v[0], v[1]);
+        }
+    }
+
+    /// The first `N` values of a `*v` argument, or `GL_INVALID_VALUE` if the slice is shorter.
+    pub(crate) fn needs<const N: usize>(&mut self, v: &[GLfloat]) -> Option<[GLfloat; N]> {
+        match v.get(..N) {
+            Some(head) => head.try_into().ok(),
+            None => {
+                self.set_error(GL_INVALID_VALUE);
+                None
+            }
+        }
+    }
+}

@@ -1,0 +1,196 @@
+//! The GL façade: a context that keeps the GL 1.x state the evaluators need, sets GL's error
+//! flag exactly as Mesa does, and records what it draws into a [`Frame`].
+//!
+//! Method names follow the porting convention: the C function without `gl`, in snake_case,
+//! with the same arguments in the same order (`glMap2f` → [`Gl::map2f`]). Pointers become
+//! slices; a slice shorter than the call needs sets `GL_INVALID_VALUE` instead of reading out of
+//! bounds. Nothing here panics on bad input.
+
+pub mod consts;
+mod enable;
+mod eval;
+mod frame;
+mod immediate;
+pub mod types;
+
+pub use eval::{MapTarget, Slot};
+pub use frame::{Call, Frame, Primitive, Vertex};
+
+use consts::*;
+use types::*;
+
+/// The current values that a vertex picks up (GL 1.1 spec §2.7).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Current {
+    pub color: [f32; 4],
+    pub normal: [f32; 3],
+    pub tex_coord: [f32; 4],
+}
+
+impl Default for Current {
+    fn default() -> Self {
+        Self { color: [1.0; 4], normal: [0.0, 0.0, 1.0], tex_coord: [0.0, 0.0, 0.0, 1.0] }
+    }
+}
+
+/// A GL context without a GPU: GL state plus the recording of what is drawn.
+///
+/// ```
+/// use gleval::prelude::*;
+/// let mut gl = Gl::new(400, 200);
+/// let pts = [-2.0f32, 0.0, 0.0, 0.0, 2.0, 0.0, 2.0, 0.0, 0.0];
+/// gl.map1f(GL_MAP1_VERTEX_3, 0.0, 1.0, 3, 3, &pts);
+/// gl.enable(GL_MAP1_VERTEX_3);
+/// gl.map_grid1f(4, 0.0, 1.0);
+/// gl.eval_mesh1(GL_LINE, 0, 4);
+/// assert_eq!(gl.get_error(), GL_NO_ERROR);
+/// let strip = gl.frame().primitives[0];
+/// assert_eq!((strip.mode, strip.count), (GL_LINE_STRIP, 5));
+/// assert_eq!(gl.frame().vertices[2].position, [0.0, 1.0, 0.0, 1.0]);
+/// ```
+#[derive(Clone, Debug)]
+pub struct Gl {
+    width: i32,
+    height: i32,
+    error: GLenum,
+    /// Index in `frame.primitives` of the primitive being built between begin and end.
+    open_primitive: Option<usize>,
+    pub(crate) current: Current,
+    caps: enable::Caps,
+    pub(crate) eval: eval::EvalState,
+    active_texture: GLenum,
+    frame: Frame,
+}
+
+impl Gl {
+    /// A context for a drawable of `width` × `height` pixels, in GL's initial state.
+    #[must_use]
+    pub fn new(width: i32, height: i32) -> Self {
+        Self {
+            width,
+            height,
+            error: GL_NO_ERROR,
+            open_primitive: None,
+            current: Current::default(),
+            caps: enable::Caps::default(),
+            eval: eval::EvalState::default(),
+            active_texture: GL_TEXTURE0,
+            frame: Frame::default(),
+        }
+    }
+
+    /// The drawable's width in pixels.
+    #[must_use]
+    pub fn width(&self) -> i32 {
+        self.width
+    }
+
+    /// The drawable's height in pixels.
+    #[must_use]
+    pub fn height(&self) -> i32 {
+        self.height
+    }
+
+    /// What has been drawn so far.
+    #[must_use]
+    pub fn frame(&self) -> &Frame {
+        &self.frame
+    }
+
+    /// Takes the recorded frame, leaving an empty one (the GL state is kept).
+    pub fn take_frame(&mut self) -> Frame {
+        std::mem::take(&mut self.frame)
+    }
+
+    /// `glGetError`: returns the first error recorded since the last call and clears it.
+    /// Inside `begin`/`end` it returns `GL_NO_ERROR` and records `GL_INVALID_OPERATION`, as Mesa does.
+    pub fn get_error(&mut self) -> GLenum {
+        if self.inside_begin_end() {
+            self.set_error(GL_INVALID_OPERATION);
+            return GL_NO_ERROR;
+        }
+        std::mem::replace(&mut self.error, GL_NO_ERROR)
+    }
+
+    /// `glActiveTexture`: selects the texture unit (the evaluators only work on unit 0).
+    pub fn active_texture(&mut self, texture: GLenum) {
+        if self.reject_inside_begin_end() {
+            return;
+        }
+        if !(GL_TEXTURE0..=GL_TEXTURE31).contains(&texture) {
+            self.set_error(GL_INVALID_ENUM);
+            return;
+        }
+        self.active_texture = texture;
+    }
+
+    /// `glGetIntegerv` for the evaluator queries (`GL_MAX_EVAL_ORDER`, the grid domains and
+    /// segments). Floats are rounded to the nearest integer, as GL converts them.
+    pub fn get_integerv(&mut self, pname: GLenum, params: &mut [GLint]) {
+        let mut values = [0.0f64; 4];
+        if let Some(n) = self.get_values(pname, &mut values) {
+            if params.len() < n {
+                self.set_error(GL_INVALID_VALUE);
+                return;
+            }
+            for (out, v) in params.iter_mut().zip(&values[..n]) {
+                *out = v.round() as GLint;
+            }
+        }
+    }
+
+    /// `glGetFloatv` for the evaluator queries (see [`Gl::get_integerv`]).
+    pub fn get_floatv(&mut self, pname: GLenum, params: &mut [GLfloat]) {
+        let mut values = [0.0f64; 4];
+        if let Some(n) = self.get_values(pname, &mut values) {
+            if params.len() < n {
+                self.set_error(GL_INVALID_VALUE);
+                return;
+            }
+            for (out, v) in params.iter_mut().zip(&values[..n]) {
+                *out = *v as GLfloat;
+            }
+        }
+    }
+
+    fn get_values(&mut self, pname: GLenum, out: &mut [f64; 4]) -> Option<usize> {
+        if self.reject_inside_begin_end() {
+            return None;
+        }
+        let n = match pname {
+            GL_MAX_EVAL_ORDER => {
+                out[0] = f64::from(MAX_EVAL_ORDER);
+                1
+            }
+            _ => match self.eval.grid_query(pname, out) {
+                Some(n) => n,
+                None => {
+                    self.set_error(GL_INVALID_ENUM);
+                    return None;
+                }
+            },
+        };
+        Some(n)
+    }
+
+    /// Records `code` unless an earlier error is still pending (GL's sticky flag; Mesa's `_mesa_error`).
+    pub(crate) fn set_error(&mut self, code: GLenum) {
+        if self.error == GL_NO_ERROR {
+            self.error = code;
+        }
+    }
+
+    pub(crate) fn inside_begin_end(&self) -> bool {
+        self.open_primitive.is_some()
+    }
+
+    /// For calls GL forbids between `begin` and `end`: records `GL_INVALID_OPERATION` and
+    /// returns true when inside.
+    pub(crate) fn reject_inside_begin_end(&mut self) -> bool {
+        let inside = self.inside_begin_end();
+        if inside {
+            self.set_error(GL_INVALID_OPERATION);
+        }
+        inside
+    }
+}

@@ -1,0 +1,20 @@
+//! C's GL type names, so that ported signatures read the same.
+
+/// `GLenum`.
+pub type GLenum = u32;
+/// `GLbitfield`.
+pub type GLbitfield = u32;
+/// `GLboolean` (`GL_TRUE` = 1, `GL_FALSE` = 0).
+pub type GLboolean = u8;
+/// `GLint`.
+pub type GLint = i32;
+/// `GLuint`.
+pub type GLuint = u32;
+/// `GLsizei`.
+pub type GLsizei = i32;
+/// `GLfloat`.
+pub type GLfloat = f32;
+/// `GLdouble`.
+pub type GLdouble = f64;
+/// `GLclampf`.
+pub type GLclampf = f32;

@@ -1,0 +1,22 @@
+//! # gleval
+//!
+//! The OpenGL 1.x evaluators (`glMap1`/`glMap2`, `glMapGrid`, `glEvalMesh`, `glEvalCoord`,
+//! `glEvalPoint`) and the GLU NURBS interface, re-created in Rust.
+//!
+//! Two ways in:
+//! - the **GL façade**, [`gl::Gl`]: a ported C program reads line for line like the original
+//!   (`glMap2f(...)` becomes `gl.map2f(...)`), sets GL's error flag exactly as Mesa does, and
+//!   records what it draws into a [`gl::Frame`] that tests read and the renderer draws;
+//! - the **typed API** in [`math`]: Bezier and B-spline curves and patches with `Result` errors,
+//!   no GL state at all.
+//!
+//! Layers, each depending only on those above it: `math` → `tess` → `gl` → (`glu`, `gll`,
+//! `render`, `app` in later milestones). With `--no-default-features` the crate is pure CPU
+//! Rust with no GPU or windowing dependency.
+#![forbid(unsafe_code)]
+#![warn(missing_docs)]
+
+pub mod gl;
+pub mod math;
+pub mod prelude;
+pub mod tess;

@@ -1,0 +1,6 @@
+//! `use gleval::prelude::*;` brings in the context, the C type aliases and every GL constant,
+//! so that a ported program reads like its C original.
+
+pub use crate::gl::consts::*;
+pub use crate::gl::types::*;
+pub use crate::gl::{Frame, Gl, Primitive, Vertex};

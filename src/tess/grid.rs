@@ -1,0 +1,258 @@
+//! Grid evaluation of Bezier curves and patches with the basis precomputed per row and column.
+//!
+//! For an nu × nv grid of a patch of orders (p, q) in `dim` components, the cost is
+//! O(nv·p·q·dim) to reduce each v row, then O(nu·nv·p·dim) for the points, instead of
+//! O(nu·nv·p·q·dim) for point-by-point evaluation. Every grid point is evaluated once: the
+//! strips and line loops of `glEvalMesh2` index shared points.
+
+use crate::math::bezier::{bernstein, Vec4, MAX_DIM};
+use crate::math::Scalar;
+
+/// Bernstein basis values of one order at a list of normalised parameters, and (optionally) the
+/// basis of one order lower for derivatives taken on control-point differences.
+#[derive(Clone, Debug, Default)]
+pub struct BasisTable<S: Scalar> {
+    order: usize,
+    values: Vec<S>,
+    lower: Vec<S>,
+}
+
+impl<S: Scalar> BasisTable<S> {
+    /// Builds the table for `params`; `lower` also stores the order−1 basis.
+    #[must_use]
+    pub fn new(order: usize, params: &[S], lower: bool) -> Self {
+        let mut values = vec![S::ZERO; params.len() * order];
+        let low_order = if lower { order.saturating_sub(1) } else { 0 };
+        let mut low = vec![S::ZERO; params.len() * low_order];
+        for (k, &t) in params.iter().enumerate() {
+            bernstein(order, t, &mut values[k * order..(k + 1) * order]);
+            if low_order > 0 {
+                bernstein(low_order, t, &mut low[k * low_order..(k + 1) * low_order]);
+            }
+        }
+        Self { order, values, lower: low }
+    }
+
+    /// Basis values at parameter number `k`.
+    #[must_use]
+    pub fn at(&self, k: usize) -> &[S] {
+        &self.values[k * self.order..(k + 1) * self.order]
+    }
+
+    /// Order−1 basis values at parameter number `k` (empty for order 1 or without `lower`).
+    #[must_use]
+    pub fn lower_at(&self, k: usize) -> &[S] {
+        let lo = self.order.saturating_sub(1);
+        if self.lower.is_empty() {
+            return &[];
+        }
+        &self.lower[k * lo..(k + 1) * lo]
+    }
+}
+
+/// A packed Bezier map: `points[(i * vorder + j) * dim + c]` (a curve has `vorder` = 1).
+#[derive(Clone, Copy, Debug)]
+pub struct MapView<'a, S: Scalar> {
+    /// Components per point, 1..=4.
+    pub dim: usize,
+    /// Order along u.
+    pub uorder: usize,
+    /// Order along v (1 for a curve).
+    pub vorder: usize,
+    /// The packed control points.
+    pub points: &'a [S],
+}
+
+impl<S: Scalar> MapView<'_, S> {
+    fn is_valid(&self) -> bool {
+        self.dim >= 1
+            && self.dim <= MAX_DIM
+            && self.uorder >= 1
+            && self.vorder >= 1
+            && self.points.len() >= self.uorder * self.vorder * self.dim
+    }
+}
+
+/// Evaluates a curve (a map with `vorder` = 1) at each normalised parameter in `us`.
+pub fn eval_grid1<S: Scalar>(map: &MapView<'_, S>, us: &[S], out: &mut Vec<Vec4<S>>) {
+    out.clear();
+    if !map.is_valid() {
+        out.resize(us.len(), [S::ZERO; MAX_DIM]);
+        return;
+    }
+    let table = BasisTable::new(map.uorder, us, false);
+    let dim = map.dim;
+    out.extend((0..us.len()).map(|k| {
+        let mut p = [S::ZERO; MAX_DIM];
+        for (a, &b) in table.at(k).iter().enumerate() {
+            for c in 0..dim {
+                p[c] += b * map.points[a * dim + c];
+            }
+        }
+        p
+    }));
+}
+
+/// Points (and optionally partial derivatives) of a patch over a grid, row-major with v outer:
+/// the value at (us[i], vs[j]) is at `j * us.len() + i`.
+#[derive(Clone, Debug, Default)]
+pub struct Grid2<S: Scalar> {
+    /// Grid points.
+    pub points: Vec<Vec4<S>>,
+    /// ∂p/∂u with respect to the normalised u (empty unless asked for).
+    pub du: Vec<Vec4<S>>,
+    /// ∂p/∂v with respect to the normalised v (empty unless asked for).
+    pub dv: Vec<Vec4<S>>,
+}
+
+/// Evaluates a patch over the grid `us` × `vs` (normalised parameters) into `out`.
+/// With `partials`, derivatives are computed on control-point differences, so a collapsed
+/// edge gives exactly zero, as Mesa's de Casteljau does.
+pub fn eval_grid2<S: Scalar>(map: &MapView<'_, S>, us: &[S], vs: &[S], partials: bool, out: &mut Grid2<S>) {
+    let n = us.len() * vs.len();
+    out.points.clear();
+    out.du.clear();
+    out.dv.clear();
+    if !map.is_valid() {
+        out.points.resize(n, [S::ZERO; MAX_DIM]);
+        if partials {
+            out.du.resize(n, [S::ZERO; MAX_DIM]);
+            out.dv.resize(n, [S::ZERO; MAX_DIM]);
+        }
+        return;
+    }
+    let ut = BasisTable::new(map.uorder, us, partials);
+    let vt = BasisTable::new(map.vorder, vs, partials);
+    let mut rows = vec![[S::ZERO; MAX_DIM]; map.uorder];
+    let mut rows_dv = vec![[S::ZERO; MAX_DIM]; map.uorder];
+    for j in 0..vs.len() {
+        reduce_rows(map, vt.at(j), vt.lower_at(j), partials, &mut rows, &mut rows_dv);
+        for i in 0..us.len() {
+            out.points.push(combine(ut.at(i), &rows, map.dim));
+            if partials {
+                out.du.push(combine_differences(ut.lower_at(i), &rows, map.dim, map.uorder));
+                out.dv.push(combine(ut.at(i), &rows_dv, map.dim));
+            }
+        }
+    }
+}
+
+/// Reduces every u row of the net along v: `rows[i] = Σⱼ Bⱼ(v) Pᵢⱼ`, and with `partials`
+/// `rows_dv[i] = q Σⱼ Bⱼ^{q−1}(v) (Pᵢ,ⱼ₊₁ − Pᵢⱼ)`.
+fn reduce_rows<S: Scalar>(
+    map: &MapView<'_, S>,
+    bv: &[S],
+    bv_low: &[S],
+    partials: bool,
+    rows: &mut [Vec4<S>],
+    rows_dv: &mut [Vec4<S>],
+) {
+    let (dim, vorder) = (map.dim, map.vorder);
+    let q = S::from_usize(vorder - 1);
+    for i in 0..map.uorder {
+        let net = &map.points[i * vorder * dim..(i + 1) * vorder * dim];
+        let mut row = [S::ZERO; MAX_DIM];
+        let mut row_dv = [S::ZERO; MAX_DIM];
+        for j in 0..vorder {
+            for c in 0..dim {
+                row[c] += bv[j] * net[j * dim + c];
+            }
+            if partials && j + 1 < vorder {
+                for c in 0..dim {
+                    row_dv[c] += bv_low[j] * (net[(j + 1) * dim + c] - net[j * dim + c]);
+                }
+            }
+        }
+        for c in 0..dim {
+            row_dv[c] *= q;
+        }
+        rows[i] = row;
+        rows_dv[i] = row_dv;
+    }
+}
+
+fn combine<S: Scalar>(basis: &[S], rows: &[Vec4<S>], dim: usize) -> Vec4<S> {
+    let mut p = [S::ZERO; MAX_DIM];
+    for (b, row) in basis.iter().zip(rows) {
+        for c in 0..dim {
+            p[c] += *b * row[c];
+        }
+    }
+    p
+}
+
+fn combine_differences<S: Scalar>(low: &[S], rows: &[Vec4<S>], dim: usize, order: usize) -> Vec4<S> {
+    let mut d = [S::ZERO; MAX_DIM];
+    if order < 2 {
+        return d;
+    }
+    let n = S::from_usize(order - 1);
+    for (a, b) in low.iter().enumerate() {
+        for c in 0..dim {
+            d[c] += *b * (rows[a + 1][c] - rows[a][c]);
+        }
+    }
+    for v in d.iter_mut().take(dim) {
+        *v *= n;
+    }
+    d
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::math::patch::{horner_patch, patch_with_partials};
+
+    fn net(uo: usize, vo: usize, dim: usize) -> Vec<f64> {
+        (0..uo * vo * dim).map(|k| ((k * 53 % 17) as f64) * 0.25 - 2.0).collect()
+    }
+
+    #[test]
+    fn grid_matches_pointwise_evaluation() {
+        for (uo, vo) in [(1, 1), (1, 4), (4, 1), (4, 4), (2, 7), (30, 3)] {
+            let pts = net(uo, vo, 4);
+            let map = MapView { dim: 4, uorder: uo, vorder: vo, points: &pts };
+            let us = [0.0, 0.25, 0.6, 1.0, -0.3];
+            let vs = [0.0, 0.5, 1.0, 1.2];
+            let mut g = Grid2::default();
+            eval_grid2(&map, &us, &vs, true, &mut g);
+            for (j, &v) in vs.iter().enumerate() {
+                for (i, &u) in us.iter().enumerate() {
+                    let k = j * us.len() + i;
+                    let want = horner_patch(&pts, 4, uo, vo, u, v);
+                    let s = patch_with_partials(&pts, 4, uo, vo, u, v);
+                    for c in 0..4 {
+                        let tol = 1e-9 * (1.0 + want[c].abs());
+                        assert!((g.points[k][c] - want[c]).abs() < tol, "{uo}x{vo} point");
+                        assert!((g.du[k][c] - s.du[c]).abs() < 1e-7 * (1.0 + s.du[c].abs()));
+                        assert!((g.dv[k][c] - s.dv[c]).abs() < 1e-7 * (1.0 + s.dv[c].abs()));
+                    }
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn curve_grid_matches_horner() {
+        let pts = net(7, 1, 3);
+        let map = MapView { dim: 3, uorder: 7, vorder: 1, points: &pts };
+        let us = [0.0, 0.1, 0.5, 0.99, 1.0];
+        let mut out = Vec::new();
+        eval_grid1(&map, &us, &mut out);
+        for (k, &u) in us.iter().enumerate() {
+            let want = crate::math::bezier::horner(&pts, 3, 7, u);
+            for c in 0..3 {
+                assert!((out[k][c] - want[c]).abs() < 1e-10);
+            }
+        }
+    }
+
+    #[test]
+    fn invalid_map_gives_zeros_not_panic() {
+        let map = MapView { dim: 3, uorder: 4, vorder: 4, points: &[1.0f32; 5] };
+        let mut g = Grid2::default();
+        eval_grid2(&map, &[0.0, 1.0], &[0.5], true, &mut g);
+        assert_eq!(g.points.len(), 2);
+        assert_eq!(g.du[1], [0.0; 4]);
+    }
+}
