@@ -1,0 +1,1 @@
+//! filled in when the Mesa reference scripts land

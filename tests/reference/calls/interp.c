@@ -1,0 +1,467 @@
+/* interp.c - run a gleval "call script" against real Mesa (OSMesa) and print
+ * what happens: the GL error after each call, query results and the
+ * feedback-mode tokens.  The script and output formats are in FORMAT.md.
+ *
+ * Build: cc -std=c99 -O0 -o interp interp.c -lOSMesa -lGL -lm
+ * Usage: interp SCRIPT.calls > SCRIPT.out
+ */
+#define _POSIX_C_SOURCE 200809L
+#define GL_GLEXT_PROTOTYPES
+#include <GL/osmesa.h>
+#include <GL/gl.h>
+#include <GL/glext.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <errno.h>
+#include <stdarg.h>
+
+#define W 64
+#define H 64
+#define FB_SIZE (1 << 22)   /* feedback buffer, in floats */
+#define MAX_TOK 4096
+
+static OSMesaContext ctx;
+static GLubyte pixels[W * H * 4];
+static GLfloat fb[FB_SIZE];
+static int in_begin;        /* between a script `begin` and `end` */
+static int defer_errors;    /* `defer_errors on`: only get_error reads the flag */
+static int lineno;
+static const char *script_name;
+
+/* ---------------------------------------------------------------- enums */
+struct enum_name { const char *name; GLenum value; };
+#define E(x) { #x, x }
+static const struct enum_name enums[] = {
+    E(GL_MAP1_VERTEX_3), E(GL_MAP1_VERTEX_4), E(GL_MAP1_INDEX), E(GL_MAP1_COLOR_4),
+    E(GL_MAP1_NORMAL), E(GL_MAP1_TEXTURE_COORD_1), E(GL_MAP1_TEXTURE_COORD_2),
+    E(GL_MAP1_TEXTURE_COORD_3), E(GL_MAP1_TEXTURE_COORD_4),
+    E(GL_MAP2_VERTEX_3), E(GL_MAP2_VERTEX_4), E(GL_MAP2_INDEX), E(GL_MAP2_COLOR_4),
+    E(GL_MAP2_NORMAL), E(GL_MAP2_TEXTURE_COORD_1), E(GL_MAP2_TEXTURE_COORD_2),
+    E(GL_MAP2_TEXTURE_COORD_3), E(GL_MAP2_TEXTURE_COORD_4),
+    E(GL_AUTO_NORMAL), E(GL_COEFF), E(GL_ORDER), E(GL_DOMAIN),
+    E(GL_POINT), E(GL_LINE), E(GL_FILL),
+    E(GL_POINTS), E(GL_LINES), E(GL_LINE_LOOP), E(GL_LINE_STRIP), E(GL_TRIANGLES),
+    E(GL_TRIANGLE_STRIP), E(GL_TRIANGLE_FAN), E(GL_QUADS), E(GL_QUAD_STRIP), E(GL_POLYGON),
+    E(GL_MAX_EVAL_ORDER), E(GL_MAP1_GRID_DOMAIN), E(GL_MAP1_GRID_SEGMENTS),
+    E(GL_MAP2_GRID_DOMAIN), E(GL_MAP2_GRID_SEGMENTS),
+    E(GL_TEXTURE0), E(GL_TEXTURE1), E(GL_TEXTURE2), E(GL_TEXTURE3),
+    E(GL_TEXTURE4), E(GL_TEXTURE5), E(GL_TEXTURE6), E(GL_TEXTURE7),
+    E(GL_TEXTURE_2D), E(GL_LIGHTING), E(GL_NORMALIZE),
+    { NULL, 0 }
+};
+
+static void die(const char *msg, const char *what)
+{
+    fprintf(stderr, "%s:%d: %s%s%s\n", script_name, lineno, msg,
+            what ? ": " : "", what ? what : "");
+    exit(2);
+}
+
+/* Components per map target and dimension (1 or 2); 0 for anything else. */
+static int map_info(GLenum target, int *dim)
+{
+    static const struct { GLenum t; int k; } maps[] = {
+        { GL_MAP1_VERTEX_3, 3 }, { GL_MAP1_VERTEX_4, 4 }, { GL_MAP1_INDEX, 1 },
+        { GL_MAP1_COLOR_4, 4 }, { GL_MAP1_NORMAL, 3 }, { GL_MAP1_TEXTURE_COORD_1, 1 },
+        { GL_MAP1_TEXTURE_COORD_2, 2 }, { GL_MAP1_TEXTURE_COORD_3, 3 },
+        { GL_MAP1_TEXTURE_COORD_4, 4 },
+        { GL_MAP2_VERTEX_3, 3 }, { GL_MAP2_VERTEX_4, 4 }, { GL_MAP2_INDEX, 1 },
+        { GL_MAP2_COLOR_4, 4 }, { GL_MAP2_NORMAL, 3 }, { GL_MAP2_TEXTURE_COORD_1, 1 },
+        { GL_MAP2_TEXTURE_COORD_2, 2 }, { GL_MAP2_TEXTURE_COORD_3, 3 },
+        { GL_MAP2_TEXTURE_COORD_4, 4 },
+    };
+    for (size_t i = 0; i < sizeof maps / sizeof maps[0]; i++)
+        if (maps[i].t == target) {
+            *dim = i < 9 ? 1 : 2;
+            return maps[i].k;
+        }
+    *dim = 0;
+    return 0;
+}
+
+/* ---------------------------------------------------------------- tokens */
+static char *tok[MAX_TOK];
+static int ntok, pos;
+
+static const char *next(void)
+{
+    if (pos >= ntok) die("missing argument", NULL);
+    return tok[pos++];
+}
+
+static GLenum arg_enum(void)
+{
+    const char *s = next();
+    for (int i = 0; enums[i].name; i++)
+        if (strcmp(enums[i].name, s) == 0) return enums[i].value;
+    char *end;
+    errno = 0;
+    unsigned long v = strtoul(s, &end, 0);   /* raw numbers: 0x1234 or 4660 */
+    if (*end || errno || end == s) die("unknown enum", s);
+    return (GLenum)v;
+}
+
+static GLint arg_int(void)
+{
+    const char *s = next();
+    char *end;
+    long v = strtol(s, &end, 10);
+    if (*end || end == s) die("bad integer", s);
+    return (GLint)v;
+}
+
+static double arg_double(void)
+{
+    const char *s = next();
+    char *end;
+    double v = strtod(s, &end);
+    if (*end || end == s) die("bad number", s);
+    return v;
+}
+
+static float arg_float(void)
+{
+    const char *s = next();
+    char *end;
+    float v = strtof(s, &end);
+    if (*end || end == s) die("bad number", s);
+    return v;
+}
+
+/* An array `[a b c]` (or the word `null`).  Returns a zero-padded buffer of at
+ * least `need` elements (so Mesa never reads past the end); *given is the
+ * number of values written in the script, -1 for null. */
+static void *arg_array(int dbl, long need, long *given)
+{
+    const char *s = next();
+    if (strcmp(s, "null") == 0) { *given = -1; return NULL; }
+    if (strcmp(s, "[") != 0) die("expected [", s);
+    int start = pos, n = 0;
+    while (pos < ntok && strcmp(tok[pos], "]") != 0) { pos++; n++; }
+    if (pos >= ntok) die("missing ]", NULL);
+    pos = start;
+    long size = (n > need ? n : need) + 16;
+    void *buf = calloc((size_t)size, dbl ? sizeof(double) : sizeof(float));
+    for (int i = 0; i < n; i++) {
+        if (dbl) ((double *)buf)[i] = arg_double();
+        else ((float *)buf)[i] = arg_float();
+    }
+    pos++;   /* skip ] */
+    *given = n;
+    return buf;
+}
+
+static long clampl(long v, long lo, long hi) { return v < lo ? lo : v > hi ? hi : v; }
+
+/* Floats Mesa reads from the array (at most), computed on sane ranges only. */
+static long need1(GLenum target, GLint stride, GLint order)
+{
+    int dim, k = map_info(target, &dim);
+    if (order < 1) return 0;
+    return (clampl(order, 1, 64) - 1) * clampl(stride, 0, 1 << 16) + k;
+}
+
+static long need2(GLenum target, GLint us, GLint uo, GLint vs, GLint vo)
+{
+    int dim, k = map_info(target, &dim);
+    if (uo < 1 || vo < 1) return 0;
+    return (clampl(uo, 1, 64) - 1) * clampl(us, 0, 1 << 16)
+         + (clampl(vo, 1, 64) - 1) * clampl(vs, 0, 1 << 16) + k;
+}
+
+/* ---------------------------------------------------------------- context */
+static void start_feedback(void)
+{
+    glFeedbackBuffer(FB_SIZE, GL_4D_COLOR_TEXTURE, fb);
+    glRenderMode(GL_FEEDBACK);
+}
+
+static void new_context(void)
+{
+    if (ctx) OSMesaDestroyContext(ctx);
+    ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 0, NULL);
+    if (!ctx || !OSMesaMakeCurrent(ctx, pixels, GL_UNSIGNED_BYTE, W, H))
+        die("cannot create OSMesa context", NULL);
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+    glViewport(0, 0, 2, 2);
+    glDisable(GL_LIGHTING);
+    start_feedback();
+    if (glGetError() != GL_NO_ERROR) die("error while setting up the context", NULL);
+    in_begin = 0;
+    defer_errors = 0;
+}
+
+static void print_vertex(const GLfloat *v)
+{
+    for (int i = 0; i < 12; i++) printf(" %.9g", v[i]);
+}
+
+/* Leave feedback mode, print the tokens, enter feedback mode again. */
+static void collect_feedback(void)
+{
+    GLint n = glRenderMode(GL_RENDER);
+    if (n < 0) { printf("fb overflow\n"); n = 0; }
+    for (GLint i = 0; i < n;) {
+        GLenum t = (GLenum)fb[i++];
+        int nv = 1;
+        switch (t) {
+        case GL_POINT_TOKEN: printf("fb point"); break;
+        case GL_LINE_TOKEN: printf("fb line"); nv = 2; break;
+        case GL_LINE_RESET_TOKEN: printf("fb line_reset"); nv = 2; break;
+        case GL_POLYGON_TOKEN: nv = (int)fb[i++]; printf("fb polygon %d", nv); break;
+        case GL_BITMAP_TOKEN: printf("fb bitmap"); break;
+        case GL_DRAW_PIXEL_TOKEN: printf("fb draw_pixel"); break;
+        case GL_COPY_PIXEL_TOKEN: printf("fb copy_pixel"); break;
+        case GL_PASS_THROUGH_TOKEN: printf("fb pass_through %.9g\n", fb[i++]); continue;
+        default: die("unknown feedback token", NULL);
+        }
+        for (int v = 0; v < nv; v++, i += 12) print_vertex(&fb[i]);
+        printf("\n");
+    }
+    start_feedback();
+    if (!defer_errors && glGetError() != GL_NO_ERROR)
+        die("GL error while restarting feedback", NULL);
+}
+
+/* ---------------------------------------------------------------- queries */
+static char vals[1 << 16];   /* query values printed after err=... */
+static size_t vlen;
+
+static void val(const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    if (vlen < sizeof vals)
+        vlen += (size_t)vsnprintf(vals + vlen, sizeof vals - vlen, fmt, ap);
+    va_end(ap);
+}
+
+static void get_map(const char *name, GLenum target, GLenum query)
+{
+    union { GLfloat f[4096]; GLdouble d[4096]; GLint i[4096]; } buf;
+    int dim, k = map_info(target, &dim), count = 0;
+    memset(&buf, 0, sizeof buf);
+    if (k && query == GL_COEFF) {
+        GLint ord[2] = { 0, 0 };
+        glGetMapiv(target, GL_ORDER, ord);
+        count = dim == 1 ? ord[0] * k : ord[0] * ord[1] * k;
+    } else if (k && query == GL_ORDER) {
+        count = dim;
+    } else if (k && query == GL_DOMAIN) {
+        count = 2 * dim;
+    }
+    if (name[7] == 'f') glGetMapfv(target, query, buf.f);
+    else if (name[7] == 'd') glGetMapdv(target, query, buf.d);
+    else glGetMapiv(target, query, buf.i);
+    for (int i = 0; i < count; i++) {
+        if (name[7] == 'f') val(" %.9g", buf.f[i]);
+        else if (name[7] == 'd') val(" %.9g", buf.d[i]);
+        else val(" %d", buf.i[i]);
+    }
+}
+
+static int get_count(GLenum pname)
+{
+    switch (pname) {
+    case GL_MAP1_GRID_DOMAIN: return 2;
+    case GL_MAP2_GRID_DOMAIN: return 4;
+    case GL_MAP2_GRID_SEGMENTS: return 2;
+    default: return 1;
+    }
+}
+
+/* ---------------------------------------------------------------- calls */
+/* Executes one call; query values (if any) go into `vals`. */
+static void run_call(const char *c)
+{
+    long given = 0;
+    vlen = 0;
+    vals[0] = '\0';
+
+    if (!strcmp(c, "map1f") || !strcmp(c, "map1d")) {
+        GLenum t = arg_enum();
+        double u1 = arg_double(), u2 = arg_double();
+        GLint stride = arg_int(), order = arg_int();
+        int dbl = c[4] == 'd';
+        void *p = arg_array(dbl, need1(t, stride, order), &given);
+        if (dbl) glMap1d(t, u1, u2, stride, order, p);
+        else glMap1f(t, (float)u1, (float)u2, stride, order, p);
+        if (given >= 0 && given < need1(t, stride, order))
+            fprintf(stderr, "%s:%d: warning: short array\n", script_name, lineno);
+        free(p);
+    } else if (!strcmp(c, "map2f") || !strcmp(c, "map2d")) {
+        GLenum t = arg_enum();
+        double u1 = arg_double(), u2 = arg_double();
+        GLint us = arg_int(), uo = arg_int();
+        double v1 = arg_double(), v2 = arg_double();
+        GLint vs = arg_int(), vo = arg_int();
+        int dbl = c[4] == 'd';
+        long need = need2(t, us, uo, vs, vo);
+        void *p = arg_array(dbl, need, &given);
+        if (dbl) glMap2d(t, u1, u2, us, uo, v1, v2, vs, vo, p);
+        else glMap2f(t, (float)u1, (float)u2, us, uo, (float)v1, (float)v2, vs, vo, p);
+        if (given >= 0 && given < need)
+            fprintf(stderr, "%s:%d: warning: short array\n", script_name, lineno);
+        free(p);
+    } else if (!strcmp(c, "map_grid1f")) {
+        GLint n = arg_int(); float a = arg_float(), b = arg_float();
+        glMapGrid1f(n, a, b);
+    } else if (!strcmp(c, "map_grid1d")) {
+        GLint n = arg_int(); double a = arg_double(), b = arg_double();
+        glMapGrid1d(n, a, b);
+    } else if (!strcmp(c, "map_grid2f")) {
+        GLint un = arg_int(); float a = arg_float(), b = arg_float();
+        GLint vn = arg_int(); float d = arg_float(), e = arg_float();
+        glMapGrid2f(un, a, b, vn, d, e);
+    } else if (!strcmp(c, "map_grid2d")) {
+        GLint un = arg_int(); double a = arg_double(), b = arg_double();
+        GLint vn = arg_int(); double d = arg_double(), e = arg_double();
+        glMapGrid2d(un, a, b, vn, d, e);
+    } else if (!strcmp(c, "eval_coord1f")) {
+        glEvalCoord1f(arg_float());
+    } else if (!strcmp(c, "eval_coord1d")) {
+        glEvalCoord1d(arg_double());
+    } else if (!strcmp(c, "eval_coord2f")) {
+        float u = arg_float(), v = arg_float();
+        glEvalCoord2f(u, v);
+    } else if (!strcmp(c, "eval_coord2d")) {
+        double u = arg_double(), v = arg_double();
+        glEvalCoord2d(u, v);
+    } else if (!strcmp(c, "eval_point1")) {
+        glEvalPoint1(arg_int());
+    } else if (!strcmp(c, "eval_point2")) {
+        GLint i = arg_int(), j = arg_int();
+        glEvalPoint2(i, j);
+    } else if (!strcmp(c, "eval_mesh1")) {
+        GLenum m = arg_enum(); GLint i1 = arg_int(), i2 = arg_int();
+        glEvalMesh1(m, i1, i2);
+    } else if (!strcmp(c, "eval_mesh2")) {
+        GLenum m = arg_enum(); GLint i1 = arg_int(), i2 = arg_int();
+        GLint j1 = arg_int(), j2 = arg_int();
+        glEvalMesh2(m, i1, i2, j1, j2);
+    } else if (!strcmp(c, "enable")) {
+        glEnable(arg_enum());
+    } else if (!strcmp(c, "disable")) {
+        glDisable(arg_enum());
+    } else if (!strcmp(c, "is_enabled")) {
+        val(" %d", (int)glIsEnabled(arg_enum()));
+    } else if (!strcmp(c, "begin")) {
+        glBegin(arg_enum());
+    } else if (!strcmp(c, "end")) {
+        glEnd();
+    } else if (!strcmp(c, "vertex3f")) {
+        float x = arg_float(), y = arg_float(), z = arg_float();
+        glVertex3f(x, y, z);
+    } else if (!strcmp(c, "vertex4f")) {
+        float x = arg_float(), y = arg_float(), z = arg_float(), w = arg_float();
+        glVertex4f(x, y, z, w);
+    } else if (!strcmp(c, "color4f")) {
+        float r = arg_float(), g = arg_float(), b = arg_float(), a = arg_float();
+        glColor4f(r, g, b, a);
+    } else if (!strcmp(c, "normal3f")) {
+        float x = arg_float(), y = arg_float(), z = arg_float();
+        glNormal3f(x, y, z);
+    } else if (!strcmp(c, "tex_coord4f")) {
+        float s = arg_float(), t = arg_float(), r = arg_float(), q = arg_float();
+        glTexCoord4f(s, t, r, q);
+    } else if (!strcmp(c, "active_texture")) {
+        glActiveTexture(arg_enum());
+    } else if (!strncmp(c, "get_map", 7) && strlen(c) == 9 && c[8] == 'v'
+               && (c[7] == 'f' || c[7] == 'd' || c[7] == 'i')) {
+        GLenum t = arg_enum(), q = arg_enum();
+        get_map(c, t, q);
+    } else if (!strcmp(c, "get_integerv") || !strcmp(c, "get_floatv")) {
+        GLenum p = arg_enum();
+        GLint iv[16] = { 0 };
+        GLfloat fv[16] = { 0 };
+        int n = get_count(p);
+        if (c[4] == 'i') glGetIntegerv(p, iv); else glGetFloatv(p, fv);
+        for (int i = 0; i < n; i++)
+            if (c[4] == 'i') val(" %d", iv[i]); else val(" %.9g", fv[i]);
+    } else if (!strcmp(c, "texgen_normal")) {
+        /* eye-space normal (= object normal with identity modelview) -> s,t,r.
+         * Mesa applies texgen only on an enabled unit with a complete texture. */
+        static const GLubyte texel[4] = { 255, 255, 255, 255 };
+        GLuint tex;
+        glGenTextures(1, &tex);
+        glBindTexture(GL_TEXTURE_2D, tex);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, texel);
+        glEnable(GL_TEXTURE_2D);
+        glTexGeni(GL_S, GL_TEXTURE_GEN_MODE, GL_NORMAL_MAP);
+        glTexGeni(GL_T, GL_TEXTURE_GEN_MODE, GL_NORMAL_MAP);
+        glTexGeni(GL_R, GL_TEXTURE_GEN_MODE, GL_NORMAL_MAP);
+        glEnable(GL_TEXTURE_GEN_S);
+        glEnable(GL_TEXTURE_GEN_T);
+        glEnable(GL_TEXTURE_GEN_R);
+    } else {
+        die("unknown call", c);
+    }
+}
+
+static void run_line(char *line)
+{
+    char *hash = strchr(line, '#');
+    if (hash) *hash = '\0';
+    /* tokenize, making [ and ] separate tokens */
+    static char spaced[1 << 20];
+    size_t o = 0;
+    for (char *p = line; *p && o + 4 < sizeof spaced; p++) {
+        if (*p == '[' || *p == ']') { spaced[o++] = ' '; spaced[o++] = *p; spaced[o++] = ' '; }
+        else spaced[o++] = *p;
+    }
+    spaced[o] = '\0';
+    ntok = pos = 0;
+    for (char *t = strtok(spaced, " \t\r\n"); t; t = strtok(NULL, " \t\r\n")) {
+        if (ntok == MAX_TOK) die("line too long", NULL);
+        tok[ntok++] = t;
+    }
+    if (ntok == 0) return;
+    const char *c = next();
+
+    if (!strcmp(c, "case")) {
+        if (in_begin) die("case starts inside begin/end", NULL);
+        new_context();
+        printf("case %s\n", next());
+    } else if (!strcmp(c, "defer_errors")) {
+        const char *v = next();
+        if (strcmp(v, "on") && strcmp(v, "off")) die("defer_errors on|off", v);
+        defer_errors = v[1] == 'n';
+        printf("%d defer_errors err=-\n", lineno);
+    } else if (!strcmp(c, "get_error")) {
+        printf("%d get_error err=0x%04x\n", lineno, glGetError());
+    } else {
+        if (!ctx) die("call before the first case", c);
+        run_call(c);
+        if (!strcmp(c, "begin")) in_begin = 1;
+        if (!strcmp(c, "end")) in_begin = 0;
+        if (in_begin || defer_errors) printf("%d %s err=-%s\n", lineno, c, vals);
+        else printf("%d %s err=0x%04x%s\n", lineno, c, glGetError(), vals);
+        if (!in_begin) collect_feedback();
+    }
+    if (pos != ntok) die("extra arguments", tok[pos]);
+}
+
+int main(int argc, char **argv)
+{
+    if (argc != 2) { fprintf(stderr, "usage: %s SCRIPT.calls\n", argv[0]); return 2; }
+    script_name = argv[1];
+    FILE *f = fopen(script_name, "r");
+    if (!f) die("cannot open", strerror(errno));
+    char *line = NULL;
+    size_t cap = 0;
+    while (getline(&line, &cap, f) >= 0) {
+        lineno++;
+        run_line(line);
+        fflush(stdout);
+    }
+    if (in_begin) die("script ends inside begin/end", NULL);
+    free(line);
+    fclose(f);
+    if (ctx) OSMesaDestroyContext(ctx);
+    return 0;
+}
