@@ -17,6 +17,7 @@
 #![warn(missing_docs)]
 
 pub mod gl;
+pub mod gll;
 pub mod math;
 pub mod prelude;
 pub mod tess;

@@ -4,3 +4,4 @@
 pub use crate::gl::consts::*;
 pub use crate::gl::types::*;
 pub use crate::gl::{Frame, Gl, Primitive, Vertex};
+pub use crate::gll;

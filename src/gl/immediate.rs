@@ -49,12 +49,7 @@ impl Gl {
 
     /// The vertex that `glVertex4f(x, y, z, w)` issues now, with the current attributes.
     pub(crate) fn current_vertex(&self, position: [f32; 4]) -> Vertex {
-        Vertex {
-            position,
-            color: self.current.color,
-            normal: self.current.normal,
-            tex_coord: self.current.tex_coord,
-        }
+        Vertex { position, color: self.current.color, normal: self.current.normal, tex_coord: self.current.tex_coord }
     }
 
     fn vertex(&mut self, position: [f32; 4]) {

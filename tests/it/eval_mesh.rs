@@ -185,8 +185,10 @@ fn rational_auto_normal_matches_finite_differences() {
         for c in 0..3 {
             assert!((f64::from(v.position[c]) / w - p[c]).abs() < 1e-6, "w is passed through, not divided");
         }
-        let du: Vec<f64> = (0..3).map(|c| (rational_saddle(s + h, t)[c] - rational_saddle(s - h, t)[c]) / (2.0 * h)).collect();
-        let dv: Vec<f64> = (0..3).map(|c| (rational_saddle(s, t + h)[c] - rational_saddle(s, t - h)[c]) / (2.0 * h)).collect();
+        let du: Vec<f64> =
+            (0..3).map(|c| (rational_saddle(s + h, t)[c] - rational_saddle(s - h, t)[c]) / (2.0 * h)).collect();
+        let dv: Vec<f64> =
+            (0..3).map(|c| (rational_saddle(s, t + h)[c] - rational_saddle(s, t - h)[c]) / (2.0 * h)).collect();
         let n = unit([du[1] * dv[2] - du[2] * dv[1], du[2] * dv[0] - du[0] * dv[2], du[0] * dv[1] - du[1] * dv[0]]);
         assert_normal(v.normal, n, 1e-5);
     }

@@ -153,9 +153,8 @@ fn map2_strides_are_copied_exactly() {
     let mut c = [0.0f32; 18];
     gl.get_mapfv(GL_MAP2_VERTEX_3, GL_COEFF, &mut c);
     assert_eq!(gl.get_error(), GL_NO_ERROR);
-    let want: Vec<f32> = (0..3)
-        .flat_map(|i| (0..2).flat_map(move |j| (0..3).map(move |c| (100 * i + 10 * j + c) as f32)))
-        .collect();
+    let want: Vec<f32> =
+        (0..3).flat_map(|i| (0..2).flat_map(move |j| (0..3).map(move |c| (100 * i + 10 * j + c) as f32))).collect();
     assert_eq!(c.to_vec(), want);
 }
 

@@ -98,7 +98,15 @@ impl Gl {
     }
 
     /// `glMap1d`: as [`Gl::map1f`], with the domain and points cast to float.
-    pub fn map1d(&mut self, target: GLenum, u1: GLdouble, u2: GLdouble, stride: GLint, order: GLint, points: &[GLdouble]) {
+    pub fn map1d(
+        &mut self,
+        target: GLenum,
+        u1: GLdouble,
+        u2: GLdouble,
+        stride: GLint,
+        order: GLint,
+        points: &[GLdouble],
+    ) {
         self.map1(target, u1 as f32, u2 as f32, stride, order, points);
     }
 
@@ -139,14 +147,7 @@ impl Gl {
         vorder: GLint,
         points: &[GLdouble],
     ) {
-        let args = Map2Args {
-            u: (u1 as f32, u2 as f32),
-            v: (v1 as f32, v2 as f32),
-            ustride,
-            uorder,
-            vstride,
-            vorder,
-        };
+        let args = Map2Args { u: (u1 as f32, u2 as f32), v: (v1 as f32, v2 as f32), ustride, uorder, vstride, vorder };
         self.map2(target, args, points);
     }
 
@@ -170,17 +171,8 @@ impl Gl {
             .map(|idx| points[idx].to_gl_float())
             .collect();
         let slot = MapTarget::from_enum(target).map_or(Slot::Vertex3, |t| t.slot);
-        self.eval.map1[slot as usize] = Map {
-            uorder: order,
-            vorder: 1,
-            u1,
-            u2,
-            v1: 0.0,
-            v2: 1.0,
-            du: 1.0 / (u2 - u1),
-            dv: 1.0,
-            points: packed,
-        };
+        self.eval.map1[slot as usize] =
+            Map { uorder: order, vorder: 1, u1, u2, v1: 0.0, v2: 1.0, du: 1.0 / (u2 - u1), dv: 1.0, points: packed };
     }
 
     /// Mesa's checks for `glMap1`, in order; returns k when all pass.

@@ -13,7 +13,6 @@ use super::consts::*;
 use super::types::*;
 pub(crate) use map::Map;
 
-
 /// A `glMapGrid` grid: `n` segments over [a, b], with the step GL stores (computed in float).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) struct Grid {
