@@ -89,9 +89,7 @@ pub fn hodograph<S: Scalar>(points: &[S], dim: usize, order: usize) -> Vec<S> {
         return Vec::new();
     }
     let n = S::from_usize(order - 1);
-    (0..(order - 1) * dim)
-        .map(|idx| n * (points[idx + dim] - points[idx]))
-        .collect()
+    (0..(order - 1) * dim).map(|idx| n * (points[idx + dim] - points[idx])).collect()
 }
 
 /// The Bernstein basis values Bᵢⁿ(t), i = 0..order−1, written into `out[..order]`,
@@ -181,7 +179,7 @@ pub fn elevate<S: Scalar>(points: &[S], dim: usize, order: usize) -> Vec<S> {
 /// ```
 /// use gleval::math::BezierCurve;
 /// // Seed 004, 9.7.1: the cubic through (0,0),(1,1),(2,-1),(3,0).
-/// let c = BezierCurve::try_new(2, vec![0.0, 0.0, 1.0, 1.0, 2.0, -1.0, 3.0, 0.0]).unwrap();
+/// let c = BezierCurve::<f64>::try_new(2, vec![0.0, 0.0, 1.0, 1.0, 2.0, -1.0, 3.0, 0.0]).unwrap();
 /// let p = c.eval(1.0 / 3.0);
 /// assert!((p[0] - 1.0).abs() < 1e-12 && (p[1] - 2.0 / 9.0).abs() < 1e-12);
 /// ```
@@ -231,10 +229,7 @@ impl<S: Scalar> BezierCurve<S> {
     /// The derivative curve, one order lower (`None` for a constant curve).
     #[must_use]
     pub fn hodograph(&self) -> Option<Self> {
-        (self.order() >= 2).then(|| Self {
-            dim: self.dim,
-            points: hodograph(&self.points, self.dim, self.order()),
-        })
+        (self.order() >= 2).then(|| Self { dim: self.dim, points: hodograph(&self.points, self.dim, self.order()) })
     }
 
     /// The two halves at `t`.

@@ -52,3 +52,6 @@ impl core::fmt::Display for MathError {
 }
 
 impl std::error::Error for MathError {}
+pub use bspline::{BSplineCurve, BSplineSurface, ProjectedSample};
+pub use insertion::{BezierPatches, BezierPieces, Direction};
+pub use knots::{GluKnotError, KnotVector};

@@ -291,7 +291,7 @@ static void run_call(const char *c)
         if (dbl) glMap1d(t, u1, u2, stride, order, p);
         else glMap1f(t, (float)u1, (float)u2, stride, order, p);
         if (given >= 0 && given < need1(t, stride, order))
-            fprintf(stderr, "%s:%d: warning: short array\n", script_name, lineno);
+            die("array shorter than what the call reads", NULL);
         free(p);
     } else if (!strcmp(c, "map2f") || !strcmp(c, "map2d")) {
         GLenum t = arg_enum();
@@ -305,7 +305,7 @@ static void run_call(const char *c)
         if (dbl) glMap2d(t, u1, u2, us, uo, v1, v2, vs, vo, p);
         else glMap2f(t, (float)u1, (float)u2, us, uo, (float)v1, (float)v2, vs, vo, p);
         if (given >= 0 && given < need)
-            fprintf(stderr, "%s:%d: warning: short array\n", script_name, lineno);
+            die("array shorter than what the call reads", NULL);
         free(p);
     } else if (!strcmp(c, "map_grid1f")) {
         GLint n = arg_int(); float a = arg_float(), b = arg_float();
