@@ -45,8 +45,11 @@ fn dump(frame: &Frame) -> String {
     s
 }
 
+/// A built-in program: name, window size, display function.
+type Program = (&'static str, i32, i32, fn(&mut Gl));
+
 fn main() -> std::io::Result<()> {
-    let programs: [(&str, i32, i32, fn(&mut Gl)); 2] = [("bezcurve", 400, 200, bez_curve), ("bezsurf", 500, 200, bez_surf)];
+    let programs: [Program; 2] = [("bezcurve", 400, 200, bez_curve), ("bezsurf", 500, 200, bez_surf)];
     let dir = std::path::Path::new("out/gallery");
     std::fs::create_dir_all(dir)?;
     println!("{:<10} {:>10} {:>9} {:>6}", "program", "primitives", "vertices", "error");

@@ -15,6 +15,8 @@
 //! Rust with no GPU or windowing dependency.
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
+// Numeric kernels index several component arrays in lockstep; iterator chains would hide that.
+#![allow(clippy::needless_range_loop)]
 
 pub mod gl;
 pub mod gll;

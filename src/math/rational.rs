@@ -10,7 +10,7 @@ pub fn project<S: Scalar>(p: Vec4<S>) -> [S; 3] {
     [p[0] / p[3], p[1] / p[3], p[2] / p[3]]
 }
 
-/// The derivative of the projected point scaled by w²: d[c]·w − d[3]·p[c] for c = x, y, z.
+/// The derivative of the projected point scaled by w²: `d[c]·w − d[3]·p[c]` for c = x, y, z.
 /// This is Mesa's correction for `GL_MAP2_VERTEX_4` auto normals (`vbo_exec_eval.c`); after
 /// normalisation the positive factor w² does not matter.
 #[must_use]

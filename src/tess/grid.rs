@@ -94,7 +94,7 @@ pub fn eval_grid1<S: Scalar>(map: &MapView<'_, S>, us: &[S], out: &mut Vec<Vec4<
 }
 
 /// Points (and optionally partial derivatives) of a patch over a grid, row-major with v outer:
-/// the value at (us[i], vs[j]) is at `j * us.len() + i`.
+/// the value at (`us[i]`, `vs[j]`) is at `j * us.len() + i`.
 #[derive(Clone, Debug, Default)]
 pub struct Grid2<S: Scalar> {
     /// Grid points.

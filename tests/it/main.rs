@@ -1,4 +1,5 @@
 //! Integration tests: one binary to save link time (STYLE.md §9).
+#![allow(clippy::needless_range_loop)]
 
 mod eval_mesh;
 mod mesa_calls;
