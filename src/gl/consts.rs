@@ -108,3 +108,58 @@ pub const GL_EVAL_BIT: GLenum = 0x0001_0000;
 
 // Mesa's limit on evaluator order (`src/mesa/main/config.h` MAX_EVAL_ORDER).
 pub const MAX_EVAL_ORDER: i32 = 30;
+
+// Matrices.
+pub const GL_MATRIX_MODE: GLenum = 0x0BA0;
+pub const GL_MODELVIEW: GLenum = 0x1700;
+pub const GL_PROJECTION: GLenum = 0x1701;
+pub const GL_TEXTURE: GLenum = 0x1702;
+pub const GL_VIEWPORT: GLenum = 0x0BA2;
+pub const GL_MODELVIEW_MATRIX: GLenum = 0x0BA6;
+pub const GL_PROJECTION_MATRIX: GLenum = 0x0BA7;
+pub const GL_DEPTH_RANGE: GLenum = 0x0B70;
+
+// Faces and winding.
+pub const GL_FRONT: GLenum = 0x0404;
+pub const GL_BACK: GLenum = 0x0405;
+pub const GL_FRONT_AND_BACK: GLenum = 0x0408;
+pub const GL_CW: GLenum = 0x0900;
+pub const GL_CCW: GLenum = 0x0901;
+
+// Lights and materials.
+pub const GL_AMBIENT: GLenum = 0x1200;
+pub const GL_DIFFUSE: GLenum = 0x1201;
+pub const GL_SPECULAR: GLenum = 0x1202;
+pub const GL_POSITION: GLenum = 0x1203;
+pub const GL_SPOT_DIRECTION: GLenum = 0x1204;
+pub const GL_SPOT_EXPONENT: GLenum = 0x1205;
+pub const GL_SPOT_CUTOFF: GLenum = 0x1206;
+pub const GL_CONSTANT_ATTENUATION: GLenum = 0x1207;
+pub const GL_LINEAR_ATTENUATION: GLenum = 0x1208;
+pub const GL_QUADRATIC_ATTENUATION: GLenum = 0x1209;
+pub const GL_EMISSION: GLenum = 0x1600;
+pub const GL_SHININESS: GLenum = 0x1601;
+pub const GL_AMBIENT_AND_DIFFUSE: GLenum = 0x1602;
+pub const GL_LIGHT_MODEL_LOCAL_VIEWER: GLenum = 0x0B51;
+pub const GL_LIGHT_MODEL_TWO_SIDE: GLenum = 0x0B52;
+pub const GL_LIGHT_MODEL_AMBIENT: GLenum = 0x0B53;
+pub const GL_FLAT: GLenum = 0x1D00;
+pub const GL_SMOOTH: GLenum = 0x1D01;
+
+// Depth comparison.
+pub const GL_NEVER: GLenum = 0x0200;
+pub const GL_LESS: GLenum = 0x0201;
+pub const GL_EQUAL: GLenum = 0x0202;
+pub const GL_LEQUAL: GLenum = 0x0203;
+pub const GL_GREATER: GLenum = 0x0204;
+pub const GL_NOTEQUAL: GLenum = 0x0205;
+pub const GL_GEQUAL: GLenum = 0x0206;
+pub const GL_ALWAYS: GLenum = 0x0207;
+
+// Other buffer bits.
+pub const GL_ACCUM_BUFFER_BIT: GLenum = 0x0000_0200;
+pub const GL_STENCIL_BUFFER_BIT: GLenum = 0x0000_0400;
+
+// GLUT's glutGet names.
+pub const GLUT_WINDOW_WIDTH: GLenum = 102;
+pub const GLUT_WINDOW_HEIGHT: GLenum = 103;

@@ -99,6 +99,7 @@ impl Gl {
         }
         if Caps::known(cap) {
             self.caps.set(cap, on);
+            self.touch_state();
         } else {
             self.set_error(GL_INVALID_ENUM);
         }

@@ -2,7 +2,9 @@
 //! `end` (from immediate mode or from the evaluators), and a log of the immediate-mode calls.
 //! Tests read it; the renderer draws it.
 
-use super::types::GLenum;
+use super::lighting::Lighting;
+use super::types::{GLbitfield, GLenum};
+use glam::Mat4;
 
 /// One vertex as GL hands it to the rest of the pipeline: object-space position (w not divided),
 /// and the current (or evaluated) colour, normal and texture coordinate of unit 0.
@@ -27,6 +29,59 @@ pub struct Primitive {
     pub first: usize,
     /// Number of vertices (may be too few to draw anything, as in GL).
     pub count: usize,
+    /// Index in [`Frame::states`] of the GL state the primitive is drawn with.
+    pub state: usize,
+}
+
+/// The GL state a primitive is drawn with, captured at `begin`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct DrawState {
+    /// The modelview matrix (column-major, GL conventions).
+    pub modelview: Mat4,
+    /// The projection matrix.
+    pub projection: Mat4,
+    /// x, y, width, height in pixels, origin bottom-left.
+    pub viewport: [i32; 4],
+    /// `glDepthRange`.
+    pub depth_range: [f32; 2],
+    /// Lights and materials when `GL_LIGHTING` is enabled.
+    pub lighting: Option<Lighting>,
+    /// `GL_COLOR_MATERIAL` enabled.
+    pub color_material: bool,
+    /// `GL_NORMALIZE` enabled.
+    pub normalize: bool,
+    /// `GL_RESCALE_NORMAL` enabled.
+    pub rescale_normal: bool,
+    /// `GL_FLAT` or `GL_SMOOTH`.
+    pub shade_model: GLenum,
+    /// `glPointSize`.
+    pub point_size: f32,
+    /// `glLineWidth`.
+    pub line_width: f32,
+    /// Front and back `glPolygonMode`.
+    pub polygon_mode: [GLenum; 2],
+    /// `GL_CW` or `GL_CCW`.
+    pub front_face: GLenum,
+    /// The culled face when `GL_CULL_FACE` is enabled.
+    pub cull_face: Option<GLenum>,
+    /// The depth function when `GL_DEPTH_TEST` is enabled.
+    pub depth_test: Option<GLenum>,
+}
+
+/// Framebuffer operations and draws, in program order.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Command {
+    /// `glClear(mask)` with the clear values current then.
+    Clear {
+        /// The buffer bits.
+        mask: GLbitfield,
+        /// The clear colour.
+        color: [f32; 4],
+        /// The clear depth.
+        depth: f32,
+    },
+    /// Draw primitive number `n` of [`Frame::primitives`].
+    Draw(usize),
 }
 
 /// An immediate-mode call, in the order the program made it.
@@ -56,6 +111,10 @@ pub struct Frame {
     /// The immediate-mode calls the program made (evaluator output is not logged here,
     /// only in `primitives`).
     pub calls: Vec<Call>,
+    /// The distinct draw states primitives refer to.
+    pub states: Vec<DrawState>,
+    /// Clears and draws in program order.
+    pub commands: Vec<Command>,
 }
 
 impl Frame {
@@ -75,5 +134,7 @@ impl Frame {
         self.vertices.clear();
         self.primitives.clear();
         self.calls.clear();
+        self.states.clear();
+        self.commands.clear();
     }
 }

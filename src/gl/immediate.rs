@@ -34,8 +34,11 @@ impl Gl {
     /// Begins a primitive on behalf of the evaluators (not logged as a user call).
     pub(crate) fn open_primitive_raw(&mut self, mode: GLenum) {
         let first = self.frame.vertices.len();
-        self.frame.primitives.push(Primitive { mode, first, count: 0 });
-        self.open_primitive = Some(self.frame.primitives.len() - 1);
+        let state = self.current_state_index();
+        self.frame.primitives.push(Primitive { mode, first, count: 0, state });
+        let index = self.frame.primitives.len() - 1;
+        self.frame.commands.push(super::frame::Command::Draw(index));
+        self.open_primitive = Some(index);
     }
 
     /// Adds a finished vertex to the open primitive; outside `begin`/`end` a vertex only

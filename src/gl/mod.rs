@@ -11,10 +11,14 @@ mod enable;
 mod eval;
 mod frame;
 mod immediate;
+mod lighting;
+mod matrix;
+mod raster;
 pub mod types;
 
 pub use eval::{MapTarget, Slot};
-pub use frame::{Call, Frame, Primitive, Vertex};
+pub use frame::{Call, Command, DrawState, Frame, Primitive, Vertex};
+pub use lighting::{Light, Lighting, Material};
 
 use consts::*;
 use types::*;
@@ -59,6 +63,11 @@ pub struct Gl {
     caps: enable::Caps,
     pub(crate) eval: eval::EvalState,
     active_texture: GLenum,
+    matrices: matrix::MatrixStacks,
+    lighting: lighting::Lighting,
+    raster: raster::RasterState,
+    /// Index in `frame.states` of a snapshot of the current state, if still valid.
+    state_index: Option<usize>,
     frame: Frame,
 }
 
@@ -75,6 +84,10 @@ impl Gl {
             caps: enable::Caps::default(),
             eval: eval::EvalState::default(),
             active_texture: GL_TEXTURE0,
+            matrices: matrix::MatrixStacks::default(),
+            lighting: lighting::Lighting::default(),
+            raster: raster::RasterState::new(width, height),
+            state_index: None,
             frame: Frame::default(),
         }
     }
@@ -99,7 +112,53 @@ impl Gl {
 
     /// Takes the recorded frame, leaving an empty one (the GL state is kept).
     pub fn take_frame(&mut self) -> Frame {
+        self.state_index = None;
         std::mem::take(&mut self.frame)
+    }
+
+    /// Marks the draw state as changed: the next primitive records a new snapshot.
+    pub(crate) fn touch_state(&mut self) {
+        self.state_index = None;
+    }
+
+    /// The index of the current draw state in the frame, recording it if needed.
+    pub(crate) fn current_state_index(&mut self) -> usize {
+        if let Some(i) = self.state_index {
+            return i;
+        }
+        let state = self.snapshot();
+        self.frame.states.push(state);
+        let i = self.frame.states.len() - 1;
+        self.state_index = Some(i);
+        i
+    }
+
+    fn snapshot(&self) -> DrawState {
+        let r = &self.raster;
+        let lighting = self.caps.is_on(GL_LIGHTING).then(|| {
+            let mut l = self.lighting.clone();
+            for (i, light) in l.lights.iter_mut().enumerate() {
+                light.enabled = self.caps.is_on(GL_LIGHT0 + i as GLenum);
+            }
+            l
+        });
+        DrawState {
+            modelview: self.matrices.modelview(),
+            projection: self.matrices.projection(),
+            viewport: r.viewport,
+            depth_range: r.depth_range,
+            lighting,
+            color_material: self.caps.is_on(GL_COLOR_MATERIAL),
+            normalize: self.caps.is_on(GL_NORMALIZE),
+            rescale_normal: self.caps.is_on(GL_RESCALE_NORMAL),
+            shade_model: r.shade_model,
+            point_size: r.point_size,
+            line_width: r.line_width,
+            polygon_mode: r.polygon_mode,
+            front_face: r.front_face,
+            cull_face: self.caps.is_on(GL_CULL_FACE).then_some(r.cull_face),
+            depth_test: self.caps.is_on(GL_DEPTH_TEST).then_some(r.depth_func),
+        }
     }
 
     /// `glGetError`: returns the first error recorded since the last call and clears it.

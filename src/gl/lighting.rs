@@ -1,0 +1,258 @@
+//! Lights, materials, the light model, colour material and the shade model (GL 1.1 spec
+//! §2.13), with GL's initial values. Positions and spot directions are stored in eye
+//! coordinates, transformed by the modelview matrix current when they were set.
+
+use super::consts::*;
+use super::types::*;
+use super::Gl;
+use glam::{Mat3, Vec3, Vec4};
+
+/// One light source (`GL_LIGHTi`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Light {
+    /// Whether `GL_LIGHTi` is enabled.
+    pub enabled: bool,
+    /// Ambient intensity, initially (0, 0, 0, 1).
+    pub ambient: Vec4,
+    /// Diffuse intensity: (1, 1, 1, 1) for light 0, else (0, 0, 0, 1).
+    pub diffuse: Vec4,
+    /// Specular intensity: as diffuse.
+    pub specular: Vec4,
+    /// Eye-space position; w = 0 is a directional light. Initially (0, 0, 1, 0).
+    pub position: Vec4,
+    /// Eye-space spot direction, initially (0, 0, −1).
+    pub spot_direction: Vec3,
+    /// Spot exponent, 0..=128.
+    pub spot_exponent: f32,
+    /// Spot cutoff in degrees, 0..=90 or 180 (no spot).
+    pub spot_cutoff: f32,
+    /// Constant, linear and quadratic attenuation.
+    pub attenuation: Vec3,
+}
+
+impl Light {
+    fn initial(index: usize) -> Self {
+        let colour = if index == 0 { Vec4::ONE } else { Vec4::new(0.0, 0.0, 0.0, 1.0) };
+        Self {
+            enabled: false,
+            ambient: Vec4::new(0.0, 0.0, 0.0, 1.0),
+            diffuse: colour,
+            specular: colour,
+            position: Vec4::new(0.0, 0.0, 1.0, 0.0),
+            spot_direction: Vec3::new(0.0, 0.0, -1.0),
+            spot_exponent: 0.0,
+            spot_cutoff: 180.0,
+            attenuation: Vec3::new(1.0, 0.0, 0.0),
+        }
+    }
+}
+
+/// A material (front or back).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Material {
+    /// Initially (0.2, 0.2, 0.2, 1).
+    pub ambient: Vec4,
+    /// Initially (0.8, 0.8, 0.8, 1).
+    pub diffuse: Vec4,
+    /// Initially (0, 0, 0, 1).
+    pub specular: Vec4,
+    /// Initially (0, 0, 0, 1).
+    pub emission: Vec4,
+    /// Specular exponent 0..=128, initially 0.
+    pub shininess: f32,
+}
+
+impl Default for Material {
+    fn default() -> Self {
+        Self {
+            ambient: Vec4::new(0.2, 0.2, 0.2, 1.0),
+            diffuse: Vec4::new(0.8, 0.8, 0.8, 1.0),
+            specular: Vec4::new(0.0, 0.0, 0.0, 1.0),
+            emission: Vec4::new(0.0, 0.0, 0.0, 1.0),
+            shininess: 0.0,
+        }
+    }
+}
+
+/// Everything per-vertex lighting needs.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Lighting {
+    /// The eight lights.
+    pub lights: [Light; 8],
+    /// Front (0) and back (1) materials.
+    pub materials: [Material; 2],
+    /// `GL_LIGHT_MODEL_AMBIENT`, initially (0.2, 0.2, 0.2, 1).
+    pub model_ambient: Vec4,
+    /// `GL_LIGHT_MODEL_LOCAL_VIEWER`.
+    pub local_viewer: bool,
+    /// `GL_LIGHT_MODEL_TWO_SIDE`.
+    pub two_side: bool,
+    /// `glColorMaterial` face and mode (used when `GL_COLOR_MATERIAL` is enabled).
+    pub color_material: (GLenum, GLenum),
+}
+
+impl Default for Lighting {
+    fn default() -> Self {
+        Self {
+            lights: std::array::from_fn(Light::initial),
+            materials: [Material::default(); 2],
+            model_ambient: Vec4::new(0.2, 0.2, 0.2, 1.0),
+            local_viewer: false,
+            two_side: false,
+            color_material: (GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE),
+        }
+    }
+}
+
+fn vec4_from(p: &[f32]) -> Vec4 {
+    Vec4::new(p[0], p[1], p[2], p[3])
+}
+
+impl Gl {
+    /// `glLightfv`. Unknown light or name → `GL_INVALID_ENUM`; a spot exponent outside 0..=128,
+    /// a cutoff outside 0..=90 other than 180, or a negative attenuation → `GL_INVALID_VALUE`.
+    /// `params` needs 4 values for colours and positions, 3 for the spot direction, else 1.
+    pub fn light_fv(&mut self, light: GLenum, pname: GLenum, params: &[GLfloat]) {
+        if self.reject_inside_begin_end() {
+            return;
+        }
+        let Some(index) = light.checked_sub(GL_LIGHT0).filter(|i| *i < 8).map(|i| i as usize) else {
+            return self.set_error(GL_INVALID_ENUM);
+        };
+        let needed = match pname {
+            GL_AMBIENT | GL_DIFFUSE | GL_SPECULAR | GL_POSITION => 4,
+            GL_SPOT_DIRECTION => 3,
+            GL_SPOT_EXPONENT | GL_SPOT_CUTOFF | GL_CONSTANT_ATTENUATION..=GL_QUADRATIC_ATTENUATION => 1,
+            _ => return self.set_error(GL_INVALID_ENUM),
+        };
+        if params.len() < needed {
+            return self.set_error(GL_INVALID_VALUE);
+        }
+        let p = params[0];
+        let invalid = match pname {
+            GL_SPOT_EXPONENT => !(0.0..=128.0).contains(&p),
+            GL_SPOT_CUTOFF => !((0.0..=90.0).contains(&p) || p == 180.0),
+            GL_CONSTANT_ATTENUATION..=GL_QUADRATIC_ATTENUATION => p < 0.0,
+            _ => false,
+        };
+        if invalid {
+            return self.set_error(GL_INVALID_VALUE);
+        }
+        let modelview = self.matrices.modelview();
+        let l = &mut self.lighting.lights[index];
+        match pname {
+            GL_AMBIENT => l.ambient = vec4_from(params),
+            GL_DIFFUSE => l.diffuse = vec4_from(params),
+            GL_SPECULAR => l.specular = vec4_from(params),
+            GL_POSITION => l.position = modelview * vec4_from(params),
+            GL_SPOT_DIRECTION => {
+                l.spot_direction = Mat3::from_mat4(modelview) * Vec3::new(params[0], params[1], params[2])
+            }
+            GL_SPOT_EXPONENT => l.spot_exponent = p,
+            GL_SPOT_CUTOFF => l.spot_cutoff = p,
+            GL_CONSTANT_ATTENUATION => l.attenuation.x = p,
+            GL_LINEAR_ATTENUATION => l.attenuation.y = p,
+            _ => l.attenuation.z = p,
+        }
+        self.touch_state();
+    }
+
+    /// `glLightf` for the single-valued names.
+    pub fn light_f(&mut self, light: GLenum, pname: GLenum, param: GLfloat) {
+        self.light_fv(light, pname, &[param]);
+    }
+
+    /// `glMaterialfv` (allowed between begin and end). Bad face or name → `GL_INVALID_ENUM`;
+    /// shininess outside 0..=128 → `GL_INVALID_VALUE`.
+    pub fn material_fv(&mut self, face: GLenum, pname: GLenum, params: &[GLfloat]) {
+        let faces: &[usize] = match face {
+            GL_FRONT => &[0],
+            GL_BACK => &[1],
+            GL_FRONT_AND_BACK => &[0, 1],
+            _ => return self.set_error(GL_INVALID_ENUM),
+        };
+        let needed = match pname {
+            GL_AMBIENT | GL_DIFFUSE | GL_SPECULAR | GL_EMISSION | GL_AMBIENT_AND_DIFFUSE => 4,
+            GL_SHININESS => 1,
+            _ => return self.set_error(GL_INVALID_ENUM),
+        };
+        if params.len() < needed {
+            return self.set_error(GL_INVALID_VALUE);
+        }
+        if pname == GL_SHININESS && !(0.0..=128.0).contains(&params[0]) {
+            return self.set_error(GL_INVALID_VALUE);
+        }
+        for &f in faces {
+            let m = &mut self.lighting.materials[f];
+            match pname {
+                GL_AMBIENT => m.ambient = vec4_from(params),
+                GL_DIFFUSE => m.diffuse = vec4_from(params),
+                GL_SPECULAR => m.specular = vec4_from(params),
+                GL_EMISSION => m.emission = vec4_from(params),
+                GL_AMBIENT_AND_DIFFUSE => {
+                    m.ambient = vec4_from(params);
+                    m.diffuse = m.ambient;
+                }
+                _ => m.shininess = params[0],
+            }
+        }
+        self.touch_state();
+    }
+
+    /// `glMaterialf` (`GL_SHININESS`).
+    pub fn material_f(&mut self, face: GLenum, pname: GLenum, param: GLfloat) {
+        self.material_fv(face, pname, &[param]);
+    }
+
+    /// `glLightModelfv`: `GL_LIGHT_MODEL_AMBIENT` (4 values), `_LOCAL_VIEWER`, `_TWO_SIDE`.
+    pub fn light_model_fv(&mut self, pname: GLenum, params: &[GLfloat]) {
+        if self.reject_inside_begin_end() {
+            return;
+        }
+        let needed = match pname {
+            GL_LIGHT_MODEL_AMBIENT => 4,
+            GL_LIGHT_MODEL_LOCAL_VIEWER | GL_LIGHT_MODEL_TWO_SIDE => 1,
+            _ => return self.set_error(GL_INVALID_ENUM),
+        };
+        if params.len() < needed {
+            return self.set_error(GL_INVALID_VALUE);
+        }
+        match pname {
+            GL_LIGHT_MODEL_AMBIENT => self.lighting.model_ambient = vec4_from(params),
+            GL_LIGHT_MODEL_LOCAL_VIEWER => self.lighting.local_viewer = params[0] != 0.0,
+            _ => self.lighting.two_side = params[0] != 0.0,
+        }
+        self.touch_state();
+    }
+
+    /// `glLightModeli`.
+    pub fn light_model_i(&mut self, pname: GLenum, param: GLint) {
+        self.light_model_fv(pname, &[param as f32]);
+    }
+
+    /// `glColorMaterial(face, mode)`.
+    pub fn color_material(&mut self, face: GLenum, mode: GLenum) {
+        if self.reject_inside_begin_end() {
+            return;
+        }
+        let face_ok = matches!(face, GL_FRONT | GL_BACK | GL_FRONT_AND_BACK);
+        let mode_ok = matches!(mode, GL_AMBIENT | GL_DIFFUSE | GL_SPECULAR | GL_EMISSION | GL_AMBIENT_AND_DIFFUSE);
+        if !face_ok || !mode_ok {
+            return self.set_error(GL_INVALID_ENUM);
+        }
+        self.lighting.color_material = (face, mode);
+        self.touch_state();
+    }
+
+    /// `glShadeModel`: `GL_FLAT` or `GL_SMOOTH`.
+    pub fn shade_model(&mut self, mode: GLenum) {
+        if self.reject_inside_begin_end() {
+            return;
+        }
+        if mode != GL_FLAT && mode != GL_SMOOTH {
+            return self.set_error(GL_INVALID_ENUM);
+        }
+        self.raster.shade_model = mode;
+        self.touch_state();
+    }
+}

@@ -1,0 +1,291 @@
+//! Matrix stacks and the matrix calls (GL 1.1 spec §2.10.2), plus GLU's `gluOrtho2D`,
+//! `gluPerspective` and `gluLookAt`. Matrices are column-major as in GL; a call multiplies the
+//! current matrix on the right (`C = C · M`), as `glMultMatrix` does. All arithmetic is `f32`,
+//! as Mesa's `m_matrix.c`.
+
+use super::consts::*;
+use super::types::*;
+use super::Gl;
+use glam::{Mat4, Vec3, Vec4};
+
+/// Mesa's stack depths (`config.h`): MAX_MODELVIEW_STACK_DEPTH 32, projection 32, texture 10.
+const DEPTHS: [usize; 3] = [32, 32, 10];
+
+/// The three matrix stacks; the top of each is its last element.
+#[derive(Clone, Debug)]
+pub(crate) struct MatrixStacks {
+    stacks: [Vec<Mat4>; 3],
+    mode: usize,
+}
+
+impl Default for MatrixStacks {
+    fn default() -> Self {
+        Self { stacks: [vec![Mat4::IDENTITY], vec![Mat4::IDENTITY], vec![Mat4::IDENTITY]], mode: 0 }
+    }
+}
+
+impl MatrixStacks {
+    pub fn modelview(&self) -> Mat4 {
+        *self.stacks[0].last().unwrap_or(&Mat4::IDENTITY)
+    }
+
+    pub fn projection(&self) -> Mat4 {
+        *self.stacks[1].last().unwrap_or(&Mat4::IDENTITY)
+    }
+
+    fn top(&mut self) -> &mut Mat4 {
+        let stack = &mut self.stacks[self.mode];
+        if stack.is_empty() {
+            stack.push(Mat4::IDENTITY);
+        }
+        let last = stack.len() - 1;
+        &mut stack[last]
+    }
+}
+
+/// Rotation by `angle` degrees about (x, y, z) as `glRotate` defines it; a near-zero axis leaves
+/// the matrix unchanged (Mesa `_math_matrix_rotate`).
+fn rotation(angle: f32, x: f32, y: f32, z: f32) -> Option<Mat4> {
+    let axis = Vec3::new(x, y, z);
+    let len = axis.length();
+    if len <= 1.0e-4 || !len.is_finite() {
+        return None;
+    }
+    Some(Mat4::from_axis_angle(axis / len, angle.to_radians()))
+}
+
+/// `glOrtho`'s matrix.
+fn ortho_matrix(l: f32, r: f32, b: f32, t: f32, n: f32, f: f32) -> Mat4 {
+    Mat4::from_cols(
+        Vec4::new(2.0 / (r - l), 0.0, 0.0, 0.0),
+        Vec4::new(0.0, 2.0 / (t - b), 0.0, 0.0),
+        Vec4::new(0.0, 0.0, -2.0 / (f - n), 0.0),
+        Vec4::new(-(r + l) / (r - l), -(t + b) / (t - b), -(f + n) / (f - n), 1.0),
+    )
+}
+
+/// `glFrustum`'s matrix.
+fn frustum_matrix(l: f32, r: f32, b: f32, t: f32, n: f32, f: f32) -> Mat4 {
+    Mat4::from_cols(
+        Vec4::new(2.0 * n / (r - l), 0.0, 0.0, 0.0),
+        Vec4::new(0.0, 2.0 * n / (t - b), 0.0, 0.0),
+        Vec4::new((r + l) / (r - l), (t + b) / (t - b), -(f + n) / (f - n), -1.0),
+        Vec4::new(0.0, 0.0, -2.0 * f * n / (f - n), 0.0),
+    )
+}
+
+impl Gl {
+    /// `glMatrixMode`: `GL_MODELVIEW`, `GL_PROJECTION` or `GL_TEXTURE`; else `GL_INVALID_ENUM`.
+    pub fn matrix_mode(&mut self, mode: GLenum) {
+        if self.reject_inside_begin_end() {
+            return;
+        }
+        match mode {
+            GL_MODELVIEW..=GL_TEXTURE => self.matrices.mode = (mode - GL_MODELVIEW) as usize,
+            _ => self.set_error(GL_INVALID_ENUM),
+        }
+    }
+
+    /// Applies `f` to the current matrix (outside begin/end only).
+    fn change_matrix(&mut self, f: impl FnOnce(&mut Mat4)) {
+        if self.reject_inside_begin_end() {
+            return;
+        }
+        f(self.matrices.top());
+        self.touch_state();
+    }
+
+    /// `glLoadIdentity`.
+    pub fn load_identity(&mut self) {
+        self.change_matrix(|m| *m = Mat4::IDENTITY);
+    }
+
+    /// `glLoadMatrixf`: `m` needs 16 values, column-major.
+    pub fn load_matrixf(&mut self, m: &[GLfloat]) {
+        if let Some(m) = self.needs::<16>(m) {
+            self.change_matrix(|top| *top = Mat4::from_cols_array(&m));
+        }
+    }
+
+    /// `glMultMatrixf`: `m` needs 16 values, column-major.
+    pub fn mult_matrixf(&mut self, m: &[GLfloat]) {
+        if let Some(m) = self.needs::<16>(m) {
+            self.change_matrix(|top| *top *= Mat4::from_cols_array(&m));
+        }
+    }
+
+    /// `glPushMatrix`: `GL_STACK_OVERFLOW` when the stack is full.
+    pub fn push_matrix(&mut self) {
+        if self.reject_inside_begin_end() {
+            return;
+        }
+        let mode = self.matrices.mode;
+        let top = self.matrices.top().to_owned();
+        if self.matrices.stacks[mode].len() >= DEPTHS[mode] {
+            return self.set_error(GL_STACK_OVERFLOW);
+        }
+        self.matrices.stacks[mode].push(top);
+    }
+
+    /// `glPopMatrix`: `GL_STACK_UNDERFLOW` when only one matrix is left.
+    pub fn pop_matrix(&mut self) {
+        if self.reject_inside_begin_end() {
+            return;
+        }
+        let stack = &mut self.matrices.stacks[self.matrices.mode];
+        if stack.len() <= 1 {
+            return self.set_error(GL_STACK_UNDERFLOW);
+        }
+        stack.pop();
+        self.touch_state();
+    }
+
+    /// `glTranslatef`.
+    pub fn translatef(&mut self, x: GLfloat, y: GLfloat, z: GLfloat) {
+        self.change_matrix(|m| *m *= Mat4::from_translation(Vec3::new(x, y, z)));
+    }
+
+    /// `glTranslated` (cast to float).
+    pub fn translated(&mut self, x: GLdouble, y: GLdouble, z: GLdouble) {
+        self.translatef(x as f32, y as f32, z as f32);
+    }
+
+    /// `glRotatef`: `angle` in degrees about the axis (x, y, z).
+    pub fn rotatef(&mut self, angle: GLfloat, x: GLfloat, y: GLfloat, z: GLfloat) {
+        let r = rotation(angle, x, y, z);
+        self.change_matrix(|m| {
+            if let Some(r) = r {
+                *m *= r;
+            }
+        });
+    }
+
+    /// `glRotated` (cast to float).
+    pub fn rotated(&mut self, angle: GLdouble, x: GLdouble, y: GLdouble, z: GLdouble) {
+        self.rotatef(angle as f32, x as f32, y as f32, z as f32);
+    }
+
+    /// `glScalef`.
+    pub fn scalef(&mut self, x: GLfloat, y: GLfloat, z: GLfloat) {
+        self.change_matrix(|m| *m *= Mat4::from_scale(Vec3::new(x, y, z)));
+    }
+
+    /// `glScaled` (cast to float).
+    pub fn scaled(&mut self, x: GLdouble, y: GLdouble, z: GLdouble) {
+        self.scalef(x as f32, y as f32, z as f32);
+    }
+
+    /// `glOrtho`: `left == right`, `bottom == top` or `near == far` → `GL_INVALID_VALUE`.
+    pub fn ortho(
+        &mut self,
+        left: GLdouble,
+        right: GLdouble,
+        bottom: GLdouble,
+        top: GLdouble,
+        near: GLdouble,
+        far: GLdouble,
+    ) {
+        if self.reject_inside_begin_end() {
+            return;
+        }
+        if left == right || bottom == top || near == far {
+            return self.set_error(GL_INVALID_VALUE);
+        }
+        let m = ortho_matrix(left as f32, right as f32, bottom as f32, top as f32, near as f32, far as f32);
+        self.change_matrix(|top| *top *= m);
+    }
+
+    /// `glFrustum`: `near <= 0`, `far <= 0`, `near == far`, `left == right` or
+    /// `bottom == top` → `GL_INVALID_VALUE`.
+    pub fn frustum(
+        &mut self,
+        left: GLdouble,
+        right: GLdouble,
+        bottom: GLdouble,
+        top: GLdouble,
+        near: GLdouble,
+        far: GLdouble,
+    ) {
+        if self.reject_inside_begin_end() {
+            return;
+        }
+        if near <= 0.0 || far <= 0.0 || near == far || left == right || top == bottom {
+            return self.set_error(GL_INVALID_VALUE);
+        }
+        let m = frustum_matrix(left as f32, right as f32, bottom as f32, top as f32, near as f32, far as f32);
+        self.change_matrix(|top| *top *= m);
+    }
+
+    /// `gluOrtho2D`: `glOrtho(left, right, bottom, top, -1, 1)`.
+    pub fn glu_ortho_2d(&mut self, left: GLdouble, right: GLdouble, bottom: GLdouble, top: GLdouble) {
+        self.ortho(left, right, bottom, top, -1.0, 1.0);
+    }
+
+    /// `gluPerspective`: like GLU, does nothing when `far == near`, `aspect == 0` or the
+    /// field of view makes sin(fovy/2) zero.
+    pub fn glu_perspective(&mut self, fovy: GLdouble, aspect: GLdouble, near: GLdouble, far: GLdouble) {
+        let radians = fovy / 2.0 * std::f64::consts::PI / 180.0;
+        let (sine, delta_z) = (radians.sin(), far - near);
+        if delta_z == 0.0 || sine == 0.0 || aspect == 0.0 {
+            return;
+        }
+        let cotangent = radians.cos() / sine;
+        let mut m = [0.0f32; 16];
+        m[0] = (cotangent / aspect) as f32;
+        m[5] = cotangent as f32;
+        m[10] = (-(far + near) / delta_z) as f32;
+        m[11] = -1.0;
+        m[14] = (-2.0 * near * far / delta_z) as f32;
+        self.mult_matrixf(&m);
+    }
+
+    /// `gluLookAt`: eye at `eye`, looking at `center`, with `up` as the up direction.
+    #[allow(clippy::too_many_arguments)]
+    pub fn glu_look_at(
+        &mut self,
+        eye_x: GLdouble,
+        eye_y: GLdouble,
+        eye_z: GLdouble,
+        center_x: GLdouble,
+        center_y: GLdouble,
+        center_z: GLdouble,
+        up_x: GLdouble,
+        up_y: GLdouble,
+        up_z: GLdouble,
+    ) {
+        let eye = glam::DVec3::new(eye_x, eye_y, eye_z);
+        let forward = (glam::DVec3::new(center_x, center_y, center_z) - eye).normalize_or_zero();
+        let side = forward.cross(glam::DVec3::new(up_x, up_y, up_z)).normalize_or_zero();
+        let up = side.cross(forward);
+        #[rustfmt::skip]
+        let m = [
+            side.x as f32, up.x as f32, -forward.x as f32, 0.0,
+            side.y as f32, up.y as f32, -forward.y as f32, 0.0,
+            side.z as f32, up.z as f32, -forward.z as f32, 0.0,
+            0.0, 0.0, 0.0, 1.0,
+        ];
+        self.mult_matrixf(&m);
+        self.translated(-eye_x, -eye_y, -eye_z);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn ortho_maps_box_to_ndc() {
+        let m = ortho_matrix(-2.2, 2.2, -1.1, 1.1, -1.0, 1.0);
+        let p = m * Vec4::new(2.2, -1.1, 0.5, 1.0);
+        assert!((p - Vec4::new(1.0, -1.0, -0.5, 1.0)).abs().max_element() < 1e-6);
+    }
+
+    #[test]
+    fn frustum_maps_near_and_far_planes() {
+        let m = frustum_matrix(-1.0, 1.0, -1.0, 1.0, 1.0, 10.0);
+        let near = m * Vec4::new(1.0, 1.0, -1.0, 1.0);
+        let far = m * Vec4::new(0.0, 0.0, -10.0, 1.0);
+        assert!((near / near.w - Vec4::new(1.0, 1.0, -1.0, 1.0)).abs().max_element() < 1e-6);
+        assert!((far.z / far.w - 1.0).abs() < 1e-5);
+    }
+}

@@ -1,0 +1,193 @@
+//! Rasterisation state and framebuffer calls: viewport, point size, line width, polygon mode,
+//! face culling, depth function, clear colour and `glClear`, plus GLUT's `glutGet`.
+
+use super::consts::*;
+use super::frame::Command;
+use super::types::*;
+use super::Gl;
+
+/// GL's rasterisation state with its initial values.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct RasterState {
+    pub viewport: [i32; 4],
+    pub depth_range: [f32; 2],
+    pub shade_model: GLenum,
+    pub point_size: f32,
+    pub line_width: f32,
+    /// Front and back polygon modes.
+    pub polygon_mode: [GLenum; 2],
+    pub front_face: GLenum,
+    pub cull_face: GLenum,
+    pub depth_func: GLenum,
+    pub clear_color: [f32; 4],
+    pub clear_depth: f32,
+}
+
+impl RasterState {
+    pub fn new(width: i32, height: i32) -> Self {
+        Self {
+            viewport: [0, 0, width, height],
+            depth_range: [0.0, 1.0],
+            shade_model: GL_SMOOTH,
+            point_size: 1.0,
+            line_width: 1.0,
+            polygon_mode: [GL_FILL, GL_FILL],
+            front_face: GL_CCW,
+            cull_face: GL_BACK,
+            depth_func: GL_LESS,
+            clear_color: [0.0; 4],
+            clear_depth: 1.0,
+        }
+    }
+}
+
+impl Gl {
+    /// `glViewport`: a negative width or height → `GL_INVALID_VALUE`.
+    pub fn viewport(&mut self, x: GLint, y: GLint, width: GLsizei, height: GLsizei) {
+        if self.reject_inside_begin_end() {
+            return;
+        }
+        if width < 0 || height < 0 {
+            return self.set_error(GL_INVALID_VALUE);
+        }
+        self.raster.viewport = [x, y, width, height];
+        self.touch_state();
+    }
+
+    /// `glDepthRange` (clamped to [0, 1] as GL does).
+    pub fn depth_range(&mut self, near: GLdouble, far: GLdouble) {
+        if self.reject_inside_begin_end() {
+            return;
+        }
+        self.raster.depth_range = [near.clamp(0.0, 1.0) as f32, far.clamp(0.0, 1.0) as f32];
+        self.touch_state();
+    }
+
+    /// `glPointSize`: `size <= 0` → `GL_INVALID_VALUE`.
+    pub fn point_size(&mut self, size: GLfloat) {
+        if self.reject_inside_begin_end() {
+            return;
+        }
+        if size.is_nan() || size <= 0.0 {
+            return self.set_error(GL_INVALID_VALUE);
+        }
+        self.raster.point_size = size;
+        self.touch_state();
+    }
+
+    /// `glLineWidth`: `width <= 0` → `GL_INVALID_VALUE`.
+    pub fn line_width(&mut self, width: GLfloat) {
+        if self.reject_inside_begin_end() {
+            return;
+        }
+        if width.is_nan() || width <= 0.0 {
+            return self.set_error(GL_INVALID_VALUE);
+        }
+        self.raster.line_width = width;
+        self.touch_state();
+    }
+
+    /// `glPolygonMode(face, mode)`.
+    pub fn polygon_mode(&mut self, face: GLenum, mode: GLenum) {
+        if self.reject_inside_begin_end() {
+            return;
+        }
+        if !matches!(mode, GL_POINT | GL_LINE | GL_FILL) {
+            return self.set_error(GL_INVALID_ENUM);
+        }
+        match face {
+            GL_FRONT => self.raster.polygon_mode[0] = mode,
+            GL_BACK => self.raster.polygon_mode[1] = mode,
+            GL_FRONT_AND_BACK => self.raster.polygon_mode = [mode, mode],
+            _ => return self.set_error(GL_INVALID_ENUM),
+        }
+        self.touch_state();
+    }
+
+    /// `glFrontFace`: `GL_CW` or `GL_CCW`.
+    pub fn front_face(&mut self, mode: GLenum) {
+        if self.reject_inside_begin_end() {
+            return;
+        }
+        if mode != GL_CW && mode != GL_CCW {
+            return self.set_error(GL_INVALID_ENUM);
+        }
+        self.raster.front_face = mode;
+        self.touch_state();
+    }
+
+    /// `glCullFace`: `GL_FRONT`, `GL_BACK` or `GL_FRONT_AND_BACK`.
+    pub fn cull_face(&mut self, mode: GLenum) {
+        if self.reject_inside_begin_end() {
+            return;
+        }
+        if !matches!(mode, GL_FRONT | GL_BACK | GL_FRONT_AND_BACK) {
+            return self.set_error(GL_INVALID_ENUM);
+        }
+        self.raster.cull_face = mode;
+        self.touch_state();
+    }
+
+    /// `glDepthFunc`.
+    pub fn depth_func(&mut self, func: GLenum) {
+        if self.reject_inside_begin_end() {
+            return;
+        }
+        if !(GL_NEVER..=GL_ALWAYS).contains(&func) {
+            return self.set_error(GL_INVALID_ENUM);
+        }
+        self.raster.depth_func = func;
+        self.touch_state();
+    }
+
+    /// `glClearColor` (clamped to [0, 1], as GL 1.x does).
+    pub fn clear_color(&mut self, r: GLclampf, g: GLclampf, b: GLclampf, a: GLclampf) {
+        if self.reject_inside_begin_end() {
+            return;
+        }
+        self.raster.clear_color = [r, g, b, a].map(|c| c.clamp(0.0, 1.0));
+    }
+
+    /// `glClearDepth` (clamped to [0, 1]).
+    pub fn clear_depth(&mut self, depth: GLdouble) {
+        if self.reject_inside_begin_end() {
+            return;
+        }
+        self.raster.clear_depth = depth.clamp(0.0, 1.0) as f32;
+    }
+
+    /// `glClear`: bits other than colour, depth, stencil and accum → `GL_INVALID_VALUE`.
+    /// Records a clear of the whole drawable (no scissor), as GL does.
+    pub fn clear(&mut self, mask: GLbitfield) {
+        if self.reject_inside_begin_end() {
+            return;
+        }
+        let known = GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | GL_ACCUM_BUFFER_BIT;
+        if mask & !known != 0 {
+            return self.set_error(GL_INVALID_VALUE);
+        }
+        let (color, depth) = (self.raster.clear_color, self.raster.clear_depth);
+        self.frame.commands.push(Command::Clear { mask, color, depth });
+    }
+
+    /// `glFlush`: the recording is already complete; nothing to do.
+    pub fn flush(&mut self) {
+        self.reject_inside_begin_end();
+    }
+
+    /// `glFinish`: as [`Gl::flush`].
+    pub fn finish(&mut self) {
+        self.reject_inside_begin_end();
+    }
+
+    /// `glutGet`: `GLUT_WINDOW_WIDTH` / `GLUT_WINDOW_HEIGHT`; other names give -1 (as freeglut
+    /// does for unknown queries).
+    #[must_use]
+    pub fn glut_get(&self, what: GLenum) -> i32 {
+        match what {
+            GLUT_WINDOW_WIDTH => self.width,
+            GLUT_WINDOW_HEIGHT => self.height,
+            _ => -1,
+        }
+    }
+}
