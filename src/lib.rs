@@ -22,4 +22,5 @@ pub mod gl;
 pub mod gll;
 pub mod math;
 pub mod prelude;
+pub mod render;
 pub mod tess;

@@ -1,0 +1,377 @@
+//! Primitive assembly: turns a recorded [`Frame`] into a [`DrawList`] of clip-space triangles,
+//! lines and points that any rasteriser (wgpu here) draws without further GL knowledge.
+//!
+//! Done on the CPU, as GL's fixed-function stages define them (GL 1.1 spec §2.6, §3.3–3.5):
+//! per-vertex transform and lighting, polygon orientation in window space, face culling,
+//! two-sided colour selection, flat shading with GL's provoking vertices, polygon modes with
+//! polygon edges (no interior diagonals of quads and polygons), and GL's aliased wide lines
+//! (widened along the minor axis) and square points, which wgpu does not have, as quads.
+
+use super::shade::{ShadedVertex, Shader};
+use crate::gl::consts::*;
+use crate::gl::types::GLenum;
+use crate::gl::{Command, DrawState, Frame};
+use glam::Vec4;
+
+/// A vertex ready for the rasteriser: clip position (depth already mapped to [0, 1] through
+/// `glDepthRange`) and the final colour.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct RasterVertex {
+    /// Clip-space x, y, z, w with z in wgpu's [0, w] convention.
+    pub clip: [f32; 4],
+    /// RGBA in [0, 1].
+    pub color: [f32; 4],
+}
+
+/// What a batch draws.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Topology {
+    /// Triangle list.
+    Triangles,
+    /// Line list of one-pixel lines.
+    Lines,
+    /// Point list of one-pixel points.
+    Points,
+}
+
+/// A run of vertices drawn with one viewport and depth state.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Batch {
+    /// GL viewport: x, y, width, height, origin bottom-left.
+    pub viewport: [i32; 4],
+    /// The depth function, or `None` with the depth test disabled.
+    pub depth_test: Option<GLenum>,
+    /// Triangles, lines or points.
+    pub topology: Topology,
+    /// First vertex in [`DrawList::vertices`].
+    pub first: u32,
+    /// Number of vertices.
+    pub count: u32,
+}
+
+/// A framebuffer operation.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Op {
+    /// Clear colour and/or depth.
+    Clear {
+        /// Colour to clear to, if the colour bit was set.
+        color: Option<[f32; 4]>,
+        /// Depth to clear to, if the depth bit was set.
+        depth: Option<f32>,
+    },
+    /// Draw a batch.
+    Draw(Batch),
+}
+
+/// Everything to rasterise for one frame, in order.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct DrawList {
+    /// All vertices.
+    pub vertices: Vec<RasterVertex>,
+    /// Clears and draws in program order.
+    pub ops: Vec<Op>,
+}
+
+/// Assembles a frame.
+#[must_use]
+pub fn assemble(frame: &Frame) -> DrawList {
+    let mut out = Assembler::default();
+    for command in &frame.commands {
+        match *command {
+            Command::Clear { mask, color, depth } => out.clear(mask, color, depth),
+            Command::Draw(index) => {
+                if let Some(p) = frame.primitives.get(index) {
+                    if let Some(state) = frame.states.get(p.state) {
+                        out.primitive(p.mode, frame.vertices_of(p), state);
+                    }
+                }
+            }
+        }
+    }
+    out.list
+}
+
+#[derive(Default)]
+struct Assembler {
+    list: DrawList,
+}
+
+/// A shaded vertex with the colour chosen for its primitive.
+#[derive(Clone, Copy)]
+struct Corner {
+    clip: Vec4,
+    color: Vec4,
+}
+
+impl Assembler {
+    fn clear(&mut self, mask: u32, color: [f32; 4], depth: f32) {
+        let color = (mask & GL_COLOR_BUFFER_BIT != 0).then_some(color);
+        let depth = (mask & GL_DEPTH_BUFFER_BIT != 0).then_some(depth);
+        if color.is_some() || depth.is_some() {
+            self.list.ops.push(Op::Clear { color, depth });
+        }
+    }
+
+    fn primitive(&mut self, mode: GLenum, vertices: &[crate::gl::Vertex], state: &DrawState) {
+        let shader = Shader::new(state);
+        let v: Vec<ShadedVertex> = vertices.iter().map(|v| shader.shade(v)).collect();
+        let n = v.len();
+        let mut ctx = PrimitiveContext { out: self, state, v: &v };
+        match mode {
+            GL_POINTS => (0..n).for_each(|i| ctx.point(i)),
+            GL_LINES => (0..n / 2).for_each(|i| ctx.segment(2 * i, 2 * i + 1, 2 * i + 1)),
+            GL_LINE_STRIP => (1..n).for_each(|i| ctx.segment(i - 1, i, i)),
+            GL_LINE_LOOP if n >= 2 => {
+                (1..n).for_each(|i| ctx.segment(i - 1, i, i));
+                ctx.segment(n - 1, 0, 0);
+            }
+            GL_TRIANGLES => (0..n / 3).for_each(|i| ctx.polygon(&[3 * i, 3 * i + 1, 3 * i + 2], 3 * i + 2)),
+            GL_TRIANGLE_STRIP => (2..n).for_each(|i| {
+                // Odd triangles swap their first two vertices to keep the strip's orientation.
+                let tri = if i % 2 == 0 { [i - 2, i - 1, i] } else { [i - 1, i - 2, i] };
+                ctx.polygon(&tri, i);
+            }),
+            GL_TRIANGLE_FAN => (2..n).for_each(|i| ctx.polygon(&[0, i - 1, i], i)),
+            GL_QUADS => (0..n / 4).for_each(|q| ctx.polygon(&[4 * q, 4 * q + 1, 4 * q + 2, 4 * q + 3], 4 * q + 3)),
+            GL_QUAD_STRIP => (1..n / 2).for_each(|q| {
+                let (a, b) = (2 * q - 2, 2 * q);
+                ctx.polygon(&[a, a + 1, b + 1, b], b + 1);
+            }),
+            GL_POLYGON if n >= 3 => {
+                let all: Vec<usize> = (0..n).collect();
+                ctx.polygon(&all, 0);
+            }
+            _ => {}
+        }
+    }
+
+    /// Appends vertices to the last batch if it has the same state, else starts a batch.
+    fn push(&mut self, state: &DrawState, topology: Topology, corners: &[Corner]) {
+        let depth_range = state.depth_range;
+        let batch_key = (state.viewport, state.depth_test, topology);
+        let first = self.list.vertices.len() as u32;
+        self.list.vertices.extend(
+            corners.iter().map(|c| RasterVertex { clip: depth_mapped(c.clip, depth_range), color: c.color.to_array() }),
+        );
+        let added = corners.len() as u32;
+        if let Some(Op::Draw(last)) = self.list.ops.last_mut() {
+            if (last.viewport, last.depth_test, last.topology) == batch_key && last.first + last.count == first {
+                last.count += added;
+                return;
+            }
+        }
+        let (viewport, depth_test, topology) = batch_key;
+        self.list.ops.push(Op::Draw(Batch { viewport, depth_test, topology, first, count: added }));
+    }
+}
+
+/// Maps GL clip z (NDC z in [−1, 1]) through the depth range into wgpu's [0, 1].
+fn depth_mapped(clip: Vec4, [near, far]: [f32; 2]) -> [f32; 4] {
+    let z = (clip.z + clip.w) * 0.5 * (far - near) + near * clip.w;
+    [clip.x, clip.y, z, clip.w]
+}
+
+struct PrimitiveContext<'a, 'b> {
+    out: &'a mut Assembler,
+    state: &'b DrawState,
+    v: &'b [ShadedVertex],
+}
+
+impl PrimitiveContext<'_, '_> {
+    fn flat(&self) -> bool {
+        self.state.shade_model == GL_FLAT
+    }
+
+    /// A point of the point size: one pixel natively, else a square in window space.
+    fn point(&mut self, i: usize) {
+        let sv = self.v[i];
+        self.point_at(Corner { clip: sv.clip, color: sv.front });
+    }
+
+    fn point_at(&mut self, c: Corner) {
+        let size = self.state.point_size.round().max(1.0);
+        if size <= 1.0 {
+            return self.out.push(self.state, Topology::Points, &[c]);
+        }
+        let p = c.clip;
+        // GL discards a point whose centre is outside the view volume, whatever its size.
+        if p.w <= 0.0 || p.x.abs() > p.w || p.y.abs() > p.w || p.z.abs() > p.w {
+            return;
+        }
+        let [_, _, vw, vh] = self.state.viewport;
+        let (hx, hy) = (size / vw.max(1) as f32 * p.w, size / vh.max(1) as f32 * p.w);
+        let corner = |dx: f32, dy: f32| Corner { clip: p + Vec4::new(dx * hx, dy * hy, 0.0, 0.0), color: c.color };
+        let (a, b, cc, d) = (corner(-1.0, -1.0), corner(1.0, -1.0), corner(1.0, 1.0), corner(-1.0, 1.0));
+        self.out.push(self.state, Topology::Triangles, &[a, b, cc, a, cc, d]);
+    }
+
+    /// A segment of a line primitive; `provoking` gives its colour under flat shading.
+    fn segment(&mut self, a: usize, b: usize, provoking: usize) {
+        let pick = |i: usize| Corner { clip: self.v[i].clip, color: self.v[i].front };
+        let (mut ca, mut cb) = (pick(a), pick(b));
+        if self.flat() {
+            ca.color = self.v[provoking].front;
+            cb.color = ca.color;
+        }
+        self.line(ca, cb);
+    }
+
+    /// One line of the line width: one pixel natively, else GL's aliased wide line, a
+    /// parallelogram widened along the minor axis by the width in pixels.
+    fn line(&mut self, a: Corner, b: Corner) {
+        let width = self.state.line_width.round().max(1.0);
+        if width <= 1.0 {
+            return self.out.push(self.state, Topology::Lines, &[a, b]);
+        }
+        if a.clip.w <= 0.0 || b.clip.w <= 0.0 {
+            return;
+        }
+        let [_, _, vw, vh] = self.state.viewport;
+        let (vw, vh) = (vw.max(1) as f32, vh.max(1) as f32);
+        let (pa, pb) = (a.clip / a.clip.w, b.clip / b.clip.w);
+        let (dx, dy) = ((pb.x - pa.x) * vw, (pb.y - pa.y) * vh);
+        let offset = if dx.abs() >= dy.abs() {
+            Vec4::new(0.0, width / vh, 0.0, 0.0)
+        } else {
+            Vec4::new(width / vw, 0.0, 0.0, 0.0)
+        };
+        let shift = |c: Corner, s: f32| Corner { clip: c.clip + offset * (s * c.clip.w), color: c.color };
+        let (a0, a1, b0, b1) = (shift(a, -1.0), shift(a, 1.0), shift(b, -1.0), shift(b, 1.0));
+        self.out.push(self.state, Topology::Triangles, &[a0, a1, b1, a0, b1, b0]);
+    }
+
+    /// A polygon (triangle, quad or `GL_POLYGON`): orientation, culling, face colour, flat
+    /// shading, then the polygon mode of its face. In line mode only the polygon's own edges
+    /// are drawn, never the diagonals used to fill it.
+    fn polygon(&mut self, idx: &[usize], provoking: usize) {
+        let area = signed_area(idx.iter().map(|&i| self.v[i].clip));
+        let ccw_front = self.state.front_face == GL_CCW;
+        let front = (area > 0.0) == ccw_front;
+        if let Some(cull) = self.state.cull_face {
+            if cull == GL_FRONT_AND_BACK || (cull == GL_FRONT) == front {
+                return;
+            }
+        }
+        let colour_of = |i: usize| if front { self.v[i].front } else { self.v[i].back };
+        let corners: Vec<Corner> = idx
+            .iter()
+            .map(|&i| Corner { clip: self.v[i].clip, color: colour_of(if self.flat() { provoking } else { i }) })
+            .collect();
+        let mode = self.state.polygon_mode[usize::from(!front)];
+        match mode {
+            GL_POINT => corners.iter().for_each(|&c| self.point_at(c)),
+            GL_LINE => {
+                for k in 0..corners.len() {
+                    self.line(corners[k], corners[(k + 1) % corners.len()]);
+                }
+            }
+            _ => {
+                let tris: Vec<Corner> =
+                    (1..corners.len() - 1).flat_map(|k| [corners[0], corners[k], corners[k + 1]]).collect();
+                self.out.push(self.state, Topology::Triangles, &tris);
+            }
+        }
+    }
+}
+
+/// Twice the signed area of the projected polygon (positive when counter-clockwise in window
+/// coordinates, y up). With a vertex behind the eye (w ≤ 0) the homogeneous determinant of the
+/// first three vertices gives the orientation instead.
+fn signed_area(points: impl Iterator<Item = Vec4>) -> f32 {
+    let p: Vec<Vec4> = points.collect();
+    if p.iter().all(|c| c.w > 0.0) {
+        let ndc: Vec<(f32, f32)> = p.iter().map(|c| (c.x / c.w, c.y / c.w)).collect();
+        (0..ndc.len())
+            .map(|k| {
+                let (a, b) = (ndc[k], ndc[(k + 1) % ndc.len()]);
+                a.0 * b.1 - b.0 * a.1
+            })
+            .sum()
+    } else {
+        let (a, b, c) = (p[0], p[1], p[2]);
+        let det = a.x * (b.y * c.w - c.y * b.w) - b.x * (a.y * c.w - c.y * a.w) + c.x * (a.y * b.w - b.y * a.w);
+        det * (a.w * b.w * c.w).signum()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::gl::Gl;
+
+    fn triangle_list(list: &DrawList) -> Vec<[f32; 2]> {
+        list.vertices.iter().map(|v| [v.clip[0], v.clip[1]]).collect()
+    }
+
+    #[test]
+    fn quad_strip_fills_two_triangles_per_quad_and_culls_by_winding() {
+        let mut gl = Gl::new(10, 10);
+        gl.begin(GL_QUAD_STRIP);
+        for (x, y) in [(0.0, 0.0), (0.0, 0.5), (0.5, 0.0), (0.5, 0.5)] {
+            gl.vertex2f(x, y);
+        }
+        gl.end();
+        let list = assemble(&gl.take_frame());
+        assert_eq!(list.vertices.len(), 6);
+        // Quad (0,0) (0,.5) (.5,.5) (.5,0) is clockwise: culled as a back face.
+        gl.enable(GL_CULL_FACE);
+        gl.begin(GL_QUAD_STRIP);
+        for (x, y) in [(0.0, 0.0), (0.0, 0.5), (0.5, 0.0), (0.5, 0.5)] {
+            gl.vertex2f(x, y);
+        }
+        gl.end();
+        assert!(assemble(&gl.take_frame()).vertices.is_empty());
+    }
+
+    #[test]
+    fn polygon_line_mode_draws_only_the_boundary() {
+        let mut gl = Gl::new(10, 10);
+        gl.polygon_mode(GL_FRONT_AND_BACK, GL_LINE);
+        gl.begin(GL_QUADS);
+        for (x, y) in [(0.0, 0.0), (0.5, 0.0), (0.5, 0.5), (0.0, 0.5)] {
+            gl.vertex2f(x, y);
+        }
+        gl.end();
+        let list = assemble(&gl.take_frame());
+        assert_eq!(list.vertices.len(), 8, "4 edges, no diagonal");
+        assert!(matches!(list.ops[0], Op::Draw(Batch { topology: Topology::Lines, .. })));
+    }
+
+    #[test]
+    fn wide_points_are_squares_of_the_point_size() {
+        let mut gl = Gl::new(100, 50);
+        gl.point_size(4.0);
+        gl.begin(GL_POINTS);
+        gl.vertex2f(0.0, 0.0);
+        gl.end();
+        let pts = triangle_list(&assemble(&gl.take_frame()));
+        let xs: Vec<f32> = pts.iter().map(|p| p[0]).collect();
+        let ys: Vec<f32> = pts.iter().map(|p| p[1]).collect();
+        // 4 px = 0.08 NDC wide at 100 px, 0.16 NDC tall at 50 px.
+        let span = |v: &[f32]| v.iter().cloned().fold(f32::MIN, f32::max) - v.iter().cloned().fold(f32::MAX, f32::min);
+        assert!((span(&xs) - 0.08).abs() < 1e-6 && (span(&ys) - 0.16).abs() < 1e-6);
+    }
+
+    #[test]
+    fn flat_shading_uses_the_provoking_vertex() {
+        let mut gl = Gl::new(10, 10);
+        gl.shade_model(GL_FLAT);
+        gl.begin(GL_TRIANGLES);
+        gl.color3f(1.0, 0.0, 0.0);
+        gl.vertex2f(0.0, 0.0);
+        gl.color3f(0.0, 1.0, 0.0);
+        gl.vertex2f(0.5, 0.0);
+        gl.color3f(0.0, 0.0, 1.0);
+        gl.vertex2f(0.0, 0.5);
+        gl.end();
+        let list = assemble(&gl.take_frame());
+        assert!(list.vertices.iter().all(|v| v.color == [0.0, 0.0, 1.0, 1.0]), "last vertex of a triangle");
+    }
+
+    #[test]
+    fn depth_range_maps_to_zero_one() {
+        assert_eq!(depth_mapped(Vec4::new(0.0, 0.0, -1.0, 1.0), [0.0, 1.0])[2], 0.0);
+        assert_eq!(depth_mapped(Vec4::new(0.0, 0.0, 2.0, 2.0), [0.0, 1.0])[2], 2.0);
+    }
+}

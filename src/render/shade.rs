@@ -1,0 +1,147 @@
+//! GL 1.x per-vertex lighting (GL 1.1 spec §2.13.1), evaluated on the CPU in `f32`, in eye
+//! coordinates, with GL's defaults. This is the colour each vertex carries to the rasteriser.
+
+use crate::gl::consts::*;
+use crate::gl::{DrawState, Lighting, Material, Vertex};
+use glam::{Mat3, Vec3, Vec4, Vec4Swizzles};
+
+/// Per-primitive constants derived from a [`DrawState`] once.
+pub(crate) struct Shader<'a> {
+    state: &'a DrawState,
+    normal_matrix: Mat3,
+}
+
+/// A vertex after the vertex stage: clip-space position and its front and back colours.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct ShadedVertex {
+    pub clip: Vec4,
+    pub front: Vec4,
+    pub back: Vec4,
+}
+
+impl<'a> Shader<'a> {
+    pub fn new(state: &'a DrawState) -> Self {
+        // Normals transform by the inverse transpose of the modelview's upper 3x3.
+        let normal_matrix = Mat3::from_mat4(state.modelview).inverse().transpose();
+        Self { state, normal_matrix }
+    }
+
+    /// Transforms one vertex and lights it (or passes its colour through, clamped).
+    pub fn shade(&self, v: &Vertex) -> ShadedVertex {
+        let eye = self.state.modelview * Vec4::from_array(v.position);
+        let clip = self.state.projection * eye;
+        let color = Vec4::from_array(v.color);
+        let Some(lighting) = &self.state.lighting else {
+            let c = color.clamp(Vec4::ZERO, Vec4::ONE);
+            return ShadedVertex { clip, front: c, back: c };
+        };
+        let mut n = self.normal_matrix * Vec3::from_array(v.normal);
+        if self.state.normalize || self.state.rescale_normal {
+            n = n.normalize_or_zero();
+        }
+        let position = if eye.w != 0.0 { eye.xyz() / eye.w } else { eye.xyz() };
+        let front = self.light(lighting, 0, n, position, color);
+        let back = if lighting.two_side { self.light(lighting, 1, -n, position, color) } else { front };
+        ShadedVertex { clip, front, back }
+    }
+
+    /// The material of `face` with `GL_COLOR_MATERIAL` applied.
+    fn material(&self, lighting: &Lighting, face: usize, color: Vec4) -> Material {
+        let mut m = lighting.materials[face];
+        let (cm_face, mode) = lighting.color_material;
+        let face_enum = if face == 0 { GL_FRONT } else { GL_BACK };
+        if self.state.color_material && (cm_face == face_enum || cm_face == GL_FRONT_AND_BACK) {
+            match mode {
+                GL_AMBIENT => m.ambient = color,
+                GL_DIFFUSE => m.diffuse = color,
+                GL_SPECULAR => m.specular = color,
+                GL_EMISSION => m.emission = color,
+                _ => {
+                    m.ambient = color;
+                    m.diffuse = color;
+                }
+            }
+        }
+        m
+    }
+
+    fn light(&self, lighting: &Lighting, face: usize, n: Vec3, position: Vec3, color: Vec4) -> Vec4 {
+        let m = self.material(lighting, face, color);
+        let mut sum = m.emission.xyz() + m.ambient.xyz() * lighting.model_ambient.xyz();
+        for light in lighting.lights.iter().filter(|l| l.enabled) {
+            let (vp, attenuation) = if light.position.w == 0.0 {
+                (light.position.xyz().normalize_or_zero(), 1.0)
+            } else {
+                let d = light.position.xyz() / light.position.w - position;
+                let dist = d.length();
+                let k = light.attenuation;
+                (d.normalize_or_zero(), 1.0 / (k.x + k.y * dist + k.z * dist * dist))
+            };
+            let spot = spot_factor(light.spot_cutoff, light.spot_exponent, light.spot_direction, vp);
+            let n_dot_vp = n.dot(vp);
+            let mut c = m.ambient.xyz() * light.ambient.xyz();
+            if n_dot_vp > 0.0 {
+                c += n_dot_vp * m.diffuse.xyz() * light.diffuse.xyz();
+                let eye_dir = if lighting.local_viewer { -position.normalize_or_zero() } else { Vec3::Z };
+                let h = (vp + eye_dir).normalize_or_zero();
+                let n_dot_h = n.dot(h).max(0.0);
+                c += n_dot_h.powf(m.shininess) * m.specular.xyz() * light.specular.xyz();
+            }
+            sum += attenuation * spot * c;
+        }
+        sum.extend(m.diffuse.w).clamp(Vec4::ZERO, Vec4::ONE)
+    }
+}
+
+/// The spotlight factor: 1 without a spot (cutoff 180), 0 outside the cone, else
+/// (−VP · s)^exponent.
+fn spot_factor(cutoff: f32, exponent: f32, direction: Vec3, vp: Vec3) -> f32 {
+    if cutoff == 180.0 {
+        return 1.0;
+    }
+    let cos_angle = (-vp).dot(direction.normalize_or_zero());
+    if cos_angle < cutoff.to_radians().cos() {
+        0.0
+    } else {
+        cos_angle.max(0.0).powf(exponent)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::gl::Gl;
+
+    fn state_with_light0() -> DrawState {
+        let mut gl = Gl::new(10, 10);
+        gl.enable(GL_LIGHTING);
+        gl.enable(GL_LIGHT0);
+        gl.begin(GL_POINTS);
+        gl.end();
+        gl.take_frame().states.remove(0)
+    }
+
+    #[test]
+    fn default_light0_on_facing_normal() {
+        // Light 0 at (0,0,1,0), white; material defaults: 0.2 ambient x 0.2 model ambient +
+        // 0.8 diffuse x 1 = 0.84, alpha = diffuse alpha 1 (GL 1.1 spec defaults).
+        let state = state_with_light0();
+        let shader = Shader::new(&state);
+        let v = Vertex { position: [0.0, 0.0, 0.0, 1.0], normal: [0.0, 0.0, 1.0], ..Vertex::default() };
+        let c = shader.shade(&v).front;
+        assert!((c - Vec4::new(0.84, 0.84, 0.84, 1.0)).abs().max_element() < 1e-6, "{c:?}");
+        // Facing away: ambient only, 0.04.
+        let v = Vertex { normal: [0.0, 0.0, -1.0], ..v };
+        assert!((shader.shade(&v).front.x - 0.04).abs() < 1e-6);
+    }
+
+    #[test]
+    fn unlit_colour_is_clamped() {
+        let mut gl = Gl::new(10, 10);
+        gl.begin(GL_POINTS);
+        gl.end();
+        let state = gl.take_frame().states.remove(0);
+        let v = Vertex { color: [2.0, -1.0, 0.5, 1.0], ..Vertex::default() };
+        assert_eq!(Shader::new(&state).shade(&v).front, Vec4::new(1.0, 0.0, 0.5, 1.0));
+    }
+}
