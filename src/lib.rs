@@ -18,6 +18,8 @@
 // Numeric kernels index several component arrays in lockstep; iterator chains would hide that.
 #![allow(clippy::needless_range_loop)]
 
+#[cfg(all(feature = "gpu", feature = "png"))]
+pub mod app;
 pub mod gl;
 pub mod gll;
 pub mod math;

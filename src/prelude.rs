@@ -1,6 +1,8 @@
 //! `use gleval::prelude::*;` brings in the context, the C type aliases and every GL constant,
 //! so that a ported program reads like its C original.
 
+#[cfg(all(feature = "gpu", feature = "png"))]
+pub use crate::app::App;
 pub use crate::gl::consts::*;
 pub use crate::gl::types::*;
 pub use crate::gl::{Frame, Gl, Primitive, Vertex};

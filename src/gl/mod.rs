@@ -104,6 +104,12 @@ impl Gl {
         self.height
     }
 
+    /// Sets the drawable size that `glutGet` reports (the window was resized).
+    pub fn set_window_size(&mut self, width: i32, height: i32) {
+        self.width = width;
+        self.height = height;
+    }
+
     /// What has been drawn so far.
     #[must_use]
     pub fn frame(&self) -> &Frame {

@@ -17,6 +17,7 @@ use glam::Vec4;
 /// `glDepthRange`) and the final colour.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[cfg_attr(feature = "gpu", derive(bytemuck::Pod, bytemuck::Zeroable))]
 pub struct RasterVertex {
     /// Clip-space x, y, z, w with z in wgpu's [0, w] convention.
     pub clip: [f32; 4],
@@ -25,7 +26,7 @@ pub struct RasterVertex {
 }
 
 /// What a batch draws.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Topology {
     /// Triangle list.
     Triangles,

@@ -5,3 +5,22 @@ mod assemble;
 mod shade;
 
 pub use assemble::{assemble, Batch, DrawList, Op, RasterVertex, Topology};
+
+#[cfg(feature = "gpu")]
+mod gpu;
+#[cfg(feature = "gpu")]
+pub use gpu::{Image, RenderError, Renderer, RASTER_WGSL};
+
+/// Writes an image as an 8-bit RGB PNG: what a window shows (GL's framebuffer alpha, often 0
+/// after `glClearColor(r, g, b, 0)`, is not part of the picture).
+#[cfg(all(feature = "gpu", feature = "png"))]
+pub fn write_png(path: impl AsRef<std::path::Path>, image: &Image) -> std::io::Result<()> {
+    let file = std::io::BufWriter::new(std::fs::File::create(path)?);
+    let mut encoder = png::Encoder::new(file, image.width, image.height);
+    encoder.set_color(png::ColorType::Rgb);
+    encoder.set_depth(png::BitDepth::Eight);
+    let mut writer = encoder.write_header().map_err(std::io::Error::other)?;
+    let rgb: Vec<u8> = image.pixels.chunks_exact(4).flat_map(|p| [p[0], p[1], p[2]]).collect();
+    writer.write_image_data(&rgb).map_err(std::io::Error::other)?;
+    writer.finish().map_err(std::io::Error::other)
+}

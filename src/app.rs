@@ -1,0 +1,147 @@
+//! A GLUT-like runner: `App::new(title, w, h).reshape(..).display(..).run()`.
+//!
+//! `run()` renders one frame headless to a PNG when the program was started with
+//! `--png PATH`, and otherwise opens a window (feature `window`) that redraws on resize.
+//! Callbacks take the [`Gl`] context, which keeps its state from frame to frame as a GL
+//! context does; `gl.glut_get(GLUT_WINDOW_WIDTH)` answers inside them.
+
+use crate::gl::Gl;
+use crate::render::{Image, RenderError, Renderer};
+
+type DisplayFn = Box<dyn FnMut(&mut Gl)>;
+type ReshapeFn = Box<dyn FnMut(&mut Gl, i32, i32)>;
+
+/// What the command line asked for.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Options {
+    /// `--png PATH`: render one frame to this file and exit.
+    pub png: Option<String>,
+}
+
+impl Options {
+    /// Parses `--png PATH` (or `--png=PATH`) out of the program's arguments.
+    #[must_use]
+    pub fn from_args(args: impl IntoIterator<Item = String>) -> Self {
+        let mut out = Self::default();
+        let mut args = args.into_iter();
+        while let Some(a) = args.next() {
+            if a == "--png" {
+                out.png = args.next();
+            } else if let Some(path) = a.strip_prefix("--png=") {
+                out.png = Some(path.to_owned());
+            }
+        }
+        out
+    }
+}
+
+/// A GLUT-style program: window size, title and callbacks.
+pub struct App {
+    title: String,
+    width: i32,
+    height: i32,
+    init: Option<DisplayFn>,
+    reshape: Option<ReshapeFn>,
+    display: Option<DisplayFn>,
+}
+
+impl App {
+    /// `glutInitWindowSize(width, height)` + `glutCreateWindow(title)`.
+    #[must_use]
+    pub fn new(title: &str, width: i32, height: i32) -> Self {
+        Self {
+            title: title.to_owned(),
+            width: width.max(1),
+            height: height.max(1),
+            init: None,
+            reshape: None,
+            display: None,
+        }
+    }
+
+    /// Code the C program runs once after `glutCreateWindow` (the textbook's `Hint()`).
+    #[must_use]
+    pub fn init(mut self, f: impl FnMut(&mut Gl) + 'static) -> Self {
+        self.init = Some(Box::new(f));
+        self
+    }
+
+    /// `glutReshapeFunc`. Without one, GLUT's default sets `glViewport(0, 0, w, h)`.
+    #[must_use]
+    pub fn reshape(mut self, f: impl FnMut(&mut Gl, i32, i32) + 'static) -> Self {
+        self.reshape = Some(Box::new(f));
+        self
+    }
+
+    /// `glutDisplayFunc`.
+    #[must_use]
+    pub fn display(mut self, f: impl FnMut(&mut Gl) + 'static) -> Self {
+        self.display = Some(Box::new(f));
+        self
+    }
+
+    /// The window title.
+    #[must_use]
+    pub fn title(&self) -> &str {
+        &self.title
+    }
+
+    /// `glutMainLoop`: `--png PATH` renders one frame to PNG and returns; otherwise a window.
+    /// Errors are printed and the process exits with status 1, as a C program would fail.
+    pub fn run(self) {
+        let options = Options::from_args(std::env::args().skip(1));
+        let result = match options.png {
+            Some(path) => self.write_png(&path),
+            None => self.run_window(),
+        };
+        if let Err(e) = result {
+            eprintln!("{e}");
+            std::process::exit(1);
+        }
+    }
+
+    /// Runs init, reshape and display once on a fresh context and returns what was drawn.
+    pub fn record_frame(&mut self) -> Gl {
+        let mut gl = Gl::new(self.width, self.height);
+        if let Some(init) = &mut self.init {
+            init(&mut gl);
+        }
+        self.draw_into(&mut gl, self.width, self.height);
+        gl
+    }
+
+    fn draw_into(&mut self, gl: &mut Gl, width: i32, height: i32) {
+        gl.set_window_size(width, height);
+        match &mut self.reshape {
+            Some(reshape) => reshape(gl, width, height),
+            None => gl.viewport(0, 0, width, height),
+        }
+        if let Some(display) = &mut self.display {
+            display(gl);
+        }
+    }
+
+    /// Renders one frame headless.
+    pub fn render_image(&mut self) -> Result<Image, RenderError> {
+        let mut gl = self.record_frame();
+        let mut renderer = Renderer::new()?;
+        renderer.render_frame(&gl.take_frame(), self.width as u32, self.height as u32)
+    }
+
+    /// Renders one frame headless and writes it as PNG.
+    pub fn write_png(mut self, path: &str) -> Result<(), Box<dyn std::error::Error>> {
+        let image = self.render_image()?;
+        crate::render::write_png(path, &image)?;
+        Ok(())
+    }
+
+    #[cfg(feature = "window")]
+    fn run_window(self) -> Result<(), Box<dyn std::error::Error>> {
+        Err(format!("window support is not built yet for {:?}; run with --png PATH", self.title).into())
+    }
+
+    #[cfg(not(feature = "window"))]
+    fn run_window(self) -> Result<(), Box<dyn std::error::Error>> {
+        Err("this build has no window support (feature `window`); run with --png PATH".into())
+    }
+}
