@@ -3,4 +3,5 @@
 
 mod eval_mesh;
 mod mesa_calls;
+mod shaders;
 mod spec_errors;
