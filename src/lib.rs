@@ -22,6 +22,7 @@
 pub mod app;
 pub mod gl;
 pub mod gll;
+pub mod glu;
 pub mod math;
 pub mod prelude;
 pub mod render;

@@ -7,3 +7,5 @@ pub use crate::gl::consts::*;
 pub use crate::gl::types::*;
 pub use crate::gl::{Frame, Gl, Primitive, Vertex};
 pub use crate::gll;
+pub use crate::glu::consts::*;
+pub use crate::glu::{glu_error_string, GLUnurbs, NurbsCallback};

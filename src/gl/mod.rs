@@ -16,6 +16,8 @@ mod matrix;
 mod raster;
 pub mod types;
 
+#[allow(unused_imports)]
+pub(crate) use eval::set_attribute as eval_set_attribute;
 pub use eval::{MapTarget, Slot};
 pub use frame::{Call, Command, DrawState, Frame, Primitive, Vertex};
 pub use lighting::{Light, Lighting, Material};
@@ -52,7 +54,7 @@ impl Default for Current {
 /// assert_eq!((strip.mode, strip.count), (GL_LINE_STRIP, 5));
 /// assert_eq!(gl.frame().vertices[2].position, [0.0, 1.0, 0.0, 1.0]);
 /// ```
-#[derive(Clone, Debug)]
+#[derive(Debug)]
 pub struct Gl {
     width: i32,
     height: i32,
@@ -63,12 +65,14 @@ pub struct Gl {
     caps: enable::Caps,
     pub(crate) eval: eval::EvalState,
     active_texture: GLenum,
-    matrices: matrix::MatrixStacks,
+    pub(crate) matrices: matrix::MatrixStacks,
     lighting: lighting::Lighting,
-    raster: raster::RasterState,
+    pub(crate) raster: raster::RasterState,
     /// Index in `frame.states` of a snapshot of the current state, if still valid.
     state_index: Option<usize>,
     frame: Frame,
+    /// GLU NURBS objects, indexed by their handles.
+    pub(crate) nurbs: Vec<Option<crate::glu::NurbsObject>>,
 }
 
 impl Gl {
@@ -89,6 +93,7 @@ impl Gl {
             raster: raster::RasterState::new(width, height),
             state_index: None,
             frame: Frame::default(),
+            nurbs: Vec::new(),
         }
     }
 

@@ -104,6 +104,12 @@ impl Gl {
         self.touch_state();
     }
 
+    /// Puts back a polygon mode saved by GLU around a NURBS surface.
+    pub(crate) fn restore_polygon_mode(&mut self, mode: [GLenum; 2]) {
+        self.raster.polygon_mode = mode;
+        self.touch_state();
+    }
+
     /// `glFrontFace`: `GL_CW` or `GL_CCW`.
     pub fn front_face(&mut self, mode: GLenum) {
         if self.reject_inside_begin_end() {

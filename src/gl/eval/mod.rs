@@ -7,6 +7,7 @@ mod mesh;
 mod query;
 mod target;
 
+pub(crate) use coord::set_attribute;
 pub use target::{MapTarget, Slot};
 
 use super::consts::*;
@@ -79,7 +80,38 @@ impl Default for EvalState {
     }
 }
 
+/// What `glPushAttrib(GL_EVAL_BIT)` saves: enables, `GL_AUTO_NORMAL` and the grids, not the
+/// control points (spec 1.11).
+#[derive(Clone, Debug)]
+pub(crate) struct EvalAttrib {
+    enabled1: [bool; Slot::COUNT],
+    enabled2: [bool; Slot::COUNT],
+    auto_normal: bool,
+    grid1: Grid,
+    grid2: (Grid, Grid),
+}
+
 impl EvalState {
+    /// The `GL_EVAL_BIT` group.
+    pub fn attrib(&self) -> EvalAttrib {
+        EvalAttrib {
+            enabled1: self.enabled1,
+            enabled2: self.enabled2,
+            auto_normal: self.auto_normal,
+            grid1: self.grid1,
+            grid2: self.grid2,
+        }
+    }
+
+    /// Restores a saved `GL_EVAL_BIT` group.
+    pub fn restore(&mut self, a: EvalAttrib) {
+        self.enabled1 = a.enabled1;
+        self.enabled2 = a.enabled2;
+        self.auto_normal = a.auto_normal;
+        self.grid1 = a.grid1;
+        self.grid2 = a.grid2;
+    }
+
     /// `Some(state)` if `cap` is a map target or `GL_AUTO_NORMAL`.
     pub fn is_enabled(&self, cap: GLenum) -> Option<bool> {
         if cap == GL_AUTO_NORMAL {

@@ -1,0 +1,188 @@
+//! `gluNurbsCallback`: the tessellator-mode callbacks and the error callback. C passes function
+//! pointers; here each callback is a closure, and the `_DATA` forms also receive the user data
+//! set with `gluNurbsCallbackData`.
+
+use super::consts::*;
+use crate::gl::types::{GLenum, GLfloat};
+use std::any::Any;
+
+/// User data handed to the `_DATA` callbacks (`gluNurbsCallbackData`).
+pub type UserData = Box<dyn Any>;
+
+/// One callback, tagged with its signature.
+pub enum NurbsCallback {
+    /// `GLU_NURBS_BEGIN`: the primitive type.
+    Begin(Box<dyn FnMut(GLenum)>),
+    /// `GLU_NURBS_VERTEX`: 5 floats (x, y, z, u, v) for surfaces, the raw k-vector for curves.
+    Vertex(Box<dyn FnMut(&[GLfloat])>),
+    /// `GLU_NURBS_NORMAL`: 3 floats.
+    Normal(Box<dyn FnMut(&[GLfloat])>),
+    /// `GLU_NURBS_COLOR`: 4 floats.
+    Color(Box<dyn FnMut(&[GLfloat])>),
+    /// `GLU_NURBS_TEXTURE_COORD`: 1 to 4 floats.
+    TexCoord(Box<dyn FnMut(&[GLfloat])>),
+    /// `GLU_NURBS_END`.
+    End(Box<dyn FnMut()>),
+    /// `GLU_NURBS_ERROR`: `GLU_NURBS_ERRORn` or `GLU_INVALID_ENUM`/`VALUE`.
+    Error(Box<dyn FnMut(GLenum)>),
+    /// `GLU_NURBS_BEGIN_DATA`.
+    BeginData(Box<dyn FnMut(GLenum, &mut dyn Any)>),
+    /// `GLU_NURBS_VERTEX_DATA`.
+    VertexData(Box<dyn FnMut(&[GLfloat], &mut dyn Any)>),
+    /// `GLU_NURBS_NORMAL_DATA`.
+    NormalData(Box<dyn FnMut(&[GLfloat], &mut dyn Any)>),
+    /// `GLU_NURBS_COLOR_DATA`.
+    ColorData(Box<dyn FnMut(&[GLfloat], &mut dyn Any)>),
+    /// `GLU_NURBS_TEXTURE_COORD_DATA`.
+    TexCoordData(Box<dyn FnMut(&[GLfloat], &mut dyn Any)>),
+    /// `GLU_NURBS_END_DATA`.
+    EndData(Box<dyn FnMut(&mut dyn Any)>),
+}
+
+impl NurbsCallback {
+    /// A begin callback.
+    pub fn begin(f: impl FnMut(GLenum) + 'static) -> Self {
+        Self::Begin(Box::new(f))
+    }
+    /// A vertex callback.
+    pub fn vertex(f: impl FnMut(&[GLfloat]) + 'static) -> Self {
+        Self::Vertex(Box::new(f))
+    }
+    /// A normal callback.
+    pub fn normal(f: impl FnMut(&[GLfloat]) + 'static) -> Self {
+        Self::Normal(Box::new(f))
+    }
+    /// A colour callback.
+    pub fn color(f: impl FnMut(&[GLfloat]) + 'static) -> Self {
+        Self::Color(Box::new(f))
+    }
+    /// A texture-coordinate callback.
+    pub fn tex_coord(f: impl FnMut(&[GLfloat]) + 'static) -> Self {
+        Self::TexCoord(Box::new(f))
+    }
+    /// An end callback.
+    pub fn end(f: impl FnMut() + 'static) -> Self {
+        Self::End(Box::new(f))
+    }
+    /// An error callback.
+    pub fn error(f: impl FnMut(GLenum) + 'static) -> Self {
+        Self::Error(Box::new(f))
+    }
+
+    /// The `which` this callback fits.
+    fn slot(&self) -> GLenum {
+        match self {
+            Self::Begin(_) => GLU_NURBS_BEGIN,
+            Self::Vertex(_) => GLU_NURBS_VERTEX,
+            Self::Normal(_) => GLU_NURBS_NORMAL,
+            Self::Color(_) => GLU_NURBS_COLOR,
+            Self::TexCoord(_) => GLU_NURBS_TEXTURE_COORD,
+            Self::End(_) => GLU_NURBS_END,
+            Self::Error(_) => GLU_NURBS_ERROR,
+            Self::BeginData(_) => GLU_NURBS_BEGIN_DATA,
+            Self::VertexData(_) => GLU_NURBS_VERTEX_DATA,
+            Self::NormalData(_) => GLU_NURBS_NORMAL_DATA,
+            Self::ColorData(_) => GLU_NURBS_COLOR_DATA,
+            Self::TexCoordData(_) => GLU_NURBS_TEXTURE_COORD_DATA,
+            Self::EndData(_) => GLU_NURBS_END_DATA,
+        }
+    }
+}
+
+/// The callbacks of one NURBS object; the `_DATA` form wins when both are set (GLU).
+#[derive(Default)]
+pub(crate) struct Callbacks {
+    slots: Vec<NurbsCallback>,
+    pub data: Option<UserData>,
+}
+
+impl Callbacks {
+    /// Stores `cb` for `which`, or clears `which` when `cb` is `None`. Returns false for a
+    /// `which` GLU does not know or a callback of the wrong kind.
+    pub fn set(&mut self, which: GLenum, cb: Option<NurbsCallback>) -> bool {
+        let known = matches!(which, GLU_NURBS_ERROR | GLU_NURBS_BEGIN..=GLU_NURBS_END_DATA);
+        if !known || cb.as_ref().is_some_and(|c| c.slot() != which) {
+            return false;
+        }
+        self.slots.retain(|c| c.slot() != which);
+        if let Some(cb) = cb {
+            self.slots.push(cb);
+        }
+        true
+    }
+
+    fn find(&mut self, which: GLenum) -> Option<&mut NurbsCallback> {
+        self.slots.iter_mut().find(|c| c.slot() == which)
+    }
+
+    /// Whether a normal callback (plain or data) is registered: GLU computes analytic normals
+    /// in tessellator mode only then.
+    pub fn wants_normals(&self) -> bool {
+        self.slots.iter().any(|c| matches!(c, NurbsCallback::Normal(_) | NurbsCallback::NormalData(_)))
+    }
+
+    pub fn error(&mut self, code: GLenum) {
+        if let Some(NurbsCallback::Error(f)) = self.find(GLU_NURBS_ERROR) {
+            f(code);
+        }
+    }
+
+    /// Runs `f` with the user data (or `()` when none was set, C's NULL).
+    fn with_data<R>(&mut self, f: impl FnOnce(&mut Self, &mut dyn Any) -> R) -> R {
+        let mut data = self.data.take();
+        let mut none = ();
+        let r = match data.as_mut() {
+            Some(d) => f(self, d.as_mut()),
+            None => f(self, &mut none),
+        };
+        self.data = data;
+        r
+    }
+
+    pub fn begin(&mut self, prim: GLenum) {
+        self.with_data(|cbs, d| match cbs.find(GLU_NURBS_BEGIN_DATA) {
+            Some(NurbsCallback::BeginData(f)) => f(prim, d),
+            _ => {
+                if let Some(NurbsCallback::Begin(f)) = cbs.find(GLU_NURBS_BEGIN) {
+                    f(prim);
+                }
+            }
+        });
+    }
+
+    pub fn end(&mut self) {
+        self.with_data(|cbs, d| match cbs.find(GLU_NURBS_END_DATA) {
+            Some(NurbsCallback::EndData(f)) => f(d),
+            _ => {
+                if let Some(NurbsCallback::End(f)) = cbs.find(GLU_NURBS_END) {
+                    f();
+                }
+            }
+        });
+    }
+
+    /// Sends an attribute through the (data) callback of `kind` (`GLU_NURBS_VERTEX`, `_NORMAL`,
+    /// `_COLOR` or `_TEXTURE_COORD`).
+    pub fn attribute(&mut self, kind: GLenum, values: &[f32]) {
+        let with_data = kind + (GLU_NURBS_BEGIN_DATA - GLU_NURBS_BEGIN);
+        self.with_data(|cbs, d| match cbs.find(with_data) {
+            Some(
+                NurbsCallback::VertexData(f)
+                | NurbsCallback::NormalData(f)
+                | NurbsCallback::ColorData(f)
+                | NurbsCallback::TexCoordData(f),
+            ) => f(values, d),
+            _ => {
+                if let Some(
+                    NurbsCallback::Vertex(f)
+                    | NurbsCallback::Normal(f)
+                    | NurbsCallback::Color(f)
+                    | NurbsCallback::TexCoord(f),
+                ) = cbs.find(kind)
+                {
+                    f(values);
+                }
+            }
+        });
+    }
+}

@@ -1,0 +1,359 @@
+//! Drawing NURBS the way GLU does: Bezier pieces sampled per GLU's tolerance, then either
+//! GL evaluator calls (`GLU_NURBS_RENDERER`: `glMap1f`/`glMapGrid1f`/`glEvalMesh1` per curve
+//! span, `glMap2f` + `glMapGrid2f` with v reversed + `glEvalMesh2(GL_FILL)` per patch) or
+//! callbacks (`GLU_NURBS_TESSELLATOR`). Trimmed surfaces are triangulated in (u, v) by
+//! [`crate::tess::trim`] and each vertex evaluated on the exact surface.
+
+use super::consts::*;
+use super::nurbs::{CurveMap, NurbsObject, SurfaceDef, TrimPiece};
+use super::pieces::{CurvePieces, SurfacePatches};
+use super::sampling::Sampler;
+use crate::gl::consts::*;
+use crate::gl::types::GLenum;
+use crate::gl::{Gl, MapTarget, Slot};
+use crate::math::rational::{cross, normalize, rational_derivative};
+use glam::Vec4;
+
+fn slot_of(target: GLenum) -> Option<Slot> {
+    MapTarget::from_enum(target).map(|t| t.slot)
+}
+
+fn is_position(target: GLenum) -> bool {
+    matches!(slot_of(target), Some(Slot::Vertex3 | Slot::Vertex4))
+}
+
+/// The callback that receives a map's values in tessellator mode.
+fn callback_kind(target: GLenum) -> Option<GLenum> {
+    match slot_of(target)? {
+        Slot::Color4 | Slot::Index => Some(GLU_NURBS_COLOR),
+        Slot::Normal => Some(GLU_NURBS_NORMAL),
+        Slot::TexCoord1 | Slot::TexCoord2 | Slot::TexCoord3 | Slot::TexCoord4 => Some(GLU_NURBS_TEXTURE_COORD),
+        Slot::Vertex3 | Slot::Vertex4 => Some(GLU_NURBS_VERTEX),
+    }
+}
+
+/// Callback order per vertex (GLU `inDoEvalCoord`): texture coordinate, colour, normal.
+fn attribute_rank(target: GLenum) -> u8 {
+    match callback_kind(target) {
+        Some(GLU_NURBS_TEXTURE_COORD) => 0,
+        Some(GLU_NURBS_COLOR) => 1,
+        _ => 2,
+    }
+}
+
+/// `GLU_CULLING`: true when every control point lies outside one clip plane.
+fn culled(obj: &NurbsObject, points: &[f64], k: usize) -> bool {
+    if !obj.props.culling {
+        return false;
+    }
+    let m = obj.matrices.projection * obj.matrices.modelview;
+    let mut inside_any = [false; 6];
+    for p in points.chunks_exact(k) {
+        let w = if k == 4 { p[3] } else { 1.0 };
+        let c = m * Vec4::new(p[0] as f32, p[1] as f32, p.get(2).copied().unwrap_or(0.0) as f32, w as f32);
+        let tests = [c.x >= -c.w, c.x <= c.w, c.y >= -c.w, c.y <= c.w, c.z >= -c.w, c.z <= c.w];
+        for (seen, ok) in inside_any.iter_mut().zip(tests) {
+            *seen |= ok;
+        }
+    }
+    inside_any.iter().any(|seen| !seen)
+}
+
+/// Draws a curve (`gluEndCurve`).
+pub(crate) fn draw_curve(gl: &mut Gl, obj: &mut NurbsObject, maps: &[CurveMap]) {
+    let Some(position) = maps.iter().rev().find(|m| is_position(m.target)) else {
+        return obj.nurbs_error(8);
+    };
+    if culled(obj, &position.points, position.k) {
+        return;
+    }
+    let Some(pos) = CurvePieces::new(position) else { return obj.nurbs_error(8) };
+    let mut all: Vec<CurvePieces> =
+        maps.iter().filter(|m| !is_position(m.target)).filter_map(CurvePieces::new).collect();
+    all.sort_by_key(|p| attribute_rank(p.target));
+    let sampler = Sampler::new(obj.props, &obj.matrices);
+    let tessellate = obj.props.nurbs_mode == GLU_NURBS_TESSELLATOR;
+    let saved = gl.eval.attrib();
+    for (index, &(a, b)) in pos.pieces.intervals.iter().enumerate() {
+        let Some(points) = pos.pieces.piece(index) else { continue };
+        for (t0, t1, nu) in sampler.curve_segments(points, pos.pieces.dim, pos.pieces.order, b - a) {
+            let (r0, r1) = (a + t0 * (b - a), a + t1 * (b - a));
+            if tessellate {
+                tessellate_curve_span(obj, &all, &pos, (r0, r1), nu);
+            } else {
+                render_curve_span(gl, &all, &pos, (r0, r1), nu);
+            }
+        }
+    }
+    gl.eval.restore(saved);
+}
+
+/// `glMap1f` for every map, `glMapGrid1f(nu, r0, r1)`, `glEvalMesh1(GL_LINE, 0, nu)`.
+fn render_curve_span(gl: &mut Gl, attributes: &[CurvePieces], pos: &CurvePieces, (r0, r1): (f64, f64), nu: usize) {
+    for map in attributes.iter().chain([pos]) {
+        let Some(points) = map.on(r0, r1) else { continue };
+        let points: Vec<f32> = points.iter().map(|&v| v as f32).collect();
+        let (k, order) = (map.pieces.dim as i32, map.pieces.order as i32);
+        gl.map1f(map.target, r0 as f32, r1 as f32, k, order, &points);
+        gl.enable(map.target);
+    }
+    gl.map_grid1f(nu as i32, r0 as f32, r1 as f32);
+    gl.eval_mesh1(GL_LINE, 0, nu as i32);
+}
+
+/// One `GL_LINE_STRIP` of nu + 1 vertices through the callbacks; the vertex is the raw
+/// k-vector (not divided by w, as GLU does for curves).
+fn tessellate_curve_span(
+    obj: &mut NurbsObject,
+    attributes: &[CurvePieces],
+    pos: &CurvePieces,
+    (r0, r1): (f64, f64),
+    nu: usize,
+) {
+    obj.callbacks.begin(GL_LINE_STRIP);
+    for i in 0..=nu {
+        let u = if i == nu { r1 } else { r0 + i as f64 * (r1 - r0) / nu as f64 };
+        for map in attributes.iter().chain([pos]) {
+            let (Some(value), Some(kind)) = (map.eval(u), callback_kind(map.target)) else { continue };
+            let v: Vec<f32> = value[..map.pieces.dim].iter().map(|&c| c as f32).collect();
+            obj.callbacks.attribute(kind, &v);
+        }
+    }
+    obj.callbacks.end();
+}
+
+/// Everything needed to draw a surface: the position map's patches and the other maps'.
+pub(crate) struct Surface {
+    pub pos: SurfacePatches,
+    pub attributes: Vec<SurfacePatches>,
+    pub k: usize,
+}
+
+impl Surface {
+    fn new(obj: &mut NurbsObject, def: &SurfaceDef) -> Option<Self> {
+        let Some(position) = def.maps.iter().rev().find(|m| is_position(m.target)) else {
+            obj.nurbs_error(8);
+            return None;
+        };
+        let pos = SurfacePatches::new(position)?;
+        let mut attributes: Vec<SurfacePatches> =
+            def.maps.iter().filter(|m| !is_position(m.target)).filter_map(SurfacePatches::new).collect();
+        attributes.sort_by_key(|p| attribute_rank(p.target));
+        Some(Self { pos, attributes, k: position.k })
+    }
+
+    pub fn domain(&self) -> [f64; 4] {
+        let p = &self.pos.patches;
+        let (u, v) = (&p.uintervals, &p.vintervals);
+        [u[0].0, u[u.len() - 1].1, v[0].0, v[v.len() - 1].1]
+    }
+
+    /// Every patch: ((u0, u1), (v0, v1), (nu, nv)).
+    pub fn patches(&self, sampler: &Sampler) -> Vec<((f64, f64), (f64, f64), (usize, usize))> {
+        let p = &self.pos.patches;
+        let mut out = Vec::new();
+        for (a, &(u0, u1)) in p.uintervals.iter().enumerate() {
+            for (b, &(v0, v1)) in p.vintervals.iter().enumerate() {
+                let Some(points) = p.patch(a, b) else { continue };
+                let n = sampler.patch_segments(points, self.k, (p.uorder, p.vorder), (u1 - u0, v1 - v0));
+                out.push(((u0, u1), (v0, v1), n));
+            }
+        }
+        out
+    }
+}
+
+/// Draws a surface (`gluEndSurface`).
+pub(crate) fn draw_surface(gl: &mut Gl, obj: &mut NurbsObject, def: &SurfaceDef) {
+    let Some(position) = def.maps.iter().rev().find(|m| is_position(m.target)) else {
+        return obj.nurbs_error(8);
+    };
+    if culled(obj, &position.points, position.k) {
+        return;
+    }
+    let Some(surface) = Surface::new(obj, def) else { return };
+    let sampler = Sampler::new(obj.props, &obj.matrices);
+    let tessellate = obj.props.nurbs_mode == GLU_NURBS_TESSELLATOR;
+    if !def.loops.is_empty() {
+        return obj.nurbs_error(18); // TEMP until tess::trim lands
+    }
+    let patches = surface.patches(&sampler);
+    if tessellate {
+        for (u, v, n) in patches {
+            tessellate_patch(obj, &surface, u, v, n);
+        }
+        return;
+    }
+    let (saved_eval, saved_mode) = (gl.eval.attrib(), gl.raster.polygon_mode);
+    match obj.props.display_mode {
+        GLU_OUTLINE_POLYGON => gl.polygon_mode(GL_FRONT_AND_BACK, GL_LINE),
+        GLU_FILL => gl.polygon_mode(GL_FRONT_AND_BACK, GL_FILL),
+        _ => {}
+    }
+    for (u, v, n) in patches {
+        if obj.props.display_mode == GLU_OUTLINE_PATCH {
+            outline_patch(gl, &surface, u, v, n);
+        } else {
+            render_patch(gl, &surface, u, v, n);
+        }
+    }
+    gl.eval.restore(saved_eval);
+    gl.restore_polygon_mode(saved_mode);
+}
+
+fn load_patch(gl: &mut Gl, surface: &Surface, u: (f64, f64), v: (f64, f64)) {
+    for map in surface.attributes.iter().chain([&surface.pos]) {
+        let Some(points) = map.on(u, v) else { continue };
+        let points: Vec<f32> = points.iter().map(|&c| c as f32).collect();
+        let p = &map.patches;
+        let (k, uo, vo) = (p.dim as i32, p.uorder as i32, p.vorder as i32);
+        gl.map2f(map.target, u.0 as f32, u.1 as f32, vo * k, uo, v.0 as f32, v.1 as f32, k, vo, &points);
+        gl.enable(map.target);
+    }
+}
+
+/// `glMap2f` per map, then `glMapGrid2f(nu, u0, u1, nv, v1, v0)` — v reversed so that
+/// `glEvalMesh2`'s clockwise strips come out counter-clockwise (GLU `slicer.cc`).
+fn render_patch(gl: &mut Gl, surface: &Surface, u: (f64, f64), v: (f64, f64), (nu, nv): (usize, usize)) {
+    load_patch(gl, surface, u, v);
+    gl.map_grid2f(nu as i32, u.0 as f32, u.1 as f32, nv as i32, v.1 as f32, v.0 as f32);
+    gl.eval_mesh2(GL_FILL, 0, nu as i32, 0, nv as i32);
+}
+
+/// `GLU_OUTLINE_PATCH`: the patch boundary as line strips along its four edges.
+fn outline_patch(gl: &mut Gl, surface: &Surface, u: (f64, f64), v: (f64, f64), (nu, nv): (usize, usize)) {
+    load_patch(gl, surface, u, v);
+    let lerp = |r: (f64, f64), i: usize, n: usize| if i == n { r.1 } else { r.0 + (r.1 - r.0) * i as f64 / n as f64 };
+    let edges: [Vec<(f64, f64)>; 4] = [
+        (0..=nu).map(|i| (lerp(u, i, nu), v.0)).collect(),
+        (0..=nv).map(|j| (u.1, lerp(v, j, nv))).collect(),
+        (0..=nu).map(|i| (lerp((u.1, u.0), i, nu), v.1)).collect(),
+        (0..=nv).map(|j| (u.0, lerp((v.1, v.0), j, nv))).collect(),
+    ];
+    for edge in edges {
+        gl.begin(GL_LINE_STRIP);
+        for (s, t) in edge {
+            gl.eval_coord2f(s as f32, t as f32);
+        }
+        gl.end();
+    }
+}
+
+/// The grid blocks of one patch as `GL_QUAD_STRIP`s through the callbacks (GLU `mapmesh2f`).
+fn tessellate_patch(obj: &mut NurbsObject, surface: &Surface, u: (f64, f64), v: (f64, f64), (nu, nv): (usize, usize)) {
+    let at = |r: (f64, f64), i: usize, n: usize| if i == n { r.1 } else { r.0 + (r.1 - r.0) * i as f64 / n as f64 };
+    if nu >= nv {
+        for i in 0..nu {
+            obj.callbacks.begin(GL_QUAD_STRIP);
+            for j in (0..=nv).rev() {
+                emit_vertex(obj, surface.view_ref(), at(u, i, nu), at(v, j, nv));
+                emit_vertex(obj, surface.view_ref(), at(u, i + 1, nu), at(v, j, nv));
+            }
+            obj.callbacks.end();
+        }
+    } else {
+        for j in 0..nv {
+            obj.callbacks.begin(GL_QUAD_STRIP);
+            for i in (0..=nu).rev() {
+                emit_vertex(obj, surface.view_ref(), at(u, i, nu), at(v, j + 1, nv));
+                emit_vertex(obj, surface.view_ref(), at(u, i, nu), at(v, j, nv));
+            }
+            obj.callbacks.end();
+        }
+    }
+}
+
+impl Surface {
+    pub fn view_ref(&self) -> (&SurfacePatches, &[SurfacePatches], usize) {
+        (&self.pos, &self.attributes, self.k)
+    }
+}
+
+/// The unit normal of the position map at (u, v): du × dv with the rational correction, zero
+/// left zero. A vanishing partial is re-evaluated slightly inside the domain (GLU's
+/// `AVOID_ZERO_NORMAL`).
+pub(crate) fn surface_normal(pos: &SurfacePatches, k: usize, u: f64, v: f64, domain: [f64; 4]) -> [f32; 3] {
+    let partials = |u: f64, v: f64| pos.eval(u, v);
+    let Some(mut s) = partials(u, v) else { return [0.0; 3] };
+    let tiny = |d: [f64; 4]| d.iter().all(|c| c.abs() <= 1e-6);
+    if tiny(s.du) || tiny(s.dv) {
+        let nudge =
+            |x: f64, lo: f64, hi: f64| if x - lo < hi - x { x + 0.001 * (hi - lo) } else { x - 0.001 * (hi - lo) };
+        if let Some(n) = partials(nudge(u, domain[0], domain[1]), nudge(v, domain[2], domain[3])) {
+            if tiny(s.du) {
+                s.du = n.du;
+            }
+            if tiny(s.dv) {
+                s.dv = n.dv;
+            }
+        }
+    }
+    let (a, b) = if k == 4 {
+        (rational_derivative(s.point, s.du), rational_derivative(s.point, s.dv))
+    } else {
+        ([s.du[0], s.du[1], s.du[2]], [s.dv[0], s.dv[1], s.dv[2]])
+    };
+    normalize(cross(a, b)).map(|c| c as f32)
+}
+
+/// One surface vertex through the callbacks: texture coordinate, colour, normal (from the
+/// normal map, or analytic when a normal callback is registered), then (x, y, z, u, v) with
+/// x, y, z divided by w.
+pub(crate) fn emit_vertex(
+    obj: &mut NurbsObject,
+    (pos, attributes, k): (&SurfacePatches, &[SurfacePatches], usize),
+    u: f64,
+    v: f64,
+) {
+    let mut has_normal_map = false;
+    for map in attributes {
+        let (Some(s), Some(kind)) = (map.eval(u, v), callback_kind(map.target)) else { continue };
+        has_normal_map |= kind == GLU_NURBS_NORMAL;
+        let values: Vec<f32> = s.point[..map.patches.dim].iter().map(|&c| c as f32).collect();
+        obj.callbacks.attribute(kind, &values);
+    }
+    if !has_normal_map && obj.callbacks.wants_normals() {
+        let p = &pos.patches;
+        let domain = [
+            p.uintervals[0].0,
+            p.uintervals[p.uintervals.len() - 1].1,
+            p.vintervals[0].0,
+            p.vintervals[p.vintervals.len() - 1].1,
+        ];
+        obj.callbacks.attribute(GLU_NURBS_NORMAL, &surface_normal(pos, k, u, v, domain));
+    }
+    let Some(s) = pos.eval(u, v) else { return };
+    let w = if k == 4 { s.point[3] } else { 1.0 };
+    let vertex = [(s.point[0] / w) as f32, (s.point[1] / w) as f32, (s.point[2] / w) as f32, u as f32, v as f32];
+    obj.callbacks.attribute(GLU_NURBS_VERTEX, &vertex);
+}
+
+/// Loops of trim pieces as (u, v) polylines; NURBS trim curves are sampled on their Bezier
+/// pieces at `per_piece` + 1 points each (TRIM_3 divided by w).
+pub(crate) fn trim_polylines(
+    pieces: &[TrimPiece],
+    segments: impl Fn(&[f64], usize, usize) -> usize,
+) -> Vec<Vec<[f64; 2]>> {
+    pieces
+        .iter()
+        .map(|piece| match piece {
+            TrimPiece::Pwl(points) => points.clone(),
+            TrimPiece::Curve(map) => {
+                let Some(c) = CurvePieces::new(map) else { return Vec::new() };
+                let mut out: Vec<[f64; 2]> = Vec::new();
+                for (index, &(a, b)) in c.pieces.intervals.iter().enumerate() {
+                    let Some(points) = c.pieces.piece(index) else { continue };
+                    let n = segments(points, c.pieces.dim, c.pieces.order).max(1);
+                    let start = usize::from(!out.is_empty());
+                    for i in start..=n {
+                        let u = if i == n { b } else { a + (b - a) * i as f64 / n as f64 };
+                        if let Some(p) = c.eval(u) {
+                            out.push(if map.k == 3 { [p[0] / p[2], p[1] / p[2]] } else { [p[0], p[1]] });
+                        }
+                    }
+                }
+                out
+            }
+        })
+        .collect()
+}

@@ -1,0 +1,108 @@
+//! The Bezier pieces of every map of a NURBS curve or surface, and the sub-pieces GLU hands to
+//! `glMap1`/`glMap2` when a map's breakpoints differ from the position map's.
+
+use super::nurbs::{CurveMap, SurfaceMap};
+use crate::gl::types::GLenum;
+use crate::math::bezier::{de_casteljau, split, Vec4};
+use crate::math::insertion::{decompose_curve, decompose_surface, BezierPatches, BezierPieces};
+use crate::math::patch::{patch_with_partials, PatchSample};
+use crate::math::{BSplineSurface, KnotVector};
+
+/// A curve map decomposed into Bezier pieces.
+pub(crate) struct CurvePieces {
+    pub target: GLenum,
+    pub pieces: BezierPieces<f64>,
+}
+
+impl CurvePieces {
+    pub fn new(map: &CurveMap) -> Option<Self> {
+        let pieces = decompose_curve(&map.knots, &map.points, map.k, map.order).ok()?;
+        (!pieces.is_empty()).then_some(Self { target: map.target, pieces })
+    }
+
+    /// The Bezier control points of this map restricted to [r0, r1] (inside one piece).
+    pub fn on(&self, r0: f64, r1: f64) -> Option<Vec<f64>> {
+        let p = &self.pieces;
+        let k = locate(&p.intervals, 0.5 * (r0 + r1))?;
+        let (c, d) = p.intervals[k];
+        let (s0, s1) = ((r0 - c) / (d - c), (r1 - c) / (d - c));
+        Some(sub_range(p.piece(k)?, p.dim, p.order, s0, s1))
+    }
+
+    /// The value at `u` through the piece holding it.
+    pub fn eval(&self, u: f64) -> Option<Vec4<f64>> {
+        let p = &self.pieces;
+        let k = locate(&p.intervals, u)?;
+        let (c, d) = p.intervals[k];
+        Some(de_casteljau(p.piece(k)?, p.dim, p.order, (u - c) / (d - c)))
+    }
+}
+
+/// A surface map decomposed into Bezier patches.
+pub(crate) struct SurfacePatches {
+    pub target: GLenum,
+    pub patches: BezierPatches<f64>,
+}
+
+impl SurfacePatches {
+    pub fn new(map: &SurfaceMap) -> Option<Self> {
+        let s = BSplineSurface::try_new(
+            map.k,
+            map.orders.0,
+            map.orders.1,
+            KnotVector::new(map.uknots.clone()),
+            KnotVector::new(map.vknots.clone()),
+            map.points.clone(),
+        )
+        .ok()?;
+        let patches = decompose_surface(&s).ok()?;
+        (!patches.is_empty()).then_some(Self { target: map.target, patches })
+    }
+
+    /// The patch's control points restricted to [u0, u1] × [v0, v1] (inside one patch).
+    pub fn on(&self, (u0, u1): (f64, f64), (v0, v1): (f64, f64)) -> Option<Vec<f64>> {
+        let p = &self.patches;
+        let a = locate(&p.uintervals, 0.5 * (u0 + u1))?;
+        let b = locate(&p.vintervals, 0.5 * (v0 + v1))?;
+        let ((ua, ub), (va, vb)) = (p.uintervals[a], p.vintervals[b]);
+        let (uo, vo, k) = (p.uorder, p.vorder, p.dim);
+        // Along u the "points" are whole rows of vo·k values; along v, each row separately.
+        let by_u = sub_range(p.patch(a, b)?, vo * k, uo, (u0 - ua) / (ub - ua), (u1 - ua) / (ub - ua));
+        let (t0, t1) = ((v0 - va) / (vb - va), (v1 - va) / (vb - va));
+        Some(by_u.chunks_exact(vo * k).flat_map(|row| sub_range(row, k, vo, t0, t1)).collect())
+    }
+
+    /// Point and partials with respect to the true u and v at (u, v).
+    pub fn eval(&self, u: f64, v: f64) -> Option<PatchSample<f64>> {
+        let p = &self.patches;
+        let a = locate(&p.uintervals, u)?;
+        let b = locate(&p.vintervals, v)?;
+        let ((ua, ub), (va, vb)) = (p.uintervals[a], p.vintervals[b]);
+        let mut s =
+            patch_with_partials(p.patch(a, b)?, p.dim, p.uorder, p.vorder, (u - ua) / (ub - ua), (v - va) / (vb - va));
+        s.du = s.du.map(|c| c / (ub - ua));
+        s.dv = s.dv.map(|c| c / (vb - va));
+        Some(s)
+    }
+}
+
+/// The interval holding `u` (clamped to the ends, with a little tolerance).
+fn locate(intervals: &[(f64, f64)], u: f64) -> Option<usize> {
+    if !u.is_finite() || intervals.is_empty() {
+        return None;
+    }
+    let k = intervals.iter().position(|&(_, b)| u <= b).unwrap_or(intervals.len() - 1);
+    Some(k)
+}
+
+/// The Bezier points of the sub-range [s0, s1] of a piece given on [0, 1].
+fn sub_range(points: &[f64], dim: usize, order: usize, s0: f64, s1: f64) -> Vec<f64> {
+    if s0 <= 0.0 && s1 >= 1.0 {
+        return points.to_vec();
+    }
+    let (left, _) = split(points, dim, order, s1);
+    if s0 <= 0.0 || s1 == 0.0 {
+        return left;
+    }
+    split(&left, dim, order, s0 / s1).1
+}

@@ -1,0 +1,127 @@
+//! Trimmed NURBS surfaces: the trim loops become (u, v) polylines, the retained region is
+//! triangulated with the surface's sampling grid inside ([`crate::tess::trim`]), and every
+//! vertex is evaluated on the exact surface. Loop errors are GLU's numbers 28, 29, 31 and 18.
+
+use super::consts::*;
+use super::draw::{emit_vertex, surface_normal, trim_polylines, Surface};
+use super::nurbs::{NurbsObject, TrimPiece};
+use super::sampling::Sampler;
+use crate::gl::consts::*;
+use crate::gl::{Gl, Slot};
+use crate::tess::trim::{join_curves, triangulate, TrimLoop};
+
+/// Grid lines of every patch at its sampling density, merged over the whole domain.
+fn grid_lines(steps: &[((f64, f64), (f64, f64), (usize, usize))]) -> (Vec<f64>, Vec<f64>) {
+    let mut us: Vec<f64> = Vec::new();
+    let mut vs: Vec<f64> = Vec::new();
+    for &((u0, u1), (v0, v1), (nu, nv)) in steps {
+        us.extend((0..=nu).map(|i| u0 + (u1 - u0) * i as f64 / nu as f64));
+        vs.extend((0..=nv).map(|j| v0 + (v1 - v0) * j as f64 / nv as f64));
+    }
+    for lines in [&mut us, &mut vs] {
+        lines.sort_by(f64::total_cmp);
+        lines.dedup_by(|a, b| (*a - *b).abs() < 1e-9);
+    }
+    (us, vs)
+}
+
+/// Draws a trimmed surface.
+pub(crate) fn draw_trimmed(
+    gl: &mut Gl,
+    obj: &mut NurbsObject,
+    surface: &Surface,
+    loops: &[Vec<TrimPiece>],
+    sampler: &Sampler,
+    tessellate: bool,
+) {
+    let steps = surface.patches(sampler);
+    let (us, vs) = grid_lines(&steps);
+    // Trim curves are sampled about as finely as the surface grid.
+    let spacing = steps
+        .iter()
+        .map(|&((u0, u1), (v0, v1), (nu, nv))| ((u1 - u0) / nu as f64).min((v1 - v0) / nv as f64))
+        .fold(f64::INFINITY, f64::min);
+    let segments = |points: &[f64], dim: usize, _order: usize| {
+        let length: f64 = points
+            .chunks_exact(dim)
+            .map(|p| if dim == 3 { [p[0] / p[2], p[1] / p[2]] } else { [p[0], p[1]] })
+            .collect::<Vec<_>>()
+            .windows(2)
+            .map(|w| ((w[1][0] - w[0][0]).powi(2) + (w[1][1] - w[0][1]).powi(2)).sqrt())
+            .sum();
+        ((length / spacing).ceil() as usize).clamp(4, 4096)
+    };
+    let mut trim_loops = Vec::with_capacity(loops.len());
+    for pieces in loops {
+        match join_curves(&trim_polylines(pieces, segments)) {
+            Ok(l) => trim_loops.push(l),
+            Err(e) => return obj.nurbs_error(e.glu_number()),
+        }
+    }
+    let mesh = match triangulate(&trim_loops, surface.domain(), &us, &vs) {
+        Ok(m) => m,
+        Err(e) => return obj.nurbs_error(e.glu_number()),
+    };
+    if obj.props.display_mode == GLU_OUTLINE_PATCH && !tessellate {
+        return outline_loops(gl, surface, &trim_loops);
+    }
+    if tessellate {
+        obj.callbacks.begin(GL_TRIANGLES);
+        for tri in &mesh.triangles {
+            for &i in tri {
+                let [u, v] = mesh.points[i as usize];
+                emit_vertex(obj, surface.view_ref(), u, v);
+            }
+        }
+        obj.callbacks.end();
+        return;
+    }
+    let saved_mode = gl.raster.polygon_mode;
+    if obj.props.display_mode == GLU_OUTLINE_POLYGON {
+        gl.polygon_mode(GL_FRONT_AND_BACK, GL_LINE);
+    } else {
+        gl.polygon_mode(GL_FRONT_AND_BACK, GL_FILL);
+    }
+    gl.begin(GL_TRIANGLES);
+    for tri in &mesh.triangles {
+        for &i in tri {
+            let [u, v] = mesh.points[i as usize];
+            render_vertex(gl, surface, u, v);
+        }
+    }
+    gl.end();
+    gl.restore_polygon_mode(saved_mode);
+}
+
+/// `GLU_OUTLINE_PATCH` of a trimmed surface: the trim loops drawn on the surface.
+fn outline_loops(gl: &mut Gl, surface: &Surface, loops: &[TrimLoop]) {
+    for l in loops {
+        gl.begin(GL_LINE_LOOP);
+        for &[u, v] in &l.points {
+            render_vertex(gl, surface, u, v);
+        }
+        gl.end();
+    }
+}
+
+/// One vertex as GL's evaluators would produce it for GLU's `glEvalCoord2f`: evaluated
+/// attributes and, with `GL_AUTO_NORMAL`, the unit normal; the current attributes are restored
+/// afterwards, as evaluated values never become current.
+fn render_vertex(gl: &mut Gl, surface: &Surface, u: f64, v: f64) {
+    let saved = gl.current;
+    let (pos, attributes, k) = surface.view_ref();
+    let mut vertex = gl.current_vertex([0.0, 0.0, 0.0, 1.0]);
+    for map in attributes {
+        let (Some(s), Some(slot)) = (map.eval(u, v), crate::gl::MapTarget::from_enum(map.target).map(|t| t.slot)) else { continue };
+        let p = [s.point[0] as f32, s.point[1] as f32, s.point[2] as f32, s.point[3] as f32];
+        crate::gl::eval_set_attribute(&mut vertex, slot, p);
+    }
+    let Some(s) = pos.eval(u, v) else { return };
+    if gl.eval.auto_normal {
+        vertex.normal = surface_normal(pos, k, u, v, surface.domain());
+    }
+    let p = [s.point[0] as f32, s.point[1] as f32, s.point[2] as f32, s.point[3] as f32];
+    crate::gl::eval_set_attribute(&mut vertex, if k == 4 { Slot::Vertex4 } else { Slot::Vertex3 }, p);
+    gl.emit_vertex(vertex);
+    gl.current = saved;
+}
