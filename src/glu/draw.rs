@@ -165,6 +165,9 @@ impl Surface {
 
 /// Draws a surface (`gluEndSurface`).
 pub(crate) fn draw_surface(gl: &mut Gl, obj: &mut NurbsObject, def: &SurfaceDef) {
+    if def.maps.is_empty() {
+        return; // GLU ends an empty surface silently.
+    }
     let Some(position) = def.maps.iter().rev().find(|m| is_position(m.target)) else {
         return obj.nurbs_error(8);
     };

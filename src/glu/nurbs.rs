@@ -59,6 +59,9 @@ struct Nesting {
     /// Pieces of a curve group inside a trim (`gluBeginCurve` within `gluBeginTrim`).
     trim_group: Option<Vec<TrimPiece>>,
     surface: Option<SurfaceDef>,
+    /// The surface was begun by `gluBeginTrim` (GLU's `inSurface == 2`): the next
+    /// `gluNurbsSurface` ends it.
+    auto_surface: bool,
     trim: Option<Vec<TrimPiece>>,
     curve_valid: bool,
 }
@@ -275,6 +278,10 @@ impl Gl {
         let Some(maps) = obj.nesting.curve.take() else {
             return obj.nurbs_error(7);
         };
+        if maps.is_empty() {
+            // GLU treats a curve without data as a piecewise-linear one it cannot draw.
+            return obj.nurbs_error(9);
+        }
         if obj.nesting.curve_valid {
             self.with_nurbs(nobj, |gl, obj| super::draw::draw_curve(gl, obj, &maps));
         }
@@ -408,8 +415,8 @@ impl Gl {
             ctlarray,
             kind,
         );
-        let auto = obj.nesting.surface.is_none();
-        if auto {
+        let auto = obj.nesting.surface.is_none() || std::mem::take(&mut obj.nesting.auto_surface);
+        if self.nurbs(nobj).is_some_and(|o| o.nesting.surface.is_none()) {
             self.glu_begin_surface(nobj);
         }
         if let Some(s) = self.nurbs(nobj).and_then(|o| o.nesting.surface.as_mut()) {
@@ -423,20 +430,25 @@ impl Gl {
         }
     }
 
-    /// `gluBeginTrim`: outside a surface → error 15 (a surface is begun); inside a trim →
-    /// error 16.
+    /// `gluBeginTrim`: outside a surface → error 15 (a surface is begun, and the next
+    /// `gluNurbsSurface` ends it); inside a trim → error 16 (the open trim is ended first).
     pub fn glu_begin_trim(&mut self, nobj: GLUnurbs) {
         let Some(obj) = self.nurbs(nobj) else { return };
         if obj.nesting.surface.is_none() {
             obj.nurbs_error(15);
             self.glu_begin_surface(nobj);
+            if let Some(obj) = self.nurbs(nobj) {
+                obj.nesting.auto_surface = true;
+            }
         }
         let Some(obj) = self.nurbs(nobj) else { return };
         if obj.nesting.trim.is_some() {
             obj.nurbs_error(16);
-            return;
+            self.glu_end_trim(nobj);
         }
-        obj.nesting.trim = Some(Vec::new());
+        if let Some(obj) = self.nurbs(nobj) {
+            obj.nesting.trim = Some(Vec::new());
+        }
     }
 
     /// `gluEndTrim`: without a begin → error 17; an empty loop → error 18 (the surface is not

@@ -2,6 +2,7 @@
 #![allow(clippy::needless_range_loop)]
 
 mod eval_mesh;
+mod glu_errors;
 mod mesa_calls;
 mod shaders;
 mod spec_errors;

@@ -1,0 +1,13 @@
+#!/bin/sh
+# Regenerates the GLU reference outputs from the installed (real) GLU.
+# Usage: regen.sh [--out DIR]   (default: this directory)
+set -eu
+here=$(cd "$(dirname "$0")" && pwd)
+out="$here"
+if [ "${1:-}" = "--out" ]; then out="$2"; fi
+build="$here/../build/glu"
+mkdir -p "$build" "$out"
+cc -std=c99 -O1 -o "$build/error_strings" "$here/error_strings.c" -lGLU -lGL
+"$build/error_strings" > "$out/error_strings.txt"
+cc -std=c99 -O1 -o "$build/nurbs_errors" "$here/nurbs_errors.c" -lOSMesa -lGLU -lGL
+GALLIUM_DRIVER=llvmpipe "$build/nurbs_errors" > "$out/nurbs_errors.txt"
