@@ -112,8 +112,13 @@ impl Sampler {
         }
     }
 
-    /// Segments (nu, nv) for a Bezier patch: GLU's `Patch::getstepsize`. `points` are packed
-    /// u-major, `k` per point; `ranges` are the patch's parameter lengths in u and v.
+    /// Segments (nu, nv) for a Bezier patch: GLU's `Patch::getstepsize`, then the grid GLU
+    /// samples with. With `GLU_DOMAIN_DISTANCE` that is the untrimmed fast path,
+    /// max(1, ⌊U_STEP·R⌋) (`subdivider.cc`); otherwise the slicer's grid of 3 + ⌊R/step⌋ lines
+    /// (`slicer.cc`), and at least 2 segments even when one step covers the patch: real GLU
+    /// emits 14 vertices in 4 primitives for such a patch (measured, `tess_counts.c`), which a
+    /// 2 × 2 grid (12 vertices) matches far better than a single cell (4). `points` are packed
+    /// u-major, `k` per point; `ranges` are the patch's parameter lengths.
     pub fn patch_segments(
         &self,
         points: &[f64],
@@ -123,23 +128,22 @@ impl Sampler {
     ) -> (usize, usize) {
         let (rs, rt) = ranges;
         let p = &self.props;
-        let (step_s, step_t) = match p.sampling_method {
-            GLU_DOMAIN_DISTANCE => {
-                (Self::fixed_step(p.u_step * rs as f32, rs), Self::fixed_step(p.v_step * rt as f32, rt))
+        if p.sampling_method == GLU_DOMAIN_DISTANCE {
+            let fast = |rate: f32, r: f64| ((f64::from(rate) * r).floor() as usize).clamp(1, MAX_SEGMENTS);
+            return (fast(p.u_step, rs), fast(p.v_step, rt));
+        }
+        let (step_s, step_t) = match self.project(points, k) {
+            None => (Self::fixed_step(p.u_step, rs), Self::fixed_step(p.v_step, rt)),
+            Some(q) if p.sampling_method == GLU_PATH_LENGTH || p.sampling_method == GLU_OBJECT_PATH_LENGTH => {
+                self.path_length_steps(&q, orders, ranges)
             }
-            _ => match self.project(points, k) {
-                None => (Self::fixed_step(p.u_step, rs), Self::fixed_step(p.v_step, rt)),
-                Some(q) if matches!(p.sampling_method, GLU_PATH_LENGTH | GLU_OBJECT_PATH_LENGTH) => {
-                    self.path_length_steps(&q, orders, ranges)
-                }
-                Some(q) => self.parametric_steps(&q, orders, ranges),
-            },
+            Some(q) => self.parametric_steps(&q, orders, ranges),
         };
         let count = |r: f64, s: f64| {
-            if s > 0.0 && s.is_finite() {
-                (r / s).ceil().clamp(1.0, MAX_SEGMENTS as f64) as usize
+            if !(s > 0.0 && s.is_finite()) || s >= r {
+                2
             } else {
-                1
+                (2.0 + (r / s).floor()).min(MAX_SEGMENTS as f64) as usize
             }
         };
         (count(rs, step_s), count(rt, step_t))
@@ -291,9 +295,16 @@ mod tests {
     }
 
     #[test]
+    fn patch_covered_by_one_step_still_gets_two_segments() {
+        let pts = [0.0; 12];
+        assert_eq!(pixel_sampler(50.0).patch_segments(&pts, 3, (2, 2), (1.0, 1.0)), (2, 2));
+    }
+
+    #[test]
     fn patch_path_length_halves_the_tolerance() {
-        // Bilinear square of 2 units = 200 px each way: ms = 200 px; step = 50 / 400 = 0.125.
+        // Bilinear square of 2 units = 200 px each way: ms = 200 px; step = 50 / 400 = 0.125,
+        // so the slicer's grid has 3 + 8 lines: 10 segments.
         let pts = [-1.0, -1.0, 0.0, -1.0, 1.0, 0.0, 1.0, -1.0, 0.0, 1.0, 1.0, 0.0];
-        assert_eq!(pixel_sampler(50.0).patch_segments(&pts, 3, (2, 2), (1.0, 1.0)), (8, 8));
+        assert_eq!(pixel_sampler(50.0).patch_segments(&pts, 3, (2, 2), (1.0, 1.0)), (10, 10));
     }
 }

@@ -3,6 +3,7 @@
 
 mod eval_mesh;
 mod glu_errors;
+mod glu_tessellation;
 mod mesa_calls;
 mod shaders;
 mod spec_errors;

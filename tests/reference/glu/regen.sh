@@ -11,3 +11,5 @@ cc -std=c99 -O1 -o "$build/error_strings" "$here/error_strings.c" -lGLU -lGL
 "$build/error_strings" > "$out/error_strings.txt"
 cc -std=c99 -O1 -o "$build/nurbs_errors" "$here/nurbs_errors.c" -lOSMesa -lGLU -lGL
 GALLIUM_DRIVER=llvmpipe "$build/nurbs_errors" > "$out/nurbs_errors.txt"
+cc -std=c99 -O1 -o "$build/tess_counts" "$here/tess_counts.c" -lOSMesa -lGLU -lGL
+GALLIUM_DRIVER=llvmpipe "$build/tess_counts" > "$out/tess_counts.txt"

@@ -1,0 +1,148 @@
+//! GLU tessellator mode: the vertices gleval hands to the callbacks lie on the true surface
+//! (f64 oracle) and their number is within a factor of 2 of what real GLU emits for the same
+//! NURBS, properties and sampling matrices (`tests/reference/glu/tess_counts.c`).
+
+use gleval::math::{BSplineCurve, BSplineSurface, KnotVector};
+use gleval::prelude::*;
+use std::cell::RefCell;
+use std::path::Path;
+use std::rc::Rc;
+
+fn glu_counts() -> Vec<(String, usize)> {
+    let text =
+        std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/reference/glu/tess_counts.txt"))
+            .expect("tess_counts.txt");
+    text.lines()
+        .map(|l| {
+            let f: Vec<&str> = l.split(' ').collect();
+            (format!("{} {}", f[0], f[1]), f[2].parse().expect("count"))
+        })
+        .collect()
+}
+
+fn surface_net() -> (Vec<f32>, Vec<f32>) {
+    let knots: Vec<f32> = (0..14).map(|i| i as f32).collect();
+    let mut ctl = Vec::new();
+    for i in 0..10 {
+        for j in 0..10 {
+            ctl.extend([-1.5 + i as f32 / 3.0, -1.5 + j as f32 / 3.0, ((i * 3 + j * 5) % 7) as f32 / 7.0 - 0.5]);
+        }
+    }
+    (knots, ctl)
+}
+
+const CURVE_KNOTS: [f32; 12] = [0.0, 0.0, 0.0, 0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 5.0, 5.0, 5.0];
+const CURVE_CTL: [f32; 24] = [
+    -1.5, 0.0, 0.0, -1.0, 1.0, 0.0, -0.5, -1.0, 0.0, 0.0, 1.0, 0.0, 0.5, -1.0, 0.0, 1.0, 1.0, 0.0, 1.5, 0.0, 0.0, 1.8,
+    0.5, 0.0,
+];
+
+fn configure(gl: &mut Gl, method: u32, tolerance: f32, step: f32) -> (GLUnurbs, Rc<RefCell<Vec<Vec<f32>>>>) {
+    let n = gl.glu_new_nurbs_renderer();
+    gl.glu_nurbs_property(n, GLU_NURBS_MODE, GLU_NURBS_TESSELLATOR as f32);
+    gl.glu_nurbs_property(n, GLU_AUTO_LOAD_MATRIX, 0.0);
+    let model: [f32; 16] = [1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0];
+    let proj: [f32; 16] = [0.5, 0.0, 0.0, 0.0, 0.0, 0.5, 0.0, 0.0, 0.0, 0.0, -0.1, 0.0, 0.0, 0.0, 0.0, 1.0];
+    gl.glu_load_sampling_matrices(n, &model, &proj, &[0, 0, 400, 400]);
+    gl.glu_nurbs_property(n, GLU_SAMPLING_METHOD, method as f32);
+    gl.glu_nurbs_property(n, GLU_SAMPLING_TOLERANCE, tolerance);
+    gl.glu_nurbs_property(n, GLU_PARAMETRIC_TOLERANCE, tolerance);
+    gl.glu_nurbs_property(n, GLU_U_STEP, step);
+    gl.glu_nurbs_property(n, GLU_V_STEP, step);
+    let seen = Rc::new(RefCell::new(Vec::new()));
+    let sink = Rc::clone(&seen);
+    gl.glu_nurbs_callback(
+        n,
+        GLU_NURBS_VERTEX,
+        Some(NurbsCallback::vertex(move |v| sink.borrow_mut().push(v.to_vec()))),
+    );
+    (n, seen)
+}
+
+fn method(name: &str) -> (u32, f32, f32) {
+    let (kind, value) = name.rsplit_once('_').expect("name_value");
+    let value: f32 = value.parse().expect("value");
+    match kind {
+        "path_length" => (GLU_PATH_LENGTH, value, 100.0),
+        "parametric_error" => (GLU_PARAMETRIC_ERROR, value, 100.0),
+        _ => (GLU_DOMAIN_DISTANCE, 50.0, value),
+    }
+}
+
+#[test]
+fn tessellator_vertices_lie_on_the_surface_and_counts_are_near_glu() {
+    let (knots, ctl) = surface_net();
+    let oracle = BSplineSurface::try_new(
+        3,
+        4,
+        4,
+        KnotVector::new(knots.iter().map(|&k| f64::from(k)).collect()),
+        KnotVector::new(knots.iter().map(|&k| f64::from(k)).collect()),
+        ctl.iter().map(|&c| f64::from(c)).collect(),
+    )
+    .expect("valid surface");
+    let curve_oracle = BSplineCurve::try_new(
+        3,
+        4,
+        KnotVector::new(CURVE_KNOTS.iter().map(|&k| f64::from(k)).collect()),
+        CURVE_CTL.iter().map(|&c| f64::from(c)).collect(),
+    )
+    .expect("valid curve");
+    let mut report = Vec::new();
+    for (case, glu) in glu_counts() {
+        let (kind, name) = case.split_once(' ').expect("kind name");
+        let (m, tolerance, step) = method(name);
+        let mut gl = Gl::new(400, 400);
+        let (n, seen) = configure(&mut gl, m, tolerance, step);
+        if kind == "surface" {
+            gl.glu_begin_surface(n);
+            gl.glu_nurbs_surface(n, 14, &knots, 14, &knots, 30, 3, &ctl, 4, 4, GL_MAP2_VERTEX_3);
+            gl.glu_end_surface(n);
+        } else {
+            gl.glu_begin_curve(n);
+            gl.glu_nurbs_curve(n, 12, &CURVE_KNOTS, 3, &CURVE_CTL, 4, GL_MAP1_VERTEX_3);
+            gl.glu_end_curve(n);
+        }
+        let vertices = seen.borrow();
+        let mut worst = 0.0f64;
+        for v in vertices.iter() {
+            if kind == "surface" {
+                let p = oracle.eval(f64::from(v[3]), f64::from(v[4])).expect("(u, v) inside the domain");
+                worst = worst.max((0..3).map(|c| (p[c] - f64::from(v[c])).abs()).fold(0.0, f64::max));
+            } else {
+                // Curve vertices carry no parameter: the distance to the curve, found by a
+                // coarse scan refined by golden-section search.
+                worst = worst.max(distance_to_curve(&curve_oracle, [v[0], v[1], v[2]]));
+            }
+        }
+        let ratio = vertices.len() as f64 / glu as f64;
+        report.push(format!("{case}: ours {} glu {glu} ratio {ratio:.2} worst {worst:.1e}", vertices.len()));
+        let tolerance = 1e-5;
+        assert!(worst <= tolerance, "{case}: a vertex is {worst} off the true geometry");
+        assert!(
+            (0.5..=2.0).contains(&ratio),
+            "{case}: {} vertices vs GLU's {glu}\n{}",
+            vertices.len(),
+            report.join("\n")
+        );
+    }
+    println!("{}", report.join("\n"));
+}
+
+fn distance_to_curve(c: &BSplineCurve<f64>, v: [f32; 3]) -> f64 {
+    let d = |t: f64| {
+        let p = c.eval(t.clamp(0.0, 5.0)).expect("inside");
+        (0..3).map(|k| (p[k] - f64::from(v[k])).powi(2)).sum::<f64>().sqrt()
+    };
+    let best = (0..=500).map(|i| 5.0 * f64::from(i) / 500.0).min_by(|a, b| d(*a).total_cmp(&d(*b))).unwrap_or(0.0);
+    let (mut lo, mut hi) = (best - 0.01, best + 0.01);
+    for _ in 0..80 {
+        let (a, b) = (lo + (hi - lo) * 0.382, lo + (hi - lo) * 0.618);
+        if d(a) < d(b) {
+            hi = b;
+        } else {
+            lo = a;
+        }
+    }
+    d(0.5 * (lo + hi))
+}
