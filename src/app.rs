@@ -16,6 +16,8 @@ type ReshapeFn = Box<dyn FnMut(&mut Gl, i32, i32)>;
 pub struct Options {
     /// `--png PATH`: render one frame to this file and exit.
     pub png: Option<String>,
+    /// `--time N`: render N headless frames and print the median frame time.
+    pub time: Option<usize>,
 }
 
 impl Options {
@@ -29,6 +31,8 @@ impl Options {
                 out.png = args.next();
             } else if let Some(path) = a.strip_prefix("--png=") {
                 out.png = Some(path.to_owned());
+            } else if a == "--time" {
+                out.time = args.next().and_then(|n| n.parse().ok());
             }
         }
         out
@@ -90,9 +94,10 @@ impl App {
     /// Errors are printed and the process exits with status 1, as a C program would fail.
     pub fn run(self) {
         let options = Options::from_args(std::env::args().skip(1));
-        let result = match options.png {
-            Some(path) => self.write_png(&path),
-            None => self.run_window(),
+        let result = match (options.time, options.png) {
+            (Some(frames), _) => self.print_frame_time(frames),
+            (None, Some(path)) => self.write_png(&path),
+            (None, None) => self.run_window(),
         };
         if let Err(e) = result {
             eprintln!("{e}");
@@ -126,6 +131,34 @@ impl App {
         let mut gl = self.record_frame();
         let mut renderer = Renderer::new()?;
         renderer.render_frame(&gl.take_frame(), self.width as u32, self.height as u32)
+    }
+
+    /// Renders `frames` headless frames with one renderer (display callback, assembly,
+    /// rasterisation and read-back each time), after one untimed frame that compiles the
+    /// pipelines, and returns the median frame time.
+    pub fn median_frame_time(&mut self, frames: usize) -> Result<std::time::Duration, RenderError> {
+        let mut renderer = Renderer::new()?;
+        let mut gl = Gl::new(self.width, self.height);
+        if let Some(init) = &mut self.init {
+            init(&mut gl);
+        }
+        let mut times = Vec::with_capacity(frames.max(1));
+        self.draw_into(&mut gl, self.width, self.height);
+        renderer.render_frame(&gl.take_frame(), self.width as u32, self.height as u32)?;
+        for _ in 0..frames.max(1) {
+            let start = std::time::Instant::now();
+            self.draw_into(&mut gl, self.width, self.height);
+            renderer.render_frame(&gl.take_frame(), self.width as u32, self.height as u32)?;
+            times.push(start.elapsed());
+        }
+        times.sort();
+        Ok(times[times.len() / 2])
+    }
+
+    fn print_frame_time(mut self, frames: usize) -> Result<(), Box<dyn std::error::Error>> {
+        let median = self.median_frame_time(frames)?;
+        println!("{}: median frame {:.3} ms over {frames} frames", self.title, median.as_secs_f64() * 1e3);
+        Ok(())
     }
 
     /// Renders one frame headless and writes it as PNG.
