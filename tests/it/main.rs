@@ -5,5 +5,6 @@ mod eval_mesh;
 mod glu_errors;
 mod glu_tessellation;
 mod mesa_calls;
+mod robustness;
 mod shaders;
 mod spec_errors;
