@@ -9,34 +9,45 @@ use std::any::Any;
 /// User data handed to the `_DATA` callbacks (`gluNurbsCallbackData`).
 pub type UserData = Box<dyn Any>;
 
+/// A callback taking a primitive type or error code.
+pub type EnumFn = Box<dyn FnMut(GLenum)>;
+/// A callback taking an attribute's floats.
+pub type ValuesFn = Box<dyn FnMut(&[GLfloat])>;
+/// A `_DATA` callback taking a primitive type and the user data.
+pub type EnumDataFn = Box<dyn FnMut(GLenum, &mut dyn Any)>;
+/// A `_DATA` callback taking an attribute's floats and the user data.
+pub type ValuesDataFn = Box<dyn FnMut(&[GLfloat], &mut dyn Any)>;
+/// A `_DATA` end callback.
+pub type DataFn = Box<dyn FnMut(&mut dyn Any)>;
+
 /// One callback, tagged with its signature.
 pub enum NurbsCallback {
     /// `GLU_NURBS_BEGIN`: the primitive type.
-    Begin(Box<dyn FnMut(GLenum)>),
+    Begin(EnumFn),
     /// `GLU_NURBS_VERTEX`: 5 floats (x, y, z, u, v) for surfaces, the raw k-vector for curves.
-    Vertex(Box<dyn FnMut(&[GLfloat])>),
+    Vertex(ValuesFn),
     /// `GLU_NURBS_NORMAL`: 3 floats.
-    Normal(Box<dyn FnMut(&[GLfloat])>),
+    Normal(ValuesFn),
     /// `GLU_NURBS_COLOR`: 4 floats.
-    Color(Box<dyn FnMut(&[GLfloat])>),
+    Color(ValuesFn),
     /// `GLU_NURBS_TEXTURE_COORD`: 1 to 4 floats.
-    TexCoord(Box<dyn FnMut(&[GLfloat])>),
+    TexCoord(ValuesFn),
     /// `GLU_NURBS_END`.
     End(Box<dyn FnMut()>),
     /// `GLU_NURBS_ERROR`: `GLU_NURBS_ERRORn` or `GLU_INVALID_ENUM`/`VALUE`.
-    Error(Box<dyn FnMut(GLenum)>),
+    Error(EnumFn),
     /// `GLU_NURBS_BEGIN_DATA`.
-    BeginData(Box<dyn FnMut(GLenum, &mut dyn Any)>),
+    BeginData(EnumDataFn),
     /// `GLU_NURBS_VERTEX_DATA`.
-    VertexData(Box<dyn FnMut(&[GLfloat], &mut dyn Any)>),
+    VertexData(ValuesDataFn),
     /// `GLU_NURBS_NORMAL_DATA`.
-    NormalData(Box<dyn FnMut(&[GLfloat], &mut dyn Any)>),
+    NormalData(ValuesDataFn),
     /// `GLU_NURBS_COLOR_DATA`.
-    ColorData(Box<dyn FnMut(&[GLfloat], &mut dyn Any)>),
+    ColorData(ValuesDataFn),
     /// `GLU_NURBS_TEXTURE_COORD_DATA`.
-    TexCoordData(Box<dyn FnMut(&[GLfloat], &mut dyn Any)>),
+    TexCoordData(ValuesDataFn),
     /// `GLU_NURBS_END_DATA`.
-    EndData(Box<dyn FnMut(&mut dyn Any)>),
+    EndData(DataFn),
 }
 
 impl NurbsCallback {

@@ -122,6 +122,9 @@ fn tessellate_curve_span(
     obj.callbacks.end();
 }
 
+/// A patch's parameter ranges ((u0, u1), (v0, v1)) and its grid (nu, nv) segments.
+pub(crate) type PatchGrid = ((f64, f64), (f64, f64), (usize, usize));
+
 /// Everything needed to draw a surface: the position map's patches and the other maps'.
 pub(crate) struct Surface {
     pub pos: SurfacePatches,
@@ -149,7 +152,7 @@ impl Surface {
     }
 
     /// Every patch: ((u0, u1), (v0, v1), (nu, nv)).
-    pub fn patches(&self, sampler: &Sampler) -> Vec<((f64, f64), (f64, f64), (usize, usize))> {
+    pub fn patches(&self, sampler: &Sampler) -> Vec<PatchGrid> {
         let p = &self.pos.patches;
         let mut out = Vec::new();
         for (a, &(u0, u1)) in p.uintervals.iter().enumerate() {

@@ -3,7 +3,7 @@
 //! vertex is evaluated on the exact surface. Loop errors are GLU's numbers 28, 29, 31 and 18.
 
 use super::consts::*;
-use super::draw::{emit_vertex, surface_normal, trim_polylines, Surface};
+use super::draw::{emit_vertex, surface_normal, trim_polylines, PatchGrid, Surface};
 use super::nurbs::{NurbsObject, TrimPiece};
 use super::sampling::Sampler;
 use crate::gl::consts::*;
@@ -11,7 +11,7 @@ use crate::gl::{Gl, Slot};
 use crate::tess::trim::{join_curves, triangulate, TrimLoop};
 
 /// Grid lines of every patch at its sampling density, merged over the whole domain.
-fn grid_lines(steps: &[((f64, f64), (f64, f64), (usize, usize))]) -> (Vec<f64>, Vec<f64>) {
+fn grid_lines(steps: &[PatchGrid]) -> (Vec<f64>, Vec<f64>) {
     let mut us: Vec<f64> = Vec::new();
     let mut vs: Vec<f64> = Vec::new();
     for &((u0, u1), (v0, v1), (nu, nv)) in steps {

@@ -239,7 +239,7 @@ fn insert_rows<S: Scalar>(
     }
     let mut new_knots = Vec::with_capacity(knots.len() + times);
     new_knots.extend_from_slice(&knots[..=k]);
-    new_knots.extend(core::iter::repeat(u).take(times));
+    new_knots.extend(core::iter::repeat_n(u, times));
     new_knots.extend_from_slice(&knots[k + 1..]);
     Ok((new_knots, q))
 }

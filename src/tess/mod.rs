@@ -3,6 +3,8 @@
 //! This is the CPU back end that `glEvalMesh` (and later GLU NURBS and the typed mesh API) draw
 //! through. It knows nothing of GL state: it takes packed control points and parameter lists.
 
+#[cfg(feature = "gpu")]
+pub mod gpu;
 pub mod grid;
 
 pub use grid::{eval_grid1, eval_grid2, BasisTable, Grid2, MapView};

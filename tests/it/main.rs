@@ -4,6 +4,7 @@
 mod eval_mesh;
 mod glu_errors;
 mod glu_tessellation;
+mod gpu_parity;
 mod mesa_calls;
 mod robustness;
 mod shaders;
