@@ -16,7 +16,6 @@ mod matrix;
 mod raster;
 pub mod types;
 
-#[allow(unused_imports)]
 pub(crate) use eval::set_attribute as eval_set_attribute;
 pub use eval::{MapTarget, Slot};
 pub use frame::{Call, Command, DrawState, Frame, Primitive, Vertex};

@@ -181,7 +181,7 @@ pub(crate) fn draw_surface(gl: &mut Gl, obj: &mut NurbsObject, def: &SurfaceDef)
     let sampler = Sampler::new(obj.props, &obj.matrices);
     let tessellate = obj.props.nurbs_mode == GLU_NURBS_TESSELLATOR;
     if !def.loops.is_empty() {
-        return obj.nurbs_error(18); // TEMP until tess::trim lands
+        return super::trimmed::draw_trimmed(gl, obj, &surface, &def.loops, &sampler, tessellate);
     }
     let patches = surface.patches(&sampler);
     if tessellate {

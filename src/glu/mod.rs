@@ -14,7 +14,7 @@ mod nurbs;
 mod pieces;
 mod props;
 mod sampling;
-// mod trimmed; (waiting for tess::trim)
+mod trimmed;
 
 pub use callbacks::{NurbsCallback, UserData};
 pub use consts::*;

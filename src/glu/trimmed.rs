@@ -112,7 +112,10 @@ fn render_vertex(gl: &mut Gl, surface: &Surface, u: f64, v: f64) {
     let (pos, attributes, k) = surface.view_ref();
     let mut vertex = gl.current_vertex([0.0, 0.0, 0.0, 1.0]);
     for map in attributes {
-        let (Some(s), Some(slot)) = (map.eval(u, v), crate::gl::MapTarget::from_enum(map.target).map(|t| t.slot)) else { continue };
+        let (Some(s), Some(slot)) = (map.eval(u, v), crate::gl::MapTarget::from_enum(map.target).map(|t| t.slot))
+        else {
+            continue;
+        };
         let p = [s.point[0] as f32, s.point[1] as f32, s.point[2] as f32, s.point[3] as f32];
         crate::gl::eval_set_attribute(&mut vertex, slot, p);
     }

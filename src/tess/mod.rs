@@ -6,5 +6,6 @@
 #[cfg(feature = "gpu")]
 pub mod gpu;
 pub mod grid;
+pub mod trim;
 
 pub use grid::{eval_grid1, eval_grid2, BasisTable, Grid2, MapView};

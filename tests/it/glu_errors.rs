@@ -50,8 +50,11 @@ fn pwl(gl: &mut Gl, n: GLUnurbs, count: i32, stride: i32, kind: u32) {
     gl.glu_pwl_curve(n, count, &TRIM_SQUARE, stride, kind);
 }
 
+/// A named scenario.
+type Scenario = (&'static str, fn(&mut Gl, GLUnurbs));
+
 /// The scenarios, in the C program's order.
-fn scenarios() -> Vec<(&'static str, fn(&mut Gl, GLUnurbs))> {
+fn scenarios() -> Vec<Scenario> {
     vec![
         ("order_0", |gl, n| gl.glu_nurbs_curve(n, 2, &[0.0, 1.0], 3, &ctl(), 0, GL_MAP1_VERTEX_3)),
         ("order_25", |gl, n| gl.glu_nurbs_curve(n, 8, &KNOTS8, 3, &ctl(), 25, GL_MAP1_VERTEX_3)),

@@ -61,13 +61,16 @@ fn normal64(dim: usize, p: [f64; 4], du: [f64; 4], dv: [f64; 4]) -> ([f64; 3], f
     }
 }
 
+/// name, uorder, vorder, k, control points, u parameters, v parameters.
+type Case = (String, usize, usize, usize, Vec<f32>, Vec<f32>, Vec<f32>);
+
 #[test]
 fn gpu_grid_matches_cpu_for_all_orders_rational_reversed_and_degenerate() {
     let Some(r) = device() else { return };
     let gpu = GpuTessellator::new(&r.device);
     let us: Vec<f32> = (0..=12).map(|i| i as f32 / 12.0).collect();
     let reversed: Vec<f32> = us.iter().rev().copied().collect();
-    let mut cases: Vec<(String, usize, usize, usize, Vec<f32>, Vec<f32>, Vec<f32>)> = Vec::new();
+    let mut cases: Vec<Case> = Vec::new();
     for order in 1..=30 {
         cases.push((
             format!("order {order}x{order} k=3"),
