@@ -1,10 +1,12 @@
 //! Integration tests: one binary to save link time (STYLE.md §9).
 #![allow(clippy::needless_range_loop)]
 
+mod conformance;
 mod eval_mesh;
 mod glu_errors;
 mod glu_tessellation;
 mod gpu_parity;
+mod image_compare;
 mod mesa_calls;
 mod robustness;
 mod shaders;

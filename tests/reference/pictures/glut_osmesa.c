@@ -1,0 +1,125 @@
+/* GLUT stand-in over OSMesa; see glut_osmesa.h. Writes the PNG with zlib (no libpng). */
+#include <GL/osmesa.h>
+#include <GL/gl.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include <zlib.h>
+#include "glut_osmesa.h"
+
+static int width = 300, height = 300, frames = 0;
+static const char *png_path = "out.png";
+static void (*display)(void);
+static void (*reshape)(int, int);
+static unsigned char *pixels;
+
+void glutInit(int *argc, char **argv) {
+    for (int i = 1; i < *argc; i++) {
+        if (!strcmp(argv[i], "--png") && i + 1 < *argc) png_path = argv[++i];
+        else if (!strcmp(argv[i], "--time") && i + 1 < *argc) frames = atoi(argv[++i]);
+    }
+}
+void glutInitWindowSize(int w, int h) { width = w; height = h; }
+void glutInitWindowPosition(int x, int y) { (void)x; (void)y; }
+void glutInitDisplayMode(unsigned int mode) { (void)mode; }
+void glutDisplayFunc(void (*f)(void)) { display = f; }
+void glutReshapeFunc(void (*f)(int, int)) { reshape = f; }
+void glutKeyboardFunc(void (*f)(unsigned char, int, int)) { (void)f; }
+void glutPostRedisplay(void) {}
+void glutSwapBuffers(void) { glFinish(); }
+int glutGet(unsigned int what) {
+    return what == GLUT_WINDOW_WIDTH ? width : what == GLUT_WINDOW_HEIGHT ? height : -1;
+}
+
+int glutCreateWindow(const char *title) {
+    (void)title;
+    OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 0, NULL);
+    pixels = calloc((size_t)width * height, 4);
+    if (!ctx || !pixels || !OSMesaMakeCurrent(ctx, pixels, GL_UNSIGNED_BYTE, width, height)) {
+        fprintf(stderr, "OSMesa context failed\n");
+        exit(1);
+    }
+    return 1;
+}
+
+static uint32_t crc_table[256];
+/* PNG's CRC-32 over the chunk type and data. */
+static uint32_t crc(uint32_t c, const unsigned char *p, size_t n) {
+    if (!crc_table[1])
+        for (uint32_t i = 0; i < 256; i++) {
+            uint32_t v = i;
+            for (int k = 0; k < 8; k++) v = (v & 1) ? 0xEDB88320u ^ (v >> 1) : v >> 1;
+            crc_table[i] = v;
+        }
+    c ^= 0xFFFFFFFFu;
+    while (n--) c = crc_table[(c ^ *p++) & 0xFF] ^ (c >> 8);
+    return c ^ 0xFFFFFFFFu;
+}
+static void be32(unsigned char *p, uint32_t v) { p[0] = v >> 24; p[1] = v >> 16; p[2] = v >> 8; p[3] = v; }
+static void chunk(FILE *f, const char *type, const unsigned char *data, uint32_t n) {
+    unsigned char h[8];
+    be32(h, n);
+    memcpy(h + 4, type, 4);
+    fwrite(h, 1, 8, f);
+    fwrite(data, 1, n, f);
+    uint32_t c = crc(crc(0, (const unsigned char *)type, 4), data, n);
+    be32(h, c);
+    fwrite(h, 1, 4, f);
+}
+
+/* RGB PNG, rows top first (GL's rows are bottom first). */
+static void write_png(const char *path) {
+    size_t row = (size_t)width * 3 + 1, raw_n = row * height;
+    unsigned char *raw = malloc(raw_n);
+    for (int y = 0; y < height; y++) {
+        unsigned char *dst = raw + row * y, *src = pixels + (size_t)(height - 1 - y) * width * 4;
+        dst[0] = 0;
+        for (int x = 0; x < width; x++) memcpy(dst + 1 + 3 * x, src + 4 * x, 3);
+    }
+    uLongf z_n = compressBound(raw_n);
+    unsigned char *z = malloc(z_n);
+    if (compress2(z, &z_n, raw, raw_n, 9) != Z_OK) { fprintf(stderr, "zlib failed\n"); exit(1); }
+    FILE *f = fopen(path, "wb");
+    if (!f) { perror(path); exit(1); }
+    fwrite("\x89PNG\r\n\x1a\n", 1, 8, f);
+    unsigned char ihdr[13];
+    be32(ihdr, width); be32(ihdr + 4, height);
+    ihdr[8] = 8; ihdr[9] = 2; ihdr[10] = ihdr[11] = ihdr[12] = 0;
+    chunk(f, "IHDR", ihdr, 13);
+    chunk(f, "IDAT", z, (uint32_t)z_n);
+    chunk(f, "IEND", NULL, 0);
+    fclose(f);
+    free(raw);
+    free(z);
+}
+
+static double now(void) {
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return t.tv_sec + t.tv_nsec * 1e-9;
+}
+static int by_value(const void *x, const void *y) {
+    double a = *(const double *)x, b = *(const double *)y;
+    return (a > b) - (a < b);
+}
+
+static void frame(void) {
+    if (reshape) reshape(width, height); else glViewport(0, 0, width, height);
+    if (display) display();
+    glFinish();
+}
+
+void glutMainLoop(void) {
+    frame();
+    if (frames > 0) {
+        double *t = malloc(sizeof *t * frames);
+        for (int i = 0; i < frames; i++) { double s = now(); frame(); t[i] = now() - s; }
+        qsort(t, frames, sizeof *t, by_value);
+        printf("OSMesa: median frame %.3f ms over %d frames\n", t[frames / 2] * 1e3, frames);
+        exit(0);
+    }
+    write_png(png_path);
+    exit(0);
+}

@@ -1,0 +1,26 @@
+/* A GLUT stand-in for the reference programs: the same calls the textbook uses, but the
+   "window" is an OSMesa buffer that glutMainLoop renders once and writes as a PNG
+   (--png PATH, default <program>.png), or renders N times with --time N and prints the median
+   frame time. */
+#ifndef GLUT_OSMESA_H
+#define GLUT_OSMESA_H
+#define GLUT_RGB 0
+#define GLUT_RGBA 0
+#define GLUT_SINGLE 0
+#define GLUT_DOUBLE 2
+#define GLUT_DEPTH 16
+#define GLUT_WINDOW_WIDTH 102
+#define GLUT_WINDOW_HEIGHT 103
+void glutInit(int *argc, char **argv);
+void glutInitWindowSize(int w, int h);
+void glutInitWindowPosition(int x, int y);
+void glutInitDisplayMode(unsigned int mode);
+int glutCreateWindow(const char *title);
+void glutDisplayFunc(void (*f)(void));
+void glutReshapeFunc(void (*f)(int, int));
+void glutKeyboardFunc(void (*f)(unsigned char, int, int));
+int glutGet(unsigned int what);
+void glutPostRedisplay(void);
+void glutSwapBuffers(void);
+void glutMainLoop(void);
+#endif
