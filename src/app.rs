@@ -10,6 +10,7 @@ use crate::render::{Image, RenderError, Renderer};
 
 type DisplayFn = Box<dyn FnMut(&mut Gl)>;
 type ReshapeFn = Box<dyn FnMut(&mut Gl, i32, i32)>;
+type KeyboardFn = Box<dyn FnMut(&mut Gl, char, i32, i32)>;
 
 /// What the command line asked for.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -47,6 +48,7 @@ pub struct App {
     init: Option<DisplayFn>,
     reshape: Option<ReshapeFn>,
     display: Option<DisplayFn>,
+    keyboard: Option<KeyboardFn>,
 }
 
 impl App {
@@ -60,6 +62,7 @@ impl App {
             init: None,
             reshape: None,
             display: None,
+            keyboard: None,
         }
     }
 
@@ -82,6 +85,33 @@ impl App {
     pub fn display(mut self, f: impl FnMut(&mut Gl) + 'static) -> Self {
         self.display = Some(Box::new(f));
         self
+    }
+
+    /// `glutKeyboardFunc`: called with the key's character and the mouse position (0, 0 here)
+    /// when a key is pressed in the window; the window then redraws.
+    #[must_use]
+    pub fn keyboard(mut self, f: impl FnMut(&mut Gl, char, i32, i32) + 'static) -> Self {
+        self.keyboard = Some(Box::new(f));
+        self
+    }
+
+    /// The window size asked for.
+    #[must_use]
+    pub fn size(&self) -> (i32, i32) {
+        (self.width, self.height)
+    }
+
+    pub(crate) fn run_init(&mut self, gl: &mut Gl) {
+        if let Some(init) = &mut self.init {
+            init(gl);
+        }
+    }
+
+    #[cfg(feature = "window")]
+    pub(crate) fn run_keyboard(&mut self, gl: &mut Gl, key: char) {
+        if let Some(keyboard) = &mut self.keyboard {
+            keyboard(gl, key, 0, 0);
+        }
     }
 
     /// The window title.
@@ -115,7 +145,7 @@ impl App {
         gl
     }
 
-    fn draw_into(&mut self, gl: &mut Gl, width: i32, height: i32) {
+    pub(crate) fn draw_into(&mut self, gl: &mut Gl, width: i32, height: i32) {
         gl.set_window_size(width, height);
         match &mut self.reshape {
             Some(reshape) => reshape(gl, width, height),
@@ -170,7 +200,7 @@ impl App {
 
     #[cfg(feature = "window")]
     fn run_window(self) -> Result<(), Box<dyn std::error::Error>> {
-        Err(format!("window support is not built yet for {:?}; run with --png PATH", self.title).into())
+        crate::window::run(self)
     }
 
     #[cfg(not(feature = "window"))]

@@ -27,3 +27,5 @@ pub mod math;
 pub mod prelude;
 pub mod render;
 pub mod tess;
+#[cfg(feature = "window")]
+mod window;

@@ -18,7 +18,7 @@ use wgpu::util::DeviceExt;
 pub const RASTER_WGSL: &str = include_str!("../../shaders/raster.wgsl");
 
 const COLOR_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8Unorm;
-const DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth32Float;
+pub(crate) const DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth32Float;
 
 /// Why rendering failed.
 #[derive(Clone, Debug, PartialEq)]
@@ -61,7 +61,7 @@ pub struct Image {
 
 /// The backends to try, in order: `WGPU_BACKEND` if set, else Vulkan (lavapipe on machines
 /// without a GPU) and then GL.
-fn backend_order() -> Vec<wgpu::Backends> {
+pub(crate) fn backend_order() -> Vec<wgpu::Backends> {
     match wgpu::Backends::from_env() {
         Some(b) => vec![b],
         None => vec![wgpu::Backends::VULKAN, wgpu::Backends::GL],

@@ -8,6 +8,8 @@ pub use assemble::{assemble, Batch, DrawList, Op, RasterVertex, Topology};
 
 #[cfg(feature = "gpu")]
 mod gpu;
+#[cfg(feature = "window")]
+pub(crate) use gpu::{backend_order, DEPTH_FORMAT};
 #[cfg(feature = "gpu")]
 pub use gpu::{Image, RenderError, Renderer, RASTER_WGSL};
 
