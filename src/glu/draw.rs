@@ -191,16 +191,13 @@ pub(crate) fn draw_surface(gl: &mut Gl, obj: &mut NurbsObject, def: &SurfaceDef)
         return;
     }
     let (saved_eval, saved_mode) = (gl.eval.attrib(), gl.raster.polygon_mode);
-    match obj.props.display_mode {
-        GLU_OUTLINE_POLYGON => gl.polygon_mode(GL_FRONT_AND_BACK, GL_LINE),
-        GLU_FILL => gl.polygon_mode(GL_FRONT_AND_BACK, GL_FILL),
-        _ => {}
-    }
+    gl.polygon_mode(GL_FRONT_AND_BACK, GL_FILL);
     for (u, v, n) in patches {
-        if obj.props.display_mode == GLU_OUTLINE_PATCH {
-            outline_patch(gl, &surface, u, v, n);
-        } else {
-            render_patch(gl, &surface, u, v, n);
+        match obj.props.display_mode {
+            GLU_OUTLINE_PATCH => outline_patch(gl, &surface, u, v, n),
+            // GLU draws grid blocks as quad outlines ("wireframequads"): the mesh's lines.
+            GLU_OUTLINE_POLYGON => render_patch(gl, &surface, u, v, n, GL_LINE),
+            _ => render_patch(gl, &surface, u, v, n, GL_FILL),
         }
     }
     gl.eval.restore(saved_eval);
@@ -219,11 +216,12 @@ fn load_patch(gl: &mut Gl, surface: &Surface, u: (f64, f64), v: (f64, f64)) {
 }
 
 /// `glMap2f` per map, then `glMapGrid2f(nu, u0, u1, nv, v1, v0)` — v reversed so that
-/// `glEvalMesh2`'s clockwise strips come out counter-clockwise (GLU `slicer.cc`).
-fn render_patch(gl: &mut Gl, surface: &Surface, u: (f64, f64), v: (f64, f64), (nu, nv): (usize, usize)) {
+/// `glEvalMesh2`'s clockwise strips come out counter-clockwise (GLU `slicer.cc`) — and
+/// `glEvalMesh2(mode)`: `GL_FILL`, or `GL_LINE` for `GLU_OUTLINE_POLYGON`.
+fn render_patch(gl: &mut Gl, surface: &Surface, u: (f64, f64), v: (f64, f64), (nu, nv): (usize, usize), mode: GLenum) {
     load_patch(gl, surface, u, v);
     gl.map_grid2f(nu as i32, u.0 as f32, u.1 as f32, nv as i32, v.1 as f32, v.0 as f32);
-    gl.eval_mesh2(GL_FILL, 0, nu as i32, 0, nv as i32);
+    gl.eval_mesh2(mode, 0, nu as i32, 0, nv as i32);
 }
 
 /// `GLU_OUTLINE_PATCH`: the patch boundary as line strips along its four edges.
