@@ -14,10 +14,18 @@ mod bezcurve;
 mod bezsurf;
 #[path = "../../examples/bsurf.rs"]
 mod bsurf;
+#[path = "../../examples/colormap.rs"]
+mod colormap;
+#[path = "../../examples/linespoints.rs"]
+mod linespoints;
 #[path = "../../examples/outline.rs"]
 mod outline;
 #[path = "../../examples/rational.rs"]
 mod rational;
+#[path = "../../examples/rationalmap.rs"]
+mod rationalmap;
+#[path = "../../examples/specular.rs"]
+mod specular;
 #[path = "../../examples/trimmed.rs"]
 mod trimmed;
 
@@ -101,4 +109,24 @@ fn rational_matches_glu() {
 #[test]
 fn outline_matches_glu() {
     check_with("outline", outline::app(), |_| OWN_TESSELLATION);
+}
+
+#[test]
+fn colormap_matches_mesa() {
+    check("colormap", colormap::app(), 0.0);
+}
+
+#[test]
+fn rationalmap_matches_mesa() {
+    check("rationalmap", rationalmap::app(), 0.0);
+}
+
+#[test]
+fn linespoints_matches_mesa() {
+    check("linespoints", linespoints::app(), 0.0);
+}
+
+#[test]
+fn specular_matches_mesa() {
+    check("specular", specular::app(), 0.0);
 }
