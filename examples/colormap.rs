@@ -2,6 +2,8 @@
 //! on a bicubic patch (left), and partial `glEvalMesh2` ranges in three modes (right).
 //!
 //! `cargo run --release --example colormap -- --png colormap.png`
+// The C program's index loops are kept as written.
+#![allow(clippy::needless_range_loop)]
 
 use gleval::prelude::*;
 

@@ -2,6 +2,8 @@
 //! the Red Book hill, GLU_OUTLINE_POLYGON on the left, GLU_OUTLINE_PATCH (trimmed) on the right.
 //!
 //! `cargo run --release --example outline -- --png outline.png`
+// The C program's index loops are kept as written.
+#![allow(clippy::needless_range_loop)]
 
 use gleval::prelude::*;
 

@@ -2,6 +2,8 @@
 //! circle of 9 homogeneous control points swept along z into a cylinder, lit on both sides.
 //!
 //! `cargo run --release --example rational -- --png rational.png`
+// The C program's index loops are kept as written.
+#![allow(clippy::needless_range_loop)]
 
 use gleval::prelude::*;
 
@@ -16,7 +18,7 @@ fn reshape(gl: &mut Gl, w: i32, h: i32) {
 }
 
 fn display(gl: &mut Gl) {
-    let r = 0.70710678f32;
+    let r = std::f32::consts::FRAC_1_SQRT_2;
     let circle: [[f32; 3]; 9] = [
         [1.0, 0.0, 1.0],
         [1.0, 1.0, r],

@@ -3,11 +3,13 @@
 //! with `GL_AUTO_NORMAL`.
 //!
 //! `cargo run --release --example rationalmap -- --png rationalmap.png`
+// The C program's index loops are kept as written.
+#![allow(clippy::needless_range_loop)]
 
 use gleval::prelude::*;
 
 fn display(gl: &mut Gl) {
-    let r = 0.70710678f32;
+    let r = std::f32::consts::FRAC_1_SQRT_2;
     let arc: [[f32; 4]; 3] = [[1.0, 0.0, 0.0, 1.0], [r, r, 0.0, r], [0.0, 1.0, 0.0, 1.0]];
     let mut patch = [[[0.0f32; 4]; 3]; 3];
     for i in 0..3 {

@@ -2,6 +2,8 @@
 //! specular material, a positional and a directional light, the light model's ambient term.
 //!
 //! `cargo run --release --example specular -- --png specular.png`
+// The C program's index loops are kept as written.
+#![allow(clippy::needless_range_loop)]
 
 use gleval::prelude::*;
 

@@ -2,6 +2,8 @@
 //! holes, one bounded by a NURBS curve joined to a piecewise-linear curve, one a triangle.
 //!
 //! `cargo run --release --example trimmed -- --png trimmed.png`
+// The C program's index loops are kept as written.
+#![allow(clippy::needless_range_loop)]
 
 use gleval::prelude::*;
 

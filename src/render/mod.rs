@@ -2,6 +2,8 @@
 //! assembly (always available, testable without a GPU), and the wgpu rasteriser (feature `gpu`).
 
 mod assemble;
+#[cfg(all(feature = "gpu", feature = "png"))]
+pub mod compare;
 mod shade;
 
 pub use assemble::{assemble, Batch, DrawList, Op, RasterVertex, Topology};

@@ -1,9 +1,9 @@
 //! Conformance: the Rust ports render headless (wgpu on lavapipe, or the GL backend with
 //! `WGPU_BACKEND=gl`) and are compared with the pictures real Mesa renders from the C
 //! originals (`tests/reference/pictures/*.c`, PNGs from `regen.sh`), with the shift-tolerant
-//! metric of `image_compare`.
+//! metric of `gleval::render::compare`.
 
-use super::image_compare::{assert_matches, Image};
+use gleval::render::compare::{assert_matches, RgbImage};
 use std::path::Path;
 
 #[path = "../../examples/bcurve.rs"]
@@ -50,7 +50,7 @@ const LEAKED_NORMAL_POINTS: f64 = 2.0 * 16.0 * 9.0;
 /// (outline), allowed up to 1%.
 const OWN_TESSELLATION: f64 = 0.01;
 
-fn render(mut app: gleval::app::App) -> Option<Image> {
+fn render(mut app: gleval::app::App) -> Option<RgbImage> {
     let image = match app.render_image() {
         Ok(i) => i,
         Err(e) if std::env::var("GLEVAL_REQUIRE_ADAPTER").is_ok_and(|v| v == "1") => panic!("{e}"),
@@ -59,8 +59,7 @@ fn render(mut app: gleval::app::App) -> Option<Image> {
             return None;
         }
     };
-    let rgb = image.pixels.chunks_exact(4).flat_map(|p| [p[0], p[1], p[2]]).collect();
-    Some(Image { width: image.width, height: image.height, rgb })
+    Some(RgbImage::from_rgba(&image))
 }
 
 fn check(name: &str, app: gleval::app::App, extra_pixels: f64) {

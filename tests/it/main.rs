@@ -6,7 +6,6 @@ mod eval_mesh;
 mod glu_errors;
 mod glu_tessellation;
 mod gpu_parity;
-mod image_compare;
 mod mesa_calls;
 mod robustness;
 mod shaders;

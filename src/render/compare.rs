@@ -1,4 +1,4 @@
-//! The image metric of the conformance tests: a pixel matches if some pixel within one pixel
+//! Comparing pictures the way the conformance tests do (and as users' PNG tests can): a pixel matches if some pixel within one pixel
 //! of it in the other image has every channel within `TOLERANCE`, checked both ways (so a
 //! missing object and an extra object both count). The score is the larger of the two
 //! mismatched fractions. One-pixel shifts (rasterisation rules at edges, which differ between
@@ -14,13 +14,23 @@ pub const TOLERANCE: u8 = 24;
 
 /// An RGB picture, rows top to bottom.
 #[derive(Clone, Debug, PartialEq, Eq)]
-pub struct Image {
+pub struct RgbImage {
+    /// Width in pixels.
     pub width: u32,
+    /// Height in pixels.
     pub height: u32,
+    /// `width * height * 3` bytes.
     pub rgb: Vec<u8>,
 }
 
-impl Image {
+impl RgbImage {
+    /// Drops the alpha channel of a rendered [`super::Image`].
+    #[must_use]
+    pub fn from_rgba(image: &super::Image) -> Self {
+        let rgb = image.pixels.chunks_exact(4).flat_map(|p| [p[0], p[1], p[2]]).collect();
+        Self { width: image.width, height: image.height, rgb }
+    }
+
     fn at(&self, x: i64, y: i64) -> Option<[u8; 3]> {
         if x < 0 || y < 0 || x >= i64::from(self.width) || y >= i64::from(self.height) {
             return None;
@@ -30,7 +40,8 @@ impl Image {
     }
 }
 
-pub fn load_png(path: &Path) -> Result<Image, String> {
+/// Loads a PNG (any colour type) as RGB.
+pub fn load_png(path: &Path) -> Result<RgbImage, String> {
     let file = std::fs::File::open(path).map_err(|e| format!("{}: {e}", path.display()))?;
     let mut decoder = png::Decoder::new(std::io::BufReader::new(file));
     decoder.set_transformations(png::Transformations::EXPAND);
@@ -39,10 +50,11 @@ pub fn load_png(path: &Path) -> Result<Image, String> {
     let info = reader.next_frame(&mut buf).map_err(|e| e.to_string())?;
     let channels = info.color_type.samples();
     let rgb = buf[..info.buffer_size()].chunks_exact(channels).flat_map(|p| [p[0], p[1], p[2]]).collect();
-    Ok(Image { width: info.width, height: info.height, rgb })
+    Ok(RgbImage { width: info.width, height: info.height, rgb })
 }
 
-pub fn save_png(path: &Path, image: &Image) -> Result<(), String> {
+/// Writes an RGB PNG.
+pub fn save_png(path: &Path, image: &RgbImage) -> Result<(), String> {
     let file = std::fs::File::create(path).map_err(|e| e.to_string())?;
     let mut encoder = png::Encoder::new(std::io::BufWriter::new(file), image.width, image.height);
     encoder.set_color(png::ColorType::Rgb);
@@ -62,7 +74,7 @@ pub struct Comparison {
     pub mask: Vec<bool>,
 }
 
-fn unmatched(a: &Image, b: &Image) -> Vec<bool> {
+fn unmatched(a: &RgbImage, b: &RgbImage) -> Vec<bool> {
     let mut out = Vec::with_capacity((a.width * a.height) as usize);
     for y in 0..i64::from(a.height) {
         for x in 0..i64::from(a.width) {
@@ -77,7 +89,8 @@ fn unmatched(a: &Image, b: &Image) -> Vec<bool> {
     out
 }
 
-pub fn compare(reference: &Image, actual: &Image) -> Result<Comparison, String> {
+/// Compares two pictures of the same size (an error otherwise).
+pub fn compare(reference: &RgbImage, actual: &RgbImage) -> Result<Comparison, String> {
     if (reference.width, reference.height) != (actual.width, actual.height) {
         return Err(format!(
             "size {}x{} vs reference {}x{}",
@@ -92,19 +105,19 @@ pub fn compare(reference: &Image, actual: &Image) -> Result<Comparison, String> 
 }
 
 /// Mismatches in red over a faded reference.
-pub fn diff_image(reference: &Image, c: &Comparison) -> Image {
+pub fn diff_image(reference: &RgbImage, c: &Comparison) -> RgbImage {
     let rgb = reference
         .rgb
         .chunks_exact(3)
         .zip(&c.mask)
         .flat_map(|(p, &bad)| if bad { [255, 0, 0] } else { [128 + p[0] / 2, 128 + p[1] / 2, 128 + p[2] / 2] })
         .collect();
-    Image { width: reference.width, height: reference.height, rgb }
+    RgbImage { width: reference.width, height: reference.height, rgb }
 }
 
 /// Compares `actual` with the reference PNG; on failure writes `<name>.actual.png` and
 /// `<name>.diff.png` beside the reference and panics with the score.
-pub fn assert_matches(reference_path: &Path, actual: &Image, threshold: f64) -> f64 {
+pub fn assert_matches(reference_path: &Path, actual: &RgbImage, threshold: f64) -> f64 {
     let reference = load_png(reference_path).unwrap_or_else(|e| panic!("reference: {e}"));
     let c = compare(&reference, actual).unwrap_or_else(|e| panic!("{}: {e}", reference_path.display()));
     if c.fraction > threshold {
@@ -127,11 +140,11 @@ pub fn assert_matches(reference_path: &Path, actual: &Image, threshold: f64) -> 
 mod tests {
     use super::*;
 
-    fn canvas(w: u32, h: u32) -> Image {
-        Image { width: w, height: h, rgb: vec![255; (w * h * 3) as usize] }
+    fn canvas(w: u32, h: u32) -> RgbImage {
+        RgbImage { width: w, height: h, rgb: vec![255; (w * h * 3) as usize] }
     }
 
-    fn line(img: &mut Image, y: u32, x0: u32, x1: u32, colour: [u8; 3]) {
+    fn line(img: &mut RgbImage, y: u32, x0: u32, x1: u32, colour: [u8; 3]) {
         for x in x0..x1 {
             let i = ((y * img.width + x) * 3) as usize;
             img.rgb[i..i + 3].copy_from_slice(&colour);
