@@ -1,66 +1,87 @@
-//! Runs the built-in programs (the textbook's BezCurve and BezSurf evaluator calls) through the
-//! GL façade and reports what each one draws. Rendering to PNG arrives with the renderer; until
-//! then each frame is written as a plain-text vertex dump under `out/gallery/`.
+//! Renders every example headless into `out/gallery/` and writes `index.html` showing each
+//! picture beside the picture real Mesa/GLU renders from the C original (where there is one),
+//! with the share of pixels that differ by the conformance tests' metric.
+//!
+//! `cargo run --release --example gallery`
 
 use gleval::prelude::*;
+use gleval::render::compare::{compare, load_png, RgbImage};
 use std::fmt::Write as _;
+use std::path::Path;
 
-/// BezCurve.c (seed 004, 9.4.3): a quartic Bezier curve and its control points.
-fn bez_curve(gl: &mut Gl) {
-    let pts: [[f32; 3]; 5] = [[-2.0, 0.0, 0.0], [-1.0, 1.0, 0.0], [0.0, 0.0, 0.0], [1.0, -1.0, 0.0], [2.0, 0.0, 0.0]];
-    let (npts, un) = (5, 100);
-    gl.color3f(0.0, 0.0, 1.0);
-    gll::bez_curve(gl, pts.as_flattened(), npts, un);
-    gl.color3f(1.0, 0.0, 0.0);
-    gll::points(gl, pts.as_flattened(), npts);
-}
+#[path = "bcurve.rs"]
+mod bcurve;
+#[path = "bezcurve.rs"]
+mod bezcurve;
+#[path = "bezsurf.rs"]
+mod bezsurf;
+#[path = "bsurf.rs"]
+mod bsurf;
+#[path = "colormap.rs"]
+mod colormap;
+#[path = "linespoints.rs"]
+mod linespoints;
+#[path = "outline.rs"]
+mod outline;
+#[path = "rational.rs"]
+mod rational;
+#[path = "rationalmap.rs"]
+mod rationalmap;
+#[path = "specular.rs"]
+mod specular;
+#[path = "trimmed.rs"]
+mod trimmed;
 
-/// BezSurf.c (seed 004, 9.4.3): a bicubic patch as wireframe and filled, with auto normals.
-fn bez_surf(gl: &mut Gl) {
-    #[rustfmt::skip]
-    let pts: [[[f32; 3]; 4]; 4] = [
-        [[-1.5, -1.5, 4.0], [-0.5, -1.5, 2.0], [0.5, -1.5, -1.0], [1.5, -1.5, 2.0]],
-        [[-1.5, -0.5, 1.0], [-0.5, -0.5, 3.0], [0.5, -0.5, 0.0], [1.5, -0.5, -1.0]],
-        [[-1.5, 0.5, 4.0], [-0.5, -0.5, 0.0], [0.5, 0.5, 3.0], [1.5, 0.5, 4.0]],
-        [[-1.5, 1.5, -2.0], [-0.5, 1.5, -2.0], [0.5, 1.5, 0.0], [1.5, 1.5, 1.0]],
-    ];
-    let flat = pts.as_flattened().as_flattened();
-    gl.enable(GL_AUTO_NORMAL);
-    gll::bez_surface(gl, GL_LINE, flat, 4, 4, 20, 20);
-    gll::points(gl, flat, 16);
-    gll::bez_surface(gl, GL_FILL, flat, 4, 4, 20, 20);
-    gll::points(gl, flat, 16);
-}
+/// A built-in program: its name and how to build it.
+type Program = (&'static str, fn() -> App);
 
-fn dump(frame: &Frame) -> String {
-    let mut s = String::new();
-    for (p, verts) in frame.iter() {
-        let _ = writeln!(s, "primitive mode=0x{:04x} vertices={}", p.mode, verts.len());
-        for v in verts {
-            let [x, y, z, w] = v.position;
-            let [nx, ny, nz] = v.normal;
-            let _ = writeln!(s, "  p=({x:.6} {y:.6} {z:.6} {w:.6}) n=({nx:.6} {ny:.6} {nz:.6})");
-        }
+const PROGRAMS: [Program; 11] = [
+    ("bezcurve", bezcurve::app),
+    ("bezsurf", bezsurf::app),
+    ("bcurve", bcurve::app),
+    ("bsurf", bsurf::app),
+    ("colormap", colormap::app),
+    ("rationalmap", rationalmap::app),
+    ("linespoints", linespoints::app),
+    ("specular", specular::app),
+    ("trimmed", trimmed::app),
+    ("rational", rational::app),
+    ("outline", outline::app),
+];
+
+fn main() -> Result<(), Box<dyn std::error::Error>> {
+    let out = Path::new("out/gallery");
+    std::fs::create_dir_all(out)?;
+    let references = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/reference/pictures/png");
+    let mut html = String::from(
+        "<!doctype html><meta charset=utf-8><title>gleval gallery</title>\
+         <style>body{font-family:sans-serif}td{padding:6px;vertical-align:top}</style>\
+         <h1>gleval gallery</h1><p>Left: gleval (wgpu). Right: real Mesa/GLU (OSMesa) from the C original.</p><table>",
+    );
+    println!("{:<12} {:>9}  {}", "program", "differ", "title");
+    for (name, make) in PROGRAMS {
+        let mut app = make();
+        let title = app.title().to_owned();
+        let image = app.render_image()?;
+        let png = out.join(format!("{name}.png"));
+        gleval::render::write_png(&png, &image)?;
+        let reference = references.join(format!("{name}.png"));
+        let score =
+            load_png(&reference).ok().and_then(|r| compare(&r, &RgbImage::from_rgba(&image)).ok()).map(|c| c.fraction);
+        let score_text = score.map_or("-".to_owned(), |s| format!("{:.3}%", s * 100.0));
+        println!("{name:<12} {score_text:>9}  {title}");
+        let reference_cell = if reference.exists() {
+            format!("<img src=\"{}\">", reference.display())
+        } else {
+            "(no reference)".to_owned()
+        };
+        let _ = write!(
+            html,
+            "<tr><td><b>{name}</b><br>{title}<br>differs: {score_text}</td><td><img src=\"{name}.png\"></td><td>{reference_cell}</td></tr>"
+        );
     }
-    s
-}
-
-/// A built-in program: name, window size, display function.
-type Program = (&'static str, i32, i32, fn(&mut Gl));
-
-fn main() -> std::io::Result<()> {
-    let programs: [Program; 2] = [("bezcurve", 400, 200, bez_curve), ("bezsurf", 500, 200, bez_surf)];
-    let dir = std::path::Path::new("out/gallery");
-    std::fs::create_dir_all(dir)?;
-    println!("{:<10} {:>10} {:>9} {:>6}", "program", "primitives", "vertices", "error");
-    for (name, w, h, program) in programs {
-        let mut gl = Gl::new(w, h);
-        program(&mut gl);
-        let error = gl.get_error();
-        let frame = gl.take_frame();
-        std::fs::write(dir.join(format!("{name}.txt")), dump(&frame))?;
-        println!("{name:<10} {:>10} {:>9} {error:>#6x}", frame.primitives.len(), frame.vertices.len());
-    }
-    println!("vertex dumps written to {}", dir.display());
+    html.push_str("</table>");
+    std::fs::write(out.join("index.html"), html)?;
+    println!("wrote {}", out.join("index.html").display());
     Ok(())
 }
