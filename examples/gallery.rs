@@ -58,7 +58,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
          <style>body{font-family:sans-serif}td{padding:6px;vertical-align:top}</style>\
          <h1>gleval gallery</h1><p>Left: gleval (wgpu). Right: real Mesa/GLU (OSMesa) from the C original.</p><table>",
     );
-    println!("{:<12} {:>9}  {}", "program", "differ", "title");
+    println!("{:<12} {:>9}  title", "program", "differ");
     for (name, make) in PROGRAMS {
         let mut app = make();
         let title = app.title().to_owned();

@@ -196,28 +196,23 @@ impl Gl {
     /// `glGetIntegerv` for the evaluator queries (`GL_MAX_EVAL_ORDER`, the grid domains and
     /// segments). Floats are rounded to the nearest integer, as GL converts them.
     pub fn get_integerv(&mut self, pname: GLenum, params: &mut [GLint]) {
-        let mut values = [0.0f64; 4];
-        if let Some(n) = self.get_values(pname, &mut values) {
-            if params.len() < n {
-                self.set_error(GL_INVALID_VALUE);
-                return;
-            }
-            for (out, v) in params.iter_mut().zip(&values[..n]) {
-                *out = v.round() as GLint;
-            }
-        }
+        self.get_converted(pname, params, |v| v.round() as GLint);
     }
 
     /// `glGetFloatv` for the evaluator queries (see [`Gl::get_integerv`]).
     pub fn get_floatv(&mut self, pname: GLenum, params: &mut [GLfloat]) {
+        self.get_converted(pname, params, |v| v as GLfloat);
+    }
+
+    /// Answers a `glGet` into `params`; a slice shorter than the answer is `GL_INVALID_VALUE`.
+    fn get_converted<T>(&mut self, pname: GLenum, params: &mut [T], convert: impl Fn(f64) -> T) {
         let mut values = [0.0f64; 4];
         if let Some(n) = self.get_values(pname, &mut values) {
             if params.len() < n {
-                self.set_error(GL_INVALID_VALUE);
-                return;
+                return self.set_error(GL_INVALID_VALUE);
             }
             for (out, v) in params.iter_mut().zip(&values[..n]) {
-                *out = *v as GLfloat;
+                *out = convert(*v);
             }
         }
     }
