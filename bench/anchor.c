@@ -1,0 +1,90 @@
+/* The C anchor for bench/compare.sh: real Mesa's evaluators (OSMesa) and GLU's tessellator on
+   the same workloads as examples/bench.rs. Rasterisation is culled away (glCullFace
+   GL_FRONT_AND_BACK) so the evaluator path is what is timed. Prints "<case> <rate per second>"
+   with the median of several runs. Build: cc -O2 anchor.c -lOSMesa -lGLU -lGL -lm */
+#include <GL/osmesa.h>
+#include <GL/glu.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <time.h>
+
+static double now(void) { struct timespec t; clock_gettime(CLOCK_MONOTONIC, &t); return t.tv_sec + t.tv_nsec * 1e-9; }
+static int cmp(const void *a, const void *b) { double x = *(const double *)a, y = *(const double *)b; return (x > y) - (x < y); }
+static double median(double *t, int n) { qsort(t, n, sizeof *t, cmp); return t[n / 2]; }
+
+static GLfloat patch[4][4][3];
+static long tess_vertices;
+static void count_vertex(GLfloat *v) { (void)v; tess_vertices++; }
+
+static void mesh2(int n, int runs) {
+    double t[16];
+    glMap2f(GL_MAP2_VERTEX_3, 0, 1, 12, 4, 0, 1, 3, 4, &patch[0][0][0]);
+    glEnable(GL_MAP2_VERTEX_3);
+    glEnable(GL_AUTO_NORMAL);
+    glMapGrid2f(n, 0, 1, n, 0, 1);
+    for (int r = 0; r < runs; r++) {
+        double s = now();
+        glEvalMesh2(GL_FILL, 0, n, 0, n);
+        glFinish();
+        t[r] = now() - s;
+    }
+    printf("eval_mesh2_%d %.0f\n", n, (double)(n + 1) * (n + 1) / median(t, runs));
+}
+
+static void mesh1(int runs) {
+    GLfloat curve[11][3];
+    for (int i = 0; i < 11; i++) { curve[i][0] = i * 0.1f - 0.5f; curve[i][1] = (i % 3) * 0.2f; curve[i][2] = 0; }
+    double t[16];
+    int n = 1000000;
+    glMap1f(GL_MAP1_VERTEX_3, 0, 1, 3, 11, &curve[0][0]);
+    glEnable(GL_MAP1_VERTEX_3);
+    glMapGrid1f(n, 0, 1);
+    for (int r = 0; r < runs; r++) {
+        double s = now();
+        glEvalMesh1(GL_LINE, 0, n);
+        glFinish();
+        t[r] = now() - s;
+    }
+    printf("eval_mesh1_degree10 %.0f\n", (n + 1) / median(t, runs));
+}
+
+static void nurbs(int runs) {
+    static GLfloat knots[14], ctl[10][10][3];
+    for (int i = 0; i < 14; i++) knots[i] = i;
+    for (int i = 0; i < 10; i++)
+        for (int j = 0; j < 10; j++) {
+            ctl[i][j][0] = i; ctl[i][j][1] = j; ctl[i][j][2] = ((i * 3 + j * 5) % 7) * 0.3f;
+        }
+    double t[16];
+    GLUnurbs *nb = gluNewNurbsRenderer();
+    gluNurbsProperty(nb, GLU_NURBS_MODE, GLU_NURBS_TESSELLATOR);
+    gluNurbsProperty(nb, GLU_SAMPLING_METHOD, GLU_DOMAIN_DISTANCE);
+    gluNurbsProperty(nb, GLU_U_STEP, 100);
+    gluNurbsProperty(nb, GLU_V_STEP, 100);
+    gluNurbsCallback(nb, GLU_NURBS_VERTEX, (void (*)(void))count_vertex);
+    for (int r = 0; r < runs; r++) {
+        tess_vertices = 0;
+        double s = now();
+        gluBeginSurface(nb);
+        gluNurbsSurface(nb, 14, knots, 14, knots, 30, 3, &ctl[0][0][0], 4, 4, GL_MAP2_VERTEX_3);
+        gluEndSurface(nb);
+        t[r] = now() - s;
+    }
+    printf("nurbs_untrimmed %.0f\n", tess_vertices / median(t, runs));
+    gluDeleteNurbsRenderer(nb);
+}
+
+int main(void) {
+    static unsigned char buf[64 * 64 * 4];
+    OSMesaContext c = OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 0, NULL);
+    OSMesaMakeCurrent(c, buf, GL_UNSIGNED_BYTE, 64, 64);
+    glEnable(GL_CULL_FACE);
+    glCullFace(GL_FRONT_AND_BACK);
+    for (int i = 0; i < 4; i++)
+        for (int j = 0; j < 4; j++) { patch[i][j][0] = i / 3.0f - 0.5f; patch[i][j][1] = j / 3.0f - 0.5f; patch[i][j][2] = ((i + j) % 3) * 0.2f; }
+    mesh2(100, 9);
+    mesh2(1000, 5);
+    mesh1(5);
+    nurbs(5);
+    return 0;
+}
