@@ -71,7 +71,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         let score_text = score.map_or("-".to_owned(), |s| format!("{:.3}%", s * 100.0));
         println!("{name:<12} {score_text:>9}  {title}");
         let reference_cell = if reference.exists() {
-            format!("<img src=\"{}\">", reference.display())
+            std::fs::copy(&reference, out.join(format!("{name}.mesa.png")))?;
+            format!("<img src=\"{name}.mesa.png\">")
         } else {
             "(no reference)".to_owned()
         };
