@@ -1,41 +1,82 @@
-//! Trimmed parameter domains (GLU trimming, spec 2.7): trim loops in (u, v) are checked the way
-//! GLU requires them (joined head to tail within 1e-5, outer loops counter-clockwise, holes
-//! clockwise, nested loops alternating, no crossings), then the retained region is triangulated
-//! by a constrained Delaunay triangulation (`spade`) of the loops and of the sampling grid's
-//! interior points. The result is a mesh in (u, v) that the surface is evaluated on.
+//! Trimmed parameter domains (GLU trimming, spec 2.7).
+//!
+//! A trimmed NURBS surface is drawn only over part of its (u, v) domain: the region that lies to
+//! the **left** of every trim loop as it is traversed. Outer boundaries therefore run
+//! counter-clockwise, holes clockwise, and loops nested inside holes alternate again:
+//!
+//! ```text
+//!   v ^  +-------<-------+   outer loop, CCW (depth 0)
+//!     |  |   +--->---+   |   hole, CW (depth 1): removed
+//!     |  |   | +<-+  |   |   island, CCW (depth 2): kept again
+//!     |  |   | +->+  |   |
+//!     |  |   +---<---+   |
+//!     |  +------->-------+
+//!     +--------------------> u
+//! ```
+//!
+//! This module checks the loops the way GLU does (curves joined head to tail within 1e-5, no
+//! self-intersections, no crossings, orientation matching the nesting depth) and triangulates the
+//! retained region: a constrained Delaunay triangulation (`spade`) of the loop polylines (as
+//! constraint edges) and of the sampling grid's interior points, keeping the triangles on the
+//! retained side of the constraints. The result is a mesh in (u, v) at whose points the surface
+//! is then evaluated. Nothing here knows about GL.
+//!
+//! GLU itself (`subdivider.cc`, `slicer.cc`, `sampleMonoPoly.cc`) splits the region into monotone
+//! pieces and stitches them to its uniform grid; the triangles differ, the covered region and
+//! the grid points inside it are the same.
 
-use spade::handles::FixedVertexHandle;
 use spade::{ConstrainedDelaunayTriangulation, Point2, Triangulation};
 
-/// GLU's tolerance for joining trim curves (`arc.cc` ZERO).
+/// GLU's tolerance for joining trim curves (`arc.cc` ZERO): |Δu| and |Δv| both at most this.
 pub const JOIN_TOLERANCE: f64 = 1e-5;
 
-/// Upper bound on interior grid points inserted, so that absurd sampling cannot exhaust memory.
-pub const MAX_GRID_POINTS: usize = 4_000_000;
+type P = [f64; 2];
 
 /// A closed trim loop: a polyline in (u, v), the last point joined back to the first.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct TrimLoop {
-    /// The vertices, without repeating the first at the end.
+    /// The vertices. Repeating the first point at the end is allowed but not needed.
     pub points: Vec<[f64; 2]>,
 }
 
+impl TrimLoop {
+    /// A loop through `points`.
+    #[must_use]
+    pub fn new(points: Vec<[f64; 2]>) -> Self {
+        Self { points }
+    }
+
+    /// The signed area (shoelace formula): positive for a counter-clockwise loop.
+    #[must_use]
+    pub fn signed_area(&self) -> f64 {
+        signed_area(&self.points)
+    }
+}
+
 /// Why a set of trim loops is rejected, with GLU's error numbers.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum TrimError {
-    /// Consecutive curves do not meet within 1e-5 (GLU error 31).
+    /// Consecutive curves of a loop do not meet within 1e-5 (GLU error 31).
     Unconnected,
-    /// A loop crosses itself, runs the wrong way for its nesting depth, is degenerate, or
-    /// leaves the domain (GLU error 28).
+    /// A loop crosses or touches itself, runs the wrong way for its nesting depth, has fewer than
+    /// three distinct points or no area, has a point that is not finite or lies outside the
+    /// domain; or the domain itself is empty or not finite (GLU error 28).
     Misoriented,
-    /// Two loops cross (GLU error 29).
+    /// Two loops cross or touch (GLU error 29).
     Intersecting,
-    /// A loop without any point (GLU error 18).
+    /// A loop without any point, or no curve at all (GLU error 18).
     Empty,
 }
 
 impl TrimError {
-    /// The GLU NURBS error number.
+    /// The GLU NURBS error number (`GLU_NURBS_ERRORn`): 31, 28, 29 or 18.
+    ///
+    /// ```
+    /// use gleval::tess::trim::{join_curves, TrimError};
+    /// let err = join_curves(&[vec![[0.0, 0.0], [1.0, 0.0]], vec![[1.0, 0.5], [0.0, 0.0]]]);
+    /// assert_eq!(err, Err(TrimError::Unconnected));
+    /// assert_eq!(TrimError::Unconnected.glu_number(), 31);
+    /// ```
     #[must_use]
     pub fn glu_number(self) -> u32 {
         match self {
@@ -49,6 +90,7 @@ impl TrimError {
 
 impl std::fmt::Display for TrimError {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        // GLU's own texts (`glue.c` __gluNurbsErrors).
         let text = match self {
             Self::Unconnected => "unconnected trim curves",
             Self::Misoriented => "intersecting or misoriented trim curves",
@@ -64,49 +106,122 @@ impl std::error::Error for TrimError {}
 /// A triangulated region of the parameter domain.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct TrimMesh {
-    /// Vertices in (u, v).
+    /// Vertices in (u, v): the loop points (and any split points), then interior grid points.
+    /// Every vertex is used by at least one triangle.
     pub points: Vec<[f64; 2]>,
-    /// Counter-clockwise triangles (u to the right, v up).
+    /// Counter-clockwise triangles (u to the right, v up), indices into `points`.
     pub triangles: Vec<[u32; 3]>,
 }
 
-fn close(a: [f64; 2], b: [f64; 2]) -> bool {
+impl TrimMesh {
+    /// The total area of the triangles in (u, v).
+    #[must_use]
+    pub fn area(&self) -> f64 {
+        let at = |i: u32| self.points.get(i as usize).copied().unwrap_or([0.0; 2]);
+        self.triangles.iter().map(|t| 0.5 * orient(at(t[0]), at(t[1]), at(t[2]))).sum()
+    }
+}
+
+/// How [`triangulate_with`] samples the retained region.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TrimOptions {
+    /// Grid points closer to a loop than this fraction of the local grid spacing are left out,
+    /// so that no sliver triangles form along the loops. Distances are measured in grid cells
+    /// (u and v scaled by their local spacings); clamped to [0, 0.5].
+    pub clearance: f64,
+    /// Give loop edges a vertex wherever they cross a grid line, so that long trim edges are
+    /// sampled as finely as the interior. GLU splits user trims only at knot lines and at its
+    /// sampling subdivisions, so this is off by default; [`split_at_lines`] splits at chosen
+    /// lines. The border loop made when there are no loops is always split (GLU tessellates
+    /// its border arcs at the sampling step).
+    pub split_at_grid_lines: bool,
+    /// Budget for interior grid points plus split points. While it is exceeded, every other
+    /// grid line is dropped (in u and in v), so absurd sampling cannot exhaust memory.
+    pub max_points: usize,
+}
+
+impl TrimOptions {
+    /// Clearance 0.25, no splitting, at most 4 million grid and split points.
+    pub const DEFAULT: Self = Self { clearance: 0.25, split_at_grid_lines: false, max_points: 4_000_000 };
+
+    /// With another clearance (a fraction of the grid spacing).
+    #[must_use]
+    pub fn with_clearance(self, clearance: f64) -> Self {
+        Self { clearance, ..self }
+    }
+
+    /// With or without vertices where loop edges cross grid lines.
+    #[must_use]
+    pub fn with_split_at_grid_lines(self, split_at_grid_lines: bool) -> Self {
+        Self { split_at_grid_lines, ..self }
+    }
+
+    /// With another budget of grid and split points.
+    #[must_use]
+    pub fn with_max_points(self, max_points: usize) -> Self {
+        Self { max_points, ..self }
+    }
+}
+
+impl Default for TrimOptions {
+    fn default() -> Self {
+        Self::DEFAULT
+    }
+}
+
+fn close(a: P, b: P) -> bool {
     (a[0] - b[0]).abs() <= JOIN_TOLERANCE && (a[1] - b[1]).abs() <= JOIN_TOLERANCE
 }
 
-fn midpoint(a: [f64; 2], b: [f64; 2]) -> [f64; 2] {
+fn midpoint(a: P, b: P) -> P {
     [0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])]
 }
 
-/// Joins the curves of one loop head to tail: each end must meet the next curve's start (and
-/// the last the first) within 1e-5 in u and v; meeting points are snapped to their average, and
-/// consecutive points within 1e-5 are merged (GLU's `ELIMINATE_REDUNDANT_POINTS`).
+/// Joins the curves (polylines) of one trim loop head to tail, as GLU does before tessellating.
+///
+/// Each curve's last point must meet the next curve's first point, and the last curve's end the
+/// first curve's start, within [`JOIN_TOLERANCE`] in u and in v (`arc.cc` `isDisconnected`);
+/// meeting points are snapped to their average. Consecutive points within the tolerance are
+/// merged (`reader.cc` ELIMINATE_REDUNDANT_POINTS), as is a closing point equal to the first.
+///
+/// Errors: no curves or no points → [`TrimError::Empty`]; a gap → [`TrimError::Unconnected`];
+/// a point that is not finite, or fewer than three distinct points → [`TrimError::Misoriented`].
+///
+/// ```
+/// use gleval::tess::trim::join_curves;
+/// let bottom = vec![[0.0, 0.0], [1.0, 0.0]];
+/// let rest = vec![[1.0, 4e-6], [1.0, 1.0], [0.0, 1.0], [0.0, 0.0]];
+/// let l = join_curves(&[bottom, rest]).unwrap();
+/// assert_eq!(l.points, vec![[0.0, 0.0], [1.0, 2e-6], [1.0, 1.0], [0.0, 1.0]]);
+/// ```
 pub fn join_curves(pieces: &[Vec<[f64; 2]>]) -> Result<TrimLoop, TrimError> {
-    let mut pieces: Vec<Vec<[f64; 2]>> = pieces.iter().filter(|p| !p.is_empty()).cloned().collect();
+    let mut pieces: Vec<Vec<P>> = pieces.iter().filter(|p| !p.is_empty()).cloned().collect();
     if pieces.is_empty() {
         return Err(TrimError::Empty);
     }
-    if pieces.iter().flatten().any(|p| !p[0].is_finite() || !p[1].is_finite()) {
+    if pieces.iter().flatten().any(|p| !is_finite(*p)) {
         return Err(TrimError::Misoriented);
     }
     let n = pieces.len();
     for i in 0..n {
         let j = (i + 1) % n;
-        let (end, start) = (*pieces[i].last().expect("non-empty"), pieces[j][0]);
+        let (Some(&end), Some(&start)) = (pieces[i].last(), pieces[j].first()) else { continue };
         if !close(end, start) {
             return Err(TrimError::Unconnected);
         }
         let m = midpoint(end, start);
-        *pieces[i].last_mut().expect("non-empty") = m;
+        if let Some(last) = pieces[i].last_mut() {
+            *last = m;
+        }
         pieces[j][0] = m;
     }
-    let mut points: Vec<[f64; 2]> = Vec::new();
+    let mut points: Vec<P> = Vec::new();
     for p in pieces.iter().flatten() {
         if points.last().is_none_or(|q| !close(*q, *p)) {
             points.push(*p);
         }
     }
-    while points.len() > 1 && close(points[0], *points.last().expect("non-empty")) {
+    while points.len() > 1 && points.last().is_some_and(|q| close(points[0], *q)) {
         points.pop();
     }
     if points.len() < 3 {
@@ -115,54 +230,194 @@ pub fn join_curves(pieces: &[Vec<[f64; 2]>]) -> Result<TrimLoop, TrimError> {
     Ok(TrimLoop { points })
 }
 
-/// Twice the signed area (positive for counter-clockwise).
-fn signed_area(points: &[[f64; 2]]) -> f64 {
-    (0..points.len())
-        .map(|i| {
-            let (a, b) = (points[i], points[(i + 1) % points.len()]);
-            a[0] * b[1] - b[0] * a[1]
-        })
-        .sum()
+/// The loop with a vertex added wherever an edge crosses one of the lines u = `us[i]` or
+/// v = `vs[j]` (GLU's `splitInS`/`splitInT` at knot lines). The new vertices lie on the edges,
+/// with the crossed coordinate exactly equal to the line's.
+#[must_use]
+pub fn split_at_lines(l: &TrimLoop, us: &[f64], vs: &[f64]) -> TrimLoop {
+    let grid = Grid {
+        u: sorted_lines(us, f64::NEG_INFINITY, f64::INFINITY),
+        v: sorted_lines(vs, f64::NEG_INFINITY, f64::INFINITY),
+    };
+    let n = l.points.len();
+    let mut points = Vec::with_capacity(n);
+    for i in 0..n {
+        let (a, b) = (l.points[i], l.points[(i + 1) % n]);
+        points.push(a);
+        if n > 1 && is_finite(a) && is_finite(b) {
+            points.extend(grid.crossings(a, b).into_iter().map(|c| c.1));
+        }
+    }
+    TrimLoop { points }
 }
 
-fn orient(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> f64 {
+/// Triangulates the region the loops retain within `domain` = [umin, umax, vmin, vmax], with
+/// [`TrimOptions::DEFAULT`]; see [`triangulate_with`].
+///
+/// ```
+/// use gleval::tess::trim::{triangulate, TrimLoop};
+/// // A square hole (clockwise) in the unit square.
+/// let outer = TrimLoop::new(vec![[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]);
+/// let hole = TrimLoop::new(vec![[0.25, 0.25], [0.25, 0.75], [0.75, 0.75], [0.75, 0.25]]);
+/// let grid = [0.0, 0.5, 1.0];
+/// let mesh = triangulate(&[outer, hole], [0.0, 1.0, 0.0, 1.0], &grid, &grid).unwrap();
+/// assert!((mesh.area() - 0.75).abs() < 1e-12);
+/// ```
+pub fn triangulate(loops: &[TrimLoop], domain: [f64; 4], us: &[f64], vs: &[f64]) -> Result<TrimMesh, TrimError> {
+    triangulate_with(loops, domain, us, vs, &TrimOptions::DEFAULT)
+}
+
+/// Triangulates the region the loops retain within `domain` = [umin, umax, vmin, vmax].
+///
+/// `us` and `vs` are the sampling grid lines (any order; duplicates, lines outside the open
+/// domain and non-finite values are ignored). The grid points strictly inside the retained region
+/// and not within `options.clearance` grid cells of a loop are inserted, the loop edges are
+/// constraint edges, and the triangles of the constrained Delaunay triangulation that lie to the
+/// left of the loops are returned, counter-clockwise.
+///
+/// No loops means the whole domain (GLU's `makeBorderTrim`): a counter-clockwise border with a
+/// vertex on every grid line.
+///
+/// Errors (GLU's rules; the checks run in this order):
+/// - the domain is not finite or empty (umin ≥ umax or vmin ≥ vmax) → [`TrimError::Misoriented`];
+/// - a loop without points → [`TrimError::Empty`];
+/// - a loop with a non-finite point, a point outside the domain (GLU requires trims inside it),
+///   fewer than three distinct points, zero area, an edge doubling back on the previous one,
+///   or an edge touching a non-adjacent edge of the same loop → [`TrimError::Misoriented`];
+/// - an edge of one loop touching or crossing an edge of another → [`TrimError::Intersecting`];
+/// - a loop whose orientation contradicts its nesting depth (counter-clockwise inside an even
+///   number of other loops, clockwise inside an odd number) → [`TrimError::Misoriented`].
+///
+/// Coordinates beyond spade's range (about 3e60) are [`TrimError::Misoriented`]; coordinates
+/// smaller than about 1.8e-43 in magnitude are flushed to zero.
+pub fn triangulate_with(
+    loops: &[TrimLoop],
+    domain: [f64; 4],
+    us: &[f64],
+    vs: &[f64],
+    options: &TrimOptions,
+) -> Result<TrimMesh, TrimError> {
+    let [u0, u1, v0, v1] = domain;
+    if !domain.iter().all(|c| c.is_finite() && c.abs() <= spade::MAX_ALLOWED_VALUE) || u0 >= u1 || v0 >= v1 {
+        return Err(TrimError::Misoriented);
+    }
+    let mut split = options.split_at_grid_lines;
+    let loops: Vec<Vec<P>> = if loops.is_empty() {
+        split = true;
+        vec![vec![[u0, v0], [u1, v0], [u1, v1], [u0, v1]]]
+    } else {
+        loops.iter().map(clean_loop).collect::<Result<_, _>>()?
+    };
+    validate(&loops, domain)?;
+    let mut grid = Grid { u: grid_lines(us, u0, u1), v: grid_lines(vs, v0, v1) };
+    let budget = |g: &Grid| g.interior_count().saturating_add(if split { g.count_crossings(&loops) } else { 0 });
+    while budget(&grid) > options.max_points && grid.coarsen() {}
+    let clearance = if options.clearance.is_nan() { 0.0 } else { options.clearance.clamp(0.0, 0.5) };
+    let (mut vertices, mut edges) = (Vec::new(), Vec::new());
+    let mut blocked = vec![false; grid.interior_count()];
+    for l in &loops {
+        let first = vertices.len();
+        for (i, &a) in l.iter().enumerate() {
+            let b = l[(i + 1) % l.len()];
+            vertices.push(point(a));
+            let cuts = grid.crossings(a, b);
+            grid.block_near(a, b, &cuts, clearance, &mut blocked);
+            if split {
+                vertices.extend(grid.thin(a, b, &cuts).map(point));
+            }
+        }
+        let last = vertices.len();
+        edges.extend((first..last).map(|i| [i, if i + 1 == last { first } else { i + 1 }]));
+    }
+    vertices.extend(grid.retained_points(&loops, &blocked).map(point));
+    let mut conflict = false;
+    let cdt = ConstrainedDelaunayTriangulation::<Point2<f64>>::try_bulk_load_cdt(vertices, edges, |_| conflict = true)
+        .map_err(|_| TrimError::Misoriented)?;
+    if conflict {
+        return Err(TrimError::Intersecting);
+    }
+    Ok(retained_mesh(&cdt))
+}
+
+fn is_finite(p: P) -> bool {
+    p[0].is_finite() && p[1].is_finite()
+}
+
+/// Spade rejects non-zero coordinates below its minimum; such values are zero for any domain.
+fn flush(x: f64) -> f64 {
+    if x.abs() < spade::MIN_ALLOWED_VALUE {
+        0.0
+    } else {
+        x
+    }
+}
+
+fn point(p: P) -> Point2<f64> {
+    Point2::new(p[0], p[1])
+}
+
+/// The loop's points with exact consecutive duplicates (and a closing repeat) removed.
+fn clean_loop(l: &TrimLoop) -> Result<Vec<P>, TrimError> {
+    if l.points.is_empty() {
+        return Err(TrimError::Empty);
+    }
+    let mut points: Vec<P> = Vec::with_capacity(l.points.len());
+    for &p in &l.points {
+        if !is_finite(p) {
+            return Err(TrimError::Misoriented);
+        }
+        let p = [flush(p[0]), flush(p[1])];
+        if points.last() != Some(&p) {
+            points.push(p);
+        }
+    }
+    while points.len() > 1 && points.last() == Some(&points[0]) {
+        points.pop();
+    }
+    if points.len() < 3 {
+        return Err(TrimError::Misoriented);
+    }
+    Ok(points)
+}
+
+/// The signed area (positive counter-clockwise), relative to the first point for precision.
+fn signed_area(points: &[P]) -> f64 {
+    let Some(&o) = points.first() else { return 0.0 };
+    let n = points.len();
+    let twice: f64 = (0..n)
+        .map(|i| {
+            let (a, b) = (points[i], points[(i + 1) % n]);
+            (a[0] - o[0]) * (b[1] - o[1]) - (b[0] - o[0]) * (a[1] - o[1])
+        })
+        .sum();
+    0.5 * twice
+}
+
+/// Twice the signed area of triangle abc.
+fn orient(a: P, b: P, c: P) -> f64 {
     (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
 }
 
 /// Whether the closed segments ab and cd share a point (touching counts).
-fn segments_meet(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> bool {
+fn segments_meet(a: P, b: P, c: P, d: P) -> bool {
     let (d1, d2, d3, d4) = (orient(c, d, a), orient(c, d, b), orient(a, b, c), orient(a, b, d));
-    if ((d1 > 0.0 && d2 < 0.0) || (d1 < 0.0 && d2 > 0.0)) && ((d3 > 0.0 && d4 < 0.0) || (d3 < 0.0 && d4 > 0.0)) {
+    let opposite = |x: f64, y: f64| (x > 0.0 && y < 0.0) || (x < 0.0 && y > 0.0);
+    if opposite(d1, d2) && opposite(d3, d4) {
         return true;
     }
-    let on = |p: [f64; 2], q: [f64; 2], r: [f64; 2], o: f64| {
+    let on = |p: P, q: P, r: P, o: f64| {
         o == 0.0 && r[0] >= p[0].min(q[0]) && r[0] <= p[0].max(q[0]) && r[1] >= p[1].min(q[1]) && r[1] <= p[1].max(q[1])
     };
     on(c, d, a, d1) || on(c, d, b, d2) || on(a, b, c, d3) || on(a, b, d, d4)
 }
 
-fn edges(l: &TrimLoop) -> impl Iterator<Item = ([f64; 2], [f64; 2])> + '_ {
-    let n = l.points.len();
-    (0..n).map(move |i| (l.points[i], l.points[(i + 1) % n]))
+/// Whether edge b→c doubles back along edge a→b.
+fn doubles_back(a: P, b: P, c: P) -> bool {
+    orient(a, b, c) == 0.0 && (a[0] - b[0]) * (c[0] - b[0]) + (a[1] - b[1]) * (c[1] - b[1]) > 0.0
 }
 
-fn self_intersects(l: &TrimLoop) -> bool {
-    let e: Vec<_> = edges(l).collect();
-    let n = e.len();
-    (0..n).any(|i| {
-        (i + 2..n).any(|j| {
-            // Adjacent edges share an endpoint by construction.
-            !(i == 0 && j == n - 1) && segments_meet(e[i].0, e[i].1, e[j].0, e[j].1)
-        })
-    })
-}
-
-fn loops_cross(a: &TrimLoop, b: &TrimLoop) -> bool {
-    edges(a).any(|(p, q)| edges(b).any(|(r, s)| segments_meet(p, q, r, s)))
-}
-
-/// Even-odd point-in-polygon test.
-fn inside(points: &[[f64; 2]], p: [f64; 2]) -> bool {
+/// Even-odd point-in-polygon test (ray towards +u).
+fn inside(points: &[P], p: P) -> bool {
     let mut result = false;
     let n = points.len();
     for i in 0..n {
@@ -174,272 +429,339 @@ fn inside(points: &[[f64; 2]], p: [f64; 2]) -> bool {
     result
 }
 
-/// Inside the retained region: inside an odd number of loops (with valid nesting and
-/// orientation this is GLU's "to the left of every curve").
-fn retained(loops: &[TrimLoop], p: [f64; 2]) -> bool {
-    loops.iter().filter(|l| inside(&l.points, p)).count() % 2 == 1
+fn bbox(points: &[P]) -> [f64; 4] {
+    points.iter().fold([f64::INFINITY, f64::NEG_INFINITY, f64::INFINITY, f64::NEG_INFINITY], |b, p| {
+        [b[0].min(p[0]), b[1].max(p[0]), b[2].min(p[1]), b[3].max(p[1])]
+    })
 }
 
-/// Checks GLU's rules on the loops (inside the domain, simple, not crossing, orientation by
-/// nesting depth).
-fn validate(loops: &[TrimLoop], [u0, u1, v0, v1]: [f64; 4]) -> Result<(), TrimError> {
-    let slack = 1e-9 * (1.0 + (u1 - u0).abs() + (v1 - v0).abs());
-    let in_domain = |p: &[f64; 2]| p[0] >= u0 - slack && p[0] <= u1 + slack && p[1] >= v0 - slack && p[1] <= v1 + slack;
+/// GLU's loop rules; see [`triangulate_with`] for the order of the checks.
+fn validate(loops: &[Vec<P>], [u0, u1, v0, v1]: [f64; 4]) -> Result<(), TrimError> {
+    let slack = 1e-12 * ((u1 - u0) + (v1 - v0));
+    let in_domain = |p: &P| p[0] >= u0 - slack && p[0] <= u1 + slack && p[1] >= v0 - slack && p[1] <= v1 + slack;
     for l in loops {
-        if l.points.len() < 3 || !l.points.iter().all(in_domain) || signed_area(&l.points) == 0.0 || self_intersects(l)
-        {
+        let n = l.len();
+        let spike = (0..n).any(|i| doubles_back(l[i], l[(i + 1) % n], l[(i + 2) % n]));
+        if !l.iter().all(in_domain) || signed_area(l) == 0.0 || spike {
             return Err(TrimError::Misoriented);
         }
     }
-    for (i, a) in loops.iter().enumerate() {
-        if loops[i + 1..].iter().any(|b| loops_cross(a, b)) {
-            return Err(TrimError::Intersecting);
-        }
+    if let Some(e) = find_touching_edges(loops) {
+        return Err(e);
     }
+    let boxes: Vec<[f64; 4]> = loops.iter().map(|l| bbox(l)).collect();
     for (i, l) in loops.iter().enumerate() {
-        let depth = loops.iter().enumerate().filter(|(j, o)| *j != i && inside(&o.points, l.points[0])).count();
-        let ccw = signed_area(&l.points) > 0.0;
-        if ccw != (depth % 2 == 0) {
+        let p = l[0];
+        let depth = (0..loops.len())
+            .filter(|&j| {
+                let b = boxes[j];
+                j != i && p[0] >= b[0] && p[0] <= b[1] && p[1] >= b[2] && p[1] <= b[3] && inside(&loops[j], p)
+            })
+            .count();
+        if (signed_area(l) > 0.0) != (depth % 2 == 0) {
             return Err(TrimError::Misoriented);
         }
     }
     Ok(())
 }
 
-/// The domain rectangle as a counter-clockwise loop through every grid line it crosses
-/// (GLU's `makeBorderTrim`), so that the border is sampled like the interior.
-fn border_loop([u0, u1, v0, v1]: [f64; 4], us: &[f64], vs: &[f64]) -> TrimLoop {
-    let between = |lines: &[f64], a: f64, b: f64| -> Vec<f64> {
-        let (lo, hi) = (a.min(b), a.max(b));
-        let mut v: Vec<f64> = lines.iter().copied().filter(|x| *x > lo && *x < hi).collect();
-        v.sort_by(f64::total_cmp);
-        v
+/// Looks for touching edges with a uniform bucket grid over all loops: non-adjacent edges of one
+/// loop → `Misoriented` (reported first), edges of two loops → `Intersecting`.
+fn find_touching_edges(loops: &[Vec<P>]) -> Option<TrimError> {
+    let segs: Vec<(usize, usize)> =
+        loops.iter().enumerate().flat_map(|(k, l)| (0..l.len()).map(move |i| (k, i))).collect();
+    let ends = |(k, i): (usize, usize)| (loops[k][i], loops[k][(i + 1) % loops[k].len()]);
+    let all = bbox(&loops.iter().flatten().copied().collect::<Vec<_>>());
+    let cells = ((segs.len() as f64).sqrt().ceil() as usize).clamp(1, 2048);
+    let cell_of = |x: f64, lo: f64, hi: f64| {
+        let w = hi - lo;
+        if w > 0.0 {
+            (((x - lo) / w * cells as f64).floor().max(0.0) as usize).min(cells - 1)
+        } else {
+            0
+        }
     };
-    let mut points = vec![[u0, v0]];
-    points.extend(between(us, u0, u1).into_iter().map(|u| [u, v0]));
-    points.push([u1, v0]);
-    points.extend(between(vs, v0, v1).into_iter().map(|v| [u1, v]));
-    points.push([u1, v1]);
-    points.extend(between(us, u0, u1).into_iter().rev().map(|u| [u, v1]));
-    points.push([u0, v1]);
-    points.extend(between(vs, v0, v1).into_iter().rev().map(|v| [u0, v]));
-    TrimLoop { points }
+    let ranges = |s: (usize, usize)| {
+        let (a, b) = ends(s);
+        let b4 = bbox(&[a, b]);
+        let (i0, i1) = (cell_of(b4[0], all[0], all[1]), cell_of(b4[1], all[0], all[1]));
+        let (j0, j1) = (cell_of(b4[2], all[2], all[3]), cell_of(b4[3], all[2], all[3]));
+        (j0..=j1).flat_map(move |j| (i0..=i1).map(move |i| j * cells + i))
+    };
+    // Compressed buckets: counts, prefix sums, fill.
+    let mut start = vec![0usize; cells * cells + 1];
+    for &s in &segs {
+        ranges(s).for_each(|c| start[c + 1] += 1);
+    }
+    for c in 0..cells * cells {
+        start[c + 1] += start[c];
+    }
+    let mut fill = start.clone();
+    let mut bucket = vec![0u32; start[cells * cells]];
+    for (id, &s) in segs.iter().enumerate() {
+        for c in ranges(s) {
+            bucket[fill[c]] = id as u32;
+            fill[c] += 1;
+        }
+    }
+    let mut crossing = false;
+    for c in 0..cells * cells {
+        let ids = &bucket[start[c]..start[c + 1]];
+        for (x, &p) in ids.iter().enumerate() {
+            for &q in &ids[x + 1..] {
+                let (s, t) = (segs[p as usize], segs[q as usize]);
+                let n = loops[s.0].len();
+                let adjacent = s.0 == t.0 && (s.1.abs_diff(t.1) == 1 || s.1.abs_diff(t.1) == n - 1);
+                if adjacent || (crossing && s.0 != t.0) {
+                    continue;
+                }
+                let ((a, b), (d, e)) = (ends(s), ends(t));
+                if segments_meet(a, b, d, e) {
+                    if s.0 == t.0 {
+                        return Some(TrimError::Misoriented);
+                    }
+                    crossing = true;
+                }
+            }
+        }
+    }
+    crossing.then_some(TrimError::Intersecting)
 }
 
-fn distance_to_segment(p: [f64; 2], a: [f64; 2], b: [f64; 2]) -> f64 {
+/// Sorted, deduplicated finite values strictly between `lo` and `hi`.
+fn sorted_lines(values: &[f64], lo: f64, hi: f64) -> Vec<f64> {
+    let mut v: Vec<f64> = values.iter().copied().filter(|x| x.is_finite() && *x > lo && *x < hi).map(flush).collect();
+    v.sort_by(f64::total_cmp);
+    v.dedup();
+    v
+}
+
+/// The domain bounds with the interior grid lines between them.
+fn grid_lines(values: &[f64], lo: f64, hi: f64) -> Vec<f64> {
+    let mut v = vec![lo];
+    v.extend(sorted_lines(values, lo, hi));
+    v.push(hi);
+    v
+}
+
+/// Grid lines in u and v, sorted. For the triangulation the first and last are the domain bounds
+/// and only the lines between them carry grid points.
+struct Grid {
+    u: Vec<f64>,
+    v: Vec<f64>,
+}
+
+/// A crossing of an edge with grid lines: edge parameter t and the point.
+type Cut = (f64, P);
+
+/// Split points closer than this (in grid cells) to a neighbour on the edge are not inserted.
+const MIN_SPLIT: f64 = 0.01;
+
+impl Grid {
+    fn interior_count(&self) -> usize {
+        self.u.len().saturating_sub(2).saturating_mul(self.v.len().saturating_sub(2))
+    }
+
+    /// Drops every other interior line in both directions; false when there is nothing to drop.
+    fn coarsen(&mut self) -> bool {
+        let halve = |lines: &mut Vec<f64>| {
+            if lines.len() > 2 {
+                let last = lines[lines.len() - 1];
+                let keep: Vec<f64> = lines[..lines.len() - 1].iter().step_by(2).copied().chain([last]).collect();
+                *lines = keep;
+            }
+        };
+        let before = self.u.len() + self.v.len();
+        halve(&mut self.u);
+        halve(&mut self.v);
+        self.u.len() + self.v.len() < before
+    }
+
+    /// Lines strictly between a and b.
+    fn between(lines: &[f64], a: f64, b: f64) -> &[f64] {
+        let (lo, hi) = (a.min(b), a.max(b));
+        let i = lines.partition_point(|x| *x <= lo);
+        let j = lines.partition_point(|x| *x < hi).max(i);
+        &lines[i..j]
+    }
+
+    fn count_crossings(&self, loops: &[Vec<P>]) -> usize {
+        loops
+            .iter()
+            .flat_map(|l| (0..l.len()).map(move |i| (l[i], l[(i + 1) % l.len()])))
+            .map(|(a, b)| Self::between(&self.u, a[0], b[0]).len() + Self::between(&self.v, a[1], b[1]).len())
+            .fold(0usize, usize::saturating_add)
+    }
+
+    /// Where edge a→b crosses the grid lines, by increasing t in (0, 1); a crossing of a u line
+    /// and a v line at the same t is one point with both coordinates exact.
+    fn crossings(&self, a: P, b: P) -> Vec<Cut> {
+        let (du, dv) = (b[0] - a[0], b[1] - a[1]);
+        let mut cuts: Vec<(f64, Option<f64>, Option<f64>)> = Vec::new();
+        cuts.extend(Self::between(&self.u, a[0], b[0]).iter().map(|&u| ((u - a[0]) / du, Some(u), None)));
+        cuts.extend(Self::between(&self.v, a[1], b[1]).iter().map(|&v| ((v - a[1]) / dv, None, Some(v))));
+        cuts.retain(|c| c.0 > 0.0 && c.0 < 1.0);
+        cuts.sort_by(|x, y| x.0.total_cmp(&y.0));
+        let mut out: Vec<(f64, Option<f64>, Option<f64>)> = Vec::with_capacity(cuts.len());
+        for c in cuts {
+            match out.last_mut() {
+                Some(last) if c.0 - last.0 <= 1e-12 => {
+                    last.1 = last.1.or(c.1);
+                    last.2 = last.2.or(c.2);
+                }
+                _ => out.push(c),
+            }
+        }
+        out.into_iter().map(|(t, u, v)| (t, [u.unwrap_or(a[0] + t * du), v.unwrap_or(a[1] + t * dv)])).collect()
+    }
+
+    /// Fractional line index of x: i + (x - lines[i]) / (lines[i+1] - lines[i]).
+    fn index(lines: &[f64], x: f64) -> f64 {
+        if lines.len() < 2 {
+            return 0.0;
+        }
+        let i = lines.partition_point(|l| *l <= x).clamp(1, lines.len() - 1) - 1;
+        let (lo, hi) = (lines[i], lines[i + 1]);
+        i as f64 + ((x - lo) / (hi - lo)).clamp(0.0, 1.0)
+    }
+
+    /// A point in grid-index space, where grid points are the integer lattice.
+    fn cell_coords(&self, p: P) -> P {
+        [Self::index(&self.u, p[0]), Self::index(&self.v, p[1])]
+    }
+
+    /// The split points worth inserting: not within [`MIN_SPLIT`] cells of the previous vertex
+    /// or of b.
+    fn thin<'a>(&'a self, a: P, b: P, cuts: &'a [Cut]) -> impl Iterator<Item = P> + 'a {
+        let far = |p: P, q: P| {
+            let (x, y) = (self.cell_coords(p), self.cell_coords(q));
+            (x[0] - y[0]).abs().max((x[1] - y[1]).abs()) >= MIN_SPLIT
+        };
+        let mut prev = a;
+        cuts.iter().filter_map(move |&(_, p)| {
+            let keep = far(prev, p) && far(p, b);
+            if keep {
+                prev = p;
+            }
+            keep.then_some(p)
+        })
+    }
+
+    /// Marks the interior grid points within `clearance` cells of edge a→b. Between
+    /// consecutive cuts the edge lies in one grid cell, where the map to cell coordinates is
+    /// affine; only that cell's corners can be closer than one cell.
+    fn block_near(&self, a: P, b: P, cuts: &[Cut], clearance: f64, blocked: &mut [bool]) {
+        let (nu, nv) = (self.u.len(), self.v.len());
+        if nu < 3 || nv < 3 {
+            return;
+        }
+        let mut prev = self.cell_coords(a);
+        for q in cuts.iter().map(|c| c.1).chain([b]) {
+            let next = self.cell_coords(q);
+            let mid = midpoint(prev, next);
+            let ci = (mid[0].floor().max(0.0) as usize).min(nu - 2);
+            let cj = (mid[1].floor().max(0.0) as usize).min(nv - 2);
+            for (i, j) in [(ci, cj), (ci + 1, cj), (ci, cj + 1), (ci + 1, cj + 1)] {
+                let interior = i >= 1 && i <= nu - 2 && j >= 1 && j <= nv - 2;
+                if interior && distance_to_segment([i as f64, j as f64], prev, next) < clearance {
+                    blocked[(j - 1) * (nu - 2) + (i - 1)] = true;
+                }
+            }
+            prev = next;
+        }
+    }
+
+    /// Interior grid points inside the retained region (even-odd over all loops, row by row
+    /// with sorted crossings) and not blocked.
+    fn retained_points<'a>(&'a self, loops: &[Vec<P>], blocked: &'a [bool]) -> impl Iterator<Item = P> + 'a {
+        let (nu, nv) = (self.u.len(), self.v.len());
+        let rows = &self.v[1..nv.saturating_sub(1).max(1)];
+        let mut hits: Vec<(usize, f64)> = Vec::new();
+        for l in loops {
+            for i in 0..l.len() {
+                let (a, b) = (l[i], l[(i + 1) % l.len()]);
+                // Rows with min(a.v, b.v) <= v < max(a.v, b.v): the half-open rule of `inside`.
+                let (lo, hi) = (a[1].min(b[1]), a[1].max(b[1]));
+                let (j0, j1) = (rows.partition_point(|v| *v < lo), rows.partition_point(|v| *v < hi));
+                for (j, &v) in rows.iter().enumerate().take(j1).skip(j0) {
+                    hits.push((j, a[0] + (v - a[1]) / (b[1] - a[1]) * (b[0] - a[0])));
+                }
+            }
+        }
+        hits.sort_by(|x, y| x.0.cmp(&y.0).then(x.1.total_cmp(&y.1)));
+        let cols = &self.u[1..nu.saturating_sub(1).max(1)];
+        let mut out = Vec::new();
+        let mut k = 0;
+        for (j, &v) in rows.iter().enumerate() {
+            let row_start = k;
+            while k < hits.len() && hits[k].0 == j {
+                k += 1;
+            }
+            let xs = &hits[row_start..k];
+            let mut left = 0;
+            for (i, &u) in cols.iter().enumerate() {
+                while left < xs.len() && xs[left].1 <= u {
+                    left += 1;
+                }
+                if (xs.len() - left) % 2 == 1 && !blocked[j * cols.len() + i] {
+                    out.push([u, v]);
+                }
+            }
+        }
+        out.into_iter()
+    }
+}
+
+fn distance_to_segment(p: P, a: P, b: P) -> f64 {
     let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
     let len2 = dx * dx + dy * dy;
     let t = if len2 > 0.0 { (((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / len2).clamp(0.0, 1.0) } else { 0.0 };
-    ((p[0] - a[0] - t * dx).powi(2) + (p[1] - a[1] - t * dy).powi(2)).sqrt()
+    (p[0] - a[0] - t * dx).hypot(p[1] - a[1] - t * dy)
 }
 
-/// Triangulates the region the loops retain within `domain` = [u0, u1, v0, v1], with the grid
-/// points `us` × `vs` that lie inside it (and not within a quarter of the grid spacing of a
-/// loop, to avoid slivers). No loops means the whole domain.
-///
-/// ```
-/// use gleval::tess::trim::{triangulate, TrimLoop};
-/// // A square hole (clockwise) in the unit square.
-/// let hole = TrimLoop { points: vec![[0.25, 0.25], [0.25, 0.75], [0.75, 0.75], [0.75, 0.25]] };
-/// let outer = TrimLoop { points: vec![[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]] };
-/// let grid = [0.0, 0.5, 1.0];
-/// let mesh = triangulate(&[outer, hole], [0.0, 1.0, 0.0, 1.0], &grid, &grid).unwrap();
-/// let area: f64 = mesh.triangles.iter().map(|t| {
-///     let [a, b, c] = t.map(|i| mesh.points[i as usize]);
-///     0.5 * ((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]))
-/// }).sum();
-/// assert!((area - 0.75).abs() < 1e-12);
-/// ```
-pub fn triangulate(loops: &[TrimLoop], domain: [f64; 4], us: &[f64], vs: &[f64]) -> Result<TrimMesh, TrimError> {
-    if !domain.iter().all(|c| c.is_finite()) || domain[0] >= domain[1] || domain[2] >= domain[3] {
-        return Err(TrimError::Misoriented);
+/// The triangles on the retained side of the constraints: a flood fill from the outer face,
+/// toggling parity at every constraint edge; odd parity is inside an odd number of loops.
+/// Unused vertices are dropped.
+fn retained_mesh(cdt: &ConstrainedDelaunayTriangulation<Point2<f64>>) -> TrimMesh {
+    let mut parity: Vec<Option<bool>> = vec![None; cdt.num_all_faces()];
+    let mut stack = Vec::new();
+    for e in cdt.convex_hull() {
+        // Whichever side of a hull edge is not the outer face.
+        if let Some(f) = e.face().as_inner().or_else(|| e.rev().face().as_inner()) {
+            let p = e.as_undirected().data().is_constraint_edge();
+            if parity[f.fix().index()].is_none() {
+                parity[f.fix().index()] = Some(p);
+                stack.push(f);
+            }
+        }
     }
-    let loops: Vec<TrimLoop> = if loops.is_empty() { vec![border_loop(domain, us, vs)] } else { loops.to_vec() };
-    validate(&loops, domain)?;
-    let mut cdt: ConstrainedDelaunayTriangulation<Point2<f64>> = ConstrainedDelaunayTriangulation::new();
-    for l in &loops {
-        let handles: Vec<FixedVertexHandle> = l
-            .points
-            .iter()
-            .map(|p| cdt.insert(Point2::new(p[0], p[1])).map_err(|_| TrimError::Misoriented))
-            .collect::<Result<_, _>>()?;
-        for i in 0..handles.len() {
-            let (a, b) = (handles[i], handles[(i + 1) % handles.len()]);
-            if a != b {
-                if !cdt.can_add_constraint(a, b) {
-                    return Err(TrimError::Intersecting);
+    while let Some(f) = stack.pop() {
+        let p = parity[f.fix().index()].unwrap_or(false);
+        for e in f.adjacent_edges() {
+            if let Some(g) = e.rev().face().as_inner() {
+                if parity[g.fix().index()].is_none() {
+                    parity[g.fix().index()] = Some(p ^ e.as_undirected().data().is_constraint_edge());
+                    stack.push(g);
                 }
-                cdt.add_constraint(a, b);
             }
         }
     }
-    insert_grid_points(&mut cdt, &loops, domain, us, vs)?;
-    let points: Vec<[f64; 2]> = cdt.vertices().map(|v| [v.position().x, v.position().y]).collect();
-    let triangles = cdt
-        .inner_faces()
-        .filter_map(|f| {
-            let [a, b, c] = f.positions();
-            let centroid = [(a.x + b.x + c.x) / 3.0, (a.y + b.y + c.y) / 3.0];
-            retained(&loops, centroid).then(|| f.vertices().map(|v| v.fix().index() as u32))
-        })
-        .collect();
-    Ok(TrimMesh { points, triangles })
-}
-
-/// Inserts the interior grid points of the retained region.
-fn insert_grid_points(
-    cdt: &mut ConstrainedDelaunayTriangulation<Point2<f64>>,
-    loops: &[TrimLoop],
-    [u0, u1, v0, v1]: [f64; 4],
-    us: &[f64],
-    vs: &[f64],
-) -> Result<(), TrimError> {
-    if us.len().saturating_mul(vs.len()) > MAX_GRID_POINTS {
-        return Err(TrimError::Misoriented);
-    }
-    let spacing = |lines: &[f64]| {
-        lines.windows(2).map(|w| (w[1] - w[0]).abs()).filter(|d| *d > 0.0).fold(f64::INFINITY, f64::min)
-    };
-    let keep_off = 0.25 * spacing(us).min(spacing(vs)).min((u1 - u0).max(v1 - v0));
-    let segments: Vec<([f64; 2], [f64; 2])> = loops.iter().flat_map(edges).collect();
-    for &v in vs.iter().filter(|v| **v > v0 && **v < v1) {
-        for &u in us.iter().filter(|u| **u > u0 && **u < u1) {
-            let p = [u, v];
-            if !retained(loops, p) || segments.iter().any(|(a, b)| distance_to_segment(p, *a, *b) < keep_off) {
-                continue;
+    let mut remap = vec![u32::MAX; cdt.num_vertices()];
+    let mut mesh = TrimMesh::default();
+    for f in cdt.inner_faces().filter(|f| parity[f.fix().index()] == Some(true)) {
+        let tri = f.vertices().map(|v| {
+            let slot = &mut remap[v.fix().index()];
+            if *slot == u32::MAX {
+                *slot = mesh.points.len() as u32;
+                mesh.points.push([v.position().x, v.position().y]);
             }
-            cdt.insert(Point2::new(u, v)).map_err(|_| TrimError::Misoriented)?;
-        }
+            *slot
+        });
+        mesh.triangles.push(tri);
     }
-    Ok(())
+    mesh
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn area(mesh: &TrimMesh) -> f64 {
-        mesh.triangles
-            .iter()
-            .map(|t| {
-                let [a, b, c] = t.map(|i| mesh.points[i as usize]);
-                0.5 * orient(a, b, c)
-            })
-            .sum()
-    }
-
-    fn circle(cx: f64, cy: f64, r: f64, n: usize, ccw: bool) -> TrimLoop {
-        let mut points: Vec<[f64; 2]> = (0..n)
-            .map(|i| {
-                let a = std::f64::consts::TAU * i as f64 / n as f64;
-                [cx + r * a.cos(), cy + r * a.sin()]
-            })
-            .collect();
-        if !ccw {
-            points.reverse();
-        }
-        TrimLoop { points }
-    }
-
-    fn square(lo: f64, hi: f64, ccw: bool) -> TrimLoop {
-        let mut points = vec![[lo, lo], [hi, lo], [hi, hi], [lo, hi]];
-        if !ccw {
-            points.reverse();
-        }
-        TrimLoop { points }
-    }
-
-    fn grid(n: usize) -> Vec<f64> {
-        (0..=n).map(|i| i as f64 / n as f64).collect()
-    }
-
-    const UNIT: [f64; 4] = [0.0, 1.0, 0.0, 1.0];
-
-    #[test]
-    fn no_loops_is_the_whole_domain() {
-        let mesh = triangulate(&[], [0.0, 2.0, -1.0, 1.0], &[0.0, 0.5, 1.0, 1.5, 2.0], &[-1.0, 0.0, 1.0]).unwrap();
-        assert!((area(&mesh) - 4.0).abs() < 1e-12);
-        assert_eq!(mesh.points.len(), 15, "every grid point, border included");
-    }
-
-    #[test]
-    fn hole_area_is_outer_minus_polygon_area() {
-        let hole = circle(0.5, 0.5, 0.3, 64, false);
-        let want = 1.0 - 0.5 * signed_area(&hole.points).abs();
-        let mesh = triangulate(&[square(0.0, 1.0, true), hole], UNIT, &grid(20), &grid(20)).unwrap();
-        assert!((area(&mesh) - want).abs() < 1e-12, "{} vs {want}", area(&mesh));
-        assert!(mesh.triangles.iter().all(|t| {
-            let [a, b, c] = t.map(|i| mesh.points[i as usize]);
-            orient(a, b, c) > 0.0
-        }));
-    }
-
-    #[test]
-    fn constraint_edges_are_respected() {
-        let hole = circle(0.5, 0.5, 0.3, 16, false);
-        let mesh = triangulate(&[square(0.0, 1.0, true), hole.clone()], UNIT, &grid(10), &grid(10)).unwrap();
-        for (a, b) in edges(&hole) {
-            let found = mesh.triangles.iter().any(|t| {
-                let p = t.map(|i| mesh.points[i as usize]);
-                (0..3).any(|k| (p[k] == a && p[(k + 1) % 3] == b) || (p[k] == b && p[(k + 1) % 3] == a))
-            });
-            assert!(found, "edge {a:?}-{b:?} missing");
-        }
-    }
-
-    #[test]
-    fn nested_island_is_kept() {
-        let loops = [square(0.0, 1.0, true), square(0.2, 0.8, false), square(0.4, 0.6, true)];
-        let mesh = triangulate(&loops, UNIT, &grid(10), &grid(10)).unwrap();
-        assert!((area(&mesh) - (1.0 - 0.36 + 0.04)).abs() < 1e-12);
-    }
-
-    #[test]
-    fn glu_errors() {
-        assert_eq!(triangulate(&[square(0.0, 1.0, false)], UNIT, &grid(4), &grid(4)), Err(TrimError::Misoriented));
-        let eight = TrimLoop { points: vec![[0.1, 0.1], [0.9, 0.9], [0.9, 0.1], [0.1, 0.9]] };
-        assert_eq!(triangulate(&[eight], UNIT, &grid(4), &grid(4)), Err(TrimError::Misoriented));
-        let overlapping = [square(0.0, 1.0, true), square(0.1, 0.6, false), square(0.4, 0.9, false)];
-        assert_eq!(triangulate(&overlapping, UNIT, &grid(4), &grid(4)), Err(TrimError::Intersecting));
-        let outside = [square(-0.5, 1.0, true)];
-        assert_eq!(triangulate(&outside, UNIT, &grid(4), &grid(4)), Err(TrimError::Misoriented));
-        assert_eq!(TrimError::Unconnected.glu_number(), 31);
-        assert_eq!(TrimError::Intersecting.glu_number(), 29);
-    }
-
-    #[test]
-    fn joining_snaps_within_glu_tolerance_only() {
-        let a = vec![[0.0, 0.0], [1.0, 0.0]];
-        let b = vec![[1.0, 5e-6], [1.0, 1.0], [0.0, 1.0]];
-        let c = vec![[0.0, 1.0], [0.0, 0.0]];
-        let l = join_curves(&[a.clone(), b, c.clone()]).unwrap();
-        assert_eq!(l.points, vec![[0.0, 0.0], [1.0, 2.5e-6], [1.0, 1.0], [0.0, 1.0]]);
-        let gap = vec![[1.0, 1e-3], [1.0, 1.0], [0.0, 1.0]];
-        assert_eq!(join_curves(&[a, gap, c]), Err(TrimError::Unconnected));
-        assert_eq!(join_curves(&[]), Err(TrimError::Empty));
-        assert_eq!(join_curves(&[vec![[0.0, 0.0], [1.0, 0.0], [0.5, 0.5]]]), Err(TrimError::Unconnected));
-    }
-
-    #[test]
-    fn bad_numbers_are_errors_not_panics() {
-        let nan = TrimLoop { points: vec![[f64::NAN, 0.0], [1.0, 0.0], [0.0, 1.0]] };
-        assert!(triangulate(&[nan], UNIT, &grid(2), &grid(2)).is_err());
-        assert!(triangulate(&[], [0.0, 0.0, 0.0, 1.0], &grid(2), &grid(2)).is_err());
-        let duplicate = TrimLoop { points: vec![[0.0, 0.0], [1.0, 0.0], [1.0, 0.0], [0.0, 1.0]] };
-        let _ = triangulate(&[duplicate], UNIT, &grid(2), &grid(2));
-    }
-
-    proptest::proptest! {
-        #[test]
-        fn star_holes_never_panic_and_areas_match(radii in proptest::collection::vec(0.05f64..0.35, 3..40)) {
-            let n = radii.len();
-            let hole: Vec<[f64; 2]> = (0..n).rev().map(|i| {
-                let a = std::f64::consts::TAU * i as f64 / n as f64;
-                [0.5 + radii[i] * a.cos(), 0.5 + radii[i] * a.sin()]
-            }).collect();
-            let want = 1.0 - 0.5 * signed_area(&hole).abs();
-            let mesh = triangulate(&[square(0.0, 1.0, true), TrimLoop { points: hole }], UNIT, &grid(16), &grid(16)).unwrap();
-            proptest::prop_assert!((area(&mesh) - want).abs() < 1e-9);
-        }
-    }
-}
+#[path = "trim_tests.rs"]
+mod tests;
