@@ -19,6 +19,8 @@ mod bezsurf;
 mod bsurf;
 #[path = "colormap.rs"]
 mod colormap;
+#[path = "flattwoviewports.rs"]
+mod flattwoviewports;
 #[path = "linespoints.rs"]
 mod linespoints;
 #[path = "outline.rs"]
@@ -35,7 +37,7 @@ mod trimmed;
 /// A built-in program: its name and how to build it.
 type Program = (&'static str, fn() -> App);
 
-const PROGRAMS: [Program; 11] = [
+const PROGRAMS: [Program; 12] = [
     ("bezcurve", bezcurve::app),
     ("bezsurf", bezsurf::app),
     ("bcurve", bcurve::app),
@@ -44,6 +46,7 @@ const PROGRAMS: [Program; 11] = [
     ("rationalmap", rationalmap::app),
     ("linespoints", linespoints::app),
     ("specular", specular::app),
+    ("flattwoviewports", flattwoviewports::app),
     ("trimmed", trimmed::app),
     ("rational", rational::app),
     ("outline", outline::app),
