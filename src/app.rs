@@ -87,8 +87,9 @@ impl App {
         self
     }
 
-    /// `glutKeyboardFunc`: called with the key's character and the mouse position (0, 0 here)
-    /// when a key is pressed in the window; the window then redraws.
+    /// `glutKeyboardFunc`: called with the character typed and the mouse position in window
+    /// pixels (origin top left) when a key is pressed in the window; the window then redraws.
+    /// Escape closes the window, as the textbook programs do.
     #[must_use]
     pub fn keyboard(mut self, f: impl FnMut(&mut Gl, char, i32, i32) + 'static) -> Self {
         self.keyboard = Some(Box::new(f));
@@ -108,9 +109,9 @@ impl App {
     }
 
     #[cfg(feature = "window")]
-    pub(crate) fn run_keyboard(&mut self, gl: &mut Gl, key: char) {
+    pub(crate) fn run_keyboard(&mut self, gl: &mut Gl, key: char, x: i32, y: i32) {
         if let Some(keyboard) = &mut self.keyboard {
-            keyboard(gl, key, 0, 0);
+            keyboard(gl, key, x, y);
         }
     }
 
@@ -138,19 +139,26 @@ impl App {
     /// Runs init, reshape and display once on a fresh context and returns what was drawn.
     pub fn record_frame(&mut self) -> Gl {
         let mut gl = Gl::new(self.width, self.height);
-        if let Some(init) = &mut self.init {
-            init(&mut gl);
-        }
+        self.run_init(&mut gl);
         self.draw_into(&mut gl, self.width, self.height);
         gl
     }
 
     pub(crate) fn draw_into(&mut self, gl: &mut Gl, width: i32, height: i32) {
+        self.run_reshape(gl, width, height);
+        self.run_display(gl);
+    }
+
+    /// The window now has this size: the reshape callback, or GLUT's default viewport.
+    pub(crate) fn run_reshape(&mut self, gl: &mut Gl, width: i32, height: i32) {
         gl.set_window_size(width, height);
         match &mut self.reshape {
             Some(reshape) => reshape(gl, width, height),
             None => gl.viewport(0, 0, width, height),
         }
+    }
+
+    pub(crate) fn run_display(&mut self, gl: &mut Gl) {
         if let Some(display) = &mut self.display {
             display(gl);
         }
@@ -169,9 +177,7 @@ impl App {
     pub fn median_frame_time(&mut self, frames: usize) -> Result<std::time::Duration, RenderError> {
         let mut renderer = Renderer::new()?;
         let mut gl = Gl::new(self.width, self.height);
-        if let Some(init) = &mut self.init {
-            init(&mut gl);
-        }
+        self.run_init(&mut gl);
         let mut times = Vec::with_capacity(frames.max(1));
         self.draw_into(&mut gl, self.width, self.height);
         renderer.render_frame(&gl.take_frame(), self.width as u32, self.height as u32)?;

@@ -1,12 +1,13 @@
 //! The windowed mode of [`App`]: a winit 0.30 window with a wgpu surface, redrawn like a GLUT
-//! window (reshape on resize, display on every redraw). The [`Gl`] context lives as long as the
-//! window, so GL state set in `init` or in earlier frames persists.
+//! window (reshape when the size changes, display on every redraw). The [`Gl`] context lives as
+//! long as the window, so GL state set in `init` or in earlier frames persists; only what a
+//! frame draws is taken from it each time.
 
 use crate::app::App;
 use crate::gl::Gl;
-use crate::render::{assemble, Renderer};
+use crate::render::{assemble, RenderError, Renderer};
 use std::error::Error;
-use std::sync::Arc;
+use std::sync::{Arc, Mutex};
 use winit::application::ApplicationHandler;
 use winit::dpi::PhysicalSize;
 use winit::event::{ElementState, KeyEvent, WindowEvent};
@@ -16,14 +17,15 @@ use winit::window::{Window, WindowId};
 
 /// Opens the window and runs until it is closed (or Escape is pressed).
 pub(crate) fn run(app: App) -> Result<(), Box<dyn Error>> {
+    const USE_PNG: &str = "run the program with --png PATH to render one frame to a PNG file instead";
     let has_display = ["DISPLAY", "WAYLAND_DISPLAY"].iter().any(|v| std::env::var_os(v).is_some_and(|s| !s.is_empty()));
     if !has_display {
-        return Err("no display to open a window on (neither DISPLAY nor WAYLAND_DISPLAY is set); \
-                    run with --png PATH to render one frame to a file instead"
-            .into());
+        return Err(
+            format!("no display to open a window on (neither DISPLAY nor WAYLAND_DISPLAY is set); {USE_PNG}").into()
+        );
     }
-    let event_loop = EventLoop::new()?;
-    let mut state = WindowState { app, gl: None, gpu: None, error: None };
+    let event_loop = EventLoop::new().map_err(|e| format!("could not connect to the display ({e}); {USE_PNG}"))?;
+    let mut state = WindowState { app, gl: None, gpu: None, size: None, cursor: (0, 0), error: None };
     event_loop.run_app(&mut state)?;
     match state.error {
         Some(e) => Err(e.into()),
@@ -31,18 +33,25 @@ pub(crate) fn run(app: App) -> Result<(), Box<dyn Error>> {
     }
 }
 
+/// The window and what draws into it.
 struct Gpu {
     window: Arc<Window>,
     surface: wgpu::Surface<'static>,
     config: wgpu::SurfaceConfiguration,
     renderer: Renderer,
     depth: wgpu::TextureView,
+    /// Set by wgpu when the device is lost.
+    lost: Arc<Mutex<Option<String>>>,
 }
 
 struct WindowState {
     app: App,
     gl: Option<Gl>,
     gpu: Option<Gpu>,
+    /// The size the reshape callback last saw.
+    size: Option<(u32, u32)>,
+    /// The mouse position in window pixels (origin top left, as GLUT reports it).
+    cursor: (i32, i32),
     error: Option<String>,
 }
 
@@ -67,24 +76,38 @@ impl Gpu {
     /// Vulkan first, then GL (or what `WGPU_BACKEND` says).
     fn new(event_loop: &ActiveEventLoop, app: &App) -> Result<Self, String> {
         let (w, h) = app.size();
-        let attributes =
-            Window::default_attributes().with_title(app.title()).with_inner_size(PhysicalSize::new(w as u32, h as u32));
-        let window = Arc::new(event_loop.create_window(attributes).map_err(|e| e.to_string())?);
+        let attributes = Window::default_attributes()
+            .with_title(app.title())
+            .with_inner_size(PhysicalSize::new(w.max(1) as u32, h.max(1) as u32));
+        let window =
+            Arc::new(event_loop.create_window(attributes).map_err(|e| format!("could not open a window: {e}"))?);
         let mut tried = Vec::new();
         for backends in crate::render::backend_order() {
-            let desc = wgpu::InstanceDescriptor { backends, ..wgpu::InstanceDescriptor::new_without_display_handle() };
+            // EGL (the GL backend) must know the display at instance creation to present to it.
+            let desc = wgpu::InstanceDescriptor { backends, ..wgpu::InstanceDescriptor::new_without_display_handle() }
+                .with_display_handle(Box::new(Arc::clone(&window)));
             let instance = wgpu::Instance::new(desc);
-            let Ok(surface) = instance.create_surface(Arc::clone(&window)) else {
-                tried.push(format!("{backends:?}: no surface"));
-                continue;
+            let surface = match instance.create_surface(Arc::clone(&window)) {
+                Ok(surface) => surface,
+                Err(e) => {
+                    tried.push(format!("{backends:?}: no surface ({e})"));
+                    continue;
+                }
             };
             let options = wgpu::RequestAdapterOptions { compatible_surface: Some(&surface), ..Default::default() };
-            match pollster::block_on(instance.request_adapter(&options)) {
-                Ok(adapter) => return Self::configure(window, surface, instance, adapter),
+            let adapter = match pollster::block_on(instance.request_adapter(&options)) {
+                Ok(adapter) => adapter,
+                Err(e) => {
+                    tried.push(format!("{backends:?}: {e}"));
+                    continue;
+                }
+            };
+            match Self::configure(Arc::clone(&window), surface, instance, adapter) {
+                Ok(gpu) => return Ok(gpu),
                 Err(e) => tried.push(format!("{backends:?}: {e}")),
             }
         }
-        Err(crate::render::RenderError::NoAdapter(tried.join("; ")).to_string())
+        Err(RenderError::NoAdapter(format!("none can present to the window: {}", tried.join("; "))).to_string())
     }
 
     fn configure(
@@ -95,33 +118,58 @@ impl Gpu {
     ) -> Result<Self, String> {
         let size = window.inner_size();
         let caps = surface.get_capabilities(&adapter);
-        // GL writes byte values as they are: prefer a format without sRGB encoding.
-        let format = caps
-            .formats
-            .iter()
-            .copied()
-            .find(|f| !f.is_srgb())
-            .or(caps.formats.first().copied())
-            .ok_or("surface has no formats")?;
+        // GL writes byte values as they are: prefer 8-bit formats without sRGB encoding.
+        let preferred = [wgpu::TextureFormat::Bgra8Unorm, wgpu::TextureFormat::Rgba8Unorm];
+        let format = preferred
+            .into_iter()
+            .find(|f| caps.formats.contains(f))
+            .or_else(|| caps.formats.iter().copied().find(|f| !f.is_srgb()))
+            .or_else(|| caps.formats.first().copied())
+            .ok_or("the surface offers no formats")?;
         let mut config = surface
             .get_default_config(&adapter, size.width.max(1), size.height.max(1))
             .ok_or("the adapter cannot present to this window")?;
         config.format = format;
         config.present_mode = wgpu::PresentMode::Fifo;
         let renderer = Renderer::with_adapter(instance, adapter).map_err(|e| e.to_string())?;
+        let lost = Arc::new(Mutex::new(None));
+        let sink = Arc::clone(&lost);
+        renderer.device.set_device_lost_callback(move |reason, message| {
+            if let Ok(mut slot) = sink.lock() {
+                slot.get_or_insert(format!("the GPU device was lost ({reason:?}): {message}"));
+            }
+        });
         surface.configure(&renderer.device, &config);
         let depth = depth_view(&renderer.device, config.width, config.height);
-        Ok(Self { window, surface, config, renderer, depth })
+        Ok(Self { window, surface, config, renderer, depth, lost })
     }
 
+    /// Reconfigures the surface and depth buffer for a new size (not while minimised).
     fn resize(&mut self, size: PhysicalSize<u32>) {
         if size.width == 0 || size.height == 0 {
             return;
         }
+        if (size.width, size.height) != (self.config.width, self.config.height) {
+            self.depth = depth_view(&self.renderer.device, size.width, size.height);
+        }
         self.config.width = size.width;
         self.config.height = size.height;
         self.surface.configure(&self.renderer.device, &self.config);
-        self.depth = depth_view(&self.renderer.device, size.width, size.height);
+    }
+
+    /// Makes a new surface on the window after the old one was lost.
+    fn recreate_surface(&mut self) -> Result<(), String> {
+        self.surface = self
+            .renderer
+            .instance
+            .create_surface(Arc::clone(&self.window))
+            .map_err(|e| format!("could not recreate the lost window surface: {e}"))?;
+        self.surface.configure(&self.renderer.device, &self.config);
+        Ok(())
+    }
+
+    fn lost(&self) -> Option<String> {
+        self.lost.lock().ok().and_then(|slot| slot.clone())
     }
 }
 
@@ -131,31 +179,67 @@ impl WindowState {
         event_loop.exit();
     }
 
-    /// GLUT's redraw: reshape to the current size, display, then draw what was recorded.
+    /// GLUT's redraw: reshape if the size changed, display, then draw what was recorded.
     fn redraw(&mut self, event_loop: &ActiveEventLoop) {
         let (Some(gpu), Some(gl)) = (self.gpu.as_mut(), self.gl.as_mut()) else { return };
+        if let Some(e) = gpu.lost() {
+            return self.fail(event_loop, e);
+        }
         let size = gpu.window.inner_size();
         if size.width == 0 || size.height == 0 {
-            return; // minimised
+            return; // minimised: nothing to draw into
         }
-        self.app.draw_into(gl, size.width as i32, size.height as i32);
-        let list = assemble(&gl.take_frame());
+        if (size.width, size.height) != (gpu.config.width, gpu.config.height) {
+            gpu.resize(size);
+        }
         let frame = match gpu.surface.get_current_texture() {
             wgpu::CurrentSurfaceTexture::Success(f) | wgpu::CurrentSurfaceTexture::Suboptimal(f) => f,
             wgpu::CurrentSurfaceTexture::Timeout | wgpu::CurrentSurfaceTexture::Occluded => return,
-            wgpu::CurrentSurfaceTexture::Outdated | wgpu::CurrentSurfaceTexture::Lost => {
+            wgpu::CurrentSurfaceTexture::Outdated => {
                 gpu.resize(size);
                 gpu.window.request_redraw();
                 return;
             }
-            other => return self.fail(event_loop, format!("the window surface failed: {other:?}")),
+            wgpu::CurrentSurfaceTexture::Lost => {
+                if let Err(e) = gpu.recreate_surface() {
+                    return self.fail(event_loop, e);
+                }
+                gpu.window.request_redraw();
+                return;
+            }
+            other => {
+                let why = gpu.lost().unwrap_or_else(|| format!("{other:?}"));
+                return self.fail(event_loop, format!("the window surface failed: {why}"));
+            }
         };
+        let (width, height) = (size.width, size.height);
+        if self.size != Some((width, height)) {
+            self.size = Some((width, height));
+            self.app.run_reshape(gl, width as i32, height as i32);
+        }
+        self.app.run_display(gl);
+        let list = assemble(&gl.take_frame());
         let view = frame.texture.create_view(&Default::default());
         let mut encoder = gpu.renderer.device.create_command_encoder(&Default::default());
-        let format = gpu.config.format;
-        gpu.renderer.encode(&list, &mut encoder, &view, &gpu.depth, (size.width, size.height), format);
+        gpu.renderer.encode(&list, &mut encoder, &view, &gpu.depth, (width, height), gpu.config.format);
         gpu.renderer.queue.submit([encoder.finish()]);
+        gpu.window.pre_present_notify();
         gpu.renderer.queue.present(frame);
+    }
+
+    /// A key press: Escape closes the window; a key that types text goes to the keyboard callback.
+    fn key(&mut self, event_loop: &ActiveEventLoop, event: &KeyEvent) {
+        if event.logical_key == Key::Named(NamedKey::Escape) {
+            return event_loop.exit();
+        }
+        // GLUT's keyboard callback gets the character typed (Enter is '\r', Backspace '\b').
+        let key = event.text.as_ref().and_then(|t| t.chars().next());
+        if let (Some(key), Some(gl)) = (key, self.gl.as_mut()) {
+            self.app.run_keyboard(gl, key, self.cursor.0, self.cursor.1);
+            if let Some(gpu) = &self.gpu {
+                gpu.window.request_redraw();
+            }
+        }
     }
 }
 
@@ -167,7 +251,7 @@ impl ApplicationHandler for WindowState {
         match Gpu::new(event_loop, &self.app) {
             Ok(gpu) => {
                 let size = gpu.window.inner_size();
-                let mut gl = Gl::new(size.width as i32, size.height as i32);
+                let mut gl = Gl::new(size.width.max(1) as i32, size.height.max(1) as i32);
                 self.app.run_init(&mut gl);
                 self.gl = Some(gl);
                 gpu.window.request_redraw();
@@ -179,7 +263,7 @@ impl ApplicationHandler for WindowState {
 
     fn window_event(&mut self, event_loop: &ActiveEventLoop, _id: WindowId, event: WindowEvent) {
         match event {
-            WindowEvent::CloseRequested => event_loop.exit(),
+            WindowEvent::CloseRequested | WindowEvent::Destroyed => event_loop.exit(),
             WindowEvent::Resized(size) => {
                 if let Some(gpu) = self.gpu.as_mut() {
                     gpu.resize(size);
@@ -187,22 +271,18 @@ impl ApplicationHandler for WindowState {
                 }
             }
             WindowEvent::RedrawRequested => self.redraw(event_loop),
-            WindowEvent::KeyboardInput {
-                event: KeyEvent { logical_key, state: ElementState::Pressed, .. }, ..
-            } => {
-                if logical_key == Key::Named(NamedKey::Escape) {
-                    return event_loop.exit();
-                }
-                if let (Key::Character(text), Some(gl)) = (&logical_key, self.gl.as_mut()) {
-                    if let Some(c) = text.chars().next() {
-                        self.app.run_keyboard(gl, c);
-                    }
-                }
-                if let Some(gpu) = &self.gpu {
-                    gpu.window.request_redraw();
-                }
+            WindowEvent::CursorMoved { position, .. } => {
+                self.cursor = (position.x as i32, position.y as i32);
+            }
+            WindowEvent::KeyboardInput { event, .. } if event.state == ElementState::Pressed => {
+                self.key(event_loop, &event);
             }
             _ => {}
         }
+    }
+
+    fn exiting(&mut self, _event_loop: &ActiveEventLoop) {
+        // Drop the surface before the window it was made from.
+        self.gpu = None;
     }
 }
