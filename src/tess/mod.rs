@@ -6,6 +6,8 @@
 #[cfg(feature = "gpu")]
 pub mod gpu;
 pub mod grid;
+pub mod mesh;
 pub mod trim;
 
 pub use grid::{eval_grid1, eval_grid2, BasisTable, Grid2, MapView};
+pub use mesh::{Mesh, MeshError};
