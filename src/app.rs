@@ -5,7 +5,7 @@
 //! Callbacks take the [`Gl`] context, which keeps its state from frame to frame as a GL
 //! context does; `gl.glut_get(GLUT_WINDOW_WIDTH)` answers inside them.
 
-use crate::gl::Gl;
+use crate::gl::{Gl, Tessellator};
 use crate::render::{Image, RenderError, Renderer};
 
 type DisplayFn = Box<dyn FnMut(&mut Gl)>;
@@ -19,6 +19,8 @@ pub struct Options {
     pub png: Option<String>,
     /// `--time N`: render N headless frames and print the median frame time.
     pub time: Option<usize>,
+    /// `--gpu`: evaluate `glEvalMesh` grids in the GPU tessellator's compute shader.
+    pub gpu: bool,
 }
 
 impl Options {
@@ -34,6 +36,8 @@ impl Options {
                 out.png = Some(path.to_owned());
             } else if a == "--time" {
                 out.time = args.next().and_then(|n| n.parse().ok());
+            } else if a == "--gpu" {
+                out.gpu = true;
             }
         }
         out
@@ -49,6 +53,7 @@ pub struct App {
     reshape: Option<ReshapeFn>,
     display: Option<DisplayFn>,
     keyboard: Option<KeyboardFn>,
+    tessellator: Tessellator,
 }
 
 impl App {
@@ -63,6 +68,7 @@ impl App {
             reshape: None,
             display: None,
             keyboard: None,
+            tessellator: Tessellator::from_env(),
         }
     }
 
@@ -121,10 +127,35 @@ impl App {
         &self.title
     }
 
+    /// Where the program's contexts evaluate `glEvalMesh` grids (initially from
+    /// `GLEVAL_TESSELLATOR`, see [`Tessellator::from_env`]; `--gpu` picks the GPU).
+    #[must_use]
+    pub fn with_tessellator(mut self, tessellator: Tessellator) -> Self {
+        self.tessellator = tessellator;
+        self
+    }
+
+    /// The tessellator this program's contexts use.
+    #[must_use]
+    pub fn tessellator(&self) -> Tessellator {
+        self.tessellator
+    }
+
+    /// A fresh context of the window's size on this program's tessellator.
+    pub(crate) fn new_gl(&self) -> Gl {
+        let mut gl = Gl::new(self.width, self.height);
+        gl.set_tessellator(self.tessellator);
+        gl
+    }
+
     /// `glutMainLoop`: `--png PATH` renders one frame to PNG and returns; otherwise a window.
-    /// Errors are printed and the process exits with status 1, as a C program would fail.
-    pub fn run(self) {
+    /// `--gpu` selects the GPU tessellator. Errors are printed and the process exits with
+    /// status 1, as a C program would fail.
+    pub fn run(mut self) {
         let options = Options::from_args(std::env::args().skip(1));
+        if options.gpu {
+            self.tessellator = Tessellator::Gpu;
+        }
         let result = match (options.time, options.png) {
             (Some(frames), _) => self.print_frame_time(frames),
             (None, Some(path)) => self.write_png(&path),
@@ -138,7 +169,7 @@ impl App {
 
     /// Runs init, reshape and display once on a fresh context and returns what was drawn.
     pub fn record_frame(&mut self) -> Gl {
-        let mut gl = Gl::new(self.width, self.height);
+        let mut gl = self.new_gl();
         self.run_init(&mut gl);
         self.draw_into(&mut gl, self.width, self.height);
         gl
@@ -176,7 +207,7 @@ impl App {
     /// pipelines, and returns the median frame time.
     pub fn median_frame_time(&mut self, frames: usize) -> Result<std::time::Duration, RenderError> {
         let mut renderer = Renderer::new()?;
-        let mut gl = Gl::new(self.width, self.height);
+        let mut gl = self.new_gl();
         self.run_init(&mut gl);
         let mut times = Vec::with_capacity(frames.max(1));
         self.draw_into(&mut gl, self.width, self.height);

@@ -5,7 +5,7 @@
 
 use crate::app::App;
 use crate::gl::Gl;
-use crate::render::{assemble, RenderError, Renderer};
+use crate::render::{RenderError, Renderer};
 use std::error::Error;
 use std::sync::{Arc, Mutex};
 use winit::application::ApplicationHandler;
@@ -218,10 +218,10 @@ impl WindowState {
             self.app.run_reshape(gl, width as i32, height as i32);
         }
         self.app.run_display(gl);
-        let list = assemble(&gl.take_frame());
+        let recorded = gl.take_frame();
         let view = frame.texture.create_view(&Default::default());
         let mut encoder = gpu.renderer.device.create_command_encoder(&Default::default());
-        gpu.renderer.encode(&list, &mut encoder, &view, &gpu.depth, (width, height), gpu.config.format);
+        gpu.renderer.encode(&recorded, &mut encoder, &view, &gpu.depth, (width, height), gpu.config.format);
         gpu.renderer.queue.submit([encoder.finish()]);
         gpu.window.pre_present_notify();
         gpu.renderer.queue.present(frame);
@@ -252,6 +252,7 @@ impl ApplicationHandler for WindowState {
             Ok(gpu) => {
                 let size = gpu.window.inner_size();
                 let mut gl = Gl::new(size.width.max(1) as i32, size.height.max(1) as i32);
+                gl.set_tessellator(self.app.tessellator());
                 self.app.run_init(&mut gl);
                 self.gl = Some(gl);
                 gpu.window.request_redraw();

@@ -82,6 +82,8 @@ pub enum Command {
     },
     /// Draw primitive number `n` of [`Frame::primitives`].
     Draw(usize),
+    /// Draw mesh number `n` of [`Frame::meshes`].
+    Mesh(usize),
 }
 
 /// An immediate-mode call, in the order the program made it.
@@ -115,6 +117,76 @@ pub struct Frame {
     pub states: Vec<DrawState>,
     /// Clears and draws in program order.
     pub commands: Vec<Command>,
+    /// The grids `glEvalMesh` drew, each point stored once (see [`Frame::expanded`] for the
+    /// primitives GL would have issued).
+    pub meshes: Vec<GridMesh>,
+}
+
+/// What a `glEvalMesh` grid draws.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum MeshMode {
+    /// `GL_POINT`: one `GL_POINTS` over the grid, v outer.
+    Points,
+    /// `GL_LINE` of `glEvalMesh1`: one `GL_LINE_STRIP`.
+    CurveLines,
+    /// `GL_LINE` of `glEvalMesh2`: a `GL_LINE_STRIP` per row, then one per column.
+    SurfaceLines,
+    /// `GL_FILL`: a `GL_TRIANGLE_STRIP` per pair of rows.
+    Fill,
+}
+
+/// A grid's vertices: evaluated on the CPU, or left for the GPU to evaluate at draw time.
+#[derive(Clone, Debug, PartialEq)]
+pub enum MeshVertices {
+    /// `nu · nv` vertices, v outer.
+    Evaluated(Vec<Vertex>),
+    /// The maps and parameters, evaluated by the GPU tessellator when the frame is drawn.
+    Deferred(Box<super::MeshJob>),
+}
+
+/// One `glEvalMesh1`/`glEvalMesh2` call.
+#[derive(Clone, Debug, PartialEq)]
+pub struct GridMesh {
+    /// What it draws.
+    pub mode: MeshMode,
+    /// Grid points along u.
+    pub nu: usize,
+    /// Grid points along v (1 for a curve).
+    pub nv: usize,
+    /// Index in [`Frame::states`] of its draw state.
+    pub state: usize,
+    /// Its vertices.
+    pub vertices: MeshVertices,
+}
+
+impl GridMesh {
+    /// The grid's vertices, evaluating a deferred job on the CPU.
+    #[must_use]
+    pub fn evaluated(&self) -> std::borrow::Cow<'_, [Vertex]> {
+        match &self.vertices {
+            MeshVertices::Evaluated(v) => std::borrow::Cow::Borrowed(v),
+            MeshVertices::Deferred(job) => std::borrow::Cow::Owned(job.evaluate()),
+        }
+    }
+
+    /// The primitives GL issues for this grid, in Mesa's order: (mode, grid indices).
+    #[must_use]
+    pub fn primitives(&self) -> Vec<(GLenum, Vec<usize>)> {
+        use super::consts::*;
+        let (nu, nv) = (self.nu, self.nv);
+        match self.mode {
+            MeshMode::Points => vec![(GL_POINTS, (0..nu * nv).collect())],
+            MeshMode::CurveLines => vec![(GL_LINE_STRIP, (0..nu).collect())],
+            MeshMode::SurfaceLines => {
+                let rows = (0..nv).map(|j| (GL_LINE_STRIP, (0..nu).map(|i| j * nu + i).collect()));
+                let columns = (0..nu).map(|i| (GL_LINE_STRIP, (0..nv).map(|j| j * nu + i).collect()));
+                rows.chain(columns).collect()
+            }
+            MeshMode::Fill => (0..nv.saturating_sub(1))
+                .map(|j| (GL_TRIANGLE_STRIP, (0..nu).flat_map(|i| [j * nu + i, (j + 1) * nu + i]).collect()))
+                .collect(),
+        }
+    }
 }
 
 impl Frame {
@@ -136,5 +208,38 @@ impl Frame {
         self.calls.clear();
         self.states.clear();
         self.commands.clear();
+        self.meshes.clear();
+    }
+
+    /// The frame with every mesh replaced by the primitives GL issues for it (deferred meshes
+    /// evaluated on the CPU): what a test comparing against GL's primitive stream reads.
+    #[must_use]
+    pub fn expanded(&self) -> Frame {
+        let mut out = Frame { calls: self.calls.clone(), states: self.states.clone(), ..Frame::default() };
+        for command in &self.commands {
+            match *command {
+                Command::Clear { .. } => out.commands.push(*command),
+                Command::Draw(i) => {
+                    let p = self.primitives[i];
+                    out.push_primitive(p.mode, p.state, self.vertices_of(&p).iter().copied());
+                }
+                Command::Mesh(i) => {
+                    let mesh = &self.meshes[i];
+                    let grid = mesh.evaluated();
+                    for (mode, indices) in mesh.primitives() {
+                        out.push_primitive(mode, mesh.state, indices.iter().map(|&k| grid[k]));
+                    }
+                }
+            }
+        }
+        out
+    }
+
+    fn push_primitive(&mut self, mode: GLenum, state: usize, vertices: impl Iterator<Item = Vertex>) {
+        let first = self.vertices.len();
+        self.vertices.extend(vertices);
+        let count = self.vertices.len() - first;
+        self.primitives.push(Primitive { mode, first, count, state });
+        self.commands.push(Command::Draw(self.primitives.len() - 1));
     }
 }

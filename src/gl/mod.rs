@@ -13,18 +13,46 @@ mod frame;
 mod immediate;
 mod lighting;
 mod matrix;
+mod mesh_job;
 mod raster;
 pub mod types;
 
 pub(crate) use eval::set_attribute as eval_set_attribute;
 pub use eval::{MapTarget, Slot};
-pub use frame::{Call, Command, DrawState, Frame, Primitive, Vertex};
+pub use frame::{Call, Command, DrawState, Frame, GridMesh, MeshMode, MeshVertices, Primitive, Vertex};
 pub use lighting::{Light, Lighting, Material};
+pub use mesh_job::{MapSample, MeshJob};
 
 use consts::*;
 use types::*;
 
 /// The current values that a vertex picks up (GL 1.1 spec §2.7).
+/// Where `glEvalMesh` grids are evaluated.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Tessellator {
+    /// On the CPU when the call is made: the frame holds the vertices (the default; tests read them).
+    #[default]
+    Cpu,
+    /// In a WGSL compute shader when the frame is drawn: the frame holds the maps, and the
+    /// renderer evaluates every mesh of the frame in one dispatch straight into the vertex and
+    /// index buffers it draws. [`Frame::expanded`] still gives the vertices (evaluated on the CPU).
+    Gpu,
+}
+
+impl Tessellator {
+    /// The environment variable that picks the tessellator of new contexts: `gpu` or `cpu`.
+    pub const ENV: &'static str = "GLEVAL_TESSELLATOR";
+
+    /// `Gpu` when `GLEVAL_TESSELLATOR=gpu`, else `Cpu`.
+    #[must_use]
+    pub fn from_env() -> Self {
+        match std::env::var(Self::ENV) {
+            Ok(v) if v.eq_ignore_ascii_case("gpu") => Self::Gpu,
+            _ => Self::Cpu,
+        }
+    }
+}
+
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) struct Current {
     pub color: [f32; 4],
@@ -49,9 +77,11 @@ impl Default for Current {
 /// gl.map_grid1f(4, 0.0, 1.0);
 /// gl.eval_mesh1(GL_LINE, 0, 4);
 /// assert_eq!(gl.get_error(), GL_NO_ERROR);
-/// let strip = gl.frame().primitives[0];
+/// // The frame keeps the grid once; `expanded` gives the primitives GL issues.
+/// let frame = gl.frame().expanded();
+/// let strip = frame.primitives[0];
 /// assert_eq!((strip.mode, strip.count), (GL_LINE_STRIP, 5));
-/// assert_eq!(gl.frame().vertices[2].position, [0.0, 1.0, 0.0, 1.0]);
+/// assert_eq!(frame.vertices[2].position, [0.0, 1.0, 0.0, 1.0]);
 /// ```
 #[derive(Debug)]
 pub struct Gl {
@@ -70,6 +100,7 @@ pub struct Gl {
     /// Index in `frame.states` of a snapshot of the current state, if still valid.
     state_index: Option<usize>,
     frame: Frame,
+    tessellator: Tessellator,
     /// GLU NURBS objects, indexed by their handles.
     pub(crate) nurbs: Vec<Option<crate::glu::NurbsObject>>,
 }
@@ -92,6 +123,7 @@ impl Gl {
             raster: raster::RasterState::new(width, height),
             state_index: None,
             frame: Frame::default(),
+            tessellator: Tessellator::from_env(),
             nurbs: Vec::new(),
         }
     }
@@ -118,6 +150,17 @@ impl Gl {
     #[must_use]
     pub fn frame(&self) -> &Frame {
         &self.frame
+    }
+
+    /// Where `glEvalMesh` grids are evaluated from now on.
+    pub fn set_tessellator(&mut self, tessellator: Tessellator) {
+        self.tessellator = tessellator;
+    }
+
+    /// The tessellator in use.
+    #[must_use]
+    pub fn tessellator(&self) -> Tessellator {
+        self.tessellator
     }
 
     /// Takes the recorded frame, leaving an empty one (the GL state is kept).

@@ -10,7 +10,7 @@
 use super::shade::{ShadedVertex, Shader};
 use crate::gl::consts::*;
 use crate::gl::types::GLenum;
-use crate::gl::{Command, DrawState, Frame};
+use crate::gl::{Command, DrawState, Frame, MeshVertices, Vertex};
 use glam::Vec4;
 
 /// A vertex ready for the rasteriser: clip position (depth already mapped to [0, 1] through
@@ -63,6 +63,8 @@ pub enum Op {
     },
     /// Draw a batch.
     Draw(Batch),
+    /// Draw mesh `n` of the frame, whose vertices the GPU tessellator evaluates.
+    GpuMesh(usize),
 }
 
 /// Everything to rasterise for one frame, in order.
@@ -74,9 +76,16 @@ pub struct DrawList {
     pub ops: Vec<Op>,
 }
 
-/// Assembles a frame.
+/// Assembles a frame, evaluating deferred (GPU) meshes on the CPU.
 #[must_use]
 pub fn assemble(frame: &Frame) -> DrawList {
+    assemble_frame(frame, &[])
+}
+
+/// Assembles a frame; the meshes listed in `gpu_meshes` (sorted) stay [`Op::GpuMesh`] for the
+/// GPU tessellator to evaluate and draw, every other mesh is assembled here.
+#[must_use]
+pub fn assemble_frame(frame: &Frame, gpu_meshes: &[usize]) -> DrawList {
     let mut out = Assembler::default();
     for command in &frame.commands {
         match *command {
@@ -86,6 +95,19 @@ pub fn assemble(frame: &Frame) -> DrawList {
                     if let Some(state) = frame.states.get(p.state) {
                         out.primitive(p.mode, frame.vertices_of(p), state);
                     }
+                }
+            }
+            Command::Mesh(index) => {
+                let Some(mesh) = frame.meshes.get(index) else { continue };
+                let Some(state) = frame.states.get(mesh.state) else { continue };
+                if gpu_meshes.binary_search(&index).is_ok() && matches!(mesh.vertices, MeshVertices::Deferred(_)) {
+                    out.list.ops.push(Op::GpuMesh(index));
+                    continue;
+                }
+                let grid = mesh.evaluated();
+                for (mode, indices) in mesh.primitives() {
+                    let vertices: Vec<Vertex> = indices.iter().map(|&k| grid[k]).collect();
+                    out.primitive(mode, &vertices, state);
                 }
             }
         }

@@ -6,7 +6,8 @@
 //! which is what clipping to GL's view volume amounts to; depth was already mapped to [0, 1]
 //! during assembly; the depth test and depth writes exist only while `GL_DEPTH_TEST` is on.
 
-use super::assemble::{assemble, Batch, DrawList, Op, RasterVertex, Topology};
+use super::assemble::{assemble_frame, Batch, DrawList, Op, RasterVertex, Topology};
+use super::mesh_gpu::{gpu_mesh_indices, mesh_viewport, MeshPipelines, PreparedMeshes};
 use crate::gl::consts::*;
 use crate::gl::types::GLenum;
 use crate::gl::Frame;
@@ -81,6 +82,7 @@ pub struct Renderer {
     module: wgpu::ShaderModule,
     layout: wgpu::PipelineLayout,
     pipelines: HashMap<(Topology, Option<GLenum>, wgpu::TextureFormat), wgpu::RenderPipeline>,
+    meshes: Option<MeshPipelines>,
     errors: Arc<Mutex<Option<String>>>,
 }
 
@@ -102,11 +104,14 @@ impl Renderer {
 
     /// A renderer on a given instance and adapter (a window's).
     pub fn with_adapter(instance: wgpu::Instance, adapter: wgpu::Adapter) -> Result<Self, RenderError> {
-        let desc = wgpu::DeviceDescriptor {
-            label: Some("gleval"),
-            required_limits: wgpu::Limits::downlevel_defaults().using_resolution(adapter.limits()),
-            ..Default::default()
+        // Large storage buffers let the GPU tessellator take big grids in one dispatch.
+        let available = adapter.limits();
+        let required_limits = wgpu::Limits {
+            max_storage_buffer_binding_size: available.max_storage_buffer_binding_size,
+            max_buffer_size: available.max_buffer_size,
+            ..wgpu::Limits::downlevel_defaults().using_resolution(available)
         };
+        let desc = wgpu::DeviceDescriptor { label: Some("gleval"), required_limits, ..Default::default() };
         let (device, queue) =
             pollster::block_on(adapter.request_device(&desc)).map_err(|e| RenderError::Device(e.to_string()))?;
         let errors = Arc::new(Mutex::new(None));
@@ -125,7 +130,7 @@ impl Renderer {
             bind_group_layouts: &[],
             immediate_size: 0,
         });
-        Ok(Self { instance, adapter, device, queue, module, layout, pipelines: HashMap::new(), errors })
+        Ok(Self { instance, adapter, device, queue, module, layout, pipelines: HashMap::new(), meshes: None, errors })
     }
 
     /// A one-line description of the adapter (name and backend).
@@ -137,11 +142,10 @@ impl Renderer {
 
     /// Renders a recorded frame headless and reads it back.
     pub fn render_frame(&mut self, frame: &Frame, width: u32, height: u32) -> Result<Image, RenderError> {
-        let list = assemble(frame);
         let target = Target::new(&self.device, width.max(1), height.max(1), COLOR_FORMAT);
         let mut encoder = self.device.create_command_encoder(&Default::default());
         self.encode(
-            &list,
+            frame,
             &mut encoder,
             &target.color_view,
             &target.depth_view,
@@ -150,8 +154,10 @@ impl Renderer {
         );
         let readback = target.copy_out(&self.device, &mut encoder);
         let submission = self.queue.submit([encoder.finish()]);
-        let pixels = readback.read(&self.device, submission)?;
+        // A validation error makes the submission fail; report the error itself.
+        let pixels = readback.read(&self.device, submission);
         self.take_error()?;
+        let pixels = pixels?;
         Ok(Image { width: target.width, height: target.height, pixels })
     }
 
@@ -162,10 +168,36 @@ impl Renderer {
         }
     }
 
-    /// Records the draw list into `encoder`, rendering to `color` (of `format`) and `depth`.
+    /// Records a frame into `encoder`, rendering to `color` (of `format`) and `depth`: meshes
+    /// left to the GPU tessellator are evaluated by one compute dispatch first, then everything
+    /// is drawn in program order.
     pub fn encode(
         &mut self,
+        frame: &Frame,
+        encoder: &mut wgpu::CommandEncoder,
+        color: &wgpu::TextureView,
+        depth: &wgpu::TextureView,
+        size: (u32, u32),
+        format: wgpu::TextureFormat,
+    ) {
+        let on_gpu = gpu_mesh_indices(&self.device, frame);
+        let list = assemble_frame(frame, &on_gpu);
+        let prepared = (!on_gpu.is_empty()).then(|| {
+            let meshes = self.meshes.get_or_insert_with(|| MeshPipelines::new(&self.device));
+            let prepared = meshes.prepare(&self.device, encoder, frame, &on_gpu, size);
+            meshes.ensure_pipelines(&self.device, frame, &prepared, format);
+            prepared
+        });
+        self.encode_list(&list, frame, prepared.as_ref(), encoder, color, depth, size, format);
+    }
+
+    /// Records an assembled list (with its frame's GPU meshes already prepared).
+    #[allow(clippy::too_many_arguments)]
+    fn encode_list(
+        &mut self,
         list: &DrawList,
+        frame: &Frame,
+        prepared: Option<&PreparedMeshes>,
         encoder: &mut wgpu::CommandEncoder,
         color: &wgpu::TextureView,
         depth: &wgpu::TextureView,
@@ -181,17 +213,30 @@ impl Renderer {
             })
         });
         for pass in split_passes(&list.ops) {
-            for batch in &pass.draws {
-                self.ensure_pipeline(batch.topology, batch.depth_test, format);
+            for item in &pass.draws {
+                if let PassItem::Batch(batch) = item {
+                    self.ensure_pipeline(batch.topology, batch.depth_test, format);
+                }
             }
             let mut rp = begin_pass(encoder, color, depth, pass.clear_color, pass.clear_depth);
-            let Some(buffer) = &buffer else { continue };
-            rp.set_vertex_buffer(0, buffer.slice(..));
-            for batch in &pass.draws {
-                let Some(scissor) = scissor_rect(batch.viewport, size) else { continue };
-                rp.set_scissor_rect(scissor[0], scissor[1], scissor[2], scissor[3]);
-                rp.set_pipeline(&self.pipelines[&(batch.topology, batch.depth_test, format)]);
-                rp.draw(batch.first..batch.first + batch.count, 0..1);
+            for item in &pass.draws {
+                match item {
+                    PassItem::Batch(batch) => {
+                        let Some(buffer) = &buffer else { continue };
+                        let Some(scissor) = scissor_rect(batch.viewport, size) else { continue };
+                        rp.set_scissor_rect(scissor[0], scissor[1], scissor[2], scissor[3]);
+                        rp.set_pipeline(&self.pipelines[&(batch.topology, batch.depth_test, format)]);
+                        rp.set_vertex_buffer(0, buffer.slice(..));
+                        rp.draw(batch.first..batch.first + batch.count, 0..1);
+                    }
+                    PassItem::Mesh(index) => {
+                        let (Some(prepared), Some(meshes)) = (prepared, &self.meshes) else { continue };
+                        let Some(viewport) = mesh_viewport(frame, prepared, *index) else { continue };
+                        let Some(scissor) = scissor_rect(viewport, size) else { continue };
+                        rp.set_scissor_rect(scissor[0], scissor[1], scissor[2], scissor[3]);
+                        meshes.draw(&mut rp, frame, prepared, *index, format);
+                    }
+                }
             }
         }
     }
@@ -206,7 +251,7 @@ impl Renderer {
 }
 
 /// GL's depth function as wgpu's comparison.
-fn compare(func: GLenum) -> wgpu::CompareFunction {
+pub(crate) fn compare(func: GLenum) -> wgpu::CompareFunction {
     match func {
         GL_NEVER => wgpu::CompareFunction::Never,
         GL_EQUAL => wgpu::CompareFunction::Equal,
@@ -269,11 +314,17 @@ fn make_pipeline(
     })
 }
 
+/// What a render pass draws: a batch of assembled vertices or a GPU-tessellated mesh.
+enum PassItem {
+    Batch(Batch),
+    Mesh(usize),
+}
+
 /// Draws between two clears share one render pass.
 struct Pass {
     clear_color: Option<[f32; 4]>,
     clear_depth: Option<f32>,
-    draws: Vec<Batch>,
+    draws: Vec<PassItem>,
 }
 
 /// Splits the ops at every clear. The first pass clears to transparent black and depth 1 (the
@@ -291,7 +342,8 @@ fn split_passes(ops: &[Op]) -> Vec<Pass> {
                     passes.push(Pass { clear_color: color, clear_depth: depth, draws: Vec::new() });
                 }
             }
-            Op::Draw(batch) => passes.last_mut().expect("at least one pass").draws.push(batch),
+            Op::Draw(batch) => passes.last_mut().expect("at least one pass").draws.push(PassItem::Batch(batch)),
+            Op::GpuMesh(index) => passes.last_mut().expect("at least one pass").draws.push(PassItem::Mesh(index)),
         }
     }
     passes
@@ -452,4 +504,40 @@ impl Readback {
         self.buffer.unmap();
         Ok(pixels)
     }
+}
+
+/// Submits `encoder` after copying `bytes` of `buffer` out, and returns them.
+pub(crate) fn read_buffer(
+    renderer: &Renderer,
+    mut encoder: wgpu::CommandEncoder,
+    buffer: &wgpu::Buffer,
+    bytes: u64,
+) -> Result<Vec<u8>, RenderError> {
+    let size = bytes.max(4).div_ceil(4) * 4;
+    let staging = renderer.device.create_buffer(&wgpu::BufferDescriptor {
+        label: Some("gleval buffer readback"),
+        size,
+        usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
+        mapped_at_creation: false,
+    });
+    encoder.copy_buffer_to_buffer(buffer, 0, &staging, 0, size.min(buffer.size()));
+    let submission = renderer.queue.submit([encoder.finish()]);
+    let slice = staging.slice(..);
+    let (tx, rx) = std::sync::mpsc::channel();
+    slice.map_async(wgpu::MapMode::Read, move |r| {
+        let _ = tx.send(r);
+    });
+    renderer
+        .device
+        .poll(wgpu::PollType::Wait { submission_index: Some(submission), timeout: None })
+        .map_err(|e| RenderError::Gpu(e.to_string()))?;
+    match rx.recv() {
+        Ok(Ok(())) => {}
+        Ok(Err(e)) => return Err(RenderError::Gpu(e.to_string())),
+        Err(e) => return Err(RenderError::Gpu(e.to_string())),
+    }
+    let data = slice.get_mapped_range().map_err(|e| RenderError::Gpu(e.to_string()))?[..bytes as usize].to_vec();
+    staging.unmap();
+    renderer.take_error()?;
+    Ok(data)
 }

@@ -6,10 +6,12 @@ mod assemble;
 pub mod compare;
 mod shade;
 
-pub use assemble::{assemble, Batch, DrawList, Op, RasterVertex, Topology};
+pub use assemble::{assemble, assemble_frame, Batch, DrawList, Op, RasterVertex, Topology};
 
 #[cfg(feature = "gpu")]
 mod gpu;
+#[cfg(feature = "gpu")]
+pub mod mesh_gpu;
 #[cfg(feature = "window")]
 pub(crate) use gpu::{backend_order, DEPTH_FORMAT};
 #[cfg(feature = "gpu")]

@@ -24,7 +24,7 @@ fn seed_004_cubic_through_eval_mesh1() {
     gl.enable(GL_MAP1_VERTEX_3);
     gl.map_grid1f(3, 0.0, 1.0);
     gl.eval_mesh1(GL_LINE, 0, 3);
-    let f = gl.frame();
+    let f = gl.frame().expanded();
     assert_eq!(f.primitives.len(), 1);
     assert_eq!(f.primitives[0].mode, GL_LINE_STRIP);
     let want = [(0.0, 0.0), (1.0, 2.0 / 9.0), (2.0, -2.0 / 9.0), (3.0, 0.0)];
@@ -45,7 +45,7 @@ fn eval_mesh1_partial_and_reversed_ranges() {
     gl.eval_mesh1(GL_LINE, 5, 3); // i1 > i2: an empty begin/end, as Mesa
     gl.map_grid1f(4, 1.0, 0.0); // reversed grid
     gl.eval_mesh1(GL_LINE, 0, 4);
-    let f = gl.frame();
+    let f = gl.frame().expanded();
     let xs: Vec<f32> = f.vertices_of(&f.primitives[0]).iter().map(|v| v.position[0]).collect();
     assert_eq!(f.primitives[0].mode, GL_POINTS);
     assert!(xs.iter().zip([0.3, 0.4, 0.5]).all(|(a, b)| (a - b).abs() < 1e-6), "{xs:?}");
@@ -65,7 +65,7 @@ fn grid_end_is_exact_at_i_equals_n() {
     gl.begin(GL_POINTS);
     gl.eval_point1(3);
     gl.end();
-    let v = &gl.frame().vertices;
+    let v = &gl.frame().expanded().vertices;
     assert_eq!(v[3].position[0], 0.1f32);
     assert_eq!(v[4].position[0], 0.1f32);
 }
@@ -76,7 +76,7 @@ fn eval_mesh2_fill_strips_are_mesas_order_and_clockwise() {
     saddle(&mut gl, (0.0, 1.0), (0.0, 1.0));
     gl.map_grid2f(2, 0.0, 1.0, 2, 0.0, 1.0);
     gl.eval_mesh2(GL_FILL, 0, 2, 0, 2);
-    let f = gl.frame();
+    let f = gl.frame().expanded();
     assert_eq!(f.primitives.len(), 2, "one strip per row j in j1..j2");
     for (j, (p, verts)) in f.iter().enumerate() {
         assert_eq!(p.mode, GL_TRIANGLE_STRIP);
@@ -97,7 +97,7 @@ fn eval_mesh2_lines_rows_then_columns_and_points() {
     saddle(&mut gl, (0.0, 1.0), (0.0, 1.0));
     gl.map_grid2f(4, 0.0, 1.0, 2, 0.0, 1.0);
     gl.eval_mesh2(GL_LINE, 1, 3, 0, 2);
-    let f = gl.take_frame();
+    let f = gl.take_frame().expanded();
     let counts: Vec<usize> = f.primitives.iter().map(|p| p.count).collect();
     assert_eq!(counts, [3, 3, 3, 3, 3, 3], "3 row strips of 3, then 3 column strips of 3");
     let row1: Vec<(f32, f32)> = f.vertices_of(&f.primitives[1]).iter().map(xy).collect();
@@ -105,11 +105,11 @@ fn eval_mesh2_lines_rows_then_columns_and_points() {
     let col0: Vec<(f32, f32)> = f.vertices_of(&f.primitives[3]).iter().map(xy).collect();
     assert_eq!(col0, [(0.25, 0.0), (0.25, 0.5), (0.25, 1.0)]);
     gl.eval_mesh2(GL_POINT, 0, 1, 1, 2);
-    let f = gl.take_frame();
+    let f = gl.take_frame().expanded();
     let pts: Vec<(f32, f32)> = f.vertices.iter().map(xy).collect();
     assert_eq!(pts, [(0.0, 0.5), (0.25, 0.5), (0.0, 1.0), (0.25, 1.0)], "j outer, i inner");
     gl.eval_mesh2(GL_FILL, 0, 4, 1, 1);
-    assert!(gl.frame().primitives.is_empty(), "j1 == j2 draws nothing");
+    assert!(gl.frame().expanded().primitives.is_empty(), "j1 == j2 draws nothing");
 }
 
 fn unit(v: [f64; 3]) -> [f64; 3] {
@@ -132,7 +132,7 @@ fn auto_normal_closed_form_and_reversed_domain_sign() {
         gl.enable(GL_AUTO_NORMAL);
         gl.map_grid2f(4, 0.0, 1.0, 4, 0.0, 1.0);
         gl.eval_mesh2(GL_POINT, 0, 4, 0, 4);
-        for v in &gl.frame().vertices {
+        for v in &gl.frame().expanded().vertices {
             let (x, y) = (f64::from(v.position[0]), f64::from(v.position[1]));
             // x and y are the normalised parameters s, t of the control net.
             let analytic_du_sign = if flip { -1.0 } else { 1.0 };
@@ -178,7 +178,7 @@ fn rational_auto_normal_matches_finite_differences() {
     gl.map_grid2f(5, 0.0, 1.0, 5, 0.0, 1.0);
     gl.eval_mesh2(GL_POINT, 0, 5, 0, 5);
     let h = 1e-6;
-    for (k, v) in gl.frame().vertices.iter().enumerate() {
+    for (k, v) in gl.frame().expanded().vertices.iter().enumerate() {
         let (s, t) = ((k % 6) as f64 / 5.0, (k / 6) as f64 / 5.0);
         let p = rational_saddle(s, t);
         let w = f64::from(v.position[3]);
@@ -204,7 +204,7 @@ fn collapsed_edge_gives_zero_normal_not_nan() {
     gl.enable(GL_AUTO_NORMAL);
     gl.map_grid2f(2, 0.0, 1.0, 2, 0.0, 1.0);
     gl.eval_mesh2(GL_FILL, 0, 2, 0, 2);
-    for v in &gl.frame().vertices {
+    for v in &gl.frame().expanded().vertices {
         assert!(v.normal.iter().all(|c| c.is_finite()));
         if v.position == [0.0, 0.0, 1.0, 1.0] {
             assert_eq!(v.normal, [0.0, 0.0, 0.0]);
@@ -234,7 +234,7 @@ fn attribute_maps_precedence_and_current_state_untouched() {
     gl.vertex3f(7.0, 7.0, 7.0);
     gl.end();
     assert_eq!(gl.get_error(), GL_NO_ERROR);
-    let v = gl.frame().vertices.clone();
+    let v = gl.frame().expanded().vertices.clone();
     assert_eq!(v[0].position, [0.5, 0.0, 0.0, 1.0]);
     assert_eq!(v[0].color, [0.5, 0.0, 0.5, 1.0]);
     assert_eq!(v[0].tex_coord, [0.5, 1.0, 1.5, 1.0], "TEXTURE_COORD_3 beats _1; q defaults to 1");
@@ -255,12 +255,12 @@ fn nothing_without_vertex_map_or_outside_begin_end() {
     gl.begin(GL_POINTS);
     gl.eval_coord1f(0.5);
     gl.end();
-    assert_eq!(gl.frame().vertices.len(), 0);
-    assert_eq!(gl.frame().primitives.len(), 1, "only the user's own begin/end");
+    assert_eq!(gl.frame().expanded().vertices.len(), 0);
+    assert_eq!(gl.frame().expanded().primitives.len(), 1, "only the user's own begin/end");
     gl.enable(GL_MAP1_VERTEX_3);
     gl.eval_coord1f(0.5);
     gl.eval_point1(1);
-    assert_eq!(gl.frame().vertices.len(), 0, "a vertex outside begin/end draws nothing");
+    assert_eq!(gl.frame().expanded().vertices.len(), 0, "a vertex outside begin/end draws nothing");
     assert_eq!(gl.get_error(), GL_NO_ERROR);
 }
 
@@ -271,5 +271,5 @@ fn vertex4_passes_w_through() {
     gl.enable(GL_MAP1_VERTEX_4);
     gl.map_grid1f(2, 0.0, 1.0);
     gl.eval_mesh1(GL_POINT, 0, 2);
-    assert_eq!(gl.frame().vertices[1].position, [1.0, 1.0, 1.0, 1.5]);
+    assert_eq!(gl.frame().expanded().vertices[1].position, [1.0, 1.0, 1.0, 1.5]);
 }

@@ -232,7 +232,7 @@ impl Runner {
 
     /// Emits `fb` lines for the primitives drawn since the last collection (FORMAT.md §3).
     fn collect_feedback(&mut self) {
-        let frame = self.gl.frame().clone();
+        let frame = self.gl.frame().expanded();
         for p in &frame.primitives[self.collected..] {
             let v: Vec<String> = frame.vertices_of(p).iter().map(|v| self.feedback_vertex(v)).collect();
             let n = v.len();

@@ -1,0 +1,269 @@
+// Evaluates every glEvalMesh grid of a frame in one dispatch, one invocation per grid point,
+// straight into the vertex and index buffers the render pass draws (no CPU round trip).
+//
+// A job is one glEvalMesh call: up to four enabled maps (attribute maps in Mesa's order, the
+// vertex map last), each with its own normalised parameters, plus the current attributes for
+// what no map sets. Each point writes its vertex (position, normal, colour, texture coordinate,
+// widened as GL widens them) and, for its grid cell, the indices of GL's primitives: for
+// GL_FILL the two triangles of Mesa's strip with the provoking vertex first (so flat shading
+// picks GL's colour and the winding stays GL's), for GL_LINE the row and column segments.
+// The maths matches src/tess/grid.rs: Bernstein bases by de Casteljau's triangle, partials on
+// control-point differences (a collapsed edge gives exactly zero, hence a zero normal, never NaN).
+
+const MAX_ORDER: u32 = 30u;
+const MAX_MAPS: u32 = 4u;
+
+// Slot numbers (gl::Slot): the offset of the target from GL_MAP*_COLOR_4.
+const SLOT_COLOR: u32 = 0u;
+const SLOT_NORMAL: u32 = 2u;
+const SLOT_TEX1: u32 = 3u;
+const SLOT_TEX4: u32 = 6u;
+const SLOT_VERTEX3: u32 = 7u;
+const SLOT_VERTEX4: u32 = 8u;
+
+// Mesh modes (gl::MeshMode): points, curve lines, surface lines, fill.
+const MODE_POINTS: u32 = 0u;
+const MODE_FILL: u32 = 3u;
+
+struct MapDesc {
+    slot: u32,
+    dim: u32,
+    uorder: u32,
+    vorder: u32,
+    point_offset: u32,   // first float of the control points
+    u_offset: u32,       // first of nu normalised u parameters
+    v_offset: u32,       // first of nv normalised v parameters
+    _pad: u32,
+};
+
+struct Job {
+    maps: array<MapDesc, 4>,
+    map_count: u32,
+    nu: u32,
+    nv: u32,
+    mode: u32,
+    out_offset: u32,     // first output vertex (prefix sum of nu·nv)
+    index_offset: u32,   // first output index (prefix sum of the index counts)
+    auto_normal: u32,
+    _pad: u32,
+    normal: vec4<f32>,   // current attributes
+    color: vec4<f32>,
+    tex: vec4<f32>,
+};
+
+struct Meta {
+    job_count: u32,
+    total_points: u32,
+    _pad0: u32,
+    _pad1: u32,
+};
+
+struct Vertex {
+    position: vec4<f32>,
+    normal: vec4<f32>,
+    color: vec4<f32>,
+    tex: vec4<f32>,
+};
+
+// Control points and normalised parameters share one array (downlevel devices allow four
+// storage buffers per stage).
+@group(0) @binding(0) var<storage, read> jobs: array<Job>;
+@group(0) @binding(1) var<storage, read> data: array<f32>;
+@group(0) @binding(2) var<storage, read_write> vertices: array<Vertex>;
+@group(0) @binding(3) var<storage, read_write> indices: array<u32>;
+@group(0) @binding(4) var<uniform> info: Meta;
+
+// The Bernstein basis of `order` at t, by the de Casteljau triangle (stable for all t).
+fn bernstein(order: u32, t: f32) -> array<f32, 30> {
+    var b: array<f32, 30>;
+    if (order == 0u) {
+        return b;
+    }
+    let s = 1.0 - t;
+    b[0] = 1.0;
+    for (var level = 1u; level < order; level++) {
+        var saved = 0.0;
+        for (var i = 0u; i < level; i++) {
+            let v = b[i];
+            b[i] = saved + s * v;
+            saved = t * v;
+        }
+        b[level] = saved;
+    }
+    return b;
+}
+
+fn control(m: MapDesc, i: u32, j: u32) -> vec4<f32> {
+    let base = m.point_offset + (i * m.vorder + j) * m.dim;
+    var p = vec4<f32>(0.0);
+    for (var c = 0u; c < m.dim; c++) {
+        p[c] = data[base + c];
+    }
+    return p;
+}
+
+struct Sample {
+    point: vec4<f32>,
+    du: vec4<f32>,
+    dv: vec4<f32>,
+};
+
+// The map at its normalised (u, v), with partials when asked (derivatives of the Bernstein
+// form: (n−1)·Σ B_{n−2}·ΔP, the same sums as the CPU kernel).
+fn evaluate(m: MapDesc, u: f32, v: f32, partials: bool) -> Sample {
+    let bu = bernstein(m.uorder, u);
+    let bv = bernstein(m.vorder, v);
+    var s: Sample;
+    if (!partials) {
+        for (var a = 0u; a < m.uorder; a++) {
+            var row = vec4<f32>(0.0);
+            for (var b = 0u; b < m.vorder; b++) {
+                row += bv[b] * control(m, a, b);
+            }
+            s.point += bu[a] * row;
+        }
+        return s;
+    }
+    let bu1 = bernstein(m.uorder - 1u, u);
+    let bv1 = bernstein(m.vorder - 1u, v);
+    var rows: array<vec4<f32>, 30>;
+    for (var a = 0u; a < m.uorder; a++) {
+        var row = vec4<f32>(0.0);
+        var row_dv = vec4<f32>(0.0);
+        for (var b = 0u; b < m.vorder; b++) {
+            let c = control(m, a, b);
+            row += bv[b] * c;
+            if (b + 1u < m.vorder) {
+                row_dv += bv1[b] * (control(m, a, b + 1u) - c);
+            }
+        }
+        rows[a] = row;
+        s.point += bu[a] * row;
+        s.dv += bu[a] * f32(m.vorder - 1u) * row_dv;
+    }
+    for (var a = 0u; a + 1u < m.uorder; a++) {
+        s.du += bu1[a] * f32(m.uorder - 1u) * (rows[a + 1u] - rows[a]);
+    }
+    return s;
+}
+
+// The first `dim` components of p over the default (0, 0, 0, 1).
+fn widen(p: vec4<f32>, dim: u32) -> vec4<f32> {
+    var out = vec4<f32>(0.0, 0.0, 0.0, 1.0);
+    for (var c = 0u; c < dim; c++) {
+        out[c] = p[c];
+    }
+    return out;
+}
+
+// GL's AUTO_NORMAL: du × dv, for a rational map of the projected surface (w·p' − w'·p
+// has the direction of the projected derivative); a zero cross product stays zero.
+fn auto_normal(s: Sample, dim: u32) -> vec3<f32> {
+    var a = s.du.xyz;
+    var b = s.dv.xyz;
+    if (dim == 4u) {
+        a = s.du.xyz * s.point.w - s.du.w * s.point.xyz;
+        b = s.dv.xyz * s.point.w - s.dv.w * s.point.xyz;
+    }
+    let n = cross(a, b);
+    let len2 = dot(n, n);
+    if (len2 > 0.0) {
+        return n * inverseSqrt(len2);
+    }
+    return vec3<f32>(0.0);
+}
+
+// The job holding grid point `p`: binary search on the prefix sums.
+fn find_job(p: u32) -> u32 {
+    var lo = 0u;
+    var hi = info.job_count;
+    while (hi - lo > 1u) {
+        let mid = (lo + hi) / 2u;
+        if (jobs[mid].out_offset <= p) {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    return lo;
+}
+
+// GL_FILL: row j of Mesa's strip alternates (i, j), (i, j+1). Cell i holds its triangles 2i and
+// 2i+1: (i,j) (i,j+1) (i+1,j) and, odd so swapped, (i+1,j) (i,j+1) (i+1,j+1); each is rotated
+// to start at its provoking (last) vertex.
+fn write_cell(job: Job, i: u32, j: u32) {
+    if (i + 1u >= job.nu || j + 1u >= job.nv) {
+        return;
+    }
+    let a = job.out_offset + j * job.nu + i;   // (i, j)
+    let b = a + job.nu;                         // (i, j+1)
+    let c = a + 1u;                             // (i+1, j)
+    let d = b + 1u;                             // (i+1, j+1)
+    let k = job.index_offset + 6u * (j * (job.nu - 1u) + i);
+    indices[k] = c;
+    indices[k + 1u] = a;
+    indices[k + 2u] = b;
+    indices[k + 3u] = d;
+    indices[k + 4u] = c;
+    indices[k + 5u] = b;
+}
+
+// GL_LINE: the segment of row j from i to i+1, then (after all rows) the segment of column i
+// from j to j+1; each starts at its provoking (second) vertex.
+fn write_segments(job: Job, i: u32, j: u32) {
+    let a = job.out_offset + j * job.nu + i;
+    let rows = job.nv * (job.nu - 1u);
+    if (i + 1u < job.nu) {
+        let k = job.index_offset + 2u * (j * (job.nu - 1u) + i);
+        indices[k] = a + 1u;
+        indices[k + 1u] = a;
+    }
+    if (j + 1u < job.nv) {
+        let k = job.index_offset + 2u * (rows + i * (job.nv - 1u) + j);
+        indices[k] = a + job.nu;
+        indices[k + 1u] = a;
+    }
+}
+
+@compute @workgroup_size(64)
+fn main(@builtin(global_invocation_id) id: vec3<u32>, @builtin(num_workgroups) groups: vec3<u32>) {
+    let p = id.x + id.y * groups.x * 64u;
+    if (p >= info.total_points) {
+        return;
+    }
+    let job = jobs[find_job(p)];
+    let local = p - job.out_offset;
+    let i = local % job.nu;
+    let j = local / job.nu;
+    var out: Vertex;
+    out.position = vec4<f32>(0.0, 0.0, 0.0, 1.0);
+    out.normal = job.normal;
+    out.color = job.color;
+    out.tex = job.tex;
+    for (var k = 0u; k < job.map_count; k++) {
+        let m = job.maps[k];
+        let is_vertex = m.slot == SLOT_VERTEX3 || m.slot == SLOT_VERTEX4;
+        let normals = is_vertex && job.auto_normal != 0u;
+        let s = evaluate(m, data[m.u_offset + i], data[m.v_offset + j], normals);
+        if (m.slot == SLOT_COLOR) {
+            out.color = s.point;
+        } else if (m.slot == SLOT_NORMAL) {
+            out.normal = vec4<f32>(s.point.xyz, 0.0);
+        } else if (m.slot >= SLOT_TEX1 && m.slot <= SLOT_TEX4) {
+            out.tex = widen(s.point, m.dim);
+        } else if (m.slot == SLOT_VERTEX3) {
+            out.position = widen(s.point, 3u);
+        } else if (m.slot == SLOT_VERTEX4) {
+            out.position = s.point;
+        }
+        if (normals) {
+            out.normal = vec4<f32>(auto_normal(s, m.dim), 0.0);
+        }
+    }
+    vertices[p] = out;
+    if (job.mode == MODE_FILL) {
+        write_cell(job, i, j);
+    } else if (job.mode != MODE_POINTS) {
+        write_segments(job, i, j);
+    }
+}
