@@ -131,3 +131,268 @@ fn gpu_grid_matches_cpu_for_all_orders_rational_reversed_and_degenerate() {
     }
     println!("GPU vs CPU worst position error {worst_p:.2e} (relative), worst normal error {worst_n:.2e}");
 }
+
+// ---------------------------------------------------------------------------------------------
+// The façade's GPU tessellator (`render::mesh_gpu`): glEvalMesh jobs recorded by a `Gl` on the
+// GPU tessellator, evaluated in one dispatch, against an f64 evaluation of the same job.
+
+use gleval::gl::{Gl, MeshJob, MeshMode, MeshVertices, Slot, Tessellator};
+use gleval::prelude::*;
+use gleval::render::mesh_gpu::{evaluate_job_indices, evaluate_jobs};
+
+/// The value GL gives attribute `slot` from the map's components `p` (spec table 5.1: missing
+/// texture components are 0, 0, 1; a 3-component vertex has w = 1).
+fn widen(slot: Slot, p: [f64; 4]) -> [f64; 4] {
+    let k = slot.components();
+    let mut out = [0.0, 0.0, 0.0, 1.0];
+    out[..k].copy_from_slice(&p[..k]);
+    out
+}
+
+/// f64 oracle of one job: per vertex position, normal, colour, texture coordinate; and per
+/// vertex the conditioning |du × dv| of the auto normal (0 when none or degenerate).
+fn oracle_job(job: &MeshJob) -> (Vec<[[f64; 4]; 4]>, Vec<f64>) {
+    let t = job.template;
+    let n = job.nu * job.nv;
+    let f = |a: [f32; 4]| a.map(f64::from);
+    let template = [[0.0, 0.0, 0.0, 1.0], f([t.normal[0], t.normal[1], t.normal[2], 0.0]), f(t.color), f(t.tex_coord)];
+    let mut out = vec![template; n];
+    let mut area = vec![0.0; n];
+    for map in &job.maps {
+        let g = oracle(&map.points, map.slot.components(), map.uorder, map.vorder, &map.us, &map.vs);
+        for idx in 0..n {
+            let p = g.points[idx];
+            match map.slot {
+                Slot::Vertex3 | Slot::Vertex4 => out[idx][0] = widen(map.slot, p),
+                Slot::Normal => out[idx][1] = [p[0], p[1], p[2], 0.0],
+                Slot::Color4 => out[idx][2] = p,
+                Slot::Index => {}
+                _ => out[idx][3] = widen(map.slot, p),
+            }
+            if job.auto_normal && matches!(map.slot, Slot::Vertex3 | Slot::Vertex4) {
+                let (nrm, a) = normal64(map.slot.components(), p, g.du[idx], g.dv[idx]);
+                out[idx][1] = [nrm[0], nrm[1], nrm[2], 0.0];
+                area[idx] = if map.slot == Slot::Vertex4 { a / (p[3] * p[3]) } else { a };
+            }
+        }
+    }
+    (out, area)
+}
+
+/// A context on the GPU tessellator with `setup` run, its deferred jobs collected.
+fn jobs_of(setup: impl FnOnce(&mut Gl)) -> Vec<(MeshJob, MeshMode)> {
+    let mut gl = Gl::new(64, 64);
+    gl.set_tessellator(Tessellator::Gpu);
+    setup(&mut gl);
+    assert_eq!(gl.get_error(), GL_NO_ERROR);
+    let frame = gl.take_frame();
+    frame
+        .meshes
+        .into_iter()
+        .map(|m| match m.vertices {
+            MeshVertices::Deferred(job) => (*job, m.mode),
+            MeshVertices::Evaluated(_) => panic!("mesh evaluated on the CPU under the GPU tessellator"),
+        })
+        .collect()
+}
+
+fn surface(gl: &mut Gl, target: GLenum, k: usize, (uo, vo): (usize, usize), dom: [f32; 4], seed: usize) {
+    let pts = net(uo, vo, k, seed);
+    gl.map2f(target, dom[0], dom[1], (vo * k) as i32, uo as i32, dom[2], dom[3], k as i32, vo as i32, &pts);
+    gl.enable(target);
+}
+
+#[test]
+fn facade_gpu_meshes_match_the_f64_oracle() {
+    let Some(r) = device() else { return };
+    let mut jobs = Vec::new();
+    // Every order GL allows, vertex map with AUTO_NORMAL, FILL over a partial grid range.
+    for order in 1..=30 {
+        jobs.extend(jobs_of(|gl| {
+            surface(gl, GL_MAP2_VERTEX_3, 3, (order, order), [0.0, 1.0, 0.0, 1.0], order);
+            gl.enable(GL_AUTO_NORMAL);
+            gl.map_grid2f(10, 0.0, 1.0, 8, 0.0, 1.0);
+            gl.eval_mesh2(GL_FILL, 1, 10, 0, 7);
+        }));
+    }
+    // Rational maps, reversed map domains and a reversed grid, every attribute map.
+    jobs.extend(jobs_of(|gl| {
+        surface(gl, GL_MAP2_VERTEX_4, 4, (4, 3), [2.0, -1.0, 0.5, 3.0], 7);
+        surface(gl, GL_MAP2_COLOR_4, 4, (2, 3), [2.0, -1.0, 0.5, 3.0], 8);
+        surface(gl, GL_MAP2_TEXTURE_COORD_2, 2, (3, 2), [-1.0, 2.0, 0.5, 3.0], 9);
+        gl.enable(GL_AUTO_NORMAL);
+        gl.map_grid2f(9, 2.0, -1.0, 6, 3.0, 0.5);
+        gl.eval_mesh2(GL_FILL, 0, 9, 0, 6);
+        gl.eval_mesh2(GL_LINE, 2, 7, 1, 5);
+        gl.eval_mesh2(GL_POINT, 0, 3, 0, 6);
+    }));
+    // A normal map without AUTO_NORMAL, and the current attributes where no map is enabled.
+    jobs.extend(jobs_of(|gl| {
+        surface(gl, GL_MAP2_VERTEX_3, 3, (5, 4), [0.0, 1.0, 0.0, 1.0], 3);
+        surface(gl, GL_MAP2_NORMAL, 3, (3, 3), [0.0, 1.0, 0.0, 1.0], 4);
+        gl.color4f(0.25, 0.5, 0.75, 1.0);
+        gl.tex_coord2f(0.125, 0.375);
+        gl.map_grid2f(7, 0.0, 1.0, 5, 0.0, 1.0);
+        gl.eval_mesh2(GL_FILL, 0, 7, 0, 5);
+    }));
+    // A collapsed edge (all of u = 0 at one point): GL's normal there is zero, never NaN.
+    let collapsed_job = jobs.len();
+    jobs.extend(jobs_of(|gl| {
+        let mut pts = net(4, 4, 3, 5);
+        for j in 1..4 {
+            for c in 0..3 {
+                pts[j * 3 + c] = pts[c];
+            }
+        }
+        gl.map2f(GL_MAP2_VERTEX_3, 0.0, 1.0, 12, 4, 0.0, 1.0, 3, 4, &pts);
+        gl.enable(GL_MAP2_VERTEX_3);
+        gl.enable(GL_AUTO_NORMAL);
+        gl.map_grid2f(6, 0.0, 1.0, 6, 0.0, 1.0);
+        gl.eval_mesh2(GL_FILL, 0, 6, 0, 6);
+    }));
+    // Curves: glEvalMesh1 with a colour map, lines and points, a reversed domain.
+    jobs.extend(jobs_of(|gl| {
+        let pts = net(7, 1, 3, 2);
+        gl.map1f(GL_MAP1_VERTEX_3, 1.0, -2.0, 3, 7, &pts);
+        gl.enable(GL_MAP1_VERTEX_3);
+        let col = net(3, 1, 4, 6);
+        gl.map1f(GL_MAP1_COLOR_4, 1.0, -2.0, 4, 3, &col);
+        gl.enable(GL_MAP1_COLOR_4);
+        gl.map_grid1f(20, 1.0, -2.0);
+        gl.eval_mesh1(GL_LINE, 0, 20);
+        gl.eval_mesh1(GL_POINT, 3, 17);
+    }));
+    let got = evaluate_jobs(&r, &jobs).expect("GPU evaluation");
+    let (mut offset, mut worst_p, mut worst_n, mut worst_a, mut zero_normals) = (0, 0.0f64, 0.0f64, 0.0f64, 0);
+    for (case, (job, _)) in jobs.iter().enumerate() {
+        let (want, area) = oracle_job(job);
+        let scale = job.maps.iter().flat_map(|m| &m.points).fold(1.0f64, |m, &x| m.max(f64::from(x).abs()));
+        for (idx, w) in want.iter().enumerate() {
+            let g = got[offset + idx];
+            for c in 0..4 {
+                let e = (f64::from(g[0][c]) - w[0][c]).abs() / scale;
+                worst_p = worst_p.max(e);
+                assert!(e < 2e-5, "job {case} vertex {idx}.{c}: gpu {:?} oracle {:?}", g[0], w[0]);
+                for attr in [2, 3] {
+                    let e = (f64::from(g[attr][c]) - w[attr][c]).abs() / scale;
+                    worst_a = worst_a.max(e);
+                    assert!(e < 2e-5, "job {case} attribute {attr} at {idx}: gpu {:?} oracle {:?}", g[attr], w[attr]);
+                }
+            }
+            assert!(g[1].iter().all(|c| c.is_finite()), "job {case}: NaN normal at {idx}");
+            if job.auto_normal && w[1] == [0.0; 4] {
+                // Exactly degenerate in f64: on the collapsed edge the control-point differences
+                // are exactly zero in f32 too, so the GPU must give GL's zero; elsewhere (a net
+                // that happens to be flat in f64) f32 rounding may leave a tiny cross product.
+                if case == collapsed_job {
+                    assert_eq!(g[1], [0.0; 4], "job {case}: GL's zero normal at {idx}");
+                    zero_normals += 1;
+                }
+                continue;
+            }
+            // Auto normals count where well conditioned (see the patch test above); evaluated
+            // normal maps and current normals always.
+            if !job.auto_normal || area[idx] > 1e-2 * scale * scale {
+                let e = (0..3).map(|c| (f64::from(g[1][c]) - w[1][c]).abs()).fold(0.0, f64::max);
+                let tol = if job.auto_normal { 2e-3 } else { 2e-5 * scale };
+                worst_n = worst_n.max(e);
+                assert!(e < tol, "job {case}: normal at {idx}: gpu {:?} oracle {:?}", g[1], w[1]);
+            }
+        }
+        offset += job.nu * job.nv;
+    }
+    assert!(zero_normals >= 7, "the collapsed edge was exercised ({zero_normals} zero normals)");
+    println!(
+        "façade GPU vs f64: {} jobs, worst position {worst_p:.2e}, attributes {worst_a:.2e}, normal {worst_n:.2e} \
+         (relative to the net's size; normals absolute); {zero_normals} zero normals",
+        jobs.len()
+    );
+}
+
+/// The GPU's index buffer draws GL's primitives: for GL_FILL exactly the triangles of Mesa's
+/// strips with their orientation and provoking vertex (rotated to come first), for GL_LINE the
+/// segments of the row and column strips.
+#[test]
+fn facade_gpu_indices_are_gls_primitives() {
+    let Some(r) = device() else { return };
+    let jobs = jobs_of(|gl| {
+        surface(gl, GL_MAP2_VERTEX_3, 3, (3, 3), [0.0, 1.0, 0.0, 1.0], 1);
+        gl.map_grid2f(5, 0.0, 1.0, 4, 0.0, 1.0);
+        gl.eval_mesh2(GL_FILL, 0, 5, 1, 4);
+        gl.eval_mesh2(GL_LINE, 1, 5, 0, 3);
+        let pts = net(3, 1, 3, 2);
+        gl.map1f(GL_MAP1_VERTEX_3, 0.0, 1.0, 3, 3, &pts);
+        gl.enable(GL_MAP1_VERTEX_3);
+        gl.map_grid1f(6, 0.0, 1.0);
+        gl.eval_mesh1(GL_LINE, 0, 6);
+    });
+    let got = evaluate_job_indices(&r, &jobs).expect("GPU indices");
+    let (mut vertex_base, mut cursor) = (0u32, 0usize);
+    for (job, mode) in &jobs {
+        let mesh = gleval::gl::GridMesh {
+            mode: *mode,
+            nu: job.nu,
+            nv: job.nv,
+            state: 0,
+            vertices: MeshVertices::Evaluated(Vec::new()),
+        };
+        // Expected primitives from the CPU path's GL order (checked against Mesa elsewhere).
+        let mut want: Vec<Vec<u32>> = Vec::new();
+        for (prim, idx) in mesh.primitives() {
+            let at = |k: usize| vertex_base + idx[k] as u32;
+            match prim {
+                GL_TRIANGLE_STRIP => {
+                    for t in 0..idx.len().saturating_sub(2) {
+                        // GL: (t, t+1, t+2), odd triangles (t+1, t, t+2); provoking t+2 first.
+                        want.push(if t % 2 == 0 {
+                            vec![at(t + 2), at(t), at(t + 1)]
+                        } else {
+                            vec![at(t + 2), at(t + 1), at(t)]
+                        });
+                    }
+                }
+                GL_LINE_STRIP => {
+                    for s in 1..idx.len() {
+                        want.push(vec![at(s), at(s - 1)]);
+                    }
+                }
+                other => panic!("unexpected primitive {other:#x}"),
+            }
+        }
+        let per = if *mode == MeshMode::Fill { 3 } else { 2 };
+        let count = want.len() * per;
+        let mut have: Vec<Vec<u32>> = got[cursor..cursor + count].chunks(per).map(<[u32]>::to_vec).collect();
+        have.sort();
+        want.sort();
+        assert_eq!(have, want, "{mode:?}");
+        cursor += count;
+        vertex_base += (job.nu * job.nv) as u32;
+    }
+    assert_eq!(cursor, got.len());
+}
+
+/// Hundreds of small NURBS patches in one frame are one dispatch: the job list the renderer
+/// packs holds them all, and the pictures agree with the CPU tessellator's (conformance).
+#[test]
+fn many_patches_make_one_batch() {
+    let jobs = jobs_of(|gl| {
+        gl.enable(GL_AUTO_NORMAL);
+        for p in 0..300 {
+            surface(gl, GL_MAP2_VERTEX_3, 3, (4, 4), [0.0, 1.0, 0.0, 1.0], p);
+            gl.map_grid2f(4, 0.0, 1.0, 4, 0.0, 1.0);
+            gl.eval_mesh2(GL_FILL, 0, 4, 0, 4);
+        }
+    });
+    let mut packed = gleval::render::mesh_gpu::PackedJobs::default();
+    for (job, mode) in &jobs {
+        packed.push(job, *mode).expect("packs");
+    }
+    assert_eq!(packed.jobs.len(), 300);
+    assert_eq!(packed.vertices, 300 * 25);
+    assert_eq!(packed.indices, 300 * 16 * 6);
+    // Prefix sums: each job starts where the previous one ends.
+    for w in packed.jobs.windows(2) {
+        assert_eq!(w[1].out_offset, w[0].out_offset + 25);
+        assert_eq!(w[1].index_offset, w[0].index_offset + 96);
+    }
+}
