@@ -7,10 +7,10 @@
 // widened as GL widens them) and, for its grid cell, the indices of GL's primitives: for
 // GL_FILL the two triangles of Mesa's strip with the provoking vertex first (so flat shading
 // picks GL's colour and the winding stays GL's), for GL_LINE the row and column segments.
-// The maths matches src/tess/grid.rs: Bernstein bases by de Casteljau's triangle, partials on
-// control-point differences (a collapsed edge gives exactly zero, hence a zero normal, never NaN).
+// The maths matches src/tess/grid.rs: Bernstein bases tabulated once per grid row and column,
+// partials on control-point differences (a collapsed edge gives exactly zero, hence a zero
+// normal, never NaN).
 
-const MAX_ORDER: u32 = 30u;
 const MAX_MAPS: u32 = 4u;
 
 // Slot numbers (gl::Slot): the offset of the target from GL_MAP*_COLOR_4.
@@ -31,8 +31,8 @@ struct MapDesc {
     uorder: u32,
     vorder: u32,
     point_offset: u32,   // first float of the control points
-    u_offset: u32,       // first of nu normalised u parameters
-    v_offset: u32,       // first of nv normalised v parameters
+    u_offset: u32,       // Bernstein table of the nu columns (2·uorder − 1 values each)
+    v_offset: u32,       // Bernstein table of the nv rows (2·vorder − 1 values each)
     _pad: u32,
 };
 
@@ -73,33 +73,12 @@ struct Vertex {
 @group(0) @binding(3) var<storage, read_write> indices: array<u32>;
 @group(0) @binding(4) var<uniform> info: Meta;
 
-// The Bernstein basis of `order` at t, by the de Casteljau triangle (stable for all t).
-fn bernstein(order: u32, t: f32) -> array<f32, 30> {
-    var b: array<f32, 30>;
-    if (order == 0u) {
-        return b;
-    }
-    let s = 1.0 - t;
-    b[0] = 1.0;
-    for (var level = 1u; level < order; level++) {
-        var saved = 0.0;
-        for (var i = 0u; i < level; i++) {
-            let v = b[i];
-            b[i] = saved + s * v;
-            saved = t * v;
-        }
-        b[level] = saved;
-    }
-    return b;
-}
-
+// Control point (i, j) of a map: its `dim` components, the rest zero (selected, not
+// multiplied, so whatever lies beyond in the buffer cannot turn into a NaN).
 fn control(m: MapDesc, i: u32, j: u32) -> vec4<f32> {
     let base = m.point_offset + (i * m.vorder + j) * m.dim;
-    var p = vec4<f32>(0.0);
-    for (var c = 0u; c < m.dim; c++) {
-        p[c] = data[base + c];
-    }
-    return p;
+    let raw = vec4<f32>(data[base], data[base + 1u], data[base + 2u], data[base + 3u]);
+    return select(vec4<f32>(0.0), raw, vec4<u32>(0u, 1u, 2u, 3u) < vec4<u32>(m.dim));
 }
 
 struct Sample {
@@ -108,42 +87,43 @@ struct Sample {
     dv: vec4<f32>,
 };
 
-// The map at its normalised (u, v), with partials when asked (derivatives of the Bernstein
-// form: (n−1)·Σ B_{n−2}·ΔP, the same sums as the CPU kernel).
-fn evaluate(m: MapDesc, u: f32, v: f32, partials: bool) -> Sample {
-    let bu = bernstein(m.uorder, u);
-    let bv = bernstein(m.vorder, v);
+// The map at grid point (i, j). The Bernstein values come from tables the CPU computed once
+// per grid column and row (in f64): at column i, `uorder` values of degree uorder−1 followed
+// by uorder−1 values of degree uorder−2 (for the derivative); rows likewise. Partials are
+// (n−1)·Σ B_{n−2}·ΔP over control-point differences, as the CPU kernel computes them, so a
+// collapsed edge gives exactly zero. No private arrays: llvmpipe and real GPUs keep it all in
+// registers.
+fn evaluate(m: MapDesc, i: u32, j: u32, partials: bool) -> Sample {
+    let ustride = 2u * m.uorder - 1u;
+    let vstride = 2u * m.vorder - 1u;
+    let bu = m.u_offset + i * ustride;
+    let bv = m.v_offset + j * vstride;
     var s: Sample;
-    if (!partials) {
-        for (var a = 0u; a < m.uorder; a++) {
-            var row = vec4<f32>(0.0);
-            for (var b = 0u; b < m.vorder; b++) {
-                row += bv[b] * control(m, a, b);
-            }
-            s.point += bu[a] * row;
-        }
-        return s;
-    }
-    let bu1 = bernstein(m.uorder - 1u, u);
-    let bv1 = bernstein(m.vorder - 1u, v);
-    var rows: array<vec4<f32>, 30>;
+    var prev_row = vec4<f32>(0.0);
     for (var a = 0u; a < m.uorder; a++) {
-        var row = vec4<f32>(0.0);
+        var prev = control(m, a, 0u);
+        var row = data[bv] * prev;
         var row_dv = vec4<f32>(0.0);
-        for (var b = 0u; b < m.vorder; b++) {
+        for (var b = 1u; b < m.vorder; b++) {
             let c = control(m, a, b);
-            row += bv[b] * c;
-            if (b + 1u < m.vorder) {
-                row_dv += bv1[b] * (control(m, a, b + 1u) - c);
+            row += data[bv + b] * c;
+            if (partials) {
+                row_dv += data[bv + m.vorder + b - 1u] * (c - prev);
+            }
+            prev = c;
+        }
+        let w = data[bu + a];
+        s.point += w * row;
+        if (partials) {
+            s.dv += w * row_dv;
+            if (a > 0u) {
+                s.du += data[bu + m.uorder + a - 1u] * (row - prev_row);
             }
         }
-        rows[a] = row;
-        s.point += bu[a] * row;
-        s.dv += bu[a] * f32(m.vorder - 1u) * row_dv;
+        prev_row = row;
     }
-    for (var a = 0u; a + 1u < m.uorder; a++) {
-        s.du += bu1[a] * f32(m.uorder - 1u) * (rows[a + 1u] - rows[a]);
-    }
+    s.du *= f32(m.uorder - 1u);
+    s.dv *= f32(m.vorder - 1u);
     return s;
 }
 
@@ -231,7 +211,8 @@ fn main(@builtin(global_invocation_id) id: vec3<u32>, @builtin(num_workgroups) g
     if (p >= info.total_points) {
         return;
     }
-    let job = jobs[find_job(p)];
+    let index = find_job(p);
+    let job = jobs[index];
     let local = p - job.out_offset;
     let i = local % job.nu;
     let j = local / job.nu;
@@ -241,10 +222,10 @@ fn main(@builtin(global_invocation_id) id: vec3<u32>, @builtin(num_workgroups) g
     out.color = job.color;
     out.tex = job.tex;
     for (var k = 0u; k < job.map_count; k++) {
-        let m = job.maps[k];
+        let m = jobs[index].maps[k];
         let is_vertex = m.slot == SLOT_VERTEX3 || m.slot == SLOT_VERTEX4;
         let normals = is_vertex && job.auto_normal != 0u;
-        let s = evaluate(m, data[m.u_offset + i], data[m.v_offset + j], normals);
+        let s = evaluate(m, i, j, normals);
         if (m.slot == SLOT_COLOR) {
             out.color = s.point;
         } else if (m.slot == SLOT_NORMAL) {

@@ -161,7 +161,8 @@ impl Renderer {
         Ok(Image { width: target.width, height: target.height, pixels })
     }
 
-    fn take_error(&self) -> Result<(), RenderError> {
+    /// The first wgpu validation or device error since the last call, if any.
+    pub fn take_error(&self) -> Result<(), RenderError> {
         match self.errors.lock().ok().and_then(|mut e| e.take()) {
             Some(e) => Err(RenderError::Gpu(e)),
             None => Ok(()),

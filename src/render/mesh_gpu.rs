@@ -39,9 +39,9 @@ pub struct GpuMapDesc {
     pub vorder: u32,
     /// First float of the control points.
     pub point_offset: u32,
-    /// First of the `nu` normalised u parameters.
+    /// First value of the u Bernstein table (`nu` columns of `2·uorder − 1` values).
     pub u_offset: u32,
-    /// First of the `nv` normalised v parameters.
+    /// First value of the v Bernstein table (`nv` rows of `2·vorder − 1` values).
     pub v_offset: u32,
     /// Padding.
     pub pad: u32,
@@ -178,8 +178,8 @@ pub fn index_count(mode: MeshMode, nu: usize, nv: usize) -> usize {
 pub struct PackedJobs {
     /// The jobs.
     pub jobs: Vec<GpuMeshJob>,
-    /// Control points and normalised parameters of every job, in one array (one storage
-    /// binding: downlevel devices allow only four per stage).
+    /// Control points and Bernstein tables of every job, in one array (one storage binding:
+    /// downlevel devices allow only four per stage).
     pub data: Vec<f32>,
     /// Total grid points (vertices).
     pub vertices: u32,
@@ -215,24 +215,58 @@ impl PackedJobs {
             if !ok || map.vs.len() != job.nv || !(1..=30).contains(&map.uorder) || !(1..=30).contains(&map.vorder) {
                 return None;
             }
+            let point_offset = u32_of(self.data.len())?;
+            self.data.extend_from_slice(&map.points[..map.uorder * map.vorder * dim]);
+            // Room for the shader's four-wide reads of the last point.
+            self.data.extend_from_slice(&[0.0; 3]);
+            let u_offset = u32_of(self.data.len())?;
+            push_basis_table(&mut self.data, map.uorder, &map.us);
+            let v_offset = u32_of(self.data.len())?;
+            push_basis_table(&mut self.data, map.vorder, &map.vs);
             *desc = GpuMapDesc {
                 slot: map.slot as u32,
                 dim: u32_of(dim)?,
                 uorder: u32_of(map.uorder)?,
                 vorder: u32_of(map.vorder)?,
-                point_offset: u32_of(self.data.len())?,
-                u_offset: u32_of(self.data.len() + map.uorder * map.vorder * dim)?,
-                v_offset: u32_of(self.data.len() + map.uorder * map.vorder * dim + map.us.len())?,
+                point_offset,
+                u_offset,
+                v_offset,
                 pad: 0,
             };
-            self.data.extend_from_slice(&map.points[..map.uorder * map.vorder * dim]);
-            self.data.extend_from_slice(&map.us);
-            self.data.extend_from_slice(&map.vs);
         }
         self.vertices = self.vertices.checked_add(u32_of(job.len())?)?;
         self.indices = self.indices.checked_add(u32_of(index_count(mode, job.nu, job.nv))?)?;
         self.jobs.push(gpu);
         Some(())
+    }
+}
+
+/// The Bernstein basis of `order` at `t` (de Casteljau's triangle, f64), into `out[..order]`.
+fn bernstein(order: usize, t: f64, out: &mut [f64; 30]) {
+    out[0] = 1.0;
+    for level in 1..order {
+        let mut saved = 0.0;
+        for i in 0..level {
+            let v = out[i];
+            out[i] = saved + (1.0 - t) * v;
+            saved = t * v;
+        }
+        out[level] = saved;
+    }
+}
+
+/// Per parameter: the `order` Bernstein values and the `order − 1` of one degree less.
+fn push_basis_table(data: &mut Vec<f32>, order: usize, params: &[f32]) {
+    let mut b = [0.0; 30];
+    data.reserve(params.len() * (2 * order - 1));
+    for &t in params {
+        let t = f64::from(t);
+        bernstein(order, t, &mut b);
+        data.extend(b[..order].iter().map(|&x| x as f32));
+        if order > 1 {
+            bernstein(order - 1, t, &mut b);
+            data.extend(b[..order - 1].iter().map(|&x| x as f32));
+        }
     }
 }
 
