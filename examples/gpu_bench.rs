@@ -77,15 +77,15 @@ fn gpu_evaluate(r: &Renderer, pipelines: &MeshPipelines, frame: &gleval::gl::Fra
     let mut packed = PackedJobs::default();
     let mut keep = Vec::new();
     for mesh in &frame.meshes {
-        let MeshVertices::Deferred(job) = &mesh.vertices else { continue };
-        let extra = (job.nu * job.nv) as u64;
+        let MeshVertices::Deferred(_) = &mesh.vertices else { continue };
+        let extra = (mesh.nu * mesh.nv) as u64;
         if !packed.jobs.is_empty() && !MeshPipelines::fits(&r.device, u64::from(packed.vertices) + extra, 0) {
-            keep.push(pipelines.evaluate(&r.device, &mut encoder, &packed));
+            keep.push(pipelines.evaluate(&r.device, &r.queue, &mut encoder, &packed));
             packed = PackedJobs::default();
         }
-        packed.push(job, mesh.mode).expect("valid job");
+        packed.push_mesh(mesh).expect("valid mesh");
     }
-    keep.push(pipelines.evaluate(&r.device, &mut encoder, &packed));
+    keep.push(pipelines.evaluate(&r.device, &r.queue, &mut encoder, &packed));
     let submission = r.queue.submit([encoder.finish()]);
     let waited = r.device.poll(wgpu::PollType::Wait { submission_index: Some(submission), timeout: None });
     if let Err(e) = r.take_error() {

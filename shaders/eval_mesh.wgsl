@@ -21,9 +21,11 @@ const SLOT_TEX4: u32 = 6u;
 const SLOT_VERTEX3: u32 = 7u;
 const SLOT_VERTEX4: u32 = 8u;
 
-// Mesh modes (gl::MeshMode): points, curve lines, surface lines, fill.
+// Mesh modes (gl::MeshMode): points, curve lines, surface lines, fill; and scattered points
+// (GLU's trimmed surfaces: point k at row k of both tables, triangles supplied by the CPU).
 const MODE_POINTS: u32 = 0u;
 const MODE_FILL: u32 = 3u;
+const MODE_SCATTERED: u32 = 4u;
 
 struct MapDesc {
     slot: u32,
@@ -214,8 +216,12 @@ fn main(@builtin(global_invocation_id) id: vec3<u32>, @builtin(num_workgroups) g
     let index = find_job(p);
     let job = jobs[index];
     let local = p - job.out_offset;
-    let i = local % job.nu;
-    let j = local / job.nu;
+    var i = local % job.nu;
+    var j = local / job.nu;
+    if (job.mode == MODE_SCATTERED) {
+        i = local;
+        j = local;
+    }
     var out: Vertex;
     out.position = vec4<f32>(0.0, 0.0, 0.0, 1.0);
     out.normal = job.normal;
@@ -244,7 +250,7 @@ fn main(@builtin(global_invocation_id) id: vec3<u32>, @builtin(num_workgroups) g
     vertices[p] = out;
     if (job.mode == MODE_FILL) {
         write_cell(job, i, j);
-    } else if (job.mode != MODE_POINTS) {
+    } else if (job.mode != MODE_POINTS && job.mode != MODE_SCATTERED) {
         write_segments(job, i, j);
     }
 }

@@ -133,6 +133,8 @@ pub enum MeshMode {
     SurfaceLines,
     /// `GL_FILL`: a `GL_TRIANGLE_STRIP` per pair of rows.
     Fill,
+    /// `GL_TRIANGLES` over [`GridMesh::triangles`] (GLU's trimmed surfaces).
+    Triangles,
 }
 
 /// A grid's vertices: evaluated on the CPU, or left for the GPU to evaluate at draw time.
@@ -140,8 +142,9 @@ pub enum MeshMode {
 pub enum MeshVertices {
     /// `nu · nv` vertices, v outer.
     Evaluated(Vec<Vertex>),
-    /// The maps and parameters, evaluated by the GPU tessellator when the frame is drawn.
-    Deferred(Box<super::MeshJob>),
+    /// The maps and parameters, evaluated by the GPU tessellator when the frame is drawn: one
+    /// job for a grid, one per Bezier piece for scattered points (outputs concatenated).
+    Deferred(Vec<super::MeshJob>),
 }
 
 /// One `glEvalMesh1`/`glEvalMesh2` call.
@@ -157,6 +160,8 @@ pub struct GridMesh {
     pub state: usize,
     /// Its vertices.
     pub vertices: MeshVertices,
+    /// For [`MeshMode::Triangles`]: three vertex indices per triangle (else empty).
+    pub triangles: Vec<u32>,
 }
 
 impl GridMesh {
@@ -165,7 +170,7 @@ impl GridMesh {
     pub fn evaluated(&self) -> std::borrow::Cow<'_, [Vertex]> {
         match &self.vertices {
             MeshVertices::Evaluated(v) => std::borrow::Cow::Borrowed(v),
-            MeshVertices::Deferred(job) => std::borrow::Cow::Owned(job.evaluate()),
+            MeshVertices::Deferred(jobs) => std::borrow::Cow::Owned(jobs.iter().flat_map(|j| j.evaluate()).collect()),
         }
     }
 
@@ -182,6 +187,7 @@ impl GridMesh {
                 let columns = (0..nu).map(|i| (GL_LINE_STRIP, (0..nv).map(|j| j * nu + i).collect()));
                 rows.chain(columns).collect()
             }
+            MeshMode::Triangles => vec![(GL_TRIANGLES, self.triangles.iter().map(|&i| i as usize).collect())],
             MeshMode::Fill => (0..nv.saturating_sub(1))
                 .map(|j| (GL_TRIANGLE_STRIP, (0..nu).flat_map(|i| [j * nu + i, (j + 1) * nu + i]).collect()))
                 .collect(),

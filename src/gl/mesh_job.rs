@@ -43,8 +43,10 @@ pub struct MeshJob {
     pub template: Vertex,
     /// Grid points along u.
     pub nu: usize,
-    /// Grid points along v (1 for `glEvalMesh1`).
+    /// Grid points along v (1 for `glEvalMesh1` and for scattered points).
     pub nv: usize,
+    /// Scattered points: point k is (`us[k]`, `vs[k]`) of each map, not a grid (`nv` = 1).
+    pub scattered: bool,
 }
 
 impl MeshJob {
@@ -63,6 +65,9 @@ impl MeshJob {
     /// The vertices of the grid on the CPU, v outer.
     #[must_use]
     pub fn evaluate(&self) -> Vec<Vertex> {
+        if self.scattered {
+            return self.evaluate_scattered();
+        }
         let mut out = vec![self.template; self.len()];
         let mut grid = Grid2::default();
         let mut values = Vec::new();
@@ -86,5 +91,25 @@ impl MeshJob {
             }
         }
         out
+    }
+
+    /// Scattered points, each evaluated alone (the CPU oracle of GLU's trimmed surfaces).
+    fn evaluate_scattered(&self) -> Vec<Vertex> {
+        (0..self.nu)
+            .map(|k| {
+                let point = MeshJob {
+                    maps: self
+                        .maps
+                        .iter()
+                        .map(|m| MapSample { us: vec![m.us[k]], vs: vec![m.vs[k]], ..m.clone() })
+                        .collect(),
+                    nu: 1,
+                    nv: 1,
+                    scattered: false,
+                    ..self.clone()
+                };
+                point.evaluate()[0]
+            })
+            .collect()
     }
 }

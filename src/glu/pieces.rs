@@ -87,7 +87,7 @@ impl SurfacePatches {
 }
 
 /// The interval holding `u` (clamped to the ends, with a little tolerance).
-fn locate(intervals: &[(f64, f64)], u: f64) -> Option<usize> {
+pub(crate) fn locate(intervals: &[(f64, f64)], u: f64) -> Option<usize> {
     if !u.is_finite() || intervals.is_empty() {
         return None;
     }

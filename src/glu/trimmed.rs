@@ -5,10 +5,12 @@
 use super::consts::*;
 use super::draw::{emit_vertex, surface_normal, trim_polylines, PatchGrid, Surface};
 use super::nurbs::{NurbsObject, TrimPiece};
+use super::pieces::locate;
 use super::sampling::Sampler;
 use crate::gl::consts::*;
-use crate::gl::{Gl, Slot};
+use crate::gl::{Gl, MapSample, MapTarget, MeshJob, MeshMode, Slot, Tessellator};
 use crate::tess::trim::{join_curves, triangulate, TrimLoop};
+use std::collections::BTreeMap;
 
 /// Grid lines of every patch at its sampling density, merged over the whole domain.
 fn grid_lines(steps: &[PatchGrid]) -> (Vec<f64>, Vec<f64>) {
@@ -82,6 +84,10 @@ pub(crate) fn draw_trimmed(
     } else {
         gl.polygon_mode(GL_FRONT_AND_BACK, GL_FILL);
     }
+    if gl.tessellator() == Tessellator::Gpu && obj.props.display_mode == GLU_FILL && gl.gpu_draws(MeshMode::Triangles) {
+        record_on_gpu(gl, surface, &mesh.points, &mesh.triangles);
+        return gl.restore_polygon_mode(saved_mode);
+    }
     gl.begin(GL_TRIANGLES);
     for tri in &mesh.triangles {
         for &i in tri {
@@ -91,6 +97,46 @@ pub(crate) fn draw_trimmed(
     }
     gl.end();
     gl.restore_polygon_mode(saved_mode);
+}
+
+/// The GPU tessellator's trimmed surface: the triangulation's (u, v) points grouped by the
+/// Bezier piece they lie on, one scattered job per piece (its control points and the points'
+/// parameters normalised to it), drawn as GL_TRIANGLES over the triangulation.
+fn record_on_gpu(gl: &mut Gl, surface: &Surface, points: &[[f64; 2]], triangles: &[[u32; 3]]) {
+    let p = &surface.pos.patches;
+    let mut pieces: BTreeMap<(usize, usize), Vec<usize>> = BTreeMap::new();
+    for (k, &[u, v]) in points.iter().enumerate() {
+        let (Some(a), Some(b)) = (locate(&p.uintervals, u), locate(&p.vintervals, v)) else { return };
+        pieces.entry((a, b)).or_default().push(k);
+    }
+    let template = gl.current_vertex([0.0, 0.0, 0.0, 1.0]);
+    let mut renumbered = vec![0u32; points.len()];
+    let mut jobs = Vec::with_capacity(pieces.len());
+    for ((a, b), members) in pieces {
+        let (u, v) = (p.uintervals[a], p.vintervals[b]);
+        let mut maps = Vec::new();
+        for map in surface.attributes.iter().chain([&surface.pos]) {
+            let (Some(target), Some(control)) = (MapTarget::from_enum(map.target), map.on(u, v)) else { continue };
+            let slot = target.slot;
+            let norm = |x: f64, (x0, x1): (f64, f64)| ((x - x0) / (x1 - x0)) as f32;
+            maps.push(MapSample {
+                slot,
+                uorder: map.patches.uorder,
+                vorder: map.patches.vorder,
+                points: control.iter().map(|&c| c as f32).collect(),
+                us: members.iter().map(|&k| norm(points[k][0], u)).collect(),
+                vs: members.iter().map(|&k| norm(points[k][1], v)).collect(),
+            });
+        }
+        let first: usize = jobs.iter().map(MeshJob::len).sum();
+        for (n, &k) in members.iter().enumerate() {
+            renumbered[k] = (first + n) as u32;
+        }
+        let nu = members.len();
+        jobs.push(MeshJob { maps, auto_normal: gl.eval.auto_normal, template, nu, nv: 1, scattered: true });
+    }
+    let triangles = triangles.iter().flat_map(|t| t.map(|i| renumbered[i as usize])).collect();
+    gl.record_scattered_mesh(jobs, triangles);
 }
 
 /// `GLU_OUTLINE_PATCH` of a trimmed surface: the trim loops drawn on the surface.

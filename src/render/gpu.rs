@@ -185,7 +185,7 @@ impl Renderer {
         let list = assemble_frame(frame, &on_gpu);
         let prepared = (!on_gpu.is_empty()).then(|| {
             let meshes = self.meshes.get_or_insert_with(|| MeshPipelines::new(&self.device));
-            let prepared = meshes.prepare(&self.device, encoder, frame, &on_gpu, size);
+            let prepared = meshes.prepare(&self.device, &self.queue, encoder, frame, &on_gpu, size);
             meshes.ensure_pipelines(&self.device, frame, &prepared, format);
             prepared
         });

@@ -153,12 +153,16 @@ pub struct GpuDraw {
     pub lights: [GpuLight; 8],
 }
 
-fn mode_number(mode: MeshMode) -> u32 {
+/// The mode number a job carries (the shader's `MODE_*` constants).
+#[must_use]
+pub fn mode_number(mode: MeshMode) -> u32 {
     match mode {
         MeshMode::Points => 0,
         MeshMode::CurveLines => 1,
         MeshMode::SurfaceLines => 2,
         MeshMode::Fill => 3,
+        // Scattered points: the CPU supplies the triangles.
+        MeshMode::Triangles => 4,
     }
 }
 
@@ -167,7 +171,7 @@ fn mode_number(mode: MeshMode) -> u32 {
 pub fn index_count(mode: MeshMode, nu: usize, nv: usize) -> usize {
     let (cu, cv) = (nu.saturating_sub(1), nv.saturating_sub(1));
     match mode {
-        MeshMode::Points => 0,
+        MeshMode::Points | MeshMode::Triangles => 0,
         MeshMode::Fill => 6 * cu * cv,
         MeshMode::CurveLines | MeshMode::SurfaceLines => 2 * (nv * cu + nu * cv),
     }
@@ -185,14 +189,38 @@ pub struct PackedJobs {
     pub vertices: u32,
     /// Total indices.
     pub indices: u32,
+    /// Index-buffer ranges the CPU fills (first index, values): GLU's trimmed triangles.
+    pub explicit: Vec<(u32, Vec<u32>)>,
 }
 
 impl PackedJobs {
+    /// Appends every job of a deferred mesh; scattered meshes bring their triangles, renumbered
+    /// to the packed vertices and rotated so that GL's provoking (last) vertex comes first.
+    pub fn push_mesh(&mut self, mesh: &GridMesh) -> Option<()> {
+        let MeshVertices::Deferred(jobs) = &mesh.vertices else { return None };
+        let base = self.vertices;
+        for job in jobs {
+            self.push(job, mesh.mode)?;
+        }
+        if mesh.mode == MeshMode::Triangles {
+            let count = u32::try_from(mesh.triangles.len()).ok()?;
+            let total = self.vertices - base;
+            if mesh.triangles.iter().any(|&i| i >= total) {
+                return None;
+            }
+            let rotated =
+                mesh.triangles.chunks_exact(3).flat_map(|t| [t[2] + base, t[0] + base, t[1] + base]).collect();
+            self.explicit.push((self.indices, rotated));
+            self.indices = self.indices.checked_add(count)?;
+        }
+        Some(())
+    }
+
     /// Appends a job (`mode` decides its indices); `None` if 32-bit offsets overflow or the job
     /// is malformed (more than four maps, or parameter lists of the wrong length).
     pub fn push(&mut self, job: &MeshJob, mode: MeshMode) -> Option<()> {
         let u32_of = |v: usize| u32::try_from(v).ok();
-        if job.maps.len() > 4 || job.is_empty() {
+        if job.maps.len() > 4 || job.is_empty() || job.scattered != (mode == MeshMode::Triangles) {
             return None;
         }
         let mut gpu = GpuMeshJob {
@@ -212,7 +240,8 @@ impl PackedJobs {
         for (desc, map) in gpu.maps.iter_mut().zip(&job.maps) {
             let dim = map.slot.components();
             let ok = map.points.len() >= map.uorder * map.vorder * dim && map.us.len() == job.nu;
-            if !ok || map.vs.len() != job.nv || !(1..=30).contains(&map.uorder) || !(1..=30).contains(&map.vorder) {
+            let rows = if job.scattered { job.nu } else { job.nv };
+            if !ok || map.vs.len() != rows || !(1..=30).contains(&map.uorder) || !(1..=30).contains(&map.vorder) {
                 return None;
             }
             let point_offset = u32_of(self.data.len())?;
@@ -370,6 +399,7 @@ impl MeshPipelines {
     pub fn evaluate(
         &self,
         device: &wgpu::Device,
+        queue: &wgpu::Queue,
         encoder: &mut wgpu::CommandEncoder,
         packed: &PackedJobs,
     ) -> EvaluatedMeshes {
@@ -396,9 +426,16 @@ impl MeshPipelines {
         let indices = device.create_buffer(&wgpu::BufferDescriptor {
             label: Some("mesh indices"),
             size: (u64::from(packed.indices) * 4).max(16),
-            usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::INDEX | wgpu::BufferUsages::COPY_SRC,
+            usage: wgpu::BufferUsages::STORAGE
+                | wgpu::BufferUsages::INDEX
+                | wgpu::BufferUsages::COPY_SRC
+                | wgpu::BufferUsages::COPY_DST,
             mapped_at_creation: false,
         });
+        // Trimmed triangles come from the CPU triangulation; the shader writes the rest.
+        for (first, values) in &packed.explicit {
+            queue.write_buffer(&indices, u64::from(*first) * 4, bytemuck::cast_slice(values));
+        }
         let bind = device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("eval_mesh"),
             layout: &self.compute_layout,
@@ -571,7 +608,7 @@ fn topology_of(mode: MeshMode) -> Topology {
     match mode {
         MeshMode::Points => Topology::Points,
         MeshMode::CurveLines | MeshMode::SurfaceLines => Topology::Lines,
-        MeshMode::Fill => Topology::Triangles,
+        MeshMode::Fill | MeshMode::Triangles => Topology::Triangles,
     }
 }
 
@@ -584,7 +621,8 @@ pub(crate) fn gpu_mesh_indices(device: &wgpu::Device, frame: &Frame) -> Vec<usiz
         if !matches!(mesh.vertices, MeshVertices::Deferred(_)) {
             continue;
         }
-        let (v, n) = (mesh.nu as u64 * mesh.nv as u64, index_count(mesh.mode, mesh.nu, mesh.nv) as u64);
+        let n = index_count(mesh.mode, mesh.nu, mesh.nv) + mesh.triangles.len();
+        let (v, n) = (mesh.nu as u64 * mesh.nv as u64, n as u64);
         if MeshPipelines::fits(device, vertices + v, indices + n) {
             vertices += v;
             indices += n;
@@ -599,6 +637,7 @@ impl MeshPipelines {
     pub(crate) fn prepare(
         &self,
         device: &wgpu::Device,
+        queue: &wgpu::Queue,
         encoder: &mut wgpu::CommandEncoder,
         frame: &Frame,
         which: &[usize],
@@ -611,14 +650,13 @@ impl MeshPipelines {
         let mut draws = HashMap::new();
         for &i in which {
             let mesh: &GridMesh = &frame.meshes[i];
-            let MeshVertices::Deferred(job) = &mesh.vertices else { continue };
             let Some(state) = frame.states.get(mesh.state) else { continue };
             let (first_vertex, first_index) = (packed.vertices, packed.indices);
-            if packed.push(job, mesh.mode).is_none() {
+            if packed.push_mesh(mesh).is_none() {
                 continue;
             }
             let uniform_offset = uniforms.len() as u32;
-            let draw = draw_uniform(state, mesh.mode == MeshMode::Fill, size);
+            let draw = draw_uniform(state, matches!(mesh.mode, MeshMode::Fill | MeshMode::Triangles), size);
             uniforms.extend_from_slice(bytemuck::bytes_of(&draw));
             uniforms.resize((uniform_offset + stride) as usize, 0);
             draws.insert(
@@ -635,7 +673,7 @@ impl MeshPipelines {
             );
         }
         uniforms.resize(uniforms.len().max(stride as usize), 0);
-        let buffers = self.evaluate(device, encoder, &packed);
+        let buffers = self.evaluate(device, queue, encoder, &packed);
         let uniforms = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
             label: Some("mesh draws"),
             contents: &uniforms,
@@ -731,7 +769,7 @@ pub fn evaluate_jobs(
     }
     let pipelines = MeshPipelines::new(device);
     let mut encoder = device.create_command_encoder(&Default::default());
-    let out = pipelines.evaluate(device, &mut encoder, &packed);
+    let out = pipelines.evaluate(device, &renderer.queue, &mut encoder, &packed);
     let bytes = u64::from(packed.vertices) * VERTEX_BYTES;
     let data = super::gpu::read_buffer(renderer, encoder, &out.vertices, bytes)?;
     Ok(bytemuck::cast_slice::<u8, [[f32; 4]; 4]>(&data).to_vec())
@@ -749,7 +787,7 @@ pub fn evaluate_job_indices(
     let device = &renderer.device;
     let pipelines = MeshPipelines::new(device);
     let mut encoder = device.create_command_encoder(&Default::default());
-    let out = pipelines.evaluate(device, &mut encoder, &packed);
+    let out = pipelines.evaluate(device, &renderer.queue, &mut encoder, &packed);
     let data = super::gpu::read_buffer(renderer, encoder, &out.indices, u64::from(packed.indices) * 4)?;
     Ok(bytemuck::cast_slice::<u8, u32>(&data).to_vec())
 }

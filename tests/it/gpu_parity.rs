@@ -190,7 +190,7 @@ fn jobs_of(setup: impl FnOnce(&mut Gl)) -> Vec<(MeshJob, MeshMode)> {
         .meshes
         .into_iter()
         .map(|m| match m.vertices {
-            MeshVertices::Deferred(job) => (*job, m.mode),
+            MeshVertices::Deferred(mut jobs) => (jobs.remove(0), m.mode),
             MeshVertices::Evaluated(_) => panic!("mesh evaluated on the CPU under the GPU tessellator"),
         })
         .collect()
@@ -335,6 +335,7 @@ fn facade_gpu_indices_are_gls_primitives() {
             nv: job.nv,
             state: 0,
             vertices: MeshVertices::Evaluated(Vec::new()),
+            triangles: Vec::new(),
         };
         // Expected primitives from the CPU path's GL order (checked against Mesa elsewhere).
         let mut want: Vec<Vec<u32>> = Vec::new();
@@ -395,4 +396,76 @@ fn many_patches_make_one_batch() {
         assert_eq!(w[1].out_offset, w[0].out_offset + 25);
         assert_eq!(w[1].index_offset, w[0].index_offset + 96);
     }
+}
+
+/// A rational bicubic NURBS of 6 × 6 points (3 × 3 Bezier pieces) with a square hole, drawn
+/// through GLU on the given tessellator.
+fn trimmed_nurbs(tessellator: Tessellator) -> Gl {
+    let mut gl = Gl::new(64, 64);
+    gl.set_tessellator(tessellator);
+    gl.enable(GL_AUTO_NORMAL);
+    let nurb = gl.glu_new_nurbs_renderer();
+    gl.glu_nurbs_property(nurb, GLU_SAMPLING_METHOD, GLU_DOMAIN_DISTANCE as f32);
+    gl.glu_nurbs_property(nurb, GLU_U_STEP, 5.0);
+    gl.glu_nurbs_property(nurb, GLU_V_STEP, 4.0);
+    let knots = [0.0, 0.0, 0.0, 0.0, 1.0, 2.0, 3.0, 3.0, 3.0, 3.0];
+    let mut ctl = Vec::new();
+    for u in 0..6 {
+        for v in 0..6 {
+            let w = 1.0 + 0.25 * ((u * 7 + v * 3) % 4) as f32;
+            let z = ((u * 5 + v * 11) % 7) as f32 * 0.2 - 0.6;
+            ctl.extend_from_slice(&[u as f32 * 0.4 * w, v as f32 * 0.4 * w, z * w, w]);
+        }
+    }
+    let outer: [f32; 10] = [0.0, 0.0, 3.0, 0.0, 3.0, 3.0, 0.0, 3.0, 0.0, 0.0];
+    let hole: [f32; 10] = [1.2, 1.1, 1.2, 1.9, 1.8, 1.9, 1.8, 1.1, 1.2, 1.1];
+    gl.glu_begin_surface(nurb);
+    gl.glu_nurbs_surface(nurb, 10, &knots, 10, &knots, 24, 4, &ctl, 4, 4, GL_MAP2_VERTEX_4);
+    gl.glu_begin_trim(nurb);
+    gl.glu_pwl_curve(nurb, 5, &outer, 2, GLU_MAP1_TRIM_2);
+    gl.glu_end_trim(nurb);
+    gl.glu_begin_trim(nurb);
+    gl.glu_pwl_curve(nurb, 5, &hole, 2, GLU_MAP1_TRIM_2);
+    gl.glu_end_trim(nurb);
+    gl.glu_end_surface(nurb);
+    assert_eq!(gl.get_error(), GL_NO_ERROR);
+    gl
+}
+
+/// GLU's trimmed surfaces on the GPU tessellator: the triangulation's (u, v) points are
+/// evaluated per Bezier piece on the GPU, and the triangles drawn are the CPU tessellator's
+/// triangles, vertex for vertex (positions within 2e-5 of the net's size, normals within 2e-3).
+#[test]
+fn trimmed_surface_points_on_the_gpu_match_the_cpu_triangles() {
+    let Some(r) = device() else { return };
+    let cpu = trimmed_nurbs(Tessellator::Cpu).frame().expanded();
+    let gpu_gl = trimmed_nurbs(Tessellator::Gpu);
+    let mesh =
+        gpu_gl.frame().meshes.iter().find(|m| m.mode == MeshMode::Triangles).expect("a trimmed GPU mesh").clone();
+    let MeshVertices::Deferred(jobs) = &mesh.vertices else { panic!("deferred") };
+    assert_eq!(jobs.len(), 9, "the surface spans 3 x 3 Bezier pieces");
+    let pairs: Vec<(MeshJob, MeshMode)> = jobs.iter().map(|j| (j.clone(), MeshMode::Triangles)).collect();
+    let got = evaluate_jobs(&r, &pairs).expect("GPU evaluation");
+    let triangles: Vec<&[gleval::gl::Vertex]> =
+        cpu.iter().filter(|(p, _)| p.mode == GL_TRIANGLES).map(|(_, v)| v).collect();
+    let cpu_vertices: Vec<gleval::gl::Vertex> = triangles.concat();
+    assert_eq!(cpu_vertices.len(), mesh.triangles.len(), "same triangles");
+    let scale = jobs.iter().flat_map(|j| &j.maps).flat_map(|m| &m.points).fold(1.0f32, |m, &x| m.max(x.abs()));
+    let (mut worst_p, mut worst_n) = (0.0f32, 0.0f32);
+    for (c, &index) in cpu_vertices.iter().zip(&mesh.triangles) {
+        let g = got[index as usize];
+        for k in 0..4 {
+            let e = (g[0][k] - c.position[k]).abs() / scale;
+            worst_p = worst_p.max(e);
+            assert!(e < 2e-5, "position {index}: gpu {:?} cpu {:?}", g[0], c.position);
+        }
+        let e = (0..3).map(|k| (g[1][k] - c.normal[k]).abs()).fold(0.0, f32::max);
+        worst_n = worst_n.max(e);
+        assert!(e < 2e-3, "normal {index}: gpu {:?} cpu {:?}", g[1], c.normal);
+    }
+    println!(
+        "trimmed on the GPU: {} pieces, {} triangles, worst position {worst_p:.2e}, normal {worst_n:.2e}",
+        jobs.len(),
+        mesh.triangles.len() / 3
+    );
 }

@@ -178,8 +178,11 @@ fn shader_constants_match_the_enums() {
     assert_eq!(value("SLOT_TEX4"), Slot::TexCoord4 as u32);
     assert_eq!(value("SLOT_VERTEX3"), Slot::Vertex3 as u32);
     assert_eq!(value("SLOT_VERTEX4"), Slot::Vertex4 as u32);
-    assert_eq!(value("MODE_POINTS"), 0);
-    assert_eq!(value("MODE_FILL"), 3);
+    use gleval::gl::MeshMode;
+    use gleval::render::mesh_gpu::mode_number;
+    assert_eq!(value("MODE_POINTS"), mode_number(MeshMode::Points));
+    assert_eq!(value("MODE_FILL"), mode_number(MeshMode::Fill));
+    assert_eq!(value("MODE_SCATTERED"), mode_number(MeshMode::Triangles));
 }
 
 #[cfg(feature = "gpu")]

@@ -54,7 +54,7 @@ impl Gl {
             })
             .collect();
         let template = self.current_vertex([0.0, 0.0, 0.0, 1.0]);
-        let job = MeshJob { maps, auto_normal: false, template, nu: n, nv: 1 };
+        let job = MeshJob { maps, auto_normal: false, template, nu: n, nv: 1, scattered: false };
         self.record_mesh(mesh_mode, job);
     }
 
@@ -102,7 +102,7 @@ impl Gl {
             })
             .collect();
         let template = self.current_vertex([0.0, 0.0, 0.0, 1.0]);
-        let job = MeshJob { maps, auto_normal: self.eval.auto_normal, template, nu, nv };
+        let job = MeshJob { maps, auto_normal: self.eval.auto_normal, template, nu, nv, scattered: false };
         self.record_mesh(mesh_mode, job);
     }
 
@@ -119,12 +119,24 @@ impl Gl {
     fn record_mesh(&mut self, mode: MeshMode, job: MeshJob) {
         let (nu, nv) = (job.nu, job.nv);
         let vertices = if self.tessellator == Tessellator::Gpu && self.gpu_draws(mode) {
-            MeshVertices::Deferred(Box::new(job))
+            MeshVertices::Deferred(vec![job])
         } else {
             MeshVertices::Evaluated(job.evaluate())
         };
         let state = self.current_state_index();
-        self.frame.meshes.push(GridMesh { mode, nu, nv, state, vertices });
+        self.frame.meshes.push(GridMesh { mode, nu, nv, state, vertices, triangles: Vec::new() });
+        let index = self.frame.meshes.len() - 1;
+        self.frame.commands.push(Command::Mesh(index));
+    }
+
+    /// Records triangles over points evaluated by `jobs` (scattered (u, v) points, one job per
+    /// Bezier piece, outputs concatenated): GLU's trimmed surfaces on the GPU tessellator.
+    /// `triangles` index the concatenated points, GL_TRIANGLES order.
+    pub(crate) fn record_scattered_mesh(&mut self, jobs: Vec<MeshJob>, triangles: Vec<u32>) {
+        let nu = jobs.iter().map(MeshJob::len).sum();
+        let state = self.current_state_index();
+        let vertices = MeshVertices::Deferred(jobs);
+        self.frame.meshes.push(GridMesh { mode: MeshMode::Triangles, nu, nv: 1, state, vertices, triangles });
         let index = self.frame.meshes.len() - 1;
         self.frame.commands.push(Command::Mesh(index));
     }
@@ -132,10 +144,10 @@ impl Gl {
     /// Whether the GPU mesh pipeline draws `mode` in the current state exactly as GL does:
     /// filled polygons (both faces `GL_FILL`), one-pixel lines and one-pixel points. GL's wide
     /// lines, large points and polygon-mode edges are built on the CPU, so such meshes are too.
-    fn gpu_draws(&self, mode: MeshMode) -> bool {
+    pub(crate) fn gpu_draws(&self, mode: MeshMode) -> bool {
         let r = &self.raster;
         match mode {
-            MeshMode::Fill => r.polygon_mode == [GL_FILL, GL_FILL],
+            MeshMode::Fill | MeshMode::Triangles => r.polygon_mode == [GL_FILL, GL_FILL],
             MeshMode::CurveLines | MeshMode::SurfaceLines => r.line_width.round() <= 1.0,
             MeshMode::Points => r.point_size.round() <= 1.0,
         }
