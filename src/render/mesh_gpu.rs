@@ -10,7 +10,9 @@
 use super::assemble::Topology;
 use crate::gl::consts::*;
 use crate::gl::types::GLenum;
-use crate::gl::{DrawState, Frame, GridMesh, Light, Material, MeshJob, MeshMode, MeshVertices};
+use crate::gl::{DrawState, Frame, GridMesh, Light, MapSample, Material, MeshJob, MeshMode, MeshVertices, Slot};
+use crate::math::BezierPatch;
+use crate::tess::{Mesh, MeshError};
 use glam::{Mat3, Mat4};
 use std::collections::HashMap;
 use wgpu::util::DeviceExt;
@@ -790,4 +792,65 @@ pub fn evaluate_job_indices(
     let out = pipelines.evaluate(device, &renderer.queue, &mut encoder, &packed);
     let data = super::gpu::read_buffer(renderer, encoder, &out.indices, u64::from(packed.indices) * 4)?;
     Ok(bytemuck::cast_slice::<u8, u32>(&data).to_vec())
+}
+
+/// The typed API on the GPU tessellator: each patch over a uniform `segments_u` × `segments_v`
+/// grid of its unit domain, all patches in one dispatch, read back as one [`Mesh`] with the
+/// layout of [`BezierPatch::tessellate`] (the CPU back end): positions divided by w, unit
+/// normals (zero where degenerate), (u, v) texture coordinates, counter-clockwise triangles.
+pub fn tessellate_patches(
+    renderer: &super::Renderer,
+    patches: &[BezierPatch<f64>],
+    segments_u: usize,
+    segments_v: usize,
+) -> Result<Mesh, super::RenderError> {
+    let bad = |why: String| super::RenderError::Gpu(why);
+    if segments_u == 0 || segments_v == 0 {
+        return Err(bad(MeshError::EmptyGrid.to_string()));
+    }
+    let (nu, nv) = (segments_u + 1, segments_v + 1);
+    let us: Vec<f32> = (0..nu).map(|i| (i as f64 / segments_u as f64) as f32).collect();
+    let vs: Vec<f32> = (0..nv).map(|j| (j as f64 / segments_v as f64) as f32).collect();
+    let mut jobs = Vec::with_capacity(patches.len());
+    for patch in patches {
+        let slot = match patch.dim {
+            3 => Slot::Vertex3,
+            4 => Slot::Vertex4,
+            d => return Err(bad(format!("a surface needs 3 or 4 components per point, not {d}"))),
+        };
+        let map = MapSample {
+            slot,
+            uorder: patch.uorder,
+            vorder: patch.vorder,
+            points: patch.points.iter().map(|&c| c as f32).collect(),
+            us: us.clone(),
+            vs: vs.clone(),
+        };
+        let job = MeshJob {
+            maps: vec![map],
+            auto_normal: true,
+            template: crate::gl::Vertex::default(),
+            nu,
+            nv,
+            scattered: false,
+        };
+        jobs.push((job, MeshMode::Fill));
+    }
+    let vertices = evaluate_jobs(renderer, &jobs)?;
+    let indices = evaluate_job_indices(renderer, &jobs)?;
+    let mut mesh = Mesh {
+        positions: Vec::with_capacity(vertices.len()),
+        normals: Vec::with_capacity(vertices.len()),
+        tex_coords: Vec::with_capacity(vertices.len()),
+        indices: Vec::with_capacity(indices.len()),
+    };
+    for (k, [p, n, _, _]) in vertices.iter().enumerate() {
+        let local = k % (nu * nv);
+        mesh.positions.push([p[0] / p[3], p[1] / p[3], p[2] / p[3]]);
+        mesh.normals.push([n[0], n[1], n[2]]);
+        mesh.tex_coords.push([us[local % nu], vs[local / nu]]);
+    }
+    // GL's strips run clockwise in (u, v) (their faces point against du × dv): reverse them.
+    mesh.indices.extend(indices.chunks_exact(3).flat_map(|t| [t[0], t[2], t[1]]));
+    Ok(mesh)
 }

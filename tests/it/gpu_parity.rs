@@ -469,3 +469,60 @@ fn trimmed_surface_points_on_the_gpu_match_the_cpu_triangles() {
         mesh.triangles.len() / 3
     );
 }
+
+/// The typed API's two back ends agree: `BezierPatch::tessellate` (CPU, f64) and
+/// `mesh_gpu::tessellate_patches` (one dispatch for all patches): same vertices, normals and
+/// texture coordinates, same triangles up to where each starts.
+#[test]
+fn typed_mesh_gpu_matches_cpu() {
+    use gleval::math::BezierPatch;
+    let Some(r) = device() else { return };
+    let patches: Vec<BezierPatch<f64>> = [(4, 4, 3), (3, 5, 4), (6, 2, 3)]
+        .iter()
+        .enumerate()
+        .map(|(s, &(uo, vo, k))| {
+            BezierPatch::try_new(k, uo, vo, net(uo, vo, k, s + 2).iter().map(|&x| f64::from(x)).collect()).unwrap()
+        })
+        .collect();
+    let gpu = gleval::render::mesh_gpu::tessellate_patches(&r, &patches, 7, 5).expect("GPU mesh");
+    let mut cpu = gleval::tess::Mesh::default();
+    for p in &patches {
+        cpu.append(&p.tessellate(7, 5).unwrap());
+    }
+    assert_eq!(gpu.positions.len(), cpu.positions.len());
+    assert_eq!(gpu.tex_coords, cpu.tex_coords);
+    for (g, c) in gpu.positions.iter().zip(&cpu.positions) {
+        assert!((0..3).all(|k| (g[k] - c[k]).abs() < 2e-5 * c[k].abs().max(1.0)), "{g:?} vs {c:?}");
+    }
+    for (g, c) in gpu.normals.iter().zip(&cpu.normals) {
+        assert!((0..3).all(|k| (g[k] - c[k]).abs() < 2e-3), "{g:?} vs {c:?}");
+    }
+    // GL's strips split each cell along the other diagonal than the CPU mesh; what must agree
+    // is each cell's orientation: the summed vector area of its two triangles.
+    let cell_areas = |m: &gleval::tess::Mesh| {
+        let mut cells = std::collections::HashMap::new();
+        for t in m.indices.chunks_exact(3) {
+            let [a, b, c] = [t[0], t[1], t[2]].map(|i| m.positions[i as usize].map(f64::from));
+            let (e1, e2) = ([b[0] - a[0], b[1] - a[1], b[2] - a[2]], [c[0] - a[0], c[1] - a[1], c[2] - a[2]]);
+            let g = [e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]];
+            let key = t
+                .iter()
+                .map(|&i| (i / 48, (i % 48) % 8, (i % 48) / 8))
+                .fold((u32::MAX, u32::MAX, u32::MAX), |k, v| (v.0, k.1.min(v.1), k.2.min(v.2)));
+            let e: &mut [f64; 3] = cells.entry(key).or_insert([0.0; 3]);
+            (0..3).for_each(|k| e[k] += g[k]);
+        }
+        cells
+    };
+    let (gc, cc) = (cell_areas(&gpu), cell_areas(&cpu));
+    assert_eq!(gc.len(), 3 * 7 * 5);
+    assert_eq!(gpu.indices.len(), cpu.indices.len());
+    for (key, c) in &cc {
+        let g = gc[key];
+        let dot = g[0] * c[0] + g[1] * c[1] + g[2] * c[2];
+        let (gl, cl) = (g.iter().map(|x| x * x).sum::<f64>().sqrt(), c.iter().map(|x| x * x).sum::<f64>().sqrt());
+        if cl > 1e-6 {
+            assert!(dot > 0.5 * gl * cl, "cell {key:?} faces the other way: gpu {g:?} cpu {c:?}");
+        }
+    }
+}
