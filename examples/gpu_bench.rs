@@ -116,7 +116,7 @@ fn main() {
             std::process::exit(1);
         }
     };
-    let pipelines = MeshPipelines::new(&renderer.device);
+    let pipelines = MeshPipelines::new(&renderer.device, renderer.provoking_vertex_is_last());
     let limit = renderer.device.limits().max_storage_buffer_binding_size;
     println!("# adapter {}; storage binding limit {} MiB", renderer.adapter_name(), limit >> 20);
     // Rows per band so that one band's vertices (64 bytes each) fit one binding.

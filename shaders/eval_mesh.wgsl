@@ -56,8 +56,8 @@ struct Job {
 struct Meta {
     job_count: u32,
     total_points: u32,
-    _pad0: u32,
-    _pad1: u32,
+    provoking_last: u32,   // 1 where flat shading takes the last vertex (wgpu's GL backend)
+    _pad: u32,
 };
 
 struct Vertex {
@@ -171,8 +171,9 @@ fn find_job(p: u32) -> u32 {
 }
 
 // GL_FILL: row j of Mesa's strip alternates (i, j), (i, j+1). Cell i holds its triangles 2i and
-// 2i+1: (i,j) (i,j+1) (i+1,j) and, odd so swapped, (i+1,j) (i,j+1) (i+1,j+1); each is rotated
-// to start at its provoking (last) vertex.
+// 2i+1: (i,j) (i,j+1) (i+1,j) and, odd so swapped, (i+1,j) (i,j+1) (i+1,j+1); GL's provoking
+// vertex is the last. Where the backend's flat shading takes the first vertex (Vulkan, WGSL's
+// `flat`), each triangle is rotated to start there; rotation keeps the winding.
 fn write_cell(job: Job, i: u32, j: u32) {
     if (i + 1u >= job.nu || j + 1u >= job.nv) {
         return;
@@ -182,6 +183,15 @@ fn write_cell(job: Job, i: u32, j: u32) {
     let c = a + 1u;                             // (i+1, j)
     let d = b + 1u;                             // (i+1, j+1)
     let k = job.index_offset + 6u * (j * (job.nu - 1u) + i);
+    if (info.provoking_last != 0u) {
+        indices[k] = a;
+        indices[k + 1u] = b;
+        indices[k + 2u] = c;
+        indices[k + 3u] = c;
+        indices[k + 4u] = b;
+        indices[k + 5u] = d;
+        return;
+    }
     indices[k] = c;
     indices[k + 1u] = a;
     indices[k + 2u] = b;
@@ -191,19 +201,25 @@ fn write_cell(job: Job, i: u32, j: u32) {
 }
 
 // GL_LINE: the segment of row j from i to i+1, then (after all rows) the segment of column i
-// from j to j+1; each starts at its provoking (second) vertex.
+// from j to j+1; the provoking (second) vertex placed where the backend's flat shading looks.
+fn write_segment(k: u32, start: u32, end: u32) {
+    if (info.provoking_last != 0u) {
+        indices[k] = start;
+        indices[k + 1u] = end;
+    } else {
+        indices[k] = end;
+        indices[k + 1u] = start;
+    }
+}
+
 fn write_segments(job: Job, i: u32, j: u32) {
     let a = job.out_offset + j * job.nu + i;
     let rows = job.nv * (job.nu - 1u);
     if (i + 1u < job.nu) {
-        let k = job.index_offset + 2u * (j * (job.nu - 1u) + i);
-        indices[k] = a + 1u;
-        indices[k + 1u] = a;
+        write_segment(job.index_offset + 2u * (j * (job.nu - 1u) + i), a, a + 1u);
     }
     if (j + 1u < job.nv) {
-        let k = job.index_offset + 2u * (rows + i * (job.nv - 1u) + j);
-        indices[k] = a + job.nu;
-        indices[k + 1u] = a;
+        write_segment(job.index_offset + 2u * (rows + i * (job.nv - 1u) + j), a, a + job.nu);
     }
 }
 

@@ -133,6 +133,12 @@ impl Renderer {
         Ok(Self { instance, adapter, device, queue, module, layout, pipelines: HashMap::new(), meshes: None, errors })
     }
 
+    /// Whether flat shading takes a primitive's last vertex (GL's convention, kept by wgpu's GL
+    /// backend) rather than its first (Vulkan, Metal, DX12).
+    pub fn provoking_vertex_is_last(&self) -> bool {
+        self.adapter.get_info().backend == wgpu::Backend::Gl
+    }
+
     /// A one-line description of the adapter (name and backend).
     #[must_use]
     pub fn adapter_name(&self) -> String {
@@ -184,7 +190,8 @@ impl Renderer {
         let on_gpu = gpu_mesh_indices(&self.device, frame);
         let list = assemble_frame(frame, &on_gpu);
         let prepared = (!on_gpu.is_empty()).then(|| {
-            let meshes = self.meshes.get_or_insert_with(|| MeshPipelines::new(&self.device));
+            let provoking_last = self.provoking_vertex_is_last();
+            let meshes = self.meshes.get_or_insert_with(|| MeshPipelines::new(&self.device, provoking_last));
             let prepared = meshes.prepare(&self.device, &self.queue, encoder, frame, &on_gpu, size);
             meshes.ensure_pipelines(&self.device, frame, &prepared, format);
             prepared

@@ -87,8 +87,11 @@ pub struct GpuMeshMeta {
     pub job_count: u32,
     /// Grid points over all jobs.
     pub total_points: u32,
+    /// 1 where the backend's flat shading takes a primitive's last vertex (wgpu's GL backend),
+    /// 0 where it takes the first (Vulkan, Metal, DX12).
+    pub provoking_last: u32,
     /// Padding to 16 bytes.
-    pub pad: [u32; 2],
+    pub pad: u32,
 }
 
 /// One light in the draw uniform (`struct Light` of `mesh_raster.wgsl`).
@@ -193,11 +196,20 @@ pub struct PackedJobs {
     pub indices: u32,
     /// Index-buffer ranges the CPU fills (first index, values): GLU's trimmed triangles.
     pub explicit: Vec<(u32, Vec<u32>)>,
+    /// Whether the backend's flat shading takes a primitive's last vertex, as GL does; if not,
+    /// every primitive is rotated to start at GL's provoking vertex.
+    pub provoking_last: bool,
 }
 
 impl PackedJobs {
+    /// No jobs yet, for a backend whose flat shading takes the last vertex or the first.
+    pub fn new(provoking_last: bool) -> Self {
+        Self { provoking_last, ..Self::default() }
+    }
+
     /// Appends every job of a deferred mesh; scattered meshes bring their triangles, renumbered
-    /// to the packed vertices and rotated so that GL's provoking (last) vertex comes first.
+    /// to the packed vertices and, unless the backend's provoking vertex is the last (GL's),
+    /// rotated so that GL's provoking vertex comes first (rotation keeps the winding).
     pub fn push_mesh(&mut self, mesh: &GridMesh) -> Option<()> {
         let MeshVertices::Deferred(jobs) = &mesh.vertices else { return None };
         let base = self.vertices;
@@ -210,8 +222,13 @@ impl PackedJobs {
             if mesh.triangles.iter().any(|&i| i >= total) {
                 return None;
             }
-            let rotated =
-                mesh.triangles.chunks_exact(3).flat_map(|t| [t[2] + base, t[0] + base, t[1] + base]).collect();
+            let last = self.provoking_last;
+            let rotated = mesh
+                .triangles
+                .chunks_exact(3)
+                .flat_map(|t| if last { [t[0], t[1], t[2]] } else { [t[2], t[0], t[1]] })
+                .map(|i| i + base)
+                .collect();
             self.explicit.push((self.indices, rotated));
             self.indices = self.indices.checked_add(count)?;
         }
@@ -347,12 +364,14 @@ pub struct MeshPipelines {
     draw_layout: wgpu::BindGroupLayout,
     raster_layout: wgpu::PipelineLayout,
     pipelines: HashMap<PipelineKey, wgpu::RenderPipeline>,
+    provoking_last: bool,
 }
 
 impl MeshPipelines {
-    /// Compiles both shaders on `device`.
+    /// Compiles both shaders on `device`; `provoking_last` tells whether the backend's flat
+    /// shading takes a primitive's last vertex ([`super::Renderer::provoking_vertex_is_last`]).
     #[must_use]
-    pub fn new(device: &wgpu::Device) -> Self {
+    pub fn new(device: &wgpu::Device, provoking_last: bool) -> Self {
         let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
             label: Some("eval_mesh.wgsl"),
             source: wgpu::ShaderSource::Wgsl(EVAL_MESH_WGSL.into()),
@@ -393,7 +412,15 @@ impl MeshPipelines {
             bind_group_layouts: &[Some(&draw_layout)],
             immediate_size: 0,
         });
-        Self { compute, compute_layout, raster_module, draw_layout, raster_layout, pipelines: HashMap::new() }
+        Self {
+            compute,
+            compute_layout,
+            raster_module,
+            draw_layout,
+            raster_layout,
+            pipelines: HashMap::new(),
+            provoking_last,
+        }
     }
 
     /// Records the evaluation of `packed` into `encoder` (one dispatch). The caller keeps the
@@ -417,7 +444,12 @@ impl MeshPipelines {
         let jobs = if packed.jobs.is_empty() { vec![GpuMeshJob::default()] } else { packed.jobs.clone() };
         let jobs_buf = init("mesh jobs", bytemuck::cast_slice(&jobs), wgpu::BufferUsages::STORAGE);
         let data_buf = init("mesh data", bytemuck::cast_slice(&padded(&packed.data)), wgpu::BufferUsages::STORAGE);
-        let meta = GpuMeshMeta { job_count: packed.jobs.len() as u32, total_points: packed.vertices, pad: [0; 2] };
+        let meta = GpuMeshMeta {
+            job_count: packed.jobs.len() as u32,
+            total_points: packed.vertices,
+            provoking_last: u32::from(packed.provoking_last),
+            pad: 0,
+        };
         let meta_buf = init("mesh meta", bytemuck::bytes_of(&meta), wgpu::BufferUsages::UNIFORM);
         let vertices = device.create_buffer(&wgpu::BufferDescriptor {
             label: Some("mesh vertices"),
@@ -647,7 +679,7 @@ impl MeshPipelines {
     ) -> PreparedMeshes {
         let align = device.limits().min_uniform_buffer_offset_alignment.max(1);
         let stride = (std::mem::size_of::<GpuDraw>() as u32).div_ceil(align) * align;
-        let mut packed = PackedJobs::default();
+        let mut packed = PackedJobs::new(self.provoking_last);
         let mut uniforms: Vec<u8> = Vec::new();
         let mut draws = HashMap::new();
         for &i in which {
@@ -761,7 +793,7 @@ pub fn evaluate_jobs(
     renderer: &super::Renderer,
     jobs: &[(MeshJob, MeshMode)],
 ) -> Result<Vec<[[f32; 4]; 4]>, super::RenderError> {
-    let mut packed = PackedJobs::default();
+    let mut packed = PackedJobs::new(renderer.provoking_vertex_is_last());
     for (job, mode) in jobs {
         packed.push(job, *mode).ok_or_else(|| super::RenderError::Gpu("malformed mesh job".into()))?;
     }
@@ -769,7 +801,7 @@ pub fn evaluate_jobs(
     if !MeshPipelines::fits(device, packed.vertices.into(), packed.indices.into()) {
         return Err(super::RenderError::Gpu("batch exceeds the storage buffer limit".into()));
     }
-    let pipelines = MeshPipelines::new(device);
+    let pipelines = MeshPipelines::new(device, renderer.provoking_vertex_is_last());
     let mut encoder = device.create_command_encoder(&Default::default());
     let out = pipelines.evaluate(device, &renderer.queue, &mut encoder, &packed);
     let bytes = u64::from(packed.vertices) * VERTEX_BYTES;
@@ -782,12 +814,12 @@ pub fn evaluate_job_indices(
     renderer: &super::Renderer,
     jobs: &[(MeshJob, MeshMode)],
 ) -> Result<Vec<u32>, super::RenderError> {
-    let mut packed = PackedJobs::default();
+    let mut packed = PackedJobs::new(renderer.provoking_vertex_is_last());
     for (job, mode) in jobs {
         packed.push(job, *mode).ok_or_else(|| super::RenderError::Gpu("malformed mesh job".into()))?;
     }
     let device = &renderer.device;
-    let pipelines = MeshPipelines::new(device);
+    let pipelines = MeshPipelines::new(device, renderer.provoking_vertex_is_last());
     let mut encoder = device.create_command_encoder(&Default::default());
     let out = pipelines.evaluate(device, &renderer.queue, &mut encoder, &packed);
     let data = super::gpu::read_buffer(renderer, encoder, &out.indices, u64::from(packed.indices) * 4)?;

@@ -327,6 +327,7 @@ fn facade_gpu_indices_are_gls_primitives() {
         gl.eval_mesh1(GL_LINE, 0, 6);
     });
     let got = evaluate_job_indices(&r, &jobs).expect("GPU indices");
+    let last = r.provoking_vertex_is_last();
     let (mut vertex_base, mut cursor) = (0u32, 0usize);
     for (job, mode) in &jobs {
         let mesh = gleval::gl::GridMesh {
@@ -344,17 +345,16 @@ fn facade_gpu_indices_are_gls_primitives() {
             match prim {
                 GL_TRIANGLE_STRIP => {
                     for t in 0..idx.len().saturating_sub(2) {
-                        // GL: (t, t+1, t+2), odd triangles (t+1, t, t+2); provoking t+2 first.
-                        want.push(if t % 2 == 0 {
-                            vec![at(t + 2), at(t), at(t + 1)]
-                        } else {
-                            vec![at(t + 2), at(t + 1), at(t)]
-                        });
+                        // GL: (t, t+1, t+2), odd triangles (t+1, t, t+2); the provoking t+2
+                        // first unless the backend's flat shading takes the last vertex.
+                        let gl_order = if t % 2 == 0 { [t, t + 1, t + 2] } else { [t + 1, t, t + 2] };
+                        let [p, q, r] = gl_order.map(at);
+                        want.push(if last { vec![p, q, r] } else { vec![r, p, q] });
                     }
                 }
                 GL_LINE_STRIP => {
                     for s in 1..idx.len() {
-                        want.push(vec![at(s), at(s - 1)]);
+                        want.push(if last { vec![at(s - 1), at(s)] } else { vec![at(s), at(s - 1)] });
                     }
                 }
                 other => panic!("unexpected primitive {other:#x}"),

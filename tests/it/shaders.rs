@@ -108,7 +108,7 @@ fn mesh_buffer_layouts_match_the_shaders() {
         EVAL_MESH_WGSL,
         "Meta",
         size_of::<GpuMeshMeta>(),
-        &[("job_count", 0), ("total_points", 4), ("_pad0", 8), ("_pad1", 12)],
+        &[("job_count", 0), ("total_points", 4), ("provoking_last", 8), ("_pad", 12)],
     );
     let (_, vertex) = wgsl_layout(EVAL_MESH_WGSL, "Vertex");
     assert_eq!(u64::from(vertex), VERTEX_BYTES);
