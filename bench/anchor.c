@@ -31,6 +31,27 @@ static void mesh2(int n, int runs) {
     printf("eval_mesh2_%d %.0f\n", n, (double)(n + 1) * (n + 1) / median(t, runs));
 }
 
+/* 10,000 small bicubic patches in one frame: one glMap2f and one 8x8 glEvalMesh2 each. */
+static void patches(int runs) {
+    double t[16];
+    int count = 10000, n = 8;
+    glEnable(GL_MAP2_VERTEX_3);
+    glEnable(GL_AUTO_NORMAL);
+    glMapGrid2f(n, 0, 1, n, 0, 1);
+    for (int r = 0; r < runs; r++) {
+        double s = now();
+        for (int k = 0; k < count; k++) {
+            patch[0][0][2] = (k % 7) * 0.1f;
+            glMap2f(GL_MAP2_VERTEX_3, 0, 1, 12, 4, 0, 1, 3, 4, &patch[0][0][0]);
+            glEvalMesh2(GL_FILL, 0, n, 0, n);
+        }
+        glFinish();
+        t[r] = now() - s;
+    }
+    patch[0][0][2] = 0;
+    printf("patches_10000 %.0f\n", (double)count * (n + 1) * (n + 1) / median(t, runs));
+}
+
 static void mesh1(int runs) {
     GLfloat curve[11][3];
     for (int i = 0; i < 11; i++) { curve[i][0] = i * 0.1f - 0.5f; curve[i][1] = (i % 3) * 0.2f; curve[i][2] = 0; }
@@ -84,6 +105,8 @@ int main(void) {
         for (int j = 0; j < 4; j++) { patch[i][j][0] = i / 3.0f - 0.5f; patch[i][j][1] = j / 3.0f - 0.5f; patch[i][j][2] = ((i + j) % 3) * 0.2f; }
     mesh2(100, 9);
     mesh2(1000, 5);
+    mesh2(4000, 3);
+    patches(5);
     mesh1(5);
     nurbs(5);
     return 0;

@@ -3,8 +3,9 @@
 //!
 //! `cargo run --release --example bench`
 
+use gleval::math::BezierPatch;
 use gleval::prelude::*;
-use gleval::tess::{eval_grid2, Grid2, MapView};
+use gleval::tess::Mesh;
 use std::time::Instant;
 
 fn median(mut t: Vec<f64>) -> f64 {
@@ -39,27 +40,56 @@ fn facade_mesh2(n: i32, runs: usize) -> f64 {
     gl.map_grid2f(n, 0.0, 1.0, n, 0.0, 1.0);
     let t = time(runs, || {
         gl.eval_mesh2(GL_FILL, 0, n, 0, n);
-        std::hint::black_box(gl.take_frame());
+        let frame = std::hint::black_box(gl.take_frame());
+        gl.recycle_frame(frame);
     });
     f64::from((n + 1) * (n + 1)) / t
 }
 
-/// The typed API: grid points, partials and unit normals of a bicubic patch.
-fn typed_grid(n: usize, runs: usize) -> f64 {
-    let points = patch();
-    let map = MapView { dim: 3, uorder: 4, vorder: 4, points: &points };
+/// The typed API: a bicubic patch tessellated into a mesh (positions, unit normals, texture
+/// coordinates, triangle indices) over an n × n grid, re-tessellated into the same mesh as a
+/// program updating a surface does (`fresh`: a new mesh each time, as `tessellate` gives).
+fn typed_grid(n: usize, runs: usize, fresh: bool) -> f64 {
+    let patch = BezierPatch::try_new(3, 4, 4, patch()).expect("a bicubic patch");
     let params: Vec<f32> = (0..=n).map(|i| i as f32 / n as f32).collect();
-    let mut grid = Grid2::default();
-    let mut normals: Vec<[f32; 3]> = Vec::new();
+    let mut mesh = Mesh::default();
     let t = time(runs, || {
-        eval_grid2(&map, &params, &params, true, &mut grid);
-        normals.clear();
-        normals.extend(grid.du.iter().zip(&grid.dv).map(|(a, b)| {
-            gleval::math::rational::normalize(gleval::math::rational::cross([a[0], a[1], a[2]], [b[0], b[1], b[2]]))
-        }));
-        std::hint::black_box(&normals);
+        if fresh {
+            mesh = patch.tessellate(n, n).expect("mesh");
+        } else {
+            patch.tessellate_grid_into(&params, &params, &mut mesh).expect("mesh");
+        }
+        std::hint::black_box(&mesh);
     });
     ((n + 1) * (n + 1)) as f64 / t
+}
+
+/// 10,000 small bicubic patches in one frame (one `map2f` and one 8 × 8 `eval_mesh2` each).
+fn facade_patches(runs: usize) -> f64 {
+    let (count, n) = (10_000, 8);
+    let mut gl = Gl::new(64, 64);
+    gl.enable(GL_MAP2_VERTEX_3);
+    gl.enable(GL_AUTO_NORMAL);
+    gl.map_grid2f(n, 0.0, 1.0, n, 0.0, 1.0);
+    let mut points = patch();
+    let t = time(runs, || {
+        for k in 0..count {
+            points[2] = (k % 7) as f32 * 0.1;
+            gl.map2f(GL_MAP2_VERTEX_3, 0.0, 1.0, 12, 4, 0.0, 1.0, 3, 4, &points);
+            gl.eval_mesh2(GL_FILL, 0, n, 0, n);
+        }
+        let frame = std::hint::black_box(gl.take_frame());
+        gl.recycle_frame(frame);
+    });
+    f64::from(count * (n + 1) * (n + 1)) / t
+}
+
+/// Peak resident memory of the process so far (Linux `VmHWM`), in MiB.
+fn peak_mib() -> Option<f64> {
+    let status = std::fs::read_to_string("/proc/self/status").ok()?;
+    let line = status.lines().find(|l| l.starts_with("VmHWM:"))?;
+    let kib: f64 = line.split_whitespace().nth(1)?.parse().ok()?;
+    Some(kib / 1024.0)
 }
 
 fn facade_mesh1(runs: usize) -> f64 {
@@ -71,7 +101,8 @@ fn facade_mesh1(runs: usize) -> f64 {
     gl.map_grid1f(n, 0.0, 1.0);
     let t = time(runs, || {
         gl.eval_mesh1(GL_LINE, 0, n);
-        std::hint::black_box(gl.take_frame());
+        let frame = std::hint::black_box(gl.take_frame());
+        gl.recycle_frame(frame);
     });
     f64::from(n + 1) / t
 }
@@ -100,10 +131,37 @@ fn nurbs_untrimmed(runs: usize) -> f64 {
 }
 
 fn main() {
-    println!("eval_mesh2_100 {:.0}", facade_mesh2(100, 9));
-    println!("eval_mesh2_1000 {:.0}", facade_mesh2(1000, 5));
-    println!("grid_100 {:.0}", typed_grid(100, 9));
-    println!("grid_1000 {:.0}", typed_grid(1000, 5));
-    println!("eval_mesh1_degree10 {:.0}", facade_mesh1(5));
-    println!("nurbs_untrimmed {:.0}", nurbs_untrimmed(5));
+    // `bench [case ...]` runs the cases whose names start with one of the arguments (all without).
+    let filters: Vec<String> = std::env::args().skip(1).collect();
+    let wanted = |name: &str| filters.is_empty() || filters.iter().any(|f| name.starts_with(f.as_str()));
+    // The largest case first, so that the process's peak memory is its own.
+    if wanted("grid_4000") {
+        let before = peak_mib();
+        let rate = typed_grid(4000, 3, false);
+        if let (Some(a), Some(b)) = (before, peak_mib()) {
+            let output = 4001.0 * 4001.0 * (12.0 + 12.0 + 8.0) + 4000.0 * 4000.0 * 24.0;
+            eprintln!(
+                "grid_4000: peak memory {:.0} MiB above the {a:.0} MiB baseline; the mesh is {:.0} MiB",
+                b - a,
+                output / 1048576.0
+            );
+        }
+        println!("grid_4000 {rate:.0}");
+    }
+    let cases: [(&str, &dyn Fn() -> f64); 9] = [
+        ("eval_mesh2_100", &|| facade_mesh2(100, 9)),
+        ("eval_mesh2_1000", &|| facade_mesh2(1000, 5)),
+        ("eval_mesh2_4000", &|| facade_mesh2(4000, 3)),
+        ("grid_100", &|| typed_grid(100, 9, false)),
+        ("grid_1000", &|| typed_grid(1000, 5, false)),
+        ("grid_fresh_1000", &|| typed_grid(1000, 5, true)),
+        ("patches_10000", &|| facade_patches(5)),
+        ("eval_mesh1_degree10", &|| facade_mesh1(5)),
+        ("nurbs_untrimmed", &|| nurbs_untrimmed(5)),
+    ];
+    for (name, case) in cases {
+        if wanted(name) {
+            println!("{name} {:.0}", case());
+        }
+    }
 }

@@ -215,7 +215,9 @@ impl App {
         for _ in 0..frames.max(1) {
             let start = std::time::Instant::now();
             self.draw_into(&mut gl, self.width, self.height);
-            renderer.render_frame(&gl.take_frame(), self.width as u32, self.height as u32)?;
+            let frame = gl.take_frame();
+            renderer.render_frame(&frame, self.width as u32, self.height as u32)?;
+            gl.recycle_frame(frame);
             times.push(start.elapsed());
         }
         times.sort();

@@ -225,6 +225,7 @@ impl WindowState {
         gpu.renderer.queue.submit([encoder.finish()]);
         gpu.window.pre_present_notify();
         gpu.renderer.queue.present(frame);
+        gl.recycle_frame(recorded);
     }
 
     /// A key press: Escape closes the window; a key that types text goes to the keyboard callback.

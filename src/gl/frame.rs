@@ -8,7 +8,7 @@ use glam::Mat4;
 
 /// One vertex as GL hands it to the rest of the pipeline: object-space position (w not divided),
 /// and the current (or evaluated) colour, normal and texture coordinate of unit 0.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, bytemuck::Zeroable)]
 pub struct Vertex {
     /// (x, y, z, w); `vertex3f` gives w = 1; `GL_MAP*_VERTEX_4` passes w through.
     pub position: [f32; 4],

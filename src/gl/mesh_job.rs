@@ -5,9 +5,10 @@
 //! job in the frame and evaluates every job of the frame in one compute dispatch
 //! (`render::mesh_gpu`). Both read the same numbers, so the CPU result is the GPU's oracle.
 
-use super::eval::{auto_normal, set_attribute, Slot};
+use super::eval::{set_attribute, Slot};
 use super::Vertex;
-use crate::tess::{eval_grid1, eval_grid2, Grid2, MapView};
+use crate::math::rational::normalize;
+use crate::tess::{for_row_bands, MapView, Row, RowKernel};
 
 /// An enabled map sampled by a mesh.
 #[derive(Clone, Debug, PartialEq)]
@@ -62,35 +63,58 @@ impl MeshJob {
         self.len() == 0
     }
 
-    /// The vertices of the grid on the CPU, v outer.
+    /// The vertices of the grid on the CPU, v outer: each map evaluated a row at a time
+    /// ([`RowKernel`]), rows shared out between the cores, every vertex written once.
     #[must_use]
     pub fn evaluate(&self) -> Vec<Vertex> {
-        if self.scattered {
-            return self.evaluate_scattered();
-        }
-        let mut out = vec![self.template; self.len()];
-        let mut grid = Grid2::default();
-        let mut values = Vec::new();
-        for map in &self.maps {
-            let is_vertex = matches!(map.slot, Slot::Vertex3 | Slot::Vertex4);
-            let normals = is_vertex && self.auto_normal;
-            if map.vorder == 1 && self.nv == 1 && map.vs.len() == 1 && !normals {
-                eval_grid1(&map.view(), &map.us, &mut values);
-                for (v, p) in out.iter_mut().zip(&values) {
-                    set_attribute(v, map.slot, *p);
-                }
-                continue;
-            }
-            eval_grid2(&map.view(), &map.us, &map.vs, normals, &mut grid);
-            let k = map.slot.components();
-            for (idx, v) in out.iter_mut().enumerate() {
-                set_attribute(v, map.slot, grid.points[idx]);
-                if normals {
-                    v.normal = auto_normal(k, grid.points[idx], grid.du[idx], grid.dv[idx]);
-                }
-            }
-        }
+        let mut out = Vec::new();
+        self.evaluate_into(&mut out);
         out
+    }
+
+    /// [`MeshJob::evaluate`] into `out`, reusing its memory (every vertex is overwritten).
+    pub fn evaluate_into(&self, out: &mut Vec<Vertex>) {
+        if self.scattered {
+            *out = self.evaluate_scattered();
+            return;
+        }
+        let kernels: Vec<_> = self
+            .maps
+            .iter()
+            .map(|map| {
+                let normals = self.auto_normal && matches!(map.slot, Slot::Vertex3 | Slot::Vertex4);
+                (map.slot, normals, RowKernel::new(map.view(), &map.us, &map.vs, normals))
+            })
+            .collect();
+        if out.capacity() >= self.len() {
+            out.resize(self.len(), self.template);
+        } else {
+            // Fresh zeroed memory comes from calloc: its pages are faulted in by the threads
+            // below rather than all by this one.
+            *out = bytemuck::zeroed_vec(self.len());
+        }
+        for_row_bands(out, self.nu, |first_row, band| {
+            let mut rows = vec![Row::default(); kernels.len()];
+            for (r, vertices) in band.chunks_mut(self.nu).enumerate() {
+                for ((_, _, kernel), row) in kernels.iter().zip(&mut rows) {
+                    if let Some(kernel) = kernel {
+                        kernel.eval_row(first_row + r, row);
+                    }
+                }
+                for (i, v) in vertices.iter_mut().enumerate() {
+                    *v = self.template;
+                    for ((slot, normals, kernel), row) in kernels.iter().zip(&rows) {
+                        let k = slot.components();
+                        // A malformed map (never made by the façade) evaluates to zeros.
+                        let valid = kernel.is_some();
+                        set_attribute(v, *slot, if valid { row.point_at(i, k) } else { [0.0; 4] });
+                        if *normals {
+                            v.normal = if valid { normalize(row.cross_at(i)) } else { [0.0; 3] };
+                        }
+                    }
+                }
+            }
+        });
     }
 
     /// Scattered points, each evaluated alone (the CPU oracle of GLU's trimmed surfaces).

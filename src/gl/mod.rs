@@ -100,6 +100,8 @@ pub struct Gl {
     /// Index in `frame.states` of a snapshot of the current state, if still valid.
     state_index: Option<usize>,
     frame: Frame,
+    /// Vertex buffers of a recycled frame's meshes, reused by the next meshes (no page faults).
+    vertex_pool: Vec<Vec<Vertex>>,
     tessellator: Tessellator,
     /// GLU NURBS objects, indexed by their handles.
     pub(crate) nurbs: Vec<Option<crate::glu::NurbsObject>>,
@@ -123,6 +125,7 @@ impl Gl {
             raster: raster::RasterState::new(width, height),
             state_index: None,
             frame: Frame::default(),
+            vertex_pool: Vec::new(),
             tessellator: Tessellator::from_env(),
             nurbs: Vec::new(),
         }
@@ -167,6 +170,31 @@ impl Gl {
     pub fn take_frame(&mut self) -> Frame {
         self.state_index = None;
         std::mem::take(&mut self.frame)
+    }
+
+    /// Gives a frame taken with [`Gl::take_frame`] back once it is drawn: its buffers are reused
+    /// by the frames recorded next, so a render loop does not allocate (and fault in) fresh
+    /// memory for every frame.
+    pub fn recycle_frame(&mut self, mut frame: Frame) {
+        self.vertex_pool.clear();
+        for mesh in frame.meshes.drain(..) {
+            if let MeshVertices::Evaluated(vertices) = mesh.vertices {
+                self.vertex_pool.push(vertices);
+            }
+        }
+        if self.frame.commands.is_empty() && self.frame.states.is_empty() {
+            frame.vertices.clear();
+            frame.primitives.clear();
+            frame.calls.clear();
+            frame.states.clear();
+            frame.commands.clear();
+            self.frame = frame;
+        }
+    }
+
+    /// A vertex buffer from the recycled pool (empty if none is left).
+    pub(crate) fn pooled_vertices(&mut self) -> Vec<Vertex> {
+        self.vertex_pool.pop().unwrap_or_default()
     }
 
     /// Marks the draw state as changed: the next primitive records a new snapshot.

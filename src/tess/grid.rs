@@ -64,7 +64,7 @@ pub struct MapView<'a, S: Scalar> {
 }
 
 impl<S: Scalar> MapView<'_, S> {
-    fn is_valid(&self) -> bool {
+    pub(crate) fn is_valid(&self) -> bool {
         self.dim >= 1
             && self.dim <= MAX_DIM
             && self.uorder >= 1
@@ -139,7 +139,7 @@ pub fn eval_grid2<S: Scalar>(map: &MapView<'_, S>, us: &[S], vs: &[S], partials:
 
 /// Reduces every u row of the net along v: `rows[i] = Σⱼ Bⱼ(v) Pᵢⱼ`, and with `partials`
 /// `rows_dv[i] = q Σⱼ Bⱼ^{q−1}(v) (Pᵢ,ⱼ₊₁ − Pᵢⱼ)`.
-fn reduce_rows<S: Scalar>(
+pub(crate) fn reduce_rows<S: Scalar>(
     map: &MapView<'_, S>,
     bv: &[S],
     bv_low: &[S],

@@ -1,9 +1,9 @@
 //! The typed API's output: an indexed triangle mesh, the shape every exporter and every
 //! non-GL user wants (positions, unit normals, texture coordinates, counter-clockwise triangles).
 
-use super::grid::{eval_grid2, Grid2, MapView};
-use crate::math::rational::cross;
-use crate::math::BezierPatch;
+use super::grid::MapView;
+use super::rows::{for_row_bands, rows_per_band, run_bands, Row, RowKernel};
+use crate::math::{BezierPatch, Scalar};
 
 /// An indexed triangle mesh.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -25,6 +25,8 @@ pub enum MeshError {
     EmptyGrid,
     /// More vertices than 32-bit indices can address.
     TooLarge(usize),
+    /// The patch's dimension, orders and number of control values disagree.
+    MalformedPatch,
 }
 
 impl std::fmt::Display for MeshError {
@@ -32,6 +34,7 @@ impl std::fmt::Display for MeshError {
         match self {
             Self::EmptyGrid => write!(f, "a mesh grid needs at least one segment along u and along v"),
             Self::TooLarge(n) => write!(f, "{n} vertices do not fit 32-bit indices"),
+            Self::MalformedPatch => write!(f, "the patch's dimension, orders and control values disagree"),
         }
     }
 }
@@ -68,26 +71,35 @@ impl Mesh {
     }
 }
 
-/// Unit normal of the projected surface from homogeneous point and partials (zero if degenerate).
-fn projected_normal(dim: usize, p: [f64; 4], du: [f64; 4], dv: [f64; 4]) -> [f32; 3] {
-    let (a, b) = if dim == 4 {
-        let w = p[3];
-        let a = [du[0] * w - du[3] * p[0], du[1] * w - du[3] * p[1], du[2] * w - du[3] * p[2]];
-        let b = [dv[0] * w - dv[3] * p[0], dv[1] * w - dv[3] * p[1], dv[2] * w - dv[3] * p[2]];
-        (a, b)
-    } else {
-        ([du[0], du[1], du[2]], [dv[0], dv[1], dv[2]])
-    };
-    let n = cross(a, b);
+/// A unit normal from an unnormalised direction; zero where the direction is zero or not finite
+/// (a collapsed edge, a point at infinity).
+fn unit_normal<S: Scalar>(n: [S; 3]) -> [f32; 3] {
     let len = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
-    if len > 0.0 && len.is_finite() {
-        [(n[0] / len) as f32, (n[1] / len) as f32, (n[2] / len) as f32]
+    if len > S::ZERO && len.is_finite() {
+        n.map(|c| (c / len).to_f64() as f32)
     } else {
         [0.0; 3]
     }
 }
 
-impl BezierPatch<f64> {
+/// The two triangles of every cell of an `nu` × `nv` grid, as [`Mesh::push_grid_triangles`],
+/// written into `indices` (replacing its contents) a band of cell rows per core.
+fn grid_triangles_into(nu: usize, nv: usize, indices: &mut Vec<u32>) {
+    let row_len = 6 * nu.saturating_sub(1);
+    reuse_or_calloc(indices, row_len * nv.saturating_sub(1));
+    for_row_bands(indices, row_len, |first_row, band| {
+        for (r, row) in band.chunks_mut(row_len).enumerate() {
+            let start = ((first_row + r) * nu) as u32;
+            for (i, cell) in row.chunks_exact_mut(6).enumerate() {
+                let a = start + i as u32;
+                let (b, c, d) = (a + 1, a + nu as u32 + 1, a + nu as u32);
+                cell.copy_from_slice(&[a, b, c, a, c, d]);
+            }
+        }
+    });
+}
+
+impl<S: Scalar> BezierPatch<S> {
     /// Tessellates the patch over a uniform `segments_u` × `segments_v` grid of its unit domain
     /// into a mesh with normals and (u, v) texture coordinates.
     ///
@@ -103,34 +115,75 @@ impl BezierPatch<f64> {
         if segments_u == 0 || segments_v == 0 {
             return Err(MeshError::EmptyGrid);
         }
-        let (nu, nv) = (segments_u + 1, segments_v + 1);
-        let count = nu.checked_mul(nv).filter(|&n| n <= u32::MAX as usize).ok_or(MeshError::TooLarge(usize::MAX))?;
-        let us: Vec<f64> = (0..nu).map(|i| i as f64 / segments_u as f64).collect();
-        let vs: Vec<f64> = (0..nv).map(|j| j as f64 / segments_v as f64).collect();
-        let view = MapView { dim: self.dim, uorder: self.uorder, vorder: self.vorder, points: &self.points };
-        let mut grid = Grid2::default();
-        eval_grid2(&view, &us, &vs, true, &mut grid);
-        let mut mesh = Mesh {
-            positions: Vec::with_capacity(count),
-            normals: Vec::with_capacity(count),
-            tex_coords: Vec::with_capacity(count),
-            indices: Vec::new(),
-        };
-        for k in 0..count {
-            let p = grid.points[k];
-            let w = if self.dim == 4 { p[3] } else { 1.0 };
-            mesh.positions.push([(p[0] / w) as f32, (p[1] / w) as f32, (p[2] / w) as f32]);
-            mesh.normals.push(projected_normal(self.dim, p, grid.du[k], grid.dv[k]));
-            mesh.tex_coords.push([us[k % nu] as f32, vs[k / nu] as f32]);
-        }
-        mesh.push_grid_triangles(0, nu as u32, nv as u32);
+        let param = |k: usize, n: usize| S::from_f64(k as f64 / n as f64);
+        let us: Vec<S> = (0..=segments_u).map(|i| param(i, segments_u)).collect();
+        let vs: Vec<S> = (0..=segments_v).map(|j| param(j, segments_v)).collect();
+        self.tessellate_grid(&us, &vs)
+    }
+
+    /// Tessellates the patch over the grid `us` × `vs` of its unit domain (v outer, u inner):
+    /// every grid point evaluated once, a row at a time, rows shared out between the cores.
+    /// Texture coordinates are the (u, v) parameters.
+    pub fn tessellate_grid(&self, us: &[S], vs: &[S]) -> Result<Mesh, MeshError> {
+        let mut mesh = Mesh::default();
+        self.tessellate_grid_into(us, vs, &mut mesh)?;
         Ok(mesh)
+    }
+
+    /// [`BezierPatch::tessellate_grid`] into `mesh`, replacing its contents but reusing its
+    /// memory: a loop that re-tessellates allocates (and faults in) nothing after the first time.
+    pub fn tessellate_grid_into(&self, us: &[S], vs: &[S], mesh: &mut Mesh) -> Result<(), MeshError> {
+        let (nu, nv) = (us.len(), vs.len());
+        if nu < 2 || nv < 2 {
+            return Err(MeshError::EmptyGrid);
+        }
+        let count = nu.checked_mul(nv).filter(|&n| n <= u32::MAX as usize).ok_or(MeshError::TooLarge(usize::MAX))?;
+        let view = MapView { dim: self.dim, uorder: self.uorder, vorder: self.vorder, points: &self.points };
+        let kernel = RowKernel::new(view, us, vs, true).ok_or(MeshError::MalformedPatch)?;
+        let (rational, dim) = (self.dim == 4, self.dim.min(3));
+        reuse_or_calloc(&mut mesh.positions, count);
+        reuse_or_calloc(&mut mesh.normals, count);
+        reuse_or_calloc(&mut mesh.tex_coords, count);
+        grid_triangles_into(nu, nv, &mut mesh.indices);
+        let band = rows_per_band(nv, nu) * nu;
+        let bands =
+            mesh.positions.chunks_mut(band).zip(mesh.normals.chunks_mut(band)).zip(mesh.tex_coords.chunks_mut(band));
+        run_bands(bands, |k, ((positions, normals), tex_coords)| {
+            let mut row = Row::default();
+            let rows = positions.chunks_mut(nu).zip(normals.chunks_mut(nu)).zip(tex_coords.chunks_mut(nu));
+            for (r, ((positions, normals), tex_coords)) in rows.enumerate() {
+                let j = k * band / nu + r;
+                kernel.eval_row(j, &mut row);
+                let t = vs[j].to_f64() as f32;
+                for (i, ((position, normal), tex)) in positions.iter_mut().zip(normals).zip(tex_coords).enumerate() {
+                    let w = if rational { row.point[3][i] } else { S::ONE };
+                    for c in 0..dim {
+                        position[c] = (row.point[c][i] / w).to_f64() as f32;
+                    }
+                    *normal = unit_normal(row.cross_at(i));
+                    *tex = [us[i].to_f64() as f32, t];
+                }
+            }
+        });
+        Ok(())
+    }
+}
+
+/// Makes `v` hold `len` elements: in place when its memory suffices, else zeros from calloc
+/// (whose pages are then faulted in by the threads that fill them, not all by this one).
+fn reuse_or_calloc<T: Copy + Default>(v: &mut Vec<T>, len: usize) {
+    if v.capacity() >= len {
+        // Every element is overwritten by the caller: only the length needs to change.
+        v.resize(len, T::default());
+    } else {
+        *v = vec![T::default(); len];
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::math::rational::cross;
 
     #[test]
     fn triangles_face_along_the_normals() {
@@ -142,6 +195,31 @@ mod tests {
             let g = cross([b[0] - a[0], b[1] - a[1], b[2] - a[2]], [c[0] - a[0], c[1] - a[1], c[2] - a[2]]);
             let n = mesh.normals[t[0] as usize];
             assert!(g[0] * f64::from(n[0]) + g[1] * f64::from(n[1]) + g[2] * f64::from(n[2]) > 0.0);
+        }
+    }
+
+    /// A rational patch on a grid big enough to be split between cores, tessellated into a mesh
+    /// that held a bigger one: every position is the pointwise Horner value divided by w.
+    #[test]
+    fn reused_and_banded_meshes_match_pointwise_evaluation() {
+        let points: Vec<f64> = (0..4 * 3 * 4)
+            .map(|k| if k % 4 == 3 { 1.0 + (k % 5) as f64 * 0.5 } else { (k * 7 % 11) as f64 * 0.2 })
+            .collect();
+        let patch = BezierPatch::try_new(4, 4, 3, points.clone()).unwrap();
+        let mut mesh = patch.tessellate(400, 300).unwrap();
+        let (su, sv) = (250, 199);
+        let us: Vec<f64> = (0..=su).map(|i| i as f64 / su as f64).collect();
+        let vs: Vec<f64> = (0..=sv).map(|j| j as f64 / sv as f64).collect();
+        patch.tessellate_grid_into(&us, &vs, &mut mesh).unwrap();
+        assert_eq!(mesh, patch.tessellate(su, sv).unwrap());
+        assert_eq!(mesh.positions.len(), us.len() * vs.len());
+        assert_eq!(mesh.indices.len(), 6 * su * sv);
+        for (k, p) in mesh.positions.iter().enumerate() {
+            let (u, v) = (us[k % us.len()], vs[k / us.len()]);
+            let h = crate::math::patch::horner_patch(&points, 4, 4, 3, u, v);
+            for c in 0..3 {
+                assert!((f64::from(p[c]) - h[c] / h[3]).abs() < 1e-5, "{k}");
+            }
         }
     }
 

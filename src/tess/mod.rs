@@ -7,7 +7,9 @@
 pub mod gpu;
 pub mod grid;
 pub mod mesh;
+pub mod rows;
 pub mod trim;
 
 pub use grid::{eval_grid1, eval_grid2, BasisTable, Grid2, MapView};
 pub use mesh::{Mesh, MeshError};
+pub use rows::{for_row_bands, rows_per_band, run_bands, Row, RowKernel};

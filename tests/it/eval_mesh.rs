@@ -273,3 +273,48 @@ fn vertex4_passes_w_through() {
     gl.eval_mesh1(GL_POINT, 0, 2);
     assert_eq!(gl.frame().expanded().vertices[1].position, [1.0, 1.0, 1.0, 1.5]);
 }
+
+/// A grid large enough to be split between threads (bands of rows) still gives the closed form
+/// at every point: the saddle p = (s, t, s·t) with normal (−t, −s, 1), on a 401 × 301 grid.
+#[test]
+fn large_grids_split_between_cores_match_the_closed_form() {
+    let mut gl = Gl::new(1, 1);
+    saddle(&mut gl, (0.0, 1.0), (0.0, 1.0));
+    gl.enable(GL_AUTO_NORMAL);
+    gl.map_grid2f(400, 0.0, 1.0, 300, 0.0, 1.0);
+    gl.eval_mesh2(GL_POINT, 0, 400, 0, 300);
+    let f = gl.frame().expanded();
+    assert_eq!(f.vertices.len(), 401 * 301);
+    for (k, v) in f.vertices.iter().enumerate() {
+        let (s, t) = ((k % 401) as f64 / 400.0, (k / 401) as f64 / 300.0);
+        let p = [s, t, s * t];
+        for c in 0..3 {
+            assert!((f64::from(v.position[c]) - p[c]).abs() < 1e-6, "vertex {k}: {:?} vs {p:?}", v.position);
+        }
+        assert_normal(v.normal, unit([-t, -s, 1.0]), 1e-5);
+    }
+}
+
+/// A frame given back with `recycle_frame` lends its buffers to the next one, which must be
+/// exactly what a fresh context records (whatever the recycled buffers held).
+#[test]
+fn recycled_frames_record_what_a_fresh_context_records() {
+    let draw = |gl: &mut Gl, n: i32, color: [f32; 4]| {
+        gl.color4f(color[0], color[1], color[2], color[3]);
+        saddle(gl, (0.0, 1.0), (0.0, 1.0));
+        gl.map_grid2f(n, 0.0, 1.0, n, 0.0, 1.0);
+        gl.eval_mesh2(GL_FILL, 0, n, 0, n);
+        gl.eval_mesh2(GL_LINE, 0, n / 2, 0, n);
+    };
+    let mut fresh = Gl::new(1, 1);
+    draw(&mut fresh, 7, [0.2, 0.4, 0.6, 1.0]);
+    let want = fresh.take_frame();
+    let mut gl = Gl::new(1, 1);
+    for (n, color) in [(200, [1.0, 0.0, 0.0, 1.0]), (3, [0.0, 1.0, 0.0, 1.0])] {
+        draw(&mut gl, n, color);
+        let frame = gl.take_frame();
+        gl.recycle_frame(frame);
+    }
+    draw(&mut gl, 7, [0.2, 0.4, 0.6, 1.0]);
+    assert_eq!(gl.take_frame(), want);
+}

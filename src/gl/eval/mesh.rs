@@ -121,7 +121,9 @@ impl Gl {
         let vertices = if self.tessellator == Tessellator::Gpu && self.gpu_draws(mode) {
             MeshVertices::Deferred(vec![job])
         } else {
-            MeshVertices::Evaluated(job.evaluate())
+            let mut vertices = self.pooled_vertices();
+            job.evaluate_into(&mut vertices);
+            MeshVertices::Evaluated(vertices)
         };
         let state = self.current_state_index();
         self.frame.meshes.push(GridMesh { mode, nu, nv, state, vertices, triangles: Vec::new() });

@@ -1,0 +1,283 @@
+//! The grid fast path: a patch evaluated one grid row at a time into structure-of-arrays rows,
+//! and rows shared out between the machine's cores.
+//!
+//! Per row j the net is first reduced along v (`uorder` points, O(uorder·vorder·dim)); every
+//! point of the row is then a short sum over those reduced points with the u basis, which is
+//! stored order-major (`B_a(u_i)` at `a·nu + i`) so that the inner loop runs over i with unit
+//! stride and the compiler vectorises it. Partials follow Mesa's de Casteljau in using
+//! control-point differences, so a collapsed edge gives an exactly zero derivative; the normal
+//! direction is ∂p/∂u × ∂p/∂v, with the rational correction `d·w − p·d_w` for homogeneous maps
+//! (Mesa `vbo_exec_do_EvalCoord2f`). The sums run in the same order as [`super::eval_grid2`],
+//! so both paths give the same bits.
+
+use super::grid::{reduce_rows, BasisTable, MapView};
+use crate::math::bezier::{bernstein, Vec4, MAX_DIM};
+use crate::math::Scalar;
+use std::sync::OnceLock;
+
+/// A patch over a fixed grid, ready to evaluate any of its rows.
+#[derive(Clone, Debug)]
+pub struct RowKernel<'a, S: Scalar> {
+    map: MapView<'a, S>,
+    nu: usize,
+    nv: usize,
+    normals: bool,
+    /// `B_a(u_i)` at `a · nu + i`.
+    basis_u: Vec<S>,
+    /// The order−1 basis, same layout (empty without normals).
+    lower_u: Vec<S>,
+    basis_v: BasisTable<S>,
+}
+
+/// One evaluated row in structure-of-arrays form.
+#[derive(Clone, Debug, Default)]
+pub struct Row<S: Scalar> {
+    /// Component c of point i at `point[c][i]` (c < the map's dimension).
+    pub point: [Vec<S>; MAX_DIM],
+    /// ∂p/∂u × ∂p/∂v (rational-corrected, not normalised) at `cross[c][i]`; empty without
+    /// normals.
+    pub cross: [Vec<S>; 3],
+    du: [Vec<S>; MAX_DIM],
+    dv: [Vec<S>; MAX_DIM],
+    reduced: Vec<Vec4<S>>,
+    reduced_dv: Vec<Vec4<S>>,
+    coeffs: Vec<S>,
+}
+
+impl<S: Scalar> Row<S> {
+    /// The first `k` components of point `i`, the rest (0, 0, 0, 1) as GL widens.
+    #[must_use]
+    pub fn point_at(&self, i: usize, k: usize) -> Vec4<S> {
+        let mut p = [S::ZERO, S::ZERO, S::ZERO, S::ONE];
+        for (c, value) in p.iter_mut().enumerate().take(k) {
+            *value = self.point[c][i];
+        }
+        p
+    }
+
+    /// The unnormalised normal direction at point `i`.
+    #[must_use]
+    pub fn cross_at(&self, i: usize) -> [S; 3] {
+        [self.cross[0][i], self.cross[1][i], self.cross[2][i]]
+    }
+}
+
+/// `B(t)` for every t in `params`, order-major.
+fn order_major_basis<S: Scalar>(order: usize, params: &[S]) -> Vec<S> {
+    let n = params.len();
+    let mut table = vec![S::ZERO; order * n];
+    let mut b = vec![S::ZERO; order];
+    for (i, &t) in params.iter().enumerate() {
+        bernstein(order, t, &mut b);
+        for (a, &value) in b.iter().enumerate() {
+            table[a * n + i] = value;
+        }
+    }
+    table
+}
+
+/// `out[i] = Σ_a basis[a·n + i] · coeffs[a]`, summed from a = 0 up.
+fn combine_row<S: Scalar>(basis: &[S], coeffs: &[S], n: usize, out: &mut Vec<S>) {
+    out.clear();
+    out.resize(n, S::ZERO);
+    for (a, &c) in coeffs.iter().enumerate() {
+        for (o, &b) in out.iter_mut().zip(&basis[a * n..(a + 1) * n]) {
+            *o += b * c;
+        }
+    }
+}
+
+impl<'a, S: Scalar> RowKernel<'a, S> {
+    /// The kernel for `map` over `us` × `vs` (normalised parameters); `normals` adds the normal
+    /// direction. `None` if the map is malformed (see [`MapView`]).
+    #[must_use]
+    pub fn new(map: MapView<'a, S>, us: &[S], vs: &[S], normals: bool) -> Option<Self> {
+        if !map.is_valid() {
+            return None;
+        }
+        let lower_u = if normals && map.uorder > 1 { order_major_basis(map.uorder - 1, us) } else { Vec::new() };
+        Some(Self {
+            map,
+            nu: us.len(),
+            nv: vs.len(),
+            normals,
+            basis_u: order_major_basis(map.uorder, us),
+            lower_u,
+            basis_v: BasisTable::new(map.vorder, vs, normals),
+        })
+    }
+
+    /// Points per row.
+    #[must_use]
+    pub fn row_len(&self) -> usize {
+        self.nu
+    }
+
+    /// Number of rows.
+    #[must_use]
+    pub fn rows(&self) -> usize {
+        self.nv
+    }
+
+    /// Evaluates row `j` (`j < self.rows()`) into `row`.
+    pub fn eval_row(&self, j: usize, row: &mut Row<S>) {
+        let (dim, uorder, nu) = (self.map.dim, self.map.uorder, self.nu);
+        row.reduced.resize(uorder, [S::ZERO; MAX_DIM]);
+        row.reduced_dv.resize(uorder, [S::ZERO; MAX_DIM]);
+        let bv = self.basis_v.at(j);
+        reduce_rows(&self.map, bv, self.basis_v.lower_at(j), self.normals, &mut row.reduced, &mut row.reduced_dv);
+        for c in 0..dim {
+            row.coeffs.clear();
+            row.coeffs.extend(row.reduced.iter().map(|r| r[c]));
+            combine_row(&self.basis_u, &row.coeffs, nu, &mut row.point[c]);
+        }
+        if !self.normals {
+            return;
+        }
+        let n = S::from_usize(uorder.saturating_sub(1));
+        for c in 0..dim {
+            row.coeffs.clear();
+            row.coeffs.extend(row.reduced.windows(2).map(|w| w[1][c] - w[0][c]));
+            combine_row(&self.lower_u, &row.coeffs, nu, &mut row.du[c]);
+            row.du[c].iter_mut().for_each(|d| *d *= n);
+            row.coeffs.clear();
+            row.coeffs.extend(row.reduced_dv.iter().map(|r| r[c]));
+            combine_row(&self.basis_u, &row.coeffs, nu, &mut row.dv[c]);
+        }
+        if dim == 4 {
+            rational_correction(&mut row.du, &row.point);
+            rational_correction(&mut row.dv, &row.point);
+        }
+        cross_rows(&row.du, &row.dv, dim, nu, &mut row.cross);
+    }
+}
+
+/// `d ← d·w − p·d_w` per point (the direction of the projected derivative, times w²).
+fn rational_correction<S: Scalar>(d: &mut [Vec<S>; MAX_DIM], p: &[Vec<S>; MAX_DIM]) {
+    let (xyz, w) = d.split_at_mut(3);
+    let dw = &w[0];
+    for (c, dc) in xyz.iter_mut().enumerate() {
+        for (((x, &dwi), &pc), &w) in dc.iter_mut().zip(dw).zip(&p[c]).zip(&p[3]) {
+            *x = *x * w - dwi * pc;
+        }
+    }
+}
+
+/// `out = a × b` per point, written as Mesa's `CROSS3`; components past `dim` count as zero.
+fn cross_rows<S: Scalar>(a: &[Vec<S>; MAX_DIM], b: &[Vec<S>; MAX_DIM], dim: usize, n: usize, out: &mut [Vec<S>; 3]) {
+    let zero = vec![S::ZERO; if dim < 3 { n } else { 0 }];
+    let [ax, ay, az] = [0, 1, 2].map(|c| if c < dim { a[c].as_slice() } else { zero.as_slice() });
+    let [bx, by, bz] = [0, 1, 2].map(|c| if c < dim { b[c].as_slice() } else { zero.as_slice() });
+    for (c, o) in out.iter_mut().enumerate() {
+        o.clear();
+        let (p, q, r, s) = match c {
+            0 => (ay, bz, az, by),
+            1 => (az, bx, ax, bz),
+            _ => (ax, by, ay, bx),
+        };
+        o.extend(p.iter().zip(q).zip(r.iter().zip(s)).map(|((&p, &q), (&r, &s))| p * q - r * s));
+    }
+}
+
+/// Grids with fewer points than this run on one thread (spawning costs more than it saves).
+const MIN_POINTS_PER_THREAD: usize = 1 << 15;
+
+fn cores() -> usize {
+    static CORES: OnceLock<usize> = OnceLock::new();
+    *CORES.get_or_init(|| std::thread::available_parallelism().map_or(1, usize::from))
+}
+
+/// Rows per band when `rows` rows of `row_len` items are shared out: all of them (one band)
+/// for small grids, else about one band per core.
+#[must_use]
+pub fn rows_per_band(rows: usize, row_len: usize) -> usize {
+    let threads = cores().min(rows.saturating_mul(row_len) / MIN_POINTS_PER_THREAD).clamp(1, rows.max(1));
+    rows.div_ceil(threads).max(1)
+}
+
+/// Runs `work(k, band)` for every band `k`, on scoped threads when there is more than one.
+pub fn run_bands<B: Send>(bands: impl Iterator<Item = B>, work: impl Fn(usize, B) + Sync) {
+    let mut bands = bands.enumerate().peekable();
+    let Some((_, first)) = bands.next() else { return };
+    if bands.peek().is_none() {
+        work(0, first);
+        return;
+    }
+    std::thread::scope(|scope| {
+        let work = &work;
+        for (k, band) in bands {
+            scope.spawn(move || work(k, band));
+        }
+        work(0, first);
+    });
+}
+
+/// Runs `work(first_row, rows)` over `out`, a grid of `row_len` items per row, split into
+/// bands of whole rows, one band per core when the grid is large enough.
+pub fn for_row_bands<T: Send>(out: &mut [T], row_len: usize, work: impl Fn(usize, &mut [T]) + Sync) {
+    if row_len == 0 || out.is_empty() {
+        return;
+    }
+    let band = rows_per_band(out.len().div_ceil(row_len), row_len);
+    run_bands(out.chunks_mut(band * row_len), |k, chunk| work(k * band, chunk));
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::tess::{eval_grid2, Grid2};
+
+    fn net(uo: usize, vo: usize, dim: usize) -> Vec<f64> {
+        (0..uo * vo * dim).map(|k| ((k * 37 % 23) as f64) * 0.3 - 2.5 + if k % dim == 3 { 4.0 } else { 0.0 }).collect()
+    }
+
+    /// The row kernel gives the same bits as the point-by-point grid path, normals included.
+    #[test]
+    fn rows_match_the_reference_grid() {
+        for dim in 1..=4 {
+            for (uo, vo) in [(1, 1), (1, 4), (4, 1), (4, 4), (2, 7), (30, 3)] {
+                let pts = net(uo, vo, dim);
+                let map = MapView { dim, uorder: uo, vorder: vo, points: &pts };
+                let us = [0.0, 0.25, 0.6, 1.0, -0.3];
+                let vs = [0.0, 0.5, 1.0, 1.2];
+                let mut g = Grid2::default();
+                eval_grid2(&map, &us, &vs, true, &mut g);
+                let kernel = RowKernel::new(map, &us, &vs, true).expect("valid");
+                let mut row = Row::default();
+                for j in 0..vs.len() {
+                    kernel.eval_row(j, &mut row);
+                    for i in 0..us.len() {
+                        let k = j * us.len() + i;
+                        assert_eq!(&row.point_at(i, dim)[..dim], &g.points[k][..dim], "{dim} {uo}x{vo}");
+                        let (a, b) = if dim == 4 {
+                            let r = crate::math::rational::rational_derivative;
+                            (r(g.points[k], g.du[k]), r(g.points[k], g.dv[k]))
+                        } else {
+                            ([g.du[k][0], g.du[k][1], g.du[k][2]], [g.dv[k][0], g.dv[k][1], g.dv[k][2]])
+                        };
+                        assert_eq!(row.cross_at(i), crate::math::rational::cross(a, b), "{dim} {uo}x{vo} normal");
+                    }
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn bands_cover_every_row_once() {
+        for (len, row_len) in [(0, 3), (7, 7), (100_000, 10), (100_001, 1000), (1 << 17, 3)] {
+            let mut out = vec![usize::MAX; len];
+            for_row_bands(&mut out, row_len, |first, band| {
+                for (k, x) in band.iter_mut().enumerate() {
+                    *x = first * row_len + k;
+                }
+            });
+            assert!(out.iter().enumerate().all(|(k, &x)| k == x), "{len} {row_len}");
+        }
+    }
+
+    #[test]
+    fn malformed_map_has_no_kernel() {
+        let map = MapView { dim: 3, uorder: 4, vorder: 4, points: &[1.0f32; 5] };
+        assert!(RowKernel::new(map, &[0.0], &[0.0], true).is_none());
+    }
+}
