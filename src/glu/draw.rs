@@ -12,6 +12,7 @@ use crate::gl::consts::*;
 use crate::gl::types::GLenum;
 use crate::gl::{Gl, MapTarget, Slot};
 use crate::math::rational::{cross, normalize, rational_derivative};
+use crate::tess::{MapView, Row, RowKernel};
 use glam::Vec4;
 
 fn slot_of(target: GLenum) -> Option<Slot> {
@@ -244,14 +245,29 @@ fn outline_patch(gl: &mut Gl, surface: &Surface, u: (f64, f64), v: (f64, f64), (
 }
 
 /// The grid blocks of one patch as `GL_QUAD_STRIP`s through the callbacks (GLU `mapmesh2f`).
+/// Positions come from one grid evaluation of the patch's Bezier piece (each point once, though
+/// the strips issue interior points twice); other maps and normals are evaluated per vertex.
 fn tessellate_patch(obj: &mut NurbsObject, surface: &Surface, u: (f64, f64), v: (f64, f64), (nu, nv): (usize, usize)) {
     let at = |r: (f64, f64), i: usize, n: usize| if i == n { r.1 } else { r.0 + (r.1 - r.0) * i as f64 / n as f64 };
+    let us: Vec<f64> = (0..=nu).map(|i| at(u, i, nu)).collect();
+    let vs: Vec<f64> = (0..=nv).map(|j| at(v, j, nv)).collect();
+    let grid = grid_vertices(&surface.pos, surface.k, &us, &vs);
+    let per_vertex = !surface.attributes.is_empty() || obj.callbacks.wants_normals();
+    let emit = |obj: &mut NurbsObject, i: usize, j: usize| {
+        if per_vertex {
+            emit_attributes(obj, surface.view_ref(), us[i], vs[j]);
+        }
+        match &grid {
+            Some(g) => obj.callbacks.attribute(GLU_NURBS_VERTEX, &g[j * (nu + 1) + i]),
+            None => emit_position(obj, &surface.pos, surface.k, us[i], vs[j]),
+        }
+    };
     if nu >= nv {
         for i in 0..nu {
             obj.callbacks.begin(GL_QUAD_STRIP);
             for j in (0..=nv).rev() {
-                emit_vertex(obj, surface.view_ref(), at(u, i, nu), at(v, j, nv));
-                emit_vertex(obj, surface.view_ref(), at(u, i + 1, nu), at(v, j, nv));
+                emit(obj, i, j);
+                emit(obj, i + 1, j);
             }
             obj.callbacks.end();
         }
@@ -259,12 +275,37 @@ fn tessellate_patch(obj: &mut NurbsObject, surface: &Surface, u: (f64, f64), v: 
         for j in 0..nv {
             obj.callbacks.begin(GL_QUAD_STRIP);
             for i in (0..=nu).rev() {
-                emit_vertex(obj, surface.view_ref(), at(u, i, nu), at(v, j + 1, nv));
-                emit_vertex(obj, surface.view_ref(), at(u, i, nu), at(v, j, nv));
+                emit(obj, i, j + 1);
+                emit(obj, i, j);
             }
             obj.callbacks.end();
         }
     }
+}
+
+/// The vertex-callback data (x, y, z divided by w, then u, v) of every point of the grid
+/// `us` × `vs` (v outer), all inside one Bezier piece of `pos`, evaluated on the grid path.
+fn grid_vertices(pos: &SurfacePatches, k: usize, us: &[f64], vs: &[f64]) -> Option<Vec<[f32; 5]>> {
+    let p = &pos.patches;
+    let mid = |r: &[f64]| 0.5 * (r[0] + r[r.len() - 1]);
+    let a = super::pieces::locate(&p.uintervals, mid(us))?;
+    let b = super::pieces::locate(&p.vintervals, mid(vs))?;
+    let ((ua, ub), (va, vb)) = (p.uintervals[a], p.vintervals[b]);
+    let su: Vec<f64> = us.iter().map(|&u| (u - ua) / (ub - ua)).collect();
+    let sv: Vec<f64> = vs.iter().map(|&v| (v - va) / (vb - va)).collect();
+    let view = MapView { dim: p.dim, uorder: p.uorder, vorder: p.vorder, points: p.patch(a, b)? };
+    let kernel = RowKernel::new(view, &su, &sv, false)?;
+    let mut row = Row::default();
+    let mut out = Vec::with_capacity(us.len() * vs.len());
+    for (j, &v) in vs.iter().enumerate() {
+        kernel.eval_row(j, &mut row);
+        out.extend(us.iter().enumerate().map(|(i, &u)| {
+            let p = row.point_at(i, k);
+            let w = if k == 4 { p[3] } else { 1.0 };
+            [(p[0] / w) as f32, (p[1] / w) as f32, (p[2] / w) as f32, u as f32, v as f32]
+        }));
+    }
+    Some(out)
 }
 
 impl Surface {
@@ -305,6 +346,17 @@ pub(crate) fn surface_normal(pos: &SurfacePatches, k: usize, u: f64, v: f64, dom
 /// x, y, z divided by w.
 pub(crate) fn emit_vertex(
     obj: &mut NurbsObject,
+    view @ (pos, _, k): (&SurfacePatches, &[SurfacePatches], usize),
+    u: f64,
+    v: f64,
+) {
+    emit_attributes(obj, view, u, v);
+    emit_position(obj, pos, k, u, v);
+}
+
+/// The attribute maps' values and the normal (if wanted) of the vertex at (u, v).
+fn emit_attributes(
+    obj: &mut NurbsObject,
     (pos, attributes, k): (&SurfacePatches, &[SurfacePatches], usize),
     u: f64,
     v: f64,
@@ -326,6 +378,10 @@ pub(crate) fn emit_vertex(
         ];
         obj.callbacks.attribute(GLU_NURBS_NORMAL, &surface_normal(pos, k, u, v, domain));
     }
+}
+
+/// The vertex callback at (u, v): (x, y, z) divided by w, then u, v.
+fn emit_position(obj: &mut NurbsObject, pos: &SurfacePatches, k: usize, u: f64, v: f64) {
     let Some(s) = pos.eval(u, v) else { return };
     let w = if k == 4 { s.point[3] } else { 1.0 };
     let vertex = [(s.point[0] / w) as f32, (s.point[1] / w) as f32, (s.point[2] / w) as f32, u as f32, v as f32];
