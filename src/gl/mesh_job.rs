@@ -9,6 +9,50 @@ use super::eval::{set_attribute, Slot};
 use super::Vertex;
 use crate::math::rational::normalize;
 use crate::tess::{for_row_bands, MapView, Row, RowKernel};
+use std::cell::RefCell;
+use std::ops::Range;
+
+/// Columns per tile of a long curve (`glEvalMesh1`): a degree-10 basis table of one tile is
+/// 88 KiB of f32.
+const CURVE_TILE: usize = 2048;
+
+thread_local! {
+    /// Row scratch of this thread, kept between meshes so that small meshes allocate nothing.
+    static SCRATCH_ROWS: RefCell<Vec<Row<f32>>> = const { RefCell::new(Vec::new()) };
+}
+
+/// Writes the evaluated `slot` of a row into its vertices (as [`set_attribute`] does, with the
+/// choice of field made once per row rather than per vertex).
+fn write_attribute(vertices: &mut [Vertex], slot: Slot, row: &Row<f32>) {
+    let p = &row.point;
+    match slot {
+        Slot::Vertex3 => {
+            for (v, ((x, y), z)) in vertices.iter_mut().zip(p[0].iter().zip(&p[1]).zip(&p[2])) {
+                v.position = [*x, *y, *z, 1.0];
+            }
+        }
+        Slot::Vertex4 => {
+            for (v, (((x, y), z), w)) in vertices.iter_mut().zip(p[0].iter().zip(&p[1]).zip(&p[2]).zip(&p[3])) {
+                v.position = [*x, *y, *z, *w];
+            }
+        }
+        _ => {
+            for (i, v) in vertices.iter_mut().enumerate() {
+                set_attribute(v, slot, row.point_at(i, slot.components()));
+            }
+        }
+    }
+}
+
+/// Runs `f` with `n` scratch rows of this thread.
+fn with_scratch_rows(n: usize, f: impl FnOnce(&mut [Row<f32>])) {
+    SCRATCH_ROWS.with_borrow_mut(|rows| {
+        if rows.len() < n {
+            rows.resize_with(n, Row::default);
+        }
+        f(&mut rows[..n]);
+    });
+}
 
 /// An enabled map sampled by a mesh.
 #[derive(Clone, Debug, PartialEq)]
@@ -78,14 +122,6 @@ impl MeshJob {
             *out = self.evaluate_scattered();
             return;
         }
-        let kernels: Vec<_> = self
-            .maps
-            .iter()
-            .map(|map| {
-                let normals = self.auto_normal && matches!(map.slot, Slot::Vertex3 | Slot::Vertex4);
-                (map.slot, normals, RowKernel::new(map.view(), &map.us, &map.vs, normals))
-            })
-            .collect();
         if out.capacity() >= self.len() {
             out.resize(self.len(), self.template);
         } else {
@@ -93,28 +129,73 @@ impl MeshJob {
             // below rather than all by this one.
             *out = bytemuck::zeroed_vec(self.len());
         }
+        if self.nv == 1 && self.nu > CURVE_TILE {
+            // A long curve: tiles of columns, so that each tile's basis table stays in cache
+            // and the tiles can be shared out between the cores.
+            for_row_bands(out, CURVE_TILE, |first_tile, band| {
+                with_scratch_rows(self.maps.len(), |rows| {
+                    for (t, vertices) in band.chunks_mut(CURVE_TILE).enumerate() {
+                        let start = (first_tile + t) * CURVE_TILE;
+                        let kernels = self.kernels(start..start + vertices.len());
+                        self.fill_row(&kernels, 0, rows, vertices);
+                    }
+                });
+            });
+            return;
+        }
+        let kernels = self.kernels(0..self.nu);
         for_row_bands(out, self.nu, |first_row, band| {
-            let mut rows = vec![Row::default(); kernels.len()];
-            for (r, vertices) in band.chunks_mut(self.nu).enumerate() {
-                for ((_, _, kernel), row) in kernels.iter().zip(&mut rows) {
-                    if let Some(kernel) = kernel {
-                        kernel.eval_row(first_row + r, row);
-                    }
+            with_scratch_rows(self.maps.len(), |rows| {
+                for (r, vertices) in band.chunks_mut(self.nu).enumerate() {
+                    self.fill_row(&kernels, first_row + r, rows, vertices);
                 }
+            });
+        });
+    }
+
+    /// A row kernel per map over the grid columns `columns` (`None` for a malformed map).
+    fn kernels(&self, columns: Range<usize>) -> Vec<(Slot, bool, Option<RowKernel<'_, f32>>)> {
+        self.maps
+            .iter()
+            .map(|map| {
+                let normals = self.auto_normal && matches!(map.slot, Slot::Vertex3 | Slot::Vertex4);
+                let us = map.us.get(columns.clone()).unwrap_or_default();
+                (map.slot, normals, RowKernel::new(map.view(), us, &map.vs, normals))
+            })
+            .collect()
+    }
+
+    /// Writes row `j` of every map into `vertices`: the template, then each map's attribute in
+    /// Mesa's order (the vertex map last), and the normal where `GL_AUTO_NORMAL` asks for it.
+    fn fill_row(
+        &self,
+        kernels: &[(Slot, bool, Option<RowKernel<'_, f32>>)],
+        j: usize,
+        rows: &mut [Row<f32>],
+        vertices: &mut [Vertex],
+    ) {
+        for ((_, _, kernel), row) in kernels.iter().zip(rows.iter_mut()) {
+            if let Some(kernel) = kernel {
+                kernel.eval_row(j, row);
+            }
+        }
+        vertices.fill(self.template);
+        for ((slot, normals, kernel), row) in kernels.iter().zip(rows.iter()) {
+            // A malformed map (never made by the façade) evaluates to zeros.
+            let Some(_) = kernel else {
+                vertices.iter_mut().for_each(|v| set_attribute(v, *slot, [0.0; 4]));
+                if *normals {
+                    vertices.iter_mut().for_each(|v| v.normal = [0.0; 3]);
+                }
+                continue;
+            };
+            write_attribute(vertices, *slot, row);
+            if *normals {
                 for (i, v) in vertices.iter_mut().enumerate() {
-                    *v = self.template;
-                    for ((slot, normals, kernel), row) in kernels.iter().zip(&rows) {
-                        let k = slot.components();
-                        // A malformed map (never made by the façade) evaluates to zeros.
-                        let valid = kernel.is_some();
-                        set_attribute(v, *slot, if valid { row.point_at(i, k) } else { [0.0; 4] });
-                        if *normals {
-                            v.normal = if valid { normalize(row.cross_at(i)) } else { [0.0; 3] };
-                        }
-                    }
+                    v.normal = normalize(row.cross_at(i));
                 }
             }
-        });
+        }
     }
 
     /// Scattered points, each evaluated alone (the CPU oracle of GLU's trimmed surfaces).

@@ -148,24 +148,51 @@ impl<S: Scalar> BezierPatch<S> {
         let band = rows_per_band(nv, nu) * nu;
         let bands =
             mesh.positions.chunks_mut(band).zip(mesh.normals.chunks_mut(band)).zip(mesh.tex_coords.chunks_mut(band));
+        let us_f32: Vec<f32> = us.iter().map(|u| u.to_f64() as f32).collect();
         run_bands(bands, |k, ((positions, normals), tex_coords)| {
             let mut row = Row::default();
             let rows = positions.chunks_mut(nu).zip(normals.chunks_mut(nu)).zip(tex_coords.chunks_mut(nu));
             for (r, ((positions, normals), tex_coords)) in rows.enumerate() {
                 let j = k * band / nu + r;
                 kernel.eval_row(j, &mut row);
+                // One simple loop per output, so that each vectorises.
+                write_positions(&row, dim, rational, positions);
+                let [x, y, z] = &row.cross;
+                for (normal, ((x, y), z)) in normals.iter_mut().zip(x.iter().zip(y).zip(z)) {
+                    *normal = unit_normal([*x, *y, *z]);
+                }
                 let t = vs[j].to_f64() as f32;
-                for (i, ((position, normal), tex)) in positions.iter_mut().zip(normals).zip(tex_coords).enumerate() {
-                    let w = if rational { row.point[3][i] } else { S::ONE };
-                    for c in 0..dim {
-                        position[c] = (row.point[c][i] / w).to_f64() as f32;
-                    }
-                    *normal = unit_normal(row.cross_at(i));
-                    *tex = [us[i].to_f64() as f32, t];
+                for (tex, &u) in tex_coords.iter_mut().zip(&us_f32) {
+                    *tex = [u, t];
                 }
             }
         });
         Ok(())
+    }
+}
+
+/// The row's points as f32 positions, divided by w for a rational patch.
+fn write_positions<S: Scalar>(row: &Row<S>, dim: usize, rational: bool, positions: &mut [[f32; 3]]) {
+    let p = &row.point;
+    match (dim, rational) {
+        (3, false) => {
+            for (out, ((x, y), z)) in positions.iter_mut().zip(p[0].iter().zip(&p[1]).zip(&p[2])) {
+                *out = [x.to_f64() as f32, y.to_f64() as f32, z.to_f64() as f32];
+            }
+        }
+        (3, true) => {
+            for (out, (((x, y), z), w)) in positions.iter_mut().zip(p[0].iter().zip(&p[1]).zip(&p[2]).zip(&p[3])) {
+                *out = [(*x / *w).to_f64() as f32, (*y / *w).to_f64() as f32, (*z / *w).to_f64() as f32];
+            }
+        }
+        _ => {
+            for (i, out) in positions.iter_mut().enumerate() {
+                let w = if rational { p[3][i] } else { S::ONE };
+                for c in 0..dim {
+                    out[c] = (p[c][i] / w).to_f64() as f32;
+                }
+            }
+        }
     }
 }
 

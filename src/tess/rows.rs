@@ -13,7 +13,6 @@
 use super::grid::{reduce_rows, BasisTable, MapView};
 use crate::math::bezier::{bernstein, Vec4, MAX_DIM};
 use crate::math::Scalar;
-use std::sync::OnceLock;
 
 /// A patch over a fixed grid, ready to evaluate any of its rows.
 #[derive(Clone, Debug)]
@@ -179,36 +178,32 @@ fn cross_rows<S: Scalar>(a: &[Vec<S>; MAX_DIM], b: &[Vec<S>; MAX_DIM], dim: usiz
     }
 }
 
-/// Grids with fewer points than this run on one thread (spawning costs more than it saves).
-const MIN_POINTS_PER_THREAD: usize = 1 << 15;
-
-fn cores() -> usize {
-    static CORES: OnceLock<usize> = OnceLock::new();
-    *CORES.get_or_init(|| std::thread::available_parallelism().map_or(1, usize::from))
-}
+/// Grids with fewer points than this run on one thread (handing work to the pool costs more
+/// than it saves).
+const MIN_POINTS_PER_THREAD: usize = 1 << 11;
 
 /// Rows per band when `rows` rows of `row_len` items are shared out: all of them (one band)
-/// for small grids, else about one band per core.
+/// for small grids, else about one band per thread of rayon's pool.
 #[must_use]
 pub fn rows_per_band(rows: usize, row_len: usize) -> usize {
-    let threads = cores().min(rows.saturating_mul(row_len) / MIN_POINTS_PER_THREAD).clamp(1, rows.max(1));
-    rows.div_ceil(threads).max(1)
+    let threads = rayon::current_num_threads().min(rows.saturating_mul(row_len) / MIN_POINTS_PER_THREAD);
+    rows.div_ceil(threads.clamp(1, rows.max(1))).max(1)
 }
 
-/// Runs `work(k, band)` for every band `k`, on scoped threads when there is more than one.
+/// Runs `work(k, band)` for every band `k`, on rayon's pool when there is more than one.
 pub fn run_bands<B: Send>(bands: impl Iterator<Item = B>, work: impl Fn(usize, B) + Sync) {
-    let mut bands = bands.enumerate().peekable();
-    let Some((_, first)) = bands.next() else { return };
-    if bands.peek().is_none() {
-        work(0, first);
+    let mut bands: Vec<B> = bands.collect();
+    if bands.len() <= 1 {
+        if let Some(band) = bands.pop() {
+            work(0, band);
+        }
         return;
     }
-    std::thread::scope(|scope| {
+    rayon::scope(|scope| {
         let work = &work;
-        for (k, band) in bands {
-            scope.spawn(move || work(k, band));
+        for (k, band) in bands.into_iter().enumerate() {
+            scope.spawn(move |_| work(k, band));
         }
-        work(0, first);
     });
 }
 
