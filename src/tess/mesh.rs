@@ -2,7 +2,7 @@
 //! non-GL user wants (positions, unit normals, texture coordinates, counter-clockwise triangles).
 
 use super::grid::MapView;
-use super::rows::{for_row_bands, rows_per_band, run_bands, Row, RowKernel};
+use super::rows::{rows_per_band, run_bands, Row, RowKernel};
 use crate::math::{BezierPatch, Scalar};
 
 /// An indexed triangle mesh.
@@ -82,21 +82,21 @@ fn unit_normal<S: Scalar>(n: [S; 3]) -> [f32; 3] {
     }
 }
 
-/// The two triangles of every cell of an `nu` × `nv` grid, as [`Mesh::push_grid_triangles`],
-/// written into `indices` (replacing its contents) a band of cell rows per core.
-fn grid_triangles_into(nu: usize, nv: usize, indices: &mut Vec<u32>) {
+/// Writes the two triangles of every cell of the cell rows starting at `first_row` into
+/// `indices` (`6 (nu − 1)` per cell row), as [`Mesh::push_grid_triangles`] orders them.
+fn write_cell_rows(nu: usize, first_row: usize, indices: &mut [u32]) {
     let row_len = 6 * nu.saturating_sub(1);
-    reuse_or_calloc(indices, row_len * nv.saturating_sub(1));
-    for_row_bands(indices, row_len, |first_row, band| {
-        for (r, row) in band.chunks_mut(row_len).enumerate() {
-            let start = ((first_row + r) * nu) as u32;
-            for (i, cell) in row.chunks_exact_mut(6).enumerate() {
-                let a = start + i as u32;
-                let (b, c, d) = (a + 1, a + nu as u32 + 1, a + nu as u32);
-                cell.copy_from_slice(&[a, b, c, a, c, d]);
-            }
+    if row_len == 0 {
+        return;
+    }
+    for (r, row) in indices.chunks_mut(row_len).enumerate() {
+        let start = ((first_row + r) * nu) as u32;
+        for (i, cell) in row.chunks_exact_mut(6).enumerate() {
+            let a = start + i as u32;
+            let (b, c, d) = (a + 1, a + nu as u32 + 1, a + nu as u32);
+            cell.copy_from_slice(&[a, b, c, a, c, d]);
         }
-    });
+    }
 }
 
 impl<S: Scalar> BezierPatch<S> {
@@ -144,12 +144,20 @@ impl<S: Scalar> BezierPatch<S> {
         reuse_or_calloc(&mut mesh.positions, count);
         reuse_or_calloc(&mut mesh.normals, count);
         reuse_or_calloc(&mut mesh.tex_coords, count);
-        grid_triangles_into(nu, nv, &mut mesh.indices);
-        let band = rows_per_band(nv, nu) * nu;
-        let bands =
-            mesh.positions.chunks_mut(band).zip(mesh.normals.chunks_mut(band)).zip(mesh.tex_coords.chunks_mut(band));
+        reuse_or_calloc(&mut mesh.indices, 6 * (nu - 1) * (nv - 1));
+        let band_rows = rows_per_band(nv, nu);
+        let band = band_rows * nu;
+        // Band k also writes the cell rows starting in its rows (the last band has one fewer).
+        let cells = mesh.indices.chunks_mut(band_rows * 6 * (nu - 1)).chain(std::iter::repeat_with(|| &mut [][..]));
+        let bands = mesh
+            .positions
+            .chunks_mut(band)
+            .zip(mesh.normals.chunks_mut(band))
+            .zip(mesh.tex_coords.chunks_mut(band))
+            .zip(cells);
         let us_f32: Vec<f32> = us.iter().map(|u| u.to_f64() as f32).collect();
-        run_bands(bands, |k, ((positions, normals), tex_coords)| {
+        run_bands(bands, |k, (((positions, normals), tex_coords), cells)| {
+            write_cell_rows(nu, k * band_rows, cells);
             let mut row = Row::default();
             let rows = positions.chunks_mut(nu).zip(normals.chunks_mut(nu)).zip(tex_coords.chunks_mut(nu));
             for (r, ((positions, normals), tex_coords)) in rows.enumerate() {
@@ -240,7 +248,9 @@ mod tests {
         patch.tessellate_grid_into(&us, &vs, &mut mesh).unwrap();
         assert_eq!(mesh, patch.tessellate(su, sv).unwrap());
         assert_eq!(mesh.positions.len(), us.len() * vs.len());
-        assert_eq!(mesh.indices.len(), 6 * su * sv);
+        let mut cells = Mesh::default();
+        cells.push_grid_triangles(0, us.len() as u32, vs.len() as u32);
+        assert_eq!(mesh.indices, cells.indices, "banded cell rows = the one-loop reference");
         for (k, p) in mesh.positions.iter().enumerate() {
             let (u, v) = (us[k % us.len()], vs[k / us.len()]);
             let h = crate::math::patch::horner_patch(&points, 4, 4, 3, u, v);
