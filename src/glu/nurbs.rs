@@ -384,6 +384,9 @@ impl Gl {
         let Some(surface) = obj.nesting.surface.take() else {
             return obj.nurbs_error(13);
         };
+        // A surface begun by `gluBeginTrim` is over too (GLU's `inSurface = 0`): the next
+        // `gluNurbsSurface` must not end its own surface early.
+        obj.nesting.auto_surface = false;
         if surface.valid {
             self.with_nurbs(nobj, |gl, obj| super::draw::draw_surface(gl, obj, &surface));
         }

@@ -7,6 +7,7 @@ mod glu_errors;
 mod glu_tessellation;
 mod gpu_parity;
 mod mesa_calls;
+mod properties;
 mod robustness;
 mod shaders;
 mod spec_errors;
