@@ -23,7 +23,7 @@ pub struct Mesh {
 pub enum MeshError {
     /// A grid needs at least one segment in each direction.
     EmptyGrid,
-    /// More vertices than 32-bit indices can address.
+    /// More vertices than [`MAX_MESH_VERTICES`].
     TooLarge(usize),
     /// The patch's dimension, orders and number of control values disagree.
     MalformedPatch,
@@ -33,7 +33,7 @@ impl std::fmt::Display for MeshError {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
             Self::EmptyGrid => write!(f, "a mesh grid needs at least one segment along u and along v"),
-            Self::TooLarge(n) => write!(f, "{n} vertices do not fit 32-bit indices"),
+            Self::TooLarge(n) => write!(f, "{n} vertices are more than one mesh may hold ({MAX_MESH_VERTICES})"),
             Self::MalformedPatch => write!(f, "the patch's dimension, orders and control values disagree"),
         }
     }
@@ -115,6 +115,10 @@ impl<S: Scalar> BezierPatch<S> {
         if segments_u == 0 || segments_v == 0 {
             return Err(MeshError::EmptyGrid);
         }
+        let count = segments_u.saturating_add(1).saturating_mul(segments_v.saturating_add(1));
+        if count > MAX_MESH_VERTICES {
+            return Err(MeshError::TooLarge(count));
+        }
         let param = |k: usize, n: usize| S::from_f64(k as f64 / n as f64);
         let us: Vec<S> = (0..=segments_u).map(|i| param(i, segments_u)).collect();
         let vs: Vec<S> = (0..=segments_v).map(|j| param(j, segments_v)).collect();
@@ -137,7 +141,10 @@ impl<S: Scalar> BezierPatch<S> {
         if nu < 2 || nv < 2 {
             return Err(MeshError::EmptyGrid);
         }
-        let count = nu.checked_mul(nv).filter(|&n| n <= u32::MAX as usize).ok_or(MeshError::TooLarge(usize::MAX))?;
+        let count = nu.saturating_mul(nv);
+        if count > MAX_MESH_VERTICES {
+            return Err(MeshError::TooLarge(count));
+        }
         let view = MapView { dim: self.dim, uorder: self.uorder, vorder: self.vorder, points: &self.points };
         let kernel = RowKernel::new(view, us, vs, true).ok_or(MeshError::MalformedPatch)?;
         let (rational, dim) = (self.dim == 4, self.dim.min(3));
@@ -204,6 +211,10 @@ fn write_positions<S: Scalar>(row: &Row<S>, dim: usize, rational: bool, position
     }
 }
 
+/// The most vertices one tessellation may produce (as `glEvalMesh`'s limit): 2²⁷, about 7 GiB
+/// of mesh. Beyond it `tessellate` answers [`MeshError::TooLarge`] instead of exhausting memory.
+pub const MAX_MESH_VERTICES: usize = 1 << 27;
+
 /// Makes `v` hold `len` elements: in place when its memory suffices, else zeros from calloc
 /// (whose pages are then faulted in by the threads that fill them, not all by this one).
 fn reuse_or_calloc<T: Copy + Default>(v: &mut Vec<T>, len: usize) {
@@ -257,6 +268,16 @@ mod tests {
             for c in 0..3 {
                 assert!((f64::from(p[c]) - h[c] / h[3]).abs() < 1e-5, "{k}");
             }
+        }
+    }
+
+    #[test]
+    fn absurd_grids_are_refused_not_allocated() {
+        let patch = BezierPatch::try_new(3, 2, 2, vec![0.0; 12]).unwrap();
+        for (su, sv) in [(60_000, 60_000), (usize::MAX, 2), (1 << 14, 1 << 13)] {
+            let err = patch.tessellate(su, sv).unwrap_err();
+            assert!(matches!(err, MeshError::TooLarge(_)), "{su} x {sv}");
+            assert!(err.to_string().contains("more than one mesh"));
         }
     }
 

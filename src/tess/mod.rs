@@ -11,5 +11,5 @@ pub mod rows;
 pub mod trim;
 
 pub use grid::{eval_grid1, eval_grid2, BasisTable, Grid2, MapView};
-pub use mesh::{Mesh, MeshError};
+pub use mesh::{Mesh, MeshError, MAX_MESH_VERTICES};
 pub use rows::{for_row_bands, rows_per_band, run_bands, Row, RowKernel};

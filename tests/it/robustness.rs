@@ -144,7 +144,10 @@ fn known_error(e: u32) -> bool {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 400, ..ProptestConfig::default() })]
+    #![proptest_config(ProptestConfig {
+        cases: std::env::var("PROPTEST_CASES").ok().and_then(|v| v.parse().ok()).unwrap_or(400),
+        ..ProptestConfig::default()
+    })]
 
     #[test]
     fn random_calls_never_panic_and_leave_a_usable_context(calls in proptest::collection::vec(call(), 0..40)) {
