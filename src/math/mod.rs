@@ -7,15 +7,19 @@
 
 pub mod bezier;
 pub mod bspline;
+pub mod hermite;
 pub mod insertion;
 pub mod knots;
 pub mod patch;
 pub mod rational;
 pub mod scalar;
+pub mod spline;
 
 pub use bezier::{BezierCurve, Vec4, MAX_DIM};
+pub use hermite::HermiteCurve;
 pub use patch::{BezierPatch, PatchSample, MAX_ORDER};
 pub use scalar::Scalar;
+pub use spline::CubicSpline;
 
 /// What the typed math API rejects.
 #[derive(Clone, Debug, PartialEq)]
@@ -35,6 +39,8 @@ pub enum MathError {
     Knots(&'static str),
     /// A parameter outside the curve's valid range.
     OutOfRange,
+    /// Interpolation data that cannot define the curve, and why.
+    BadData(&'static str),
 }
 
 impl core::fmt::Display for MathError {
@@ -47,6 +53,7 @@ impl core::fmt::Display for MathError {
             }
             Self::Knots(why) => write!(f, "invalid knot vector: {why}"),
             Self::OutOfRange => write!(f, "parameter outside the valid range"),
+            Self::BadData(why) => write!(f, "invalid data: {why}"),
         }
     }
 }

@@ -11,3 +11,4 @@ mod properties;
 mod robustness;
 mod shaders;
 mod spec_errors;
+mod textbook;
