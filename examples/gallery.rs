@@ -19,6 +19,16 @@ mod bezsurf;
 mod bsurf;
 #[path = "colormap.rs"]
 mod colormap;
+#[path = "ex1_bezier.rs"]
+mod ex1_bezier;
+#[path = "ex2_bspline.rs"]
+mod ex2_bspline;
+#[path = "ex3_bspline_n.rs"]
+mod ex3_bspline_n;
+#[path = "ex4_bspline_surface.rs"]
+mod ex4_bspline_surface;
+#[path = "ex5_bird.rs"]
+mod ex5_bird;
 #[path = "flattwoviewports.rs"]
 mod flattwoviewports;
 #[path = "linespoints.rs"]
@@ -37,7 +47,7 @@ mod trimmed;
 /// A built-in program: its name and how to build it.
 type Program = (&'static str, fn() -> App);
 
-const PROGRAMS: [Program; 12] = [
+const PROGRAMS: [Program; 17] = [
     ("bezcurve", bezcurve::app),
     ("bezsurf", bezsurf::app),
     ("bcurve", bcurve::app),
@@ -50,6 +60,11 @@ const PROGRAMS: [Program; 12] = [
     ("trimmed", trimmed::app),
     ("rational", rational::app),
     ("outline", outline::app),
+    ("ex1bezier", ex1_bezier::app),
+    ("ex2bspline", ex2_bspline::app),
+    ("ex3bsplinen", ex3_bspline_n::app),
+    ("ex4bsplinesurface", ex4_bspline_surface::app),
+    ("ex5bird", ex5_bird::app),
 ];
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {

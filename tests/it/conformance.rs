@@ -18,6 +18,16 @@ mod bezsurf;
 mod bsurf;
 #[path = "../../examples/colormap.rs"]
 mod colormap;
+#[path = "../../examples/ex1_bezier.rs"]
+mod ex1_bezier;
+#[path = "../../examples/ex2_bspline.rs"]
+mod ex2_bspline;
+#[path = "../../examples/ex3_bspline_n.rs"]
+mod ex3_bspline_n;
+#[path = "../../examples/ex4_bspline_surface.rs"]
+mod ex4_bspline_surface;
+#[path = "../../examples/ex5_bird.rs"]
+mod ex5_bird;
 #[path = "../../examples/flattwoviewports.rs"]
 mod flattwoviewports;
 #[path = "../../examples/linespoints.rs"]
@@ -166,4 +176,14 @@ const LEAKED_NORMAL_TRIANGLE: f64 = 700.0;
 #[test]
 fn flat_shading_culling_and_viewports_match_mesa() {
     check("flattwoviewports", flattwoviewports::app, LEAKED_NORMAL_TRIANGLE);
+}
+
+/// The exercises of seed 004, 9.7.2, against their C versions (`Ex*.c`) on real Mesa.
+#[test]
+fn textbook_exercises_match_mesa() {
+    check("ex1bezier", ex1_bezier::app, 0.0);
+    check("ex2bspline", ex2_bspline::app, 0.0);
+    check("ex3bsplinen", ex3_bspline_n::app, 0.0);
+    check("ex4bsplinesurface", ex4_bspline_surface::app, 0.0);
+    check("ex5bird", ex5_bird::app, 0.0);
 }
