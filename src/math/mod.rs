@@ -6,6 +6,7 @@
 //! Control points are flat slices with `dim` (1..=4, GL's component counts) values per point.
 
 pub mod bezier;
+pub mod bezier_ops;
 pub mod bspline;
 pub mod hermite;
 pub mod insertion;
@@ -16,6 +17,7 @@ pub mod scalar;
 pub mod spline;
 
 pub use bezier::{BezierCurve, Vec4, MAX_DIM};
+pub use bezier_ops::Frenet;
 pub use hermite::HermiteCurve;
 pub use patch::{BezierPatch, PatchSample, MAX_ORDER};
 pub use scalar::Scalar;
