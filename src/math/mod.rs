@@ -14,6 +14,7 @@ pub mod knots;
 pub mod patch;
 pub mod rational;
 pub mod scalar;
+pub mod shapes;
 pub mod spline;
 
 pub use bezier::{BezierCurve, Vec4, MAX_DIM};
