@@ -10,6 +10,7 @@ pub mod bezier_ops;
 pub mod bspline;
 pub mod hermite;
 pub mod insertion;
+pub mod interpolate;
 pub mod knots;
 pub mod patch;
 pub mod rational;
