@@ -19,6 +19,8 @@ mod bezsurf;
 mod bsurf;
 #[path = "colormap.rs"]
 mod colormap;
+#[path = "demo.rs"]
+mod demo;
 #[path = "ex1_bezier.rs"]
 mod ex1_bezier;
 #[path = "ex2_bspline.rs"]
@@ -47,7 +49,7 @@ mod trimmed;
 /// A built-in program: its name and how to build it.
 type Program = (&'static str, fn() -> App);
 
-const PROGRAMS: [Program; 17] = [
+const PROGRAMS: [Program; 18] = [
     ("bezcurve", bezcurve::app),
     ("bezsurf", bezsurf::app),
     ("bcurve", bcurve::app),
@@ -65,6 +67,7 @@ const PROGRAMS: [Program; 17] = [
     ("ex3bsplinen", ex3_bspline_n::app),
     ("ex4bsplinesurface", ex4_bspline_surface::app),
     ("ex5bird", ex5_bird::app),
+    ("demo", demo::app),
 ];
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {

@@ -11,6 +11,8 @@ use crate::render::{Image, RenderError, Renderer};
 type DisplayFn = Box<dyn FnMut(&mut Gl)>;
 type ReshapeFn = Box<dyn FnMut(&mut Gl, i32, i32)>;
 type KeyboardFn = Box<dyn FnMut(&mut Gl, char, i32, i32)>;
+type MouseFn = Box<dyn FnMut(&mut Gl, i32, i32, i32, i32)>;
+type MotionFn = Box<dyn FnMut(&mut Gl, i32, i32)>;
 
 /// What the command line asked for.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -53,6 +55,8 @@ pub struct App {
     reshape: Option<ReshapeFn>,
     display: Option<DisplayFn>,
     keyboard: Option<KeyboardFn>,
+    mouse: Option<MouseFn>,
+    motion: Option<MotionFn>,
     tessellator: Tessellator,
 }
 
@@ -68,6 +72,8 @@ impl App {
             reshape: None,
             display: None,
             keyboard: None,
+            mouse: None,
+            motion: None,
             tessellator: Tessellator::from_env(),
         }
     }
@@ -102,6 +108,34 @@ impl App {
         self
     }
 
+    /// `glutMouseFunc`: called with the button (`GLUT_LEFT_BUTTON`, `_MIDDLE_`, `_RIGHT_`), the
+    /// state (`GLUT_DOWN`, `GLUT_UP`) and the mouse position in window pixels (origin top
+    /// left) when a button is pressed or released; the window then redraws.
+    #[must_use]
+    pub fn mouse(mut self, f: impl FnMut(&mut Gl, i32, i32, i32, i32) + 'static) -> Self {
+        self.mouse = Some(Box::new(f));
+        self
+    }
+
+    /// `glutMotionFunc`: called with the mouse position while a button is held and the mouse
+    /// moves; the window then redraws.
+    #[must_use]
+    pub fn motion(mut self, f: impl FnMut(&mut Gl, i32, i32) + 'static) -> Self {
+        self.motion = Some(Box::new(f));
+        self
+    }
+
+    /// What the window does on a mouse button: the mouse callback; false if there is none.
+    pub fn run_mouse(&mut self, gl: &mut Gl, button: i32, state: i32, x: i32, y: i32) -> bool {
+        self.mouse.as_mut().map(|mouse| mouse(gl, button, state, x, y)).is_some()
+    }
+
+    /// What the window does when the mouse moves with a button held: the motion callback;
+    /// false if there is none.
+    pub fn run_motion(&mut self, gl: &mut Gl, x: i32, y: i32) -> bool {
+        self.motion.as_mut().map(|motion| motion(gl, x, y)).is_some()
+    }
+
     /// The window size asked for.
     #[must_use]
     pub fn size(&self) -> (i32, i32) {
@@ -114,8 +148,9 @@ impl App {
         }
     }
 
-    #[cfg(feature = "window")]
-    pub(crate) fn run_keyboard(&mut self, gl: &mut Gl, key: char, x: i32, y: i32) {
+    /// What the window does on a key press: the keyboard callback (also for tests and other
+    /// event loops).
+    pub fn run_keyboard(&mut self, gl: &mut Gl, key: char, x: i32, y: i32) {
         if let Some(keyboard) = &mut self.keyboard {
             keyboard(gl, key, x, y);
         }
@@ -189,7 +224,8 @@ impl App {
         }
     }
 
-    pub(crate) fn run_display(&mut self, gl: &mut Gl) {
+    /// What the window does to redraw: the display callback into `gl`.
+    pub fn run_display(&mut self, gl: &mut Gl) {
         if let Some(display) = &mut self.display {
             display(gl);
         }

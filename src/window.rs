@@ -4,13 +4,14 @@
 //! frame draws is taken from it each time.
 
 use crate::app::App;
+use crate::gl::consts::{GLUT_DOWN, GLUT_LEFT_BUTTON, GLUT_MIDDLE_BUTTON, GLUT_RIGHT_BUTTON, GLUT_UP};
 use crate::gl::Gl;
 use crate::render::{RenderError, Renderer};
 use std::error::Error;
 use std::sync::{Arc, Mutex};
 use winit::application::ApplicationHandler;
 use winit::dpi::PhysicalSize;
-use winit::event::{ElementState, KeyEvent, WindowEvent};
+use winit::event::{ElementState, KeyEvent, MouseButton, WindowEvent};
 use winit::event_loop::{ActiveEventLoop, EventLoop};
 use winit::keyboard::{Key, NamedKey};
 use winit::window::{Window, WindowId};
@@ -25,7 +26,7 @@ pub(crate) fn run(app: App) -> Result<(), Box<dyn Error>> {
         );
     }
     let event_loop = EventLoop::new().map_err(|e| format!("could not connect to the display ({e}); {USE_PNG}"))?;
-    let mut state = WindowState { app, gl: None, gpu: None, size: None, cursor: (0, 0), error: None };
+    let mut state = WindowState { app, gl: None, gpu: None, size: None, cursor: (0, 0), buttons_down: 0, error: None };
     event_loop.run_app(&mut state)?;
     match state.error {
         Some(e) => Err(e.into()),
@@ -52,6 +53,8 @@ struct WindowState {
     size: Option<(u32, u32)>,
     /// The mouse position in window pixels (origin top left, as GLUT reports it).
     cursor: (i32, i32),
+    /// Mouse buttons held (motion callbacks run only then, as GLUT's).
+    buttons_down: u32,
     error: Option<String>,
 }
 
@@ -218,6 +221,9 @@ impl WindowState {
             self.app.run_reshape(gl, width as i32, height as i32);
         }
         self.app.run_display(gl);
+        if let Some(title) = gl.take_window_title() {
+            gpu.window.set_title(&title);
+        }
         let recorded = gl.take_frame();
         let view = frame.texture.create_view(&Default::default());
         let mut encoder = gpu.renderer.device.create_command_encoder(&Default::default());
@@ -226,6 +232,13 @@ impl WindowState {
         gpu.window.pre_present_notify();
         gpu.renderer.queue.present(frame);
         gl.recycle_frame(recorded);
+    }
+
+    /// Asks for a redraw after a callback ran.
+    fn redraw_if(&self, ran: bool) {
+        if let (true, Some(gpu)) = (ran, &self.gpu) {
+            gpu.window.request_redraw();
+        }
     }
 
     /// A key press: Escape closes the window; a key that types text goes to the keyboard callback.
@@ -275,6 +288,25 @@ impl ApplicationHandler for WindowState {
             WindowEvent::RedrawRequested => self.redraw(event_loop),
             WindowEvent::CursorMoved { position, .. } => {
                 self.cursor = (position.x as i32, position.y as i32);
+                if self.buttons_down > 0 {
+                    let (x, y) = self.cursor;
+                    let ran = self.gl.as_mut().is_some_and(|gl| self.app.run_motion(gl, x, y));
+                    self.redraw_if(ran);
+                }
+            }
+            WindowEvent::MouseInput { state, button, .. } => {
+                let button = match button {
+                    MouseButton::Left => GLUT_LEFT_BUTTON,
+                    MouseButton::Middle => GLUT_MIDDLE_BUTTON,
+                    MouseButton::Right => GLUT_RIGHT_BUTTON,
+                    _ => return,
+                };
+                let down = state == ElementState::Pressed;
+                self.buttons_down = if down { self.buttons_down + 1 } else { self.buttons_down.saturating_sub(1) };
+                let (x, y) = self.cursor;
+                let glut_state = if down { GLUT_DOWN } else { GLUT_UP };
+                let ran = self.gl.as_mut().is_some_and(|gl| self.app.run_mouse(gl, button, glut_state, x, y));
+                self.redraw_if(ran);
             }
             WindowEvent::KeyboardInput { event, .. } if event.state == ElementState::Pressed => {
                 self.key(event_loop, &event);

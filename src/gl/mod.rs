@@ -102,6 +102,8 @@ pub struct Gl {
     frame: Frame,
     /// Vertex buffers of a recycled frame's meshes, reused by the next meshes (no page faults).
     vertex_pool: Vec<Vec<Vertex>>,
+    /// A window title asked for with `glut_set_window_title`.
+    window_title: Option<String>,
     tessellator: Tessellator,
     /// GLU NURBS objects, indexed by their handles.
     pub(crate) nurbs: Vec<Option<crate::glu::NurbsObject>>,
@@ -126,6 +128,7 @@ impl Gl {
             state_index: None,
             frame: Frame::default(),
             vertex_pool: Vec::new(),
+            window_title: None,
             tessellator: Tessellator::from_env(),
             nurbs: Vec::new(),
         }

@@ -186,6 +186,17 @@ impl Gl {
         self.reject_inside_begin_end();
     }
 
+    /// `glutSetWindowTitle`: the window shows `title` after the current frame (headless
+    /// rendering ignores it).
+    pub fn glut_set_window_title(&mut self, title: &str) {
+        self.window_title = Some(title.to_owned());
+    }
+
+    /// The title asked for since the last call, if any (the window applies it).
+    pub fn take_window_title(&mut self) -> Option<String> {
+        self.window_title.take()
+    }
+
     /// `glutGet`: `GLUT_WINDOW_WIDTH` / `GLUT_WINDOW_HEIGHT`; other names give -1 (as freeglut
     /// does for unknown queries).
     #[must_use]

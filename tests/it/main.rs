@@ -2,6 +2,7 @@
 #![allow(clippy::needless_range_loop)]
 
 mod conformance;
+mod interactive_demo;
 mod eval_mesh;
 mod glu_errors;
 mod glu_tessellation;
