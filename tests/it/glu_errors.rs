@@ -138,7 +138,35 @@ fn scenarios() -> Vec<Scenario> {
             surface(gl, n);
             gl.glu_end_surface(n);
         }),
+        ("near_equal_knots", |gl, n| {
+            gl.glu_nurbs_curve(
+                n,
+                9,
+                &[0.0, 2e-6, 4e-6, 6e-6, 8e-6, 1.0, 1.0, 1.0, 1.0],
+                3,
+                &ctl(),
+                4,
+                GL_MAP1_VERTEX_3,
+            );
+        }),
+        ("knots_just_apart", |gl, n| curve(gl, n, &[0.0, 0.0, 0.0, 0.0, 2e-5, 1.0, 1.0, 1.0, 1.0])),
+        ("negative_knots", |gl, n| curve(gl, n, &[-3.0, -3.0, -3.0, -3.0, -1.0, -1.0, -1.0, -1.0])),
+        ("tiny_domain", |gl, n| curve(gl, n, &[0.0, 0.0, 0.0, 0.0, 1e-4, 1e-4, 1e-4, 1e-4])),
+        ("huge_domain", |gl, n| curve(gl, n, &[0.0, 0.0, 0.0, 0.0, 1e8, 1e8, 1e8, 1e8])),
+        ("trim_begins_surface_then_ends", |gl, n| {
+            gl.glu_begin_trim(n);
+            gl.glu_end_trim(n);
+            gl.glu_end_curve(n);
+            gl.glu_end_surface(n);
+        }),
     ]
+}
+
+/// A cubic curve over `knots` between begin and end.
+fn curve(gl: &mut Gl, n: GLUnurbs, knots: &[f32]) {
+    gl.glu_begin_curve(n);
+    gl.glu_nurbs_curve(n, knots.len() as i32, knots, 3, &ctl(), 4, GL_MAP1_VERTEX_3);
+    gl.glu_end_curve(n);
 }
 
 fn trimmed_pwl(gl: &mut Gl, n: GLUnurbs, count: i32, stride: i32, kind: u32) {

@@ -77,6 +77,18 @@ int main(void) {
     SCENARIO("bad_get_property") { GLfloat v; gluGetNurbsProperty(n, 12345, &v); } DONE
     SCENARIO("bad_callback") gluNurbsCallback(n, 12345, (void (*)(void))errcb); DONE
     SCENARIO("valid_surface") gluBeginSurface(n); surface(n); gluEndSurface(n); DONE
+    /* Knots closer than GLU's 1e-5 count as equal: five "equal" knots for order 4. */
+    GLfloat near_equal[9] = {0, 2e-6f, 4e-6f, 6e-6f, 8e-6f, 1, 1, 1, 1};
+    GLfloat apart[9] = {0, 0, 0, 0, 2e-5f, 1, 1, 1, 1};
+    GLfloat negative[8] = {-3, -3, -3, -3, -1, -1, -1, -1};
+    GLfloat tiny[8] = {0, 0, 0, 0, 1e-4f, 1e-4f, 1e-4f, 1e-4f};
+    GLfloat huge[8] = {0, 0, 0, 0, 1e8f, 1e8f, 1e8f, 1e8f};
+    SCENARIO("near_equal_knots") gluNurbsCurve(n, 9, near_equal, 3, ctl, 4, GL_MAP1_VERTEX_3); DONE
+    SCENARIO("knots_just_apart") gluBeginCurve(n); gluNurbsCurve(n, 9, apart, 3, ctl, 4, GL_MAP1_VERTEX_3); gluEndCurve(n); DONE
+    SCENARIO("negative_knots") gluBeginCurve(n); gluNurbsCurve(n, 8, negative, 3, ctl, 4, GL_MAP1_VERTEX_3); gluEndCurve(n); DONE
+    SCENARIO("tiny_domain") gluBeginCurve(n); gluNurbsCurve(n, 8, tiny, 3, ctl, 4, GL_MAP1_VERTEX_3); gluEndCurve(n); DONE
+    SCENARIO("huge_domain") gluBeginCurve(n); gluNurbsCurve(n, 8, huge, 3, ctl, 4, GL_MAP1_VERTEX_3); gluEndCurve(n); DONE
+    SCENARIO("trim_begins_surface_then_ends") gluBeginTrim(n); gluEndTrim(n); gluEndCurve(n); gluEndSurface(n); DONE
     OSMesaDestroyContext(c);
     return 0;
 }
