@@ -95,6 +95,51 @@ static void nurbs(int runs) {
     gluDeleteNurbsRenderer(nb);
 }
 
+/* The trimmed "hills" surface of the red book's trim.c (tests/reference/pictures/Trimmed.c) in
+   tessellator mode at domain steps of 300: an outer loop, a hole of a Bezier arc and a
+   polyline, and a triangle. */
+static void nurbs_trimmed(int runs) {
+    static GLfloat hills[4][4][3];
+    for (int u = 0; u < 4; u++)
+        for (int v = 0; v < 4; v++) {
+            hills[u][v][0] = 2.0f * (u - 1.5f);
+            hills[u][v][1] = 2.0f * (v - 1.5f);
+            hills[u][v][2] = ((u == 1 || u == 2) && (v == 1 || v == 2)) ? 3.0f : -3.0f;
+        }
+    GLfloat knots[8] = {0, 0, 0, 0, 1, 1, 1, 1};
+    GLfloat edge[5][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0, 0}};
+    GLfloat curve[4][2] = {{0.25f, 0.5f}, {0.25f, 0.75f}, {0.75f, 0.75f}, {0.75f, 0.5f}};
+    GLfloat pwl[3][2] = {{0.75f, 0.5f}, {0.5f, 0.25f}, {0.25f, 0.5f}};
+    GLfloat tri[4][2] = {{0.1f, 0.1f}, {0.2f, 0.3f}, {0.3f, 0.1f}, {0.1f, 0.1f}};
+    double t[16];
+    GLUnurbs *nb = gluNewNurbsRenderer();
+    gluNurbsProperty(nb, GLU_NURBS_MODE, GLU_NURBS_TESSELLATOR);
+    gluNurbsProperty(nb, GLU_SAMPLING_METHOD, GLU_DOMAIN_DISTANCE);
+    gluNurbsProperty(nb, GLU_U_STEP, 300);
+    gluNurbsProperty(nb, GLU_V_STEP, 300);
+    gluNurbsCallback(nb, GLU_NURBS_VERTEX, (void (*)(void))count_vertex);
+    for (int r = 0; r < runs; r++) {
+        tess_vertices = 0;
+        double s = now();
+        gluBeginSurface(nb);
+        gluNurbsSurface(nb, 8, knots, 8, knots, 12, 3, &hills[0][0][0], 4, 4, GL_MAP2_VERTEX_3);
+        gluBeginTrim(nb);
+        gluPwlCurve(nb, 5, &edge[0][0], 2, GLU_MAP1_TRIM_2);
+        gluEndTrim(nb);
+        gluBeginTrim(nb);
+        gluNurbsCurve(nb, 8, knots, 2, &curve[0][0], 4, GLU_MAP1_TRIM_2);
+        gluPwlCurve(nb, 3, &pwl[0][0], 2, GLU_MAP1_TRIM_2);
+        gluEndTrim(nb);
+        gluBeginTrim(nb);
+        gluPwlCurve(nb, 4, &tri[0][0], 2, GLU_MAP1_TRIM_2);
+        gluEndTrim(nb);
+        gluEndSurface(nb);
+        t[r] = now() - s;
+    }
+    printf("nurbs_trimmed %.0f\n", tess_vertices / median(t, runs));
+    gluDeleteNurbsRenderer(nb);
+}
+
 int main(void) {
     static unsigned char buf[64 * 64 * 4];
     OSMesaContext c = OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 0, NULL);
@@ -109,5 +154,6 @@ int main(void) {
     patches(5);
     mesh1(5);
     nurbs(5);
+    nurbs_trimmed(5);
     return 0;
 }

@@ -33,6 +33,7 @@ pub fn cases() -> Vec<(&'static str, Setup)> {
         ("patches_10000", facade_patches),
         ("eval_mesh1_degree10", facade_mesh1),
         ("nurbs_untrimmed", nurbs_untrimmed),
+        ("nurbs_trimmed", nurbs_trimmed),
     ]
 }
 
@@ -134,6 +135,49 @@ fn nurbs_untrimmed() -> Workload {
     let mut run = move || {
         gl.glu_begin_surface(nb);
         gl.glu_nurbs_surface(nb, 14, &knots, 14, &knots, 30, 3, &ctl, 4, 4, GL_MAP2_VERTEX_3);
+        gl.glu_end_surface(nb);
+    };
+    run();
+    Workload { items: count.get() as f64, run: Box::new(run) }
+}
+
+/// GLU's tessellator mode on the trimmed "hills" surface of `bench/anchor.c` (the red book's
+/// trim.c) at domain steps of 300; `items` is the vertex count of the first repetition.
+fn nurbs_trimmed() -> Workload {
+    let hills: Vec<f32> = (0..16)
+        .flat_map(|k| {
+            let (u, v) = (k / 4, k % 4);
+            let z = if (u == 1 || u == 2) && (v == 1 || v == 2) { 3.0 } else { -3.0 };
+            [2.0 * (u as f32 - 1.5), 2.0 * (v as f32 - 1.5), z]
+        })
+        .collect();
+    let knots = [0.0f32, 0.0, 0.0, 0.0, 1.0, 1.0, 1.0, 1.0];
+    let edge = [0.0f32, 0.0, 1.0, 0.0, 1.0, 1.0, 0.0, 1.0, 0.0, 0.0];
+    let curve = [0.25f32, 0.5, 0.25, 0.75, 0.75, 0.75, 0.75, 0.5];
+    let pwl = [0.75f32, 0.5, 0.5, 0.25, 0.25, 0.5];
+    let tri = [0.1f32, 0.1, 0.2, 0.3, 0.3, 0.1, 0.1, 0.1];
+    let mut gl = Gl::new(64, 64);
+    let nb = gl.glu_new_nurbs_renderer();
+    gl.glu_nurbs_property(nb, GLU_NURBS_MODE, GLU_NURBS_TESSELLATOR as f32);
+    gl.glu_nurbs_property(nb, GLU_SAMPLING_METHOD, GLU_DOMAIN_DISTANCE as f32);
+    gl.glu_nurbs_property(nb, GLU_U_STEP, 300.0);
+    gl.glu_nurbs_property(nb, GLU_V_STEP, 300.0);
+    let count = Rc::new(Cell::new(0u64));
+    let c = Rc::clone(&count);
+    gl.glu_nurbs_callback(nb, GLU_NURBS_VERTEX, Some(NurbsCallback::vertex(move |_| c.set(c.get() + 1))));
+    let mut run = move || {
+        gl.glu_begin_surface(nb);
+        gl.glu_nurbs_surface(nb, 8, &knots, 8, &knots, 12, 3, &hills, 4, 4, GL_MAP2_VERTEX_3);
+        gl.glu_begin_trim(nb);
+        gl.glu_pwl_curve(nb, 5, &edge, 2, GLU_MAP1_TRIM_2);
+        gl.glu_end_trim(nb);
+        gl.glu_begin_trim(nb);
+        gl.glu_nurbs_curve(nb, 8, &knots, 2, &curve, 4, GLU_MAP1_TRIM_2);
+        gl.glu_pwl_curve(nb, 3, &pwl, 2, GLU_MAP1_TRIM_2);
+        gl.glu_end_trim(nb);
+        gl.glu_begin_trim(nb);
+        gl.glu_pwl_curve(nb, 4, &tri, 2, GLU_MAP1_TRIM_2);
+        gl.glu_end_trim(nb);
         gl.glu_end_surface(nb);
     };
     run();

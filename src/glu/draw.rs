@@ -341,21 +341,8 @@ pub(crate) fn surface_normal(pos: &SurfacePatches, k: usize, u: f64, v: f64, dom
     normalize(cross(a, b)).map(|c| c as f32)
 }
 
-/// One surface vertex through the callbacks: texture coordinate, colour, normal (from the
-/// normal map, or analytic when a normal callback is registered), then (x, y, z, u, v) with
-/// x, y, z divided by w.
-pub(crate) fn emit_vertex(
-    obj: &mut NurbsObject,
-    view @ (pos, _, k): (&SurfacePatches, &[SurfacePatches], usize),
-    u: f64,
-    v: f64,
-) {
-    emit_attributes(obj, view, u, v);
-    emit_position(obj, pos, k, u, v);
-}
-
 /// The attribute maps' values and the normal (if wanted) of the vertex at (u, v).
-fn emit_attributes(
+pub(crate) fn emit_attributes(
     obj: &mut NurbsObject,
     (pos, attributes, k): (&SurfacePatches, &[SurfacePatches], usize),
     u: f64,
@@ -378,6 +365,13 @@ fn emit_attributes(
         ];
         obj.callbacks.attribute(GLU_NURBS_NORMAL, &surface_normal(pos, k, u, v, domain));
     }
+}
+
+/// The vertex callback's data at (u, v): (x, y, z) divided by w, then u, v.
+pub(crate) fn position_data(pos: &SurfacePatches, k: usize, u: f64, v: f64) -> Option<[f32; 5]> {
+    let s = pos.eval(u, v)?;
+    let w = if k == 4 { s.point[3] } else { 1.0 };
+    Some([(s.point[0] / w) as f32, (s.point[1] / w) as f32, (s.point[2] / w) as f32, u as f32, v as f32])
 }
 
 /// The vertex callback at (u, v): (x, y, z) divided by w, then u, v.

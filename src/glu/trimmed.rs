@@ -3,12 +3,12 @@
 //! vertex is evaluated on the exact surface. Loop errors are GLU's numbers 28, 29, 31 and 18.
 
 use super::consts::*;
-use super::draw::{emit_vertex, surface_normal, trim_polylines, PatchGrid, Surface};
+use super::draw::{emit_attributes, position_data, surface_normal, trim_polylines, PatchGrid, Surface};
 use super::nurbs::{NurbsObject, TrimPiece};
 use super::pieces::locate;
 use super::sampling::Sampler;
 use crate::gl::consts::*;
-use crate::gl::{Gl, MapSample, MapTarget, MeshJob, MeshMode, Slot, Tessellator};
+use crate::gl::{Gl, MapSample, MapTarget, MeshJob, MeshMode, Slot, Tessellator, Vertex};
 use crate::tess::trim::{join_curves, triangulate, TrimLoop};
 use std::collections::BTreeMap;
 
@@ -68,11 +68,20 @@ pub(crate) fn draw_trimmed(
         return outline_loops(gl, surface, &trim_loops);
     }
     if tessellate {
+        // Each point of the triangulation evaluated once, though triangles share it.
+        let per_vertex = !surface.attributes.is_empty() || obj.callbacks.wants_normals();
+        let data: Vec<Option<[f32; 5]>> =
+            mesh.points.iter().map(|&[u, v]| position_data(&surface.pos, surface.k, u, v)).collect();
         obj.callbacks.begin(GL_TRIANGLES);
         for tri in &mesh.triangles {
             for &i in tri {
                 let [u, v] = mesh.points[i as usize];
-                emit_vertex(obj, surface.view_ref(), u, v);
+                if per_vertex {
+                    emit_attributes(obj, surface.view_ref(), u, v);
+                }
+                if let Some(d) = &data[i as usize] {
+                    obj.callbacks.attribute(GLU_NURBS_VERTEX, d);
+                }
             }
         }
         obj.callbacks.end();
@@ -88,11 +97,14 @@ pub(crate) fn draw_trimmed(
         record_on_gpu(gl, surface, &mesh.points, &mesh.triangles);
         return gl.restore_polygon_mode(saved_mode);
     }
+    // Each point evaluated once; the triangles issue the shared vertices.
+    let vertices: Vec<Option<Vertex>> = mesh.points.iter().map(|&[u, v]| trimmed_vertex(gl, surface, u, v)).collect();
     gl.begin(GL_TRIANGLES);
     for tri in &mesh.triangles {
         for &i in tri {
-            let [u, v] = mesh.points[i as usize];
-            render_vertex(gl, surface, u, v);
+            if let Some(vertex) = vertices[i as usize] {
+                gl.emit_vertex(vertex);
+            }
         }
     }
     gl.end();
@@ -144,17 +156,18 @@ fn outline_loops(gl: &mut Gl, surface: &Surface, loops: &[TrimLoop]) {
     for l in loops {
         gl.begin(GL_LINE_LOOP);
         for &[u, v] in &l.points {
-            render_vertex(gl, surface, u, v);
+            if let Some(vertex) = trimmed_vertex(gl, surface, u, v) {
+                gl.emit_vertex(vertex);
+            }
         }
         gl.end();
     }
 }
 
 /// One vertex as GL's evaluators would produce it for GLU's `glEvalCoord2f`: evaluated
-/// attributes and, with `GL_AUTO_NORMAL`, the unit normal; the current attributes are restored
-/// afterwards, as evaluated values never become current.
-fn render_vertex(gl: &mut Gl, surface: &Surface, u: f64, v: f64) {
-    let saved = gl.current;
+/// attributes over the current ones and, with `GL_AUTO_NORMAL`, the unit normal. Evaluated
+/// values never become current.
+fn trimmed_vertex(gl: &Gl, surface: &Surface, u: f64, v: f64) -> Option<Vertex> {
     let (pos, attributes, k) = surface.view_ref();
     let mut vertex = gl.current_vertex([0.0, 0.0, 0.0, 1.0]);
     for map in attributes {
@@ -165,12 +178,11 @@ fn render_vertex(gl: &mut Gl, surface: &Surface, u: f64, v: f64) {
         let p = [s.point[0] as f32, s.point[1] as f32, s.point[2] as f32, s.point[3] as f32];
         crate::gl::eval_set_attribute(&mut vertex, slot, p);
     }
-    let Some(s) = pos.eval(u, v) else { return };
+    let s = pos.eval(u, v)?;
     if gl.eval.auto_normal {
         vertex.normal = surface_normal(pos, k, u, v, surface.domain());
     }
     let p = [s.point[0] as f32, s.point[1] as f32, s.point[2] as f32, s.point[3] as f32];
     crate::gl::eval_set_attribute(&mut vertex, if k == 4 { Slot::Vertex4 } else { Slot::Vertex3 }, p);
-    gl.emit_vertex(vertex);
-    gl.current = saved;
+    Some(vertex)
 }
