@@ -12,6 +12,7 @@ pub mod knots;
 pub mod patch;
 pub mod rational;
 pub mod scalar;
+pub mod teapot;
 
 pub use bezier::{BezierCurve, Vec4, MAX_DIM};
 pub use patch::{BezierPatch, PatchSample, MAX_ORDER};
