@@ -148,6 +148,35 @@ fn float_view<const N: usize>(values: &[[f32; N]], kind: &'static str) -> View {
     View { bytes, target: ARRAY_BUFFER, component: FLOAT, kind, count: values.len() }
 }
 
+/// glTF requires unit `NORMAL`s (glTF 2.0 §3.7.2.1), but a point where the surface collapses
+/// (the lid's knob, a cone's apex) has a zero normal in a [`Mesh`]. Such a vertex gets the
+/// direction of the area-weighted sum of its triangles' face normals, the usual estimate of a
+/// vertex normal (Gouraud's), or +z when all its triangles are degenerate too.
+fn unit_normals(mesh: &Mesh) -> Vec<[f32; 3]> {
+    let mut normals = mesh.normals.clone();
+    let zero: Vec<bool> = normals.iter().map(|n| *n == [0.0; 3]).collect();
+    if !zero.contains(&true) {
+        return normals;
+    }
+    let mut sums = vec![[0.0f64; 3]; normals.len()];
+    for tri in mesh.indices.chunks_exact(3) {
+        let [a, b, c] = [0, 1, 2].map(|k| mesh.positions[tri[k] as usize].map(f64::from));
+        let (e, f) = ([b[0] - a[0], b[1] - a[1], b[2] - a[2]], [c[0] - a[0], c[1] - a[1], c[2] - a[2]]);
+        let face = [e[1] * f[2] - e[2] * f[1], e[2] * f[0] - e[0] * f[2], e[0] * f[1] - e[1] * f[0]];
+        for &i in tri.iter().filter(|&&i| zero[i as usize]) {
+            for c in 0..3 {
+                sums[i as usize][c] += face[c];
+            }
+        }
+    }
+    for (k, n) in normals.iter_mut().enumerate().filter(|(k, _)| zero[*k]) {
+        let s = sums[k];
+        let len = (s[0] * s[0] + s[1] * s[1] + s[2] * s[2]).sqrt();
+        *n = if len > 0.0 { s.map(|v| (v / len) as f32) } else { [0.0, 0.0, 1.0] };
+    }
+    normals
+}
+
 /// Component-wise minimum and maximum of the positions, which glTF requires on POSITION.
 fn bounds(positions: &[[f32; 3]]) -> ([f32; 3], [f32; 3]) {
     let mut lo = [f32::INFINITY; 3];
@@ -222,6 +251,9 @@ fn push_chunk(glb: &mut Vec<u8>, kind: &[u8; 4], data: &[u8], pad: u8) {
 /// texture coordinates (`f32`) and `u32` indices, one triangle-list primitive with `POSITION`
 /// (with its `min`/`max`), `NORMAL` and `TEXCOORD_0` when present, in one mesh, node and scene.
 /// The JSON chunk is padded with spaces and the BIN chunk with zeros, as the format asks.
+/// Zero normals (collapsed points) are replaced by unit ones, since glTF accepts no other (see
+/// the module source); everything else is written as it is. A mesh without triangles gives a
+/// scene with one empty node, as glTF has no empty accessors.
 ///
 /// ```
 /// use gleval::math::BezierPatch;
@@ -238,7 +270,7 @@ pub fn write_glb(mesh: &Mesh, mut out: impl Write) -> io::Result<()> {
     if !mesh.indices.is_empty() {
         views.push(float_view(&mesh.positions, "VEC3"));
         if !mesh.normals.is_empty() {
-            views.push(float_view(&mesh.normals, "VEC3"));
+            views.push(float_view(&unit_normals(mesh), "VEC3"));
         }
         if !mesh.tex_coords.is_empty() {
             views.push(float_view(&mesh.tex_coords, "VEC2"));
