@@ -31,13 +31,15 @@ mod rational;
 mod rationalmap;
 #[path = "specular.rs"]
 mod specular;
+#[path = "teapot.rs"]
+mod teapot;
 #[path = "trimmed.rs"]
 mod trimmed;
 
 /// A built-in program: its name and how to build it.
 type Program = (&'static str, fn() -> App);
 
-const PROGRAMS: [Program; 12] = [
+const PROGRAMS: [Program; 13] = [
     ("bezcurve", bezcurve::app),
     ("bezsurf", bezsurf::app),
     ("bcurve", bcurve::app),
@@ -50,6 +52,7 @@ const PROGRAMS: [Program; 12] = [
     ("trimmed", trimmed::app),
     ("rational", rational::app),
     ("outline", outline::app),
+    ("teapot", teapot::app),
 ];
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
