@@ -16,8 +16,11 @@ fn sample_mesh() -> Mesh {
     mesh
 }
 
+/// Position, normal and texture coordinates of one triangle corner.
+type Corner = ([f32; 3], Option<[f32; 3]>, Option<[f32; 2]>);
+
 /// The triangles as corner attributes, what survives any re-indexing by a reader.
-fn corners(mesh: &Mesh) -> Vec<([f32; 3], Option<[f32; 3]>, Option<[f32; 2]>)> {
+fn corners(mesh: &Mesh) -> Vec<Corner> {
     let at = |i: u32| {
         let i = i as usize;
         (mesh.positions[i], mesh.normals.get(i).copied(), mesh.tex_coords.get(i).copied())
@@ -178,6 +181,9 @@ fn empty_meshes_make_valid_files() {
     assert_eq!(glb_round_trip(&empty), (empty, 0));
 }
 
+/// One of the three exporters, writing into memory.
+type Writer = fn(&Mesh, &mut Vec<u8>) -> io::Result<()>;
+
 #[test]
 fn inconsistent_meshes_are_refused_without_writing() {
     let quad = BezierPatch::try_new(3, 2, 2, vec![0., 0., 0., 0., 1., 0., 1., 0., 0., 1., 1., 0.]).unwrap();
@@ -191,8 +197,7 @@ fn inconsistent_meshes_are_refused_without_writing() {
     let mut nan = good.clone();
     nan.tex_coords[3][1] = f32::NAN;
     for bad in [past_end, partial, short_normals, nan] {
-        let writers: [fn(&Mesh, &mut Vec<u8>) -> io::Result<()>; 3] =
-            [|m, o| write_obj(m, o), |m, o| write_ply(m, o), |m, o| write_glb(m, o)];
+        let writers: [Writer; 3] = [|m, o| write_obj(m, o), |m, o| write_ply(m, o), |m, o| write_glb(m, o)];
         for write in writers {
             let mut out = Vec::new();
             let err = write(&bad, &mut out).unwrap_err();
