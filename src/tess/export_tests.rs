@@ -1,4 +1,4 @@
-//! Each file read back by an independent reader (tobj, ply-rs, the gltf crate with its
+//! Each file read back by an independent reader (tobj, ply-rs-bw, the gltf crate with its
 //! validation) and compared with the mesh that was written.
 
 use super::*;
@@ -60,11 +60,11 @@ fn obj_reads_back_with_tobj() {
     assert_eq!(corners(&back), corners(&bare));
 }
 
-fn ply_floats(element: &ply_rs::ply::DefaultElement, names: &[&str]) -> Vec<f32> {
+fn ply_floats(element: &ply_rs_bw::ply::DefaultElement, names: &[&str]) -> Vec<f32> {
     names
         .iter()
         .map(|n| match element[*n] {
-            ply_rs::ply::Property::Float(v) => v,
+            ply_rs_bw::ply::Property::Float(v) => v,
             ref other => panic!("{n}: {other:?}"),
         })
         .collect()
@@ -73,9 +73,9 @@ fn ply_floats(element: &ply_rs::ply::DefaultElement, names: &[&str]) -> Vec<f32>
 fn ply_round_trip(mesh: &Mesh) -> Mesh {
     let mut bytes = Vec::new();
     write_ply(mesh, &mut bytes).unwrap();
-    let parser = ply_rs::parser::Parser::<ply_rs::ply::DefaultElement>::new();
+    let parser = ply_rs_bw::parser::Parser::<ply_rs_bw::ply::DefaultElement>::new();
     let ply = parser.read_ply(&mut bytes.as_slice()).unwrap();
-    assert_eq!(ply.header.encoding, ply_rs::ply::Encoding::BinaryLittleEndian);
+    assert_eq!(ply.header.encoding, ply_rs_bw::ply::Encoding::BinaryLittleEndian);
     let mut back = Mesh::default();
     for v in &ply.payload["vertex"] {
         let p = ply_floats(v, &["x", "y", "z"]);
@@ -91,7 +91,7 @@ fn ply_round_trip(mesh: &Mesh) -> Mesh {
     }
     for f in &ply.payload["face"] {
         match &f["vertex_indices"] {
-            ply_rs::ply::Property::ListUInt(list) if list.len() == 3 => back.indices.extend(list),
+            ply_rs_bw::ply::Property::ListUInt(list) if list.len() == 3 => back.indices.extend(list),
             other => panic!("face {other:?}"),
         }
     }
