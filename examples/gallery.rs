@@ -43,13 +43,15 @@ mod rational;
 mod rationalmap;
 #[path = "specular.rs"]
 mod specular;
+#[path = "teapot.rs"]
+mod teapot;
 #[path = "trimmed.rs"]
 mod trimmed;
 
 /// A built-in program: its name and how to build it.
 type Program = (&'static str, fn() -> App);
 
-const PROGRAMS: [Program; 18] = [
+const PROGRAMS: [Program; 19] = [
     ("bezcurve", bezcurve::app),
     ("bezsurf", bezsurf::app),
     ("bcurve", bcurve::app),
@@ -68,6 +70,7 @@ const PROGRAMS: [Program; 18] = [
     ("ex4bsplinesurface", ex4_bspline_surface::app),
     ("ex5bird", ex5_bird::app),
     ("demo", demo::app),
+    ("teapot", teapot::app),
 ];
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {

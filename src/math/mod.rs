@@ -17,6 +17,7 @@ pub mod rational;
 pub mod scalar;
 pub mod shapes;
 pub mod spline;
+pub mod teapot;
 
 pub use bezier::{BezierCurve, Vec4, MAX_DIM};
 pub use bezier_ops::Frenet;

@@ -3,6 +3,7 @@
 //! This is the CPU back end that `glEvalMesh` (and later GLU NURBS and the typed mesh API) draw
 //! through. It knows nothing of GL state: it takes packed control points and parameter lists.
 
+pub mod export;
 #[cfg(feature = "gpu")]
 pub mod gpu;
 pub mod grid;

@@ -40,6 +40,8 @@ mod rational;
 mod rationalmap;
 #[path = "../../examples/specular.rs"]
 mod specular;
+#[path = "../../examples/teapot.rs"]
+mod teapot;
 #[path = "../../examples/trimmed.rs"]
 mod trimmed;
 
@@ -186,4 +188,10 @@ fn textbook_exercises_match_mesa() {
     check("ex3bsplinen", ex3_bspline_n::app, 0.0);
     check("ex4bsplinesurface", ex4_bspline_surface::app, 0.0);
     check("ex5bird", ex5_bird::app, 0.0);
+}
+
+/// GLUT's solid teapot (32 bicubic patches through glMap2f/glEvalMesh2) against `Teapot.c`.
+#[test]
+fn teapot_matches_mesa() {
+    check("teapot", teapot::app, 0.0);
 }
