@@ -2,11 +2,11 @@
 #![allow(clippy::needless_range_loop)]
 
 mod conformance;
-mod interactive_demo;
 mod eval_mesh;
 mod glu_errors;
 mod glu_tessellation;
 mod gpu_parity;
+mod interactive_demo;
 mod mesa_calls;
 mod properties;
 mod robustness;
