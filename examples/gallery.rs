@@ -35,6 +35,8 @@ mod ex5_bird;
 mod flattwoviewports;
 #[path = "linespoints.rs"]
 mod linespoints;
+#[path = "operations.rs"]
+mod operations;
 #[path = "outline.rs"]
 mod outline;
 #[path = "rational.rs"]
@@ -51,7 +53,7 @@ mod trimmed;
 /// A built-in program: its name and how to build it.
 type Program = (&'static str, fn() -> App);
 
-const PROGRAMS: [Program; 19] = [
+const PROGRAMS: [Program; 20] = [
     ("bezcurve", bezcurve::app),
     ("bezsurf", bezsurf::app),
     ("bcurve", bcurve::app),
@@ -71,6 +73,7 @@ const PROGRAMS: [Program; 19] = [
     ("ex5bird", ex5_bird::app),
     ("demo", demo::app),
     ("teapot", teapot::app),
+    ("operations", operations::app),
 ];
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {

@@ -32,6 +32,8 @@ mod ex5_bird;
 mod flattwoviewports;
 #[path = "../../examples/linespoints.rs"]
 mod linespoints;
+#[path = "../../examples/operations.rs"]
+mod operations;
 #[path = "../../examples/outline.rs"]
 mod outline;
 #[path = "../../examples/rational.rs"]
@@ -194,4 +196,16 @@ fn textbook_exercises_match_mesa() {
 #[test]
 fn teapot_matches_mesa() {
     check("teapot", teapot::app, 0.0);
+}
+
+/// Programs with no C original: the GPU tessellator must still draw what the CPU draws.
+#[test]
+fn programs_without_a_reference_draw_the_same_on_the_gpu() {
+    for (name, app) in [("demo", crate::interactive_demo::demo::app as fn() -> App), ("operations", operations::app)] {
+        let Some(cpu) = render(app().with_tessellator(Tessellator::Cpu)) else { return };
+        let Some(gpu) = render(app().with_tessellator(Tessellator::Gpu)) else { return };
+        let between = compare(&cpu, &gpu).expect("same size").fraction;
+        println!("{name}: GPU vs CPU {:.3}% ({} meshes on the GPU)", between * 100.0, gpu_meshes(app));
+        assert!(between <= GPU_VS_CPU, "{name}: GPU and CPU tessellators differ in {:.3}% of pixels", between * 100.0);
+    }
 }

@@ -5,7 +5,7 @@
 use gleval::prelude::*;
 
 #[path = "../../examples/demo.rs"]
-mod demo;
+pub(crate) mod demo;
 
 /// The first vertex of the first recorded curve, in world coordinates.
 fn curve_start(gl: &Gl) -> [f32; 2] {

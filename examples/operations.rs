@@ -1,0 +1,197 @@
+//! The curve operations of the course notes, shown side by side (one viewport each):
+//! subdivision at u = 1/2 (the two halves' control polygons), repeated degree elevation (the
+//! polygons after 0, 2, 8 and 32 elevations close in on the curve), interpolation through the
+//! same points with uniform, chord-length and centripetal parameters, the Frenet frames and
+//! curvature comb of a cubic, the exact NURBS circle with its control polygon, and a vase as a
+//! surface of revolution drawn by GLU.
+//!
+//! `cargo run --release --example operations -- --png operations.png`
+
+use gleval::math::interpolate::{interpolate, Parameterization};
+use gleval::math::shapes::{nurbs_circle, revolve};
+use gleval::math::{BSplineCurve, BezierCurve, KnotVector};
+use gleval::prelude::*;
+
+fn view(gl: &mut Gl, k: i32, (x0, x1, y0, y1): (f64, f64, f64, f64)) {
+    let (w, h) = (gl.glut_get(GLUT_WINDOW_WIDTH) / 3, gl.glut_get(GLUT_WINDOW_HEIGHT) / 2);
+    gl.viewport((k % 3) * w, (1 - k / 3) * h, w, h);
+    gl.matrix_mode(GL_PROJECTION);
+    gl.load_identity();
+    gl.glu_ortho_2d(x0, x1, y0, y1);
+    gl.matrix_mode(GL_MODELVIEW);
+    gl.load_identity();
+}
+
+fn strip(gl: &mut Gl, pts: &[f64], dim: usize, mode: GLenum) {
+    gl.begin(mode);
+    for p in pts.chunks(dim) {
+        gl.vertex2f(p[0] as f32, p[1] as f32);
+    }
+    gl.end();
+}
+
+/// A curve drawn as a polyline of `n` samples of `f`.
+fn sampled(gl: &mut Gl, n: usize, f: impl Fn(f64) -> [f64; 2]) {
+    let pts: Vec<f64> = (0..=n).flat_map(|i| f(i as f64 / n as f64)).collect();
+    strip(gl, &pts, 2, GL_LINE_STRIP);
+}
+
+fn cubic() -> BezierCurve<f64> {
+    BezierCurve::try_new(2, vec![0.5, 0.5, 1.5, 3.5, 3.5, 3.5, 4.5, 0.5]).expect("a planar cubic")
+}
+
+fn subdivision(gl: &mut Gl) {
+    view(gl, 0, (0.0, 5.0, 0.0, 4.0));
+    let c = cubic();
+    let (left, right) = c.split(0.5);
+    gl.color3f(0.7, 0.7, 0.7);
+    strip(gl, &c.points, 2, GL_LINE_STRIP);
+    for (half, color) in [(&left, [0.9, 0.3, 0.0]), (&right, [0.0, 0.6, 0.2])] {
+        gl.color3f(color[0], color[1], color[2]);
+        strip(gl, &half.points, 2, GL_LINE_STRIP);
+        strip(gl, &half.points, 2, GL_POINTS);
+    }
+    gl.color3f(0.0, 0.0, 0.8);
+    sampled(gl, 60, |t| [c.eval(t)[0], c.eval(t)[1]]);
+}
+
+fn elevation(gl: &mut Gl) {
+    view(gl, 1, (0.0, 5.0, 0.0, 4.0));
+    let c = cubic();
+    let mut e = c.clone();
+    let mut done = 0;
+    for (times, grey) in [(0, 0.2), (2, 0.4), (8, 0.6), (32, 0.8)] {
+        while done < times {
+            e = e.elevate();
+            done += 1;
+        }
+        gl.color3f(grey, grey, grey);
+        strip(gl, &e.points, 2, GL_LINE_STRIP);
+    }
+    gl.color3f(0.0, 0.0, 0.8);
+    sampled(gl, 60, |t| [c.eval(t)[0], c.eval(t)[1]]);
+}
+
+fn interpolation(gl: &mut Gl) {
+    view(gl, 2, (-0.5, 9.0, -3.0, 4.5));
+    let pts = [0.0, 0.0, 0.5, 3.0, 1.0, 3.2, 5.0, 1.0, 6.0, -2.0, 8.0, 0.0, 8.5, 2.0];
+    let colors = [[0.9, 0.2, 0.0], [0.0, 0.6, 0.2], [0.1, 0.2, 0.9]];
+    let methods = [Parameterization::Uniform, Parameterization::ChordLength, Parameterization::Centripetal];
+    for (method, color) in methods.into_iter().zip(colors) {
+        let (curve, _) = interpolate(&pts, 2, 3, method).expect("interpolable points");
+        gl.color3f(color[0], color[1], color[2]);
+        sampled(gl, 200, |t| {
+            let p = curve.eval(t).unwrap_or_default();
+            [p[0], p[1]]
+        });
+    }
+    gl.color3f(0.0, 0.0, 0.0);
+    strip(gl, &pts, 2, GL_POINTS);
+}
+
+fn frenet(gl: &mut Gl) {
+    view(gl, 3, (0.0, 5.0, 0.0, 4.0));
+    let c = cubic();
+    gl.color3f(0.0, 0.0, 0.8);
+    sampled(gl, 60, |t| [c.eval(t)[0], c.eval(t)[1]]);
+    gl.begin(GL_LINES);
+    for i in 0..=24 {
+        let t = f64::from(i) / 24.0;
+        let (Some(f), p) = (c.frenet(t), c.eval(t)) else { continue };
+        // The curvature comb: κ·N, scaled, inwards; the tangent in grey.
+        gl.color3f(0.9, 0.3, 0.0);
+        gl.vertex2f(p[0] as f32, p[1] as f32);
+        let k = 0.8 * f.curvature;
+        gl.vertex2f((p[0] + k * f.normal[0]) as f32, (p[1] + k * f.normal[1]) as f32);
+        gl.color3f(0.5, 0.5, 0.5);
+        gl.vertex2f(p[0] as f32, p[1] as f32);
+        gl.vertex2f((p[0] + 0.3 * f.tangent[0]) as f32, (p[1] + 0.3 * f.tangent[1]) as f32);
+    }
+    gl.end();
+}
+
+fn circle(gl: &mut Gl) {
+    view(gl, 4, (-1.44, 1.44, -1.2, 1.2)); // the viewport's 6:5
+    let c = nurbs_circle([0.0, 0.0, 0.0], 1.0).expect("a circle");
+    let projected: Vec<f64> = c.points.chunks(4).flat_map(|p| [p[0] / p[3], p[1] / p[3]]).collect();
+    gl.color3f(0.6, 0.6, 0.6);
+    strip(gl, &projected, 2, GL_LINE_STRIP);
+    gl.color3f(0.9, 0.2, 0.0);
+    strip(gl, &projected, 2, GL_POINTS);
+    gl.color3f(0.0, 0.0, 0.8);
+    sampled(gl, 120, |t| {
+        let p = c.eval_rational(t).unwrap_or_default();
+        [p[0], p[1]]
+    });
+}
+
+fn vase(gl: &mut Gl) {
+    let (w, h) = (gl.glut_get(GLUT_WINDOW_WIDTH) / 3, gl.glut_get(GLUT_WINDOW_HEIGHT) / 2);
+    gl.viewport(2 * w, 0, w, h);
+    gl.matrix_mode(GL_PROJECTION);
+    gl.load_identity();
+    gl.glu_perspective(30.0, f64::from(w) / f64::from(h), 1.0, 50.0);
+    gl.matrix_mode(GL_MODELVIEW);
+    gl.load_identity();
+    gl.translatef(0.0, -0.2, -11.0);
+    gl.rotatef(-70.0, 1.0, 0.0, 0.0);
+    // The profile in the xz plane: radius against height.
+    let profile = [0.9, 0.0, 0.0, 1.4, 0.0, 0.6, 0.5, 0.0, 1.6, 0.6, 0.0, 2.4, 1.1, 0.0, 3.0];
+    let knots = KnotVector::new(vec![0.0, 0.0, 0.0, 0.0, 0.5, 1.0, 1.0, 1.0, 1.0]);
+    let curve = BSplineCurve::try_new(3, 4, knots, profile.to_vec()).expect("a profile");
+    let s = revolve(&curve).expect("a surface of revolution");
+    let (nu, nv) = s.control_counts();
+    let f32s = |v: &[f64]| v.iter().map(|&x| x as f32).collect::<Vec<f32>>();
+    gl.translatef(0.0, 0.0, -1.5);
+    gl.enable(GL_LIGHTING);
+    gl.enable(GL_LIGHT0);
+    gl.enable(GL_DEPTH_TEST);
+    gl.enable(GL_AUTO_NORMAL);
+    gl.enable(GL_NORMALIZE);
+    gl.light_model_i(GL_LIGHT_MODEL_TWO_SIDE, 1);
+    gl.material_fv(GL_FRONT_AND_BACK, GL_DIFFUSE, &[0.3, 0.5, 0.9, 1.0]);
+    let nurb = gl.glu_new_nurbs_renderer();
+    gl.glu_nurbs_property(nurb, GLU_SAMPLING_TOLERANCE, 10.0);
+    gl.glu_begin_surface(nurb);
+    gl.glu_nurbs_surface(
+        nurb,
+        (nu + 3) as i32,
+        &f32s(&s.uknots.knots),
+        (nv + 4) as i32,
+        &f32s(&s.vknots.knots),
+        (nv * 4) as i32,
+        4,
+        &f32s(&s.points),
+        3,
+        4,
+        GL_MAP2_VERTEX_4,
+    );
+    gl.glu_end_surface(nurb);
+    gl.glu_delete_nurbs_renderer(nurb);
+    gl.disable(GL_LIGHTING);
+    gl.disable(GL_DEPTH_TEST);
+}
+
+fn paint(gl: &mut Gl) {
+    gl.clear_color(1.0, 1.0, 1.0, 1.0);
+    gl.clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    gl.line_width(1.5);
+    gl.point_size(5.0);
+    subdivision(gl);
+    elevation(gl);
+    interpolation(gl);
+    frenet(gl);
+    circle(gl);
+    vase(gl);
+    gl.flush();
+}
+
+/// The program, for tests that render it headless.
+pub fn app() -> App {
+    App::new("曲线运算: 细分, 升阶, 插值, Frenet标架, NURBS圆, 旋转面", 900, 500).display(paint)
+}
+
+#[allow(dead_code)]
+fn main() {
+    app().run();
+}
