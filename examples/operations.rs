@@ -1,20 +1,22 @@
-//! The curve operations of the course notes, shown side by side (one viewport each):
-//! subdivision at u = 1/2 (the two halves' control polygons), repeated degree elevation (the
-//! polygons after 0, 2, 8 and 32 elevations close in on the curve), interpolation through the
-//! same points with uniform, chord-length and centripetal parameters, the Frenet frames and
-//! curvature comb of a cubic, the exact NURBS circle with its control polygon, and a vase as a
-//! surface of revolution drawn by GLU.
+//! The curve operations of the course notes, shown side by side (one viewport each, four to a
+//! row): subdivision at u = 1/2 (the two halves' control polygons), repeated degree elevation
+//! (the polygons after 0, 2, 8 and 32 elevations close in on the curve), interpolation through
+//! the same points with uniform, chord-length and centripetal parameters; the Frenet frames
+//! and curvature comb of a cubic, the exact NURBS circle with its control polygon, a vase as a
+//! surface of revolution; degree reduction (a quartic and the cubic closest to it), knot
+//! refinement of a B-spline (the polygon after 0, 1 and 3 rounds of midpoint insertion), a
+//! Hermite segment with its end tangents, and a tube extruded from the NURBS circle.
 //!
 //! `cargo run --release --example operations -- --png operations.png`
 
 use gleval::math::interpolate::{interpolate, Parameterization};
-use gleval::math::shapes::{nurbs_circle, revolve};
-use gleval::math::{BSplineCurve, BezierCurve, KnotVector};
+use gleval::math::shapes::{extrude, nurbs_circle, revolve};
+use gleval::math::{BSplineCurve, BSplineSurface, BezierCurve, HermiteCurve, KnotVector};
 use gleval::prelude::*;
 
 fn view(gl: &mut Gl, k: i32, (x0, x1, y0, y1): (f64, f64, f64, f64)) {
-    let (w, h) = (gl.glut_get(GLUT_WINDOW_WIDTH) / 3, gl.glut_get(GLUT_WINDOW_HEIGHT) / 2);
-    gl.viewport((k % 3) * w, (1 - k / 3) * h, w, h);
+    let (w, h) = (gl.glut_get(GLUT_WINDOW_WIDTH) / 4, gl.glut_get(GLUT_WINDOW_HEIGHT) / 3);
+    gl.viewport((k % 4) * w, (2 - k / 4) * h, w, h);
     gl.matrix_mode(GL_PROJECTION);
     gl.load_identity();
     gl.glu_ortho_2d(x0, x1, y0, y1);
@@ -111,7 +113,7 @@ fn frenet(gl: &mut Gl) {
 }
 
 fn circle(gl: &mut Gl) {
-    view(gl, 4, (-1.44, 1.44, -1.2, 1.2)); // the viewport's 6:5
+    view(gl, 4, (-1.8, 1.8, -1.2, 1.2)); // the viewport's 3:2
     let c = nurbs_circle([0.0, 0.0, 0.0], 1.0).expect("a circle");
     let projected: Vec<f64> = c.points.chunks(4).flat_map(|p| [p[0] / p[3], p[1] / p[3]]).collect();
     gl.color3f(0.6, 0.6, 0.6);
@@ -125,23 +127,17 @@ fn circle(gl: &mut Gl) {
     });
 }
 
-fn vase(gl: &mut Gl) {
-    let (w, h) = (gl.glut_get(GLUT_WINDOW_WIDTH) / 3, gl.glut_get(GLUT_WINDOW_HEIGHT) / 2);
-    gl.viewport(2 * w, 0, w, h);
+/// A perspective view in viewport `k` for a lit NURBS surface.
+fn lit_view(gl: &mut Gl, k: i32, tilt: f32) {
+    let (w, h) = (gl.glut_get(GLUT_WINDOW_WIDTH) / 4, gl.glut_get(GLUT_WINDOW_HEIGHT) / 3);
+    gl.viewport((k % 4) * w, (2 - k / 4) * h, w, h);
     gl.matrix_mode(GL_PROJECTION);
     gl.load_identity();
     gl.glu_perspective(30.0, f64::from(w) / f64::from(h), 1.0, 50.0);
     gl.matrix_mode(GL_MODELVIEW);
     gl.load_identity();
-    gl.translatef(0.0, -0.2, -11.0);
-    gl.rotatef(-70.0, 1.0, 0.0, 0.0);
-    // The profile in the xz plane: radius against height.
-    let profile = [0.9, 0.0, 0.0, 1.4, 0.0, 0.6, 0.5, 0.0, 1.6, 0.6, 0.0, 2.4, 1.1, 0.0, 3.0];
-    let knots = KnotVector::new(vec![0.0, 0.0, 0.0, 0.0, 0.5, 1.0, 1.0, 1.0, 1.0]);
-    let curve = BSplineCurve::try_new(3, 4, knots, profile.to_vec()).expect("a profile");
-    let s = revolve(&curve).expect("a surface of revolution");
-    let (nu, nv) = s.control_counts();
-    let f32s = |v: &[f64]| v.iter().map(|&x| x as f32).collect::<Vec<f32>>();
+    gl.translatef(0.0, 0.0, -11.0);
+    gl.rotatef(tilt, 1.0, 0.0, 0.0);
     gl.translatef(0.0, 0.0, -1.5);
     gl.enable(GL_LIGHTING);
     gl.enable(GL_LIGHT0);
@@ -149,27 +145,101 @@ fn vase(gl: &mut Gl) {
     gl.enable(GL_AUTO_NORMAL);
     gl.enable(GL_NORMALIZE);
     gl.light_model_i(GL_LIGHT_MODEL_TWO_SIDE, 1);
-    gl.material_fv(GL_FRONT_AND_BACK, GL_DIFFUSE, &[0.3, 0.5, 0.9, 1.0]);
+}
+
+/// A homogeneous B-spline surface through GLU, then lighting off again.
+fn draw_nurbs_surface(gl: &mut Gl, s: &BSplineSurface<f64>, color: [f32; 4]) {
+    let (nu, nv) = s.control_counts();
+    let f32s = |v: &[f64]| v.iter().map(|&x| x as f32).collect::<Vec<f32>>();
+    gl.material_fv(GL_FRONT_AND_BACK, GL_DIFFUSE, &color);
     let nurb = gl.glu_new_nurbs_renderer();
     gl.glu_nurbs_property(nurb, GLU_SAMPLING_TOLERANCE, 10.0);
     gl.glu_begin_surface(nurb);
     gl.glu_nurbs_surface(
         nurb,
-        (nu + 3) as i32,
+        (nu + s.uorder) as i32,
         &f32s(&s.uknots.knots),
-        (nv + 4) as i32,
+        (nv + s.vorder) as i32,
         &f32s(&s.vknots.knots),
         (nv * 4) as i32,
         4,
         &f32s(&s.points),
-        3,
-        4,
+        s.uorder as i32,
+        s.vorder as i32,
         GL_MAP2_VERTEX_4,
     );
     gl.glu_end_surface(nurb);
     gl.glu_delete_nurbs_renderer(nurb);
     gl.disable(GL_LIGHTING);
     gl.disable(GL_DEPTH_TEST);
+}
+
+fn vase(gl: &mut Gl) {
+    lit_view(gl, 5, -70.0);
+    // The profile in the xz plane: radius against height.
+    let profile = [0.9, 0.0, 0.0, 1.4, 0.0, 0.6, 0.5, 0.0, 1.6, 0.6, 0.0, 2.4, 1.1, 0.0, 3.0];
+    let knots = KnotVector::new(vec![0.0, 0.0, 0.0, 0.0, 0.5, 1.0, 1.0, 1.0, 1.0]);
+    let curve = BSplineCurve::try_new(3, 4, knots, profile.to_vec()).expect("a profile");
+    draw_nurbs_surface(gl, &revolve(&curve).expect("a surface of revolution"), [0.3, 0.5, 0.9, 1.0]);
+}
+
+fn reduction(gl: &mut Gl) {
+    view(gl, 6, (0.0, 5.0, 0.0, 4.0));
+    let quartic = BezierCurve::try_new(2, vec![0.5, 0.5, 1.0, 3.8, 2.5, 0.5, 4.0, 3.8, 4.5, 0.5]).expect("a quartic");
+    let cubic = quartic.reduce().expect("order 5");
+    for (c, color) in [(&quartic, [0.0, 0.0, 0.8]), (&cubic, [0.9, 0.3, 0.0])] {
+        gl.color3f(0.7, 0.7, 0.7);
+        strip(gl, &c.points, 2, GL_LINE_STRIP);
+        gl.color3f(color[0], color[1], color[2]);
+        strip(gl, &c.points, 2, GL_POINTS);
+        sampled(gl, 80, |t| [c.eval(t)[0], c.eval(t)[1]]);
+    }
+}
+
+fn refinement(gl: &mut Gl) {
+    view(gl, 7, (-0.3, 5.3, -2.4, 2.4));
+    let pts = vec![0.0, 0.0, 1.0, -2.0, 2.0, 0.0, 3.0, 2.0, 4.0, 0.0, 5.0, -2.0];
+    let mut curve = BSplineCurve::try_new(2, 4, KnotVector::open_uniform(6, 4).expect("knots"), pts).expect("a cubic");
+    for (round, grey) in [(0, 0.2f32), (1, 0.5), (3, 0.75)] {
+        while curve.control_count() < 6 * (1 << round) - 3 * ((1 << round) - 1) {
+            // Midpoints of every non-empty knot span, inserted once each.
+            let k = curve.knots.knots.clone();
+            let mids: Vec<f64> = k.windows(2).filter(|w| w[1] > w[0]).map(|w| 0.5 * (w[0] + w[1])).collect();
+            for m in mids {
+                curve = curve.insert_knot(m, 1).expect("inside the range");
+            }
+        }
+        gl.color3f(grey, grey, grey);
+        strip(gl, &curve.points, 2, GL_LINE_STRIP);
+    }
+    let (a, b) = curve.valid_range().expect("a range");
+    gl.color3f(0.0, 0.0, 0.8);
+    sampled(gl, 120, |t| {
+        let p = curve.eval(a + (b - a) * t).unwrap_or_default();
+        [p[0], p[1]]
+    });
+}
+
+fn hermite(gl: &mut Gl) {
+    view(gl, 8, (-0.5, 6.0, -1.0, 7.0));
+    let c = HermiteCurve { p0: [0.0, 0.0], p1: [5.0, 6.0], t0: [3.0, 8.0], t1: [5.0, 1.0] };
+    gl.color3f(0.0, 0.0, 0.8);
+    sampled(gl, 80, |u| c.eval(u));
+    gl.color3f(0.9, 0.3, 0.0);
+    let (s0, s1) = (0.25, 0.25);
+    strip(gl, &[0.0, 0.0, s0 * 3.0, s0 * 8.0, 5.0, 6.0, 5.0 + s1 * 5.0, 6.0 + s1 * 1.0], 2, GL_LINES);
+    gl.color3f(0.0, 0.0, 0.0);
+    strip(gl, &[0.0, 0.0, 5.0, 6.0], 2, GL_POINTS);
+    // The exercise's value p(0.5) = (2.25, 3.875).
+    gl.color3f(0.0, 0.6, 0.2);
+    let m = c.eval(0.5);
+    strip(gl, &m, 2, GL_POINTS);
+}
+
+fn tube(gl: &mut Gl) {
+    lit_view(gl, 9, -60.0);
+    let ring = nurbs_circle([0.0, 0.0, 0.0], 1.0).expect("a circle");
+    draw_nurbs_surface(gl, &extrude(&ring, [0.0, 0.0, 2.5]).expect("a tube"), [0.9, 0.6, 0.2, 1.0]);
 }
 
 fn paint(gl: &mut Gl) {
@@ -183,12 +253,16 @@ fn paint(gl: &mut Gl) {
     frenet(gl);
     circle(gl);
     vase(gl);
+    reduction(gl);
+    refinement(gl);
+    hermite(gl);
+    tube(gl);
     gl.flush();
 }
 
 /// The program, for tests that render it headless.
 pub fn app() -> App {
-    App::new("曲线运算: 细分, 升阶, 插值, Frenet标架, NURBS圆, 旋转面", 900, 500).display(paint)
+    App::new("曲线与曲面运算", 1200, 600).display(paint)
 }
 
 #[allow(dead_code)]
