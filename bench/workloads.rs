@@ -30,6 +30,7 @@ pub fn cases() -> Vec<(&'static str, Setup)> {
         ("grid_1000", || typed_grid(1000, false)),
         ("grid_4000", || typed_grid(4000, false)),
         ("grid_fresh_1000", || typed_grid(1000, true)),
+        ("grid_normals_1000", || typed_points_and_normals(1000)),
         ("patches_10000", facade_patches),
         ("eval_mesh1_degree10", facade_mesh1),
         ("nurbs_untrimmed", nurbs_untrimmed),
@@ -78,6 +79,19 @@ fn typed_grid(n: usize, fresh: bool) -> Workload {
             patch.tessellate_grid_into(&params, &params, &mut mesh).expect("mesh");
         }
         std::hint::black_box(&mesh);
+    };
+    Workload { items: ((n + 1) * (n + 1)) as f64, run: Box::new(run) }
+}
+
+/// The typed API's grid evaluation alone: points and unit normals of the bicubic patch over an
+/// n × n grid (no texture coordinates, no indices), in place.
+fn typed_points_and_normals(n: usize) -> Workload {
+    let patch = BezierPatch::try_new(3, 4, 4, patch()).expect("a bicubic patch");
+    let params: Vec<f32> = (0..=n).map(|i| i as f32 / n as f32).collect();
+    let (mut positions, mut normals) = (Vec::new(), Vec::new());
+    let run = move || {
+        patch.grid_with_normals_into(&params, &params, &mut positions, &mut normals).expect("grid");
+        std::hint::black_box((&positions, &normals));
     };
     Workload { items: ((n + 1) * (n + 1)) as f64, run: Box::new(run) }
 }

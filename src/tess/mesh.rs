@@ -137,6 +137,39 @@ impl<S: Scalar> BezierPatch<S> {
     /// [`BezierPatch::tessellate_grid`] into `mesh`, replacing its contents but reusing its
     /// memory: a loop that re-tessellates allocates (and faults in) nothing after the first time.
     pub fn tessellate_grid_into(&self, us: &[S], vs: &[S], mesh: &mut Mesh) -> Result<(), MeshError> {
+        let out = GridOut {
+            positions: &mut mesh.positions,
+            normals: &mut mesh.normals,
+            tex_coords: Some(&mut mesh.tex_coords),
+            indices: Some(&mut mesh.indices),
+        };
+        self.fill_grid(us, vs, out)
+    }
+
+    /// Only the grid's points and unit normals (v outer, u inner), into `positions` and
+    /// `normals` (replaced, memory reused): for callers with their own connectivity.
+    ///
+    /// ```
+    /// use gleval::math::BezierPatch;
+    /// let flat = BezierPatch::try_new(3, 2, 2, vec![0.,0.,0., 0.,1.,0., 1.,0.,0., 1.,1.,0.]).unwrap();
+    /// let (mut p, mut n) = (Vec::new(), Vec::new());
+    /// flat.grid_with_normals_into(&[0.0, 0.5, 1.0], &[0.0, 1.0], &mut p, &mut n).unwrap();
+    /// assert_eq!(p[4], [0.5, 1.0, 0.0]);
+    /// assert_eq!(n[4], [0.0, 0.0, 1.0]);
+    /// ```
+    pub fn grid_with_normals_into(
+        &self,
+        us: &[S],
+        vs: &[S],
+        positions: &mut Vec<[f32; 3]>,
+        normals: &mut Vec<[f32; 3]>,
+    ) -> Result<(), MeshError> {
+        self.fill_grid(us, vs, GridOut { positions, normals, tex_coords: None, indices: None })
+    }
+
+    /// The grid path behind both: bands of rows on the pool, each writing its rows' outputs
+    /// and (with indices) the cell rows that start in them.
+    fn fill_grid(&self, us: &[S], vs: &[S], out: GridOut<'_>) -> Result<(), MeshError> {
         let (nu, nv) = (us.len(), vs.len());
         if nu < 2 || nv < 2 {
             return Err(MeshError::EmptyGrid);
@@ -148,26 +181,32 @@ impl<S: Scalar> BezierPatch<S> {
         let view = MapView { dim: self.dim, uorder: self.uorder, vorder: self.vorder, points: &self.points };
         let kernel = RowKernel::new(view, us, vs, true).ok_or(MeshError::MalformedPatch)?;
         let (rational, dim) = (self.dim == 4, self.dim.min(3));
-        reuse_or_calloc(&mut mesh.positions, count);
-        reuse_or_calloc(&mut mesh.normals, count);
-        reuse_or_calloc(&mut mesh.tex_coords, count);
-        reuse_or_calloc(&mut mesh.indices, 6 * (nu - 1) * (nv - 1));
+        reuse_or_calloc(out.positions, count);
+        reuse_or_calloc(out.normals, count);
         let band_rows = rows_per_band(nv, nu);
         let band = band_rows * nu;
+        // Optional outputs: their bands, or empty slices when not asked for.
+        let tex_bands: Box<dyn Iterator<Item = &mut [[f32; 2]]>> = match out.tex_coords {
+            Some(t) => {
+                reuse_or_calloc(t, count);
+                Box::new(t.chunks_mut(band))
+            }
+            None => Box::new(std::iter::repeat_with(|| &mut [][..])),
+        };
         // Band k also writes the cell rows starting in its rows (the last band has one fewer).
-        let cells = mesh.indices.chunks_mut(band_rows * 6 * (nu - 1)).chain(std::iter::repeat_with(|| &mut [][..]));
-        let bands = mesh
-            .positions
-            .chunks_mut(band)
-            .zip(mesh.normals.chunks_mut(band))
-            .zip(mesh.tex_coords.chunks_mut(band))
-            .zip(cells);
+        let cell_bands: Box<dyn Iterator<Item = &mut [u32]>> = match out.indices {
+            Some(i) => {
+                reuse_or_calloc(i, 6 * (nu - 1) * (nv - 1));
+                Box::new(i.chunks_mut(band_rows * 6 * (nu - 1)).chain(std::iter::repeat_with(|| &mut [][..])))
+            }
+            None => Box::new(std::iter::repeat_with(|| &mut [][..])),
+        };
+        let bands = out.positions.chunks_mut(band).zip(out.normals.chunks_mut(band)).zip(tex_bands).zip(cell_bands);
         let us_f32: Vec<f32> = us.iter().map(|u| u.to_f64() as f32).collect();
         run_bands(bands, |k, (((positions, normals), tex_coords), cells)| {
             write_cell_rows(nu, k * band_rows, cells);
             let mut row = Row::default();
-            let rows = positions.chunks_mut(nu).zip(normals.chunks_mut(nu)).zip(tex_coords.chunks_mut(nu));
-            for (r, ((positions, normals), tex_coords)) in rows.enumerate() {
+            for (r, (positions, normals)) in positions.chunks_mut(nu).zip(normals.chunks_mut(nu)).enumerate() {
                 let j = k * band / nu + r;
                 kernel.eval_row(j, &mut row);
                 // One simple loop per output, so that each vectorises.
@@ -176,14 +215,24 @@ impl<S: Scalar> BezierPatch<S> {
                 for (normal, ((x, y), z)) in normals.iter_mut().zip(x.iter().zip(y).zip(z)) {
                     *normal = unit_normal([*x, *y, *z]);
                 }
-                let t = vs[j].to_f64() as f32;
-                for (tex, &u) in tex_coords.iter_mut().zip(&us_f32) {
-                    *tex = [u, t];
+                if let Some(tex) = tex_coords.get_mut(r * nu..(r + 1) * nu) {
+                    let t = vs[j].to_f64() as f32;
+                    for (tex, &u) in tex.iter_mut().zip(&us_f32) {
+                        *tex = [u, t];
+                    }
                 }
             }
         });
         Ok(())
     }
+}
+
+/// Where [`BezierPatch::fill_grid`] writes; `None` outputs are skipped.
+struct GridOut<'a> {
+    positions: &'a mut Vec<[f32; 3]>,
+    normals: &'a mut Vec<[f32; 3]>,
+    tex_coords: Option<&'a mut Vec<[f32; 2]>>,
+    indices: Option<&'a mut Vec<u32>>,
 }
 
 /// The row's points as f32 positions, divided by w for a rational patch.
@@ -269,6 +318,18 @@ mod tests {
                 assert!((f64::from(p[c]) - h[c] / h[3]).abs() < 1e-5, "{k}");
             }
         }
+    }
+
+    #[test]
+    fn points_and_normals_alone_are_the_meshs() {
+        let points: Vec<f64> = (0..4 * 4 * 3).map(|k| ((k * 13 % 7) as f64) * 0.3).collect();
+        let patch = BezierPatch::try_new(3, 4, 4, points).unwrap();
+        let us: Vec<f64> = (0..=300).map(|i| f64::from(i) / 300.0).collect();
+        let vs: Vec<f64> = (0..=250).map(|j| f64::from(j) / 250.0).collect();
+        let mesh = patch.tessellate_grid(&us, &vs).unwrap();
+        let (mut p, mut n) = (vec![[9.0; 3]; 7], Vec::new());
+        patch.grid_with_normals_into(&us, &vs, &mut p, &mut n).unwrap();
+        assert_eq!((p, n), (mesh.positions, mesh.normals));
     }
 
     #[test]
