@@ -56,6 +56,9 @@ fn main() {
         };
         let rate = w.items / median_seconds(runs, &mut w.run);
         println!("{name} {rate:.0}");
+        if std::env::var_os("BENCH_VERBOSE").is_some() {
+            eprintln!("{name}: {} items per run", w.items);
+        }
         if name == "grid_4000" {
             if let (Some(a), Some(b)) = (before, peak_mib()) {
                 let mesh = 4001.0 * 4001.0 * (12.0 + 12.0 + 8.0) + 4000.0 * 4000.0 * 24.0;

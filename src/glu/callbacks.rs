@@ -197,3 +197,73 @@ impl Callbacks {
         });
     }
 }
+
+/// The begin, vertex and end callbacks of one object looked up once, for the tessellator's
+/// tight loops: a vertex then costs one indirect call instead of a search of the slots and a
+/// round trip of the user data. The `_DATA` forms win, as in [`Callbacks`].
+pub(crate) struct Sinks<'a> {
+    begin: Option<&'a mut NurbsCallback>,
+    vertex: Option<&'a mut NurbsCallback>,
+    end: Option<&'a mut NurbsCallback>,
+    data: Option<&'a mut UserData>,
+}
+
+impl Callbacks {
+    /// The begin, vertex and end sinks; `None` when another callback (normal, colour, texture
+    /// coordinate) is registered, since those interleave with the vertices.
+    pub fn sinks(&mut self) -> Option<Sinks<'_>> {
+        let others = [GLU_NURBS_NORMAL, GLU_NURBS_COLOR, GLU_NURBS_TEXTURE_COORD];
+        let data_form = |w: GLenum| w + (GLU_NURBS_BEGIN_DATA - GLU_NURBS_BEGIN);
+        if self.slots.iter().any(|c| others.iter().any(|&w| c.slot() == w || c.slot() == data_form(w))) {
+            return None;
+        }
+        let has = |w: GLenum| self.slots.iter().any(|c| c.slot() == data_form(w));
+        let pick = [GLU_NURBS_BEGIN, GLU_NURBS_VERTEX, GLU_NURBS_END].map(|w| if has(w) { data_form(w) } else { w });
+        let mut sinks = Sinks { begin: None, vertex: None, end: None, data: self.data.as_mut() };
+        for c in &mut self.slots {
+            let slot = c.slot();
+            if slot == pick[0] {
+                sinks.begin = Some(c);
+            } else if slot == pick[1] {
+                sinks.vertex = Some(c);
+            } else if slot == pick[2] {
+                sinks.end = Some(c);
+            }
+        }
+        Some(sinks)
+    }
+}
+
+impl Sinks<'_> {
+    fn with_data(data: &mut Option<&mut UserData>, f: impl FnOnce(&mut dyn Any)) {
+        match data {
+            Some(d) => f(d.as_mut()),
+            None => f(&mut ()),
+        }
+    }
+
+    pub fn begin(&mut self, prim: GLenum) {
+        match self.begin.as_deref_mut() {
+            Some(NurbsCallback::Begin(f)) => f(prim),
+            Some(NurbsCallback::BeginData(f)) => Self::with_data(&mut self.data, |d| f(prim, d)),
+            _ => {}
+        }
+    }
+
+    #[inline]
+    pub fn vertex(&mut self, values: &[f32]) {
+        match self.vertex.as_deref_mut() {
+            Some(NurbsCallback::Vertex(f)) => f(values),
+            Some(NurbsCallback::VertexData(f)) => Self::with_data(&mut self.data, |d| f(values, d)),
+            _ => {}
+        }
+    }
+
+    pub fn end(&mut self) {
+        match self.end.as_deref_mut() {
+            Some(NurbsCallback::End(f)) => f(),
+            Some(NurbsCallback::EndData(f)) => Self::with_data(&mut self.data, f),
+            _ => {}
+        }
+    }
+}

@@ -4,6 +4,7 @@
 //! callbacks (`GLU_NURBS_TESSELLATOR`). Trimmed surfaces are triangulated in (u, v) by
 //! [`crate::tess::trim`] and each vertex evaluated on the exact surface.
 
+use super::callbacks::Sinks;
 use super::consts::*;
 use super::nurbs::{CurveMap, NurbsObject, SurfaceDef, TrimPiece};
 use super::pieces::{CurvePieces, SurfacePatches};
@@ -186,6 +187,9 @@ pub(crate) fn draw_surface(gl: &mut Gl, obj: &mut NurbsObject, def: &SurfaceDef)
     }
     let patches = surface.patches(&sampler);
     if tessellate {
+        if obj.callbacks.sinks().is_some() {
+            return tessellate_patches_in_parallel(obj, &surface, &patches);
+        }
         for (u, v, n) in patches {
             tessellate_patch(obj, &surface, u, v, n);
         }
@@ -244,13 +248,100 @@ fn outline_patch(gl: &mut Gl, surface: &Surface, u: (f64, f64), v: (f64, f64), (
     }
 }
 
+/// The grid lines of a patch: nu + 1 values across u, nv + 1 across v, the last exactly the end.
+fn patch_lines(u: (f64, f64), v: (f64, f64), (nu, nv): (usize, usize)) -> (Vec<f64>, Vec<f64>) {
+    let at = |r: (f64, f64), i: usize, n: usize| if i == n { r.1 } else { r.0 + (r.1 - r.0) * i as f64 / n as f64 };
+    ((0..=nu).map(|i| at(u, i, nu)).collect(), (0..=nv).map(|j| at(v, j, nv)).collect())
+}
+
+/// Grid points per batch of patches: small enough that evaluating the next batch overlaps
+/// issuing this one's callbacks, large enough to amortise the hand-over.
+const BATCH_POINTS: usize = 1 << 16;
+
+fn grid_size(&(_, _, (nu, nv)): &PatchGrid) -> usize {
+    (nu + 1).saturating_mul(nv + 1)
+}
+
+/// Consecutive runs of patches of at most [`BATCH_POINTS`] grid points (at least one patch each).
+fn batches(patches: &[PatchGrid]) -> Vec<&[PatchGrid]> {
+    let mut out = Vec::new();
+    let mut rest = patches;
+    while !rest.is_empty() {
+        let mut take = 1;
+        let mut points = grid_size(&rest[0]);
+        while take < rest.len() && points.saturating_add(grid_size(&rest[take])) <= BATCH_POINTS {
+            points += grid_size(&rest[take]);
+            take += 1;
+        }
+        let (batch, tail) = rest.split_at(take);
+        out.push(batch);
+        rest = tail;
+    }
+    out
+}
+
+/// Evaluates a batch's grids into `out` (resized), in parallel; whether each succeeded.
+fn evaluate_batch(surface: &Surface, batch: &[PatchGrid], out: &mut Vec<[f32; 5]>) -> Vec<bool> {
+    use rayon::prelude::*;
+    out.clear();
+    out.resize(batch.iter().map(grid_size).sum(), [0.0; 5]);
+    let mut chunks = Vec::with_capacity(batch.len());
+    let mut free = out.as_mut_slice();
+    for patch in batch {
+        let (chunk, after) = free.split_at_mut(grid_size(patch));
+        chunks.push((patch, chunk));
+        free = after;
+    }
+    chunks
+        .into_par_iter()
+        .map(|(&(u, v, n), chunk)| {
+            let (us, vs) = patch_lines(u, v, n);
+            grid_vertices_into(&surface.pos, surface.k, &us, &vs, chunk).is_some()
+        })
+        .collect()
+}
+
+/// [`tessellate_patch`] for every patch when only begin, vertex and end callbacks are set. The
+/// grids are evaluated a batch ahead on rayon's workers while this thread issues the previous
+/// batch's strips, in patch order as GLU issues them (the callbacks need not be `Send`). The two
+/// buffers are kept in the object and reused.
+fn tessellate_patches_in_parallel(obj: &mut NurbsObject, surface: &Surface, patches: &[PatchGrid]) {
+    let mut current = std::mem::take(&mut obj.vertex_scratch[0]);
+    let mut next = std::mem::take(&mut obj.vertex_scratch[1]);
+    let batches = batches(patches);
+    let mut ok = match batches.first() {
+        Some(first) => evaluate_batch(surface, first, &mut current),
+        None => Vec::new(),
+    };
+    for (k, batch) in batches.iter().enumerate() {
+        let mut next_ok = Vec::new();
+        rayon::in_place_scope(|scope| {
+            if let Some(following) = batches.get(k + 1) {
+                let (next, next_ok) = (&mut next, &mut next_ok);
+                scope.spawn(move |_| *next_ok = evaluate_batch(surface, following, next));
+            }
+            let mut start = 0;
+            for (patch, &done) in batch.iter().zip(&ok) {
+                let &(u, v, (nu, nv)) = patch;
+                let grid = &current[start..start + grid_size(patch)];
+                start += grid_size(patch);
+                match obj.callbacks.sinks() {
+                    Some(mut sinks) if done => quad_strips(&mut sinks, grid, nu, nv),
+                    _ => tessellate_patch(obj, surface, u, v, (nu, nv)),
+                }
+            }
+        });
+        std::mem::swap(&mut current, &mut next);
+        ok = next_ok;
+    }
+    obj.vertex_scratch = [current, next];
+}
+
 /// The grid blocks of one patch as `GL_QUAD_STRIP`s through the callbacks (GLU `mapmesh2f`).
 /// Positions come from one grid evaluation of the patch's Bezier piece (each point once, though
 /// the strips issue interior points twice); other maps and normals are evaluated per vertex.
 fn tessellate_patch(obj: &mut NurbsObject, surface: &Surface, u: (f64, f64), v: (f64, f64), (nu, nv): (usize, usize)) {
-    let at = |r: (f64, f64), i: usize, n: usize| if i == n { r.1 } else { r.0 + (r.1 - r.0) * i as f64 / n as f64 };
-    let us: Vec<f64> = (0..=nu).map(|i| at(u, i, nu)).collect();
-    let vs: Vec<f64> = (0..=nv).map(|j| at(v, j, nv)).collect();
+    let (us, vs) = patch_lines(u, v, (nu, nv));
     let grid = grid_vertices(&surface.pos, surface.k, &us, &vs);
     let per_vertex = !surface.attributes.is_empty() || obj.callbacks.wants_normals();
     let emit = |obj: &mut NurbsObject, i: usize, j: usize| {
@@ -283,9 +374,41 @@ fn tessellate_patch(obj: &mut NurbsObject, surface: &Surface, u: (f64, f64), v: 
     }
 }
 
+/// [`tessellate_patch`]'s strips when only begin, vertex and end callbacks are registered:
+/// the same primitives, one indirect call per vertex.
+fn quad_strips(sinks: &mut Sinks, g: &[[f32; 5]], nu: usize, nv: usize) {
+    let at = |i: usize, j: usize| &g[j * (nu + 1) + i];
+    if nu >= nv {
+        for i in 0..nu {
+            sinks.begin(GL_QUAD_STRIP);
+            for j in (0..=nv).rev() {
+                sinks.vertex(at(i, j));
+                sinks.vertex(at(i + 1, j));
+            }
+            sinks.end();
+        }
+    } else {
+        for j in 0..nv {
+            sinks.begin(GL_QUAD_STRIP);
+            for i in (0..=nu).rev() {
+                sinks.vertex(at(i, j + 1));
+                sinks.vertex(at(i, j));
+            }
+            sinks.end();
+        }
+    }
+}
+
 /// The vertex-callback data (x, y, z divided by w, then u, v) of every point of the grid
 /// `us` × `vs` (v outer), all inside one Bezier piece of `pos`, evaluated on the grid path.
 fn grid_vertices(pos: &SurfacePatches, k: usize, us: &[f64], vs: &[f64]) -> Option<Vec<[f32; 5]>> {
+    let mut out = vec![[0.0; 5]; us.len() * vs.len()];
+    grid_vertices_into(pos, k, us, vs, &mut out)?;
+    Some(out)
+}
+
+/// [`grid_vertices`] into `out` (`us.len() * vs.len()` entries, v outer).
+fn grid_vertices_into(pos: &SurfacePatches, k: usize, us: &[f64], vs: &[f64], out: &mut [[f32; 5]]) -> Option<()> {
     let p = &pos.patches;
     let mid = |r: &[f64]| 0.5 * (r[0] + r[r.len() - 1]);
     let a = super::pieces::locate(&p.uintervals, mid(us))?;
@@ -296,16 +419,27 @@ fn grid_vertices(pos: &SurfacePatches, k: usize, us: &[f64], vs: &[f64]) -> Opti
     let view = MapView { dim: p.dim, uorder: p.uorder, vorder: p.vorder, points: p.patch(a, b)? };
     let kernel = RowKernel::new(view, &su, &sv, false)?;
     let mut row = Row::default();
-    let mut out = Vec::with_capacity(us.len() * vs.len());
-    for (j, &v) in vs.iter().enumerate() {
-        kernel.eval_row(j, &mut row);
-        out.extend(us.iter().enumerate().map(|(i, &u)| {
-            let p = row.point_at(i, k);
-            let w = if k == 4 { p[3] } else { 1.0 };
-            [(p[0] / w) as f32, (p[1] / w) as f32, (p[2] / w) as f32, u as f32, v as f32]
-        }));
+    let n = us.len();
+    if out.len() != n * vs.len() {
+        return None;
     }
-    Some(out)
+    for ((j, &v), line) in vs.iter().enumerate().zip(out.chunks_exact_mut(n)) {
+        kernel.eval_row(j, &mut row);
+        let [x, y, z, w] = &row.point;
+        let (x, y, z) = (&x[..n], &y[..n], &z[..n]);
+        let v = v as f32;
+        if k == 4 {
+            let w = &w[..n];
+            for (i, o) in line.iter_mut().enumerate() {
+                *o = [(x[i] / w[i]) as f32, (y[i] / w[i]) as f32, (z[i] / w[i]) as f32, us[i] as f32, v];
+            }
+        } else {
+            for (i, o) in line.iter_mut().enumerate() {
+                *o = [x[i] as f32, y[i] as f32, z[i] as f32, us[i] as f32, v];
+            }
+        }
+    }
+    Some(())
 }
 
 impl Surface {

@@ -71,6 +71,9 @@ pub(crate) struct NurbsObject {
     pub props: NurbsProperties,
     pub callbacks: Callbacks,
     pub matrices: SamplingMatrices,
+    /// Two buffers of evaluated tessellator vertices (one filled while the other is issued),
+    /// kept between surfaces so that memory is reused.
+    pub vertex_scratch: [Vec<[f32; 5]>; 2],
     nesting: Nesting,
 }
 
@@ -86,6 +89,7 @@ impl NurbsObject {
             props: NurbsProperties::DEFAULT,
             callbacks: Callbacks::default(),
             matrices: SamplingMatrices::IDENTITY,
+            vertex_scratch: [Vec::new(), Vec::new()],
             nesting: Nesting::default(),
         }
     }

@@ -146,3 +146,80 @@ fn distance_to_curve(c: &BSplineCurve<f64>, v: [f32; 3]) -> f64 {
     }
     d(0.5 * (lo + hi))
 }
+
+/// What one tessellation issued: `B prim`, vertex data, `E`, as strings.
+type Trace = Rc<RefCell<Vec<String>>>;
+
+/// Tessellates the surface net at `step` with begin/vertex/end callbacks recording into a trace;
+/// `data_forms` registers the `_DATA` callbacks (user data: a tag they check), and
+/// `unused_color` also registers a colour callback, which the surface (no colour map) never calls
+/// but which makes the tessellator issue every vertex through its general per-vertex path.
+fn trace_surface(step: f32, data_forms: bool, unused_color: bool) -> Vec<String> {
+    let (knots, ctl) = surface_net();
+    let mut gl = Gl::new(8, 8);
+    let n = gl.glu_new_nurbs_renderer();
+    gl.glu_nurbs_property(n, GLU_NURBS_MODE, GLU_NURBS_TESSELLATOR as f32);
+    gl.glu_nurbs_property(n, GLU_SAMPLING_METHOD, GLU_DOMAIN_DISTANCE as f32);
+    gl.glu_nurbs_property(n, GLU_U_STEP, step);
+    gl.glu_nurbs_property(n, GLU_V_STEP, step);
+    let trace: Trace = Rc::default();
+    let (b, v, e) = (Rc::clone(&trace), Rc::clone(&trace), Rc::clone(&trace));
+    let tagged = |d: &mut dyn std::any::Any| assert_eq!(d.downcast_ref::<u32>(), Some(&7), "user data");
+    if data_forms {
+        gl.glu_nurbs_callback_data(n, Box::new(7u32));
+        let cbs = [
+            NurbsCallback::BeginData(Box::new(move |p, d| {
+                tagged(d);
+                b.borrow_mut().push(format!("B {p}"));
+            })),
+            NurbsCallback::VertexData(Box::new(move |x, d| {
+                tagged(d);
+                v.borrow_mut().push(format!("{x:?}"));
+            })),
+            NurbsCallback::EndData(Box::new(move |d| {
+                tagged(d);
+                e.borrow_mut().push("E".into());
+            })),
+        ];
+        for (which, cb) in [GLU_NURBS_BEGIN_DATA, GLU_NURBS_VERTEX_DATA, GLU_NURBS_END_DATA].into_iter().zip(cbs) {
+            gl.glu_nurbs_callback(n, which, Some(cb));
+        }
+    } else {
+        gl.glu_nurbs_callback(
+            n,
+            GLU_NURBS_BEGIN,
+            Some(NurbsCallback::begin(move |p| b.borrow_mut().push(format!("B {p}")))),
+        );
+        gl.glu_nurbs_callback(
+            n,
+            GLU_NURBS_VERTEX,
+            Some(NurbsCallback::vertex(move |x| v.borrow_mut().push(format!("{x:?}")))),
+        );
+        gl.glu_nurbs_callback(n, GLU_NURBS_END, Some(NurbsCallback::end(move || e.borrow_mut().push("E".into()))));
+    }
+    if unused_color {
+        gl.glu_nurbs_callback(n, GLU_NURBS_COLOR, Some(NurbsCallback::color(|_| panic!("no colour map"))));
+    }
+    gl.glu_begin_surface(n);
+    gl.glu_nurbs_surface(n, 14, &knots, 14, &knots, 30, 3, &ctl, 4, 4, GL_MAP2_VERTEX_3);
+    gl.glu_end_surface(n);
+    let out = trace.borrow().clone();
+    out
+}
+
+/// The tessellator's fast path (only begin, vertex and end callbacks: grids evaluated a batch
+/// ahead on other threads, one indirect call per vertex) issues exactly what its general path
+/// issues, primitive for primitive and bit for bit, also with the `_DATA` forms, and at a step
+/// large enough for several batches.
+#[test]
+fn fast_tessellator_path_issues_what_the_general_path_issues() {
+    for step in [3.0, 90.0] {
+        let general = trace_surface(step, false, true);
+        let begins = general.iter().filter(|s| s.starts_with("B ")).count();
+        assert_eq!(begins, general.iter().filter(|s| *s == "E").count());
+        assert!(general.len() > begins * 4, "step {step}: {} entries", general.len());
+        assert_eq!(trace_surface(step, false, false), general, "step {step}: fast path");
+        assert_eq!(trace_surface(step, true, false), general, "step {step}: _DATA forms");
+        assert_eq!(trace_surface(step, true, true), general, "step {step}: _DATA forms, general path");
+    }
+}
