@@ -501,13 +501,6 @@ pub(crate) fn emit_attributes(
     }
 }
 
-/// The vertex callback's data at (u, v): (x, y, z) divided by w, then u, v.
-pub(crate) fn position_data(pos: &SurfacePatches, k: usize, u: f64, v: f64) -> Option<[f32; 5]> {
-    let s = pos.eval(u, v)?;
-    let w = if k == 4 { s.point[3] } else { 1.0 };
-    Some([(s.point[0] / w) as f32, (s.point[1] / w) as f32, (s.point[2] / w) as f32, u as f32, v as f32])
-}
-
 /// The vertex callback at (u, v): (x, y, z) divided by w, then u, v.
 fn emit_position(obj: &mut NurbsObject, pos: &SurfacePatches, k: usize, u: f64, v: f64) {
     let Some(s) = pos.eval(u, v) else { return };

@@ -3,13 +3,14 @@
 //! vertex is evaluated on the exact surface. Loop errors are GLU's numbers 28, 29, 31 and 18.
 
 use super::consts::*;
-use super::draw::{emit_attributes, position_data, surface_normal, trim_polylines, PatchGrid, Surface};
+use super::draw::{emit_attributes, surface_normal, trim_polylines, PatchGrid, Surface};
 use super::nurbs::{NurbsObject, TrimPiece};
-use super::pieces::locate;
+use super::pieces::{locate, SurfacePatches};
 use super::sampling::Sampler;
 use crate::gl::consts::*;
 use crate::gl::{Gl, MapSample, MapTarget, MeshJob, MeshMode, Slot, Tessellator, Vertex};
-use crate::tess::trim::{join_curves, triangulate, TrimLoop};
+use crate::math::bezier::bernstein;
+use crate::tess::trim::{join_curves, triangulate, GridStrip, TrimLoop, TrimMesh};
 use std::collections::BTreeMap;
 
 /// Grid lines of every patch at its sampling density, merged over the whole domain.
@@ -68,24 +69,7 @@ pub(crate) fn draw_trimmed(
         return outline_loops(gl, surface, &trim_loops);
     }
     if tessellate {
-        // Each point of the triangulation evaluated once, though triangles share it.
-        let per_vertex = !surface.attributes.is_empty() || obj.callbacks.wants_normals();
-        let data: Vec<Option<[f32; 5]>> =
-            mesh.points.iter().map(|&[u, v]| position_data(&surface.pos, surface.k, u, v)).collect();
-        obj.callbacks.begin(GL_TRIANGLES);
-        for tri in &mesh.triangles {
-            for &i in tri {
-                let [u, v] = mesh.points[i as usize];
-                if per_vertex {
-                    emit_attributes(obj, surface.view_ref(), u, v);
-                }
-                if let Some(d) = &data[i as usize] {
-                    obj.callbacks.attribute(GLU_NURBS_VERTEX, d);
-                }
-            }
-        }
-        obj.callbacks.end();
-        return;
+        return tessellate_trimmed(obj, surface, &mesh);
     }
     let saved_mode = gl.raster.polygon_mode;
     if obj.props.display_mode == GLU_OUTLINE_POLYGON {
@@ -109,6 +93,125 @@ pub(crate) fn draw_trimmed(
     }
     gl.end();
     gl.restore_polygon_mode(saved_mode);
+}
+
+/// Tessellator mode: each point of the triangulation evaluated once (on the row path), then the
+/// band along the loops as `GL_TRIANGLES` and the grid cells wholly inside as one
+/// `GL_QUAD_STRIP` per run of cells, as GLU issues its grid blocks.
+fn tessellate_trimmed(obj: &mut NurbsObject, surface: &Surface, mesh: &TrimMesh) {
+    let data = evaluate_positions(&surface.pos, surface.k, &mesh.points);
+    let grid_cells: usize = mesh.strips.iter().map(|s| s.cells as usize).sum();
+    let band = &mesh.triangles[..mesh.triangles.len() - 2 * grid_cells];
+    if let Some(mut sinks) = obj.callbacks.sinks() {
+        if !band.is_empty() {
+            sinks.begin(GL_TRIANGLES);
+            band.iter().flatten().filter_map(|&i| data[i as usize].as_ref()).for_each(|d| sinks.vertex(d));
+            sinks.end();
+        }
+        for strip in &mesh.strips {
+            sinks.begin(GL_QUAD_STRIP);
+            for (top, bottom) in strip_pairs(*strip) {
+                for i in [top, bottom] {
+                    if let Some(d) = &data[i as usize] {
+                        sinks.vertex(d);
+                    }
+                }
+            }
+            sinks.end();
+        }
+        return;
+    }
+    // Other callbacks registered: attributes and normals per vertex, before the position.
+    let per_vertex = !surface.attributes.is_empty() || obj.callbacks.wants_normals();
+    let emit = |obj: &mut NurbsObject, i: u32| {
+        let [u, v] = mesh.points[i as usize];
+        if per_vertex {
+            emit_attributes(obj, surface.view_ref(), u, v);
+        }
+        if let Some(d) = &data[i as usize] {
+            obj.callbacks.attribute(GLU_NURBS_VERTEX, d);
+        }
+    };
+    if !band.is_empty() {
+        obj.callbacks.begin(GL_TRIANGLES);
+        band.iter().flatten().for_each(|&i| emit(obj, i));
+        obj.callbacks.end();
+    }
+    for strip in &mesh.strips {
+        obj.callbacks.begin(GL_QUAD_STRIP);
+        for (top, bottom) in strip_pairs(*strip) {
+            emit(obj, top);
+            emit(obj, bottom);
+        }
+        obj.callbacks.end();
+    }
+}
+
+/// A run's (top, bottom) point pairs by increasing u: as a `GL_QUAD_STRIP`, quads
+/// top, bottom, next bottom, next top: counter-clockwise in (u, v).
+fn strip_pairs(strip: GridStrip) -> impl Iterator<Item = (u32, u32)> {
+    (0..=strip.cells).map(move |i| (strip.top + i, strip.bottom + i))
+}
+
+/// Points evaluated per parallel task in [`evaluate_positions`].
+const POINTS_PER_TASK: usize = 4096;
+
+/// The vertex-callback data ((x, y, z) divided by w, then u, v) of every point, `None` outside
+/// the surface. Points sharing a v (the triangulation lists its grid points row by row) share
+/// the reduction of the Bezier net along v; then each point costs one u basis and one sum.
+fn evaluate_positions(pos: &SurfacePatches, k: usize, points: &[[f64; 2]]) -> Vec<Option<[f32; 5]>> {
+    use rayon::prelude::*;
+    let mut out = vec![None; points.len()];
+    out.par_chunks_mut(POINTS_PER_TASK).zip(points.par_chunks(POINTS_PER_TASK)).for_each(|(out, points)| {
+        let mut rows = RowCache::default();
+        for (o, &[u, v]) in out.iter_mut().zip(points) {
+            *o = rows.eval(pos, k, u, v);
+        }
+    });
+    out
+}
+
+/// The net of one Bezier piece reduced along v at one v, reused while consecutive points share
+/// the piece and the v.
+#[derive(Default)]
+struct RowCache {
+    key: Option<(usize, usize, u64)>,
+    reduced: Vec<[f64; 4]>,
+    basis: Vec<f64>,
+}
+
+impl RowCache {
+    fn eval(&mut self, pos: &SurfacePatches, k: usize, u: f64, v: f64) -> Option<[f32; 5]> {
+        let p = &pos.patches;
+        let (a, b) = (locate(&p.uintervals, u)?, locate(&p.vintervals, v)?);
+        let ((ua, ub), (va, vb)) = (p.uintervals[a], p.vintervals[b]);
+        if self.key != Some((a, b, v.to_bits())) {
+            let net = p.patch(a, b)?;
+            self.basis.resize(p.vorder, 0.0);
+            bernstein(p.vorder, (v - va) / (vb - va), &mut self.basis);
+            self.reduced.clear();
+            for column in net.chunks_exact(p.vorder * p.dim) {
+                let mut r = [0.0; 4];
+                for (bj, point) in self.basis.iter().zip(column.chunks_exact(p.dim)) {
+                    for (rc, &c) in r.iter_mut().zip(point) {
+                        *rc += bj * c;
+                    }
+                }
+                self.reduced.push(r);
+            }
+            self.key = Some((a, b, v.to_bits()));
+        }
+        self.basis.resize(p.uorder, 0.0);
+        bernstein(p.uorder, (u - ua) / (ub - ua), &mut self.basis);
+        let mut q = [0.0; 4];
+        for (bi, r) in self.basis.iter().zip(&self.reduced) {
+            for (qc, &c) in q.iter_mut().zip(r) {
+                *qc += bi * c;
+            }
+        }
+        let w = if k == 4 { q[3] } else { 1.0 };
+        Some([(q[0] / w) as f32, (q[1] / w) as f32, (q[2] / w) as f32, u as f32, v as f32])
+    }
 }
 
 /// The GPU tessellator's trimmed surface: the triangulation's (u, v) points grouped by the

@@ -25,7 +25,8 @@
 //! pieces and stitches them to its uniform grid; the triangles differ, the covered region and
 //! the grid points inside it are the same.
 
-use spade::{ConstrainedDelaunayTriangulation, Point2, Triangulation};
+use spade::handles::DirectedEdgeHandle;
+use spade::{CdtEdge, ConstrainedDelaunayTriangulation, HasPosition, Point2, Triangulation};
 
 /// GLU's tolerance for joining trim curves (`arc.cc` ZERO): |Δu| and |Δv| both at most this.
 pub const JOIN_TOLERANCE: f64 = 1e-5;
@@ -106,11 +107,38 @@ impl std::error::Error for TrimError {}
 /// A triangulated region of the parameter domain.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct TrimMesh {
-    /// Vertices in (u, v): the loop points (and any split points), then interior grid points.
-    /// Every vertex is used by at least one triangle.
+    /// Vertices in (u, v): the retained interior grid points row by row (v outer, u inner), then
+    /// the loop points (and any split points). Every vertex is used by at least one triangle.
     pub points: Vec<[f64; 2]>,
-    /// Counter-clockwise triangles (u to the right, v up), indices into `points`.
+    /// Counter-clockwise triangles (u to the right, v up), indices into `points`: first the
+    /// band along the loops, then two per grid cell of [`TrimMesh::strips`], run by run.
     pub triangles: Vec<[u32; 3]>,
+    /// The grid cells that lie wholly inside the region, away from every loop, as runs of
+    /// cells along a grid row. They are also in `triangles`; a renderer may draw them as strips.
+    pub strips: Vec<GridStrip>,
+}
+
+/// A run of `cells` grid cells along one row of the sampling grid. The run's bottom points are
+/// `points[bottom..=bottom + cells]` and its top points `points[top..=top + cells]`, by
+/// increasing u; the top row has the larger v.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct GridStrip {
+    /// Index of the run's first bottom point.
+    pub bottom: u32,
+    /// Index of the run's first top point.
+    pub top: u32,
+    /// Number of cells.
+    pub cells: u32,
+}
+
+impl GridStrip {
+    /// The run's cells as counter-clockwise triangles, two per cell.
+    pub fn triangles(self) -> impl Iterator<Item = [u32; 3]> {
+        (0..self.cells).flat_map(move |i| {
+            let (a, b, c, d) = (self.bottom + i, self.bottom + i + 1, self.top + i + 1, self.top + i);
+            [[a, b, c], [a, c, d]]
+        })
+    }
 }
 
 impl TrimMesh {
@@ -315,28 +343,226 @@ pub fn triangulate_with(
     let clearance = if options.clearance.is_nan() { 0.0 } else { options.clearance.clamp(0.0, 0.5) };
     let (mut vertices, mut edges) = (Vec::new(), Vec::new());
     let mut blocked = vec![false; grid.interior_count()];
+    let mut touched = vec![false; grid.cell_count()];
     for l in &loops {
         let first = vertices.len();
         for (i, &a) in l.iter().enumerate() {
             let b = l[(i + 1) % l.len()];
-            vertices.push(point(a));
+            vertices.push(a);
             let cuts = grid.crossings(a, b);
             grid.block_near(a, b, &cuts, clearance, &mut blocked);
+            grid.touch(a, b, &cuts, &mut touched);
             if split {
-                vertices.extend(grid.thin(a, b, &cuts).map(point));
+                vertices.extend(grid.thin(a, b, &cuts));
             }
         }
         let last = vertices.len();
         edges.extend((first..last).map(|i| [i, if i + 1 == last { first } else { i + 1 }]));
     }
-    vertices.extend(grid.retained_points(&loops, &blocked).map(point));
-    let mut conflict = false;
-    let cdt = ConstrainedDelaunayTriangulation::<Point2<f64>>::try_bulk_load_cdt(vertices, edges, |_| conflict = true)
-        .map_err(|_| TrimError::Misoriented)?;
-    if conflict {
-        return Err(TrimError::Intersecting);
+    let kept = grid.retained_mask(&loops, &blocked);
+    let band = Band::new(&grid, &kept, &touched);
+    band.triangulate(&grid, &vertices, edges)
+}
+
+/// A CDT vertex: a loop (or split) point, or a grid point with its index in the mesh.
+#[derive(Clone, Copy, Debug)]
+struct BandVertex {
+    position: Point2<f64>,
+    /// `LOOP_VERTEX` for a loop point, else the grid point's index in the mesh.
+    mesh_index: u32,
+}
+
+const LOOP_VERTEX: u32 = u32::MAX;
+
+impl HasPosition for BandVertex {
+    type Scalar = f64;
+    fn position(&self) -> Point2<f64> {
+        self.position
     }
-    Ok(retained_mesh(&cdt))
+}
+
+/// The split of the retained region into grid cells wholly inside it ("clean": four retained
+/// corners, no loop in the closed cell) and the band along the loops, which alone needs a
+/// constrained triangulation. The remedy for trimmed surfaces: the interior comes from
+/// the grid, as GLU's monotone pieces meet its grid (`sampleMonoPoly.cc`).
+struct Band {
+    /// Per cell (row-major, `grid.u.len() - 1` per row): wholly inside and away from the loops.
+    clean: Vec<bool>,
+    /// Per interior grid point: its index in the mesh, or `u32::MAX` when not retained.
+    mesh_index: Vec<u32>,
+    /// The retained grid points, row by row: the mesh's first points.
+    grid_points: Vec<P>,
+}
+
+impl Band {
+    fn new(grid: &Grid, kept: &[bool], touched: &[bool]) -> Self {
+        let (nu, nv) = (grid.u.len(), grid.v.len());
+        let cols = nu.saturating_sub(2);
+        let mut mesh_index = vec![u32::MAX; kept.len()];
+        let mut grid_points = Vec::new();
+        for (k, _) in kept.iter().enumerate().filter(|(_, &keep)| keep) {
+            mesh_index[k] = grid_points.len() as u32;
+            grid_points.push([grid.u[k % cols + 1], grid.v[k / cols + 1]]);
+        }
+        let mut clean = vec![false; touched.len()];
+        for cj in 1..nv.saturating_sub(2) {
+            for ci in 1..nu.saturating_sub(2) {
+                let corner = |i: usize, j: usize| kept[(j - 1) * cols + (i - 1)];
+                let cell = cj * (nu - 1) + ci;
+                clean[cell] = !touched[cell]
+                    && corner(ci, cj)
+                    && corner(ci + 1, cj)
+                    && corner(ci, cj + 1)
+                    && corner(ci + 1, cj + 1);
+            }
+        }
+        Self { clean, mesh_index, grid_points }
+    }
+
+    fn is_clean(&self, grid: &Grid, ci: usize, cj: usize) -> bool {
+        self.clean[cj * (grid.u.len() - 1) + ci]
+    }
+
+    /// Triangulates the band (the loops' points and edges, the retained grid points next to a
+    /// band cell, the clean region's outline as constraints) and appends the clean cells.
+    fn triangulate(
+        mut self,
+        grid: &Grid,
+        loop_points: &[P],
+        mut edges: Vec<[usize; 2]>,
+    ) -> Result<TrimMesh, TrimError> {
+        let (nu, nv) = (grid.u.len(), grid.v.len());
+        let cols = nu.saturating_sub(2);
+        let mut vertices: Vec<BandVertex> =
+            loop_points.iter().map(|&p| BandVertex { position: point(p), mesh_index: LOOP_VERTEX }).collect();
+        // Grid points with a band cell among their four cells; their CDT index per grid point.
+        let mut cdt_index = vec![u32::MAX; self.mesh_index.len()];
+        for (k, &m) in self.mesh_index.iter().enumerate() {
+            let (i, j) = (k % cols + 1, k / cols + 1);
+            let all_clean =
+                [(i - 1, j - 1), (i, j - 1), (i - 1, j), (i, j)].iter().all(|&(ci, cj)| self.is_clean(grid, ci, cj));
+            if m != u32::MAX && !all_clean {
+                cdt_index[k] = vertices.len() as u32;
+                vertices.push(BandVertex { position: point(self.grid_points[m as usize]), mesh_index: m });
+            }
+        }
+        // The clean region's outline: cell sides between a clean cell and a band cell.
+        let at = |i: usize, j: usize| cdt_index[(j - 1) * cols + (i - 1)] as usize;
+        for cj in 1..nv.saturating_sub(2) {
+            for ci in 1..nu.saturating_sub(2) {
+                if !self.is_clean(grid, ci, cj) {
+                    continue;
+                }
+                if !self.is_clean(grid, ci, cj - 1) {
+                    edges.push([at(ci, cj), at(ci + 1, cj)]);
+                }
+                if !self.is_clean(grid, ci, cj + 1) {
+                    edges.push([at(ci, cj + 1), at(ci + 1, cj + 1)]);
+                }
+                if !self.is_clean(grid, ci - 1, cj) {
+                    edges.push([at(ci, cj), at(ci, cj + 1)]);
+                }
+                if !self.is_clean(grid, ci + 1, cj) {
+                    edges.push([at(ci + 1, cj), at(ci + 1, cj + 1)]);
+                }
+            }
+        }
+        let mut conflict = false;
+        let cdt =
+            ConstrainedDelaunayTriangulation::<BandVertex>::try_bulk_load_cdt(vertices, edges, |_| conflict = true)
+                .map_err(|_| TrimError::Misoriented)?;
+        if conflict {
+            return Err(TrimError::Intersecting);
+        }
+        let clean_cells = self.clean.iter().filter(|&&c| c).count();
+        let mut mesh = TrimMesh {
+            points: std::mem::take(&mut self.grid_points),
+            triangles: Vec::with_capacity(cdt.num_inner_faces() + 2 * clean_cells),
+            strips: Vec::new(),
+        };
+        self.band_triangles(grid, &cdt, &mut mesh);
+        self.append_strips(grid, &mut mesh);
+        Ok(mesh)
+    }
+
+    /// The retained band triangles of the CDT: a flood fill from the outer face, toggling parity
+    /// at every loop edge (not at the clean outline); odd parity is inside an odd number of
+    /// loops. Triangles inside clean cells are left to [`Band::append_strips`].
+    fn band_triangles(&self, grid: &Grid, cdt: &ConstrainedDelaunayTriangulation<BandVertex>, mesh: &mut TrimMesh) {
+        let is_loop_edge = |e: DirectedEdgeHandle<'_, BandVertex, (), CdtEdge<()>, ()>| {
+            e.is_constraint_edge()
+                && e.from().data().mesh_index == LOOP_VERTEX
+                && e.to().data().mesh_index == LOOP_VERTEX
+        };
+        let mut parity: Vec<Option<bool>> = vec![None; cdt.num_all_faces()];
+        let mut stack = Vec::new();
+        for e in cdt.convex_hull() {
+            // Whichever side of a hull edge is not the outer face.
+            if let Some(f) = e.face().as_inner().or_else(|| e.rev().face().as_inner()) {
+                if parity[f.fix().index()].is_none() {
+                    parity[f.fix().index()] = Some(is_loop_edge(e));
+                    stack.push(f);
+                }
+            }
+        }
+        while let Some(f) = stack.pop() {
+            let p = parity[f.fix().index()].unwrap_or(false);
+            for e in f.adjacent_edges() {
+                if let Some(g) = e.rev().face().as_inner() {
+                    if parity[g.fix().index()].is_none() {
+                        parity[g.fix().index()] = Some(p ^ is_loop_edge(e));
+                        stack.push(g);
+                    }
+                }
+            }
+        }
+        let mut loop_index = vec![u32::MAX; cdt.num_vertices()];
+        for f in cdt.inner_faces().filter(|f| parity[f.fix().index()] == Some(true)) {
+            let [a, b, c] = f.positions();
+            let centroid = grid.cell_coords([(a.x + b.x + c.x) / 3.0, (a.y + b.y + c.y) / 3.0]);
+            let (ci, cj) = (centroid[0].floor() as usize, centroid[1].floor() as usize);
+            if ci < grid.u.len() - 1 && cj < grid.v.len() - 1 && self.is_clean(grid, ci, cj) {
+                continue;
+            }
+            let tri = f.vertices().map(|v| {
+                let data = v.data();
+                if data.mesh_index != LOOP_VERTEX {
+                    return data.mesh_index;
+                }
+                let slot = &mut loop_index[v.fix().index()];
+                if *slot == u32::MAX {
+                    *slot = mesh.points.len() as u32;
+                    mesh.points.push([data.position.x, data.position.y]);
+                }
+                *slot
+            });
+            mesh.triangles.push(tri);
+        }
+    }
+
+    /// The clean cells as runs along grid rows, and their triangles.
+    fn append_strips(&self, grid: &Grid, mesh: &mut TrimMesh) {
+        let (nu, nv) = (grid.u.len(), grid.v.len());
+        let cols = nu.saturating_sub(2);
+        for cj in 1..nv.saturating_sub(2) {
+            let mut ci = 1;
+            while ci < nu.saturating_sub(2) {
+                if !self.is_clean(grid, ci, cj) {
+                    ci += 1;
+                    continue;
+                }
+                let start = ci;
+                while ci < nu - 2 && self.is_clean(grid, ci, cj) {
+                    ci += 1;
+                }
+                let index = |i: usize, j: usize| self.mesh_index[(j - 1) * cols + (i - 1)];
+                let strip =
+                    GridStrip { bottom: index(start, cj), top: index(start, cj + 1), cells: (ci - start) as u32 };
+                mesh.triangles.extend(strip.triangles());
+                mesh.strips.push(strip);
+            }
+        }
+    }
 }
 
 fn is_finite(p: P) -> bool {
@@ -554,6 +780,10 @@ struct Grid {
 /// A crossing of an edge with grid lines: edge parameter t and the point.
 type Cut = (f64, P);
 
+/// Grid points within this many cells of a loop count as on it and are always left out (a CDT
+/// vertex on a loop edge would split it), whatever the clearance.
+const ON_LOOP: f64 = 1e-9;
+
 /// Split points closer than this (in grid cells) to a neighbour on the edge are not inserted.
 const MIN_SPLIT: f64 = 0.01;
 
@@ -663,7 +893,7 @@ impl Grid {
             let cj = (mid[1].floor().max(0.0) as usize).min(nv - 2);
             for (i, j) in [(ci, cj), (ci + 1, cj), (ci, cj + 1), (ci + 1, cj + 1)] {
                 let interior = i >= 1 && i <= nu - 2 && j >= 1 && j <= nv - 2;
-                if interior && distance_to_segment([i as f64, j as f64], prev, next) < clearance {
+                if interior && distance_to_segment([i as f64, j as f64], prev, next) < clearance.max(ON_LOOP) {
                     blocked[(j - 1) * (nu - 2) + (i - 1)] = true;
                 }
             }
@@ -671,9 +901,9 @@ impl Grid {
         }
     }
 
-    /// Interior grid points inside the retained region (even-odd over all loops, row by row
-    /// with sorted crossings) and not blocked.
-    fn retained_points<'a>(&'a self, loops: &[Vec<P>], blocked: &'a [bool]) -> impl Iterator<Item = P> + 'a {
+    /// Per interior grid point (row-major): inside the retained region (even-odd over all
+    /// loops, row by row with sorted crossings) and not blocked.
+    fn retained_mask(&self, loops: &[Vec<P>], blocked: &[bool]) -> Vec<bool> {
         let (nu, nv) = (self.u.len(), self.v.len());
         let rows = &self.v[1..nv.saturating_sub(1).max(1)];
         let mut hits: Vec<(usize, f64)> = Vec::new();
@@ -690,9 +920,9 @@ impl Grid {
         }
         hits.sort_by(|x, y| x.0.cmp(&y.0).then(x.1.total_cmp(&y.1)));
         let cols = &self.u[1..nu.saturating_sub(1).max(1)];
-        let mut out = Vec::new();
+        let mut out = vec![false; blocked.len()];
         let mut k = 0;
-        for (j, &v) in rows.iter().enumerate() {
+        for j in 0..rows.len() {
             let row_start = k;
             while k < hits.len() && hits[k].0 == j {
                 k += 1;
@@ -703,12 +933,48 @@ impl Grid {
                 while left < xs.len() && xs[left].1 <= u {
                     left += 1;
                 }
-                if (xs.len() - left) % 2 == 1 && !blocked[j * cols.len() + i] {
-                    out.push([u, v]);
-                }
+                let at = j * cols.len() + i;
+                out[at] = (xs.len() - left) % 2 == 1 && !blocked[at];
             }
         }
-        out.into_iter()
+        out
+    }
+
+    /// Number of grid cells (between consecutive lines, domain bounds included).
+    fn cell_count(&self) -> usize {
+        self.u.len().saturating_sub(1).saturating_mul(self.v.len().saturating_sub(1))
+    }
+
+    /// Marks the cells edge a→b passes through or touches: between consecutive cuts the edge
+    /// lies in one closed cell, and a piece's ends and middle mark every cell whose closed box
+    /// holds them (a point on a grid line marks both sides), so no loop point lies in an
+    /// unmarked closed cell.
+    fn touch(&self, a: P, b: P, cuts: &[Cut], touched: &mut [bool]) {
+        const EPS: f64 = 1e-9;
+        let (cu, cv) = (self.u.len().saturating_sub(1), self.v.len().saturating_sub(1));
+        if cu == 0 || cv == 0 {
+            return;
+        }
+        let mut mark = |p: P| {
+            let span = |x: f64, n: usize| {
+                let lo = ((x - EPS).floor().max(0.0) as usize).min(n - 1);
+                let hi = ((x + EPS).floor().max(0.0) as usize).min(n - 1);
+                lo..=hi
+            };
+            for j in span(p[1], cv) {
+                for i in span(p[0], cu) {
+                    touched[j * cu + i] = true;
+                }
+            }
+        };
+        let mut prev = self.cell_coords(a);
+        mark(prev);
+        for q in cuts.iter().map(|c| c.1).chain([b]) {
+            let next = self.cell_coords(q);
+            mark(midpoint(prev, next));
+            mark(next);
+            prev = next;
+        }
     }
 }
 
@@ -717,49 +983,6 @@ fn distance_to_segment(p: P, a: P, b: P) -> f64 {
     let len2 = dx * dx + dy * dy;
     let t = if len2 > 0.0 { (((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / len2).clamp(0.0, 1.0) } else { 0.0 };
     (p[0] - a[0] - t * dx).hypot(p[1] - a[1] - t * dy)
-}
-
-/// The triangles on the retained side of the constraints: a flood fill from the outer face,
-/// toggling parity at every constraint edge; odd parity is inside an odd number of loops.
-/// Unused vertices are dropped.
-fn retained_mesh(cdt: &ConstrainedDelaunayTriangulation<Point2<f64>>) -> TrimMesh {
-    let mut parity: Vec<Option<bool>> = vec![None; cdt.num_all_faces()];
-    let mut stack = Vec::new();
-    for e in cdt.convex_hull() {
-        // Whichever side of a hull edge is not the outer face.
-        if let Some(f) = e.face().as_inner().or_else(|| e.rev().face().as_inner()) {
-            let p = e.as_undirected().data().is_constraint_edge();
-            if parity[f.fix().index()].is_none() {
-                parity[f.fix().index()] = Some(p);
-                stack.push(f);
-            }
-        }
-    }
-    while let Some(f) = stack.pop() {
-        let p = parity[f.fix().index()].unwrap_or(false);
-        for e in f.adjacent_edges() {
-            if let Some(g) = e.rev().face().as_inner() {
-                if parity[g.fix().index()].is_none() {
-                    parity[g.fix().index()] = Some(p ^ e.as_undirected().data().is_constraint_edge());
-                    stack.push(g);
-                }
-            }
-        }
-    }
-    let mut remap = vec![u32::MAX; cdt.num_vertices()];
-    let mut mesh = TrimMesh::default();
-    for f in cdt.inner_faces().filter(|f| parity[f.fix().index()] == Some(true)) {
-        let tri = f.vertices().map(|v| {
-            let slot = &mut remap[v.fix().index()];
-            if *slot == u32::MAX {
-                *slot = mesh.points.len() as u32;
-                mesh.points.push([v.position().x, v.position().y]);
-            }
-            *slot
-        });
-        mesh.triangles.push(tri);
-    }
-    mesh
 }
 
 #[cfg(test)]

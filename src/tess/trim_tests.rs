@@ -89,8 +89,53 @@ fn seg_distance(p: [f64; 2], a: [f64; 2], b: [f64; 2]) -> f64 {
     ((p[0] - a[0] - t * dx).powi(2) + (p[1] - a[1] - t * dy).powi(2)).sqrt()
 }
 
+/// Whether segment ab meets the closed box [lo, hi] (Liang–Barsky clipping).
+fn segment_meets_box(a: [f64; 2], b: [f64; 2], lo: [f64; 2], hi: [f64; 2]) -> bool {
+    let (mut t0, mut t1) = (0.0f64, 1.0f64);
+    for c in 0..2 {
+        let d = b[c] - a[c];
+        if d == 0.0 {
+            if a[c] < lo[c] || a[c] > hi[c] {
+                return false;
+            }
+            continue;
+        }
+        let (mut s0, mut s1) = ((lo[c] - a[c]) / d, (hi[c] - a[c]) / d);
+        if s0 > s1 {
+            std::mem::swap(&mut s0, &mut s1);
+        }
+        t0 = t0.max(s0);
+        t1 = t1.min(s1);
+    }
+    t0 <= t1
+}
+
+/// The grid strips: axis-aligned cells whose triangles end the triangle list, that no loop
+/// edge meets (touching counts); and every point is used.
+fn assert_strips_sound(mesh: &TrimMesh, loops: &[TrimLoop]) {
+    let cells: usize = mesh.strips.iter().map(|s| s.cells as usize).sum();
+    let tail: Vec<[u32; 3]> = mesh.strips.iter().flat_map(|s| s.triangles()).collect();
+    assert_eq!(&mesh.triangles[mesh.triangles.len() - 2 * cells..], &tail[..]);
+    let edges: Vec<_> = loops.iter().flat_map(loop_edges).collect();
+    for s in &mesh.strips {
+        for i in 0..s.cells {
+            let (b0, b1) = (mesh.points[(s.bottom + i) as usize], mesh.points[(s.bottom + i + 1) as usize]);
+            let (t0, t1) = (mesh.points[(s.top + i) as usize], mesh.points[(s.top + i + 1) as usize]);
+            assert!(b0[1] == b1[1] && t0[1] == t1[1] && b0[0] == t0[0] && b1[0] == t1[0], "not a grid cell");
+            assert!(b0[0] < b1[0] && b0[1] < t0[1], "not counter-clockwise");
+            for (a, b) in &edges {
+                assert!(!segment_meets_box(*a, *b, b0, t1), "loop edge {a:?}-{b:?} meets cell {b0:?}-{t1:?}");
+            }
+        }
+    }
+    let mut used = vec![false; mesh.points.len()];
+    mesh.triangles.iter().flatten().for_each(|&i| used[i as usize] = true);
+    assert!(used.iter().all(|&u| u), "unused point");
+}
+
 /// Area, orientation and containment checks shared by the tests.
 fn assert_sound(mesh: &TrimMesh, loops: &[TrimLoop], want_area: f64) {
+    assert_strips_sound(mesh, loops);
     assert!((mesh_area(mesh) - want_area).abs() < 1e-10, "area {} vs {want_area}", mesh_area(mesh));
     for t in &mesh.triangles {
         let p = tri(mesh, t);
@@ -105,6 +150,21 @@ fn no_loops_is_the_whole_domain_with_a_sampled_border() {
     let mesh = triangulate(&[], [0.0, 2.0, -1.0, 1.0], &[0.0, 0.5, 1.0, 1.5, 2.0], &[-1.0, 0.0, 1.0]).unwrap();
     assert_sound(&mesh, &[rect(0.0, 2.0, -1.0, 1.0, true)], 4.0);
     assert_eq!(mesh.points.len(), 15, "every grid point, border included");
+}
+
+#[test]
+fn cells_away_from_the_loops_come_from_the_grid() {
+    let loops = [square(0.0, 1.0, true), circle(0.5, 0.5, 0.3, 64, false)];
+    let want = 1.0 - shoelace(&loops[1].points).abs();
+    let mesh = triangulate(&loops, UNIT, &grid(100), &grid(100)).unwrap();
+    assert_sound(&mesh, &loops, want);
+    // Only the cells along the loops (the border ring and about 2πr·100 cells around the hole,
+    // with their neighbours) are left to the constrained triangulation.
+    let cells: usize = mesh.strips.iter().map(|s| s.cells as usize).sum();
+    let grid_area = cells as f64 * 1e-4;
+    assert!(grid_area > want - 0.08, "grid cells cover {grid_area} of {want}");
+    let band = mesh.triangles.len() - 2 * cells;
+    assert!(band < 1500, "{band} band triangles");
 }
 
 #[test]
