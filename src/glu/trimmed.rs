@@ -11,6 +11,7 @@ use crate::gl::consts::*;
 use crate::gl::{Gl, MapSample, MapTarget, MeshJob, MeshMode, Slot, Tessellator, Vertex};
 use crate::math::bezier::bernstein;
 use crate::tess::trim::{join_curves, triangulate, GridStrip, TrimLoop, TrimMesh};
+use crate::tess::{MapView, Row, RowKernel};
 use std::collections::BTreeMap;
 
 /// Grid lines of every patch at its sampling density, merged over the whole domain.
@@ -156,19 +157,66 @@ fn strip_pairs(strip: GridStrip) -> impl Iterator<Item = (u32, u32)> {
 /// Points evaluated per parallel task in [`evaluate_positions`].
 const POINTS_PER_TASK: usize = 4096;
 
+/// Runs of at least this many points with one v on one piece go through the row kernel.
+const MIN_KERNEL_RUN: usize = 8;
+
 /// The vertex-callback data ((x, y, z) divided by w, then u, v) of every point, `None` outside
-/// the surface. Points sharing a v (the triangulation lists its grid points row by row) share
-/// the reduction of the Bezier net along v; then each point costs one u basis and one sum.
+/// the surface. The triangulation lists its grid points row by row: a run of points sharing a
+/// v and a Bezier piece is evaluated by the row kernel (basis tables, vectorised sums); the
+/// loop points one by one.
 fn evaluate_positions(pos: &SurfacePatches, k: usize, points: &[[f64; 2]]) -> Vec<Option<[f32; 5]>> {
     use rayon::prelude::*;
     let mut out = vec![None; points.len()];
     out.par_chunks_mut(POINTS_PER_TASK).zip(points.par_chunks(POINTS_PER_TASK)).for_each(|(out, points)| {
-        let mut rows = RowCache::default();
-        for (o, &[u, v]) in out.iter_mut().zip(points) {
-            *o = rows.eval(pos, k, u, v);
+        let mut single = RowCache::default();
+        let mut row = Row::default();
+        let mut start = 0;
+        while start < points.len() {
+            let piece =
+                |p: &[f64; 2]| Some((locate(&pos.patches.uintervals, p[0])?, locate(&pos.patches.vintervals, p[1])?));
+            let key = (points[start][1].to_bits(), piece(&points[start]));
+            let len = points[start..].iter().take_while(|p| (p[1].to_bits(), piece(p)) == key).count().max(1);
+            let run = &points[start..start + len];
+            let done = match key.1 {
+                Some((a, b)) if len >= MIN_KERNEL_RUN => {
+                    eval_run(pos, k, (a, b), run, &mut row, &mut out[start..start + len])
+                }
+                _ => false,
+            };
+            if !done {
+                for (o, &[u, v]) in out[start..start + len].iter_mut().zip(run) {
+                    *o = single.eval(pos, k, u, v);
+                }
+            }
+            start += len;
         }
     });
     out
+}
+
+/// Points of one v on Bezier piece (a, b) through the row kernel; false if it has none.
+fn eval_run(
+    pos: &SurfacePatches,
+    k: usize,
+    (a, b): (usize, usize),
+    run: &[[f64; 2]],
+    row: &mut Row<f64>,
+    out: &mut [Option<[f32; 5]>],
+) -> bool {
+    let p = &pos.patches;
+    let ((ua, ub), (va, vb)) = (p.uintervals[a], p.vintervals[b]);
+    let Some(points) = p.patch(a, b) else { return false };
+    let su: Vec<f64> = run.iter().map(|q| (q[0] - ua) / (ub - ua)).collect();
+    let sv = [(run[0][1] - va) / (vb - va)];
+    let view = MapView { dim: p.dim, uorder: p.uorder, vorder: p.vorder, points };
+    let Some(kernel) = RowKernel::new(view, &su, &sv, false) else { return false };
+    kernel.eval_row(0, row);
+    let [x, y, z, w] = &row.point;
+    for (i, (o, q)) in out.iter_mut().zip(run).enumerate() {
+        let w = if k == 4 { w[i] } else { 1.0 };
+        *o = Some([(x[i] / w) as f32, (y[i] / w) as f32, (z[i] / w) as f32, q[0] as f32, q[1] as f32]);
+    }
+    true
 }
 
 /// The net of one Bezier piece reduced along v at one v, reused while consecutive points share
