@@ -223,3 +223,140 @@ fn fast_tessellator_path_issues_what_the_general_path_issues() {
         assert_eq!(trace_surface(step, true, true), general, "step {step}: _DATA forms, general path");
     }
 }
+
+/// The primitives one tessellation issued: type and vertex data.
+type Primitives = Rc<RefCell<Vec<(u32, Vec<[f32; 5]>)>>>;
+
+/// A rational bicubic NURBS (the surface net with weights) trimmed by the domain's border and
+/// a heptagonal hole, in tessellator mode at `step`; `unused_color` as in [`trace_surface`].
+fn trimmed_primitives(step: f32, hole: &[[f32; 2]], unused_color: bool) -> Vec<(u32, Vec<[f32; 5]>)> {
+    let (knots, ctl) = surface_net();
+    let net: Vec<f32> = ctl
+        .chunks_exact(3)
+        .enumerate()
+        .flat_map(|(k, p)| {
+            let w = 1.0 + 0.5 * (k % 3) as f32;
+            [p[0] * w, p[1] * w, p[2] * w, w]
+        })
+        .collect();
+    let mut gl = Gl::new(8, 8);
+    let n = gl.glu_new_nurbs_renderer();
+    gl.glu_nurbs_property(n, GLU_NURBS_MODE, GLU_NURBS_TESSELLATOR as f32);
+    gl.glu_nurbs_property(n, GLU_SAMPLING_METHOD, GLU_DOMAIN_DISTANCE as f32);
+    gl.glu_nurbs_property(n, GLU_U_STEP, step);
+    gl.glu_nurbs_property(n, GLU_V_STEP, step);
+    let prims: Primitives = Rc::default();
+    let (b, v) = (Rc::clone(&prims), Rc::clone(&prims));
+    gl.glu_nurbs_callback(
+        n,
+        GLU_NURBS_BEGIN,
+        Some(NurbsCallback::begin(move |p| b.borrow_mut().push((p, Vec::new())))),
+    );
+    gl.glu_nurbs_callback(
+        n,
+        GLU_NURBS_VERTEX,
+        Some(NurbsCallback::vertex(move |x| {
+            if let Some(last) = v.borrow_mut().last_mut() {
+                last.1.push([x[0], x[1], x[2], x[3], x[4]]);
+            }
+        })),
+    );
+    if unused_color {
+        gl.glu_nurbs_callback(n, GLU_NURBS_COLOR, Some(NurbsCallback::color(|_| panic!("no colour map"))));
+    }
+    let border = [3.0f32, 3.0, 10.0, 3.0, 10.0, 10.0, 3.0, 10.0, 3.0, 3.0];
+    let hole_closed: Vec<f32> = hole.iter().chain(&hole[..1]).flat_map(|p| *p).collect();
+    gl.glu_begin_surface(n);
+    gl.glu_nurbs_surface(n, 14, &knots, 14, &knots, 40, 4, &net, 4, 4, GL_MAP2_VERTEX_4);
+    gl.glu_begin_trim(n);
+    gl.glu_pwl_curve(n, 5, &border, 2, GLU_MAP1_TRIM_2);
+    gl.glu_end_trim(n);
+    gl.glu_begin_trim(n);
+    gl.glu_pwl_curve(n, hole.len() as i32 + 1, &hole_closed, 2, GLU_MAP1_TRIM_2);
+    gl.glu_end_trim(n);
+    gl.glu_end_surface(n);
+    let out = prims.borrow().clone();
+    out
+}
+
+/// Trimmed tessellation, checked against independent truths: every vertex on the rational
+/// surface (f64 oracle), every triangle counter-clockwise in (u, v) and outside the hole, and
+/// the triangles' (u, v) area equal to the domain's minus the hole's (shoelace). The fast and
+/// the general callback paths issue the same primitives.
+#[test]
+fn trimmed_tessellation_covers_the_retained_region_on_the_surface() {
+    let (knots, ctl) = surface_net();
+    let weighted: Vec<f64> = ctl
+        .chunks_exact(3)
+        .enumerate()
+        .flat_map(|(k, p)| {
+            let w = 1.0 + 0.5 * (k % 3) as f64;
+            [f64::from(p[0]) * w, f64::from(p[1]) * w, f64::from(p[2]) * w, w]
+        })
+        .collect();
+    let k64: Vec<f64> = knots.iter().map(|&k| f64::from(k)).collect();
+    let oracle = BSplineSurface::try_new(4, 4, 4, KnotVector::new(k64.clone()), KnotVector::new(k64), weighted)
+        .expect("valid surface");
+    // A clockwise heptagon (a hole) around (6.5, 6.2).
+    let hole: Vec<[f32; 2]> = (0..7)
+        .map(|i| {
+            let a = -std::f32::consts::TAU * i as f32 / 7.0;
+            [6.5 + 2.1 * a.cos(), 6.2 + 1.7 * a.sin()]
+        })
+        .collect();
+    let hole64: Vec<[f64; 2]> = hole.iter().map(|p| [f64::from(p[0]), f64::from(p[1])]).collect();
+    let shoelace: f64 = 0.5
+        * (0..7).map(|i| hole64[i][0] * hole64[(i + 1) % 7][1] - hole64[(i + 1) % 7][0] * hole64[i][1]).sum::<f64>();
+    let inside_hole = |p: [f64; 2]| {
+        let mut odd = false;
+        for i in 0..7 {
+            let (a, b) = (hole64[i], hole64[(i + 1) % 7]);
+            if (a[1] > p[1]) != (b[1] > p[1]) && p[0] < a[0] + (p[1] - a[1]) / (b[1] - a[1]) * (b[0] - a[0]) {
+                odd = !odd;
+            }
+        }
+        odd
+    };
+    for step in [4.0, 20.0] {
+        let prims = trimmed_primitives(step, &hole, false);
+        assert_eq!(prims, trimmed_primitives(step, &hole, true), "step {step}: fast vs general path");
+        let mut triangles: Vec<[[f32; 5]; 3]> = Vec::new();
+        for (prim, v) in &prims {
+            match *prim {
+                GL_TRIANGLES => {
+                    assert_eq!(v.len() % 3, 0);
+                    triangles.extend(v.chunks_exact(3).map(|t| [t[0], t[1], t[2]]));
+                }
+                GL_QUAD_STRIP => {
+                    assert!(v.len() >= 4 && v.len() % 2 == 0);
+                    for q in v.windows(4).step_by(2) {
+                        triangles.push([q[0], q[1], q[3]]);
+                        triangles.push([q[0], q[3], q[2]]);
+                    }
+                }
+                other => panic!("unexpected primitive {other}"),
+            }
+        }
+        let mut worst = 0.0f64;
+        let mut area = 0.0;
+        for t in &triangles {
+            for x in t {
+                let (u, v) = (f64::from(x[3]), f64::from(x[4]));
+                let p = oracle.eval(u, v).expect("(u, v) inside the domain");
+                worst = worst.max((0..3).map(|c| (p[c] / p[3] - f64::from(x[c])).abs()).fold(0.0, f64::max));
+            }
+            let uv = t.map(|x| [f64::from(x[3]), f64::from(x[4])]);
+            let a =
+                0.5 * ((uv[1][0] - uv[0][0]) * (uv[2][1] - uv[0][1]) - (uv[2][0] - uv[0][0]) * (uv[1][1] - uv[0][1]));
+            assert!(a > -1e-9, "step {step}: clockwise triangle {uv:?}");
+            let c = [(uv[0][0] + uv[1][0] + uv[2][0]) / 3.0, (uv[0][1] + uv[1][1] + uv[2][1]) / 3.0];
+            assert!(!inside_hole(c), "step {step}: triangle {uv:?} inside the hole");
+            area += a;
+        }
+        let want = 49.0 - shoelace.abs();
+        assert!(worst < 1e-5, "step {step}: a vertex is {worst} off the surface");
+        assert!((area - want).abs() < 1e-4, "step {step}: area {area} vs {want}");
+        let quads = prims.iter().filter(|p| p.0 == GL_QUAD_STRIP).count();
+        assert!(quads > 0, "step {step}: the interior comes as quad strips");
+    }
+}
