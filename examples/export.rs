@@ -63,7 +63,7 @@ fn trimmed_mesh() -> Result<Mesh, Box<dyn Error>> {
         mesh.normals.push(if len > 0.0 { n.map(|c| (c / len) as f32) } else { [0.0; 3] });
         mesh.tex_coords.push([u as f32, v as f32]);
     }
-    mesh.indices = region.triangles.iter().flatten().copied().collect();
+    mesh.indices = region.triangles().flatten().collect();
     Ok(mesh)
 }
 

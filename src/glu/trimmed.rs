@@ -79,14 +79,14 @@ pub(crate) fn draw_trimmed(
         gl.polygon_mode(GL_FRONT_AND_BACK, GL_FILL);
     }
     if gl.tessellator() == Tessellator::Gpu && obj.props.display_mode == GLU_FILL && gl.gpu_draws(MeshMode::Triangles) {
-        record_on_gpu(gl, surface, &mesh.points, &mesh.triangles);
+        record_on_gpu(gl, surface, &mesh.points, mesh.triangles());
         return gl.restore_polygon_mode(saved_mode);
     }
     // Each point evaluated once; the triangles issue the shared vertices.
     let vertices: Vec<Option<Vertex>> = mesh.points.iter().map(|&[u, v]| trimmed_vertex(gl, surface, u, v)).collect();
     gl.begin(GL_TRIANGLES);
-    for tri in &mesh.triangles {
-        for &i in tri {
+    for tri in mesh.triangles() {
+        for i in tri {
             if let Some(vertex) = vertices[i as usize] {
                 gl.emit_vertex(vertex);
             }
@@ -101,8 +101,7 @@ pub(crate) fn draw_trimmed(
 /// `GL_QUAD_STRIP` per run of cells, as GLU issues its grid blocks.
 fn tessellate_trimmed(obj: &mut NurbsObject, surface: &Surface, mesh: &TrimMesh) {
     let data = evaluate_positions(&surface.pos, surface.k, &mesh.points);
-    let grid_cells: usize = mesh.strips.iter().map(|s| s.cells as usize).sum();
-    let band = &mesh.triangles[..mesh.triangles.len() - 2 * grid_cells];
+    let band = &mesh.band;
     if let Some(mut sinks) = obj.callbacks.sinks() {
         if !band.is_empty() {
             sinks.begin(GL_TRIANGLES);
@@ -265,7 +264,7 @@ impl RowCache {
 /// The GPU tessellator's trimmed surface: the triangulation's (u, v) points grouped by the
 /// Bezier piece they lie on, one scattered job per piece (its control points and the points'
 /// parameters normalised to it), drawn as GL_TRIANGLES over the triangulation.
-fn record_on_gpu(gl: &mut Gl, surface: &Surface, points: &[[f64; 2]], triangles: &[[u32; 3]]) {
+fn record_on_gpu(gl: &mut Gl, surface: &Surface, points: &[[f64; 2]], triangles: impl Iterator<Item = [u32; 3]>) {
     let p = &surface.pos.patches;
     let mut pieces: BTreeMap<(usize, usize), Vec<usize>> = BTreeMap::new();
     for (k, &[u, v]) in points.iter().enumerate() {
@@ -298,7 +297,7 @@ fn record_on_gpu(gl: &mut Gl, surface: &Surface, points: &[[f64; 2]], triangles:
         let nu = members.len();
         jobs.push(MeshJob { maps, auto_normal: gl.eval.auto_normal, template, nu, nv: 1, scattered: true });
     }
-    let triangles = triangles.iter().flat_map(|t| t.map(|i| renumbered[i as usize])).collect();
+    let triangles = triangles.flat_map(|t| t.map(|i| renumbered[i as usize])).collect();
     gl.record_scattered_mesh(jobs, triangles);
 }
 

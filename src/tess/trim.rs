@@ -16,10 +16,13 @@
 //!
 //! This module checks the loops the way GLU does (curves joined head to tail within 1e-5, no
 //! self-intersections, no crossings, orientation matching the nesting depth) and triangulates the
-//! retained region: a constrained Delaunay triangulation (`spade`) of the loop polylines (as
-//! constraint edges) and of the sampling grid's interior points, keeping the triangles on the
-//! retained side of the constraints. The result is a mesh in (u, v) at whose points the surface
-//! is then evaluated. Nothing here knows about GL.
+//! retained region. Grid cells wholly inside the region and clear of every loop are taken as
+//! they are (two triangles each, listed as [`GridStrip`]s); only the band of cells along the
+//! loops goes through a constrained Delaunay triangulation (`spade`) of the loop polylines (as
+//! constraint edges), the grid points there and the outline of the grid cells, keeping the
+//! triangles on the retained side of the loops. A loop running round the domain's border is the
+//! domain itself: the grid reaches the border and makes no band there. The result is a mesh in
+//! (u, v) at whose points the surface is then evaluated. Nothing here knows about GL.
 //!
 //! GLU itself (`subdivider.cc`, `slicer.cc`, `sampleMonoPoly.cc`) splits the region into monotone
 //! pieces and stitches them to its uniform grid; the triangles differ, the covered region and
@@ -107,14 +110,15 @@ impl std::error::Error for TrimError {}
 /// A triangulated region of the parameter domain.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct TrimMesh {
-    /// Vertices in (u, v): the retained interior grid points row by row (v outer, u inner), then
-    /// the loop points (and any split points). Every vertex is used by at least one triangle.
+    /// Vertices in (u, v): the retained grid points row by row (v outer, u inner), then the loop
+    /// points (and any split points). Grid points on the domain's border are among them when
+    /// the border is the outer loop (or there are no loops). Every vertex is used by a triangle.
     pub points: Vec<[f64; 2]>,
-    /// Counter-clockwise triangles (u to the right, v up), indices into `points`: first the
-    /// band along the loops, then two per grid cell of [`TrimMesh::strips`], run by run.
-    pub triangles: Vec<[u32; 3]>,
+    /// The band along the loops as counter-clockwise triangles (u to the right, v up), indices
+    /// into `points`. [`TrimMesh::triangles`] adds the strips' cells.
+    pub band: Vec<[u32; 3]>,
     /// The grid cells that lie wholly inside the region, away from every loop, as runs of
-    /// cells along a grid row. They are also in `triangles`; a renderer may draw them as strips.
+    /// cells along a grid row (two triangles per cell, or a quad strip per run).
     pub strips: Vec<GridStrip>,
 }
 
@@ -142,11 +146,23 @@ impl GridStrip {
 }
 
 impl TrimMesh {
+    /// Every triangle, counter-clockwise: the band's, then two per cell of the strips, run by
+    /// run.
+    pub fn triangles(&self) -> impl Iterator<Item = [u32; 3]> + '_ {
+        self.band.iter().copied().chain(self.strips.iter().flat_map(|s| s.triangles()))
+    }
+
+    /// The number of triangles [`TrimMesh::triangles`] yields.
+    #[must_use]
+    pub fn triangle_count(&self) -> usize {
+        self.band.len() + self.strips.iter().map(|s| 2 * s.cells as usize).sum::<usize>()
+    }
+
     /// The total area of the triangles in (u, v).
     #[must_use]
     pub fn area(&self) -> f64 {
         let at = |i: u32| self.points.get(i as usize).copied().unwrap_or([0.0; 2]);
-        self.triangles.iter().map(|t| 0.5 * orient(at(t[0]), at(t[1]), at(t[2]))).sum()
+        self.triangles().map(|t| 0.5 * orient(at(t[0]), at(t[1]), at(t[2]))).sum()
     }
 }
 
@@ -163,7 +179,7 @@ pub struct TrimOptions {
     /// lines. The border loop made when there are no loops is always split (GLU tessellates
     /// its border arcs at the sampling step).
     pub split_at_grid_lines: bool,
-    /// Budget for interior grid points plus split points. While it is exceeded, every other
+    /// Budget for grid points plus split points. While it is exceeded, every other
     /// grid line is dropped (in u and in v), so absurd sampling cannot exhaust memory.
     pub max_points: usize,
 }
@@ -299,12 +315,15 @@ pub fn triangulate(loops: &[TrimLoop], domain: [f64; 4], us: &[f64], vs: &[f64])
 ///
 /// `us` and `vs` are the sampling grid lines (any order; duplicates, lines outside the open
 /// domain and non-finite values are ignored). The grid points strictly inside the retained region
-/// and not within `options.clearance` grid cells of a loop are inserted, the loop edges are
-/// constraint edges, and the triangles of the constrained Delaunay triangulation that lie to the
-/// left of the loops are returned, counter-clockwise.
+/// and not within `options.clearance` grid cells of a loop are used. Cells with four such
+/// corners and no loop in them become two triangles each ([`TrimMesh::strips`]); the rest, the
+/// band along the loops, is a constrained Delaunay triangulation with the loop edges and the
+/// cells' outline as constraint edges, of which the triangles to the left of the loops are
+/// kept. All triangles are counter-clockwise.
 ///
 /// No loops means the whole domain (GLU's `makeBorderTrim`): a counter-clockwise border with a
-/// vertex on every grid line.
+/// vertex on every grid line. So does a loop running once counter-clockwise round the domain's
+/// border (every point on it): the grid points on the border lines are then used.
 ///
 /// Errors (GLU's rules; the checks run in this order):
 /// - the domain is not finite or empty (umin ≥ umax or vmin ≥ vmax) → [`TrimError::Misoriented`];
@@ -329,20 +348,25 @@ pub fn triangulate_with(
     if !domain.iter().all(|c| c.is_finite() && c.abs() <= spade::MAX_ALLOWED_VALUE) || u0 >= u1 || v0 >= v1 {
         return Err(TrimError::Misoriented);
     }
-    let mut split = options.split_at_grid_lines;
-    let loops: Vec<Vec<P>> = if loops.is_empty() {
-        split = true;
-        vec![vec![[u0, v0], [u1, v0], [u1, v1], [u0, v1]]]
-    } else {
-        loops.iter().map(clean_loop).collect::<Result<_, _>>()?
+    let split = options.split_at_grid_lines;
+    let mut loops: Vec<Vec<P>> = loops.iter().map(clean_loop).collect::<Result<_, _>>()?;
+    if !loops.is_empty() {
+        validate(&loops, domain)?;
+    }
+    // No loops, or one running round the domain's border (GLU's `makeBorderTrim`, and what most
+    // programs pass as their outer loop): the grid's border lines carry grid points and the
+    // region starts inside; only the other loops make a band.
+    let inside_domain = loops.is_empty() || {
+        let before = loops.len();
+        loops.retain(|l| !is_domain_border(l, domain));
+        loops.len() < before
     };
-    validate(&loops, domain)?;
     let mut grid = Grid { u: grid_lines(us, u0, u1), v: grid_lines(vs, v0, v1) };
-    let budget = |g: &Grid| g.interior_count().saturating_add(if split { g.count_crossings(&loops) } else { 0 });
+    let budget = |g: &Grid| g.point_count().saturating_add(if split { g.count_crossings(&loops) } else { 0 });
     while budget(&grid) > options.max_points && grid.coarsen() {}
     let clearance = if options.clearance.is_nan() { 0.0 } else { options.clearance.clamp(0.0, 0.5) };
     let (mut vertices, mut edges) = (Vec::new(), Vec::new());
-    let mut blocked = vec![false; grid.interior_count()];
+    let mut blocked = vec![false; grid.point_count()];
     let mut touched = vec![false; grid.cell_count()];
     for l in &loops {
         let first = vertices.len();
@@ -359,8 +383,8 @@ pub fn triangulate_with(
         let last = vertices.len();
         edges.extend((first..last).map(|i| [i, if i + 1 == last { first } else { i + 1 }]));
     }
-    let kept = grid.retained_mask(&loops, &blocked);
-    let band = Band::new(&grid, &kept, &touched);
+    let kept = grid.retained_mask(&loops, &blocked, inside_domain);
+    let band = Band::new(&grid, &kept, &touched, inside_domain);
     band.triangulate(&grid, &vertices, edges)
 }
 
@@ -388,26 +412,27 @@ impl HasPosition for BandVertex {
 struct Band {
     /// Per cell (row-major, `grid.u.len() - 1` per row): wholly inside and away from the loops.
     clean: Vec<bool>,
-    /// Per interior grid point: its index in the mesh, or `u32::MAX` when not retained.
+    /// Per grid point (row-major): its index in the mesh, or `u32::MAX` when not retained.
     mesh_index: Vec<u32>,
     /// The retained grid points, row by row: the mesh's first points.
     grid_points: Vec<P>,
+    /// The region starts inside (the domain's border is the outer loop, or there are no loops).
+    inside_domain: bool,
 }
 
 impl Band {
-    fn new(grid: &Grid, kept: &[bool], touched: &[bool]) -> Self {
+    fn new(grid: &Grid, kept: &[bool], touched: &[bool], inside_domain: bool) -> Self {
         let (nu, nv) = (grid.u.len(), grid.v.len());
-        let cols = nu.saturating_sub(2);
         let mut mesh_index = vec![u32::MAX; kept.len()];
         let mut grid_points = Vec::new();
         for (k, _) in kept.iter().enumerate().filter(|(_, &keep)| keep) {
             mesh_index[k] = grid_points.len() as u32;
-            grid_points.push([grid.u[k % cols + 1], grid.v[k / cols + 1]]);
+            grid_points.push([grid.u[k % nu], grid.v[k / nu]]);
         }
         let mut clean = vec![false; touched.len()];
-        for cj in 1..nv.saturating_sub(2) {
-            for ci in 1..nu.saturating_sub(2) {
-                let corner = |i: usize, j: usize| kept[(j - 1) * cols + (i - 1)];
+        for cj in 0..nv.saturating_sub(1) {
+            for ci in 0..nu.saturating_sub(1) {
+                let corner = |i: usize, j: usize| kept[j * nu + i];
                 let cell = cj * (nu - 1) + ci;
                 clean[cell] = !touched[cell]
                     && corner(ci, cj)
@@ -416,11 +441,17 @@ impl Band {
                     && corner(ci + 1, cj + 1);
             }
         }
-        Self { clean, mesh_index, grid_points }
+        Self { clean, mesh_index, grid_points, inside_domain }
     }
 
+    /// Whether cell (ci, cj) exists and is clean.
     fn is_clean(&self, grid: &Grid, ci: usize, cj: usize) -> bool {
-        self.clean[cj * (grid.u.len() - 1) + ci]
+        ci < grid.u.len() - 1 && cj < grid.v.len() - 1 && self.clean[cj * (grid.u.len() - 1) + ci]
+    }
+
+    /// Whether cell (ci, cj) exists and is not clean (a band cell).
+    fn is_band(&self, grid: &Grid, ci: usize, cj: usize) -> bool {
+        ci < grid.u.len() - 1 && cj < grid.v.len() - 1 && !self.clean[cj * (grid.u.len() - 1) + ci]
     }
 
     /// Triangulates the band (the loops' points and edges, the retained grid points next to a
@@ -432,55 +463,57 @@ impl Band {
         mut edges: Vec<[usize; 2]>,
     ) -> Result<TrimMesh, TrimError> {
         let (nu, nv) = (grid.u.len(), grid.v.len());
-        let cols = nu.saturating_sub(2);
         let mut vertices: Vec<BandVertex> =
             loop_points.iter().map(|&p| BandVertex { position: point(p), mesh_index: LOOP_VERTEX }).collect();
-        // Grid points with a band cell among their four cells; their CDT index per grid point.
+        // Grid points with a band cell among their cells; their CDT index per grid point. The
+        // cells round point (i, j) are (i - 1, j - 1) to (i, j); wrapping makes missing ones
+        // out of range.
         let mut cdt_index = vec![u32::MAX; self.mesh_index.len()];
         for (k, &m) in self.mesh_index.iter().enumerate() {
-            let (i, j) = (k % cols + 1, k / cols + 1);
-            let all_clean =
-                [(i - 1, j - 1), (i, j - 1), (i - 1, j), (i, j)].iter().all(|&(ci, cj)| self.is_clean(grid, ci, cj));
-            if m != u32::MAX && !all_clean {
+            let (i, j) = (k % nu, k / nu);
+            let (l, d) = (i.wrapping_sub(1), j.wrapping_sub(1));
+            let next_to_band = [(l, d), (i, d), (l, j), (i, j)].iter().any(|&(ci, cj)| self.is_band(grid, ci, cj));
+            if m != u32::MAX && next_to_band {
                 cdt_index[k] = vertices.len() as u32;
                 vertices.push(BandVertex { position: point(self.grid_points[m as usize]), mesh_index: m });
             }
         }
         // The clean region's outline: cell sides between a clean cell and a band cell.
-        let at = |i: usize, j: usize| cdt_index[(j - 1) * cols + (i - 1)] as usize;
-        for cj in 1..nv.saturating_sub(2) {
-            for ci in 1..nu.saturating_sub(2) {
+        let at = |i: usize, j: usize| cdt_index[j * nu + i] as usize;
+        for cj in 0..nv.saturating_sub(1) {
+            for ci in 0..nu.saturating_sub(1) {
                 if !self.is_clean(grid, ci, cj) {
                     continue;
                 }
-                if !self.is_clean(grid, ci, cj - 1) {
+                if self.is_band(grid, ci, cj.wrapping_sub(1)) {
                     edges.push([at(ci, cj), at(ci + 1, cj)]);
                 }
-                if !self.is_clean(grid, ci, cj + 1) {
+                if self.is_band(grid, ci, cj + 1) {
                     edges.push([at(ci, cj + 1), at(ci + 1, cj + 1)]);
                 }
-                if !self.is_clean(grid, ci - 1, cj) {
+                if self.is_band(grid, ci.wrapping_sub(1), cj) {
                     edges.push([at(ci, cj), at(ci, cj + 1)]);
                 }
-                if !self.is_clean(grid, ci + 1, cj) {
+                if self.is_band(grid, ci + 1, cj) {
                     edges.push([at(ci + 1, cj), at(ci + 1, cj + 1)]);
                 }
             }
         }
-        let mut conflict = false;
-        let cdt =
-            ConstrainedDelaunayTriangulation::<BandVertex>::try_bulk_load_cdt(vertices, edges, |_| conflict = true)
-                .map_err(|_| TrimError::Misoriented)?;
-        if conflict {
-            return Err(TrimError::Intersecting);
-        }
-        let clean_cells = self.clean.iter().filter(|&&c| c).count();
         let mut mesh = TrimMesh {
             points: std::mem::take(&mut self.grid_points),
-            triangles: Vec::with_capacity(cdt.num_inner_faces() + 2 * clean_cells),
+            band: Vec::with_capacity(vertices.len() * 2),
             strips: Vec::new(),
         };
-        self.band_triangles(grid, &cdt, &mut mesh);
+        if !vertices.is_empty() {
+            let mut conflict = false;
+            let cdt =
+                ConstrainedDelaunayTriangulation::<BandVertex>::try_bulk_load_cdt(vertices, edges, |_| conflict = true)
+                    .map_err(|_| TrimError::Misoriented)?;
+            if conflict {
+                return Err(TrimError::Intersecting);
+            }
+            self.band_triangles(grid, &cdt, &mut mesh);
+        }
         self.append_strips(grid, &mut mesh);
         Ok(mesh)
     }
@@ -500,7 +533,7 @@ impl Band {
             // Whichever side of a hull edge is not the outer face.
             if let Some(f) = e.face().as_inner().or_else(|| e.rev().face().as_inner()) {
                 if parity[f.fix().index()].is_none() {
-                    parity[f.fix().index()] = Some(is_loop_edge(e));
+                    parity[f.fix().index()] = Some(self.inside_domain ^ is_loop_edge(e));
                     stack.push(f);
                 }
             }
@@ -536,33 +569,41 @@ impl Band {
                 }
                 *slot
             });
-            mesh.triangles.push(tri);
+            mesh.band.push(tri);
         }
     }
 
-    /// The clean cells as runs along grid rows, and their triangles.
+    /// The clean cells as runs along grid rows.
     fn append_strips(&self, grid: &Grid, mesh: &mut TrimMesh) {
         let (nu, nv) = (grid.u.len(), grid.v.len());
-        let cols = nu.saturating_sub(2);
-        for cj in 1..nv.saturating_sub(2) {
-            let mut ci = 1;
-            while ci < nu.saturating_sub(2) {
+        for cj in 0..nv.saturating_sub(1) {
+            let mut ci = 0;
+            while ci < nu - 1 {
                 if !self.is_clean(grid, ci, cj) {
                     ci += 1;
                     continue;
                 }
                 let start = ci;
-                while ci < nu - 2 && self.is_clean(grid, ci, cj) {
+                while self.is_clean(grid, ci, cj) {
                     ci += 1;
                 }
-                let index = |i: usize, j: usize| self.mesh_index[(j - 1) * cols + (i - 1)];
+                let index = |i: usize, j: usize| self.mesh_index[j * nu + i];
                 let strip =
                     GridStrip { bottom: index(start, cj), top: index(start, cj + 1), cells: (ci - start) as u32 };
-                mesh.triangles.extend(strip.triangles());
                 mesh.strips.push(strip);
             }
         }
     }
+}
+
+/// Whether the loop runs once counter-clockwise round the domain's border: every point on the
+/// border and the loop's area the domain's.
+fn is_domain_border(l: &[P], [u0, u1, v0, v1]: [f64; 4]) -> bool {
+    let on_border = |p: &P| {
+        (p[0] == u0 || p[0] == u1) && p[1] >= v0 && p[1] <= v1 || (p[1] == v0 || p[1] == v1) && p[0] >= u0 && p[0] <= u1
+    };
+    let area = (u1 - u0) * (v1 - v0);
+    l.iter().all(on_border) && (signed_area(l) - area).abs() <= 1e-12 * area
 }
 
 fn is_finite(p: P) -> bool {
@@ -756,7 +797,7 @@ fn find_touching_edges(loops: &[Vec<P>]) -> Option<TrimError> {
 
 /// Sorted, deduplicated finite values strictly between `lo` and `hi`.
 fn sorted_lines(values: &[f64], lo: f64, hi: f64) -> Vec<f64> {
-    let mut v: Vec<f64> = values.iter().copied().filter(|x| x.is_finite() && *x > lo && *x < hi).map(flush).collect();
+    let mut v: Vec<f64> = values.iter().copied().map(flush).filter(|x| x.is_finite() && *x > lo && *x < hi).collect();
     v.sort_by(f64::total_cmp);
     v.dedup();
     v
@@ -788,8 +829,8 @@ const ON_LOOP: f64 = 1e-9;
 const MIN_SPLIT: f64 = 0.01;
 
 impl Grid {
-    fn interior_count(&self) -> usize {
-        self.u.len().saturating_sub(2).saturating_mul(self.v.len().saturating_sub(2))
+    fn point_count(&self) -> usize {
+        self.u.len().saturating_mul(self.v.len())
     }
 
     /// Drops every other interior line in both directions; false when there is nothing to drop.
@@ -877,12 +918,12 @@ impl Grid {
         })
     }
 
-    /// Marks the interior grid points within `clearance` cells of edge a→b. Between
+    /// Marks the grid points within `clearance` cells of edge a→b. Between
     /// consecutive cuts the edge lies in one grid cell, where the map to cell coordinates is
     /// affine; only that cell's corners can be closer than one cell.
     fn block_near(&self, a: P, b: P, cuts: &[Cut], clearance: f64, blocked: &mut [bool]) {
         let (nu, nv) = (self.u.len(), self.v.len());
-        if nu < 3 || nv < 3 {
+        if nu < 2 || nv < 2 {
             return;
         }
         let mut prev = self.cell_coords(a);
@@ -892,49 +933,51 @@ impl Grid {
             let ci = (mid[0].floor().max(0.0) as usize).min(nu - 2);
             let cj = (mid[1].floor().max(0.0) as usize).min(nv - 2);
             for (i, j) in [(ci, cj), (ci + 1, cj), (ci, cj + 1), (ci + 1, cj + 1)] {
-                let interior = i >= 1 && i <= nu - 2 && j >= 1 && j <= nv - 2;
-                if interior && distance_to_segment([i as f64, j as f64], prev, next) < clearance.max(ON_LOOP) {
-                    blocked[(j - 1) * (nu - 2) + (i - 1)] = true;
+                if distance_to_segment([i as f64, j as f64], prev, next) < clearance.max(ON_LOOP) {
+                    blocked[j * nu + i] = true;
                 }
             }
             prev = next;
         }
     }
 
-    /// Per interior grid point (row-major): inside the retained region (even-odd over all
-    /// loops, row by row with sorted crossings) and not blocked.
-    fn retained_mask(&self, loops: &[Vec<P>], blocked: &[bool]) -> Vec<bool> {
+    /// Per grid point (row-major, `u.len()` per row): inside the retained region (even-odd over
+    /// all loops, row by row with sorted crossings, starting inside when `inside_domain`) and
+    /// not blocked. The points on the domain's border are kept exactly when `inside_domain`.
+    fn retained_mask(&self, loops: &[Vec<P>], blocked: &[bool], inside_domain: bool) -> Vec<bool> {
         let (nu, nv) = (self.u.len(), self.v.len());
-        let rows = &self.v[1..nv.saturating_sub(1).max(1)];
         let mut hits: Vec<(usize, f64)> = Vec::new();
         for l in loops {
             for i in 0..l.len() {
                 let (a, b) = (l[i], l[(i + 1) % l.len()]);
                 // Rows with min(a.v, b.v) <= v < max(a.v, b.v): the half-open rule of `inside`.
                 let (lo, hi) = (a[1].min(b[1]), a[1].max(b[1]));
-                let (j0, j1) = (rows.partition_point(|v| *v < lo), rows.partition_point(|v| *v < hi));
-                for (j, &v) in rows.iter().enumerate().take(j1).skip(j0) {
+                let (j0, j1) = (self.v.partition_point(|v| *v < lo), self.v.partition_point(|v| *v < hi));
+                for (j, &v) in self.v.iter().enumerate().take(j1).skip(j0) {
                     hits.push((j, a[0] + (v - a[1]) / (b[1] - a[1]) * (b[0] - a[0])));
                 }
             }
         }
         hits.sort_by(|x, y| x.0.cmp(&y.0).then(x.1.total_cmp(&y.1)));
-        let cols = &self.u[1..nu.saturating_sub(1).max(1)];
         let mut out = vec![false; blocked.len()];
         let mut k = 0;
-        for j in 0..rows.len() {
+        for j in 0..nv {
             let row_start = k;
             while k < hits.len() && hits[k].0 == j {
                 k += 1;
             }
             let xs = &hits[row_start..k];
             let mut left = 0;
-            for (i, &u) in cols.iter().enumerate() {
+            for (i, &u) in self.u.iter().enumerate() {
                 while left < xs.len() && xs[left].1 <= u {
                     left += 1;
                 }
-                let at = j * cols.len() + i;
-                out[at] = (xs.len() - left) % 2 == 1 && !blocked[at];
+                let border = i == 0 || j == 0 || i == nu - 1 || j == nv - 1;
+                let odd = (xs.len() - left) % 2 == 1;
+                let at = j * nu + i;
+                // The domain's border, when it is the outer loop, keeps every grid point: the
+                // other loops lie strictly inside it (validated), and the border must be whole.
+                out[at] = if border { inside_domain } else { odd != inside_domain && !blocked[at] };
             }
         }
         out

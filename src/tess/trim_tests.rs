@@ -21,7 +21,7 @@ fn tri_area(p: [[f64; 2]; 3]) -> f64 {
 }
 
 fn mesh_area(mesh: &TrimMesh) -> f64 {
-    mesh.triangles.iter().map(|t| tri_area(tri(mesh, t))).sum()
+    mesh.triangles().map(|t| tri_area(tri(mesh, &t))).sum()
 }
 
 /// Winding number of a closed polyline around p (sum of signed angles).
@@ -77,8 +77,8 @@ fn loop_edges(l: &TrimLoop) -> Vec<([f64; 2], [f64; 2])> {
 }
 
 fn has_edge(mesh: &TrimMesh, a: [f64; 2], b: [f64; 2]) -> bool {
-    mesh.triangles.iter().any(|t| {
-        let p = tri(mesh, t);
+    mesh.triangles().any(|t| {
+        let p = tri(mesh, &t);
         (0..3).any(|k| (p[k] == a && p[(k + 1) % 3] == b) || (p[k] == b && p[(k + 1) % 3] == a))
     })
 }
@@ -110,12 +110,14 @@ fn segment_meets_box(a: [f64; 2], b: [f64; 2], lo: [f64; 2], hi: [f64; 2]) -> bo
     t0 <= t1
 }
 
-/// The grid strips: axis-aligned cells whose triangles end the triangle list, that no loop
-/// edge meets (touching counts); and every point is used.
+/// The grid strips: axis-aligned cells whose triangles follow the band's, that no loop edge
+/// meets (touching counts); and every point is used.
 fn assert_strips_sound(mesh: &TrimMesh, loops: &[TrimLoop]) {
     let cells: usize = mesh.strips.iter().map(|s| s.cells as usize).sum();
-    let tail: Vec<[u32; 3]> = mesh.strips.iter().flat_map(|s| s.triangles()).collect();
-    assert_eq!(&mesh.triangles[mesh.triangles.len() - 2 * cells..], &tail[..]);
+    let all: Vec<[u32; 3]> = mesh.triangles().collect();
+    assert_eq!(all.len(), mesh.triangle_count());
+    assert_eq!(all.len(), mesh.band.len() + 2 * cells);
+    assert_eq!(&all[..mesh.band.len()], &mesh.band[..]);
     let edges: Vec<_> = loops.iter().flat_map(loop_edges).collect();
     for s in &mesh.strips {
         for i in 0..s.cells {
@@ -124,12 +126,18 @@ fn assert_strips_sound(mesh: &TrimMesh, loops: &[TrimLoop]) {
             assert!(b0[1] == b1[1] && t0[1] == t1[1] && b0[0] == t0[0] && b1[0] == t1[0], "not a grid cell");
             assert!(b0[0] < b1[0] && b0[1] < t0[1], "not counter-clockwise");
             for (a, b) in &edges {
-                assert!(!segment_meets_box(*a, *b, b0, t1), "loop edge {a:?}-{b:?} meets cell {b0:?}-{t1:?}");
+                // Only an edge along one of the cell's sides (the domain's border) may touch it.
+                let along = |c: usize, x: f64| a[c] == x && b[c] == x;
+                let on_side = along(0, b0[0]) || along(0, b1[0]) || along(1, b0[1]) || along(1, t0[1]);
+                assert!(
+                    on_side || !segment_meets_box(*a, *b, b0, t1),
+                    "loop edge {a:?}-{b:?} meets cell {b0:?}-{t1:?}"
+                );
             }
         }
     }
     let mut used = vec![false; mesh.points.len()];
-    mesh.triangles.iter().flatten().for_each(|&i| used[i as usize] = true);
+    mesh.triangles().flatten().for_each(|i| used[i as usize] = true);
     assert!(used.iter().all(|&u| u), "unused point");
 }
 
@@ -137,8 +145,8 @@ fn assert_strips_sound(mesh: &TrimMesh, loops: &[TrimLoop]) {
 fn assert_sound(mesh: &TrimMesh, loops: &[TrimLoop], want_area: f64) {
     assert_strips_sound(mesh, loops);
     assert!((mesh_area(mesh) - want_area).abs() < 1e-10, "area {} vs {want_area}", mesh_area(mesh));
-    for t in &mesh.triangles {
-        let p = tri(mesh, t);
+    for t in mesh.triangles() {
+        let p = tri(mesh, &t);
         assert!(tri_area(p) > 0.0, "clockwise or flat triangle {p:?}");
         let c = [(p[0][0] + p[1][0] + p[2][0]) / 3.0, (p[0][1] + p[1][1] + p[2][1]) / 3.0];
         assert!(retained_by_winding(loops, c), "centroid {c:?} outside the retained region");
@@ -163,8 +171,27 @@ fn cells_away_from_the_loops_come_from_the_grid() {
     let cells: usize = mesh.strips.iter().map(|s| s.cells as usize).sum();
     let grid_area = cells as f64 * 1e-4;
     assert!(grid_area > want - 0.08, "grid cells cover {grid_area} of {want}");
-    let band = mesh.triangles.len() - 2 * cells;
-    assert!(band < 1500, "{band} band triangles");
+    assert!(mesh.band.len() < 1500, "{} band triangles", mesh.band.len());
+}
+
+/// A loop running round the domain's border (any start, extra points on the sides) is the
+/// domain itself: the grid's border points are used, the same mesh as with no outer loop at all.
+#[test]
+fn a_border_loop_is_the_domain() {
+    let hole = circle(0.5, 0.5, 0.3, 32, false);
+    let g = grid(7);
+    let plain = triangulate(&[square(0.0, 1.0, true), hole.clone()], UNIT, &g, &g).unwrap();
+    let sides = TrimLoop::new(vec![[1.0, 0.3], [1.0, 1.0], [0.0, 1.0], [0.0, 0.0], [0.61, 0.0], [1.0, 0.0]]);
+    assert_eq!(triangulate(&[sides.clone(), hole.clone()], UNIT, &g, &g).unwrap(), plain);
+    assert_sound(&plain, &[sides, hole.clone()], 1.0 - shoelace(&hole.points).abs());
+    for (i, &u) in g.iter().enumerate() {
+        for p in [[u, 0.0], [u, 1.0], [0.0, g[i]], [1.0, g[i]]] {
+            assert!(plain.points.contains(&p), "border grid point {p:?} missing");
+        }
+    }
+    assert!(!plain.strips.is_empty());
+    // The border run clockwise is a misoriented loop, not the domain.
+    assert_eq!(triangulate(&[square(0.0, 1.0, false)], UNIT, &g, &g), Err(TrimError::Misoriented));
 }
 
 #[test]
@@ -201,7 +228,8 @@ fn grid_points_are_kept_inside_and_away_from_the_loops() {
 fn constraint_edges_are_triangle_edges() {
     let loops = [square(0.0, 1.0, true), circle(0.5, 0.5, 0.3, 16, false), circle(0.5, 0.5, 0.1, 7, true)];
     let mesh = triangulate(&loops, UNIT, &grid(10), &grid(10)).unwrap();
-    for l in &loops {
+    // The domain's border is sampled at the grid lines (checked in `split_edges_keep_the_boundary`).
+    for l in &loops[1..] {
         for (a, b) in loop_edges(l) {
             assert!(has_edge(&mesh, a, b), "edge {a:?}-{b:?} missing");
         }
@@ -217,7 +245,7 @@ fn split_edges_keep_the_boundary() {
     assert_sound(&mesh, &loops, want);
     // Boundary edges of the mesh (used by one triangle) lie on the loops and add up to their length.
     let mut count = std::collections::HashMap::new();
-    for t in &mesh.triangles {
+    for t in mesh.triangles() {
         for k in 0..3 {
             let (a, b) = (t[k].min(t[(k + 1) % 3]), t[k].max(t[(k + 1) % 3]));
             *count.entry((a, b)).or_insert(0) += 1;
