@@ -422,36 +422,51 @@ struct Band {
 
 impl Band {
     fn new(grid: &Grid, kept: &[bool], touched: &[bool], inside_domain: bool) -> Self {
-        let (nu, nv) = (grid.u.len(), grid.v.len());
+        let (nu, cu) = (grid.u.len(), grid.u.len().saturating_sub(1));
         let mut mesh_index = vec![u32::MAX; kept.len()];
-        let mut grid_points = Vec::new();
-        for (k, _) in kept.iter().enumerate().filter(|(_, &keep)| keep) {
-            mesh_index[k] = grid_points.len() as u32;
-            grid_points.push([grid.u[k % nu], grid.v[k / nu]]);
+        let mut grid_points = Vec::with_capacity(kept.iter().filter(|&&keep| keep).count());
+        for ((row, slots), &v) in kept.chunks_exact(nu).zip(mesh_index.chunks_exact_mut(nu)).zip(&grid.v) {
+            for ((&keep, slot), &u) in row.iter().zip(slots).zip(&grid.u) {
+                if keep {
+                    *slot = grid_points.len() as u32;
+                    grid_points.push([u, v]);
+                }
+            }
         }
+        // Row slices rather than index arithmetic per cell: this runs over every cell.
         let mut clean = vec![false; touched.len()];
-        for cj in 0..nv.saturating_sub(1) {
-            for ci in 0..nu.saturating_sub(1) {
-                let corner = |i: usize, j: usize| kept[j * nu + i];
-                let cell = cj * (nu - 1) + ci;
-                clean[cell] = !touched[cell]
-                    && corner(ci, cj)
-                    && corner(ci + 1, cj)
-                    && corner(ci, cj + 1)
-                    && corner(ci + 1, cj + 1);
+        if cu > 0 {
+            let rows: Vec<&[bool]> = kept.chunks_exact(nu).collect();
+            for ((cells, touched), pair) in
+                clean.chunks_exact_mut(cu).zip(touched.chunks_exact(cu)).zip(rows.windows(2))
+            {
+                let (below, above) = (pair[0], pair[1]);
+                for (ci, (cell, &t)) in cells.iter_mut().zip(touched).enumerate() {
+                    *cell = !t & below[ci] & below[ci + 1] & above[ci] & above[ci + 1];
+                }
             }
         }
         Self { clean, mesh_index, grid_points, inside_domain }
     }
 
+    /// Per grid point (row-major): whether a band cell is among the cells round it.
+    fn next_to_band(&self, grid: &Grid) -> Vec<bool> {
+        let (nu, cu) = (grid.u.len(), grid.u.len().saturating_sub(1));
+        let mut near = vec![false; self.mesh_index.len()];
+        for (cj, cells) in self.clean.chunks_exact(cu.max(1)).enumerate() {
+            for (ci, _) in cells.iter().enumerate().filter(|(_, &clean)| !clean) {
+                for k in [cj * nu + ci, (cj + 1) * nu + ci] {
+                    near[k] = true;
+                    near[k + 1] = true;
+                }
+            }
+        }
+        near
+    }
+
     /// Whether cell (ci, cj) exists and is clean.
     fn is_clean(&self, grid: &Grid, ci: usize, cj: usize) -> bool {
         ci < grid.u.len() - 1 && cj < grid.v.len() - 1 && self.clean[cj * (grid.u.len() - 1) + ci]
-    }
-
-    /// Whether cell (ci, cj) exists and is not clean (a band cell).
-    fn is_band(&self, grid: &Grid, ci: usize, cj: usize) -> bool {
-        ci < grid.u.len() - 1 && cj < grid.v.len() - 1 && !self.clean[cj * (grid.u.len() - 1) + ci]
     }
 
     /// Triangulates the band (the loops' points and edges, the retained grid points next to a
@@ -462,43 +477,20 @@ impl Band {
         loop_points: &[P],
         mut edges: Vec<[usize; 2]>,
     ) -> Result<TrimMesh, TrimError> {
-        let (nu, nv) = (grid.u.len(), grid.v.len());
         let mut vertices: Vec<BandVertex> =
             loop_points.iter().map(|&p| BandVertex { position: point(p), mesh_index: LOOP_VERTEX }).collect();
-        // Grid points with a band cell among their cells; their CDT index per grid point. The
-        // cells round point (i, j) are (i - 1, j - 1) to (i, j); wrapping makes missing ones
-        // out of range.
+        // Grid points with a band cell among their cells; their CDT index per grid point.
         let mut cdt_index = vec![u32::MAX; self.mesh_index.len()];
-        for (k, &m) in self.mesh_index.iter().enumerate() {
-            let (i, j) = (k % nu, k / nu);
-            let (l, d) = (i.wrapping_sub(1), j.wrapping_sub(1));
-            let next_to_band = [(l, d), (i, d), (l, j), (i, j)].iter().any(|&(ci, cj)| self.is_band(grid, ci, cj));
-            if m != u32::MAX && next_to_band {
-                cdt_index[k] = vertices.len() as u32;
-                vertices.push(BandVertex { position: point(self.grid_points[m as usize]), mesh_index: m });
-            }
+        for ((slot, &m), _) in cdt_index
+            .iter_mut()
+            .zip(&self.mesh_index)
+            .zip(self.next_to_band(grid))
+            .filter(|((_, &m), near)| *near && m != u32::MAX)
+        {
+            *slot = vertices.len() as u32;
+            vertices.push(BandVertex { position: point(self.grid_points[m as usize]), mesh_index: m });
         }
-        // The clean region's outline: cell sides between a clean cell and a band cell.
-        let at = |i: usize, j: usize| cdt_index[j * nu + i] as usize;
-        for cj in 0..nv.saturating_sub(1) {
-            for ci in 0..nu.saturating_sub(1) {
-                if !self.is_clean(grid, ci, cj) {
-                    continue;
-                }
-                if self.is_band(grid, ci, cj.wrapping_sub(1)) {
-                    edges.push([at(ci, cj), at(ci + 1, cj)]);
-                }
-                if self.is_band(grid, ci, cj + 1) {
-                    edges.push([at(ci, cj + 1), at(ci + 1, cj + 1)]);
-                }
-                if self.is_band(grid, ci.wrapping_sub(1), cj) {
-                    edges.push([at(ci, cj), at(ci, cj + 1)]);
-                }
-                if self.is_band(grid, ci + 1, cj) {
-                    edges.push([at(ci + 1, cj), at(ci + 1, cj + 1)]);
-                }
-            }
-        }
+        self.outline_edges(grid, &cdt_index, &mut edges);
         let mut mesh = TrimMesh {
             points: std::mem::take(&mut self.grid_points),
             band: Vec::with_capacity(vertices.len() * 2),
@@ -516,6 +508,31 @@ impl Band {
         }
         self.append_strips(grid, &mut mesh);
         Ok(mesh)
+    }
+
+    /// The clean region's outline as constraint edges (CDT indices): the cell sides between a
+    /// clean cell and a band cell.
+    fn outline_edges(&self, grid: &Grid, cdt_index: &[u32], edges: &mut Vec<[usize; 2]>) {
+        let (nu, cu, cv) = (grid.u.len(), grid.u.len().saturating_sub(1), grid.v.len().saturating_sub(1));
+        let at = |i: usize, j: usize| cdt_index[j * nu + i] as usize;
+        for cj in 0..cv {
+            let row = &self.clean[cj * cu..(cj + 1) * cu];
+            for ci in (0..cu).filter(|&ci| row[ci]) {
+                let k = cj * cu + ci;
+                if cj > 0 && !self.clean[k - cu] {
+                    edges.push([at(ci, cj), at(ci + 1, cj)]);
+                }
+                if cj + 1 < cv && !self.clean[k + cu] {
+                    edges.push([at(ci, cj + 1), at(ci + 1, cj + 1)]);
+                }
+                if ci > 0 && !row[ci - 1] {
+                    edges.push([at(ci, cj), at(ci, cj + 1)]);
+                }
+                if ci + 1 < cu && !row[ci + 1] {
+                    edges.push([at(ci + 1, cj), at(ci + 1, cj + 1)]);
+                }
+            }
+        }
     }
 
     /// The retained band triangles of the CDT: a flood fill from the outer face, toggling parity
@@ -575,22 +592,19 @@ impl Band {
 
     /// The clean cells as runs along grid rows.
     fn append_strips(&self, grid: &Grid, mesh: &mut TrimMesh) {
-        let (nu, nv) = (grid.u.len(), grid.v.len());
-        for cj in 0..nv.saturating_sub(1) {
+        let (nu, cu) = (grid.u.len(), grid.u.len().saturating_sub(1));
+        for (cj, row) in self.clean.chunks_exact(cu.max(1)).enumerate() {
             let mut ci = 0;
-            while ci < nu - 1 {
-                if !self.is_clean(grid, ci, cj) {
-                    ci += 1;
-                    continue;
-                }
+            while ci < row.len() {
                 let start = ci;
-                while self.is_clean(grid, ci, cj) {
+                while ci < row.len() && row[ci] {
                     ci += 1;
                 }
-                let index = |i: usize, j: usize| self.mesh_index[j * nu + i];
-                let strip =
-                    GridStrip { bottom: index(start, cj), top: index(start, cj + 1), cells: (ci - start) as u32 };
-                mesh.strips.push(strip);
+                if ci > start {
+                    let (bottom, top) = (self.mesh_index[cj * nu + start], self.mesh_index[(cj + 1) * nu + start]);
+                    mesh.strips.push(GridStrip { bottom, top, cells: (ci - start) as u32 });
+                }
+                ci += 1;
             }
         }
     }
