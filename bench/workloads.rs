@@ -35,6 +35,7 @@ pub fn cases() -> Vec<(&'static str, Setup)> {
         ("eval_mesh1_degree10", facade_mesh1),
         ("nurbs_untrimmed", nurbs_untrimmed),
         ("nurbs_trimmed", nurbs_trimmed),
+        ("callback_floor", callback_floor),
     ]
 }
 
@@ -196,4 +197,27 @@ fn nurbs_trimmed() -> Workload {
     };
     run();
     Workload { items: count.get() as f64, run: Box::new(run) }
+}
+
+/// The floor under `nurbs_untrimmed`: the same number of vertex callbacks (a boxed closure
+/// called with 5 floats, in the quad strips' order over 49 grids of 101 × 101 points) with no
+/// evaluation, tessellation or GLU at all: what the caller's thread cannot avoid.
+fn callback_floor() -> Workload {
+    let (pieces, n) = (49, 100);
+    let grid: Vec<[f32; 5]> = (0..(n + 1) * (n + 1)).map(|k| [k as f32; 5]).collect();
+    let count = Rc::new(Cell::new(0u64));
+    let c = Rc::clone(&count);
+    let mut vertex: Box<dyn FnMut(&[f32])> = Box::new(move |_| c.set(c.get() + 1));
+    let run = move || {
+        let vertex = std::hint::black_box(&mut vertex);
+        for _ in 0..pieces {
+            for i in 0..n {
+                for j in (0..=n).rev() {
+                    vertex(&grid[j * (n + 1) + i]);
+                    vertex(&grid[j * (n + 1) + i + 1]);
+                }
+            }
+        }
+    };
+    Workload { items: (pieces * n * (n + 1) * 2) as f64, run: Box::new(run) }
 }

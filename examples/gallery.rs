@@ -76,7 +76,15 @@ const PROGRAMS: [Program; 20] = [
     ("operations", operations::app),
 ];
 
-fn main() -> Result<(), Box<dyn std::error::Error>> {
+fn main() {
+    // Display, not Debug: a missing adapter's message says what to install.
+    if let Err(e) = render_gallery() {
+        eprintln!("gallery: {e}");
+        std::process::exit(1);
+    }
+}
+
+fn render_gallery() -> Result<(), Box<dyn std::error::Error>> {
     let out = Path::new("out/gallery");
     std::fs::create_dir_all(out)?;
     let references = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/reference/pictures/png");
