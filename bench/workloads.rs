@@ -199,6 +199,9 @@ fn nurbs_trimmed() -> Workload {
     Workload { items: count.get() as f64, run: Box::new(run) }
 }
 
+/// A vertex callback as GLU's tessellator mode takes it.
+type VertexFn = Box<dyn FnMut(&[f32])>;
+
 /// The floor under `nurbs_untrimmed`: the same number of vertex callbacks (a boxed closure
 /// called with 5 floats, in the quad strips' order over 49 grids of 101 × 101 points) with no
 /// evaluation, tessellation or GLU at all: what the caller's thread cannot avoid.
@@ -207,7 +210,7 @@ fn callback_floor() -> Workload {
     let grid: Vec<[f32; 5]> = (0..(n + 1) * (n + 1)).map(|k| [k as f32; 5]).collect();
     let count = Rc::new(Cell::new(0u64));
     let c = Rc::clone(&count);
-    let mut vertex: Box<dyn FnMut(&[f32])> = Box::new(move |_| c.set(c.get() + 1));
+    let mut vertex: VertexFn = Box::new(move |_| c.set(c.get() + 1));
     let run = move || {
         let vertex = std::hint::black_box(&mut vertex);
         for _ in 0..pieces {
