@@ -10,7 +10,7 @@ use super::sampling::Sampler;
 use crate::gl::consts::*;
 use crate::gl::{Gl, MapSample, MapTarget, MeshJob, MeshMode, Slot, Tessellator, Vertex};
 use crate::math::bezier::bernstein;
-use crate::tess::trim::{join_curves, triangulate, GridStrip, TrimLoop, TrimMesh};
+use crate::tess::trim::{join_curves, triangulate, GridStrip, Lattice, TrimLoop, TrimMesh, TrimOptions};
 use crate::tess::{MapView, Row, RowKernel};
 use std::collections::BTreeMap;
 
@@ -62,7 +62,20 @@ pub(crate) fn draw_trimmed(
             Err(e) => return obj.nurbs_error(e.glu_number()),
         }
     }
-    let mesh = match triangulate(&trim_loops, surface.domain(), &us, &vs) {
+    let domain = surface.domain();
+    // Tessellator mode evaluates the whole sampling lattice on the pool while the triangulation
+    // runs; the mesh's grid points then read their values from it.
+    let (mesh, lattice_values) = if tessellate {
+        let lattice = Lattice::lines(domain, &us, &vs);
+        let (mesh, values) = rayon::join(
+            || triangulate(&trim_loops, domain, &us, &vs),
+            || LatticeValues::evaluate(&surface.pos, surface.k, lattice),
+        );
+        (mesh, values)
+    } else {
+        (triangulate(&trim_loops, domain, &us, &vs), None)
+    };
+    let mesh = match mesh {
         Ok(m) => m,
         Err(e) => return obj.nurbs_error(e.glu_number()),
     };
@@ -70,7 +83,7 @@ pub(crate) fn draw_trimmed(
         return outline_loops(gl, surface, &trim_loops);
     }
     if tessellate {
-        return tessellate_trimmed(obj, surface, &mesh);
+        return tessellate_trimmed(obj, surface, &mesh, lattice_values);
     }
     let saved_mode = gl.raster.polygon_mode;
     if obj.props.display_mode == GLU_OUTLINE_POLYGON {
@@ -99,22 +112,20 @@ pub(crate) fn draw_trimmed(
 /// Tessellator mode: each point of the triangulation evaluated once (on the row path), then the
 /// band along the loops as `GL_TRIANGLES` and the grid cells wholly inside as one
 /// `GL_QUAD_STRIP` per run of cells, as GLU issues its grid blocks.
-fn tessellate_trimmed(obj: &mut NurbsObject, surface: &Surface, mesh: &TrimMesh) {
-    let data = evaluate_positions(&surface.pos, surface.k, &mesh.points);
+fn tessellate_trimmed(obj: &mut NurbsObject, surface: &Surface, mesh: &TrimMesh, lattice: Option<LatticeValues>) {
+    let data = PointValues::new(surface, mesh, lattice);
     let band = &mesh.band;
     if let Some(mut sinks) = obj.callbacks.sinks() {
         if !band.is_empty() {
             sinks.begin(GL_TRIANGLES);
-            band.iter().flatten().filter_map(|&i| data[i as usize].as_ref()).for_each(|d| sinks.vertex(d));
+            band.iter().flatten().filter_map(|&i| data.get(i)).for_each(|d| sinks.vertex(d));
             sinks.end();
         }
         for strip in &mesh.strips {
             sinks.begin(GL_QUAD_STRIP);
             for (top, bottom) in strip_pairs(*strip) {
-                for i in [top, bottom] {
-                    if let Some(d) = &data[i as usize] {
-                        sinks.vertex(d);
-                    }
+                for d in [top, bottom].into_iter().filter_map(|i| data.get(i)) {
+                    sinks.vertex(d);
                 }
             }
             sinks.end();
@@ -128,7 +139,7 @@ fn tessellate_trimmed(obj: &mut NurbsObject, surface: &Surface, mesh: &TrimMesh)
         if per_vertex {
             emit_attributes(obj, surface.view_ref(), u, v);
         }
-        if let Some(d) = &data[i as usize] {
+        if let Some(d) = data.get(i) {
             obj.callbacks.attribute(GLU_NURBS_VERTEX, d);
         }
     };
@@ -151,6 +162,116 @@ fn tessellate_trimmed(obj: &mut NurbsObject, surface: &Surface, mesh: &TrimMesh)
 /// top, bottom, next bottom, next top: counter-clockwise in (u, v).
 fn strip_pairs(strip: GridStrip) -> impl Iterator<Item = (u32, u32)> {
     (0..=strip.cells).map(move |i| (strip.top + i, strip.bottom + i))
+}
+
+/// The vertex-callback data of every point of a [`Lattice`] (v outer), `None` outside the
+/// surface.
+struct LatticeValues {
+    lattice: Lattice,
+    values: Vec<Option<[f32; 5]>>,
+}
+
+impl LatticeValues {
+    /// Evaluates every lattice point on the row path: one row kernel per Bezier piece (its
+    /// basis tables computed once), rows shared out on the pool. `None` when the lattice is
+    /// beyond the triangulation's point budget (it would be coarsened and not match).
+    fn evaluate(pos: &SurfacePatches, k: usize, lattice: Lattice) -> Option<Self> {
+        use rayon::prelude::*;
+        if lattice.point_count() > TrimOptions::DEFAULT.max_points {
+            return None;
+        }
+        let p = &pos.patches;
+        let uruns = piece_runs(&p.uintervals, &lattice.u);
+        let vruns = piece_runs(&p.vintervals, &lattice.v);
+        let kernels: Vec<Vec<Option<RowKernel<f64>>>> = vruns
+            .iter()
+            .map(|(b, vrange)| {
+                uruns.iter().map(|(a, urange)| piece_kernel(pos, (*a, *b), &lattice, urange, vrange)).collect()
+            })
+            .collect();
+        let nu = lattice.u.len();
+        let mut values = vec![None; lattice.point_count()];
+        // Per v line: its run in `vruns` (None: outside every piece, left None).
+        let mut row_run = vec![None; lattice.v.len()];
+        for (bi, (_, range)) in vruns.iter().enumerate() {
+            range.clone().for_each(|j| row_run[j] = Some(bi));
+        }
+        values.par_chunks_mut(nu).zip(row_run.par_iter().enumerate()).for_each_init(
+            Row::default,
+            |row, (line, (j, run))| {
+                let Some(bi) = *run else { return };
+                let local_j = j - vruns[bi].1.start;
+                let v = lattice.v[j] as f32;
+                for ((_, urange), kernel) in uruns.iter().zip(&kernels[bi]) {
+                    let Some(kernel) = kernel else { continue };
+                    kernel.eval_row(local_j, row);
+                    let [x, y, z, w] = &row.point;
+                    for (n, (o, &u)) in line[urange.clone()].iter_mut().zip(&lattice.u[urange.clone()]).enumerate() {
+                        let w = if k == 4 { w[n] } else { 1.0 };
+                        *o = Some([(x[n] / w) as f32, (y[n] / w) as f32, (z[n] / w) as f32, u as f32, v]);
+                    }
+                }
+            },
+        );
+        Some(Self { lattice, values })
+    }
+}
+
+/// The lines grouped by the Bezier piece they lie on: (piece, range of line indices), lines
+/// outside every piece left out.
+fn piece_runs(intervals: &[(f64, f64)], lines: &[f64]) -> Vec<(usize, std::ops::Range<usize>)> {
+    let mut runs: Vec<(usize, std::ops::Range<usize>)> = Vec::new();
+    for (i, &x) in lines.iter().enumerate() {
+        let Some(piece) = locate(intervals, x) else { continue };
+        match runs.last_mut() {
+            Some((last, range)) if *last == piece && range.end == i => range.end = i + 1,
+            _ => runs.push((piece, i..i + 1)),
+        }
+    }
+    runs
+}
+
+/// The row kernel of Bezier piece (a, b) over the lattice lines in `urange` × `vrange`.
+fn piece_kernel<'a>(
+    pos: &'a SurfacePatches,
+    (a, b): (usize, usize),
+    lattice: &Lattice,
+    urange: &std::ops::Range<usize>,
+    vrange: &std::ops::Range<usize>,
+) -> Option<RowKernel<'a, f64>> {
+    let p = &pos.patches;
+    let ((ua, ub), (va, vb)) = (p.uintervals[a], p.vintervals[b]);
+    let su: Vec<f64> = lattice.u[urange.clone()].iter().map(|&u| (u - ua) / (ub - ua)).collect();
+    let sv: Vec<f64> = lattice.v[vrange.clone()].iter().map(|&v| (v - va) / (vb - va)).collect();
+    let view = MapView { dim: p.dim, uorder: p.uorder, vorder: p.vorder, points: p.patch(a, b)? };
+    RowKernel::new(view, &su, &sv, false)
+}
+
+/// The vertex-callback data of a trimmed mesh's points: grid points from the lattice's values
+/// when they were evaluated on the same lattice, the rest evaluated here.
+struct PointValues<'a> {
+    mesh: &'a TrimMesh,
+    lattice: Option<LatticeValues>,
+    /// The points not read from the lattice: the loop points, or every point without one.
+    rest: Vec<Option<[f32; 5]>>,
+    first_rest: usize,
+}
+
+impl<'a> PointValues<'a> {
+    fn new(surface: &Surface, mesh: &'a TrimMesh, lattice: Option<LatticeValues>) -> Self {
+        let lattice = lattice.filter(|l| l.lattice.same_lines(&mesh.lattice));
+        let first_rest = if lattice.is_some() { mesh.lattice.index.len() } else { 0 };
+        let rest = evaluate_positions(&surface.pos, surface.k, &mesh.points[first_rest..]);
+        Self { mesh, lattice, rest, first_rest }
+    }
+
+    fn get(&self, i: u32) -> Option<&[f32; 5]> {
+        let i = i as usize;
+        match &self.lattice {
+            Some(l) if i < self.first_rest => l.values[self.mesh.lattice.index[i] as usize].as_ref(),
+            _ => self.rest[i - self.first_rest].as_ref(),
+        }
+    }
 }
 
 /// Points evaluated per parallel task in [`evaluate_positions`].

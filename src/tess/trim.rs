@@ -120,6 +120,45 @@ pub struct TrimMesh {
     /// The grid cells that lie wholly inside the region, away from every loop, as runs of
     /// cells along a grid row (two triangles per cell, or a quad strip per run).
     pub strips: Vec<GridStrip>,
+    /// The lattice the grid points lie on, and where each of them is in it.
+    pub lattice: Lattice,
+}
+
+/// The lattice of sampling lines a [`TrimMesh`]'s grid points lie on. A caller that evaluates
+/// the surface on the whole lattice (say while the triangulation runs, from
+/// [`Lattice::lines`]) finds each grid point's value through `index`.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Lattice {
+    /// The u lines, increasing: the domain's bounds and the finite sampling lines strictly
+    /// between them (every other line dropped while the point budget was exceeded).
+    pub u: Vec<f64>,
+    /// The v lines, likewise.
+    pub v: Vec<f64>,
+    /// For each of the mesh's first `index.len()` points (its grid points), the point's index
+    /// `j * u.len() + i` in the lattice (v outer).
+    pub index: Vec<u32>,
+}
+
+impl Lattice {
+    /// The lattice [`triangulate`] starts from for `domain` ([umin, umax, vmin, vmax]) and the
+    /// sampling lines `us`, `vs` (before any coarsening; `index` empty).
+    #[must_use]
+    pub fn lines(domain: [f64; 4], us: &[f64], vs: &[f64]) -> Self {
+        let [u0, u1, v0, v1] = domain;
+        Self { u: grid_lines(us, u0, u1), v: grid_lines(vs, v0, v1), index: Vec::new() }
+    }
+
+    /// The lattice's point count.
+    #[must_use]
+    pub fn point_count(&self) -> usize {
+        self.u.len().saturating_mul(self.v.len())
+    }
+
+    /// Whether both have the same lines (the indices aside).
+    #[must_use]
+    pub fn same_lines(&self, other: &Self) -> bool {
+        self.u == other.u && self.v == other.v
+    }
 }
 
 /// A run of `cells` grid cells along one row of the sampling grid. The run's bottom points are
@@ -361,7 +400,8 @@ pub fn triangulate_with(
         loops.retain(|l| !is_domain_border(l, domain));
         loops.len() < before
     };
-    let mut grid = Grid { u: grid_lines(us, u0, u1), v: grid_lines(vs, v0, v1) };
+    let Lattice { u, v, .. } = Lattice::lines(domain, us, vs);
+    let mut grid = Grid { u, v };
     let budget = |g: &Grid| g.point_count().saturating_add(if split { g.count_crossings(&loops) } else { 0 });
     while budget(&grid) > options.max_points && grid.coarsen() {}
     let clearance = if options.clearance.is_nan() { 0.0 } else { options.clearance.clamp(0.0, 0.5) };
@@ -416,6 +456,8 @@ struct Band {
     mesh_index: Vec<u32>,
     /// The retained grid points, row by row: the mesh's first points.
     grid_points: Vec<P>,
+    /// Each retained grid point's row-major index in the grid.
+    grid_index: Vec<u32>,
     /// The region starts inside (the domain's border is the outer loop, or there are no loops).
     inside_domain: bool,
 }
@@ -424,12 +466,16 @@ impl Band {
     fn new(grid: &Grid, kept: &[bool], touched: &[bool], inside_domain: bool) -> Self {
         let (nu, cu) = (grid.u.len(), grid.u.len().saturating_sub(1));
         let mut mesh_index = vec![u32::MAX; kept.len()];
-        let mut grid_points = Vec::with_capacity(kept.iter().filter(|&&keep| keep).count());
-        for ((row, slots), &v) in kept.chunks_exact(nu).zip(mesh_index.chunks_exact_mut(nu)).zip(&grid.v) {
-            for ((&keep, slot), &u) in row.iter().zip(slots).zip(&grid.u) {
+        let retained = kept.iter().filter(|&&keep| keep).count();
+        let (mut grid_points, mut grid_index) = (Vec::with_capacity(retained), Vec::with_capacity(retained));
+        for (j, ((row, slots), &v)) in
+            kept.chunks_exact(nu).zip(mesh_index.chunks_exact_mut(nu)).zip(&grid.v).enumerate()
+        {
+            for (i, ((&keep, slot), &u)) in row.iter().zip(slots).zip(&grid.u).enumerate() {
                 if keep {
                     *slot = grid_points.len() as u32;
                     grid_points.push([u, v]);
+                    grid_index.push((j * nu + i) as u32);
                 }
             }
         }
@@ -446,7 +492,7 @@ impl Band {
                 }
             }
         }
-        Self { clean, mesh_index, grid_points, inside_domain }
+        Self { clean, mesh_index, grid_points, grid_index, inside_domain }
     }
 
     /// Per grid point (row-major): whether a band cell is among the cells round it.
@@ -495,6 +541,7 @@ impl Band {
             points: std::mem::take(&mut self.grid_points),
             band: Vec::with_capacity(vertices.len() * 2),
             strips: Vec::new(),
+            lattice: Lattice { u: grid.u.clone(), v: grid.v.clone(), index: std::mem::take(&mut self.grid_index) },
         };
         if !vertices.is_empty() {
             let mut conflict = false;

@@ -139,6 +139,20 @@ fn assert_strips_sound(mesh: &TrimMesh, loops: &[TrimLoop]) {
     let mut used = vec![false; mesh.points.len()];
     mesh.triangles().flatten().for_each(|i| used[i as usize] = true);
     assert!(used.iter().all(|&u| u), "unused point");
+    assert_lattice_sound(mesh);
+}
+
+/// The lattice's lines increase, and every grid point is at the lattice point its index names,
+/// row by row.
+fn assert_lattice_sound(mesh: &TrimMesh) {
+    let l = &mesh.lattice;
+    assert!(l.u.windows(2).all(|w| w[0] < w[1]) && l.v.windows(2).all(|w| w[0] < w[1]), "lines not increasing");
+    assert!(l.index.windows(2).all(|w| w[0] < w[1]), "grid points not row by row");
+    assert!(l.index.len() <= mesh.points.len());
+    for (&k, p) in l.index.iter().zip(&mesh.points) {
+        let (i, j) = (k as usize % l.u.len(), k as usize / l.u.len());
+        assert_eq!(*p, [l.u[i], l.v[j]], "grid point at lattice index {k}");
+    }
 }
 
 /// Area, orientation and containment checks shared by the tests.
@@ -366,6 +380,23 @@ fn the_point_budget_coarsens_the_grid() {
     assert_sound(&mesh, &loops, 1.0 - shoelace(&loops[1].points).abs());
     let none = triangulate_with(&loops, UNIT, &grid(20), &grid(20), &TrimOptions::DEFAULT.with_max_points(0)).unwrap();
     assert_eq!(none.points.len(), 44);
+    // The coarsened lattice is not the one the sampling lines give; its indices still hold.
+    assert!(!mesh.lattice.same_lines(&Lattice::lines(UNIT, &grid(200), &grid(200))));
+    assert_lattice_sound(&mesh);
+}
+
+#[test]
+fn the_lattice_is_the_sampling_lines_between_the_bounds() {
+    let loops = [square(0.0, 1.0, true), circle(0.5, 0.5, 0.3, 40, false)];
+    // Unsorted lines with a duplicate, one outside the domain and a NaN: sorted and cleaned.
+    let us = [0.5, 0.25, 0.75, 0.25, 1.5, f64::NAN];
+    let mesh = triangulate(&loops, UNIT, &us, &grid(8)).unwrap();
+    let want = Lattice::lines(UNIT, &us, &grid(8));
+    assert_eq!(want.u, [0.0, 0.25, 0.5, 0.75, 1.0]);
+    assert_eq!(want.point_count(), 5 * 9);
+    assert!(mesh.lattice.same_lines(&want));
+    assert!(!mesh.lattice.index.is_empty());
+    assert_lattice_sound(&mesh);
 }
 
 #[test]
