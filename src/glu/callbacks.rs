@@ -234,6 +234,74 @@ impl Callbacks {
     }
 }
 
+/// Where the tessellator's tight loops send primitives: [`Sinks`], or [`PlainSinks`] when no
+/// `_DATA` form is registered.
+pub(crate) trait StripSink {
+    fn begin(&mut self, prim: GLenum);
+    fn vertex(&mut self, values: &[f32]);
+    fn end(&mut self);
+}
+
+/// The plain begin, vertex and end callbacks, their forms resolved: a vertex is one indirect
+/// call, with no look-up of the callback's form and no user data to thread through.
+pub(crate) struct PlainSinks<'a> {
+    begin: Option<&'a mut EnumFn>,
+    vertex: &'a mut ValuesFn,
+    end: Option<&'a mut Box<dyn FnMut()>>,
+}
+
+impl<'a> Sinks<'a> {
+    /// The plain sinks; `None` when a `_DATA` form or no vertex callback is registered.
+    pub fn plain(&mut self) -> Option<PlainSinks<'_>> {
+        let begin = match self.begin.as_deref_mut() {
+            Some(NurbsCallback::Begin(f)) => Some(f),
+            None => None,
+            Some(_) => return None,
+        };
+        let Some(NurbsCallback::Vertex(vertex)) = self.vertex.as_deref_mut() else { return None };
+        let end = match self.end.as_deref_mut() {
+            Some(NurbsCallback::End(f)) => Some(f),
+            None => None,
+            Some(_) => return None,
+        };
+        Some(PlainSinks { begin, vertex, end })
+    }
+}
+
+impl StripSink for PlainSinks<'_> {
+    fn begin(&mut self, prim: GLenum) {
+        if let Some(f) = self.begin.as_deref_mut() {
+            f(prim);
+        }
+    }
+
+    #[inline]
+    fn vertex(&mut self, values: &[f32]) {
+        (self.vertex)(values);
+    }
+
+    fn end(&mut self) {
+        if let Some(f) = self.end.as_deref_mut() {
+            f();
+        }
+    }
+}
+
+impl StripSink for Sinks<'_> {
+    fn begin(&mut self, prim: GLenum) {
+        Sinks::begin(self, prim);
+    }
+
+    #[inline]
+    fn vertex(&mut self, values: &[f32]) {
+        Sinks::vertex(self, values);
+    }
+
+    fn end(&mut self) {
+        Sinks::end(self);
+    }
+}
+
 impl Sinks<'_> {
     fn with_data(data: &mut Option<&mut UserData>, f: impl FnOnce(&mut dyn Any)) {
         match data {

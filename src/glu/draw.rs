@@ -4,7 +4,7 @@
 //! callbacks (`GLU_NURBS_TESSELLATOR`). Trimmed surfaces are triangulated in (u, v) by
 //! [`crate::tess::trim`] and each vertex evaluated on the exact surface.
 
-use super::callbacks::Sinks;
+use super::callbacks::StripSink;
 use super::consts::*;
 use super::nurbs::{CurveMap, NurbsObject, SurfaceDef, TrimPiece};
 use super::pieces::{CurvePieces, SurfacePatches};
@@ -326,7 +326,13 @@ fn tessellate_patches_in_parallel(obj: &mut NurbsObject, surface: &Surface, patc
                 let grid = &current[start..start + grid_size(patch)];
                 start += grid_size(patch);
                 match obj.callbacks.sinks() {
-                    Some(mut sinks) if done => quad_strips(&mut sinks, grid, nu, nv),
+                    Some(mut sinks) if done => {
+                        if let Some(mut plain) = sinks.plain() {
+                            quad_strips(&mut plain, grid, nu, nv);
+                        } else {
+                            quad_strips(&mut sinks, grid, nu, nv);
+                        }
+                    }
                     _ => tessellate_patch(obj, surface, u, v, (nu, nv)),
                 }
             }
@@ -376,7 +382,7 @@ fn tessellate_patch(obj: &mut NurbsObject, surface: &Surface, u: (f64, f64), v: 
 
 /// [`tessellate_patch`]'s strips when only begin, vertex and end callbacks are registered:
 /// the same primitives, one indirect call per vertex.
-fn quad_strips(sinks: &mut Sinks, g: &[[f32; 5]], nu: usize, nv: usize) {
+fn quad_strips(sinks: &mut impl StripSink, g: &[[f32; 5]], nu: usize, nv: usize) {
     let at = |i: usize, j: usize| &g[j * (nu + 1) + i];
     if nu >= nv {
         for i in 0..nu {
