@@ -2,6 +2,7 @@
 //! triangulated with the surface's sampling grid inside ([`crate::tess::trim`]), and every
 //! vertex is evaluated on the exact surface. Loop errors are GLU's numbers 28, 29, 31 and 18.
 
+use super::callbacks::StripSink;
 use super::consts::*;
 use super::draw::{emit_attributes, surface_normal, trim_polylines, PatchGrid, Surface};
 use super::nurbs::{NurbsObject, TrimPiece};
@@ -116,19 +117,10 @@ fn tessellate_trimmed(obj: &mut NurbsObject, surface: &Surface, mesh: &TrimMesh,
     let data = PointValues::new(surface, mesh, lattice);
     let band = &mesh.band;
     if let Some(mut sinks) = obj.callbacks.sinks() {
-        if !band.is_empty() {
-            sinks.begin(GL_TRIANGLES);
-            band.iter().flatten().filter_map(|&i| data.get(i)).for_each(|d| sinks.vertex(d));
-            sinks.end();
-        }
-        for strip in &mesh.strips {
-            sinks.begin(GL_QUAD_STRIP);
-            for (top, bottom) in strip_pairs(*strip) {
-                for d in [top, bottom].into_iter().filter_map(|i| data.get(i)) {
-                    sinks.vertex(d);
-                }
-            }
-            sinks.end();
+        if let Some(mut plain) = sinks.plain() {
+            issue_trimmed(&mut plain, mesh, &data);
+        } else {
+            issue_trimmed(&mut sinks, mesh, &data);
         }
         return;
     }
@@ -155,6 +147,25 @@ fn tessellate_trimmed(obj: &mut NurbsObject, surface: &Surface, mesh: &TrimMesh,
             emit(obj, bottom);
         }
         obj.callbacks.end();
+    }
+}
+
+/// The fast path of [`tessellate_trimmed`] (only begin, vertex and end callbacks): the band as
+/// `GL_TRIANGLES`, then a `GL_QUAD_STRIP` per run of grid cells.
+fn issue_trimmed(sinks: &mut impl StripSink, mesh: &TrimMesh, data: &PointValues) {
+    if !mesh.band.is_empty() {
+        sinks.begin(GL_TRIANGLES);
+        mesh.band.iter().flatten().filter_map(|&i| data.get(i)).for_each(|d| sinks.vertex(d));
+        sinks.end();
+    }
+    for strip in &mesh.strips {
+        sinks.begin(GL_QUAD_STRIP);
+        for (top, bottom) in strip_pairs(*strip) {
+            for d in [top, bottom].into_iter().filter_map(|i| data.get(i)) {
+                sinks.vertex(d);
+            }
+        }
+        sinks.end();
     }
 }
 
