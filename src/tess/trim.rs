@@ -221,16 +221,30 @@ pub struct TrimOptions {
     /// Budget for grid points plus split points. While it is exceeded, every other
     /// grid line is dropped (in u and in v), so absurd sampling cannot exhaust memory.
     pub max_points: usize,
+    /// Triangulate the band cell by cell: every cell a loop passes through clipped against the
+    /// loops and ear-clipped, as GLU's slicer meets its grid, instead of one constrained
+    /// Delaunay triangulation of the whole band. Linear in the band's size; loop edges gain a
+    /// vertex at every grid line they cross, and grid points are kept however close to a loop
+    /// (use it with clearance 0). Where it cannot decide (a loop inside one grid cell), or its
+    /// area does not check against the loops' shoelace area, the Delaunay triangulation runs.
+    pub by_cells: bool,
 }
 
 impl TrimOptions {
     /// Clearance 0.25, no splitting, at most 4 million grid and split points.
-    pub const DEFAULT: Self = Self { clearance: 0.25, split_at_grid_lines: false, max_points: 4_000_000 };
+    pub const DEFAULT: Self =
+        Self { clearance: 0.25, split_at_grid_lines: false, max_points: 4_000_000, by_cells: false };
 
     /// With another clearance (a fraction of the grid spacing).
     #[must_use]
     pub fn with_clearance(self, clearance: f64) -> Self {
         Self { clearance, ..self }
+    }
+
+    /// With or without the cell-by-cell triangulation of the band.
+    #[must_use]
+    pub fn with_by_cells(self, by_cells: bool) -> Self {
+        Self { by_cells, ..self }
     }
 
     /// With or without vertices where loop edges cross grid lines.
@@ -402,7 +416,8 @@ pub fn triangulate_with(
     };
     let Lattice { u, v, .. } = Lattice::lines(domain, us, vs);
     let mut grid = Grid { u, v };
-    let budget = |g: &Grid| g.point_count().saturating_add(if split { g.count_crossings(&loops) } else { 0 });
+    let splits = split || options.by_cells;
+    let budget = |g: &Grid| g.point_count().saturating_add(if splits { g.count_crossings(&loops) } else { 0 });
     while budget(&grid) > options.max_points && grid.coarsen() {}
     let clearance = if options.clearance.is_nan() { 0.0 } else { options.clearance.clamp(0.0, 0.5) };
     let (mut vertices, mut edges) = (Vec::new(), Vec::new());
@@ -425,6 +440,13 @@ pub fn triangulate_with(
     }
     let kept = grid.retained_mask(&loops, &blocked, inside_domain);
     let band = Band::new(&grid, &kept, &touched, inside_domain);
+    if options.by_cells {
+        if let Some((extra, triangles)) = cells::triangulate_cells(&band, &grid, &loops, &kept) {
+            return Ok(band.into_mesh(&grid, extra, triangles));
+        }
+        #[cfg(test)]
+        CELL_FALLBACKS.with(|c| c.set(c.get() + 1));
+    }
     band.triangulate(&grid, &vertices, edges)
 }
 
@@ -513,6 +535,22 @@ impl Band {
     /// Whether cell (ci, cj) exists and is clean.
     fn is_clean(&self, grid: &Grid, ci: usize, cj: usize) -> bool {
         ci < grid.u.len() - 1 && cj < grid.v.len() - 1 && self.clean[cj * (grid.u.len() - 1) + ci]
+    }
+
+    /// The mesh of the grid points, the band's `triangles` over them and the `extra` points
+    /// after them, and the clean cells' strips.
+    fn into_mesh(mut self, grid: &Grid, extra: Vec<P>, triangles: Vec<[u32; 3]>) -> TrimMesh {
+        let mut points = std::mem::take(&mut self.grid_points);
+        points.extend(extra);
+        let index = std::mem::take(&mut self.grid_index);
+        let mut mesh = TrimMesh {
+            points,
+            band: triangles,
+            strips: Vec::new(),
+            lattice: Lattice { u: grid.u.clone(), v: grid.v.clone(), index },
+        };
+        self.append_strips(grid, &mut mesh);
+        mesh
     }
 
     /// Triangulates the band (the loops' points and edges, the retained grid points next to a
@@ -1087,6 +1125,15 @@ fn distance_to_segment(p: P, a: P, b: P) -> f64 {
     let len2 = dx * dx + dy * dy;
     let t = if len2 > 0.0 { (((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / len2).clamp(0.0, 1.0) } else { 0.0 };
     (p[0] - a[0] - t * dx).hypot(p[1] - a[1] - t * dy)
+}
+
+#[path = "trim_cells.rs"]
+mod cells;
+
+// How often the cell-by-cell triangulation handed over to the Delaunay one, on this thread.
+#[cfg(test)]
+thread_local! {
+    static CELL_FALLBACKS: std::cell::Cell<usize> = const { std::cell::Cell::new(0) };
 }
 
 #[cfg(test)]

@@ -474,3 +474,154 @@ proptest! {
         let _ = triangulate(&[l], UNIT, &grid(n), &grid(n));
     }
 }
+
+// ---------------------------------------------------------------------------------------------
+// The band cell by cell (`TrimOptions::by_cells`).
+
+/// The cell-by-cell options.
+const CELLS: TrimOptions = TrimOptions { clearance: 0.0, by_cells: true, ..TrimOptions::DEFAULT };
+
+/// Triangulates cell by cell, checks the result as every triangulation is checked, and
+/// returns whether it came from the cells (no hand-over to the Delaunay triangulation).
+fn cells_sound(loops: &[TrimLoop], domain: [f64; 4], us: &[f64], vs: &[f64], want_area: f64) -> bool {
+    let before = CELL_FALLBACKS.with(std::cell::Cell::get);
+    let mesh = triangulate_with(loops, domain, us, vs, &CELLS).unwrap();
+    let truth: Vec<TrimLoop> =
+        if loops.is_empty() { vec![rect(domain[0], domain[1], domain[2], domain[3], true)] } else { loops.to_vec() };
+    assert_sound(&mesh, &truth, want_area);
+    CELL_FALLBACKS.with(std::cell::Cell::get) == before
+}
+
+#[test]
+fn cells_cover_holes_islands_and_outer_loops() {
+    let hole = circle(0.5, 0.5, 0.3, 64, false);
+    let loops = [square(0.0, 1.0, true), hole.clone()];
+    assert!(cells_sound(&loops, UNIT, &grid(20), &grid(20), 1.0 - shoelace(&hole.points).abs()));
+    let nested = [square(0.0, 1.0, true), circle(0.5, 0.5, 0.35, 40, false), circle(0.5, 0.5, 0.2, 30, true)];
+    let want = 1.0 - shoelace(&nested[1].points).abs() + shoelace(&nested[2].points);
+    assert!(cells_sound(&nested, UNIT, &grid(13), &grid(17), want));
+    // Outer loops inside the domain, no border loop.
+    let two = [circle(0.3, 0.3, 0.2, 24, true), rect(0.6, 0.9, 0.1, 0.95, true)];
+    let want = shoelace(&two[0].points) + 0.3 * 0.85;
+    assert!(cells_sound(&two, UNIT, &grid(10), &grid(10), want));
+    assert!(cells_sound(&[], [0.0, 2.0, -1.0, 1.0], &[0.5, 1.0, 1.5], &[0.0], 4.0));
+}
+
+/// Loops through grid points, along grid lines and through cell corners on diagonals: the
+/// cases the half-open rule decides.
+#[test]
+fn cells_decide_points_on_grid_lines() {
+    let g = grid(4);
+    // A hole whose edges lie on grid lines.
+    let hole = square(0.25, 0.75, false);
+    assert!(cells_sound(&[square(0.0, 1.0, true), hole], UNIT, &g, &g, 0.75));
+    // A diamond through grid points, its edges diagonals through cell corners.
+    let diamond = TrimLoop::new(vec![[0.5, 0.0 + 0.25], [0.25, 0.5], [0.5, 0.75], [0.75, 0.5]]);
+    assert!(diamond.signed_area() < 0.0);
+    assert!(cells_sound(&[square(0.0, 1.0, true), diamond.clone()], UNIT, &grid(8), &grid(8), 1.0 - 0.125));
+    // The same diamond counter-clockwise, as an outer loop.
+    let mut ccw = diamond.points.clone();
+    ccw.reverse();
+    assert!(cells_sound(&[TrimLoop::new(ccw)], UNIT, &grid(8), &grid(8), 0.125));
+    // The red book's hills hole: a Bezier arc and a polyline from (0.75, 0.5) through (0.5, 0.25).
+    let mut arc: Vec<[f64; 2]> = (0..=40)
+        .map(|i| {
+            let t = f64::from(i) / 40.0;
+            let b = [(1.0 - t).powi(3), 3.0 * t * (1.0 - t).powi(2), 3.0 * t * t * (1.0 - t), t.powi(3)];
+            let (xs, ys) = ([0.25, 0.25, 0.75, 0.75], [0.5, 0.75, 0.75, 0.5]);
+            [(0..4).map(|k| b[k] * xs[k]).sum(), (0..4).map(|k| b[k] * ys[k]).sum()]
+        })
+        .collect();
+    arc.push([0.5, 0.25]);
+    let hole = TrimLoop::new(arc);
+    let tri = TrimLoop::new(vec![[0.1, 0.1], [0.2, 0.3], [0.3, 0.1]]);
+    let want = 1.0 - shoelace(&hole.points).abs() - shoelace(&tri.points).abs();
+    for n in [4, 8, 20, 300] {
+        let loops = [square(0.0, 1.0, true), hole.clone(), tri.clone()];
+        assert!(cells_sound(&loops, UNIT, &grid(n), &grid(n), want), "grid {n}");
+    }
+}
+
+/// Whether the loop's bounding box spans one of the interior lines of `grid(n)` (so that the
+/// loop crosses it).
+fn spans_a_line(l: &TrimLoop, n: usize) -> bool {
+    let lines = &grid(n)[1..n];
+    (0..2).any(|c| {
+        let lo = l.points.iter().map(|p| p[c]).fold(f64::INFINITY, f64::min);
+        let hi = l.points.iter().map(|p| p[c]).fold(f64::NEG_INFINITY, f64::max);
+        lines.iter().any(|&x| lo < x && x <= hi)
+    })
+}
+
+/// Whether the loop (repeated points aside) turns back on itself within rounding somewhere.
+fn has_near_spike(l: &TrimLoop) -> bool {
+    let mut p = l.points.clone();
+    p.dedup();
+    let n = p.len();
+    (0..n).any(|i| {
+        let (a, b, c) = (p[i], p[(i + 1) % n], p[(i + 2) % n]);
+        let cross = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+        let dot = (b[0] - a[0]) * (c[0] - b[0]) + (b[1] - a[1]) * (c[1] - b[1]);
+        cross.abs() <= 1e-12 && dot < 0.0
+    })
+}
+
+/// A loop inside one grid cell is left to the Delaunay triangulation, which still gives the
+/// right region.
+#[test]
+fn a_loop_inside_one_cell_hands_over() {
+    let hole = circle(0.55, 0.55, 0.01, 9, false);
+    let loops = [square(0.0, 1.0, true), hole.clone()];
+    assert!(!cells_sound(&loops, UNIT, &grid(10), &grid(10), 1.0 - shoelace(&hole.points).abs()));
+}
+
+proptest! {
+    #[test]
+    fn cells_cut_star_holes_exactly(
+        radii in proptest::collection::vec(0.01f64..0.35, 3..60),
+        c in (0.36f64..0.64, 0.36f64..0.64),
+        n in 1usize..40,
+    ) {
+        let loops = [square(0.0, 1.0, true), star(&radii, [c.0, c.1])];
+        let want = 1.0 - shoelace(&loops[1].points).abs();
+        let by_cells = cells_sound(&loops, UNIT, &grid(n), &grid(n), want);
+        prop_assert_eq!(by_cells, spans_a_line(&loops[1], n), "handed over to the Delaunay triangulation");
+    }
+
+}
+
+fn star_on_grid(spokes: &[u32], n: u32) -> TrimLoop {
+    let step = 1.0 / f64::from(n);
+    let k = spokes.len();
+    let points: Vec<[f64; 2]> = spokes
+        .iter()
+        .enumerate()
+        .map(|(i, &r)| {
+            let a = -std::f64::consts::TAU * i as f64 / k as f64;
+            let snap = |x: f64| (x / step).round() * step;
+            [snap(0.5 + f64::from(r) * step * a.cos()), snap(0.5 + f64::from(r) * step * a.sin())]
+        })
+        .collect();
+    TrimLoop::new(points)
+}
+
+proptest! {
+    // Many generated stars fold back within rounding and are skipped.
+    #![proptest_config(ProptestConfig { max_global_rejects: 1_000_000, ..ProptestConfig::default() })]
+
+    /// Stars whose points sit on the grid (coordinates in steps of 1/n): every crossing is a
+    /// tie the half-open rule breaks.
+    #[test]
+    fn cells_cut_stars_on_grid_points(spokes in proptest::collection::vec(1u32..6, 4..24), n in 8u32..24) {
+        let hole = star_on_grid(&spokes, n);
+        // Snapping can fold an edge back onto the previous one up to rounding: a spike of no
+        // width, which the cells leave to the Delaunay triangulation.
+        prop_assume!(!has_near_spike(&hole));
+        let loops = [square(0.0, 1.0, true), hole.clone()];
+        let g = grid(n as usize);
+        if triangulate(&loops, UNIT, &g, &g).is_ok() {
+            let want = 1.0 - shoelace(&hole.points).abs();
+            prop_assert!(cells_sound(&loops, UNIT, &g, &g, want), "handed over");
+        }
+    }
+}
