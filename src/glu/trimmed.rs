@@ -11,7 +11,9 @@ use super::sampling::Sampler;
 use crate::gl::consts::*;
 use crate::gl::{Gl, MapSample, MapTarget, MeshJob, MeshMode, Slot, Tessellator, Vertex};
 use crate::math::bezier::bernstein;
-use crate::tess::trim::{join_curves, triangulate, GridStrip, Lattice, TrimLoop, TrimMesh, TrimOptions};
+use crate::tess::trim::{
+    join_curves, triangulate, triangulate_with, GridStrip, Lattice, TrimLoop, TrimMesh, TrimOptions,
+};
 use crate::tess::{MapView, Row, RowKernel};
 use std::collections::BTreeMap;
 
@@ -29,6 +31,9 @@ fn grid_lines(steps: &[PatchGrid]) -> (Vec<f64>, Vec<f64>) {
     }
     (us, vs)
 }
+
+/// Tessellator mode's triangulation: the band cell by cell, as GLU's slicer cuts its grid.
+const BY_CELLS: TrimOptions = TrimOptions::DEFAULT.with_clearance(0.0).with_by_cells(true);
 
 /// Draws a trimmed surface.
 pub(crate) fn draw_trimmed(
@@ -69,7 +74,7 @@ pub(crate) fn draw_trimmed(
     let (mesh, lattice_values) = if tessellate {
         let lattice = Lattice::lines(domain, &us, &vs);
         let (mesh, values) = rayon::join(
-            || triangulate(&trim_loops, domain, &us, &vs),
+            || triangulate_with(&trim_loops, domain, &us, &vs, &BY_CELLS),
             || LatticeValues::evaluate(&surface.pos, surface.k, lattice),
         );
         (mesh, values)

@@ -237,25 +237,25 @@ impl TrimOptions {
 
     /// With another clearance (a fraction of the grid spacing).
     #[must_use]
-    pub fn with_clearance(self, clearance: f64) -> Self {
+    pub const fn with_clearance(self, clearance: f64) -> Self {
         Self { clearance, ..self }
     }
 
     /// With or without the cell-by-cell triangulation of the band.
     #[must_use]
-    pub fn with_by_cells(self, by_cells: bool) -> Self {
+    pub const fn with_by_cells(self, by_cells: bool) -> Self {
         Self { by_cells, ..self }
     }
 
     /// With or without vertices where loop edges cross grid lines.
     #[must_use]
-    pub fn with_split_at_grid_lines(self, split_at_grid_lines: bool) -> Self {
+    pub const fn with_split_at_grid_lines(self, split_at_grid_lines: bool) -> Self {
         Self { split_at_grid_lines, ..self }
     }
 
     /// With another budget of grid and split points.
     #[must_use]
-    pub fn with_max_points(self, max_points: usize) -> Self {
+    pub const fn with_max_points(self, max_points: usize) -> Self {
         Self { max_points, ..self }
     }
 }
@@ -489,7 +489,9 @@ impl Band {
         let (nu, cu) = (grid.u.len(), grid.u.len().saturating_sub(1));
         let mut mesh_index = vec![u32::MAX; kept.len()];
         let retained = kept.iter().filter(|&&keep| keep).count();
-        let (mut grid_points, mut grid_index) = (Vec::with_capacity(retained), Vec::with_capacity(retained));
+        // Room for the loop points the mesh appends after the grid points (no copy of these).
+        let (mut grid_points, mut grid_index) =
+            (Vec::with_capacity(retained + retained / 16 + 1024), Vec::with_capacity(retained));
         for (j, ((row, slots), &v)) in
             kept.chunks_exact(nu).zip(mesh_index.chunks_exact_mut(nu)).zip(&grid.v).enumerate()
         {
@@ -1060,24 +1062,32 @@ impl Grid {
         hits.sort_by(|x, y| x.0.cmp(&y.0).then(x.1.total_cmp(&y.1)));
         let mut out = vec![false; blocked.len()];
         let mut k = 0;
-        for j in 0..nv {
+        for (j, (row, blocked)) in out.chunks_exact_mut(nu).zip(blocked.chunks_exact(nu)).enumerate() {
             let row_start = k;
             while k < hits.len() && hits[k].0 == j {
                 k += 1;
             }
-            let xs = &hits[row_start..k];
-            let mut left = 0;
-            for (i, &u) in self.u.iter().enumerate() {
-                while left < xs.len() && xs[left].1 <= u {
-                    left += 1;
-                }
-                let border = i == 0 || j == 0 || i == nu - 1 || j == nv - 1;
-                let odd = (xs.len() - left) % 2 == 1;
-                let at = j * nu + i;
-                // The domain's border, when it is the outer loop, keeps every grid point: the
-                // other loops lie strictly inside it (validated), and the border must be whole.
-                out[at] = if border { inside_domain } else { odd != inside_domain && !blocked[at] };
+            // The domain's border, when it is the outer loop, keeps every grid point: the other
+            // loops lie strictly inside it (validated), and the border must be whole.
+            if j == 0 || j == nv - 1 {
+                row.fill(inside_domain);
+                continue;
             }
+            // Between consecutive crossings (a point on one counts as past it) the parity of
+            // the crossings to the right is constant: runs filled at once, not point by point.
+            let xs = &hits[row_start..k];
+            let mut from = 0;
+            for crossed in 0..=xs.len() {
+                let to = xs.get(crossed).map_or(nu, |&(_, x)| self.u.partition_point(|u| *u < x));
+                let odd = (xs.len() - crossed) % 2 == 1;
+                row[from..to.max(from)].fill(odd != inside_domain);
+                from = from.max(to);
+            }
+            for (keep, &b) in row.iter_mut().zip(blocked) {
+                *keep &= !b;
+            }
+            row[0] = inside_domain;
+            row[nu - 1] = inside_domain;
         }
         out
     }

@@ -294,32 +294,29 @@ pub(super) fn triangulate_cells(
         }
     }
     // Band cells no loop passes through: wholly inside or outside, as a retained corner says.
-    for (cell, (&clean, &loops_in)) in band.clean.iter().zip(&has_fragments).enumerate() {
-        if clean || loops_in {
-            continue;
+    // Row by row, as this runs over every cell; the clean cells' area is summed on the way.
+    let widths: Vec<f64> = grid.u.windows(2).map(|w| w[1] - w[0]).collect();
+    let mut clean_area = 0.0;
+    let rows = band.clean.chunks_exact(cu).zip(has_fragments.chunks_exact(cu));
+    for (cj, (clean, loops_in)) in rows.enumerate() {
+        let (below, above) = (&kept[cj * nu..(cj + 1) * nu], &kept[(cj + 1) * nu..(cj + 2) * nu]);
+        let mut clean_width = 0.0;
+        for ci in 0..cu {
+            if clean[ci] {
+                clean_width += widths[ci];
+            } else if !loops_in[ci] && (below[ci] || below[ci + 1] || above[ci] || above[ci + 1]) {
+                let [a, b, c, d] =
+                    [(ci, cj), (ci + 1, cj), (ci + 1, cj + 1), (ci, cj + 1)].map(|(i, j)| points.lattice(grid, i, j));
+                triangles.push([a, b, c]);
+                triangles.push([a, c, d]);
+            }
         }
-        let (ci, cj) = (cell % cu, cell / cu);
-        let corner = [(ci, cj), (ci + 1, cj), (ci + 1, cj + 1), (ci, cj + 1)];
-        if corner.iter().any(|&(i, j)| kept[j * nu + i]) {
-            let [a, b, c, d] = corner.map(|(i, j)| points.lattice(grid, i, j));
-            triangles.push([a, b, c]);
-            triangles.push([a, c, d]);
-        }
+        clean_area += clean_width * (grid.v[cj + 1] - grid.v[cj]);
     }
     // The safety net: the triangles and the clean cells cover exactly the loops' area.
     let band_area: f64 = triangles
         .iter()
         .map(|t| 0.5 * orient(points.position(t[0]), points.position(t[1]), points.position(t[2])))
-        .sum();
-    let clean_area: f64 = band
-        .clean
-        .iter()
-        .enumerate()
-        .filter(|(_, &c)| c)
-        .map(|(cell, _)| {
-            let (ci, cj) = (cell % cu, cell / cu);
-            (grid.u[ci + 1] - grid.u[ci]) * (grid.v[cj + 1] - grid.v[cj])
-        })
         .sum();
     if (band_area + clean_area - expected_area).abs() > 1e-9 * domain_area {
         return None;
