@@ -11,9 +11,7 @@ use super::sampling::Sampler;
 use crate::gl::consts::*;
 use crate::gl::{Gl, MapSample, MapTarget, MeshJob, MeshMode, Slot, Tessellator, Vertex};
 use crate::math::bezier::bernstein;
-use crate::tess::trim::{
-    join_curves, triangulate, triangulate_with, GridStrip, Lattice, TrimLoop, TrimMesh, TrimOptions,
-};
+use crate::tess::trim::{join_curves, triangulate, GridStrip, Lattice, TrimBand, TrimLoop, TrimOptions, TrimPlan};
 use crate::tess::{MapView, Row, RowKernel};
 use std::collections::BTreeMap;
 
@@ -69,27 +67,15 @@ pub(crate) fn draw_trimmed(
         }
     }
     let domain = surface.domain();
-    // Tessellator mode evaluates the whole sampling lattice on the pool while the triangulation
-    // runs; the mesh's grid points then read their values from it.
-    let (mesh, lattice_values) = if tessellate {
-        let lattice = Lattice::lines(domain, &us, &vs);
-        let (mesh, values) = rayon::join(
-            || triangulate_with(&trim_loops, domain, &us, &vs, &BY_CELLS),
-            || LatticeValues::evaluate(&surface.pos, surface.k, lattice),
-        );
-        (mesh, values)
-    } else {
-        (triangulate(&trim_loops, domain, &us, &vs), None)
-    };
-    let mesh = match mesh {
+    if tessellate {
+        return tessellate_trimmed(obj, surface, &trim_loops, domain, (&us, &vs));
+    }
+    let mesh = match triangulate(&trim_loops, domain, &us, &vs) {
         Ok(m) => m,
         Err(e) => return obj.nurbs_error(e.glu_number()),
     };
-    if obj.props.display_mode == GLU_OUTLINE_PATCH && !tessellate {
+    if obj.props.display_mode == GLU_OUTLINE_PATCH {
         return outline_loops(gl, surface, &trim_loops);
-    }
-    if tessellate {
-        return tessellate_trimmed(obj, surface, &mesh, lattice_values);
     }
     let saved_mode = gl.raster.polygon_mode;
     if obj.props.display_mode == GLU_OUTLINE_POLYGON {
@@ -115,19 +101,58 @@ pub(crate) fn draw_trimmed(
     gl.restore_polygon_mode(saved_mode);
 }
 
-/// Tessellator mode: each point of the triangulation evaluated once (on the row path), then the
-/// band along the loops as `GL_TRIANGLES` and the grid cells wholly inside as one
-/// `GL_QUAD_STRIP` per run of cells, as GLU issues its grid blocks.
-fn tessellate_trimmed(obj: &mut NurbsObject, surface: &Surface, mesh: &TrimMesh, lattice: Option<LatticeValues>) {
-    let data = PointValues::new(surface, mesh, lattice);
-    let band = &mesh.band;
-    if let Some(mut sinks) = obj.callbacks.sinks() {
-        if let Some(mut plain) = sinks.plain() {
-            issue_trimmed(&mut plain, mesh, &data);
-        } else {
-            issue_trimmed(&mut sinks, mesh, &data);
+/// Tessellator mode. The sampling lattice is evaluated on the pool while this thread checks the
+/// loops and splits the region ([`TrimPlan`]); then, when only begin, vertex and end callbacks
+/// are registered, the pool triangulates the band along the loops (cell by cell) while this
+/// thread issues the grid cells wholly inside, a `GL_QUAD_STRIP` per run, as GLU issues its grid
+/// blocks; the band follows as `GL_TRIANGLES`. Each point is evaluated once.
+fn tessellate_trimmed(
+    obj: &mut NurbsObject,
+    surface: &Surface,
+    loops: &[TrimLoop],
+    domain: [f64; 4],
+    (us, vs): (&[f64], &[f64]),
+) {
+    let lattice = Lattice::lines(domain, us, vs);
+    let mut values = None;
+    let plan = rayon::in_place_scope(|scope| {
+        scope.spawn(|_| values = LatticeValues::evaluate(&surface.pos, surface.k, lattice));
+        TrimPlan::new(loops, domain, us, vs, &BY_CELLS)
+    });
+    let plan = match plan {
+        Ok(plan) => plan,
+        Err(e) => return obj.nurbs_error(e.glu_number()),
+    };
+    let mut values = values.filter(|v| plan.lattice_lines() == (&v.lattice.u[..], &v.lattice.v[..]));
+    let mut band = None;
+    if let (Some(lattice), Some(mut sinks)) = (&values, obj.callbacks.sinks()) {
+        rayon::in_place_scope(|scope| {
+            scope.spawn(|_| band = Some(plan.band()));
+            let value = |i: u32| lattice.values[plan.grid_index()[i as usize] as usize].as_ref();
+            match sinks.plain() {
+                Some(mut plain) => issue_strips(&mut plain, plan.strips(), value),
+                None => issue_strips(&mut sinks, plan.strips(), value),
+            }
+        });
+        if let Some(Ok(band)) = &band {
+            let data = PointValues::new(surface, &plan, band, values.take());
+            match sinks.plain() {
+                Some(mut plain) => issue_band(&mut plain, &band.triangles, |i| data.get(i)),
+                None => issue_band(&mut sinks, &band.triangles, |i| data.get(i)),
+            }
+            return;
         }
-        return;
+    }
+    // A band that failed after the strips went out is reported as GLU reports a bad trim.
+    let band = match band.unwrap_or_else(|| plan.band()) {
+        Ok(band) => band,
+        Err(e) => return obj.nurbs_error(e.glu_number()),
+    };
+    let data = PointValues::new(surface, &plan, &band, values);
+    let mesh = plan.into_mesh(band);
+    if let Some(mut sinks) = obj.callbacks.sinks() {
+        issue_strips(&mut sinks, &mesh.strips, |i| data.get(i));
+        return issue_band(&mut sinks, &mesh.band, |i| data.get(i));
     }
     // Other callbacks registered: attributes and normals per vertex, before the position.
     let per_vertex = !surface.attributes.is_empty() || obj.callbacks.wants_normals();
@@ -140,11 +165,6 @@ fn tessellate_trimmed(obj: &mut NurbsObject, surface: &Surface, mesh: &TrimMesh,
             obj.callbacks.attribute(GLU_NURBS_VERTEX, d);
         }
     };
-    if !band.is_empty() {
-        obj.callbacks.begin(GL_TRIANGLES);
-        band.iter().flatten().for_each(|&i| emit(obj, i));
-        obj.callbacks.end();
-    }
     for strip in &mesh.strips {
         obj.callbacks.begin(GL_QUAD_STRIP);
         for (top, bottom) in strip_pairs(*strip) {
@@ -153,23 +173,31 @@ fn tessellate_trimmed(obj: &mut NurbsObject, surface: &Surface, mesh: &TrimMesh,
         }
         obj.callbacks.end();
     }
+    if !mesh.band.is_empty() {
+        obj.callbacks.begin(GL_TRIANGLES);
+        mesh.band.iter().flatten().for_each(|&i| emit(obj, i));
+        obj.callbacks.end();
+    }
 }
 
-/// The fast path of [`tessellate_trimmed`] (only begin, vertex and end callbacks): the band as
-/// `GL_TRIANGLES`, then a `GL_QUAD_STRIP` per run of grid cells.
-fn issue_trimmed(sinks: &mut impl StripSink, mesh: &TrimMesh, data: &PointValues) {
-    if !mesh.band.is_empty() {
-        sinks.begin(GL_TRIANGLES);
-        mesh.band.iter().flatten().filter_map(|&i| data.get(i)).for_each(|d| sinks.vertex(d));
-        sinks.end();
-    }
-    for strip in &mesh.strips {
+/// The grid strips, a `GL_QUAD_STRIP` per run of cells, through the fast callbacks.
+fn issue_strips<'v>(sinks: &mut impl StripSink, strips: &[GridStrip], value: impl Fn(u32) -> Option<&'v [f32; 5]>) {
+    for strip in strips {
         sinks.begin(GL_QUAD_STRIP);
         for (top, bottom) in strip_pairs(*strip) {
-            for d in [top, bottom].into_iter().filter_map(|i| data.get(i)) {
+            for d in [top, bottom].into_iter().filter_map(&value) {
                 sinks.vertex(d);
             }
         }
+        sinks.end();
+    }
+}
+
+/// The band's triangles as `GL_TRIANGLES` through the fast callbacks.
+fn issue_band<'v>(sinks: &mut impl StripSink, triangles: &[[u32; 3]], value: impl Fn(u32) -> Option<&'v [f32; 5]>) {
+    if !triangles.is_empty() {
+        sinks.begin(GL_TRIANGLES);
+        triangles.iter().flatten().filter_map(|&i| value(i)).for_each(|d| sinks.vertex(d));
         sinks.end();
     }
 }
@@ -263,28 +291,36 @@ fn piece_kernel<'a>(
     RowKernel::new(view, &su, &sv, false)
 }
 
-/// The vertex-callback data of a trimmed mesh's points: grid points from the lattice's values
-/// when they were evaluated on the same lattice, the rest evaluated here.
-struct PointValues<'a> {
-    mesh: &'a TrimMesh,
+/// The vertex-callback data of a trimmed mesh's points: the grid points from the lattice's
+/// values when there are some, the rest (the band's points, or all) evaluated here.
+struct PointValues {
+    grid_index: Vec<u32>,
     lattice: Option<LatticeValues>,
-    /// The points not read from the lattice: the loop points, or every point without one.
     rest: Vec<Option<[f32; 5]>>,
     first_rest: usize,
 }
 
-impl<'a> PointValues<'a> {
-    fn new(surface: &Surface, mesh: &'a TrimMesh, lattice: Option<LatticeValues>) -> Self {
-        let lattice = lattice.filter(|l| l.lattice.same_lines(&mesh.lattice));
-        let first_rest = if lattice.is_some() { mesh.lattice.index.len() } else { 0 };
-        let rest = evaluate_positions(&surface.pos, surface.k, &mesh.points[first_rest..]);
-        Self { mesh, lattice, rest, first_rest }
+impl PointValues {
+    fn new(surface: &Surface, plan: &TrimPlan, band: &TrimBand, lattice: Option<LatticeValues>) -> Self {
+        let (pos, k) = (&surface.pos, surface.k);
+        match lattice {
+            Some(l) => Self {
+                grid_index: plan.grid_index().to_vec(),
+                lattice: Some(l),
+                rest: evaluate_positions(pos, k, &band.points),
+                first_rest: plan.grid_points().len(),
+            },
+            None => {
+                let all: Vec<[f64; 2]> = plan.grid_points().iter().chain(&band.points).copied().collect();
+                Self { grid_index: Vec::new(), lattice: None, rest: evaluate_positions(pos, k, &all), first_rest: 0 }
+            }
+        }
     }
 
     fn get(&self, i: u32) -> Option<&[f32; 5]> {
         let i = i as usize;
         match &self.lattice {
-            Some(l) if i < self.first_rest => l.values[self.mesh.lattice.index[i] as usize].as_ref(),
+            Some(l) if i < self.first_rest => l.values[self.grid_index[i] as usize].as_ref(),
             _ => self.rest[i - self.first_rest].as_ref(),
         }
     }

@@ -397,57 +397,146 @@ pub fn triangulate_with(
     vs: &[f64],
     options: &TrimOptions,
 ) -> Result<TrimMesh, TrimError> {
-    let [u0, u1, v0, v1] = domain;
-    if !domain.iter().all(|c| c.is_finite() && c.abs() <= spade::MAX_ALLOWED_VALUE) || u0 >= u1 || v0 >= v1 {
-        return Err(TrimError::Misoriented);
-    }
-    let split = options.split_at_grid_lines;
-    let mut loops: Vec<Vec<P>> = loops.iter().map(clean_loop).collect::<Result<_, _>>()?;
-    if !loops.is_empty() {
-        validate(&loops, domain)?;
-    }
-    // No loops, or one running round the domain's border (GLU's `makeBorderTrim`, and what most
-    // programs pass as their outer loop): the grid's border lines carry grid points and the
-    // region starts inside; only the other loops make a band.
-    let inside_domain = loops.is_empty() || {
-        let before = loops.len();
-        loops.retain(|l| !is_domain_border(l, domain));
-        loops.len() < before
-    };
-    let Lattice { u, v, .. } = Lattice::lines(domain, us, vs);
-    let mut grid = Grid { u, v };
-    let splits = split || options.by_cells;
-    let budget = |g: &Grid| g.point_count().saturating_add(if splits { g.count_crossings(&loops) } else { 0 });
-    while budget(&grid) > options.max_points && grid.coarsen() {}
-    let clearance = if options.clearance.is_nan() { 0.0 } else { options.clearance.clamp(0.0, 0.5) };
-    let (mut vertices, mut edges) = (Vec::new(), Vec::new());
-    let mut blocked = vec![false; grid.point_count()];
-    let mut touched = vec![false; grid.cell_count()];
-    for l in &loops {
-        let first = vertices.len();
-        for (i, &a) in l.iter().enumerate() {
-            let b = l[(i + 1) % l.len()];
-            vertices.push(a);
-            let cuts = grid.crossings(a, b);
-            grid.block_near(a, b, &cuts, clearance, &mut blocked);
-            grid.touch(a, b, &cuts, &mut touched);
-            if split {
-                vertices.extend(grid.thin(a, b, &cuts));
+    let plan = TrimPlan::new(loops, domain, us, vs, options)?;
+    let band = plan.band()?;
+    Ok(plan.into_mesh(band))
+}
+
+/// A trimmed region half triangulated: the loops checked, the grid points kept and the grid
+/// cells wholly inside taken as strips, the band along the loops still to triangulate
+/// ([`TrimPlan::band`]). [`triangulate_with`] is [`TrimPlan::new`], [`TrimPlan::band`] and
+/// [`TrimPlan::into_mesh`]; a caller may use the strips while the band is being triangulated
+/// (GLU's tessellator mode issues them meanwhile).
+pub struct TrimPlan {
+    grid: Grid,
+    loops: Vec<Vec<P>>,
+    kept: Vec<bool>,
+    band: Band,
+    /// The Delaunay triangulation's vertices and constraint edges.
+    loop_points: Vec<P>,
+    edges: Vec<[usize; 2]>,
+    by_cells: bool,
+    strips: Vec<GridStrip>,
+}
+
+/// The band of a [`TrimPlan`]: its triangles, over the plan's grid points (ids below
+/// `TrimPlan::grid_points().len()`) and the band's own `points` after them.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct TrimBand {
+    /// The points the band adds after the grid points: loop points, crossings.
+    pub points: Vec<[f64; 2]>,
+    /// Counter-clockwise triangles.
+    pub triangles: Vec<[u32; 3]>,
+}
+
+impl TrimPlan {
+    /// Checks the loops and splits the region into grid strips and the band; see
+    /// [`triangulate_with`] for the errors.
+    pub fn new(
+        loops: &[TrimLoop],
+        domain: [f64; 4],
+        us: &[f64],
+        vs: &[f64],
+        options: &TrimOptions,
+    ) -> Result<Self, TrimError> {
+        let [u0, u1, v0, v1] = domain;
+        if !domain.iter().all(|c| c.is_finite() && c.abs() <= spade::MAX_ALLOWED_VALUE) || u0 >= u1 || v0 >= v1 {
+            return Err(TrimError::Misoriented);
+        }
+        let split = options.split_at_grid_lines;
+        let mut loops: Vec<Vec<P>> = loops.iter().map(clean_loop).collect::<Result<_, _>>()?;
+        if !loops.is_empty() {
+            validate(&loops, domain)?;
+        }
+        // No loops, or one running round the domain's border (GLU's `makeBorderTrim`, and what most
+        // programs pass as their outer loop): the grid's border lines carry grid points and the
+        // region starts inside; only the other loops make a band.
+        let inside_domain = loops.is_empty() || {
+            let before = loops.len();
+            loops.retain(|l| !is_domain_border(l, domain));
+            loops.len() < before
+        };
+        let Lattice { u, v, .. } = Lattice::lines(domain, us, vs);
+        let mut grid = Grid { u, v };
+        let splits = split || options.by_cells;
+        let budget = |g: &Grid| g.point_count().saturating_add(if splits { g.count_crossings(&loops) } else { 0 });
+        while budget(&grid) > options.max_points && grid.coarsen() {}
+        let clearance = if options.clearance.is_nan() { 0.0 } else { options.clearance.clamp(0.0, 0.5) };
+        let (mut vertices, mut edges) = (Vec::new(), Vec::new());
+        let mut blocked = vec![false; grid.point_count()];
+        let mut touched = vec![false; grid.cell_count()];
+        for l in &loops {
+            let first = vertices.len();
+            for (i, &a) in l.iter().enumerate() {
+                let b = l[(i + 1) % l.len()];
+                vertices.push(a);
+                let cuts = grid.crossings(a, b);
+                grid.block_near(a, b, &cuts, clearance, &mut blocked);
+                grid.touch(a, b, &cuts, &mut touched);
+                if split {
+                    vertices.extend(grid.thin(a, b, &cuts));
+                }
             }
+            let last = vertices.len();
+            edges.extend((first..last).map(|i| [i, if i + 1 == last { first } else { i + 1 }]));
         }
-        let last = vertices.len();
-        edges.extend((first..last).map(|i| [i, if i + 1 == last { first } else { i + 1 }]));
+        let kept = grid.retained_mask(&loops, &blocked, inside_domain);
+        let band = Band::new(&grid, &kept, &touched, inside_domain);
+        let strips = band.strips(&grid);
+        Ok(Self { grid, loops, kept, band, loop_points: vertices, edges, by_cells: options.by_cells, strips })
     }
-    let kept = grid.retained_mask(&loops, &blocked, inside_domain);
-    let band = Band::new(&grid, &kept, &touched, inside_domain);
-    if options.by_cells {
-        if let Some((extra, triangles)) = cells::triangulate_cells(&band, &grid, &loops, &kept) {
-            return Ok(band.into_mesh(&grid, extra, triangles));
+
+    /// The retained grid points, row by row: the mesh's first points.
+    #[must_use]
+    pub fn grid_points(&self) -> &[[f64; 2]] {
+        &self.band.grid_points
+    }
+
+    /// The grid cells wholly inside the region, as runs along grid rows.
+    #[must_use]
+    pub fn strips(&self) -> &[GridStrip] {
+        &self.strips
+    }
+
+    /// The lattice's u and v lines (see [`Lattice`]).
+    #[must_use]
+    pub fn lattice_lines(&self) -> (&[f64], &[f64]) {
+        (&self.grid.u, &self.grid.v)
+    }
+
+    /// Each grid point's index in the lattice (see [`Lattice::index`]).
+    #[must_use]
+    pub fn grid_index(&self) -> &[u32] {
+        &self.band.grid_index
+    }
+
+    /// Triangulates the band: cell by cell with [`TrimOptions::by_cells`] (the Delaunay
+    /// triangulation where that hands over), else by the constrained Delaunay triangulation.
+    pub fn band(&self) -> Result<TrimBand, TrimError> {
+        if self.by_cells {
+            if let Some((points, triangles)) = cells::triangulate_cells(&self.band, &self.grid, &self.loops, &self.kept)
+            {
+                return Ok(TrimBand { points, triangles });
+            }
+            #[cfg(test)]
+            CELL_FALLBACKS.with(|c| c.set(c.get() + 1));
         }
-        #[cfg(test)]
-        CELL_FALLBACKS.with(|c| c.set(c.get() + 1));
+        self.band.triangulate(&self.grid, &self.loop_points, self.edges.clone())
     }
-    band.triangulate(&grid, &vertices, edges)
+
+    /// The whole mesh: grid points then the band's points, the band's triangles, the strips.
+    #[must_use]
+    pub fn into_mesh(mut self, band: TrimBand) -> TrimMesh {
+        let mut points = std::mem::take(&mut self.band.grid_points);
+        points.extend(band.points);
+        let index = std::mem::take(&mut self.band.grid_index);
+        TrimMesh {
+            points,
+            band: band.triangles,
+            strips: self.strips,
+            lattice: Lattice { u: self.grid.u, v: self.grid.v, index },
+        }
+    }
 }
 
 /// A CDT vertex: a loop (or split) point, or a grid point with its index in the mesh.
@@ -539,30 +628,9 @@ impl Band {
         ci < grid.u.len() - 1 && cj < grid.v.len() - 1 && self.clean[cj * (grid.u.len() - 1) + ci]
     }
 
-    /// The mesh of the grid points, the band's `triangles` over them and the `extra` points
-    /// after them, and the clean cells' strips.
-    fn into_mesh(mut self, grid: &Grid, extra: Vec<P>, triangles: Vec<[u32; 3]>) -> TrimMesh {
-        let mut points = std::mem::take(&mut self.grid_points);
-        points.extend(extra);
-        let index = std::mem::take(&mut self.grid_index);
-        let mut mesh = TrimMesh {
-            points,
-            band: triangles,
-            strips: Vec::new(),
-            lattice: Lattice { u: grid.u.clone(), v: grid.v.clone(), index },
-        };
-        self.append_strips(grid, &mut mesh);
-        mesh
-    }
-
     /// Triangulates the band (the loops' points and edges, the retained grid points next to a
     /// band cell, the clean region's outline as constraints) and appends the clean cells.
-    fn triangulate(
-        mut self,
-        grid: &Grid,
-        loop_points: &[P],
-        mut edges: Vec<[usize; 2]>,
-    ) -> Result<TrimMesh, TrimError> {
+    fn triangulate(&self, grid: &Grid, loop_points: &[P], mut edges: Vec<[usize; 2]>) -> Result<TrimBand, TrimError> {
         let mut vertices: Vec<BandVertex> =
             loop_points.iter().map(|&p| BandVertex { position: point(p), mesh_index: LOOP_VERTEX }).collect();
         // Grid points with a band cell among their cells; their CDT index per grid point.
@@ -577,12 +645,7 @@ impl Band {
             vertices.push(BandVertex { position: point(self.grid_points[m as usize]), mesh_index: m });
         }
         self.outline_edges(grid, &cdt_index, &mut edges);
-        let mut mesh = TrimMesh {
-            points: std::mem::take(&mut self.grid_points),
-            band: Vec::with_capacity(vertices.len() * 2),
-            strips: Vec::new(),
-            lattice: Lattice { u: grid.u.clone(), v: grid.v.clone(), index: std::mem::take(&mut self.grid_index) },
-        };
+        let mut band = TrimBand { points: Vec::new(), triangles: Vec::with_capacity(vertices.len() * 2) };
         if !vertices.is_empty() {
             let mut conflict = false;
             let cdt =
@@ -591,10 +654,9 @@ impl Band {
             if conflict {
                 return Err(TrimError::Intersecting);
             }
-            self.band_triangles(grid, &cdt, &mut mesh);
+            self.band_triangles(grid, &cdt, &mut band);
         }
-        self.append_strips(grid, &mut mesh);
-        Ok(mesh)
+        Ok(band)
     }
 
     /// The clean region's outline as constraint edges (CDT indices): the cell sides between a
@@ -625,7 +687,7 @@ impl Band {
     /// The retained band triangles of the CDT: a flood fill from the outer face, toggling parity
     /// at every loop edge (not at the clean outline); odd parity is inside an odd number of
     /// loops. Triangles inside clean cells are left to [`Band::append_strips`].
-    fn band_triangles(&self, grid: &Grid, cdt: &ConstrainedDelaunayTriangulation<BandVertex>, mesh: &mut TrimMesh) {
+    fn band_triangles(&self, grid: &Grid, cdt: &ConstrainedDelaunayTriangulation<BandVertex>, band: &mut TrimBand) {
         let is_loop_edge = |e: DirectedEdgeHandle<'_, BandVertex, (), CdtEdge<()>, ()>| {
             e.is_constraint_edge()
                 && e.from().data().mesh_index == LOOP_VERTEX
@@ -668,32 +730,32 @@ impl Band {
                 }
                 let slot = &mut loop_index[v.fix().index()];
                 if *slot == u32::MAX {
-                    *slot = mesh.points.len() as u32;
-                    mesh.points.push([data.position.x, data.position.y]);
+                    *slot = (self.grid_points.len() + band.points.len()) as u32;
+                    band.points.push([data.position.x, data.position.y]);
                 }
                 *slot
             });
-            mesh.band.push(tri);
+            band.triangles.push(tri);
         }
     }
 
     /// The clean cells as runs along grid rows.
-    fn append_strips(&self, grid: &Grid, mesh: &mut TrimMesh) {
+    fn strips(&self, grid: &Grid) -> Vec<GridStrip> {
         let (nu, cu) = (grid.u.len(), grid.u.len().saturating_sub(1));
+        let mut strips = Vec::new();
         for (cj, row) in self.clean.chunks_exact(cu.max(1)).enumerate() {
             let mut ci = 0;
             while ci < row.len() {
                 let start = ci;
-                while ci < row.len() && row[ci] {
-                    ci += 1;
-                }
+                ci += row[ci..].iter().take_while(|&&clean| clean).count();
                 if ci > start {
                     let (bottom, top) = (self.mesh_index[cj * nu + start], self.mesh_index[(cj + 1) * nu + start]);
-                    mesh.strips.push(GridStrip { bottom, top, cells: (ci - start) as u32 });
+                    strips.push(GridStrip { bottom, top, cells: (ci - start) as u32 });
                 }
                 ci += 1;
             }
         }
+        strips
     }
 }
 
