@@ -283,8 +283,12 @@ fn batches(patches: &[PatchGrid]) -> Vec<&[PatchGrid]> {
 /// Evaluates a batch's grids into `out` (resized), in parallel; whether each succeeded.
 fn evaluate_batch(surface: &Surface, batch: &[PatchGrid], out: &mut Vec<[f32; 5]>) -> Vec<bool> {
     use rayon::prelude::*;
-    out.clear();
-    out.resize(batch.iter().map(grid_size).sum(), [0.0; 5]);
+    // Every entry is overwritten (a patch that fails is redone point by point): no zeroing.
+    let size = batch.iter().map(grid_size).sum();
+    if out.len() < size {
+        out.resize(size, [0.0; 5]);
+    }
+    out.truncate(size);
     let mut chunks = Vec::with_capacity(batch.len());
     let mut free = out.as_mut_slice();
     for patch in batch {

@@ -99,8 +99,11 @@ fn combine_fixed<S: Scalar, const K: usize>(basis: &[S], coeffs: &[S], n: usize,
     const W: usize = 4;
     let coeffs: [S; K] = std::array::from_fn(|a| coeffs[a]);
     let rows: [&[S]; K] = std::array::from_fn(|a| &basis[a * n..(a + 1) * n]);
-    out.clear();
-    out.resize(n, S::ZERO);
+    // Every entry is written below; a reused row of the right length is not zeroed first.
+    if out.len() != n {
+        out.clear();
+        out.resize(n, S::ZERO);
+    }
     let (body, tail) = out.split_at_mut(n - n % W);
     for (k, o) in body.chunks_exact_mut(W).enumerate() {
         let mut sum = [S::ZERO; W];
