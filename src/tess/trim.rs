@@ -514,7 +514,8 @@ impl TrimPlan {
     /// triangulation where that hands over), else by the constrained Delaunay triangulation.
     pub fn band(&self) -> Result<TrimBand, TrimError> {
         if self.by_cells {
-            if let Some((points, triangles)) = cells::triangulate_cells(&self.band, &self.grid, &self.loops, &self.kept)
+            if let Some((points, triangles)) =
+                cells::triangulate_cells(&self.band, &self.grid, &self.loops, &self.kept, &self.strips)
             {
                 return Ok(TrimBand { points, triangles });
             }

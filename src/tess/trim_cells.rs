@@ -12,7 +12,7 @@
 //! a result whose area differs from the loops' shoelace area: the caller then uses the
 //! constrained Delaunay triangulation.
 
-use super::{orient, signed_area, Band, Grid, P};
+use super::{orient, signed_area, Band, Grid, GridStrip, P};
 
 /// A point's place on a cell's boundary, counter-clockwise from the bottom-left corner: the side
 /// (0 bottom, 1 right, 2 top, 3 left), the coordinate along it increasing counter-clockwise, and
@@ -220,6 +220,7 @@ pub(super) fn triangulate_cells(
     grid: &Grid,
     loops: &[Vec<P>],
     kept: &[bool],
+    strips: &[GridStrip],
 ) -> Option<(Vec<P>, Vec<[u32; 3]>)> {
     let loops: Vec<Vec<P>> =
         loops.iter().map(|l| l.iter().map(|p| [snap(&grid.u, p[0]), snap(&grid.v, p[1])]).collect()).collect();
@@ -237,7 +238,7 @@ pub(super) fn triangulate_cells(
     order.sort_by_key(|&f| fragments[f].cell);
     let mut triangles = Vec::new();
     let mut has_fragments = vec![false; band.clean.len()];
-    let mut polygon = Vec::new();
+    let (mut polygon, mut entries, mut visited, mut passed) = (Vec::new(), Vec::new(), Vec::new(), Vec::new());
     for group in order.chunk_by(|&a, &b| fragments[a].cell == fragments[b].cell) {
         let cell = fragments[group[0]].cell;
         has_fragments[cell] = true;
@@ -249,9 +250,11 @@ pub(super) fn triangulate_cells(
             ((2, -grid.u[ci + 1], f64::NEG_INFINITY), (ci + 1, cj + 1)),
             ((3, -grid.v[cj + 1], f64::NEG_INFINITY), (ci, cj + 1)),
         ];
-        let mut entries: Vec<usize> = group.to_vec();
+        entries.clear();
+        entries.extend_from_slice(group);
         entries.sort_by(|&a, &b| key_order(&fragments[a].entry, &fragments[b].entry));
-        let mut visited = vec![false; entries.len()];
+        visited.clear();
+        visited.resize(entries.len(), false);
         for start in 0..entries.len() {
             if visited[start] {
                 continue;
@@ -271,16 +274,17 @@ pub(super) fn triangulate_cells(
                 let wrapped = next.is_none();
                 let next = next.unwrap_or(0);
                 let next_entry = fragments[entries[next]].entry;
-                let passed: Vec<(usize, usize)> = if wrapped {
+                passed.clear();
+                if wrapped {
                     let after = corners.iter().filter(|(key, _)| key_less(&f.exit, key));
                     let before = corners.iter().filter(|(key, _)| key_less(key, &next_entry));
-                    after.chain(before).map(|&(_, ij)| ij).collect()
+                    passed.extend(after.chain(before).map(|&(_, ij)| ij));
                 } else {
                     let between =
                         corners.iter().filter(|(key, _)| key_less(&f.exit, key) && key_less(key, &next_entry));
-                    between.map(|&(_, ij)| ij).collect()
-                };
-                for (i, j) in passed {
+                    passed.extend(between.map(|&(_, ij)| ij));
+                }
+                for &(i, j) in &passed {
                     polygon.push(points.lattice(grid, i, j));
                 }
                 at = next;
@@ -288,31 +292,38 @@ pub(super) fn triangulate_cells(
                     break;
                 }
             }
-            for mut piece in split_pinches(&polygon, &points) {
-                clip_ears(&mut piece, &points, &mut triangles)?;
+            if has_pinch(&polygon, &points) {
+                for mut piece in split_pinches(&polygon, &points) {
+                    clip_ears(&mut piece, &points, &mut triangles)?;
+                }
+            } else {
+                clip_ears(&mut polygon, &points, &mut triangles)?;
             }
         }
     }
     // Band cells no loop passes through: wholly inside or outside, as a retained corner says.
-    // Row by row, as this runs over every cell; the clean cells' area is summed on the way.
-    let widths: Vec<f64> = grid.u.windows(2).map(|w| w[1] - w[0]).collect();
-    let mut clean_area = 0.0;
+    // Row by row, as this runs over every cell.
     let rows = band.clean.chunks_exact(cu).zip(has_fragments.chunks_exact(cu));
     for (cj, (clean, loops_in)) in rows.enumerate() {
         let (below, above) = (&kept[cj * nu..(cj + 1) * nu], &kept[(cj + 1) * nu..(cj + 2) * nu]);
-        let mut clean_width = 0.0;
         for ci in 0..cu {
-            if clean[ci] {
-                clean_width += widths[ci];
-            } else if !loops_in[ci] && (below[ci] || below[ci + 1] || above[ci] || above[ci + 1]) {
+            if !clean[ci] && !loops_in[ci] && (below[ci] || below[ci + 1] || above[ci] || above[ci + 1]) {
                 let [a, b, c, d] =
                     [(ci, cj), (ci + 1, cj), (ci + 1, cj + 1), (ci, cj + 1)].map(|(i, j)| points.lattice(grid, i, j));
                 triangles.push([a, b, c]);
                 triangles.push([a, c, d]);
             }
         }
-        clean_area += clean_width * (grid.v[cj + 1] - grid.v[cj]);
     }
+    // The clean cells' area, run by run.
+    let clean_area: f64 = strips
+        .iter()
+        .map(|s| {
+            let (bottom, top) = (band.grid_points[s.bottom as usize], band.grid_points[s.top as usize]);
+            let right = band.grid_points[(s.bottom + s.cells) as usize];
+            (right[0] - bottom[0]) * (top[1] - bottom[1])
+        })
+        .sum();
     // The safety net: the triangles and the clean cells cover exactly the loops' area.
     let band_area: f64 = triangles
         .iter()
@@ -409,6 +420,15 @@ fn dedup_consecutive(ids: &mut Vec<u32>, start: usize) {
     ids.truncate(write);
 }
 
+/// Whether the walk's polygon passes a point twice (not counting a repeat of the previous one).
+fn has_pinch(polygon: &[u32], points: &Points) -> bool {
+    let n = polygon.len();
+    (0..n).any(|i| {
+        let p = points.position(polygon[i]);
+        (i + 2..n).any(|j| points.position(polygon[j]) == p && !(i == 0 && j == n - 1))
+    })
+}
+
 /// The walk's polygon cut at every point it passes twice (two pieces of the region meeting at
 /// a point, as a loop vertex on a corner leaves them) into simple cycles.
 fn split_pinches(polygon: &[u32], points: &Points) -> Vec<Vec<u32>> {
@@ -433,6 +453,19 @@ fn split_pinches(polygon: &[u32], points: &Points) -> Vec<Vec<u32>> {
         }
     }
     pieces
+}
+
+/// Twice the signed area of the polygon of ids (its sign is what counts).
+fn ring_area(polygon: &[u32], at: &impl Fn(u32) -> P) -> f64 {
+    let Some(&first) = polygon.first() else { return 0.0 };
+    let o = at(first);
+    let n = polygon.len();
+    (0..n)
+        .map(|i| {
+            let (a, b) = (at(polygon[i]), at(polygon[(i + 1) % n]));
+            (a[0] - o[0]) * (b[1] - o[1]) - (b[0] - o[0]) * (a[1] - o[1])
+        })
+        .sum()
 }
 
 /// Removes repeated points and the zero-width spikes where the walk runs back along itself (a
@@ -467,8 +500,7 @@ fn remove_spikes(polygon: &mut Vec<u32>, at: &impl Fn(u32) -> P) {
 fn clip_ears(polygon: &mut Vec<u32>, points: &Points, out: &mut Vec<[u32; 3]>) -> Option<()> {
     let at = |id: u32| points.position(id);
     remove_spikes(polygon, &at);
-    let ring: Vec<P> = polygon.iter().map(|&id| at(id)).collect();
-    let area = signed_area(&ring);
+    let area = ring_area(polygon, &at);
     if area < 0.0 {
         return None;
     }
@@ -497,8 +529,7 @@ fn clip_ears(polygon: &mut Vec<u32>, points: &Points, out: &mut Vec<[u32; 3]>) -
                 polygon.remove(i);
             }
             None => {
-                let ring: Vec<P> = polygon.iter().map(|&id| at(id)).collect();
-                return (signed_area(&ring) == 0.0).then_some(());
+                return (ring_area(polygon, &at) == 0.0).then_some(());
             }
         }
     }
