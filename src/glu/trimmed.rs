@@ -11,7 +11,7 @@ use super::sampling::Sampler;
 use crate::gl::consts::*;
 use crate::gl::{Gl, MapSample, MapTarget, MeshJob, MeshMode, Slot, Tessellator, Vertex};
 use crate::math::bezier::bernstein;
-use crate::tess::trim::{join_curves, triangulate, GridStrip, Lattice, TrimBand, TrimLoop, TrimOptions, TrimPlan};
+use crate::tess::trim::{join_curves, triangulate_with, GridStrip, Lattice, TrimBand, TrimLoop, TrimOptions, TrimPlan};
 use crate::tess::{MapView, Row, RowKernel};
 use std::collections::BTreeMap;
 
@@ -30,7 +30,8 @@ fn grid_lines(steps: &[PatchGrid]) -> (Vec<f64>, Vec<f64>) {
     (us, vs)
 }
 
-/// Tessellator mode's triangulation: the band cell by cell, as GLU's slicer cuts its grid.
+/// The triangulation of trimmed surfaces in both modes: the band cell by cell, as GLU's slicer
+/// cuts its grid.
 const BY_CELLS: TrimOptions = TrimOptions::DEFAULT.with_clearance(0.0).with_by_cells(true);
 
 /// Draws a trimmed surface.
@@ -70,7 +71,7 @@ pub(crate) fn draw_trimmed(
     if tessellate {
         return tessellate_trimmed(obj, surface, &trim_loops, domain, (&us, &vs));
     }
-    let mesh = match triangulate(&trim_loops, domain, &us, &vs) {
+    let mesh = match triangulate_with(&trim_loops, domain, &us, &vs, &BY_CELLS) {
         Ok(m) => m,
         Err(e) => return obj.nurbs_error(e.glu_number()),
     };
