@@ -719,6 +719,11 @@ impl Band {
         let mut loop_index = vec![u32::MAX; cdt.num_vertices()];
         for f in cdt.inner_faces().filter(|f| parity[f.fix().index()] == Some(true)) {
             let [a, b, c] = f.positions();
+            // Grid points in a row can make the hull, and the bulk-loaded triangulation then
+            // has faces of no area along it: nothing to draw.
+            if orient([a.x, a.y], [b.x, b.y], [c.x, c.y]) <= 0.0 {
+                continue;
+            }
             let centroid = grid.cell_coords([(a.x + b.x + c.x) / 3.0, (a.y + b.y + c.y) / 3.0]);
             let (ci, cj) = (centroid[0].floor() as usize, centroid[1].floor() as usize);
             if ci < grid.u.len() - 1 && cj < grid.v.len() - 1 && self.is_clean(grid, ci, cj) {
