@@ -244,10 +244,17 @@ pub fn run_bands<B: Send>(bands: impl Iterator<Item = B>, work: impl Fn(usize, B
         }
         return;
     }
-    rayon::scope(|scope| {
+    // The caller takes the first band itself (it would only wait otherwise), so the first band's
+    // memory stays with one core from call to call, and one pool thread fewer has to wake.
+    let mut bands = bands.into_iter().enumerate();
+    let first = bands.next();
+    rayon::in_place_scope(|scope| {
         let work = &work;
-        for (k, band) in bands.into_iter().enumerate() {
+        for (k, band) in bands {
             scope.spawn(move |_| work(k, band));
+        }
+        if let Some((k, band)) = first {
+            work(k, band);
         }
     });
 }
