@@ -251,9 +251,18 @@ impl LatticeValues {
                     let Some(kernel) = kernel else { continue };
                     kernel.eval_row(local_j, row);
                     let [x, y, z, w] = &row.point;
-                    for (n, (o, &u)) in line[urange.clone()].iter_mut().zip(&lattice.u[urange.clone()]).enumerate() {
-                        let w = if k == 4 { w[n] } else { 1.0 };
-                        *o = Some([(x[n] / w) as f32, (y[n] / w) as f32, (z[n] / w) as f32, u as f32, v]);
+                    let xyz = x.iter().zip(y).zip(z).map(|((x, y), z)| [*x, *y, *z]);
+                    let out = line[urange.clone()].iter_mut().zip(&lattice.u[urange.clone()]);
+                    // Divided by w only when rational: a division per coordinate costs more than
+                    // the rest of the point's work.
+                    if k == 4 {
+                        for ((o, &u), ([x, y, z], w)) in out.zip(xyz.zip(w)) {
+                            *o = Some([(x / w) as f32, (y / w) as f32, (z / w) as f32, u as f32, v]);
+                        }
+                    } else {
+                        for ((o, &u), [x, y, z]) in out.zip(xyz) {
+                            *o = Some([x as f32, y as f32, z as f32, u as f32, v]);
+                        }
                     }
                 }
             },

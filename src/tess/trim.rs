@@ -465,16 +465,17 @@ impl TrimPlan {
         let (mut vertices, mut edges) = (Vec::new(), Vec::new());
         let mut blocked = vec![false; grid.point_count()];
         let mut touched = vec![false; grid.cell_count()];
+        let mut trace = EdgeTrace::default();
         for l in &loops {
             let first = vertices.len();
             for (i, &a) in l.iter().enumerate() {
                 let b = l[(i + 1) % l.len()];
                 vertices.push(a);
-                let cuts = grid.crossings(a, b);
-                grid.block_near(a, b, &cuts, clearance, &mut blocked);
-                grid.touch(a, b, &cuts, &mut touched);
+                grid.trace(a, b, &mut trace);
+                grid.block_near(&trace.coords, clearance, &mut blocked);
+                grid.touch(&trace.coords, &mut touched);
                 if split {
-                    vertices.extend(grid.thin(a, b, &cuts));
+                    vertices.extend(grid.thin(a, b, &trace.cuts));
                 }
             }
             let last = vertices.len();
@@ -585,12 +586,18 @@ impl Band {
         for (j, ((row, slots), &v)) in
             kept.chunks_exact(nu).zip(mesh_index.chunks_exact_mut(nu)).zip(&grid.v).enumerate()
         {
-            for (i, ((&keep, slot), &u)) in row.iter().zip(slots).zip(&grid.u).enumerate() {
-                if keep {
-                    *slot = grid_points.len() as u32;
-                    grid_points.push([u, v]);
-                    grid_index.push((j * nu + i) as u32);
+            // Run by run of kept points (most rows are one or two runs): each a simple loop.
+            let mut from = 0;
+            while let Some(start) = row[from..].iter().position(|&keep| keep).map(|k| from + k) {
+                let end = row[start..].iter().position(|&keep| !keep).map_or(nu, |k| start + k);
+                let first = grid_points.len() as u32;
+                for (k, slot) in slots[start..end].iter_mut().enumerate() {
+                    *slot = first + k as u32;
                 }
+                grid_points.extend(grid.u[start..end].iter().map(|&u| [u, v]));
+                let row_start = (j * nu) as u32;
+                grid_index.extend((start as u32..end as u32).map(|i| row_start + i));
+                from = end;
             }
         }
         // Row slices rather than index arithmetic per cell: this runs over every cell.
@@ -912,7 +919,7 @@ fn find_touching_edges(loops: &[Vec<P>]) -> Option<TrimError> {
     let cell_of = |x: f64, lo: f64, hi: f64| {
         let w = hi - lo;
         if w > 0.0 {
-            (((x - lo) / w * cells as f64).floor().max(0.0) as usize).min(cells - 1)
+            (((x - lo) / w * cells as f64).max(0.0) as usize).min(cells - 1)
         } else {
             0
         }
@@ -980,6 +987,46 @@ fn grid_lines(values: &[f64], lo: f64, hi: f64) -> Vec<f64> {
     v
 }
 
+/// How many of the sorted `lines` are at most x (`lines.partition_point(|l| *l <= x)`).
+/// The answer is guessed as if the lines were evenly spaced (as GLU's sampling lines are within
+/// a piece), checked against the lines and stepped; a binary search only when the guess is far.
+/// Trimming asks this for every loop point and crossing, where a binary search's mispredicted
+/// branches cost more than the rest of the work.
+fn count_at_most(lines: &[f64], x: f64) -> usize {
+    count_where(lines, x, |l| l <= x)
+}
+
+/// How many of the sorted `lines` are below x (`lines.partition_point(|l| *l < x)`).
+fn count_below(lines: &[f64], x: f64) -> usize {
+    count_where(lines, x, |l| l < x)
+}
+
+/// The partition point of `before` (true on a prefix of `lines`), starting from the evenly
+/// spaced guess for x.
+fn count_where(lines: &[f64], x: f64, before: impl Fn(f64) -> bool) -> usize {
+    let n = lines.len();
+    if n < 2 {
+        return lines.partition_point(|&l| before(l));
+    }
+    let (first, last) = (lines[0], lines[n - 1]);
+    let guess = (x - first) / (last - first) * (n - 1) as f64;
+    if !guess.is_finite() {
+        return lines.partition_point(|&l| before(l));
+    }
+    // Truncation is the floor here (clamped at 0 first): no call to libm's floor.
+    let mut k = (guess.clamp(0.0, (n - 1) as f64) as usize) + 1;
+    for _ in 0..3 {
+        if k < n && before(lines[k]) {
+            k += 1;
+        } else if k > 0 && !before(lines[k - 1]) {
+            k -= 1;
+        } else {
+            return k;
+        }
+    }
+    lines.partition_point(|&l| before(l))
+}
+
 /// Grid lines in u and v, sorted. For the triangulation the first and last are the domain bounds
 /// and only the lines between them carry grid points.
 struct Grid {
@@ -1020,8 +1067,8 @@ impl Grid {
     /// Lines strictly between a and b.
     fn between(lines: &[f64], a: f64, b: f64) -> &[f64] {
         let (lo, hi) = (a.min(b), a.max(b));
-        let i = lines.partition_point(|x| *x <= lo);
-        let j = lines.partition_point(|x| *x < hi).max(i);
+        let i = count_at_most(lines, lo);
+        let j = count_below(lines, hi).max(i);
         &lines[i..j]
     }
 
@@ -1036,23 +1083,42 @@ impl Grid {
     /// Where edge a→b crosses the grid lines, by increasing t in (0, 1); a crossing of a u line
     /// and a v line at the same t is one point with both coordinates exact.
     fn crossings(&self, a: P, b: P) -> Vec<Cut> {
+        let mut trace = EdgeTrace::default();
+        self.crossings_into(a, b, &mut trace);
+        trace.cuts
+    }
+
+    /// [`Grid::crossings`] into `trace.cuts` (its buffers reused: this runs for every loop edge).
+    fn crossings_into(&self, a: P, b: P, trace: &mut EdgeTrace) {
         let (du, dv) = (b[0] - a[0], b[1] - a[1]);
-        let mut cuts: Vec<(f64, Option<f64>, Option<f64>)> = Vec::new();
-        cuts.extend(Self::between(&self.u, a[0], b[0]).iter().map(|&u| ((u - a[0]) / du, Some(u), None)));
-        cuts.extend(Self::between(&self.v, a[1], b[1]).iter().map(|&v| ((v - a[1]) / dv, None, Some(v))));
-        cuts.retain(|c| c.0 > 0.0 && c.0 < 1.0);
-        cuts.sort_by(|x, y| x.0.total_cmp(&y.0));
-        let mut out: Vec<(f64, Option<f64>, Option<f64>)> = Vec::with_capacity(cuts.len());
-        for c in cuts {
-            match out.last_mut() {
+        let raw = &mut trace.raw;
+        raw.clear();
+        raw.extend(Self::between(&self.u, a[0], b[0]).iter().map(|&u| ((u - a[0]) / du, Some(u), None)));
+        raw.extend(Self::between(&self.v, a[1], b[1]).iter().map(|&v| ((v - a[1]) / dv, None, Some(v))));
+        raw.retain(|c| c.0 > 0.0 && c.0 < 1.0);
+        raw.sort_by(|x, y| x.0.total_cmp(&y.0));
+        trace.merged.clear();
+        for &c in raw.iter() {
+            match trace.merged.last_mut() {
                 Some(last) if c.0 - last.0 <= 1e-12 => {
                     last.1 = last.1.or(c.1);
                     last.2 = last.2.or(c.2);
                 }
-                _ => out.push(c),
+                _ => trace.merged.push(c),
             }
         }
-        out.into_iter().map(|(t, u, v)| (t, [u.unwrap_or(a[0] + t * du), v.unwrap_or(a[1] + t * dv)])).collect()
+        trace.cuts.clear();
+        trace.cuts.extend(
+            trace.merged.iter().map(|&(t, u, v)| (t, [u.unwrap_or(a[0] + t * du), v.unwrap_or(a[1] + t * dv)])),
+        );
+    }
+
+    /// Edge a→b's crossings and, in cell coordinates, a, every crossing and b.
+    fn trace(&self, a: P, b: P, trace: &mut EdgeTrace) {
+        self.crossings_into(a, b, trace);
+        trace.coords.clear();
+        let points = std::iter::once(a).chain(trace.cuts.iter().map(|c| c.1)).chain([b]);
+        trace.coords.extend(points.map(|p| self.cell_coords(p)));
     }
 
     /// Fractional line index of x: i + (x - lines[i]) / (lines[i+1] - lines[i]).
@@ -1060,7 +1126,7 @@ impl Grid {
         if lines.len() < 2 {
             return 0.0;
         }
-        let i = lines.partition_point(|l| *l <= x).clamp(1, lines.len() - 1) - 1;
+        let i = count_at_most(lines, x).clamp(1, lines.len() - 1) - 1;
         let (lo, hi) = (lines[i], lines[i + 1]);
         i as f64 + ((x - lo) / (hi - lo)).clamp(0.0, 1.0)
     }
@@ -1087,26 +1153,27 @@ impl Grid {
         })
     }
 
-    /// Marks the grid points within `clearance` cells of edge a→b. Between
-    /// consecutive cuts the edge lies in one grid cell, where the map to cell coordinates is
-    /// affine; only that cell's corners can be closer than one cell.
-    fn block_near(&self, a: P, b: P, cuts: &[Cut], clearance: f64, blocked: &mut [bool]) {
+    /// Marks the grid points within `clearance` cells of an edge, given as its points in cell
+    /// coordinates ([`Grid::trace`]). Between consecutive cuts the edge lies in one grid cell,
+    /// where the map to cell coordinates is affine; only that cell's corners can be closer than
+    /// one cell.
+    fn block_near(&self, coords: &[P], clearance: f64, blocked: &mut [bool]) {
         let (nu, nv) = (self.u.len(), self.v.len());
         if nu < 2 || nv < 2 {
             return;
         }
-        let mut prev = self.cell_coords(a);
-        for q in cuts.iter().map(|c| c.1).chain([b]) {
-            let next = self.cell_coords(q);
+        let limit = clearance.max(ON_LOOP);
+        for piece in coords.windows(2) {
+            let (prev, next) = (piece[0], piece[1]);
             let mid = midpoint(prev, next);
-            let ci = (mid[0].floor().max(0.0) as usize).min(nu - 2);
-            let cj = (mid[1].floor().max(0.0) as usize).min(nv - 2);
+            // `as usize` truncates and saturates at 0: the floor of these non-negative values.
+            let ci = (mid[0].max(0.0) as usize).min(nu - 2);
+            let cj = (mid[1].max(0.0) as usize).min(nv - 2);
             for (i, j) in [(ci, cj), (ci + 1, cj), (ci, cj + 1), (ci + 1, cj + 1)] {
-                if distance_to_segment([i as f64, j as f64], prev, next) < clearance.max(ON_LOOP) {
+                if distance_squared_to_segment([i as f64, j as f64], prev, next) < limit * limit {
                     blocked[j * nu + i] = true;
                 }
             }
-            prev = next;
         }
     }
 
@@ -1121,7 +1188,7 @@ impl Grid {
                 let (a, b) = (l[i], l[(i + 1) % l.len()]);
                 // Rows with min(a.v, b.v) <= v < max(a.v, b.v): the half-open rule of `inside`.
                 let (lo, hi) = (a[1].min(b[1]), a[1].max(b[1]));
-                let (j0, j1) = (self.v.partition_point(|v| *v < lo), self.v.partition_point(|v| *v < hi));
+                let (j0, j1) = (count_below(&self.v, lo), count_below(&self.v, hi));
                 for (j, &v) in self.v.iter().enumerate().take(j1).skip(j0) {
                     hits.push((j, a[0] + (v - a[1]) / (b[1] - a[1]) * (b[0] - a[0])));
                 }
@@ -1146,7 +1213,7 @@ impl Grid {
             let xs = &hits[row_start..k];
             let mut from = 0;
             for crossed in 0..=xs.len() {
-                let to = xs.get(crossed).map_or(nu, |&(_, x)| self.u.partition_point(|u| *u < x));
+                let to = xs.get(crossed).map_or(nu, |&(_, x)| count_below(&self.u, x));
                 let odd = (xs.len() - crossed) % 2 == 1;
                 row[from..to.max(from)].fill(odd != inside_domain);
                 from = from.max(to);
@@ -1165,11 +1232,12 @@ impl Grid {
         self.u.len().saturating_sub(1).saturating_mul(self.v.len().saturating_sub(1))
     }
 
-    /// Marks the cells edge a→b passes through or touches: between consecutive cuts the edge
+    /// Marks the cells an edge (its points in cell coordinates, [`Grid::trace`]) passes through
+    /// or touches: between consecutive cuts the edge
     /// lies in one closed cell, and a piece's ends and middle mark every cell whose closed box
     /// holds them (a point on a grid line marks both sides), so no loop point lies in an
     /// unmarked closed cell.
-    fn touch(&self, a: P, b: P, cuts: &[Cut], touched: &mut [bool]) {
+    fn touch(&self, coords: &[P], touched: &mut [bool]) {
         const EPS: f64 = 1e-9;
         let (cu, cv) = (self.u.len().saturating_sub(1), self.v.len().saturating_sub(1));
         if cu == 0 || cv == 0 {
@@ -1177,8 +1245,9 @@ impl Grid {
         }
         let mut mark = |p: P| {
             let span = |x: f64, n: usize| {
-                let lo = ((x - EPS).floor().max(0.0) as usize).min(n - 1);
-                let hi = ((x + EPS).floor().max(0.0) as usize).min(n - 1);
+                // Truncation of a value clamped at 0 is its floor (without a libm call).
+                let lo = ((x - EPS).max(0.0) as usize).min(n - 1);
+                let hi = ((x + EPS).max(0.0) as usize).min(n - 1);
                 lo..=hi
             };
             for j in span(p[1], cv) {
@@ -1187,22 +1256,34 @@ impl Grid {
                 }
             }
         };
-        let mut prev = self.cell_coords(a);
-        mark(prev);
-        for q in cuts.iter().map(|c| c.1).chain([b]) {
-            let next = self.cell_coords(q);
-            mark(midpoint(prev, next));
-            mark(next);
-            prev = next;
+        let Some(&first) = coords.first() else { return };
+        mark(first);
+        for piece in coords.windows(2) {
+            mark(midpoint(piece[0], piece[1]));
+            mark(piece[1]);
         }
     }
 }
 
-fn distance_to_segment(p: P, a: P, b: P) -> f64 {
+/// Scratch buffers of [`Grid::trace`], reused from edge to edge.
+#[derive(Default)]
+struct EdgeTrace {
+    /// Line crossings before merging: (t, u line, v line).
+    raw: Vec<(f64, Option<f64>, Option<f64>)>,
+    merged: Vec<(f64, Option<f64>, Option<f64>)>,
+    /// The crossings by increasing t.
+    cuts: Vec<Cut>,
+    /// The edge's start, its crossings and its end, in cell coordinates.
+    coords: Vec<P>,
+}
+
+/// The squared distance from p to segment a–b (no square root: compared with a squared limit).
+fn distance_squared_to_segment(p: P, a: P, b: P) -> f64 {
     let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
     let len2 = dx * dx + dy * dy;
     let t = if len2 > 0.0 { (((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / len2).clamp(0.0, 1.0) } else { 0.0 };
-    (p[0] - a[0] - t * dx).hypot(p[1] - a[1] - t * dy)
+    let (x, y) = (p[0] - a[0] - t * dx, p[1] - a[1] - t * dy);
+    x * x + y * y
 }
 
 #[path = "trim_cells.rs"]

@@ -12,7 +12,7 @@
 //! a result whose area differs from the loops' shoelace area: the caller then uses the
 //! constrained Delaunay triangulation.
 
-use super::{orient, signed_area, Band, Grid, GridStrip, P};
+use super::{count_at_most, count_below, orient, signed_area, Band, Grid, GridStrip, P};
 
 /// A point's place on a cell's boundary, counter-clockwise from the bottom-left corner: the side
 /// (0 bottom, 1 right, 2 top, 3 left), the coordinate along it increasing counter-clockwise, and
@@ -130,10 +130,10 @@ impl Points<'_> {
 
     /// The id of a point on the loops: the grid point's when it is one.
     fn on_loop(&mut self, grid: &Grid, p: P) -> u32 {
-        let find =
-            |lines: &[f64], x: f64| lines.binary_search_by(|l| l.partial_cmp(&x).unwrap_or(std::cmp::Ordering::Less));
+        // The line equal to x, if any.
+        let find = |lines: &[f64], x: f64| count_at_most(lines, x).checked_sub(1).filter(|&i| lines[i] == x);
         match (find(&grid.u, p[0]), find(&grid.v, p[1])) {
-            (Ok(i), Ok(j)) => self.lattice(grid, i, j),
+            (Some(i), Some(j)) => self.lattice(grid, i, j),
             _ => self.push(p),
         }
     }
@@ -146,7 +146,7 @@ const SNAP: f64 = 1e-12;
 
 /// x, or the grid line within [`SNAP`] spacings of it.
 fn snap(lines: &[f64], x: f64) -> f64 {
-    let k = lines.partition_point(|l| *l < x);
+    let k = count_below(lines, x);
     for i in [k.wrapping_sub(1), k] {
         let (Some(&line), Some(spacing)) = (lines.get(i), spacing(lines, i)) else { continue };
         if (x - line).abs() <= SNAP * spacing {
@@ -168,7 +168,7 @@ fn spacing(lines: &[f64], i: usize) -> Option<f64> {
 
 /// The cell of p under the half-open rule (clamped into the grid).
 fn cell_of(grid: &Grid, p: P) -> (usize, usize) {
-    let index = |lines: &[f64], x: f64| lines.partition_point(|l| *l <= x).saturating_sub(1).min(lines.len() - 2);
+    let index = |lines: &[f64], x: f64| count_at_most(lines, x).saturating_sub(1).min(lines.len() - 2);
     (index(&grid.u, p[0]), index(&grid.v, p[1]))
 }
 
@@ -180,8 +180,8 @@ fn crossings(grid: &Grid, a: P, b: P, out: &mut Vec<Crossing>) {
         let interior = &lines[1..lines.len() - 1];
         let (lo, hi) = (a[axis].min(b[axis]), a[axis].max(b[axis]));
         // Sides differ (x ≥ line counts as the upper side): lo < line ≤ hi.
-        let first = interior.partition_point(|l| *l <= lo);
-        let last = interior.partition_point(|l| *l <= hi);
+        let first = count_at_most(interior, lo);
+        let last = count_at_most(interior, hi);
         for &line in &interior[first..last] {
             let t = (line - a[axis]) / dir[axis];
             let point = if line == a[axis] {

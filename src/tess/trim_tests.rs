@@ -625,3 +625,42 @@ proptest! {
         }
     }
 }
+
+/// Sorted lines of many shapes: evenly spaced (the guess is exact), jittered, geometric (the
+/// guess is far off), with repeats, single.
+fn line_shapes() -> impl Strategy<Value = Vec<f64>> {
+    (1usize..40, 0u8..4, -5.0f64..5.0, 0.01f64..10.0, proptest::collection::vec(0.0f64..1.0, 40)).prop_map(
+        |(n, shape, start, width, jitter)| {
+            let mut lines: Vec<f64> = (0..n)
+                .map(|i| {
+                    let t = i as f64 / n.max(2) as f64;
+                    match shape {
+                        0 => start + width * t,
+                        1 => start + width * (t + 0.4 * jitter[i] / n as f64),
+                        2 => start + width * (1.0 - 0.5f64.powi(i as i32)),
+                        _ => start + width * (t * 4.0).floor(),
+                    }
+                })
+                .collect();
+            lines.sort_by(f64::total_cmp);
+            lines
+        },
+    )
+}
+
+proptest! {
+    /// The guessed partition points are the binary search's, for any sorted lines and any x:
+    /// on a line, between, outside, infinite or NaN.
+    #[test]
+    fn counts_match_the_binary_search(lines in line_shapes(), pick in 0usize..40, offset in -1.0f64..1.0, kind in 0u8..5) {
+        let x = match kind {
+            0 => lines[pick % lines.len()],
+            1 => lines[pick % lines.len()] + offset * 1e-3,
+            2 => offset * 20.0,
+            3 => f64::INFINITY * offset.signum(),
+            _ => f64::NAN,
+        };
+        prop_assert_eq!(count_at_most(&lines, x), lines.partition_point(|l| *l <= x));
+        prop_assert_eq!(count_below(&lines, x), lines.partition_point(|l| *l < x));
+    }
+}
