@@ -172,17 +172,23 @@ fn cell_of(grid: &Grid, p: P) -> (usize, usize) {
     (index(&grid.u, p[0]), index(&grid.v, p[1]))
 }
 
-/// The crossings of edge a→b with the interior grid lines, in order along the edge.
-fn crossings(grid: &Grid, a: P, b: P, out: &mut Vec<Crossing>) {
-    out.clear();
+/// The crossings of edge a→b with the interior grid lines, in order along the edge
+/// (`by_axis` holds each axis's crossings on the way).
+fn crossings(grid: &Grid, a: P, b: P, out: &mut Vec<Crossing>, by_axis: &mut [Vec<Crossing>; 2]) {
     let dir = [b[0] - a[0], b[1] - a[1]];
     for (axis, lines) in [(0, &grid.u), (1, &grid.v)] {
+        let found = &mut by_axis[axis];
+        found.clear();
         let interior = &lines[1..lines.len() - 1];
         let (lo, hi) = (a[axis].min(b[axis]), a[axis].max(b[axis]));
         // Sides differ (x ≥ line counts as the upper side): lo < line ≤ hi.
         let first = count_at_most(interior, lo);
         let last = count_at_most(interior, hi);
-        for &line in &interior[first..last] {
+        let crossed = &interior[first..last];
+        // In the order the edge meets them, so that each axis's list is sorted along the edge.
+        let lines: Box<dyn Iterator<Item = &f64>> =
+            if dir[axis] > 0.0 { Box::new(crossed.iter()) } else { Box::new(crossed.iter().rev()) };
+        for &line in lines {
             let t = (line - a[axis]) / dir[axis];
             let point = if line == a[axis] {
                 a
@@ -199,15 +205,21 @@ fn crossings(grid: &Grid, a: P, b: P, out: &mut Vec<Crossing>) {
                 p
             };
             let step = if dir[axis] > 0.0 { 1 } else { -1 };
-            out.push(Crossing { t, across_u: axis == 0, step, point, dir });
+            found.push(Crossing { t, across_u: axis == 0, step, point, dir });
         }
     }
-    // Insertion sort: a handful per edge.
-    for i in 1..out.len() {
-        let mut j = i;
-        while j > 0 && out[j].before(&out[j - 1]) {
-            out.swap(j, j - 1);
-            j -= 1;
+    // Both lists merged along the edge; on a tie (neither before the other) the u crossing
+    // first, as a stable sort of the u crossings followed by the v crossings orders them.
+    out.clear();
+    let [us, vs] = &*by_axis;
+    let (mut i, mut j) = (0, 0);
+    while i < us.len() || j < vs.len() {
+        if i < us.len() && (j == vs.len() || !vs[j].before(&us[i])) {
+            out.push(us[i]);
+            i += 1;
+        } else {
+            out.push(vs[j]);
+            j += 1;
         }
     }
 }
@@ -302,17 +314,26 @@ pub(super) fn triangulate_cells(
         }
     }
     // Band cells no loop passes through: wholly inside or outside, as a retained corner says.
-    // Row by row, as this runs over every cell.
+    // This runs over every cell, and finds few: each row's flags are computed without branches
+    // (so that the loop vectorises) and only a row with a flag set is visited.
     let rows = band.clean.chunks_exact(cu).zip(has_fragments.chunks_exact(cu));
+    let mut flags = vec![false; cu];
     for (cj, (clean, loops_in)) in rows.enumerate() {
         let (below, above) = (&kept[cj * nu..(cj + 1) * nu], &kept[(cj + 1) * nu..(cj + 2) * nu]);
-        for ci in 0..cu {
-            if !clean[ci] && !loops_in[ci] && (below[ci] || below[ci + 1] || above[ci] || above[ci + 1]) {
-                let [a, b, c, d] =
-                    [(ci, cj), (ci + 1, cj), (ci + 1, cj + 1), (ci, cj + 1)].map(|(i, j)| points.lattice(grid, i, j));
-                triangles.push([a, b, c]);
-                triangles.push([a, c, d]);
-            }
+        let corners = below[..cu].iter().zip(&below[1..]).zip(above[..cu].iter().zip(&above[1..]));
+        for ((flag, (&clean, &loops_in)), ((&a, &b), (&c, &d))) in
+            flags.iter_mut().zip(clean.iter().zip(loops_in)).zip(corners)
+        {
+            *flag = !clean & !loops_in & (a | b | c | d);
+        }
+        if !flags.iter().fold(false, |any, &f| any | f) {
+            continue;
+        }
+        for ci in (0..cu).filter(|&ci| flags[ci]) {
+            let [a, b, c, d] =
+                [(ci, cj), (ci + 1, cj), (ci + 1, cj + 1), (ci, cj + 1)].map(|(i, j)| points.lattice(grid, i, j));
+            triangles.push([a, b, c]);
+            triangles.push([a, c, d]);
         }
     }
     // The clean cells' area, run by run.
@@ -345,7 +366,7 @@ fn fragments(grid: &Grid, loops: &[Vec<P>], points: &mut Points) -> Option<(Vec<
     }
     let mut fragments = Vec::new();
     let mut ids: Vec<u32> = Vec::new();
-    let mut cuts = Vec::new();
+    let (mut cuts, mut by_axis) = (Vec::new(), [Vec::new(), Vec::new()]);
     let (cu, cv) = (grid.u.len() - 1, grid.v.len() - 1);
     for l in loops {
         let n = l.len();
@@ -354,7 +375,7 @@ fn fragments(grid: &Grid, loops: &[Vec<P>], points: &mut Points) -> Option<(Vec<
         for i in 0..n {
             items.push(Item::Vertex(i));
             let j = (i + 1) % n;
-            crossings(grid, l[i], l[j], &mut cuts);
+            crossings(grid, l[i], l[j], &mut cuts, &mut by_axis);
             for &c in &cuts {
                 // A crossing at an end of the edge is that vertex.
                 let id = if c.point == l[i] {
