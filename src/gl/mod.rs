@@ -30,7 +30,9 @@ use types::*;
 /// Where `glEvalMesh` grids are evaluated.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum Tessellator {
-    /// On the CPU when the call is made: the frame holds the vertices (the default; tests read them).
+    /// On the CPU: the frame holds the vertices (the default; tests read them). A large grid is
+    /// evaluated when the call is made; small ones in batches, by the time the frame is looked
+    /// at ([`Gl::frame`], [`Gl::take_frame`]), each with the maps and state of its own call.
     #[default]
     Cpu,
     /// In a WGSL compute shader when the frame is drawn: the frame holds the maps, and the
@@ -102,6 +104,9 @@ pub struct Gl {
     frame: Frame,
     /// Vertex buffers of a recycled frame's meshes, reused by the next meshes (no page faults).
     vertex_pool: Vec<Vec<Vertex>>,
+    /// Small CPU meshes recorded but not yet evaluated (see `Gl::record_mesh`), with their
+    /// index in `frame.meshes` and their total grid points.
+    pub(crate) pending_meshes: (Vec<(usize, MeshJob)>, usize),
     /// A window title asked for with `glut_set_window_title`.
     window_title: Option<String>,
     tessellator: Tessellator,
@@ -128,6 +133,7 @@ impl Gl {
             state_index: None,
             frame: Frame::default(),
             vertex_pool: Vec::new(),
+            pending_meshes: (Vec::new(), 0),
             window_title: None,
             tessellator: Tessellator::from_env(),
             nurbs: Vec::new(),
@@ -152,9 +158,11 @@ impl Gl {
         self.height = height;
     }
 
-    /// What has been drawn so far.
+    /// What has been drawn so far (small meshes still pending are evaluated first, hence
+    /// `&mut self`).
     #[must_use]
-    pub fn frame(&self) -> &Frame {
+    pub fn frame(&mut self) -> &Frame {
+        self.evaluate_pending_meshes();
         &self.frame
     }
 
@@ -171,6 +179,7 @@ impl Gl {
 
     /// Takes the recorded frame, leaving an empty one (the GL state is kept).
     pub fn take_frame(&mut self) -> Frame {
+        self.evaluate_pending_meshes();
         self.state_index = None;
         std::mem::take(&mut self.frame)
     }

@@ -112,7 +112,7 @@ fn check_with(name: &str, app: fn() -> App, threshold: impl Fn(f64) -> f64) {
 
 /// How many meshes of the program's frame the GPU tessellator evaluates.
 fn gpu_meshes(app: fn() -> App) -> usize {
-    let gl = app().with_tessellator(Tessellator::Gpu).record_frame();
+    let mut gl = app().with_tessellator(Tessellator::Gpu).record_frame();
     gl.frame().meshes.iter().filter(|m| matches!(m.vertices, MeshVertices::Deferred(_))).count()
 }
 

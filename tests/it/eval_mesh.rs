@@ -1,6 +1,7 @@
 //! EvalMesh / EvalCoord / EvalPoint against closed forms: primitive order (spec 1.7), exact grid
 //! ends, map precedence (1.2), auto normals (1.8) including reversed domains and rational maps.
 
+use gleval::gl::{MeshVertices, Tessellator};
 use gleval::prelude::*;
 
 /// Bilinear patch p(u, v) = (u, v, u·v) on [0,1]²: corners (0,0,0), (0,1,0), (1,0,0), (1,1,1).
@@ -317,4 +318,48 @@ fn recycled_frames_record_what_a_fresh_context_records() {
     }
     draw(&mut gl, 7, [0.2, 0.4, 0.6, 1.0]);
     assert_eq!(gl.take_frame(), want);
+}
+
+/// Records `count` small bicubic patches (9 × 9 points), each with its own control points and
+/// current colour, into `gl`.
+fn many_small_patches(gl: &mut Gl, count: usize) {
+    gl.enable(GL_MAP2_VERTEX_3);
+    gl.enable(GL_AUTO_NORMAL);
+    gl.map_grid2f(8, 0.0, 1.0, 8, 0.0, 1.0);
+    for k in 0..count {
+        let points: Vec<f32> =
+            (0..16).flat_map(|p| [(p / 4) as f32 + k as f32, (p % 4) as f32, ((p * 7 + k) % 5) as f32 * 0.3]).collect();
+        gl.color3f(k as f32 / count as f32, 0.5, 1.0);
+        gl.map2f(GL_MAP2_VERTEX_3, 0.0, 1.0, 12, 4, 0.0, 1.0, 3, 4, &points);
+        gl.eval_mesh2(GL_FILL, 0, 8, 0, 8);
+    }
+}
+
+/// Small meshes are evaluated in batches after they are recorded: each must still hold what
+/// its own maps and state gave when it was recorded, across batch boundaries and for the
+/// meshes still pending when the frame is looked at. Checked against each mesh's job evaluated
+/// on its own (the GPU tessellator's deferred jobs, evaluated here on the CPU) and against the
+/// closed form at the corners (a Bezier patch passes through its corner control points).
+#[test]
+fn small_meshes_evaluated_in_batches_keep_their_own_maps_and_state() {
+    let count = 1000; // 81,000 points: two full batches and a pending rest.
+    let mut gl = Gl::new(1, 1);
+    many_small_patches(&mut gl, count);
+    let mut deferred = Gl::new(1, 1);
+    deferred.set_tessellator(Tessellator::Gpu);
+    many_small_patches(&mut deferred, count);
+    let frame = gl.frame().clone();
+    let jobs = deferred.frame().clone();
+    assert_eq!(frame.meshes.len(), count);
+    for (k, (mesh, job)) in frame.meshes.iter().zip(&jobs.meshes).enumerate() {
+        let (MeshVertices::Evaluated(got), MeshVertices::Deferred(job)) = (&mesh.vertices, &job.vertices) else {
+            panic!("mesh {k}: evaluated on the CPU, deferred on the GPU tessellator");
+        };
+        assert_eq!(got, &job[0].evaluate(), "mesh {k}");
+        // Corners: P00 = (k, 0, z), P33 = (k + 3, 3, z').
+        let corner = |p: usize| [(p / 4) as f32 + k as f32, (p % 4) as f32, ((p * 7 + k) % 5) as f32 * 0.3, 1.0];
+        assert_eq!(got[0].position, corner(0), "mesh {k}");
+        assert_eq!(got[80].position, corner(15), "mesh {k}");
+        assert_eq!(got[40].color, [k as f32 / count as f32, 0.5, 1.0, 1.0], "mesh {k}");
+    }
 }

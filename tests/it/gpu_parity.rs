@@ -439,7 +439,7 @@ fn trimmed_nurbs(tessellator: Tessellator) -> Gl {
 fn trimmed_surface_points_on_the_gpu_match_the_cpu_triangles() {
     let Some(r) = device() else { return };
     let cpu = trimmed_nurbs(Tessellator::Cpu).frame().expanded();
-    let gpu_gl = trimmed_nurbs(Tessellator::Gpu);
+    let mut gpu_gl = trimmed_nurbs(Tessellator::Gpu);
     let mesh =
         gpu_gl.frame().meshes.iter().find(|m| m.mode == MeshMode::Triangles).expect("a trimmed GPU mesh").clone();
     let MeshVertices::Deferred(jobs) = &mesh.vertices else { panic!("deferred") };

@@ -22,6 +22,14 @@ fn line_count(first: i32, last: i32) -> usize {
     usize::try_from(i64::from(last) - i64::from(first) + 1).unwrap_or(0)
 }
 
+/// Grids with fewer points than this are left pending and evaluated in batches (see
+/// `Gl::record_mesh`); larger ones are split between the cores on their own.
+const SMALL_MESH_POINTS: usize = 1 << 11;
+
+/// Pending grid points that make a batch: about a millisecond of work, so that handing it to
+/// the pool costs little, and a few MiB of vertices.
+const PENDING_BATCH_POINTS: usize = 1 << 15;
+
 impl Gl {
     /// `glEvalMesh1(mode, i1, i2)`: `GL_POINT` → one `GL_POINTS`, `GL_LINE` → one
     /// `GL_LINE_STRIP` over grid lines i1..=i2. Another mode → `GL_INVALID_ENUM`; no vertex map
@@ -116,10 +124,20 @@ impl Gl {
     }
 
     /// Records a mesh, evaluated now on the CPU tessellator or left for the GPU.
+    ///
+    /// A small grid (one a single core evaluates) is left pending with its own copy of the maps
+    /// and the state, and evaluated with the other pending ones, many at once across the cores,
+    /// when they add up to [`PENDING_BATCH_POINTS`] or when the frame is looked at
+    /// ([`Gl::frame`], [`Gl::take_frame`]): a program drawing many small patches (the teapot,
+    /// B-spline surfaces patch by patch) would otherwise use one core.
     fn record_mesh(&mut self, mode: MeshMode, job: MeshJob) {
         let (nu, nv) = (job.nu, job.nv);
+        let mut pending = None;
         let vertices = if self.tessellator == Tessellator::Gpu && self.gpu_draws(mode) {
             MeshVertices::Deferred(vec![job])
+        } else if job.len() < SMALL_MESH_POINTS && !job.scattered {
+            pending = Some(job);
+            MeshVertices::Evaluated(self.pooled_vertices())
         } else {
             let mut vertices = self.pooled_vertices();
             job.evaluate_into(&mut vertices);
@@ -129,6 +147,39 @@ impl Gl {
         self.frame.meshes.push(GridMesh { mode, nu, nv, state, vertices, triangles: Vec::new() });
         let index = self.frame.meshes.len() - 1;
         self.frame.commands.push(Command::Mesh(index));
+        if let Some(job) = pending {
+            let (jobs, points) = &mut self.pending_meshes;
+            *points += job.len();
+            jobs.push((index, job));
+            if *points >= PENDING_BATCH_POINTS {
+                self.evaluate_pending_meshes();
+            }
+        }
+    }
+
+    /// Evaluates the pending small meshes into their vertex buffers, meshes shared out between
+    /// the cores (each mesh on one).
+    pub(crate) fn evaluate_pending_meshes(&mut self) {
+        use rayon::prelude::*;
+        let (jobs, points) = &mut self.pending_meshes;
+        if jobs.is_empty() {
+            return;
+        }
+        *points = 0;
+        // Each job with its mesh's buffer: jobs are in the order of their (increasing) indices.
+        let mut work = Vec::with_capacity(jobs.len());
+        let mut next = jobs.iter().peekable();
+        for (index, mesh) in self.frame.meshes.iter_mut().enumerate() {
+            let Some((wanted, job)) = next.peek() else { break };
+            if *wanted == index {
+                if let MeshVertices::Evaluated(vertices) = &mut mesh.vertices {
+                    work.push((job, vertices));
+                }
+                next.next();
+            }
+        }
+        work.into_par_iter().for_each(|(job, vertices)| job.evaluate_into(vertices));
+        jobs.clear();
     }
 
     /// Records triangles over points evaluated by `jobs` (scattered (u, v) points, one job per
