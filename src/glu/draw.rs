@@ -185,7 +185,16 @@ pub(crate) fn draw_surface(gl: &mut Gl, obj: &mut NurbsObject, def: &SurfaceDef)
     if !def.loops.is_empty() {
         return super::trimmed::draw_trimmed(gl, obj, &surface, &def.loops, &sampler, tessellate);
     }
-    let patches = surface.patches(&sampler);
+    let mut patches = surface.patches(&sampler);
+    // A patch sampled beyond the façade's mesh limit (a weight near zero under path-length
+    // sampling asks for 2^14 segments a side) would fail in glEvalMesh2 with a GL error, or
+    // allocate gigabytes in tessellator mode: GLU's own convention is to report
+    // GLU_OUT_OF_MEMORY through the error callback. The other patches are drawn.
+    let before = patches.len();
+    patches.retain(|patch| grid_size(patch) <= crate::tess::MAX_MESH_VERTICES);
+    if patches.len() < before {
+        obj.callbacks.error(GLU_OUT_OF_MEMORY);
+    }
     if tessellate {
         if obj.callbacks.sinks().is_some() {
             return tessellate_patches_in_parallel(obj, &surface, &patches);

@@ -229,3 +229,27 @@ fn short_slices_are_reported_not_read() {
     gl.glu_nurbs_curve(n, 8, &KNOTS8, 3, &[0.0; 11], 4, GL_MAP1_VERTEX_3);
     assert_eq!(*seen.borrow(), ["10", "8"]);
 }
+
+/// A rational bilinear patch with a weight of 1e-30 at one corner: projected, that corner is at
+/// 1e30, so path-length sampling asks for GLU's cap of 2^14 segments a side, beyond the
+/// façade's 2^27 vertices per mesh. GLU's convention: `GLU_OUT_OF_MEMORY` (0x18a26) through
+/// the error callback, no GL error, nothing allocated for the patch, in both modes.
+#[test]
+fn oversampled_patches_report_glu_out_of_memory() {
+    let knots = [0.0f32, 0.0, 1.0, 1.0];
+    let ctl = [0.0f32, 0.0, 0.0, 1.0, 0.0, 1.0, 0.0, 1.0, 1.0, 0.0, 0.0, 1.0, 1.0, 1.0, 0.0, 1e-30];
+    for mode in [GLU_NURBS_RENDERER, GLU_NURBS_TESSELLATOR] {
+        let (mut gl, n, seen) = fresh();
+        gl.glu_nurbs_property(n, GLU_NURBS_MODE, mode as f32);
+        let vertices = Rc::new(RefCell::new(0usize));
+        let count = Rc::clone(&vertices);
+        gl.glu_nurbs_callback(n, GLU_NURBS_VERTEX, Some(NurbsCallback::vertex(move |_| *count.borrow_mut() += 1)));
+        gl.glu_begin_surface(n);
+        gl.glu_nurbs_surface(n, 4, &knots, 4, &knots, 8, 4, &ctl, 2, 2, GL_MAP2_VERTEX_4);
+        gl.glu_end_surface(n);
+        assert_eq!(*seen.borrow(), ["0x18a26"], "mode {mode:#x}");
+        assert_eq!(gl.get_error(), GL_NO_ERROR, "mode {mode:#x}");
+        assert_eq!(*vertices.borrow(), 0, "mode {mode:#x}");
+        assert_eq!(glu_error_string(GLU_OUT_OF_MEMORY), Some("out of memory"));
+    }
+}
