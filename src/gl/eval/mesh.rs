@@ -162,14 +162,12 @@ impl Gl {
     pub(crate) fn evaluate_pending_meshes(&mut self) {
         use rayon::prelude::*;
         let (jobs, points) = &mut self.pending_meshes;
-        if jobs.is_empty() {
-            return;
-        }
+        let Some(&(first, _)) = jobs.first() else { return };
         *points = 0;
         // Each job with its mesh's buffer: jobs are in the order of their (increasing) indices.
         let mut work = Vec::with_capacity(jobs.len());
         let mut next = jobs.iter().peekable();
-        for (index, mesh) in self.frame.meshes.iter_mut().enumerate() {
+        for (index, mesh) in self.frame.meshes.iter_mut().enumerate().skip(first) {
             let Some((wanted, job)) = next.peek() else { break };
             if *wanted == index {
                 if let MeshVertices::Evaluated(vertices) = &mut mesh.vertices {
