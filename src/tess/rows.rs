@@ -249,7 +249,7 @@ fn cross_rows<S: Scalar>(a: &[Vec<S>; MAX_DIM], b: &[Vec<S>; MAX_DIM], dim: usiz
 
 /// Grids with fewer points than this run on one thread (handing work to the pool costs more
 /// than it saves).
-const MIN_POINTS_PER_THREAD: usize = 1 << 11;
+pub(crate) const MIN_POINTS_PER_THREAD: usize = 1 << 11;
 
 /// Rows per band when `rows` rows of `row_len` items are shared out: all of them (one band)
 /// for small grids, else about one band per thread of rayon's pool.

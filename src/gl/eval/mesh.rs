@@ -22,10 +22,6 @@ fn line_count(first: i32, last: i32) -> usize {
     usize::try_from(i64::from(last) - i64::from(first) + 1).unwrap_or(0)
 }
 
-/// Grids with fewer points than this are left pending and evaluated in batches (see
-/// `Gl::record_mesh`); larger ones are split between the cores on their own.
-const SMALL_MESH_POINTS: usize = 1 << 11;
-
 /// Pending grid points that make a batch: about a millisecond of work, so that handing it to
 /// the pool costs little, and a few MiB of vertices.
 const PENDING_BATCH_POINTS: usize = 1 << 15;
@@ -125,7 +121,7 @@ impl Gl {
 
     /// Records a mesh, evaluated now on the CPU tessellator or left for the GPU.
     ///
-    /// A small grid (one a single core evaluates) is left pending with its own copy of the maps
+    /// A small grid (one the row path would evaluate on a single core) is left pending with its own copy of the maps
     /// and the state, and evaluated with the other pending ones, many at once across the cores,
     /// when they add up to [`PENDING_BATCH_POINTS`] or when the frame is looked at
     /// ([`Gl::frame`], [`Gl::take_frame`]): a program drawing many small patches (the teapot,
@@ -135,7 +131,7 @@ impl Gl {
         let mut pending = None;
         let vertices = if self.tessellator == Tessellator::Gpu && self.gpu_draws(mode) {
             MeshVertices::Deferred(vec![job])
-        } else if job.len() < SMALL_MESH_POINTS && !job.scattered {
+        } else if job.len() < crate::tess::MIN_POINTS_PER_THREAD && !job.scattered {
             pending = Some(job);
             MeshVertices::Evaluated(self.pooled_vertices())
         } else {
