@@ -11,7 +11,7 @@ use super::sampling::Sampler;
 use crate::gl::consts::*;
 use crate::gl::{Gl, MapSample, MapTarget, MeshJob, MeshMode, Slot, Tessellator, Vertex};
 use crate::math::bezier::bernstein;
-use crate::tess::trim::{join_curves, triangulate_with, GridStrip, Lattice, TrimBand, TrimLoop, TrimOptions, TrimPlan};
+use crate::tess::trim::{join_curves, triangulate_with, GridStrip, Lattice, TrimLoop, TrimOptions, TrimPlan};
 use crate::tess::{MapView, Row, RowKernel};
 use std::collections::BTreeMap;
 
@@ -136,7 +136,7 @@ fn tessellate_trimmed(
             }
         });
         if let Some(Ok(band)) = &band {
-            let data = PointValues::new(surface, &plan, band, values.take());
+            let data = PointValues::new(surface, plan.grid_points(), plan.grid_index(), &band.points, values.take());
             match sinks.plain() {
                 Some(mut plain) => issue_band(&mut plain, &band.triangles, |i| data.get(i)),
                 None => issue_band(&mut sinks, &band.triangles, |i| data.get(i)),
@@ -149,8 +149,9 @@ fn tessellate_trimmed(
         Ok(band) => band,
         Err(e) => return obj.nurbs_error(e.glu_number()),
     };
-    let data = PointValues::new(surface, &plan, &band, values);
     let mesh = plan.into_mesh(band);
+    let (grid_points, extra) = mesh.points.split_at(mesh.lattice.index.len());
+    let data = PointValues::new(surface, grid_points, &mesh.lattice.index, extra, values);
     if let Some(mut sinks) = obj.callbacks.sinks() {
         issue_strips(&mut sinks, &mesh.strips, |i| data.get(i));
         return issue_band(&mut sinks, &mesh.band, |i| data.get(i));
@@ -303,26 +304,34 @@ fn piece_kernel<'a>(
 
 /// The vertex-callback data of a trimmed mesh's points: the grid points from the lattice's
 /// values when there are some, the rest (the band's points, or all) evaluated here.
-struct PointValues {
-    grid_index: Vec<u32>,
+struct PointValues<'a> {
+    /// Each grid point's index in the lattice (the plan's, not copied).
+    grid_index: &'a [u32],
     lattice: Option<LatticeValues>,
     rest: Vec<Option<[f32; 5]>>,
     first_rest: usize,
 }
 
-impl PointValues {
-    fn new(surface: &Surface, plan: &TrimPlan, band: &TrimBand, lattice: Option<LatticeValues>) -> Self {
+impl<'a> PointValues<'a> {
+    /// The data of `grid_points` (lattice indices `grid_index`) then of `extra`.
+    fn new(
+        surface: &Surface,
+        grid_points: &[[f64; 2]],
+        grid_index: &'a [u32],
+        extra: &[[f64; 2]],
+        lattice: Option<LatticeValues>,
+    ) -> Self {
         let (pos, k) = (&surface.pos, surface.k);
         match lattice {
             Some(l) => Self {
-                grid_index: plan.grid_index().to_vec(),
+                grid_index,
                 lattice: Some(l),
-                rest: evaluate_positions(pos, k, &band.points),
-                first_rest: plan.grid_points().len(),
+                rest: evaluate_positions(pos, k, extra),
+                first_rest: grid_points.len(),
             },
             None => {
-                let all: Vec<[f64; 2]> = plan.grid_points().iter().chain(&band.points).copied().collect();
-                Self { grid_index: Vec::new(), lattice: None, rest: evaluate_positions(pos, k, &all), first_rest: 0 }
+                let all: Vec<[f64; 2]> = grid_points.iter().chain(extra).copied().collect();
+                Self { grid_index, lattice: None, rest: evaluate_positions(pos, k, &all), first_rest: 0 }
             }
         }
     }

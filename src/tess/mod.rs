@@ -13,5 +13,5 @@ pub mod trim;
 
 pub use grid::{eval_grid1, eval_grid2, BasisTable, Grid2, MapView};
 pub use mesh::{Mesh, MeshError, MAX_MESH_VERTICES};
-pub use rows::{for_row_bands, rows_per_band, run_bands, Row, RowKernel};
 pub(crate) use rows::MIN_POINTS_PER_THREAD;
+pub use rows::{for_row_bands, rows_per_band, run_bands, Row, RowKernel};
