@@ -13,6 +13,7 @@ use crate::gl::consts::*;
 use crate::gl::types::GLenum;
 use crate::gl::{Gl, MapTarget, Slot};
 use crate::math::rational::{cross, normalize, rational_derivative};
+use crate::math::{BezierPatches, Scalar};
 use crate::tess::{MapView, Row, RowKernel};
 use glam::Vec4;
 
@@ -438,12 +439,8 @@ fn grid_vertices_into(pos: &SurfacePatches, k: usize, us: &[f64], vs: &[f64], ou
     let mid = |r: &[f64]| 0.5 * (r[0] + r[r.len() - 1]);
     let a = super::pieces::locate(&p.uintervals, mid(us))?;
     let b = super::pieces::locate(&p.vintervals, mid(vs))?;
-    let ((ua, ub), (va, vb)) = (p.uintervals[a], p.vintervals[b]);
-    let su: Vec<f32> = us.iter().map(|&u| ((u - ua) / (ub - ua)) as f32).collect();
-    let sv: Vec<f32> = vs.iter().map(|&v| ((v - va) / (vb - va)) as f32).collect();
-    let points: Vec<f32> = p.patch(a, b)?.iter().map(|&c| c as f32).collect();
-    let view = MapView { dim: p.dim, uorder: p.uorder, vorder: p.vorder, points: &points };
-    let kernel = RowKernel::new(view, &su, &sv, false)?;
+    let net: Vec<f32> = p.patch(a, b)?.iter().map(|&c| c as f32).collect();
+    let kernel = piece_kernel(p, (a, b), &net, us, vs)?;
     let mut row = Row::default();
     let n = us.len();
     if out.len() != n * vs.len() {
@@ -451,21 +448,52 @@ fn grid_vertices_into(pos: &SurfacePatches, k: usize, us: &[f64], vs: &[f64], ou
     }
     for ((j, &v), line) in vs.iter().enumerate().zip(out.chunks_exact_mut(n)) {
         kernel.eval_row(j, &mut row);
-        let [x, y, z, w] = &row.point;
-        let (x, y, z) = (&x[..n], &y[..n], &z[..n]);
-        let v = v as f32;
-        if k == 4 {
-            let w = &w[..n];
-            for (i, o) in line.iter_mut().enumerate() {
-                *o = [x[i] / w[i], y[i] / w[i], z[i] / w[i], us[i] as f32, v];
-            }
-        } else {
-            for (i, o) in line.iter_mut().enumerate() {
-                *o = [x[i], y[i], z[i], us[i] as f32, v];
-            }
-        }
+        vertex_row(&row, k, us, v, line, |data| data);
     }
     Some(())
+}
+
+/// The row kernel of Bezier piece (a, b) of `p` (its control points `net`, in the kernel's
+/// precision) over the lines `us` × `vs`, given in the surface's parameters.
+pub(super) fn piece_kernel<'a, S: Scalar>(
+    p: &BezierPatches<f64>,
+    (a, b): (usize, usize),
+    net: &'a [S],
+    us: &[f64],
+    vs: &[f64],
+) -> Option<RowKernel<'a, S>> {
+    let normalised = |lines: &[f64], (lo, hi): (f64, f64)| -> Vec<S> {
+        lines.iter().map(|&x| S::from_f64((x - lo) / (hi - lo))).collect()
+    };
+    let (su, sv) = (normalised(us, p.uintervals[a]), normalised(vs, p.vintervals[b]));
+    let view = MapView { dim: p.dim, uorder: p.uorder, vorder: p.vorder, points: net };
+    RowKernel::new(view, &su, &sv, false)
+}
+
+/// A row of points as vertex-callback data, `wrap`ped into `out`: x, y, z (divided by w when
+/// `k` is 4: only then, as a division per coordinate costs more than the rest of the point's
+/// work), then the point's u (from `us`) and `v`.
+pub(super) fn vertex_row<S: Scalar, T>(
+    row: &Row<S>,
+    k: usize,
+    us: &[f64],
+    v: f64,
+    out: &mut [T],
+    wrap: impl Fn([f32; 5]) -> T,
+) {
+    let [x, y, z, w] = &row.point;
+    let xyz = x.iter().zip(y).zip(z).map(|((x, y), z)| [*x, *y, *z]);
+    let out = out.iter_mut().zip(us);
+    let (f, v) = (|c: S| c.to_f64() as f32, v as f32);
+    if k == 4 {
+        for ((o, &u), ([x, y, z], &w)) in out.zip(xyz.zip(w)) {
+            *o = wrap([f(x / w), f(y / w), f(z / w), u as f32, v]);
+        }
+    } else {
+        for ((o, &u), [x, y, z]) in out.zip(xyz) {
+            *o = wrap([f(x), f(y), f(z), u as f32, v]);
+        }
+    }
 }
 
 impl Surface {

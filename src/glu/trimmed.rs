@@ -4,7 +4,7 @@
 
 use super::callbacks::StripSink;
 use super::consts::*;
-use super::draw::{emit_attributes, surface_normal, trim_polylines, PatchGrid, Surface};
+use super::draw::{emit_attributes, piece_kernel, surface_normal, trim_polylines, vertex_row, PatchGrid, Surface};
 use super::nurbs::{NurbsObject, TrimPiece};
 use super::pieces::{locate, SurfacePatches};
 use super::sampling::Sampler;
@@ -232,7 +232,13 @@ impl LatticeValues {
         let kernels: Vec<Vec<Option<RowKernel<f64>>>> = vruns
             .iter()
             .map(|(b, vrange)| {
-                uruns.iter().map(|(a, urange)| piece_kernel(pos, (*a, *b), &lattice, urange, vrange)).collect()
+                uruns
+                    .iter()
+                    .map(|(a, urange)| {
+                        let (us, vs) = (&lattice.u[urange.clone()], &lattice.v[vrange.clone()]);
+                        piece_kernel(p, (*a, *b), p.patch(*a, *b)?, us, vs)
+                    })
+                    .collect()
             })
             .collect();
         let nu = lattice.u.len();
@@ -247,24 +253,10 @@ impl LatticeValues {
             |row, (line, (j, run))| {
                 let Some(bi) = *run else { return };
                 let local_j = j - vruns[bi].1.start;
-                let v = lattice.v[j] as f32;
                 for ((_, urange), kernel) in uruns.iter().zip(&kernels[bi]) {
                     let Some(kernel) = kernel else { continue };
                     kernel.eval_row(local_j, row);
-                    let [x, y, z, w] = &row.point;
-                    let xyz = x.iter().zip(y).zip(z).map(|((x, y), z)| [*x, *y, *z]);
-                    let out = line[urange.clone()].iter_mut().zip(&lattice.u[urange.clone()]);
-                    // Divided by w only when rational: a division per coordinate costs more than
-                    // the rest of the point's work.
-                    if k == 4 {
-                        for ((o, &u), ([x, y, z], w)) in out.zip(xyz.zip(w)) {
-                            *o = Some([(x / w) as f32, (y / w) as f32, (z / w) as f32, u as f32, v]);
-                        }
-                    } else {
-                        for ((o, &u), [x, y, z]) in out.zip(xyz) {
-                            *o = Some([x as f32, y as f32, z as f32, u as f32, v]);
-                        }
-                    }
+                    vertex_row(row, k, &lattice.u[urange.clone()], lattice.v[j], &mut line[urange.clone()], Some);
                 }
             },
         );
@@ -284,22 +276,6 @@ fn piece_runs(intervals: &[(f64, f64)], lines: &[f64]) -> Vec<(usize, std::ops::
         }
     }
     runs
-}
-
-/// The row kernel of Bezier piece (a, b) over the lattice lines in `urange` × `vrange`.
-fn piece_kernel<'a>(
-    pos: &'a SurfacePatches,
-    (a, b): (usize, usize),
-    lattice: &Lattice,
-    urange: &std::ops::Range<usize>,
-    vrange: &std::ops::Range<usize>,
-) -> Option<RowKernel<'a, f64>> {
-    let p = &pos.patches;
-    let ((ua, ub), (va, vb)) = (p.uintervals[a], p.vintervals[b]);
-    let su: Vec<f64> = lattice.u[urange.clone()].iter().map(|&u| (u - ua) / (ub - ua)).collect();
-    let sv: Vec<f64> = lattice.v[vrange.clone()].iter().map(|&v| (v - va) / (vb - va)).collect();
-    let view = MapView { dim: p.dim, uorder: p.uorder, vorder: p.vorder, points: p.patch(a, b)? };
-    RowKernel::new(view, &su, &sv, false)
 }
 
 /// The vertex-callback data of a trimmed mesh's points: the grid points from the lattice's
