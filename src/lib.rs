@@ -27,5 +27,7 @@ pub mod math;
 pub mod prelude;
 pub mod render;
 pub mod tess;
+#[doc(hidden)]
+pub mod testing;
 #[cfg(feature = "window")]
 mod window;
