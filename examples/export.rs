@@ -1,14 +1,14 @@
 //! Writes two surfaces, tessellated through the typed API, as OBJ, PLY and binary glTF.
 //!
 //! `cargo run --release --example export -- [FOLDER]` (default `out/export`) writes there
-//! - `teapot.obj`, `.ply`, `.glb`: each of the 32 Bezier patches of [`gleval::math::teapot`]
+//! - `teapot.obj`, `.ply`, `.glb`: each of the 32 Bezier patches of [`gleval::data::teapot`]
 //!   tessellated on a 16 × 16 grid and appended into one mesh with outward normals and
 //!   per-patch (u, v) texture coordinates;
 //! - `trimmed.obj`, `.ply`, `.glb`: the hill of `examples/trimmed.rs` as a rational B-spline
 //!   surface with a round and a triangular hole, its trimmed (u, v) region triangulated by
 //!   [`gleval::tess::trim::triangulate`] and every vertex evaluated on the surface.
 
-use gleval::math::teapot::teapot_patches;
+use gleval::data::teapot::teapot_patches;
 use gleval::math::{BSplineSurface, KnotVector};
 use gleval::tess::export::{write_glb, write_obj, write_ply};
 use gleval::tess::trim::{triangulate, TrimLoop};

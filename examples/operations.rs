@@ -9,8 +9,8 @@
 //!
 //! `cargo run --release --example operations -- --png operations.png`
 
-use gleval::math::interpolate::{interpolate, Parameterization};
-use gleval::math::shapes::{extrude, nurbs_circle, revolve};
+use gleval::math::{extrude, nurbs_circle, revolve};
+use gleval::math::{interpolate, Parameterization};
 use gleval::math::{BSplineCurve, BSplineSurface, BezierCurve, HermiteCurve, KnotVector};
 use gleval::prelude::*;
 

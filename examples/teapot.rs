@@ -5,11 +5,11 @@
 //! `GL_AUTO_NORMAL` and `GL_NORMALIZE` on, under `glRotatef(270, 1, 0, 0)`,
 //! `glScalef(0.5, 0.5, 0.5)` and `glTranslatef(0, 0, -1.5)` so that the pot stands upright on
 //! the y axis. GLUT keeps 10 patches and draws their mirror images; here the 32 patches of
-//! Newell's data ([`gleval::math::teapot`]) are drawn directly, which is the same surface.
+//! Newell's data ([`gleval::data::teapot`]) are drawn directly, which is the same surface.
 //!
 //! `cargo run --release --example teapot -- --png teapot.png`
 
-use gleval::math::teapot::{TEAPOT_PATCHES, TEAPOT_VERTICES};
+use gleval::data::teapot::{TEAPOT_PATCHES, TEAPOT_VERTICES};
 use gleval::prelude::*;
 
 /// GLUT's tessellation of the solid teapot (`glutSolidTeapot` calls `teapot(14, ...)`).

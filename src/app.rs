@@ -26,7 +26,8 @@ pub struct Options {
 }
 
 impl Options {
-    /// Parses `--png PATH` (or `--png=PATH`) out of the program's arguments.
+    /// Parses the options [`App::run`] takes out of the program's arguments: `--png PATH` (or
+    /// `--png=PATH`), `--time N` and `--gpu`; anything else is left for the program.
     #[must_use]
     pub fn from_args(args: impl IntoIterator<Item = String>) -> Self {
         let mut out = Self::default();
@@ -162,8 +163,9 @@ impl App {
         &self.title
     }
 
-    /// Where the program's contexts evaluate `glEvalMesh` grids (initially from
-    /// `GLEVAL_TESSELLATOR`, see [`Tessellator::from_env`]; `--gpu` picks the GPU).
+    /// Where the program's contexts evaluate `glEvalMesh` grids. Initially from the environment
+    /// (`GLEVAL_TESSELLATOR`, see [`Tessellator::from_env`]: `App` is where a program meets its
+    /// environment, [`Gl::new`] never reads it); `--gpu` on the command line picks the GPU.
     #[must_use]
     pub fn with_tessellator(mut self, tessellator: Tessellator) -> Self {
         self.tessellator = tessellator;

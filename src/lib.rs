@@ -20,6 +20,7 @@
 
 #[cfg(all(feature = "gpu", feature = "png"))]
 pub mod app;
+pub mod data;
 pub mod gl;
 pub mod gll;
 pub mod glu;

@@ -3,15 +3,8 @@
 
 // --- GPU evaluator and rasteriser internals (layouts, packing, pipelines) ---
 
-
-
 // --- tessellation internals (the row scheduler and kernel, trimmed-domain plans) ---
-
-
 
 // --- GLU internals ---
 
-
-
 // --- image comparison used by the conformance tests and the gallery ---
-

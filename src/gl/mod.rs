@@ -26,8 +26,8 @@ pub use mesh_job::{MapSample, MeshJob};
 use consts::*;
 use types::*;
 
-/// The current values that a vertex picks up (GL 1.1 spec §2.7).
-/// Where `glEvalMesh` grids are evaluated.
+/// Where `glEvalMesh` grids are evaluated: chosen with [`Gl::set_tessellator`] (a new [`Gl`]
+/// starts on the CPU; `App` picks the GPU for `--gpu` or `GLEVAL_TESSELLATOR=gpu`).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum Tessellator {
     /// On the CPU: the frame holds the vertices (the default; tests read them). A large grid is
@@ -42,7 +42,8 @@ pub enum Tessellator {
 }
 
 impl Tessellator {
-    /// The environment variable that picks the tessellator of new contexts: `gpu` or `cpu`.
+    /// The environment variable that `App` reads to pick the tessellator of the
+    /// context it hands its callbacks: `gpu` or `cpu`. [`Gl::new`] never reads it.
     pub const ENV: &'static str = "GLEVAL_TESSELLATOR";
 
     /// `Gpu` when `GLEVAL_TESSELLATOR=gpu`, else `Cpu`.
@@ -55,6 +56,7 @@ impl Tessellator {
     }
 }
 
+/// The current values that a vertex picks up (GL 1.1 spec §2.7).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) struct Current {
     pub color: [f32; 4],
@@ -135,7 +137,7 @@ impl Gl {
             vertex_pool: Vec::new(),
             pending_meshes: (Vec::new(), 0),
             window_title: None,
-            tessellator: Tessellator::from_env(),
+            tessellator: Tessellator::Cpu,
             nurbs: Vec::new(),
         }
     }

@@ -54,7 +54,7 @@ pub fn parameters<S: Scalar>(points: &[S], dim: usize, method: Parameterization)
 /// the parameter at which it passes through each point.
 ///
 /// ```
-/// use gleval::math::interpolate::{interpolate, Parameterization};
+/// use gleval::math::{interpolate, Parameterization};
 /// let pts = [0.0, 0.0, 1.0, 2.0, 3.0, 2.0, 4.0, 0.0, 6.0, 1.0];
 /// let (curve, params) = interpolate(&pts, 2, 3, Parameterization::Centripetal).unwrap();
 /// let p = curve.eval(params[2]).unwrap();

@@ -20,7 +20,7 @@ pub const GLU_TOLERANCE: f64 = 1e-5;
 /// (`GLU_NURBS_ERRORn`), [`GluKnotError::message`] its `gluErrorString` text, typos included.
 ///
 /// ```
-/// use gleval::math::knots::{GluKnotError, KnotVector};
+/// use gleval::math::{GluKnotError, KnotVector};
 /// let kv = KnotVector::new(vec![0.0f32, 0.0, 1.0, 0.5, 1.0, 1.0]);
 /// assert_eq!(kv.glu_check(2), Err(GluKnotError::Decreasing));
 /// assert_eq!(GluKnotError::Decreasing.number(), 4);
@@ -113,7 +113,7 @@ pub fn find_span<S: Scalar>(knots: &[S], order: usize, u: S) -> Option<usize> {
 /// `npts` control points.
 ///
 /// ```
-/// use gleval::math::knots::KnotVector;
+/// use gleval::math::KnotVector;
 /// // Seed 004 §9.5.3: 6 points, order 4 (cubic) open uniform.
 /// let kv = KnotVector::<f32>::open_uniform(6, 4).unwrap();
 /// assert_eq!(kv.knots, [0., 0., 0., 0., 1., 2., 3., 3., 3., 3.]);
@@ -139,7 +139,7 @@ impl<S: Scalar> KnotVector<S> {
     /// `None` only if the count overflows or cannot be allocated.
     ///
     /// ```
-    /// use gleval::math::knots::KnotVector;
+    /// use gleval::math::KnotVector;
     /// assert_eq!(KnotVector::<f64>::uniform(3, 3).unwrap().knots, [0., 1., 2., 3., 4., 5.]);
     /// ```
     #[must_use]
@@ -154,7 +154,7 @@ impl<S: Scalar> KnotVector<S> {
     /// npts < order (the last loop then overwrites some zeros, with a value that may be negative).
     ///
     /// ```
-    /// use gleval::math::knots::KnotVector;
+    /// use gleval::math::KnotVector;
     /// // Seed 004 §9.5.3: d = 2, n = 4.
     /// assert_eq!(KnotVector::<f64>::open_uniform(5, 2).unwrap().knots, [0., 0., 1., 2., 3., 4., 4.]);
     /// ```

@@ -1,29 +1,39 @@
 //! The math core: Bezier and B-spline curves and tensor-product patches, knot vectors,
-//! knot insertion and Bezier decomposition, rational (homogeneous) points.
+//! knot insertion and Bezier decomposition, rational (homogeneous) points, Hermite curves,
+//! natural cubic splines, interpolation, and the NURBS constructions of seed 002 (the exact
+//! circle, revolution, extrusion).
 //!
 //! Nothing here knows GL or the GPU. Everything is generic over [`Scalar`] (`f32` for the GL
 //! façade, which like Mesa evaluates in single precision; `f64` as the oracle in tests).
-//! Control points are flat slices with `dim` (1..=4, GL's component counts) values per point.
+//!
+//! Every type lives at one path, `gleval::math::Name`. The typed curves and patches are the way
+//! in; the flat-slice kernels they are built on (control points as `&[S]` with `dim` values,
+//! 1..=4, per point, as GL stores them) are in [`kernel`] for code that works on GL's layout.
 
-pub mod bezier;
-pub mod bezier_ops;
-pub mod bspline;
-pub mod hermite;
-pub mod insertion;
-pub mod interpolate;
-pub mod knots;
-pub mod patch;
-pub mod rational;
-pub mod scalar;
-pub mod shapes;
-pub mod spline;
-pub mod teapot;
+pub(crate) mod bezier;
+pub(crate) mod bezier_ops;
+pub(crate) mod bspline;
+pub(crate) mod hermite;
+pub(crate) mod insertion;
+pub(crate) mod interpolate;
+pub mod kernel;
+pub(crate) mod knots;
+pub(crate) mod patch;
+pub(crate) mod rational;
+pub(crate) mod scalar;
+pub(crate) mod shapes;
+pub(crate) mod spline;
 
 pub use bezier::{BezierCurve, Vec4, MAX_DIM};
 pub use bezier_ops::Frenet;
+pub use bspline::{BSplineCurve, BSplineSurface, Basis, ProjectedSample};
 pub use hermite::HermiteCurve;
+pub use insertion::{BezierPatches, BezierPieces, Direction, KnotsAndPoints};
+pub use interpolate::{interpolate, Parameterization};
+pub use knots::{GluKnotError, KnotVector, GLU_MAX_ORDER, GLU_TOLERANCE};
 pub use patch::{BezierPatch, PatchSample, MAX_ORDER};
 pub use scalar::Scalar;
+pub use shapes::{extrude, nurbs_circle, revolve};
 pub use spline::CubicSpline;
 
 /// What the typed math API rejects.
@@ -64,6 +74,3 @@ impl core::fmt::Display for MathError {
 }
 
 impl std::error::Error for MathError {}
-pub use bspline::{BSplineCurve, BSplineSurface, ProjectedSample};
-pub use insertion::{BezierPatches, BezierPieces, Direction};
-pub use knots::{GluKnotError, KnotVector};

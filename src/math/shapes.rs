@@ -27,7 +27,7 @@ fn circle_knots<S: Scalar>() -> KnotVector<S> {
 /// B-spline (order 3, 9 control points, homogeneous), exact for u ∈ [0, 1].
 ///
 /// ```
-/// use gleval::math::shapes::nurbs_circle;
+/// use gleval::math::nurbs_circle;
 /// let c = nurbs_circle([1.0f64, 2.0, 0.0], 3.0).unwrap();
 /// let p = c.eval_rational(0.3).unwrap();
 /// let r = ((p[0] - 1.0).powi(2) + (p[1] - 2.0).powi(2)).sqrt();
@@ -57,7 +57,7 @@ fn homogeneous<S: Scalar>(curve: &BSplineCurve<S>, k: usize) -> [S; 4] {
 /// ([0, 1], order 3), v along the profile (its knots and order).
 ///
 /// ```
-/// use gleval::math::shapes::{nurbs_circle, revolve};
+/// use gleval::math::{nurbs_circle, revolve};
 /// use gleval::math::{BSplineCurve, KnotVector};
 /// // A segment from (1, 0, 0) to (1, 0, 2) sweeps a cylinder of radius 1.
 /// let line = BSplineCurve::try_new(3, 2, KnotVector::new(vec![0.0f64, 0.0, 1.0, 1.0]), vec![1.0, 0.0, 0.0, 1.0, 0.0, 2.0]).unwrap();
@@ -85,7 +85,7 @@ pub fn revolve<S: Scalar>(profile: &BSplineCurve<S>) -> Result<BSplineSurface<S>
 /// the curve (v = 0) to its copy moved by `direction` (v = 1).
 ///
 /// ```
-/// use gleval::math::shapes::{extrude, nurbs_circle};
+/// use gleval::math::{extrude, nurbs_circle};
 /// let tube = extrude(&nurbs_circle([0.0f64, 0.0, 0.0], 1.0).unwrap(), [0.0, 0.0, 3.0]).unwrap();
 /// let p = tube.eval_rational(0.6, 0.5).unwrap();
 /// assert!(((p[0] * p[0] + p[1] * p[1]).sqrt() - 1.0).abs() < 1e-12 && (p[2] - 1.5).abs() < 1e-12);

@@ -2,7 +2,7 @@
 //! validation) and compared with the mesh that was written.
 
 use super::*;
-use crate::math::teapot::teapot_patches;
+use crate::data::teapot::teapot_patches;
 use crate::math::BezierPatch;
 
 /// Two patches of the teapot appended: shared edges, a collapsed edge with zero normals (the

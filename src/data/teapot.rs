@@ -8,7 +8,7 @@
 //! across rows, the parameterisation GLUT's `glMap2f(..., 0, 1, 3, 4, 0, 1, 12, 4, ...)` gives, so
 //! ∂p/∂u × ∂p/∂v points out of the pot and [`BezierPatch::tessellate`] yields outward normals.
 
-use super::BezierPatch;
+use crate::math::BezierPatch;
 
 /// Number of patches in [`TEAPOT_PATCHES`].
 pub const TEAPOT_PATCH_COUNT: usize = 32;
@@ -162,7 +162,7 @@ pub const TEAPOT_PATCHES: [[u16; 16]; 32] = [
 /// The teapot as 32 bicubic patches of dimension 3, u along each data row (see the module notes).
 ///
 /// ```
-/// use gleval::math::teapot::teapot_patches;
+/// use gleval::data::teapot::teapot_patches;
 /// let patches = teapot_patches();
 /// assert_eq!(patches.len(), 32);
 /// // The first row of the lid's knob is collapsed to the top of the pot, (0, 0, 3.15).
