@@ -6,13 +6,17 @@
 //! context does; `gl.glut_get(GLUT_WINDOW_WIDTH)` answers inside them.
 
 use crate::gl::{Gl, Tessellator};
+use crate::glut::state::TimerRequest;
+use crate::glut::{IdleFn, Schedule};
 use crate::render::{Image, RenderError, Renderer};
 
 type DisplayFn = Box<dyn FnMut(&mut Gl)>;
 type ReshapeFn = Box<dyn FnMut(&mut Gl, i32, i32)>;
 type KeyboardFn = Box<dyn FnMut(&mut Gl, char, i32, i32)>;
+type SpecialFn = Box<dyn FnMut(&mut Gl, i32, i32, i32)>;
 type MouseFn = Box<dyn FnMut(&mut Gl, i32, i32, i32, i32)>;
 type MotionFn = Box<dyn FnMut(&mut Gl, i32, i32)>;
+type EntryFn = Box<dyn FnMut(&mut Gl, i32)>;
 
 /// What the command line asked for.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -23,11 +27,14 @@ pub struct Options {
     pub time: Option<usize>,
     /// `--gpu`: evaluate `glEvalMesh` grids in the GPU tessellator's compute shader.
     pub gpu: bool,
+    /// `--frames N`: headless, run the program for N frames (idle and timer callbacks on a
+    /// virtual 60 Hz clock) and render the last.
+    pub frames: Option<usize>,
 }
 
 impl Options {
     /// Parses the options [`App::run`] takes out of the program's arguments: `--png PATH` (or
-    /// `--png=PATH`), `--time N` and `--gpu`; anything else is left for the program.
+    /// `--png=PATH`), `--time N`, `--frames N` and `--gpu`; anything else is left for the program.
     #[must_use]
     pub fn from_args(args: impl IntoIterator<Item = String>) -> Self {
         let mut out = Self::default();
@@ -41,6 +48,8 @@ impl Options {
                 out.time = args.next().and_then(|n| n.parse().ok());
             } else if a == "--gpu" {
                 out.gpu = true;
+            } else if a == "--frames" {
+                out.frames = args.next().and_then(|n| n.parse().ok());
             }
         }
         out
@@ -58,6 +67,16 @@ pub struct App {
     keyboard: Option<KeyboardFn>,
     mouse: Option<MouseFn>,
     motion: Option<MotionFn>,
+    passive_motion: Option<MotionFn>,
+    keyboard_up: Option<KeyboardFn>,
+    special: Option<SpecialFn>,
+    special_up: Option<SpecialFn>,
+    entry: Option<EntryFn>,
+    idle: Option<IdleFn>,
+    timers: Vec<TimerRequest>,
+    display_mode: u32,
+    /// `--frames N`: how many frames a run draws before it stops (headless: renders the last).
+    frames: Option<usize>,
     tessellator: Tessellator,
 }
 
@@ -75,6 +94,15 @@ impl App {
             keyboard: None,
             mouse: None,
             motion: None,
+            passive_motion: None,
+            keyboard_up: None,
+            special: None,
+            special_up: None,
+            entry: None,
+            idle: None,
+            timers: Vec::new(),
+            display_mode: 0,
+            frames: None,
             tessellator: Tessellator::from_env(),
         }
     }
@@ -126,6 +154,98 @@ impl App {
         self
     }
 
+    /// `glutPassiveMotionFunc`: called with the mouse position when it moves with no button
+    /// held.
+    #[must_use]
+    pub fn passive_motion(mut self, f: impl FnMut(&mut Gl, i32, i32) + 'static) -> Self {
+        self.passive_motion = Some(Box::new(f));
+        self
+    }
+
+    /// `glutKeyboardUpFunc`: called with the character and the mouse position when a key that
+    /// types one is released.
+    #[must_use]
+    pub fn keyboard_up(mut self, f: impl FnMut(&mut Gl, char, i32, i32) + 'static) -> Self {
+        self.keyboard_up = Some(Box::new(f));
+        self
+    }
+
+    /// `glutSpecialFunc`: called with a `GLUT_KEY_*` code (arrows, F1..F12, page up/down, home,
+    /// end, insert) and the mouse position when such a key is pressed; the window then redraws.
+    #[must_use]
+    pub fn special(mut self, f: impl FnMut(&mut Gl, i32, i32, i32) + 'static) -> Self {
+        self.special = Some(Box::new(f));
+        self
+    }
+
+    /// `glutSpecialUpFunc`: as [`App::special`], when the key is released.
+    #[must_use]
+    pub fn special_up(mut self, f: impl FnMut(&mut Gl, i32, i32, i32) + 'static) -> Self {
+        self.special_up = Some(Box::new(f));
+        self
+    }
+
+    /// `glutEntryFunc`: called with `GLUT_ENTERED` or `GLUT_LEFT` when the pointer enters or
+    /// leaves the window.
+    #[must_use]
+    pub fn entry(mut self, f: impl FnMut(&mut Gl, i32) + 'static) -> Self {
+        self.entry = Some(Box::new(f));
+        self
+    }
+
+    /// `glutIdleFunc`: called whenever the window has nothing else to do; an animation calls
+    /// `gl.glut_post_redisplay()` from it and runs at the display's rate. Headless, once per
+    /// frame of `--frames N`. Callbacks change it with [`Gl::glut_idle_func`].
+    #[must_use]
+    pub fn idle(mut self, f: impl FnMut(&mut Gl) + 'static) -> Self {
+        self.idle = Some(Box::new(f));
+        self
+    }
+
+    /// `glutTimerFunc(msecs, f, value)` before the main loop: `f(gl, value)` runs once, `msecs`
+    /// milliseconds after the loop starts (headless, on the virtual 60 Hz clock of
+    /// `--frames`). Callbacks register more with [`Gl::glut_timer_func`].
+    #[must_use]
+    pub fn timer(mut self, msecs: u32, f: impl FnMut(&mut Gl, i32) + 'static, value: i32) -> Self {
+        self.timers.push((msecs, Box::new(f), value));
+        self
+    }
+
+    /// `glutInitDisplayMode` (`GLUT_DOUBLE | GLUT_RGB | GLUT_DEPTH`, ...): recorded for
+    /// `glutGet`; the window always has a colour and a depth buffer, and shows each frame
+    /// when the display callback returns.
+    #[must_use]
+    pub fn init_display_mode(mut self, mode: u32) -> Self {
+        self.display_mode = mode;
+        self
+    }
+
+    /// The key-release callback; false if there is none.
+    pub fn run_keyboard_up(&mut self, gl: &mut Gl, key: char, x: i32, y: i32) -> bool {
+        self.keyboard_up.as_mut().map(|f| f(gl, key, x, y)).is_some()
+    }
+
+    /// The special-key callback (`up` for a release); false if there is none.
+    pub fn run_special(&mut self, gl: &mut Gl, up: bool, key: i32, x: i32, y: i32) -> bool {
+        let callback = if up { &mut self.special_up } else { &mut self.special };
+        callback.as_mut().map(|f| f(gl, key, x, y)).is_some()
+    }
+
+    /// The passive-motion callback; false if there is none.
+    pub fn run_passive_motion(&mut self, gl: &mut Gl, x: i32, y: i32) -> bool {
+        self.passive_motion.as_mut().map(|f| f(gl, x, y)).is_some()
+    }
+
+    /// The entry callback; false if there is none.
+    pub fn run_entry(&mut self, gl: &mut Gl, state: i32) -> bool {
+        self.entry.as_mut().map(|f| f(gl, state)).is_some()
+    }
+
+    /// The idle callback and timers registered so far, handed to the main loop.
+    pub(crate) fn take_schedule(&mut self, now_ms: f64) -> Schedule {
+        Schedule::new(self.idle.take(), std::mem::take(&mut self.timers), now_ms)
+    }
+
     /// What the window does on a mouse button: the mouse callback; false if there is none.
     pub fn run_mouse(&mut self, gl: &mut Gl, button: i32, state: i32, x: i32, y: i32) -> bool {
         self.mouse.as_mut().map(|mouse| mouse(gl, button, state, x, y)).is_some()
@@ -157,6 +277,12 @@ impl App {
         }
     }
 
+    /// `--frames N`, if the program was started with it.
+    #[must_use]
+    pub fn frames(&self) -> Option<usize> {
+        self.frames
+    }
+
     /// The window title.
     #[must_use]
     pub fn title(&self) -> &str {
@@ -182,6 +308,8 @@ impl App {
     pub(crate) fn new_gl(&self) -> Gl {
         let mut gl = Gl::new(self.width, self.height);
         gl.set_tessellator(self.tessellator);
+        gl.glut.display_mode = self.display_mode;
+        gl.glut.init_size = (self.width, self.height);
         gl
     }
 
@@ -193,6 +321,7 @@ impl App {
         if options.gpu {
             self.tessellator = Tessellator::Gpu;
         }
+        self.frames = options.frames;
         let result = match (options.time, options.png) {
             (Some(frames), _) => self.print_frame_time(frames),
             (None, Some(path)) => self.write_png(&path),
@@ -206,9 +335,35 @@ impl App {
 
     /// Runs init, reshape and display once on a fresh context and returns what was drawn.
     pub fn record_frame(&mut self) -> Gl {
+        self.record_frames(1)
+    }
+
+    /// Runs the program headless for `frames` frames and returns the context holding what the
+    /// last one drew: init, reshape and display, then, between frames, what GLUT's main loop
+    /// does in one refresh of a 60 Hz display: the timers due by then (earliest first) and the
+    /// idle callback once; the next frame is drawn when one of them posts a redisplay. The
+    /// clock is virtual (`GLUT_ELAPSED_TIME` advances 1000/60 ms a step), so every run draws
+    /// the same frames. A program that stops asking for redisplays ends early.
+    pub fn record_frames(&mut self, frames: usize) -> Gl {
         let mut gl = self.new_gl();
         self.run_init(&mut gl);
+        let mut schedule = self.take_schedule(0.0);
+        schedule.absorb(&mut gl, 0.0);
+        let mut clock = 0.0;
         self.draw_into(&mut gl, self.width, self.height);
+        for _ in 1..frames.max(1) {
+            if !advance_to_redisplay(&mut gl, &mut schedule, &mut clock) {
+                break;
+            }
+            let previous = gl.take_frame();
+            gl.recycle_frame(previous);
+            if let Some((width, height)) = gl.glut.reshape.take() {
+                (self.width, self.height) = (width, height);
+                self.run_reshape(&mut gl, width, height);
+            }
+            self.run_display(&mut gl);
+            schedule.absorb(&mut gl, clock);
+        }
         gl
     }
 
@@ -233,9 +388,9 @@ impl App {
         }
     }
 
-    /// Renders one frame headless.
+    /// Renders one frame headless (the last of `--frames N`).
     pub fn render_image(&mut self) -> Result<Image, RenderError> {
-        let mut gl = self.record_frame();
+        let mut gl = self.record_frames(self.frames.unwrap_or(1));
         let mut renderer = Renderer::new()?;
         renderer.render_frame(&gl.take_frame(), self.width as u32, self.height as u32)
     }
@@ -284,4 +439,29 @@ impl App {
     fn run_window(self) -> Result<(), Box<dyn std::error::Error>> {
         Err("this build has no window support (feature `window`); run with --png PATH".into())
     }
+}
+
+/// The virtual refresh period of headless runs: a 60 Hz display.
+const HEADLESS_FRAME_MS: f64 = 1000.0 / 60.0;
+
+/// How many refreshes a headless run waits for a redisplay (an idle callback that never posts
+/// one, a timer an hour away) before it decides the picture will not change.
+const MAX_QUIET_REFRESHES: usize = 100_000;
+
+/// Steps the virtual clock one refresh at a time, running due timers and the idle callback,
+/// until a callback has posted a redisplay (true) or nothing is left that could (false).
+fn advance_to_redisplay(gl: &mut Gl, schedule: &mut Schedule, clock: &mut f64) -> bool {
+    for _ in 0..MAX_QUIET_REFRESHES {
+        *clock += HEADLESS_FRAME_MS;
+        gl.glut.elapsed_ms = *clock as i32;
+        schedule.fire_due(gl, *clock);
+        schedule.run_idle(gl, *clock);
+        if std::mem::take(&mut gl.glut.redisplay) {
+            return true;
+        }
+        if schedule.is_empty() {
+            return false;
+        }
+    }
+    false
 }

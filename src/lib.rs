@@ -24,6 +24,7 @@ pub mod data;
 pub mod gl;
 pub mod gll;
 pub mod glu;
+pub mod glut;
 pub mod math;
 pub mod prelude;
 pub mod render;

@@ -9,3 +9,4 @@ pub use crate::gl::{Frame, Gl, Primitive, Vertex};
 pub use crate::gll;
 pub use crate::glu::consts::*;
 pub use crate::glu::{glu_error_string, GLUnurbs, NurbsCallback};
+pub use crate::glut::consts::*;

@@ -4,17 +4,19 @@
 //! frame draws is taken from it each time.
 
 use crate::app::App;
-use crate::gl::consts::{GLUT_DOWN, GLUT_LEFT_BUTTON, GLUT_MIDDLE_BUTTON, GLUT_RIGHT_BUTTON, GLUT_UP};
 use crate::gl::Gl;
+use crate::glut::consts::*;
+use crate::glut::Schedule;
 use crate::render::{RenderError, Renderer};
 use std::error::Error;
 use std::sync::{Arc, Mutex};
+use std::time::{Duration, Instant};
 use winit::application::ApplicationHandler;
 use winit::dpi::PhysicalSize;
-use winit::event::{ElementState, KeyEvent, MouseButton, WindowEvent};
-use winit::event_loop::{ActiveEventLoop, EventLoop};
+use winit::event::{ElementState, KeyEvent, Modifiers, MouseButton, WindowEvent};
+use winit::event_loop::{ActiveEventLoop, ControlFlow, EventLoop};
 use winit::keyboard::{Key, NamedKey};
-use winit::window::{Window, WindowId};
+use winit::window::{Fullscreen, Window, WindowId};
 
 /// Opens the window and runs until it is closed (or Escape is pressed).
 pub(crate) fn run(app: App) -> Result<(), Box<dyn Error>> {
@@ -26,7 +28,19 @@ pub(crate) fn run(app: App) -> Result<(), Box<dyn Error>> {
         );
     }
     let event_loop = EventLoop::new().map_err(|e| format!("could not connect to the display ({e}); {USE_PNG}"))?;
-    let mut state = WindowState { app, gl: None, gpu: None, size: None, cursor: (0, 0), buttons_down: 0, error: None };
+    let mut state = WindowState {
+        app,
+        gl: None,
+        gpu: None,
+        size: None,
+        cursor: (0, 0),
+        buttons_down: 0,
+        modifiers: 0,
+        schedule: Schedule::default(),
+        start: Instant::now(),
+        frames_drawn: 0,
+        error: None,
+    };
     event_loop.run_app(&mut state)?;
     match state.error {
         Some(e) => Err(e.into()),
@@ -55,6 +69,14 @@ struct WindowState {
     cursor: (i32, i32),
     /// Mouse buttons held (motion callbacks run only then, as GLUT's).
     buttons_down: u32,
+    /// `GLUT_ACTIVE_*` bits of the modifier keys held.
+    modifiers: i32,
+    /// The idle callback and timers.
+    schedule: Schedule,
+    /// When the main loop started: `GLUT_ELAPSED_TIME` and the timers count from here.
+    start: Instant,
+    /// Frames presented (`--frames N` closes the window after N).
+    frames_drawn: usize,
     error: Option<String>,
 }
 
@@ -216,14 +238,12 @@ impl WindowState {
             }
         };
         let (width, height) = (size.width, size.height);
+        gl.glut.elapsed_ms = self.start.elapsed().as_millis() as i32;
         if self.size != Some((width, height)) {
             self.size = Some((width, height));
             self.app.run_reshape(gl, width as i32, height as i32);
         }
         self.app.run_display(gl);
-        if let Some(title) = gl.take_window_title() {
-            gpu.window.set_title(&title);
-        }
         let recorded = gl.take_frame();
         let view = frame.texture.create_view(&Default::default());
         let mut encoder = gpu.renderer.device.create_command_encoder(&Default::default());
@@ -232,6 +252,50 @@ impl WindowState {
         gpu.window.pre_present_notify();
         gpu.renderer.queue.present(frame);
         gl.recycle_frame(recorded);
+        self.frames_drawn += 1;
+        if self.app.frames().is_some_and(|n| self.frames_drawn >= n) {
+            return event_loop.exit();
+        }
+        self.after_callback();
+    }
+
+    /// Milliseconds since the main loop started.
+    fn now_ms(&self) -> f64 {
+        self.start.elapsed().as_secs_f64() * 1e3
+    }
+
+    /// Carries out what GLUT calls in the last callback asked for: the idle and timer
+    /// changes, a redisplay, the window's title, size and full-screen state.
+    fn after_callback(&mut self) {
+        let now = self.now_ms();
+        let (Some(gpu), Some(gl)) = (self.gpu.as_ref(), self.gl.as_mut()) else { return };
+        self.schedule.absorb(gl, now);
+        if std::mem::take(&mut gl.glut.redisplay) {
+            gpu.window.request_redraw();
+        }
+        if let Some(title) = gl.take_window_title() {
+            gpu.window.set_title(&title);
+        }
+        if let Some((width, height)) = gl.glut.reshape.take() {
+            // The reshape callback runs when the window system grants the size.
+            let _ = gpu.window.request_inner_size(PhysicalSize::new(width as u32, height as u32));
+        }
+        if std::mem::take(&mut gl.glut.full_screen) {
+            gpu.window.set_fullscreen(Some(Fullscreen::Borderless(None)));
+        }
+    }
+
+    /// Runs an input callback with `glutGetModifiers` answering, then redraws if it ran (the
+    /// convenience this runner has always offered: input changes what is drawn) and carries
+    /// out its requests.
+    fn input(&mut self, run: impl FnOnce(&mut App, &mut Gl) -> bool) {
+        let Some(gl) = self.gl.as_mut() else { return };
+        gl.glut.modifiers = self.modifiers;
+        gl.glut.elapsed_ms = self.start.elapsed().as_millis() as i32;
+        let ran = run(&mut self.app, gl);
+        gl.glut.modifiers = 0;
+        self.redraw_if(ran);
+        self.after_callback();
     }
 
     /// Asks for a redraw after a callback ran.
@@ -241,19 +305,49 @@ impl WindowState {
         }
     }
 
-    /// A key press: Escape closes the window; a key that types text goes to the keyboard callback.
+    /// A key pressed or released: Escape (pressed) closes the window; a key that types text
+    /// goes to the keyboard callbacks, a `GLUT_KEY_*` key to the special ones.
     fn key(&mut self, event_loop: &ActiveEventLoop, event: &KeyEvent) {
-        if event.logical_key == Key::Named(NamedKey::Escape) {
+        let pressed = event.state == ElementState::Pressed;
+        if pressed && event.logical_key == Key::Named(NamedKey::Escape) {
             return event_loop.exit();
         }
-        // GLUT's keyboard callback gets the character typed (Enter is '\r', Backspace '\b').
-        let key = event.text.as_ref().and_then(|t| t.chars().next());
-        if let (Some(key), Some(gl)) = (key, self.gl.as_mut()) {
-            self.app.run_keyboard(gl, key, self.cursor.0, self.cursor.1);
-            if let Some(gpu) = &self.gpu {
-                gpu.window.request_redraw();
-            }
+        let (x, y) = self.cursor;
+        if let Some(code) = special_key(&event.logical_key) {
+            return self.input(|app, gl| app.run_special(gl, !pressed, code, x, y));
         }
+        // GLUT's keyboard callback gets the character typed (Enter is '\r', Backspace '\b').
+        // A release carries no text: the logical key (layout and modifiers applied) gives it.
+        let text = if pressed { event.text.as_deref() } else { key_text(&event.logical_key) };
+        let Some(key) = text.and_then(|t| t.chars().next()) else { return };
+        if pressed {
+            self.input(|app, gl| {
+                app.run_keyboard(gl, key, x, y);
+                true
+            });
+        } else {
+            self.input(|app, gl| app.run_keyboard_up(gl, key, x, y));
+        }
+    }
+
+    /// After the events of a loop turn: due timers, the idle callback, then sleep until the
+    /// next timer (or not at all while an idle callback is set, as GLUT's loop spins).
+    fn idle(&mut self, event_loop: &ActiveEventLoop) {
+        let now = self.now_ms();
+        if let Some(gl) = self.gl.as_mut() {
+            gl.glut.elapsed_ms = now as i32;
+            self.schedule.fire_due(gl, now);
+            self.schedule.run_idle(gl, now);
+        }
+        self.after_callback();
+        let flow = if self.schedule.has_idle() {
+            ControlFlow::Poll
+        } else if let Some(due) = self.schedule.next_due_ms() {
+            ControlFlow::WaitUntil(self.start + Duration::from_secs_f64(due.max(0.0) / 1e3))
+        } else {
+            ControlFlow::Wait
+        };
+        event_loop.set_control_flow(flow);
     }
 }
 
@@ -268,6 +362,8 @@ impl ApplicationHandler for WindowState {
                 let mut gl = Gl::new(size.width.max(1) as i32, size.height.max(1) as i32);
                 gl.set_tessellator(self.app.tessellator());
                 self.app.run_init(&mut gl);
+                self.schedule = self.app.take_schedule(0.0);
+                self.start = Instant::now();
                 self.gl = Some(gl);
                 gpu.window.request_redraw();
                 self.gpu = Some(gpu);
@@ -288,12 +384,16 @@ impl ApplicationHandler for WindowState {
             WindowEvent::RedrawRequested => self.redraw(event_loop),
             WindowEvent::CursorMoved { position, .. } => {
                 self.cursor = (position.x as i32, position.y as i32);
+                let (x, y) = self.cursor;
                 if self.buttons_down > 0 {
-                    let (x, y) = self.cursor;
-                    let ran = self.gl.as_mut().is_some_and(|gl| self.app.run_motion(gl, x, y));
-                    self.redraw_if(ran);
+                    self.input(|app, gl| app.run_motion(gl, x, y));
+                } else {
+                    self.input(|app, gl| app.run_passive_motion(gl, x, y));
                 }
             }
+            WindowEvent::CursorEntered { .. } => self.input(|app, gl| app.run_entry(gl, GLUT_ENTERED)),
+            WindowEvent::CursorLeft { .. } => self.input(|app, gl| app.run_entry(gl, GLUT_LEFT)),
+            WindowEvent::ModifiersChanged(modifiers) => self.modifiers = glut_modifiers(&modifiers),
             WindowEvent::MouseInput { state, button, .. } => {
                 let button = match button {
                     MouseButton::Left => GLUT_LEFT_BUTTON,
@@ -305,18 +405,83 @@ impl ApplicationHandler for WindowState {
                 self.buttons_down = if down { self.buttons_down + 1 } else { self.buttons_down.saturating_sub(1) };
                 let (x, y) = self.cursor;
                 let glut_state = if down { GLUT_DOWN } else { GLUT_UP };
-                let ran = self.gl.as_mut().is_some_and(|gl| self.app.run_mouse(gl, button, glut_state, x, y));
-                self.redraw_if(ran);
+                self.input(|app, gl| app.run_mouse(gl, button, glut_state, x, y));
             }
-            WindowEvent::KeyboardInput { event, .. } if event.state == ElementState::Pressed => {
-                self.key(event_loop, &event);
-            }
+            WindowEvent::KeyboardInput { event, .. } => self.key(event_loop, &event),
             _ => {}
         }
+    }
+
+    fn about_to_wait(&mut self, event_loop: &ActiveEventLoop) {
+        self.idle(event_loop);
     }
 
     fn exiting(&mut self, _event_loop: &ActiveEventLoop) {
         // Drop the surface before the window it was made from.
         self.gpu = None;
     }
+}
+
+/// The `GLUT_KEY_*` code of a key GLUT reports to `glutSpecialFunc`.
+fn special_key(key: &Key) -> Option<i32> {
+    let Key::Named(named) = key else { return None };
+    let function_keys = [
+        NamedKey::F1,
+        NamedKey::F2,
+        NamedKey::F3,
+        NamedKey::F4,
+        NamedKey::F5,
+        NamedKey::F6,
+        NamedKey::F7,
+        NamedKey::F8,
+        NamedKey::F9,
+        NamedKey::F10,
+        NamedKey::F11,
+        NamedKey::F12,
+    ];
+    if let Some(k) = function_keys.iter().position(|f| f == named) {
+        return Some(GLUT_KEY_F1 + k as i32);
+    }
+    Some(match named {
+        NamedKey::ArrowLeft => GLUT_KEY_LEFT,
+        NamedKey::ArrowUp => GLUT_KEY_UP,
+        NamedKey::ArrowRight => GLUT_KEY_RIGHT,
+        NamedKey::ArrowDown => GLUT_KEY_DOWN,
+        NamedKey::PageUp => GLUT_KEY_PAGE_UP,
+        NamedKey::PageDown => GLUT_KEY_PAGE_DOWN,
+        NamedKey::Home => GLUT_KEY_HOME,
+        NamedKey::End => GLUT_KEY_END,
+        NamedKey::Insert => GLUT_KEY_INSERT,
+        _ => return None,
+    })
+}
+
+/// The character a released key typed, as GLUT's keyboard callbacks get it.
+fn key_text(key: &Key) -> Option<&str> {
+    match key {
+        Key::Character(text) => Some(text.as_str()),
+        Key::Named(NamedKey::Enter) => Some("\r"),
+        Key::Named(NamedKey::Backspace) => Some("\u{8}"),
+        Key::Named(NamedKey::Tab) => Some("\t"),
+        Key::Named(NamedKey::Space) => Some(" "),
+        Key::Named(NamedKey::Escape) => Some("\u{1b}"),
+        Key::Named(NamedKey::Delete) => Some("\u{7f}"),
+        _ => None,
+    }
+}
+
+/// `glutGetModifiers`'s bits for the modifier keys held.
+fn glut_modifiers(modifiers: &Modifiers) -> i32 {
+    let state = modifiers.state();
+    let mut bits = 0;
+    if state.shift_key() {
+        bits |= GLUT_ACTIVE_SHIFT;
+    }
+    if state.control_key() {
+        bits |= GLUT_ACTIVE_CTRL;
+    }
+    if state.alt_key() {
+        bits |= GLUT_ACTIVE_ALT;
+    }
+    bits
 }

@@ -159,18 +159,3 @@ pub const GL_ALWAYS: GLenum = 0x0207;
 // Other buffer bits.
 pub const GL_ACCUM_BUFFER_BIT: GLenum = 0x0000_0200;
 pub const GL_STENCIL_BUFFER_BIT: GLenum = 0x0000_0400;
-
-/// `glutMouseFunc` buttons and states (freeglut's values).
-pub const GLUT_LEFT_BUTTON: i32 = 0;
-/// The middle button.
-pub const GLUT_MIDDLE_BUTTON: i32 = 1;
-/// The right button.
-pub const GLUT_RIGHT_BUTTON: i32 = 2;
-/// A button pressed.
-pub const GLUT_DOWN: i32 = 0;
-/// A button released.
-pub const GLUT_UP: i32 = 1;
-
-// GLUT's glutGet names.
-pub const GLUT_WINDOW_WIDTH: GLenum = 102;
-pub const GLUT_WINDOW_HEIGHT: GLenum = 103;

@@ -109,8 +109,8 @@ pub struct Gl {
     /// Small CPU meshes recorded but not yet evaluated (see `Gl::record_mesh`), with their
     /// index in `frame.meshes` and their total grid points.
     pub(crate) pending_meshes: (Vec<(usize, MeshJob)>, usize),
-    /// A window title asked for with `glut_set_window_title`.
-    window_title: Option<String>,
+    /// What GLUT's calls made inside callbacks ask of the window (redisplay, timers, idle, title).
+    pub(crate) glut: crate::glut::GlutState,
     tessellator: Tessellator,
     /// GLU NURBS objects, indexed by their handles.
     pub(crate) nurbs: Vec<Option<crate::glu::NurbsObject>>,
@@ -136,7 +136,7 @@ impl Gl {
             frame: Frame::default(),
             vertex_pool: Vec::new(),
             pending_meshes: (Vec::new(), 0),
-            window_title: None,
+            glut: crate::glut::GlutState::default(),
             tessellator: Tessellator::Cpu,
             nurbs: Vec::new(),
         }

@@ -1,5 +1,5 @@
 //! Rasterisation state and framebuffer calls: viewport, point size, line width, polygon mode,
-//! face culling, depth function, clear colour and `glClear`, plus GLUT's `glutGet`.
+//! face culling, depth function, clear colour and `glClear`.
 
 use super::consts::*;
 use super::frame::Command;
@@ -184,27 +184,5 @@ impl Gl {
     /// `glFinish`: as [`Gl::flush`].
     pub fn finish(&mut self) {
         self.reject_inside_begin_end();
-    }
-
-    /// `glutSetWindowTitle`: the window shows `title` after the current frame (headless
-    /// rendering ignores it).
-    pub fn glut_set_window_title(&mut self, title: &str) {
-        self.window_title = Some(title.to_owned());
-    }
-
-    /// The title asked for since the last call, if any (the window applies it).
-    pub fn take_window_title(&mut self) -> Option<String> {
-        self.window_title.take()
-    }
-
-    /// `glutGet`: `GLUT_WINDOW_WIDTH` / `GLUT_WINDOW_HEIGHT`; other names give -1 (as freeglut
-    /// does for unknown queries).
-    #[must_use]
-    pub fn glut_get(&self, what: GLenum) -> i32 {
-        match what {
-            GLUT_WINDOW_WIDTH => self.width,
-            GLUT_WINDOW_HEIGHT => self.height,
-            _ => -1,
-        }
     }
 }

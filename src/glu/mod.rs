@@ -2,7 +2,7 @@
 //! `gluOrtho2D`, `gluPerspective` and `gluLookAt` are methods of [`crate::gl::Gl`] next to the
 //! matrix calls.
 //!
-//! A NURBS is reduced to Bezier pieces by knot insertion ([`crate::math::insertion`]) and drawn
+//! A NURBS is reduced to Bezier pieces by knot insertion ([`crate::math::kernel::decompose_surface`]) and drawn
 //! through the GL evaluators (`GLU_NURBS_RENDERER`) or handed to callbacks
 //! (`GLU_NURBS_TESSELLATOR`), as GLU does.
 

@@ -5,6 +5,7 @@ mod conformance;
 mod eval_mesh;
 mod glu_errors;
 mod glu_tessellation;
+mod glut_loop;
 mod gpu_parity;
 mod interactive_demo;
 mod mesa_calls;

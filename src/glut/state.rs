@@ -1,0 +1,47 @@
+//! What GLUT calls made inside callbacks leave for the runner, and what the runner tells them.
+
+use super::{IdleFn, TimerFn};
+
+/// A timer asked for with `glutTimerFunc`: delay in ms, callback, value.
+pub(crate) type TimerRequest = (u32, TimerFn, i32);
+
+/// GLUT's state inside a [`crate::gl::Gl`]: requests made by callbacks (taken by the runner
+/// after each callback) and the facts the runner sets before calling them.
+#[derive(Default)]
+pub(crate) struct GlutState {
+    /// `glutPostRedisplay` was called.
+    pub redisplay: bool,
+    /// `glutGetModifiers` while an input callback runs.
+    pub modifiers: i32,
+    /// `glutSetWindowTitle`.
+    pub title: Option<String>,
+    /// `glutReshapeWindow`.
+    pub reshape: Option<(i32, i32)>,
+    /// `glutFullScreen`.
+    pub full_screen: bool,
+    /// `glutInitDisplayMode` and `glutInitWindowSize`, for `glutGet`.
+    pub display_mode: u32,
+    pub init_size: (i32, i32),
+    /// `GLUT_ELAPSED_TIME`, set by the runner.
+    pub elapsed_ms: i32,
+    /// `glutIdleFunc`: `Some(new)` when a callback changed it.
+    pub idle: Option<Option<IdleFn>>,
+    /// `glutTimerFunc` calls not yet scheduled.
+    pub timers: Vec<TimerRequest>,
+}
+
+impl std::fmt::Debug for GlutState {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("GlutState")
+            .field("redisplay", &self.redisplay)
+            .field("modifiers", &self.modifiers)
+            .field("title", &self.title)
+            .field("reshape", &self.reshape)
+            .field("full_screen", &self.full_screen)
+            .field("display_mode", &self.display_mode)
+            .field("elapsed_ms", &self.elapsed_ms)
+            .field("idle_changed", &self.idle.is_some())
+            .field("timers", &self.timers.len())
+            .finish()
+    }
+}
