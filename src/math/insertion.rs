@@ -92,7 +92,7 @@ impl<S: Scalar> BezierPieces<S> {
 ///
 /// Patch (a, b) covers `uintervals[a] × vintervals[b]`; its `uorder * vorder` points start at
 /// `(a * vintervals.len() + b) * uorder * vorder * dim`, packed u-major as in
-/// [`super::patch`]: point (i, j) at `(i * vorder + j) * dim` within the patch.
+/// [`crate::math::BezierPatch`]: point (i, j) at `(i * vorder + j) * dim` within the patch.
 ///
 /// ```
 /// use gleval::math::{BSplineSurface, KnotVector};
