@@ -5,7 +5,7 @@
 //! `cargo run --release --example gallery`
 
 use gleval::prelude::*;
-use gleval::render::compare::{compare, load_png, RgbImage};
+use gleval::testing::compare::{compare, load_png, RgbImage};
 use std::fmt::Write as _;
 use std::path::Path;
 

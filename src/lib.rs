@@ -10,9 +10,24 @@
 //! - the **typed API** in [`math`]: Bezier and B-spline curves and patches with `Result` errors,
 //!   no GL state at all.
 //!
-//! Layers, each depending only on those above it: `math` → `tess` → `gl` → (`glu`, `gll`,
-//! `render`, `app` in later milestones). With `--no-default-features` the crate is pure CPU
-//! Rust with no GPU or windowing dependency.
+//! Layers, each importing only those above it in this list:
+//!
+//! | module | what it holds |
+//! |---|---|
+//! | [`math`] | Bezier, B-spline and NURBS curves and patches, knots, the flat-slice kernels |
+//! | [`tess`] | grids and trimmed domains into meshes; mesh export |
+//! | [`gl`] | the GL 1.x state machine: errors, immediate mode, matrices, lighting, evaluators, the recorded [`gl::Frame`] |
+//! | [`glu`] | GLU: projections and the NURBS object (sampling, trimming, display modes, callbacks) |
+//! | [`glut`] | GLUT's constants and the state behind its `Gl` methods |
+//! | [`gll`], [`data`] | the textbook's `gll.h` helpers (public API only); demo data (the teapot) |
+//! | [`render`] | drawing a frame: the CPU vertex stage and primitive assembly, the wgpu renderer, PNG |
+//! | `app` | the GLUT-like `App`: a window, or a headless PNG |
+//!
+//! One edge runs upward, by the porting rule: GLU and GLUT calls are methods of [`gl::Gl`]
+//! (`gluNurbsSurface` is `gl.glu_nurbs_surface`), so `Gl` holds GLU's NURBS objects and GLUT's
+//! state and those modules add `impl Gl` blocks. GLU itself reaches GL state only through what
+//! GL offers (calls, queries, the attribute stack), as real GLU does. With
+//! `--no-default-features` the crate is pure CPU Rust with no GPU or windowing dependency.
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 // Numeric kernels index several component arrays in lockstep; iterator chains would hide that.

@@ -3,8 +3,14 @@
 
 // --- GPU evaluator and rasteriser internals (layouts, packing, pipelines) ---
 
-// --- tessellation internals (the row scheduler and kernel, trimmed-domain plans) ---
+// --- tessellation internals: the f64 grid evaluator, the oracle of the GPU parity tests ---
+pub use crate::tess::grid::{eval_grid2, Grid2, MapView};
 
 // --- GLU internals ---
 
 // --- image comparison used by the conformance tests and the gallery ---
+#[cfg(all(feature = "gpu", feature = "png"))]
+pub mod compare {
+    //! The image metric (`render/compare.rs`).
+    pub use crate::render::compare::*;
+}

@@ -108,7 +108,7 @@ impl MeshJob {
     }
 
     /// The vertices of the grid on the CPU, v outer: each map evaluated a row at a time
-    /// ([`RowKernel`]), rows shared out between the cores, every vertex written once.
+    /// (`RowKernel`), rows shared out between the cores, every vertex written once.
     #[must_use]
     pub fn evaluate(&self) -> Vec<Vertex> {
         let mut out = Vec::new();

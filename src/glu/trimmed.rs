@@ -128,7 +128,7 @@ fn tessellate_trimmed(
     let mut band = None;
     if let (Some(lattice), Some(mut sinks)) = (&values, obj.callbacks.sinks()) {
         rayon::in_place_scope(|scope| {
-            scope.spawn(|_| band = Some(plan.band()));
+            scope.spawn(|_| band = Some(plan.triangulate_band()));
             let value = |i: u32| lattice.values[plan.grid_index()[i as usize] as usize].as_ref();
             match sinks.plain() {
                 Some(mut plain) => issue_strips(&mut plain, plan.strips(), value),
@@ -145,7 +145,7 @@ fn tessellate_trimmed(
         }
     }
     // A band that failed after the strips went out is reported as GLU reports a bad trim.
-    let band = match band.unwrap_or_else(|| plan.band()) {
+    let band = match band.unwrap_or_else(|| plan.triangulate_band()) {
         Ok(band) => band,
         Err(e) => return obj.nurbs_error(e.glu_number()),
     };

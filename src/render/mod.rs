@@ -3,7 +3,7 @@
 
 mod assemble;
 #[cfg(all(feature = "gpu", feature = "png"))]
-pub mod compare;
+pub(crate) mod compare;
 mod shade;
 
 pub use assemble::{assemble, assemble_frame, Batch, DrawList, Op, RasterVertex, Topology};

@@ -1,7 +1,7 @@
 //! The WGSL compute back end of the grid evaluator (`shaders/eval_grid.wgsl`): many Bezier
 //! patches over their grids in one dispatch, one invocation per grid point, writing positions
 //! and unit normals to a storage buffer. It takes the same packed patches as the CPU path
-//! ([`super::grid`]), so the CPU (f64) evaluation is the oracle in the parity tests.
+//! (`tess::grid`), so the CPU (f64) evaluation is the oracle in the parity tests.
 
 use super::grid::MapView;
 use wgpu::util::DeviceExt;

@@ -74,6 +74,7 @@ impl<S: Scalar> MapView<'_, S> {
 }
 
 /// Evaluates a curve (a map with `vorder` = 1) at each normalised parameter in `us`.
+#[cfg(test)]
 pub fn eval_grid1<S: Scalar>(map: &MapView<'_, S>, us: &[S], out: &mut Vec<Vec4<S>>) {
     out.clear();
     if !map.is_valid() {

@@ -6,12 +6,11 @@
 pub mod export;
 #[cfg(feature = "gpu")]
 pub mod gpu;
-pub mod grid;
-pub mod mesh;
-pub mod rows;
+pub(crate) mod grid;
+mod mesh;
+mod rows;
 pub mod trim;
 
-pub use grid::{eval_grid1, eval_grid2, BasisTable, Grid2, MapView};
+pub(crate) use grid::MapView;
 pub use mesh::{Mesh, MeshError, MAX_MESH_VERTICES};
-pub(crate) use rows::MIN_POINTS_PER_THREAD;
-pub use rows::{for_row_bands, rows_per_band, run_bands, Row, RowKernel};
+pub(crate) use rows::{for_row_bands, Row, RowKernel, MIN_POINTS_PER_THREAD};

@@ -7,7 +7,7 @@
 //! stride and the compiler vectorises it. Partials follow Mesa's de Casteljau in using
 //! control-point differences, so a collapsed edge gives an exactly zero derivative; the normal
 //! direction is ∂p/∂u × ∂p/∂v, with the rational correction `d·w − p·d_w` for homogeneous maps
-//! (Mesa `vbo_exec_do_EvalCoord2f`). The sums run in the same order as [`super::eval_grid2`],
+//! (Mesa `vbo_exec_do_EvalCoord2f`). The sums run in the same order as [`super::grid::eval_grid2`],
 //! so both paths give the same bits.
 
 use super::grid::{reduce_rows, BasisTable, MapView};
@@ -19,7 +19,6 @@ use crate::math::Scalar;
 pub struct RowKernel<'a, S: Scalar> {
     map: MapView<'a, S>,
     nu: usize,
-    nv: usize,
     normals: bool,
     /// `B_a(u_i)` at `a · nu + i`.
     basis_u: Vec<S>,
@@ -167,7 +166,6 @@ impl<'a, S: Scalar> RowKernel<'a, S> {
         Some(Self {
             map,
             nu: us.len(),
-            nv: vs.len(),
             normals,
             basis_u: order_major_basis(map.uorder, us),
             lower_u,
@@ -175,19 +173,7 @@ impl<'a, S: Scalar> RowKernel<'a, S> {
         })
     }
 
-    /// Points per row.
-    #[must_use]
-    pub fn row_len(&self) -> usize {
-        self.nu
-    }
-
-    /// Number of rows.
-    #[must_use]
-    pub fn rows(&self) -> usize {
-        self.nv
-    }
-
-    /// Evaluates row `j` (`j < self.rows()`) into `row`.
+    /// Evaluates row `j` (the row at `vs[j]`) into `row`.
     pub fn eval_row(&self, j: usize, row: &mut Row<S>) {
         let (dim, uorder, nu) = (self.map.dim, self.map.uorder, self.nu);
         row.reduced.resize(uorder, [S::ZERO; MAX_DIM]);
@@ -296,7 +282,7 @@ pub fn for_row_bands<T: Send>(out: &mut [T], row_len: usize, work: impl Fn(usize
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::tess::{eval_grid2, Grid2};
+    use crate::tess::grid::{eval_grid2, Grid2};
 
     fn net(uo: usize, vo: usize, dim: usize) -> Vec<f64> {
         (0..uo * vo * dim).map(|k| ((k * 37 % 23) as f64) * 0.3 - 2.5 + if k % dim == 3 { 4.0 } else { 0.0 }).collect()

@@ -1,11 +1,11 @@
 //! Conformance: the Rust ports render headless (wgpu on lavapipe, or the GL backend with
 //! `WGPU_BACKEND=gl`) and are compared with the pictures real Mesa renders from the C
 //! originals (`tests/reference/pictures/*.c`, PNGs from `regen.sh`), with the shift-tolerant
-//! metric of `gleval::render::compare`.
+//! metric of `gleval::testing::compare`.
 
 use gleval::app::App;
 use gleval::gl::{MeshVertices, Tessellator};
-use gleval::render::compare::{assert_matches, compare, RgbImage};
+use gleval::testing::compare::{assert_matches, compare, RgbImage};
 use std::path::Path;
 
 #[path = "../../examples/bcurve.rs"]

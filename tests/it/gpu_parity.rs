@@ -5,7 +5,7 @@
 
 use gleval::render::Renderer;
 use gleval::tess::gpu::{GpuTessellator, PatchGrid};
-use gleval::tess::{eval_grid2, Grid2, MapView};
+use gleval::testing::{eval_grid2, Grid2, MapView};
 
 /// The renderer's device, or `None` (skip) when no adapter exists and CI did not require one.
 pub fn device() -> Option<Renderer> {

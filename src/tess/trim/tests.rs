@@ -1,6 +1,8 @@
 //! Tests of trimmed-domain triangulation against independently computed truths: shoelace areas,
 //! winding numbers, distances to the loops.
 
+use super::geometry::midpoint;
+use super::lattice::{count_at_most, count_below};
 use super::*;
 use proptest::prelude::*;
 
@@ -484,12 +486,15 @@ const CELLS: TrimOptions = TrimOptions { clearance: 0.0, by_cells: true, ..TrimO
 /// Triangulates cell by cell, checks the result as every triangulation is checked, and
 /// returns whether it came from the cells (no hand-over to the Delaunay triangulation).
 fn cells_sound(loops: &[TrimLoop], domain: [f64; 4], us: &[f64], vs: &[f64], want_area: f64) -> bool {
-    let before = CELL_FALLBACKS.with(std::cell::Cell::get);
-    let mesh = triangulate_with(loops, domain, us, vs, &CELLS).unwrap();
+    let plan = TrimPlan::new(loops, domain, us, vs, &CELLS).unwrap();
+    let by_cells = plan.triangulate_band_by_cells();
+    let handed_over = by_cells.is_none();
+    let band = by_cells.map_or_else(|| plan.triangulate_band(), Ok).unwrap();
+    let mesh = plan.into_mesh(band);
     let truth: Vec<TrimLoop> =
         if loops.is_empty() { vec![rect(domain[0], domain[1], domain[2], domain[3], true)] } else { loops.to_vec() };
     assert_sound(&mesh, &truth, want_area);
-    CELL_FALLBACKS.with(std::cell::Cell::get) == before
+    !handed_over
 }
 
 #[test]

@@ -3,7 +3,11 @@
 //! band's constrained Delaunay triangulation (`spade`), the triangulation [`super::cells`] hands
 //! over to.
 
-use super::{orient, point, Grid, GridStrip, TrimBand, TrimError, P};
+use super::geometry::{orient, point, P};
+use super::lattice::LatticeLines;
+use super::loops::TrimError;
+use super::mesh::GridStrip;
+use super::plan::TrimBand;
 use spade::handles::DirectedEdgeHandle;
 use spade::{CdtEdge, ConstrainedDelaunayTriangulation, HasPosition, Point2, Triangulation};
 
@@ -42,7 +46,7 @@ pub(super) struct Band {
 }
 
 impl Band {
-    pub(super) fn new(grid: &Grid, kept: &[bool], touched: &[bool], inside_domain: bool) -> Self {
+    pub(super) fn new(grid: &LatticeLines, kept: &[bool], touched: &[bool], inside_domain: bool) -> Self {
         let (nu, cu) = (grid.u.len(), grid.u.len().saturating_sub(1));
         let mut mesh_index = vec![u32::MAX; kept.len()];
         let retained = kept.iter().filter(|&&keep| keep).count();
@@ -83,7 +87,7 @@ impl Band {
     }
 
     /// Per grid point (row-major): whether a band cell is among the cells round it.
-    fn next_to_band(&self, grid: &Grid) -> Vec<bool> {
+    fn next_to_band(&self, grid: &LatticeLines) -> Vec<bool> {
         let (nu, cu) = (grid.u.len(), grid.u.len().saturating_sub(1));
         let mut near = vec![false; self.mesh_index.len()];
         for (cj, cells) in self.clean.chunks_exact(cu.max(1)).enumerate() {
@@ -98,7 +102,7 @@ impl Band {
     }
 
     /// Whether cell (ci, cj) exists and is clean.
-    fn is_clean(&self, grid: &Grid, ci: usize, cj: usize) -> bool {
+    fn is_clean(&self, grid: &LatticeLines, ci: usize, cj: usize) -> bool {
         ci < grid.u.len() - 1 && cj < grid.v.len() - 1 && self.clean[cj * (grid.u.len() - 1) + ci]
     }
 
@@ -106,7 +110,7 @@ impl Band {
     /// band cell, the clean region's outline as constraints) and appends the clean cells.
     pub(super) fn triangulate(
         &self,
-        grid: &Grid,
+        grid: &LatticeLines,
         loop_points: &[P],
         mut edges: Vec<[usize; 2]>,
     ) -> Result<TrimBand, TrimError> {
@@ -140,7 +144,7 @@ impl Band {
 
     /// The clean region's outline as constraint edges (CDT indices): the cell sides between a
     /// clean cell and a band cell.
-    fn outline_edges(&self, grid: &Grid, cdt_index: &[u32], edges: &mut Vec<[usize; 2]>) {
+    fn outline_edges(&self, grid: &LatticeLines, cdt_index: &[u32], edges: &mut Vec<[usize; 2]>) {
         let (nu, cu, cv) = (grid.u.len(), grid.u.len().saturating_sub(1), grid.v.len().saturating_sub(1));
         let at = |i: usize, j: usize| cdt_index[j * nu + i] as usize;
         for cj in 0..cv {
@@ -166,7 +170,12 @@ impl Band {
     /// The retained band triangles of the CDT: a flood fill from the outer face, toggling parity
     /// at every loop edge (not at the clean outline); odd parity is inside an odd number of
     /// loops. Triangles inside clean cells are left to [`Band::append_strips`].
-    fn band_triangles(&self, grid: &Grid, cdt: &ConstrainedDelaunayTriangulation<BandVertex>, band: &mut TrimBand) {
+    fn band_triangles(
+        &self,
+        grid: &LatticeLines,
+        cdt: &ConstrainedDelaunayTriangulation<BandVertex>,
+        band: &mut TrimBand,
+    ) {
         let is_loop_edge = |e: DirectedEdgeHandle<'_, BandVertex, (), CdtEdge<()>, ()>| {
             e.is_constraint_edge()
                 && e.from().data().mesh_index == LOOP_VERTEX
@@ -224,7 +233,7 @@ impl Band {
     }
 
     /// The clean cells as runs along grid rows.
-    pub(super) fn strips(&self, grid: &Grid) -> Vec<GridStrip> {
+    pub(super) fn strips(&self, grid: &LatticeLines) -> Vec<GridStrip> {
         let (nu, cu) = (grid.u.len(), grid.u.len().saturating_sub(1));
         let mut strips = Vec::new();
         for (cj, row) in self.clean.chunks_exact(cu.max(1)).enumerate() {

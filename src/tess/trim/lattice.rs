@@ -2,7 +2,7 @@
 //! grid points and cells the loops pass near or through. The triangulations ask these questions
 //! for every loop point and crossing, so the line lookups are cheap (see [`count_at_most`]).
 
-use super::{flush, midpoint, P};
+use super::geometry::{flush, midpoint, P};
 
 /// Sorted, deduplicated finite values strictly between `lo` and `hi`.
 pub(super) fn sorted_lines(values: &[f64], lo: f64, hi: f64) -> Vec<f64> {
@@ -60,9 +60,9 @@ fn count_where(lines: &[f64], x: f64, before: impl Fn(f64) -> bool) -> usize {
     lines.partition_point(|&l| before(l))
 }
 
-/// Grid lines in u and v, sorted. For the triangulation the first and last are the domain bounds
+/// The lattice's lines in u and v, sorted. For the triangulation the first and last are the domain bounds
 /// and only the lines between them carry grid points.
-pub(super) struct Grid {
+pub(super) struct LatticeLines {
     pub(super) u: Vec<f64>,
     pub(super) v: Vec<f64>,
 }
@@ -77,7 +77,7 @@ pub(super) const ON_LOOP: f64 = 1e-9;
 /// Split points closer than this (in grid cells) to a neighbour on the edge are not inserted.
 pub(super) const MIN_SPLIT: f64 = 0.01;
 
-impl Grid {
+impl LatticeLines {
     pub(super) fn point_count(&self) -> usize {
         self.u.len().saturating_mul(self.v.len())
     }
@@ -121,7 +121,7 @@ impl Grid {
         trace.cuts
     }
 
-    /// [`Grid::crossings`] into `trace.cuts` (its buffers reused: this runs for every loop edge).
+    /// [`LatticeLines::crossings`] into `trace.cuts` (its buffers reused: this runs for every loop edge).
     fn crossings_into(&self, a: P, b: P, trace: &mut EdgeTrace) {
         let (du, dv) = (b[0] - a[0], b[1] - a[1]);
         let raw = &mut trace.raw;
@@ -187,7 +187,7 @@ impl Grid {
     }
 
     /// Marks the grid points within `clearance` cells of an edge, given as its points in cell
-    /// coordinates ([`Grid::trace`]). Between consecutive cuts the edge lies in one grid cell,
+    /// coordinates ([`LatticeLines::trace`]). Between consecutive cuts the edge lies in one grid cell,
     /// where the map to cell coordinates is affine; only that cell's corners can be closer than
     /// one cell.
     pub(super) fn block_near(&self, coords: &[P], clearance: f64, blocked: &mut [bool]) {
@@ -265,7 +265,7 @@ impl Grid {
         self.u.len().saturating_sub(1).saturating_mul(self.v.len().saturating_sub(1))
     }
 
-    /// Marks the cells an edge (its points in cell coordinates, [`Grid::trace`]) passes through
+    /// Marks the cells an edge (its points in cell coordinates, [`LatticeLines::trace`]) passes through
     /// or touches: between consecutive cuts the edge
     /// lies in one closed cell, and a piece's ends and middle mark every cell whose closed box
     /// holds them (a point on a grid line marks both sides), so no loop point lies in an
@@ -298,7 +298,7 @@ impl Grid {
     }
 }
 
-/// Scratch buffers of [`Grid::trace`], reused from edge to edge.
+/// Scratch buffers of [`LatticeLines::trace`], reused from edge to edge.
 #[derive(Default)]
 pub(super) struct EdgeTrace {
     /// Line crossings before merging: (t, u line, v line).

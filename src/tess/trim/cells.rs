@@ -12,7 +12,10 @@
 //! a result whose area differs from the loops' shoelace area: the caller then uses the
 //! constrained Delaunay triangulation.
 
-use super::{count_at_most, count_below, orient, signed_area, Band, Grid, GridStrip, P};
+use super::band::Band;
+use super::geometry::{orient, signed_area, P};
+use super::lattice::{count_at_most, count_below, LatticeLines};
+use super::mesh::GridStrip;
 
 /// A point's place on a cell's boundary, counter-clockwise from the bottom-left corner: the side
 /// (0 bottom, 1 right, 2 top, 3 left), the coordinate along it increasing counter-clockwise, and
@@ -113,7 +116,7 @@ impl Points<'_> {
     }
 
     /// The id of grid point (i, j).
-    fn lattice(&mut self, grid: &Grid, i: usize, j: usize) -> u32 {
+    fn lattice(&mut self, grid: &LatticeLines, i: usize, j: usize) -> u32 {
         let k = j * self.nu + i;
         match self.band.mesh_index[k] {
             u32::MAX => {
@@ -129,7 +132,7 @@ impl Points<'_> {
     }
 
     /// The id of a point on the loops: the grid point's when it is one.
-    fn on_loop(&mut self, grid: &Grid, p: P) -> u32 {
+    fn on_loop(&mut self, grid: &LatticeLines, p: P) -> u32 {
         // The line equal to x, if any.
         let find = |lines: &[f64], x: f64| count_at_most(lines, x).checked_sub(1).filter(|&i| lines[i] == x);
         match (find(&grid.u, p[0]), find(&grid.v, p[1])) {
@@ -167,14 +170,14 @@ fn spacing(lines: &[f64], i: usize) -> Option<f64> {
 }
 
 /// The cell of p under the half-open rule (clamped into the grid).
-fn cell_of(grid: &Grid, p: P) -> (usize, usize) {
+fn cell_of(grid: &LatticeLines, p: P) -> (usize, usize) {
     let index = |lines: &[f64], x: f64| count_at_most(lines, x).saturating_sub(1).min(lines.len() - 2);
     (index(&grid.u, p[0]), index(&grid.v, p[1]))
 }
 
 /// The crossings of edge a→b with the interior grid lines, in order along the edge
 /// (`by_axis` holds each axis's crossings on the way).
-fn crossings(grid: &Grid, a: P, b: P, out: &mut Vec<Crossing>, by_axis: &mut [Vec<Crossing>; 2]) {
+fn crossings(grid: &LatticeLines, a: P, b: P, out: &mut Vec<Crossing>, by_axis: &mut [Vec<Crossing>; 2]) {
     let dir = [b[0] - a[0], b[1] - a[1]];
     for (axis, lines) in [(0, &grid.u), (1, &grid.v)] {
         let found = &mut by_axis[axis];
@@ -229,7 +232,7 @@ fn crossings(grid: &Grid, a: P, b: P, out: &mut Vec<Crossing>, by_axis: &mut [Ve
 /// constrained triangulation must do it.
 pub(super) fn triangulate_cells(
     band: &Band,
-    grid: &Grid,
+    grid: &LatticeLines,
     loops: &[Vec<P>],
     kept: &[bool],
     strips: &[GridStrip],
@@ -358,7 +361,7 @@ pub(super) fn triangulate_cells(
 
 /// Every loop cut into its pieces per cell; `None` for a loop that crosses no grid line or a
 /// vertex found outside the cell the walk is in.
-fn fragments(grid: &Grid, loops: &[Vec<P>], points: &mut Points) -> Option<(Vec<Fragment>, Vec<u32>)> {
+fn fragments(grid: &LatticeLines, loops: &[Vec<P>], points: &mut Points) -> Option<(Vec<Fragment>, Vec<u32>)> {
     /// The loop as vertices and crossings (with their mesh ids), edge by edge.
     enum Item {
         Vertex(usize),
