@@ -159,3 +159,25 @@ pub const GL_ALWAYS: GLenum = 0x0207;
 // Other buffer bits.
 pub const GL_ACCUM_BUFFER_BIT: GLenum = 0x0000_0200;
 pub const GL_STENCIL_BUFFER_BIT: GLenum = 0x0000_0400;
+
+// Display lists (GL 1.1 spec §5.4).
+pub const GL_COMPILE: GLenum = 0x1300;
+pub const GL_COMPILE_AND_EXECUTE: GLenum = 0x1301;
+pub const GL_LIST_MODE: GLenum = 0x0B30;
+pub const GL_MAX_LIST_NESTING: GLenum = 0x0B31;
+pub const GL_LIST_BASE: GLenum = 0x0B32;
+pub const GL_LIST_INDEX: GLenum = 0x0B33;
+pub const GL_LIST_BIT: GLenum = 0x0002_0000;
+
+// Data types (glCallLists and the pixel calls).
+pub const GL_BYTE: GLenum = 0x1400;
+pub const GL_UNSIGNED_BYTE: GLenum = 0x1401;
+pub const GL_SHORT: GLenum = 0x1402;
+pub const GL_UNSIGNED_SHORT: GLenum = 0x1403;
+pub const GL_INT: GLenum = 0x1404;
+pub const GL_UNSIGNED_INT: GLenum = 0x1405;
+pub const GL_FLOAT: GLenum = 0x1406;
+pub const GL_2_BYTES: GLenum = 0x1407;
+pub const GL_3_BYTES: GLenum = 0x1408;
+pub const GL_4_BYTES: GLenum = 0x1409;
+pub const GL_DOUBLE: GLenum = 0x140A;

@@ -1,6 +1,7 @@
 //! `glEnable` / `glDisable` / `glIsEnabled` for the capabilities this façade knows.
 
 use super::consts::*;
+use super::lists::ListCommand;
 use super::types::*;
 use super::Gl;
 use std::collections::BTreeSet;
@@ -91,6 +92,9 @@ impl Gl {
     }
 
     fn set_capability(&mut self, cap: GLenum, on: bool) {
+        if self.compiled(|| if on { ListCommand::Enable(cap) } else { ListCommand::Disable(cap) }) {
+            return;
+        }
         if self.reject_inside_begin_end() {
             return;
         }

@@ -3,6 +3,7 @@
 
 use super::consts::*;
 use super::frame::{Call, Primitive, Vertex};
+use super::lists::ListCommand;
 use super::types::*;
 use super::Gl;
 
@@ -10,6 +11,9 @@ impl Gl {
     /// `glBegin`: starts a primitive. Nested begin → `GL_INVALID_OPERATION`; a mode outside
     /// `GL_POINTS..=GL_POLYGON` → `GL_INVALID_ENUM` (checked in that order, as Mesa does).
     pub fn begin(&mut self, mode: GLenum) {
+        if self.compiled(|| ListCommand::Begin(mode)) {
+            return;
+        }
         if self.reject_inside_begin_end() {
             return;
         }
@@ -23,6 +27,9 @@ impl Gl {
 
     /// `glEnd`: closes the primitive; outside `begin` → `GL_INVALID_OPERATION`.
     pub fn end(&mut self) {
+        if self.compiled(|| ListCommand::End) {
+            return;
+        }
         if !self.inside_begin_end() {
             self.set_error(GL_INVALID_OPERATION);
             return;
@@ -56,6 +63,9 @@ impl Gl {
     }
 
     fn vertex(&mut self, position: [f32; 4]) {
+        if self.compiled(|| ListCommand::Vertex(position)) {
+            return;
+        }
         self.frame.calls.push(Call::Vertex(position));
         let v = self.current_vertex(position);
         self.emit_vertex(v);
@@ -114,6 +124,9 @@ impl Gl {
 
     /// `glColor4f`.
     pub fn color4f(&mut self, r: GLfloat, g: GLfloat, b: GLfloat, a: GLfloat) {
+        if self.compiled(|| ListCommand::Color([r, g, b, a])) {
+            return;
+        }
         self.current.color = [r, g, b, a];
         self.frame.calls.push(Call::Color(self.current.color));
     }
@@ -140,6 +153,9 @@ impl Gl {
 
     /// `glNormal3f`.
     pub fn normal3f(&mut self, x: GLfloat, y: GLfloat, z: GLfloat) {
+        if self.compiled(|| ListCommand::Normal([x, y, z])) {
+            return;
+        }
         self.current.normal = [x, y, z];
         self.frame.calls.push(Call::Normal(self.current.normal));
     }
@@ -168,6 +184,9 @@ impl Gl {
 
     /// `glTexCoord4f`.
     pub fn tex_coord4f(&mut self, s: GLfloat, t: GLfloat, r: GLfloat, q: GLfloat) {
+        if self.compiled(|| ListCommand::TexCoord([s, t, r, q])) {
+            return;
+        }
         self.current.tex_coord = [s, t, r, q];
         self.frame.calls.push(Call::TexCoord(self.current.tex_coord));
     }

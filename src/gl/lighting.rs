@@ -3,6 +3,7 @@
 //! coordinates, transformed by the modelview matrix current when they were set.
 
 use super::consts::*;
+use super::lists::ListCommand;
 use super::types::*;
 use super::Gl;
 use glam::{Mat3, Vec3, Vec4};
@@ -113,6 +114,9 @@ impl Gl {
     /// a cutoff outside 0..=90 other than 180, or a negative attenuation → `GL_INVALID_VALUE`.
     /// `params` needs 4 values for colours and positions, 3 for the spot direction, else 1.
     pub fn light_fv(&mut self, light: GLenum, pname: GLenum, params: &[GLfloat]) {
+        if self.compiled(|| ListCommand::Light(light, pname, params.to_vec())) {
+            return;
+        }
         if self.reject_inside_begin_end() {
             return;
         }
@@ -165,6 +169,9 @@ impl Gl {
     /// `glMaterialfv` (allowed between begin and end). Bad face or name → `GL_INVALID_ENUM`;
     /// shininess outside 0..=128 → `GL_INVALID_VALUE`.
     pub fn material_fv(&mut self, face: GLenum, pname: GLenum, params: &[GLfloat]) {
+        if self.compiled(|| ListCommand::Material(face, pname, params.to_vec())) {
+            return;
+        }
         let faces: &[usize] = match face {
             GL_FRONT => &[0],
             GL_BACK => &[1],
@@ -206,6 +213,9 @@ impl Gl {
 
     /// `glLightModelfv`: `GL_LIGHT_MODEL_AMBIENT` (4 values), `_LOCAL_VIEWER`, `_TWO_SIDE`.
     pub fn light_model_fv(&mut self, pname: GLenum, params: &[GLfloat]) {
+        if self.compiled(|| ListCommand::LightModel(pname, params.to_vec())) {
+            return;
+        }
         if self.reject_inside_begin_end() {
             return;
         }
@@ -232,6 +242,9 @@ impl Gl {
 
     /// `glColorMaterial(face, mode)`.
     pub fn color_material(&mut self, face: GLenum, mode: GLenum) {
+        if self.compiled(|| ListCommand::ColorMaterial(face, mode)) {
+            return;
+        }
         if self.reject_inside_begin_end() {
             return;
         }
@@ -246,6 +259,9 @@ impl Gl {
 
     /// `glShadeModel`: `GL_FLAT` or `GL_SMOOTH`.
     pub fn shade_model(&mut self, mode: GLenum) {
+        if self.compiled(|| ListCommand::ShadeModel(mode)) {
+            return;
+        }
         if self.reject_inside_begin_end() {
             return;
         }

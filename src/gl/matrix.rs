@@ -4,6 +4,7 @@
 //! as Mesa's `m_matrix.c`.
 
 use super::consts::*;
+use super::lists::ListCommand;
 use super::types::*;
 use super::Gl;
 use glam::{Mat4, Vec3, Vec4};
@@ -77,6 +78,9 @@ fn frustum_matrix(l: f32, r: f32, b: f32, t: f32, n: f32, f: f32) -> Mat4 {
 impl Gl {
     /// `glMatrixMode`: `GL_MODELVIEW`, `GL_PROJECTION` or `GL_TEXTURE`; else `GL_INVALID_ENUM`.
     pub fn matrix_mode(&mut self, mode: GLenum) {
+        if self.compiled(|| ListCommand::MatrixMode(mode)) {
+            return;
+        }
         if self.reject_inside_begin_end() {
             return;
         }
@@ -97,12 +101,18 @@ impl Gl {
 
     /// `glLoadIdentity`.
     pub fn load_identity(&mut self) {
+        if self.compiled(|| ListCommand::LoadIdentity) {
+            return;
+        }
         self.change_matrix(|m| *m = Mat4::IDENTITY);
     }
 
     /// `glLoadMatrixf`: `m` needs 16 values, column-major.
     pub fn load_matrixf(&mut self, m: &[GLfloat]) {
         if let Some(m) = self.needs::<16>(m) {
+            if self.compiled(|| ListCommand::LoadMatrix(m)) {
+                return;
+            }
             self.change_matrix(|top| *top = Mat4::from_cols_array(&m));
         }
     }
@@ -110,12 +120,18 @@ impl Gl {
     /// `glMultMatrixf`: `m` needs 16 values, column-major.
     pub fn mult_matrixf(&mut self, m: &[GLfloat]) {
         if let Some(m) = self.needs::<16>(m) {
+            if self.compiled(|| ListCommand::MultMatrix(m)) {
+                return;
+            }
             self.change_matrix(|top| *top *= Mat4::from_cols_array(&m));
         }
     }
 
     /// `glPushMatrix`: `GL_STACK_OVERFLOW` when the stack is full.
     pub fn push_matrix(&mut self) {
+        if self.compiled(|| ListCommand::PushMatrix) {
+            return;
+        }
         if self.reject_inside_begin_end() {
             return;
         }
@@ -129,6 +145,9 @@ impl Gl {
 
     /// `glPopMatrix`: `GL_STACK_UNDERFLOW` when only one matrix is left.
     pub fn pop_matrix(&mut self) {
+        if self.compiled(|| ListCommand::PopMatrix) {
+            return;
+        }
         if self.reject_inside_begin_end() {
             return;
         }
@@ -142,6 +161,9 @@ impl Gl {
 
     /// `glTranslatef`.
     pub fn translatef(&mut self, x: GLfloat, y: GLfloat, z: GLfloat) {
+        if self.compiled(|| ListCommand::Translate([x, y, z])) {
+            return;
+        }
         self.change_matrix(|m| *m *= Mat4::from_translation(Vec3::new(x, y, z)));
     }
 
@@ -152,6 +174,9 @@ impl Gl {
 
     /// `glRotatef`: `angle` in degrees about the axis (x, y, z).
     pub fn rotatef(&mut self, angle: GLfloat, x: GLfloat, y: GLfloat, z: GLfloat) {
+        if self.compiled(|| ListCommand::Rotate([angle, x, y, z])) {
+            return;
+        }
         let r = rotation(angle, x, y, z);
         self.change_matrix(|m| {
             if let Some(r) = r {
@@ -167,6 +192,9 @@ impl Gl {
 
     /// `glScalef`.
     pub fn scalef(&mut self, x: GLfloat, y: GLfloat, z: GLfloat) {
+        if self.compiled(|| ListCommand::Scale([x, y, z])) {
+            return;
+        }
         self.change_matrix(|m| *m *= Mat4::from_scale(Vec3::new(x, y, z)));
     }
 
@@ -185,6 +213,9 @@ impl Gl {
         near: GLdouble,
         far: GLdouble,
     ) {
+        if self.compiled(|| ListCommand::Ortho([left, right, bottom, top, near, far])) {
+            return;
+        }
         if self.reject_inside_begin_end() {
             return;
         }
@@ -206,6 +237,9 @@ impl Gl {
         near: GLdouble,
         far: GLdouble,
     ) {
+        if self.compiled(|| ListCommand::Frustum([left, right, bottom, top, near, far])) {
+            return;
+        }
         if self.reject_inside_begin_end() {
             return;
         }

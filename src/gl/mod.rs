@@ -12,6 +12,7 @@ mod eval;
 mod frame;
 mod immediate;
 mod lighting;
+pub(crate) mod lists;
 mod matrix;
 mod mesh_job;
 mod raster;
@@ -21,6 +22,7 @@ pub(crate) use eval::set_attribute as eval_set_attribute;
 pub use eval::{MapTarget, Slot};
 pub use frame::{Call, Command, DrawState, Frame, GridMesh, MeshMode, MeshVertices, Primitive, Vertex};
 pub use lighting::{Light, Lighting, Material};
+pub use lists::MAX_LIST_NESTING;
 pub use mesh_job::{MapSample, MeshJob};
 
 use consts::*;
@@ -112,6 +114,8 @@ pub struct Gl {
     /// What GLUT's calls made inside callbacks ask of the window (redisplay, timers, idle, title).
     pub(crate) glut: crate::glut::GlutState,
     tessellator: Tessellator,
+    /// Display lists, and the one being compiled.
+    lists: lists::Lists,
     /// GLU NURBS objects, indexed by their handles.
     pub(crate) nurbs: Vec<Option<crate::glu::NurbsObject>>,
 }
@@ -138,6 +142,7 @@ impl Gl {
             pending_meshes: (Vec::new(), 0),
             glut: crate::glut::GlutState::default(),
             tessellator: Tessellator::Cpu,
+            lists: lists::Lists::default(),
             nurbs: Vec::new(),
         }
     }
@@ -268,7 +273,7 @@ impl Gl {
 
     /// `glActiveTexture`: selects the texture unit (the evaluators only work on unit 0).
     pub fn active_texture(&mut self, texture: GLenum) {
-        if self.reject_inside_begin_end() {
+        if self.compiled(|| lists::ListCommand::ActiveTexture(texture)) || self.reject_inside_begin_end() {
             return;
         }
         if !(GL_TEXTURE0..=GL_TEXTURE31).contains(&texture) {
@@ -311,9 +316,13 @@ impl Gl {
                 out[0] = f64::from(MAX_EVAL_ORDER);
                 1
             }
-            _ => match self.eval.grid_query(pname, out) {
-                Some(n) => n,
-                None => {
+            _ => match (self.eval.grid_query(pname, out), self.list_query(pname)) {
+                (Some(n), _) => n,
+                (None, Some(value)) => {
+                    out[0] = value;
+                    1
+                }
+                (None, None) => {
                     self.set_error(GL_INVALID_ENUM);
                     return None;
                 }

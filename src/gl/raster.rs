@@ -3,6 +3,7 @@
 
 use super::consts::*;
 use super::frame::Command;
+use super::lists::ListCommand;
 use super::types::*;
 use super::Gl;
 
@@ -44,6 +45,9 @@ impl RasterState {
 impl Gl {
     /// `glViewport`: a negative width or height → `GL_INVALID_VALUE`.
     pub fn viewport(&mut self, x: GLint, y: GLint, width: GLsizei, height: GLsizei) {
+        if self.compiled(|| ListCommand::Viewport([x, y, width, height])) {
+            return;
+        }
         if self.reject_inside_begin_end() {
             return;
         }
@@ -56,6 +60,9 @@ impl Gl {
 
     /// `glDepthRange` (clamped to [0, 1] as GL does).
     pub fn depth_range(&mut self, near: GLdouble, far: GLdouble) {
+        if self.compiled(|| ListCommand::DepthRange(near, far)) {
+            return;
+        }
         if self.reject_inside_begin_end() {
             return;
         }
@@ -65,6 +72,9 @@ impl Gl {
 
     /// `glPointSize`: `size <= 0` → `GL_INVALID_VALUE`.
     pub fn point_size(&mut self, size: GLfloat) {
+        if self.compiled(|| ListCommand::PointSize(size)) {
+            return;
+        }
         if self.reject_inside_begin_end() {
             return;
         }
@@ -77,6 +87,9 @@ impl Gl {
 
     /// `glLineWidth`: `width <= 0` → `GL_INVALID_VALUE`.
     pub fn line_width(&mut self, width: GLfloat) {
+        if self.compiled(|| ListCommand::LineWidth(width)) {
+            return;
+        }
         if self.reject_inside_begin_end() {
             return;
         }
@@ -89,6 +102,9 @@ impl Gl {
 
     /// `glPolygonMode(face, mode)`.
     pub fn polygon_mode(&mut self, face: GLenum, mode: GLenum) {
+        if self.compiled(|| ListCommand::PolygonMode(face, mode)) {
+            return;
+        }
         if self.reject_inside_begin_end() {
             return;
         }
@@ -112,6 +128,9 @@ impl Gl {
 
     /// `glFrontFace`: `GL_CW` or `GL_CCW`.
     pub fn front_face(&mut self, mode: GLenum) {
+        if self.compiled(|| ListCommand::FrontFace(mode)) {
+            return;
+        }
         if self.reject_inside_begin_end() {
             return;
         }
@@ -124,6 +143,9 @@ impl Gl {
 
     /// `glCullFace`: `GL_FRONT`, `GL_BACK` or `GL_FRONT_AND_BACK`.
     pub fn cull_face(&mut self, mode: GLenum) {
+        if self.compiled(|| ListCommand::CullFace(mode)) {
+            return;
+        }
         if self.reject_inside_begin_end() {
             return;
         }
@@ -136,6 +158,9 @@ impl Gl {
 
     /// `glDepthFunc`.
     pub fn depth_func(&mut self, func: GLenum) {
+        if self.compiled(|| ListCommand::DepthFunc(func)) {
+            return;
+        }
         if self.reject_inside_begin_end() {
             return;
         }
@@ -148,6 +173,9 @@ impl Gl {
 
     /// `glClearColor` (clamped to [0, 1], as GL 1.x does).
     pub fn clear_color(&mut self, r: GLclampf, g: GLclampf, b: GLclampf, a: GLclampf) {
+        if self.compiled(|| ListCommand::ClearColor([r, g, b, a])) {
+            return;
+        }
         if self.reject_inside_begin_end() {
             return;
         }
@@ -156,6 +184,9 @@ impl Gl {
 
     /// `glClearDepth` (clamped to [0, 1]).
     pub fn clear_depth(&mut self, depth: GLdouble) {
+        if self.compiled(|| ListCommand::ClearDepth(depth)) {
+            return;
+        }
         if self.reject_inside_begin_end() {
             return;
         }
@@ -165,6 +196,9 @@ impl Gl {
     /// `glClear`: bits other than colour, depth, stencil and accum → `GL_INVALID_VALUE`.
     /// Records a clear of the whole drawable (no scissor), as GL does.
     pub fn clear(&mut self, mask: GLbitfield) {
+        if self.compiled(|| ListCommand::Clear(mask)) {
+            return;
+        }
         if self.reject_inside_begin_end() {
             return;
         }

@@ -44,6 +44,23 @@ fn enum_value(token: &str) -> u32 {
         ("GL_TEXTURE_2D", GL_TEXTURE_2D),
         ("GL_LIGHTING", GL_LIGHTING),
         ("GL_NORMALIZE", GL_NORMALIZE),
+        ("GL_COMPILE", GL_COMPILE),
+        ("GL_COMPILE_AND_EXECUTE", GL_COMPILE_AND_EXECUTE),
+        ("GL_LIST_BASE", GL_LIST_BASE),
+        ("GL_LIST_INDEX", GL_LIST_INDEX),
+        ("GL_LIST_MODE", GL_LIST_MODE),
+        ("GL_MAX_LIST_NESTING", GL_MAX_LIST_NESTING),
+        ("GL_BYTE", GL_BYTE),
+        ("GL_UNSIGNED_BYTE", GL_UNSIGNED_BYTE),
+        ("GL_SHORT", GL_SHORT),
+        ("GL_UNSIGNED_SHORT", GL_UNSIGNED_SHORT),
+        ("GL_INT", GL_INT),
+        ("GL_UNSIGNED_INT", GL_UNSIGNED_INT),
+        ("GL_FLOAT", GL_FLOAT),
+        ("GL_2_BYTES", GL_2_BYTES),
+        ("GL_3_BYTES", GL_3_BYTES),
+        ("GL_4_BYTES", GL_4_BYTES),
+        ("GL_DOUBLE", GL_DOUBLE),
     ];
     if let Some((_, v)) = named.iter().find(|(n, _)| *n == token) {
         return *v;
@@ -129,13 +146,23 @@ struct Runner {
     inside: bool,
     deferred: bool,
     texgen_normal: bool,
+    /// A list is being compiled (see `run_line`).
+    compiling: bool,
     collected: usize,
     out: Vec<String>,
 }
 
 impl Runner {
     fn new() -> Self {
-        Self { gl: fresh_gl(), inside: false, deferred: false, texgen_normal: false, collected: 0, out: Vec::new() }
+        Self {
+            gl: fresh_gl(),
+            inside: false,
+            deferred: false,
+            texgen_normal: false,
+            compiling: false,
+            collected: 0,
+            out: Vec::new(),
+        }
     }
 
     fn case(&mut self, name: &str) {
@@ -143,6 +170,7 @@ impl Runner {
         self.inside = false;
         self.deferred = false;
         self.texgen_normal = false;
+        self.compiling = false;
         self.collected = 0;
         self.out.push(format!("case {name}"));
     }
@@ -205,6 +233,18 @@ impl Runner {
             "active_texture" => gl.active_texture(a.e()),
             "get_mapfv" | "get_mapdv" | "get_mapiv" => values = get_map(gl, cmd, a.e(), a.e()),
             "get_integerv" | "get_floatv" => values = get_state(gl, cmd, a.e()),
+            "new_list" => gl.new_list(a.int() as u32, a.e()),
+            "end_list" => gl.end_list(),
+            "call_list" => gl.call_list(a.int() as u32),
+            "gen_lists" => values.push(gl.gen_lists(a.int()).to_string()),
+            "delete_lists" => gl.delete_lists(a.int() as u32, a.int()),
+            "is_list" => values.push(gl.is_list(a.int() as u32).to_string()),
+            "list_base" => gl.list_base(a.int() as u32),
+            "call_lists" => {
+                let (n, type_) = (a.int(), a.e());
+                let bytes: Vec<u8> = a.floats().iter().map(|&b| b as u8).collect();
+                gl.call_lists(n, type_, &bytes);
+            }
             "texgen_normal" => self.texgen_normal = true,
             "defer_errors" => self.deferred = a.next() == "on",
             "get_error" => {
@@ -225,7 +265,14 @@ impl Runner {
             line.push_str(&v);
         }
         self.out.push(line);
-        if !self.inside && cmd != "defer_errors" && cmd != "texgen_normal" {
+        if cmd == "new_list" || cmd == "end_list" {
+            // Mesa buffers what GL_COMPILE_AND_EXECUTE draws until the list ends (its vertex
+            // lists run when complete), so feedback shows it after `end_list`.
+            let mut index = [0];
+            self.gl.get_integerv(GL_LIST_INDEX, &mut index);
+            self.compiling = index[0] != 0;
+        }
+        if !self.inside && !self.compiling && cmd != "defer_errors" && cmd != "texgen_normal" {
             self.collect_feedback();
         }
     }
@@ -413,7 +460,12 @@ fn evaluator_scripts_agree_with_real_mesa() {
             let tol =
                 if case.contains("order30") || our_lines.iter().any(|l| l.contains("texgen")) { 1e-4 } else { 2e-5 };
             if our_lines.len() != mesa_lines.len() {
-                failures.push(format!("{name}/{case}: {} lines vs Mesa's {}", our_lines.len(), mesa_lines.len()));
+                let first = our_lines.iter().zip(mesa_lines).find(|(o, m)| line_mismatch(o, m, tol).is_some());
+                let (o, m) = first.map_or(("", ""), |(o, m)| (o.as_str(), m.as_str()));
+                let (ours, mesa) = (our_lines.len(), mesa_lines.len());
+                failures.push(format!(
+                    "{name}/{case}: {ours} lines vs Mesa's {mesa}; first difference\n  ours: {o}\n  mesa: {m}"
+                ));
                 continue;
             }
             for (o, m) in our_lines.iter().zip(mesa_lines) {

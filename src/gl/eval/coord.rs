@@ -4,6 +4,7 @@
 
 use super::target::Slot;
 use super::ActiveMaps;
+use crate::gl::lists::ListCommand;
 use crate::gl::types::*;
 use crate::gl::{Gl, Vertex};
 use crate::math::bezier::horner;
@@ -54,6 +55,9 @@ impl Gl {
     /// `glEvalCoord1f`: with no `GL_MAP1_VERTEX_3/4` enabled it does nothing; outside
     /// `begin`/`end` the vertex only moves the current position, so nothing is recorded.
     pub fn eval_coord1f(&mut self, u: GLfloat) {
+        if self.compiled(|| ListCommand::EvalCoord1(u)) {
+            return;
+        }
         let act = self.eval.active(1);
         let Some(vertex_slot) = act.vertex else {
             return;
@@ -82,6 +86,9 @@ impl Gl {
     /// `glEvalCoord2f`: evaluates the MAP2 maps; with `GL_AUTO_NORMAL` the vertex map's unit
     /// normal replaces the normal map's value.
     pub fn eval_coord2f(&mut self, u: GLfloat, v: GLfloat) {
+        if self.compiled(|| ListCommand::EvalCoord2(u, v)) {
+            return;
+        }
         let act = self.eval.active(2);
         let Some(vertex_slot) = act.vertex else {
             return;

@@ -3,6 +3,7 @@
 
 use super::target::{MapTarget, Slot};
 use crate::gl::consts::*;
+use crate::gl::lists::ListCommand;
 use crate::gl::types::*;
 use crate::gl::Gl;
 
@@ -74,6 +75,43 @@ fn needed_len(k: usize, strides_and_orders: &[(i64, i64)]) -> Option<usize> {
         last = last.checked_add(stride.checked_mul(order - 1)?)?;
     }
     usize::try_from(last).ok()
+}
+
+/// The control points a display list keeps of a `glMap` call and the strides to read them
+/// (Mesa `_mesa_copy_map_points1f`/`2f`): for a known target, `order` points read with the
+/// caller's strides, packed (k values a point, v fastest), so that the list replays them with
+/// strides k and k · vorder; a stride below k is therefore no error once listed, as in Mesa.
+/// An unknown target keeps no points (C's NULL: Mesa then reports `GL_INVALID_VALUE`), and so
+/// do orders outside 1..=30 and strides that would read outside `points`.
+fn points_for_list<T: ControlValue>(target: GLenum, layout: &[(i32, i32)], points: &[T]) -> (Vec<i32>, Vec<f32>) {
+    let given = || layout.iter().map(|l| l.0).collect::<Vec<i32>>();
+    let Some(k) = MapTarget::from_enum(target).map(|t| t.components()) else {
+        return (vec![0; layout.len()], Vec::new());
+    };
+    let readable = layout.iter().all(|&(stride, order)| (1..=MAX_EVAL_ORDER).contains(&order) && stride >= 0);
+    let wide: Vec<(i64, i64)> = layout.iter().map(|&(s, o)| (i64::from(s), i64::from(o))).collect();
+    if !readable || needed_len(k, &wide).is_none_or(|need| points.len() < need) {
+        return (given(), Vec::new());
+    }
+    let orders: Vec<usize> = layout.iter().map(|l| l.1 as usize).collect();
+    let total: usize = orders.iter().product();
+    let mut packed = Vec::with_capacity(total * k);
+    for flat in 0..total {
+        // The point's index in each dimension, the last fastest, and where the caller keeps it.
+        let (mut rest, mut at) = (flat, 0usize);
+        for (d, &order) in orders.iter().enumerate().rev() {
+            at += (rest % order) * layout[d].0 as usize;
+            rest /= order;
+        }
+        packed.extend(points[at..at + k].iter().map(|p| p.to_gl_float()));
+    }
+    let mut strides = vec![0i32; layout.len()];
+    let mut step = k;
+    for (d, &order) in orders.iter().enumerate().rev() {
+        strides[d] = step as i32;
+        step *= order;
+    }
+    (strides, packed)
 }
 
 /// Arguments of `glMap2` once decoded.
@@ -152,6 +190,12 @@ impl Gl {
     }
 
     fn map1<T: ControlValue>(&mut self, target: GLenum, u1: f32, u2: f32, stride: i32, order: i32, points: &[T]) {
+        if self.compiled(|| {
+            let (strides, points) = points_for_list(target, &[(stride, order)], points);
+            ListCommand::Map1 { target, u: (u1, u2), stride: strides[0], order, points }
+        }) {
+            return;
+        }
         if self.reject_inside_begin_end() {
             return;
         }
@@ -202,6 +246,13 @@ impl Gl {
     }
 
     fn map2<T: ControlValue>(&mut self, target: GLenum, a: Map2Args, points: &[T]) {
+        if self.compiled(|| {
+            let (strides, points) = points_for_list(target, &[(a.ustride, a.uorder), (a.vstride, a.vorder)], points);
+            let (ustride, vstride) = (strides[0], strides[1]);
+            ListCommand::Map2 { target, u: a.u, ustride, uorder: a.uorder, v: a.v, vstride, vorder: a.vorder, points }
+        }) {
+            return;
+        }
         if self.reject_inside_begin_end() {
             return;
         }

@@ -5,6 +5,7 @@
 
 use super::Grid;
 use crate::gl::consts::*;
+use crate::gl::lists::ListCommand;
 use crate::gl::types::*;
 use crate::gl::{Command, Gl, GridMesh, MapSample, MeshJob, MeshMode, MeshVertices, Tessellator};
 
@@ -31,6 +32,9 @@ impl Gl {
     /// `GL_LINE_STRIP` over grid lines i1..=i2. Another mode → `GL_INVALID_ENUM`; no vertex map
     /// enabled → nothing at all.
     pub fn eval_mesh1(&mut self, mode: GLenum, i1: GLint, i2: GLint) {
+        if self.compiled(|| ListCommand::EvalMesh1(mode, i1, i2)) {
+            return;
+        }
         if self.reject_inside_begin_end() {
             return;
         }
@@ -67,6 +71,9 @@ impl Gl {
     /// `GL_TRIANGLE_STRIP` per row j in j1..j2, alternating (i, j) and (i, j+1): clockwise in
     /// (u, v) when both increase, exactly as Mesa. Every grid point is evaluated once.
     pub fn eval_mesh2(&mut self, mode: GLenum, i1: GLint, i2: GLint, j1: GLint, j2: GLint) {
+        if self.compiled(|| ListCommand::EvalMesh2(mode, i1, i2, j1, j2)) {
+            return;
+        }
         if self.reject_inside_begin_end() {
             return;
         }

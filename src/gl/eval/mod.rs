@@ -12,6 +12,7 @@ pub use target::{MapTarget, Slot};
 
 use super::consts::*;
 use super::types::*;
+use crate::gl::lists::ListCommand;
 pub(crate) use map::Map;
 
 /// A `glMapGrid` grid: `n` segments over [a, b], with the step GL stores (computed in float).
@@ -175,6 +176,9 @@ impl EvalState {
 impl super::Gl {
     /// `glMapGrid1f`: `un` < 1 → `GL_INVALID_VALUE`. A zero-length or reversed domain is allowed.
     pub fn map_grid1f(&mut self, un: GLint, u1: GLfloat, u2: GLfloat) {
+        if self.compiled(|| ListCommand::MapGrid1(un, u1, u2)) {
+            return;
+        }
         if self.reject_inside_begin_end() {
             return;
         }
@@ -192,6 +196,9 @@ impl super::Gl {
 
     /// `glMapGrid2f`: `un` < 1 or `vn` < 1 → `GL_INVALID_VALUE`.
     pub fn map_grid2f(&mut self, un: GLint, u1: GLfloat, u2: GLfloat, vn: GLint, v1: GLfloat, v2: GLfloat) {
+        if self.compiled(|| ListCommand::MapGrid2(un, u1, u2, vn, v1, v2)) {
+            return;
+        }
         if self.reject_inside_begin_end() {
             return;
         }
@@ -209,12 +216,18 @@ impl super::Gl {
 
     /// `glEvalPoint1(i)`: `glEvalCoord1f` at grid line `i` (not range-checked; extrapolates).
     pub fn eval_point1(&mut self, i: GLint) {
+        if self.compiled(|| ListCommand::EvalPoint1(i)) {
+            return;
+        }
         let u = self.eval.grid1.param(i.into());
         self.eval_coord1f(u);
     }
 
     /// `glEvalPoint2(i, j)`: `glEvalCoord2f` at grid point (i, j).
     pub fn eval_point2(&mut self, i: GLint, j: GLint) {
+        if self.compiled(|| ListCommand::EvalPoint2(i, j)) {
+            return;
+        }
         let (gu, gv) = self.eval.grid2;
         self.eval_coord2f(gu.param(i.into()), gv.param(j.into()));
     }

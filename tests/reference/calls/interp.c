@@ -33,6 +33,9 @@ static const char *script_name;
 struct enum_name { const char *name; GLenum value; };
 #define E(x) { #x, x }
 static const struct enum_name enums[] = {
+    E(GL_COMPILE), E(GL_COMPILE_AND_EXECUTE), E(GL_LIST_BASE), E(GL_LIST_INDEX), E(GL_LIST_MODE),
+    E(GL_MAX_LIST_NESTING), E(GL_BYTE), E(GL_UNSIGNED_BYTE), E(GL_SHORT), E(GL_UNSIGNED_SHORT), E(GL_INT),
+    E(GL_UNSIGNED_INT), E(GL_FLOAT), E(GL_2_BYTES), E(GL_3_BYTES), E(GL_4_BYTES), E(GL_DOUBLE),
     E(GL_MAP1_VERTEX_3), E(GL_MAP1_VERTEX_4), E(GL_MAP1_INDEX), E(GL_MAP1_COLOR_4),
     E(GL_MAP1_NORMAL), E(GL_MAP1_TEXTURE_COORD_1), E(GL_MAP1_TEXTURE_COORD_2),
     E(GL_MAP1_TEXTURE_COORD_3), E(GL_MAP1_TEXTURE_COORD_4),
@@ -382,6 +385,33 @@ static void run_call(const char *c)
         if (c[4] == 'i') glGetIntegerv(p, iv); else glGetFloatv(p, fv);
         for (int i = 0; i < n; i++)
             if (c[4] == 'i') val(" %d", iv[i]); else val(" %.9g", fv[i]);
+    } else if (!strcmp(c, "new_list")) {
+        GLuint list = (GLuint)arg_int();
+        GLenum mode = arg_enum();
+        glNewList(list, mode);
+    } else if (!strcmp(c, "end_list")) {
+        glEndList();
+    } else if (!strcmp(c, "call_list")) {
+        glCallList((GLuint)arg_int());
+    } else if (!strcmp(c, "gen_lists")) {
+        val(" %u", glGenLists(arg_int()));
+    } else if (!strcmp(c, "delete_lists")) {
+        GLuint list = (GLuint)arg_int();
+        GLsizei range = arg_int();
+        glDeleteLists(list, range);
+    } else if (!strcmp(c, "is_list")) {
+        val(" %d", glIsList((GLuint)arg_int()));
+    } else if (!strcmp(c, "list_base")) {
+        glListBase((GLuint)arg_int());
+    } else if (!strcmp(c, "call_lists")) {
+        /* the names as raw bytes, read by GL as `type` says */
+        GLsizei n = arg_int();
+        GLenum type = arg_enum();
+        float *f = arg_array(0, 0, &given);
+        GLubyte bytes[MAX_TOK];
+        for (long i = 0; i < given; i++) bytes[i] = (GLubyte)f[i];
+        glCallLists(n, type, f ? (const GLvoid *)bytes : NULL);
+        free(f);
     } else if (!strcmp(c, "texgen_normal")) {
         /* eye-space normal (= object normal with identity modelview) -> s,t,r.
          * Mesa applies texgen only on an enabled unit with a complete texture. */

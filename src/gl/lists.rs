@@ -1,0 +1,539 @@
+//! Display lists (GL 1.1 spec §5.4; Mesa `main/dlist.c`): `glNewList`/`glEndList` record the
+//! commands made between them, `glCallList`/`glCallLists` replay them.
+//!
+//! One gate per command: every `Gl` method that GL compiles into a list starts with
+//! [`Gl::compiled`], which, while a list is being compiled, appends a [`ListCommand`] (holding
+//! copies of whatever GL copies: a map's control points are packed at compile time, as Mesa's
+//! `_mesa_copy_map_points1f` does) and tells the method whether to go on and execute it
+//! (`GL_COMPILE_AND_EXECUTE`) or stop (`GL_COMPILE`). Replay calls the same methods, so every
+//! rule (and every error, which GL raises when a list executes, not when it compiles) is
+//! written once. `glEvalMesh` is compiled as the call, not as its vertices; GLU's NURBS calls are
+//! compiled as the GL calls GLU makes, with the sampling worked out at compile time, as real
+//! GLU's are.
+//!
+//! Not compiled, executed at once (spec §5.4): `glGenLists`, `glNewList`, `glEndList`,
+//! `glDeleteLists`, `glIsList`, `glGet*`, `glIsEnabled`, `glGetError`, `glFlush`, `glFinish`.
+
+use super::consts::*;
+use super::types::*;
+use super::Gl;
+use std::collections::HashMap;
+use std::rc::Rc;
+
+/// Mesa's limit on nested `glCallList` (`MAX_LIST_NESTING`): deeper calls are ignored silently.
+pub const MAX_LIST_NESTING: usize = 64;
+
+/// A command as a display list holds it: each variant is one GL call (the `*d`, `*v` and
+/// shorter forms stored as the call they reduce to), with its data copied.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) enum ListCommand {
+    Begin(GLenum),
+    End,
+    Vertex([f32; 4]),
+    Color([f32; 4]),
+    Normal([f32; 3]),
+    TexCoord([f32; 4]),
+    Enable(GLenum),
+    Disable(GLenum),
+    Light(GLenum, GLenum, Vec<f32>),
+    Material(GLenum, GLenum, Vec<f32>),
+    LightModel(GLenum, Vec<f32>),
+    ColorMaterial(GLenum, GLenum),
+    ShadeModel(GLenum),
+    MatrixMode(GLenum),
+    LoadIdentity,
+    LoadMatrix([f32; 16]),
+    MultMatrix([f32; 16]),
+    PushMatrix,
+    PopMatrix,
+    Translate([f32; 3]),
+    Rotate([f32; 4]),
+    Scale([f32; 3]),
+    Ortho([f64; 6]),
+    Frustum([f64; 6]),
+    Viewport([i32; 4]),
+    DepthRange(f64, f64),
+    PointSize(f32),
+    LineWidth(f32),
+    PolygonMode(GLenum, GLenum),
+    FrontFace(GLenum),
+    CullFace(GLenum),
+    DepthFunc(GLenum),
+    ClearColor([f32; 4]),
+    ClearDepth(f64),
+    Clear(GLbitfield),
+    ActiveTexture(GLenum),
+    Map1 {
+        target: GLenum,
+        u: (f32, f32),
+        stride: i32,
+        order: i32,
+        points: Vec<f32>,
+    },
+    Map2 {
+        target: GLenum,
+        u: (f32, f32),
+        ustride: i32,
+        uorder: i32,
+        v: (f32, f32),
+        vstride: i32,
+        vorder: i32,
+        points: Vec<f32>,
+    },
+    MapGrid1(i32, f32, f32),
+    MapGrid2(i32, f32, f32, i32, f32, f32),
+    EvalCoord1(f32),
+    EvalCoord2(f32, f32),
+    EvalPoint1(i32),
+    EvalPoint2(i32, i32),
+    EvalMesh1(GLenum, i32, i32),
+    EvalMesh2(GLenum, i32, i32, i32, i32),
+    CallList(GLuint),
+    CallLists(GLsizei, GLenum, Vec<u8>),
+    ListBase(GLuint),
+}
+
+/// A list being compiled.
+#[derive(Debug)]
+struct Compiling {
+    name: GLuint,
+    execute: bool,
+    commands: Vec<ListCommand>,
+}
+
+/// The display lists of a context (Mesa keeps them in the shared state; we have one context).
+#[derive(Debug, Default)]
+pub(crate) struct Lists {
+    /// Every list name in use, genned or compiled (a genned name is an empty list, as in Mesa).
+    lists: HashMap<GLuint, Rc<[ListCommand]>>,
+    compiling: Option<Compiling>,
+    base: GLuint,
+    /// The largest name ever used (Mesa's hash table `MaxKey`: deleting lists keeps it).
+    max_name: GLuint,
+    /// How deep `glCallList` is nested now.
+    depth: usize,
+}
+
+impl Gl {
+    /// The gate of every compiled command: while a list is compiled, appends `command()` to it
+    /// and returns true when the command must not run now (`GL_COMPILE`).
+    pub(crate) fn compiled(&mut self, command: impl FnOnce() -> ListCommand) -> bool {
+        let Some(list) = self.lists.compiling.as_mut() else { return false };
+        list.commands.push(command());
+        !list.execute
+    }
+
+    /// `glGenLists`: `range` consecutive unused names, the first returned (0 for `range` 0).
+    /// A negative range → `GL_INVALID_VALUE`, inside `begin`/`end` → `GL_INVALID_OPERATION`.
+    pub fn gen_lists(&mut self, range: GLsizei) -> GLuint {
+        if self.reject_inside_begin_end() {
+            return 0;
+        }
+        if range < 0 {
+            self.set_error(GL_INVALID_VALUE);
+            return 0;
+        }
+        if range == 0 {
+            return 0;
+        }
+        let Some(first) = self.free_list_block(range as u32) else {
+            self.set_error(GL_OUT_OF_MEMORY);
+            return 0;
+        };
+        for name in first..first + range as u32 {
+            self.insert_list(name, Vec::new());
+        }
+        first
+    }
+
+    /// The first of `n` consecutive unused names (Mesa `_mesa_HashFindFreeKeyBlock`): after the
+    /// largest name ever used while there is room above it, else the first gap large enough.
+    fn free_list_block(&self, n: u32) -> Option<GLuint> {
+        if u32::MAX - 1 - n > self.lists.max_name {
+            return Some(self.lists.max_name + 1);
+        }
+        let mut used: Vec<GLuint> = self.lists.lists.keys().copied().collect();
+        used.sort_unstable();
+        let mut start: GLuint = 1;
+        for name in used {
+            if name >= start && name - start >= n {
+                return Some(start);
+            }
+            start = start.max(name.checked_add(1)?);
+        }
+        start.checked_add(n - 1).map(|_| start)
+    }
+
+    fn insert_list(&mut self, name: GLuint, commands: Vec<ListCommand>) {
+        self.lists.max_name = self.lists.max_name.max(name);
+        self.lists.lists.insert(name, Rc::from(commands));
+    }
+
+    /// `glNewList`: starts compiling list `list`. Errors, in Mesa's order: inside
+    /// `begin`/`end` (`GL_INVALID_OPERATION`), `list` 0 (`GL_INVALID_VALUE`), a mode other than
+    /// `GL_COMPILE`/`GL_COMPILE_AND_EXECUTE` (`GL_INVALID_ENUM`), a list already being compiled
+    /// (`GL_INVALID_OPERATION`).
+    pub fn new_list(&mut self, list: GLuint, mode: GLenum) {
+        if self.reject_inside_begin_end() {
+            return;
+        }
+        if list == 0 {
+            return self.set_error(GL_INVALID_VALUE);
+        }
+        if mode != GL_COMPILE && mode != GL_COMPILE_AND_EXECUTE {
+            return self.set_error(GL_INVALID_ENUM);
+        }
+        if self.lists.compiling.is_some() {
+            return self.set_error(GL_INVALID_OPERATION);
+        }
+        let execute = mode == GL_COMPILE_AND_EXECUTE;
+        self.lists.compiling = Some(Compiling { name: list, execute, commands: Vec::new() });
+    }
+
+    /// `glEndList`: stores the list compiled since `new_list` (replacing any list of that
+    /// name); without one → `GL_INVALID_OPERATION`. A primitive that `GL_COMPILE_AND_EXECUTE`
+    /// began is ended with it, without an error (as Mesa's `vbo_save_EndList` does).
+    pub fn end_list(&mut self) {
+        let Some(list) = self.lists.compiling.take() else {
+            return self.set_error(GL_INVALID_OPERATION);
+        };
+        if self.inside_begin_end() {
+            self.end();
+        }
+        self.insert_list(list.name, list.commands);
+    }
+
+    /// `glCallList`: executes list `list` (GL allows it inside `begin`/`end`). `list` 0 →
+    /// `GL_INVALID_VALUE`; an unknown list does nothing, nor does a call nested deeper than
+    /// [`MAX_LIST_NESTING`] (Mesa ignores it silently).
+    pub fn call_list(&mut self, list: GLuint) {
+        if self.compiled(|| ListCommand::CallList(list)) {
+            return;
+        }
+        if list == 0 {
+            return self.set_error(GL_INVALID_VALUE);
+        }
+        // In GL_COMPILE_AND_EXECUTE the call is recorded; what the list does is not again.
+        let compiling = self.lists.compiling.take();
+        self.execute_list(list);
+        self.lists.compiling = compiling;
+    }
+
+    /// `glCallLists`: executes `n` lists whose names (offsets from [`Gl::list_base`]) are read
+    /// from `lists` as `type_` says (`GL_BYTE` .. `GL_FLOAT`, or `GL_2_BYTES` .. `GL_4_BYTES`,
+    /// big-endian byte groups); the multi-byte types in native byte order, as C's arrays are.
+    /// Errors: an unknown type → `GL_INVALID_ENUM`, `n` < 0 → `GL_INVALID_VALUE` (Mesa's order);
+    /// `lists` shorter than `n` names → `GL_INVALID_VALUE`.
+    pub fn call_lists(&mut self, n: GLsizei, type_: GLenum, lists: &[u8]) {
+        if self.compiled(|| ListCommand::CallLists(n, type_, lists.to_vec())) {
+            return;
+        }
+        let Some(size) = list_name_size(type_) else {
+            return self.set_error(GL_INVALID_ENUM);
+        };
+        if n < 0 {
+            return self.set_error(GL_INVALID_VALUE);
+        }
+        let n = n as usize;
+        if lists.len() / size < n {
+            return self.set_error(GL_INVALID_VALUE);
+        }
+        let compiling = self.lists.compiling.take();
+        for bytes in lists.chunks_exact(size).take(n) {
+            let name = self.lists.base.wrapping_add_signed(list_offset(type_, bytes));
+            self.execute_list(name);
+        }
+        self.lists.compiling = compiling;
+    }
+
+    /// `glListBase`: the offset `call_lists` adds to every name.
+    pub fn list_base(&mut self, base: GLuint) {
+        if self.compiled(|| ListCommand::ListBase(base)) || self.reject_inside_begin_end() {
+            return;
+        }
+        self.lists.base = base;
+    }
+
+    /// `glDeleteLists`: deletes lists `list .. list + range` (unused names are ignored);
+    /// a negative range → `GL_INVALID_VALUE`.
+    pub fn delete_lists(&mut self, list: GLuint, range: GLsizei) {
+        if self.reject_inside_begin_end() {
+            return;
+        }
+        if range < 0 {
+            return self.set_error(GL_INVALID_VALUE);
+        }
+        for name in (0..range as u32).filter_map(|i| list.checked_add(i)) {
+            self.lists.lists.remove(&name);
+        }
+    }
+
+    /// `glIsList`: whether `list` names a list (compiled, or reserved by `gen_lists`).
+    pub fn is_list(&mut self, list: GLuint) -> GLboolean {
+        if self.reject_inside_begin_end() {
+            return GL_FALSE;
+        }
+        if self.lists.lists.contains_key(&list) {
+            GL_TRUE
+        } else {
+            GL_FALSE
+        }
+    }
+
+    /// The list `glGet(GL_LIST_INDEX)`, `GL_LIST_MODE`, `GL_LIST_BASE` and
+    /// `GL_MAX_LIST_NESTING` report.
+    pub(crate) fn list_query(&self, pname: GLenum) -> Option<f64> {
+        let compiling = self.lists.compiling.as_ref();
+        let value = match pname {
+            GL_LIST_INDEX => compiling.map_or(0, |c| c.name),
+            GL_LIST_MODE => compiling.map_or(0, |c| if c.execute { GL_COMPILE_AND_EXECUTE } else { GL_COMPILE }),
+            GL_LIST_BASE => self.lists.base,
+            GL_MAX_LIST_NESTING => MAX_LIST_NESTING as u32,
+            _ => return None,
+        };
+        Some(f64::from(value))
+    }
+
+    fn execute_list(&mut self, name: GLuint) {
+        if self.lists.depth >= MAX_LIST_NESTING {
+            return;
+        }
+        let Some(commands) = self.lists.lists.get(&name).cloned() else { return };
+        self.lists.depth += 1;
+        for command in commands.iter() {
+            self.execute(command);
+        }
+        self.lists.depth -= 1;
+    }
+
+    /// Replays one command through the method that recorded it.
+    fn execute(&mut self, command: &ListCommand) {
+        use ListCommand as C;
+        match command {
+            C::Begin(mode) => self.begin(*mode),
+            C::End => self.end(),
+            C::Vertex([x, y, z, w]) => self.vertex4f(*x, *y, *z, *w),
+            C::Color([r, g, b, a]) => self.color4f(*r, *g, *b, *a),
+            C::Normal([x, y, z]) => self.normal3f(*x, *y, *z),
+            C::TexCoord([s, t, r, q]) => self.tex_coord4f(*s, *t, *r, *q),
+            C::Enable(cap) => self.enable(*cap),
+            C::Disable(cap) => self.disable(*cap),
+            C::Light(light, pname, params) => self.light_fv(*light, *pname, params),
+            C::Material(face, pname, params) => self.material_fv(*face, *pname, params),
+            C::LightModel(pname, params) => self.light_model_fv(*pname, params),
+            C::ColorMaterial(face, mode) => self.color_material(*face, *mode),
+            C::ShadeModel(mode) => self.shade_model(*mode),
+            C::MatrixMode(mode) => self.matrix_mode(*mode),
+            C::LoadIdentity => self.load_identity(),
+            C::LoadMatrix(m) => self.load_matrixf(m),
+            C::MultMatrix(m) => self.mult_matrixf(m),
+            C::PushMatrix => self.push_matrix(),
+            C::PopMatrix => self.pop_matrix(),
+            C::Translate([x, y, z]) => self.translatef(*x, *y, *z),
+            C::Rotate([a, x, y, z]) => self.rotatef(*a, *x, *y, *z),
+            C::Scale([x, y, z]) => self.scalef(*x, *y, *z),
+            C::Ortho([l, r, b, t, n, f]) => self.ortho(*l, *r, *b, *t, *n, *f),
+            C::Frustum([l, r, b, t, n, f]) => self.frustum(*l, *r, *b, *t, *n, *f),
+            C::Viewport([x, y, w, h]) => self.viewport(*x, *y, *w, *h),
+            C::DepthRange(near, far) => self.depth_range(*near, *far),
+            C::PointSize(size) => self.point_size(*size),
+            C::LineWidth(width) => self.line_width(*width),
+            C::PolygonMode(face, mode) => self.polygon_mode(*face, *mode),
+            C::FrontFace(mode) => self.front_face(*mode),
+            C::CullFace(mode) => self.cull_face(*mode),
+            C::DepthFunc(func) => self.depth_func(*func),
+            C::ClearColor([r, g, b, a]) => self.clear_color(*r, *g, *b, *a),
+            C::ClearDepth(depth) => self.clear_depth(*depth),
+            C::Clear(mask) => self.clear(*mask),
+            C::ActiveTexture(unit) => self.active_texture(*unit),
+            C::Map1 { target, u, stride, order, points } => self.map1f(*target, u.0, u.1, *stride, *order, points),
+            C::Map2 { target, u, ustride, uorder, v, vstride, vorder, points } => {
+                self.map2f(*target, u.0, u.1, *ustride, *uorder, v.0, v.1, *vstride, *vorder, points)
+            }
+            C::MapGrid1(n, u1, u2) => self.map_grid1f(*n, *u1, *u2),
+            C::MapGrid2(un, u1, u2, vn, v1, v2) => self.map_grid2f(*un, *u1, *u2, *vn, *v1, *v2),
+            C::EvalCoord1(u) => self.eval_coord1f(*u),
+            C::EvalCoord2(u, v) => self.eval_coord2f(*u, *v),
+            C::EvalPoint1(i) => self.eval_point1(*i),
+            C::EvalPoint2(i, j) => self.eval_point2(*i, *j),
+            C::EvalMesh1(mode, i1, i2) => self.eval_mesh1(*mode, *i1, *i2),
+            C::EvalMesh2(mode, i1, i2, j1, j2) => self.eval_mesh2(*mode, *i1, *i2, *j1, *j2),
+            C::CallList(list) => self.call_list(*list),
+            C::CallLists(n, type_, names) => self.call_lists(*n, *type_, names),
+            C::ListBase(base) => self.list_base(*base),
+        }
+    }
+}
+
+/// Bytes per name of a `glCallLists` type, `None` for a type GL does not take.
+fn list_name_size(type_: GLenum) -> Option<usize> {
+    match type_ {
+        GL_BYTE | GL_UNSIGNED_BYTE => Some(1),
+        GL_SHORT | GL_UNSIGNED_SHORT | GL_2_BYTES => Some(2),
+        GL_3_BYTES => Some(3),
+        GL_INT | GL_UNSIGNED_INT | GL_FLOAT | GL_4_BYTES => Some(4),
+        _ => None,
+    }
+}
+
+/// One name of a `glCallLists` array as the offset GL adds to the list base (Mesa
+/// `translate_id`: floats are truncated towards zero, byte groups read big-endian).
+fn list_offset(type_: GLenum, b: &[u8]) -> i32 {
+    let big = |bytes: &[u8]| bytes.iter().fold(0u32, |acc, &x| (acc << 8) | u32::from(x)) as i32;
+    match type_ {
+        GL_BYTE => i32::from(b[0] as i8),
+        GL_UNSIGNED_BYTE => i32::from(b[0]),
+        GL_SHORT => i32::from(i16::from_ne_bytes([b[0], b[1]])),
+        GL_UNSIGNED_SHORT => i32::from(u16::from_ne_bytes([b[0], b[1]])),
+        GL_INT => i32::from_ne_bytes([b[0], b[1], b[2], b[3]]),
+        GL_UNSIGNED_INT => u32::from_ne_bytes([b[0], b[1], b[2], b[3]]) as i32,
+        GL_FLOAT => f32::from_ne_bytes([b[0], b[1], b[2], b[3]]) as i32,
+        _ => big(b),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn triangle(gl: &mut Gl) {
+        gl.begin(GL_TRIANGLES);
+        gl.vertex2f(0.0, 0.0);
+        gl.vertex2f(1.0, 0.0);
+        gl.vertex2f(0.0, 1.0);
+        gl.end();
+    }
+
+    #[test]
+    fn compile_records_without_drawing_and_call_draws() {
+        let mut gl = Gl::new(10, 10);
+        let list = gl.gen_lists(1);
+        assert_eq!(list, 1);
+        gl.new_list(list, GL_COMPILE);
+        triangle(&mut gl);
+        gl.end_list();
+        assert!(gl.frame().vertices.is_empty());
+        gl.call_list(list);
+        gl.call_list(list);
+        assert_eq!(gl.frame().vertices.len(), 6);
+        assert_eq!(gl.get_error(), GL_NO_ERROR);
+    }
+
+    #[test]
+    fn compile_and_execute_draws_once_while_compiling() {
+        let mut gl = Gl::new(10, 10);
+        gl.new_list(5, GL_COMPILE_AND_EXECUTE);
+        triangle(&mut gl);
+        gl.end_list();
+        assert_eq!(gl.frame().vertices.len(), 3);
+        assert_eq!(gl.is_list(5), GL_TRUE);
+    }
+
+    #[test]
+    fn errors_are_raised_when_the_list_runs() {
+        let mut gl = Gl::new(10, 10);
+        gl.new_list(1, GL_COMPILE);
+        gl.enable(0x1234);
+        gl.end_list();
+        assert_eq!(gl.get_error(), GL_NO_ERROR);
+        gl.call_list(1);
+        assert_eq!(gl.get_error(), GL_INVALID_ENUM);
+    }
+
+    #[test]
+    fn list_commands_errors_in_mesa_order() {
+        let mut gl = Gl::new(10, 10);
+        gl.new_list(0, 0x9999);
+        assert_eq!(gl.get_error(), GL_INVALID_VALUE);
+        gl.new_list(1, 0x9999);
+        assert_eq!(gl.get_error(), GL_INVALID_ENUM);
+        gl.end_list();
+        assert_eq!(gl.get_error(), GL_INVALID_OPERATION);
+        gl.new_list(1, GL_COMPILE);
+        gl.new_list(2, GL_COMPILE);
+        assert_eq!(gl.get_error(), GL_INVALID_OPERATION);
+        gl.end_list();
+        assert_eq!(gl.gen_lists(-1), 0);
+        assert_eq!(gl.get_error(), GL_INVALID_VALUE);
+        gl.delete_lists(1, -1);
+        assert_eq!(gl.get_error(), GL_INVALID_VALUE);
+        gl.call_lists(1, GL_DOUBLE, &[0; 8]);
+        assert_eq!(gl.get_error(), GL_INVALID_ENUM);
+        gl.call_lists(-1, GL_UNSIGNED_BYTE, &[]);
+        assert_eq!(gl.get_error(), GL_INVALID_VALUE);
+        gl.call_list(0);
+        assert_eq!(gl.get_error(), GL_INVALID_VALUE);
+    }
+
+    #[test]
+    fn maps_are_copied_when_compiled() {
+        let mut gl = Gl::new(10, 10);
+        let mut pts = [0.0f32, 0.0, 0.0, 9.0, 9.0, 9.0, 1.0, 1.0, 0.0];
+        gl.new_list(1, GL_COMPILE);
+        // Stride 6: only every other point is part of the map.
+        gl.map1f(GL_MAP1_VERTEX_3, 0.0, 1.0, 6, 2, &pts);
+        gl.end_list();
+        pts.fill(5.0);
+        gl.call_list(1);
+        let mut coeffs = [0.0f32; 6];
+        gl.get_mapfv(GL_MAP1_VERTEX_3, GL_COEFF, &mut coeffs);
+        assert_eq!(coeffs, [0.0, 0.0, 0.0, 1.0, 1.0, 0.0]);
+        assert_eq!(gl.get_error(), GL_NO_ERROR);
+    }
+
+    #[test]
+    fn nesting_stops_at_mesas_limit() {
+        let mut gl = Gl::new(10, 10);
+        // List 1 draws a point and calls itself: 64 levels run, then the call is ignored.
+        gl.new_list(1, GL_COMPILE);
+        gl.begin(GL_POINTS);
+        gl.vertex2f(0.0, 0.0);
+        gl.end();
+        gl.call_list(1);
+        gl.end_list();
+        gl.call_list(1);
+        assert_eq!(gl.frame().vertices.len(), MAX_LIST_NESTING);
+        assert_eq!(gl.get_error(), GL_NO_ERROR);
+    }
+
+    #[test]
+    fn call_lists_adds_the_base_to_each_name() {
+        let mut gl = Gl::new(10, 10);
+        let base = gl.gen_lists(3);
+        assert_eq!(base, 1);
+        for (i, n) in [1, 2, 3].into_iter().enumerate() {
+            gl.new_list(base + i as u32, GL_COMPILE);
+            gl.begin(GL_POINTS);
+            for _ in 0..n {
+                gl.vertex2f(0.0, 0.0);
+            }
+            gl.end();
+            gl.end_list();
+        }
+        gl.list_base(base);
+        gl.call_lists(3, GL_UNSIGNED_BYTE, &[2, 0, 7]);
+        // Lists base+2 (3 points) and base+0 (1 point); base+7 does not exist.
+        assert_eq!(gl.frame().vertices.len(), 4);
+        gl.call_lists(1, GL_2_BYTES, &[0, 1]);
+        assert_eq!(gl.frame().vertices.len(), 6);
+        gl.call_lists(1, GL_FLOAT, &0.5f32.to_ne_bytes());
+        assert_eq!(gl.frame().vertices.len(), 7);
+        // Truncated towards zero, as Mesa does: -1.5 is list base - 1, which does not exist.
+        gl.call_lists(1, GL_FLOAT, &(-1.5f32).to_ne_bytes());
+        assert_eq!(gl.frame().vertices.len(), 7);
+    }
+
+    #[test]
+    fn gen_lists_follows_the_largest_name_used() {
+        let mut gl = Gl::new(10, 10);
+        // Mesa hands out names after the largest ever used, even once it is deleted.
+        gl.new_list(2, GL_COMPILE);
+        gl.end_list();
+        assert_eq!(gl.gen_lists(1), 3);
+        assert_eq!(gl.gen_lists(2), 4);
+        assert_eq!(gl.is_list(3), GL_TRUE);
+        gl.delete_lists(1, 4);
+        assert_eq!(gl.is_list(2), GL_FALSE);
+        assert_eq!(gl.gen_lists(2), 6);
+    }
+}
