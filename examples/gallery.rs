@@ -35,6 +35,8 @@ mod ex5_bird;
 mod flattwoviewports;
 #[path = "linespoints.rs"]
 mod linespoints;
+#[path = "lists.rs"]
+mod lists;
 #[path = "operations.rs"]
 mod operations;
 #[path = "outline.rs"]
@@ -53,7 +55,7 @@ mod trimmed;
 /// A built-in program: its name and how to build it.
 type Program = (&'static str, fn() -> App);
 
-const PROGRAMS: [Program; 20] = [
+const PROGRAMS: [Program; 21] = [
     ("bezcurve", bezcurve::app),
     ("bezsurf", bezsurf::app),
     ("bcurve", bcurve::app),
@@ -73,6 +75,7 @@ const PROGRAMS: [Program; 20] = [
     ("ex5bird", ex5_bird::app),
     ("demo", demo::app),
     ("teapot", teapot::app),
+    ("lists", lists::app),
     ("operations", operations::app),
 ];
 

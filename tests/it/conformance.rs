@@ -32,6 +32,8 @@ mod ex5_bird;
 mod flattwoviewports;
 #[path = "../../examples/linespoints.rs"]
 mod linespoints;
+#[path = "../../examples/lists.rs"]
+mod lists;
 #[path = "../../examples/operations.rs"]
 mod operations;
 #[path = "../../examples/outline.rs"]
@@ -190,6 +192,13 @@ fn textbook_exercises_match_mesa() {
     check("ex3bsplinen", ex3_bspline_n::app, 0.0);
     check("ex4bsplinesurface", ex4_bspline_surface::app, 0.0);
     check("ex5bird", ex5_bird::app, 0.0);
+}
+
+/// Display lists holding evaluator calls and a NURBS surface, called under several transforms
+/// and through `call_lists` (`Lists.c`).
+#[test]
+fn display_lists_match_mesa() {
+    check("lists", lists::app, 0.0);
 }
 
 /// GLUT's solid teapot (32 bicubic patches through glMap2f/glEvalMesh2) against `Teapot.c`.
