@@ -181,3 +181,9 @@ pub const GL_2_BYTES: GLenum = 0x1407;
 pub const GL_3_BYTES: GLenum = 0x1408;
 pub const GL_4_BYTES: GLenum = 0x1409;
 pub const GL_DOUBLE: GLenum = 0x140A;
+
+// glGetString names.
+pub const GL_VENDOR: GLenum = 0x1F00;
+pub const GL_RENDERER: GLenum = 0x1F01;
+pub const GL_VERSION: GLenum = 0x1F02;
+pub const GL_EXTENSIONS: GLenum = 0x1F03;

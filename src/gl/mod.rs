@@ -283,6 +283,30 @@ impl Gl {
         self.active_texture = texture;
     }
 
+    /// `glGetString`: who implements this GL (`GL_VENDOR` "gleval"), on what (`GL_RENDERER`:
+    /// the tessellator in use; wgpu draws what is recorded), the version (`GL_VERSION`: "1.1"
+    /// and ours, for the GL 1.1 subset implemented) and the extensions (`GL_EXTENSIONS`: none).
+    /// Another name → `GL_INVALID_ENUM` and `None` (C's NULL), as inside `begin`/`end`
+    /// (`GL_INVALID_OPERATION`).
+    pub fn get_string(&mut self, name: GLenum) -> Option<&'static str> {
+        if self.reject_inside_begin_end() {
+            return None;
+        }
+        match name {
+            GL_VENDOR => Some("gleval"),
+            GL_RENDERER => Some(match self.tessellator {
+                Tessellator::Cpu => "gleval (CPU tessellator, wgpu rasteriser)",
+                Tessellator::Gpu => "gleval (WGSL tessellator, wgpu rasteriser)",
+            }),
+            GL_VERSION => Some(concat!("1.1 gleval ", env!("CARGO_PKG_VERSION"))),
+            GL_EXTENSIONS => Some(""),
+            _ => {
+                self.set_error(GL_INVALID_ENUM);
+                None
+            }
+        }
+    }
+
     /// `glGetIntegerv` for the evaluator queries (`GL_MAX_EVAL_ORDER`, the grid domains and
     /// segments). Floats are rounded to the nearest integer, as GL converts them.
     pub fn get_integerv(&mut self, pname: GLenum, params: &mut [GLint]) {
@@ -350,5 +374,25 @@ impl Gl {
             self.set_error(GL_INVALID_OPERATION);
         }
         inside
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn get_string_names_and_errors() {
+        let mut gl = Gl::new(4, 4);
+        assert_eq!(gl.get_string(GL_VENDOR), Some("gleval"));
+        assert!(gl.get_string(GL_VERSION).is_some_and(|v| v.starts_with("1.1 ")));
+        assert_eq!(gl.get_string(GL_EXTENSIONS), Some(""));
+        assert_eq!(gl.get_error(), GL_NO_ERROR);
+        assert_eq!(gl.get_string(0x1234), None);
+        assert_eq!(gl.get_error(), GL_INVALID_ENUM);
+        gl.begin(GL_POINTS);
+        assert_eq!(gl.get_string(GL_VENDOR), None);
+        gl.end();
+        assert_eq!(gl.get_error(), GL_INVALID_OPERATION);
     }
 }

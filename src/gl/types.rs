@@ -18,3 +18,16 @@ pub type GLfloat = f32;
 pub type GLdouble = f64;
 /// `GLclampf`.
 pub type GLclampf = f32;
+/// `GLclampd`.
+pub type GLclampd = f64;
+/// `GLubyte`.
+pub type GLubyte = u8;
+/// `GLbyte`.
+pub type GLbyte = i8;
+/// `GLshort`.
+pub type GLshort = i16;
+/// `GLushort`.
+pub type GLushort = u16;
+/// `GLvoid`: only behind a pointer in C; Rust signatures take typed slices (`&[u8]` where GL
+/// reads raw memory, as `glCallLists` does).
+pub type GLvoid = core::ffi::c_void;
