@@ -6,5 +6,6 @@
 // --- tessellation internals (the row scheduler and kernel, trimmed-domain plans) ---
 
 // --- GLU internals ---
+// None: the tests, benchmarks and examples reach GLU through its public `glu_*` calls.
 
 // --- image comparison used by the conformance tests and the gallery ---
