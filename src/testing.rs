@@ -7,6 +7,7 @@
 pub use crate::tess::grid::{eval_grid2, Grid2, MapView};
 
 // --- GLU internals ---
+// None: the tests, benchmarks and examples reach GLU through its public `glu_*` calls.
 
 // --- image comparison used by the conformance tests and the gallery ---
 #[cfg(all(feature = "gpu", feature = "png"))]

@@ -9,12 +9,16 @@
 //! rule (and every error, which GL raises when a list executes, not when it compiles) is
 //! written once. `glEvalMesh` is compiled as the call, not as its vertices; GLU's NURBS calls are
 //! compiled as the GL calls GLU makes, with the sampling worked out at compile time, as real
-//! GLU's are.
+//! GLU's are. One difference: a trimmed surface's vertices are evaluated when the list compiles
+//! (real GLU compiles `glEvalCoord2f` calls, evaluated when the list runs), so they differ only
+//! if the evaluator state (`GL_AUTO_NORMAL`) changes between compiling and calling the list.
 //!
 //! Not compiled, executed at once (spec §5.4): `glGenLists`, `glNewList`, `glEndList`,
 //! `glDeleteLists`, `glIsList`, `glGet*`, `glIsEnabled`, `glGetError`, `glFlush`, `glFinish`.
 
 use super::consts::*;
+use super::frame::Vertex;
+use super::mesh_job::MeshJob;
 use super::types::*;
 use super::Gl;
 use std::collections::HashMap;
@@ -88,6 +92,14 @@ pub(crate) enum ListCommand {
     EvalPoint2(i32, i32),
     EvalMesh1(GLenum, i32, i32),
     EvalMesh2(GLenum, i32, i32, i32, i32),
+    PushAttrib(GLbitfield),
+    PopAttrib,
+    /// A vertex with all its attributes, as GLU issues a trimmed surface's (its
+    /// `glNormal`/`glVertex` pairs; see `Gl::emit_listed_vertex`).
+    EmitVertex(Vertex),
+    /// Triangles over scattered points evaluated by the GPU tessellator (GLU's trimmed
+    /// surfaces there), with the jobs' maps copied.
+    ScatteredMesh(Vec<MeshJob>, Vec<u32>),
     CallList(GLuint),
     CallLists(GLsizei, GLenum, Vec<u8>),
     ListBase(GLuint),
@@ -121,6 +133,15 @@ impl Gl {
         let Some(list) = self.lists.compiling.as_mut() else { return false };
         list.commands.push(command());
         !list.execute
+    }
+
+    /// Adds a vertex GLU made (position and attributes evaluated on the surface) to the open
+    /// primitive, or to the list being compiled: what GLU's `glNormal3fv`/`glVertex3fv` calls
+    /// do for a trimmed surface.
+    pub(crate) fn emit_listed_vertex(&mut self, v: Vertex) {
+        if !self.compiled(|| ListCommand::EmitVertex(v)) {
+            self.emit_vertex(v);
+        }
     }
 
     /// `glGenLists`: `range` consecutive unused names, the first returned (0 for `range` 0).
@@ -358,6 +379,10 @@ impl Gl {
             C::EvalPoint2(i, j) => self.eval_point2(*i, *j),
             C::EvalMesh1(mode, i1, i2) => self.eval_mesh1(*mode, *i1, *i2),
             C::EvalMesh2(mode, i1, i2, j1, j2) => self.eval_mesh2(*mode, *i1, *i2, *j1, *j2),
+            C::PushAttrib(mask) => self.push_attrib(*mask),
+            C::PopAttrib => self.pop_attrib(),
+            C::EmitVertex(v) => self.emit_listed_vertex(*v),
+            C::ScatteredMesh(jobs, triangles) => self.record_scattered_mesh(jobs.clone(), triangles.clone()),
             C::CallList(list) => self.call_list(*list),
             C::CallLists(n, type_, names) => self.call_lists(*n, *type_, names),
             C::ListBase(base) => self.list_base(*base),

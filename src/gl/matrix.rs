@@ -127,6 +127,17 @@ impl Gl {
         }
     }
 
+    /// `glGetFloatv(GL_MODELVIEW_MATRIX)` for GLU, which loads its sampling matrices so
+    /// (`glrenderer.cc`). Unlike `glGet`, it records no error inside `begin`/`end`.
+    pub(crate) fn modelview_matrix(&self) -> Mat4 {
+        self.matrices.modelview()
+    }
+
+    /// `glGetFloatv(GL_PROJECTION_MATRIX)` for GLU (see [`Gl::modelview_matrix`]).
+    pub(crate) fn projection_matrix(&self) -> Mat4 {
+        self.matrices.projection()
+    }
+
     /// `glPushMatrix`: `GL_STACK_OVERFLOW` when the stack is full.
     pub fn push_matrix(&mut self) {
         if self.compiled(|| ListCommand::PushMatrix) {

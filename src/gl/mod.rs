@@ -6,6 +6,7 @@
 //! slices; a slice shorter than the call needs sets `GL_INVALID_VALUE` instead of reading out of
 //! bounds. Nothing here panics on bad input.
 
+mod attrib;
 pub mod consts;
 mod enable;
 mod eval;
@@ -99,6 +100,8 @@ pub struct Gl {
     pub(crate) current: Current,
     caps: enable::Caps,
     pub(crate) eval: eval::EvalState,
+    /// `glPushAttrib`'s stack.
+    attrib_stack: attrib::AttribStack,
     active_texture: GLenum,
     pub(crate) matrices: matrix::MatrixStacks,
     lighting: lighting::Lighting,
@@ -116,7 +119,8 @@ pub struct Gl {
     tessellator: Tessellator,
     /// Display lists, and the one being compiled.
     lists: lists::Lists,
-    /// GLU NURBS objects, indexed by their handles.
+    /// GLU NURBS objects, indexed by their handles: the one import from `gl` into `glu`, since
+    /// GLU's calls are methods of `Gl` (the porting rule).
     pub(crate) nurbs: Vec<Option<crate::glu::NurbsObject>>,
 }
 
@@ -132,6 +136,7 @@ impl Gl {
             current: Current::default(),
             caps: enable::Caps::default(),
             eval: eval::EvalState::default(),
+            attrib_stack: attrib::AttribStack::default(),
             active_texture: GL_TEXTURE0,
             matrices: matrix::MatrixStacks::default(),
             lighting: lighting::Lighting::default(),

@@ -120,10 +120,16 @@ impl Gl {
         self.touch_state();
     }
 
-    /// Puts back a polygon mode saved by GLU around a NURBS surface.
-    pub(crate) fn restore_polygon_mode(&mut self, mode: [GLenum; 2]) {
-        self.raster.polygon_mode = mode;
-        self.touch_state();
+    /// `glGetIntegerv(GL_VIEWPORT)` for GLU, which loads its sampling matrices so
+    /// (`glrenderer.cc`). Unlike `glGet`, it records no error inside `begin`/`end`.
+    pub(crate) fn viewport_box(&self) -> [GLint; 4] {
+        self.raster.viewport
+    }
+
+    /// `glGetIntegerv(GL_POLYGON_MODE)` for GLU: the front and back modes, which GLU saves
+    /// around a surface and puts back with `glPolygonMode` (`glsurfeval.cc`).
+    pub(crate) fn polygon_modes(&self) -> [GLenum; 2] {
+        self.raster.polygon_mode
     }
 
     /// `glFrontFace`: `GL_CW` or `GL_CCW`.

@@ -50,7 +50,8 @@ const NURBS_ERRORS: [&str; 37] = [
 /// anything else.
 ///
 /// ```
-/// use gleval::glu::{glu_error_string, GLU_NURBS_ERROR34};
+/// use gleval::glu::consts::GLU_NURBS_ERROR34;
+/// use gleval::glu::glu_error_string;
 /// assert_eq!(glu_error_string(GLU_NURBS_ERROR34), Some("negative byte-stride encounteed"));
 /// ```
 #[must_use]

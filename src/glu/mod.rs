@@ -5,20 +5,27 @@
 //! A NURBS is reduced to Bezier pieces by knot insertion ([`crate::math::kernel::decompose_surface`]) and drawn
 //! through the GL evaluators (`GLU_NURBS_RENDERER`) or handed to callbacks
 //! (`GLU_NURBS_TESSELLATOR`), as GLU does.
+//!
+//! Four layers, each importing only those before it:
+//! 1. `model`: what a NURBS object holds (its maps, trim pieces, properties, callbacks and
+//!    nesting), with [`consts`] and [`glu_error_string`]'s table;
+//! 2. `evaluation`: Bezier pieces of the maps, sampling, culling, the surface's patches and
+//!    their grids, the row kernel and normals;
+//! 3. `draw`: curves and surfaces, untrimmed and trimmed, through GL calls or the callbacks;
+//! 4. `calls`: the `glu_*` methods of [`crate::gl::Gl`], GLU's entry points.
+//!
+//! GLU calls are methods of `Gl` (the porting rule), so `gl` holds the NURBS objects: the one
+//! import from `gl` back into `glu`. Like GLU, which only calls GL, the drawing reaches GL state
+//! through GL's own calls and queries (`glPushAttrib(GL_EVAL_BIT)`, `glGetIntegerv`, ...).
 
-mod callbacks;
+mod calls;
 pub mod consts;
 mod draw;
 mod errors;
-mod nurbs;
-mod pieces;
-mod props;
-mod sampling;
-mod trimmed;
+mod evaluation;
+mod model;
 
-pub use callbacks::{NurbsCallback, UserData};
-pub use consts::*;
 pub use errors::glu_error_string;
-pub use nurbs::GLUnurbs;
-pub(crate) use nurbs::NurbsObject;
-pub use props::{NurbsProperties, SamplingMatrices};
+pub use model::callbacks::{NurbsCallback, UserData};
+pub use model::object::GLUnurbs;
+pub(crate) use model::object::NurbsObject;

@@ -2,6 +2,7 @@
 //! (f64 oracle) and their number is within a factor of 2 of what real GLU emits for the same
 //! NURBS, properties and sampling matrices (`tests/reference/glu/tess_counts.c`).
 
+use gleval::gl::Tessellator;
 use gleval::math::{BSplineCurve, BSplineSurface, KnotVector};
 use gleval::prelude::*;
 use std::cell::RefCell;
@@ -358,5 +359,60 @@ fn trimmed_tessellation_covers_the_retained_region_on_the_surface() {
         assert!((area - want).abs() < 1e-4, "step {step}: area {area} vs {want}");
         let quads = prims.iter().filter(|p| p.0 == GL_QUAD_STRIP).count();
         assert!(quads > 0, "step {step}: the interior comes as quad strips");
+    }
+}
+
+/// A trimmed NURBS surface drawn through GLU inside a display list (`GL_COMPILE`, then
+/// `call_list`) records exactly what drawing it directly records, on both tessellators and in
+/// every display mode: GLU's GL calls (evaluators, vertices, attribute pushes) are compiled as
+/// real GLU's are.
+#[test]
+fn glu_surfaces_in_display_lists_draw_as_when_drawn_directly() {
+    fn draw(gl: &mut Gl, mode: u32) {
+        let knots = [0.0, 0.0, 0.0, 0.0, 1.0, 1.0, 1.0, 1.0];
+        let mut ctl = Vec::new();
+        for u in 0..4 {
+            for v in 0..4 {
+                ctl.extend([u as f32 - 1.5, v as f32 - 1.5, if (1..3).contains(&u) { 1.0 } else { -0.5 }]);
+            }
+        }
+        let hole = [0.3, 0.3, 0.3, 0.7, 0.7, 0.7, 0.7, 0.3, 0.3, 0.3];
+        let border = [0.0, 0.0, 1.0, 0.0, 1.0, 1.0, 0.0, 1.0, 0.0, 0.0];
+        let nurb = gl.glu_new_nurbs_renderer();
+        gl.glu_nurbs_property(nurb, GLU_DISPLAY_MODE, mode as f32);
+        gl.glu_nurbs_property(nurb, GLU_SAMPLING_TOLERANCE, 10.0);
+        gl.glu_begin_surface(nurb);
+        gl.glu_nurbs_surface(nurb, 8, &knots, 8, &knots, 12, 3, &ctl, 4, 4, GL_MAP2_VERTEX_3);
+        gl.glu_begin_trim(nurb);
+        gl.glu_pwl_curve(nurb, 5, &border, 2, GLU_MAP1_TRIM_2);
+        gl.glu_end_trim(nurb);
+        gl.glu_begin_trim(nurb);
+        gl.glu_pwl_curve(nurb, 5, &hole, 2, GLU_MAP1_TRIM_2);
+        gl.glu_end_trim(nurb);
+        gl.glu_end_surface(nurb);
+        gl.glu_delete_nurbs_renderer(nurb);
+    }
+    for tessellator in [Tessellator::Cpu, Tessellator::Gpu] {
+        for mode in [GLU_FILL, GLU_OUTLINE_POLYGON, GLU_OUTLINE_PATCH] {
+            let mut direct = Gl::new(200, 200);
+            direct.set_tessellator(tessellator);
+            direct.enable(GL_AUTO_NORMAL);
+            draw(&mut direct, mode);
+            let mut listed = Gl::new(200, 200);
+            listed.set_tessellator(tessellator);
+            listed.enable(GL_AUTO_NORMAL);
+            listed.new_list(1, GL_COMPILE);
+            draw(&mut listed, mode);
+            listed.end_list();
+            assert!(listed.frame().expanded().vertices.is_empty(), "GL_COMPILE drew");
+            listed.call_list(1);
+            let (a, b) = (direct.frame().expanded(), listed.frame().expanded());
+            assert!(!a.vertices.is_empty());
+            assert_eq!(a.vertices.len(), b.vertices.len(), "{tessellator:?} mode {mode}");
+            let first_difference = a.vertices.iter().zip(&b.vertices).position(|(x, y)| x != y);
+            assert_eq!(first_difference, None, "{tessellator:?} mode {mode}");
+            assert_eq!(a.primitives.len(), b.primitives.len(), "{tessellator:?} mode {mode}");
+            assert_eq!((direct.get_error(), listed.get_error()), (GL_NO_ERROR, GL_NO_ERROR));
+        }
     }
 }

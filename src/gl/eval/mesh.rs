@@ -187,6 +187,9 @@ impl Gl {
     /// Bezier piece, outputs concatenated): GLU's trimmed surfaces on the GPU tessellator.
     /// `triangles` index the concatenated points, GL_TRIANGLES order.
     pub(crate) fn record_scattered_mesh(&mut self, jobs: Vec<MeshJob>, triangles: Vec<u32>) {
+        if self.compiled(|| ListCommand::ScatteredMesh(jobs.clone(), triangles.clone())) {
+            return;
+        }
         let nu = jobs.iter().map(MeshJob::len).sum();
         let state = self.current_state_index();
         let vertices = MeshVertices::Deferred(jobs);

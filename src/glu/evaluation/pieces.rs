@@ -1,8 +1,8 @@
 //! The Bezier pieces of every map of a NURBS curve or surface, and the sub-pieces GLU hands to
 //! `glMap1`/`glMap2` when a map's breakpoints differ from the position map's.
 
-use super::nurbs::{CurveMap, SurfaceMap};
 use crate::gl::types::GLenum;
+use crate::glu::model::maps::{CurveMap, SurfaceMap};
 use crate::math::bezier::{de_casteljau, split, Vec4};
 use crate::math::insertion::{decompose_curve, decompose_surface, BezierPatches, BezierPieces};
 use crate::math::patch::{patch_with_partials, PatchSample};

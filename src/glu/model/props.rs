@@ -1,13 +1,13 @@
 //! NURBS properties (`gluNurbsProperty`, `gluGetNurbsProperty`, `gluLoadSamplingMatrices`) with
 //! GLU's defaults (`glrenderer.cc`, `renderhints.cc`; spec 2.2–2.3).
 
-use super::consts::*;
 use crate::gl::types::GLenum;
+use crate::glu::consts::*;
 use glam::Mat4;
 
 /// The properties of a NURBS object. `DEFAULT` is GLU's initial state.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct NurbsProperties {
+pub(crate) struct NurbsProperties {
     /// `GLU_SAMPLING_TOLERANCE`: pixels (object units for the OBJECT_ methods).
     pub sampling_tolerance: f32,
     /// `GLU_PARAMETRIC_TOLERANCE`.
@@ -120,7 +120,7 @@ impl Default for NurbsProperties {
 
 /// The matrices GLU samples with: `clip = projection · modelview · p`, and the viewport.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct SamplingMatrices {
+pub(crate) struct SamplingMatrices {
     /// Modelview.
     pub modelview: Mat4,
     /// Projection.

@@ -3,8 +3,8 @@
 //! matrix, velocity bounds taken on the projected control polygon, and a step size chosen for
 //! the sampling method.
 
-use super::consts::*;
-use super::props::{NurbsProperties, SamplingMatrices};
+use crate::glu::consts::*;
+use crate::glu::model::props::{NurbsProperties, SamplingMatrices};
 use glam::{Mat4, Vec4};
 
 /// GLU bisects a span at most this many times (`renderhints.cc` subdivisions = 6).

@@ -2,8 +2,8 @@
 //! pointers; here each callback is a closure, and the `_DATA` forms also receive the user data
 //! set with `gluNurbsCallbackData`.
 
-use super::consts::*;
 use crate::gl::types::{GLenum, GLfloat};
+use crate::glu::consts::*;
 use std::any::Any;
 
 /// User data handed to the `_DATA` callbacks (`gluNurbsCallbackData`).

@@ -1,0 +1,42 @@
+//! One surface vertex through the callbacks, when more than begin, vertex and end are
+//! registered: its attribute maps' values and normal, then its position (GLU `inDoEvalCoord`).
+
+use crate::glu::consts::*;
+use crate::glu::evaluation::normals::surface_normal;
+use crate::glu::evaluation::pieces::SurfacePatches;
+use crate::glu::model::object::NurbsObject;
+use crate::glu::model::targets::callback_kind;
+
+/// The attribute maps' values and the normal (if wanted) of the vertex at (u, v).
+pub(crate) fn emit_attributes(
+    obj: &mut NurbsObject,
+    (pos, attributes, k): (&SurfacePatches, &[SurfacePatches], usize),
+    u: f64,
+    v: f64,
+) {
+    let mut has_normal_map = false;
+    for map in attributes {
+        let (Some(s), Some(kind)) = (map.eval(u, v), callback_kind(map.target)) else { continue };
+        has_normal_map |= kind == GLU_NURBS_NORMAL;
+        let values: Vec<f32> = s.point[..map.patches.dim].iter().map(|&c| c as f32).collect();
+        obj.callbacks.attribute(kind, &values);
+    }
+    if !has_normal_map && obj.callbacks.wants_normals() {
+        let p = &pos.patches;
+        let domain = [
+            p.uintervals[0].0,
+            p.uintervals[p.uintervals.len() - 1].1,
+            p.vintervals[0].0,
+            p.vintervals[p.vintervals.len() - 1].1,
+        ];
+        obj.callbacks.attribute(GLU_NURBS_NORMAL, &surface_normal(pos, k, u, v, domain));
+    }
+}
+
+/// The vertex callback at (u, v): (x, y, z) divided by w, then u, v.
+pub(crate) fn emit_position(obj: &mut NurbsObject, pos: &SurfacePatches, k: usize, u: f64, v: f64) {
+    let Some(s) = pos.eval(u, v) else { return };
+    let w = if k == 4 { s.point[3] } else { 1.0 };
+    let vertex = [(s.point[0] / w) as f32, (s.point[1] / w) as f32, (s.point[2] / w) as f32, u as f32, v as f32];
+    obj.callbacks.attribute(GLU_NURBS_VERTEX, &vertex);
+}

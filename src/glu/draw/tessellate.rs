@@ -1,0 +1,179 @@
+//! Untrimmed surfaces in tessellator mode: each patch's grid blocks as `GL_QUAD_STRIP`s through
+//! the callbacks (GLU `mapmesh2f` with `output_triangles`). With only begin, vertex and end
+//! callbacks the grids are evaluated by the row kernel on rayon's workers, a batch ahead of the
+//! strips issued on this thread; this is the path benchmarked as `nurbs_untrimmed`.
+
+use super::emit::{emit_attributes, emit_position};
+use crate::gl::consts::*;
+use crate::glu::consts::*;
+use crate::glu::evaluation::kernel::{grid_vertices, grid_vertices_into};
+use crate::glu::evaluation::surface::{PatchGrid, Surface};
+use crate::glu::model::callbacks::StripSink;
+use crate::glu::model::object::NurbsObject;
+
+/// Issues every patch, in order.
+pub(crate) fn tessellate_patches(obj: &mut NurbsObject, surface: &Surface, patches: &[PatchGrid]) {
+    if obj.callbacks.sinks().is_some() {
+        return tessellate_patches_in_parallel(obj, surface, patches);
+    }
+    for patch in patches {
+        tessellate_patch(obj, surface, patch);
+    }
+}
+
+/// Grid points per batch of patches: small enough that evaluating the next batch overlaps
+/// issuing this one's callbacks, large enough to amortise the hand-over.
+const BATCH_POINTS: usize = 1 << 16;
+
+/// Consecutive runs of patches of at most [`BATCH_POINTS`] grid points (at least one patch each).
+fn batches(patches: &[PatchGrid]) -> Vec<&[PatchGrid]> {
+    let mut out = Vec::new();
+    let mut rest = patches;
+    while !rest.is_empty() {
+        let mut take = 1;
+        let mut points = rest[0].points();
+        while take < rest.len() && points.saturating_add(rest[take].points()) <= BATCH_POINTS {
+            points += rest[take].points();
+            take += 1;
+        }
+        let (batch, tail) = rest.split_at(take);
+        out.push(batch);
+        rest = tail;
+    }
+    out
+}
+
+/// Evaluates a batch's grids into `out` (resized), in parallel; whether each succeeded.
+fn evaluate_batch(surface: &Surface, batch: &[PatchGrid], out: &mut Vec<[f32; 5]>) -> Vec<bool> {
+    use rayon::prelude::*;
+    // Every entry is overwritten (a patch that fails is redone point by point): no zeroing.
+    let size = batch.iter().map(PatchGrid::points).sum();
+    if out.len() < size {
+        out.resize(size, [0.0; 5]);
+    }
+    out.truncate(size);
+    let mut chunks = Vec::with_capacity(batch.len());
+    let mut free = out.as_mut_slice();
+    for patch in batch {
+        let (chunk, after) = free.split_at_mut(patch.points());
+        chunks.push((patch, chunk));
+        free = after;
+    }
+    chunks
+        .into_par_iter()
+        .map(|(patch, chunk)| {
+            let (us, vs) = patch.lines();
+            grid_vertices_into(&surface.pos, surface.k, &us, &vs, chunk).is_some()
+        })
+        .collect()
+}
+
+/// [`tessellate_patch`] for every patch when only begin, vertex and end callbacks are set. The
+/// grids are evaluated a batch ahead on rayon's workers while this thread issues the previous
+/// batch's strips, in patch order as GLU issues them (the callbacks need not be `Send`). The two
+/// buffers are kept in the object and reused.
+fn tessellate_patches_in_parallel(obj: &mut NurbsObject, surface: &Surface, patches: &[PatchGrid]) {
+    let mut current = std::mem::take(&mut obj.vertex_scratch[0]);
+    let mut next = std::mem::take(&mut obj.vertex_scratch[1]);
+    let batches = batches(patches);
+    let mut ok = match batches.first() {
+        Some(first) => evaluate_batch(surface, first, &mut current),
+        None => Vec::new(),
+    };
+    for (k, batch) in batches.iter().enumerate() {
+        let mut next_ok = Vec::new();
+        rayon::in_place_scope(|scope| {
+            if let Some(following) = batches.get(k + 1) {
+                let (next, next_ok) = (&mut next, &mut next_ok);
+                scope.spawn(move |_| *next_ok = evaluate_batch(surface, following, next));
+            }
+            issue_batch(obj, surface, batch, &ok, &current);
+        });
+        std::mem::swap(&mut current, &mut next);
+        ok = next_ok;
+    }
+    obj.vertex_scratch = [current, next];
+}
+
+/// The strips of a batch whose grids are in `grids` (patch after patch); a patch whose
+/// evaluation failed (`ok` false) is issued point by point.
+fn issue_batch(obj: &mut NurbsObject, surface: &Surface, batch: &[PatchGrid], ok: &[bool], grids: &[[f32; 5]]) {
+    let mut start = 0;
+    for (patch, &done) in batch.iter().zip(ok) {
+        let grid = &grids[start..start + patch.points()];
+        start += patch.points();
+        match obj.callbacks.sinks() {
+            Some(mut sinks) if done => {
+                if let Some(mut plain) = sinks.plain() {
+                    quad_strips(&mut plain, grid, patch.nu, patch.nv);
+                } else {
+                    quad_strips(&mut sinks, grid, patch.nu, patch.nv);
+                }
+            }
+            _ => tessellate_patch(obj, surface, patch),
+        }
+    }
+}
+
+/// The grid blocks of one patch as `GL_QUAD_STRIP`s through the callbacks (GLU `mapmesh2f`).
+/// Positions come from one grid evaluation of the patch's Bezier piece (each point once, though
+/// the strips issue interior points twice); other maps and normals are evaluated per vertex.
+fn tessellate_patch(obj: &mut NurbsObject, surface: &Surface, patch: &PatchGrid) {
+    let (nu, nv) = (patch.nu, patch.nv);
+    let (us, vs) = patch.lines();
+    let grid = grid_vertices(&surface.pos, surface.k, &us, &vs);
+    let per_vertex = !surface.attributes.is_empty() || obj.callbacks.wants_normals();
+    let emit = |obj: &mut NurbsObject, i: usize, j: usize| {
+        if per_vertex {
+            emit_attributes(obj, surface.view_ref(), us[i], vs[j]);
+        }
+        match &grid {
+            Some(g) => obj.callbacks.attribute(GLU_NURBS_VERTEX, &g[j * (nu + 1) + i]),
+            None => emit_position(obj, &surface.pos, surface.k, us[i], vs[j]),
+        }
+    };
+    if nu >= nv {
+        for i in 0..nu {
+            obj.callbacks.begin(GL_QUAD_STRIP);
+            for j in (0..=nv).rev() {
+                emit(obj, i, j);
+                emit(obj, i + 1, j);
+            }
+            obj.callbacks.end();
+        }
+    } else {
+        for j in 0..nv {
+            obj.callbacks.begin(GL_QUAD_STRIP);
+            for i in (0..=nu).rev() {
+                emit(obj, i, j + 1);
+                emit(obj, i, j);
+            }
+            obj.callbacks.end();
+        }
+    }
+}
+
+/// [`tessellate_patch`]'s strips when only begin, vertex and end callbacks are registered:
+/// the same primitives, one indirect call per vertex.
+fn quad_strips(sinks: &mut impl StripSink, g: &[[f32; 5]], nu: usize, nv: usize) {
+    let at = |i: usize, j: usize| &g[j * (nu + 1) + i];
+    if nu >= nv {
+        for i in 0..nu {
+            sinks.begin(GL_QUAD_STRIP);
+            for j in (0..=nv).rev() {
+                sinks.vertex(at(i, j));
+                sinks.vertex(at(i + 1, j));
+            }
+            sinks.end();
+        }
+    } else {
+        for j in 0..nv {
+            sinks.begin(GL_QUAD_STRIP);
+            for i in (0..=nu).rev() {
+                sinks.vertex(at(i, j + 1));
+                sinks.vertex(at(i, j));
+            }
+            sinks.end();
+        }
+    }
+}

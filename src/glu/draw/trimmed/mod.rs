@@ -1,0 +1,35 @@
+//! Trimmed NURBS surfaces: the trim loops become (u, v) polylines, the retained region is
+//! triangulated with the surface's sampling grid inside ([`crate::tess::trim`]), and every
+//! vertex is evaluated on the exact surface. Loop errors are GLU's numbers 28, 29, 31 and 18.
+
+mod domain;
+mod gpu;
+mod render;
+mod tessellate;
+mod values;
+
+use crate::gl::Gl;
+use crate::glu::evaluation::sampling::Sampler;
+use crate::glu::evaluation::surface::Surface;
+use crate::glu::model::maps::TrimPiece;
+use crate::glu::model::object::NurbsObject;
+
+/// Draws a trimmed surface.
+pub(super) fn draw_trimmed(
+    gl: &mut Gl,
+    obj: &mut NurbsObject,
+    surface: &Surface,
+    loops: &[Vec<TrimPiece>],
+    sampler: &Sampler,
+    tessellate: bool,
+) {
+    let steps = surface.patches(sampler);
+    let (us, vs) = domain::grid_lines(&steps);
+    let Some(trim_loops) = domain::trim_loops(obj, loops, &steps) else { return };
+    let bounds = surface.domain();
+    if tessellate {
+        tessellate::tessellate_trimmed(obj, surface, &trim_loops, bounds, (&us, &vs));
+    } else {
+        render::render_trimmed(gl, obj, surface, &trim_loops, bounds, (&us, &vs));
+    }
+}
