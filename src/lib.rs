@@ -10,9 +10,11 @@
 //! - the **typed API** in [`math`]: Bezier and B-spline curves and patches with `Result` errors,
 //!   no GL state at all.
 //!
-//! Layers, each depending only on those above it: `math` → `tess` → `gl` → (`glu`, `gll`,
-//! `render`, `app` in later milestones). With `--no-default-features` the crate is pure CPU
-//! Rust with no GPU or windowing dependency.
+//! Layers, each depending only on those above it: `math` → `tess` → `gl` (→ `glu`, whose
+//! calls are `Gl` methods, the one upward edge) → `gll`, `render` (the CPU stages of drawing)
+//! → the crate-private `gpu` module (wgpu: the evaluator, the rasterisers, the
+//! `render::Renderer`) → `app`. With `--no-default-features` the crate is pure CPU Rust with
+//! no GPU or windowing dependency.
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 // Numeric kernels index several component arrays in lockstep; iterator chains would hide that.
@@ -25,6 +27,8 @@ pub mod gl;
 pub mod gll;
 pub mod glu;
 pub mod glut;
+#[cfg(feature = "gpu")]
+mod gpu;
 pub mod math;
 pub mod prelude;
 pub mod render;

@@ -4,8 +4,6 @@
 //! through. It knows nothing of GL state: it takes packed control points and parameter lists.
 
 pub mod export;
-#[cfg(feature = "gpu")]
-pub mod gpu;
 pub mod grid;
 pub mod mesh;
 pub mod rows;
