@@ -14,8 +14,8 @@
 
 use gleval::gl::{Gl, MeshVertices, Tessellator};
 use gleval::prelude::*;
-use gleval::render::mesh_gpu::{MeshPipelines, PackedJobs};
 use gleval::render::Renderer;
+use gleval::testing::{Evaluator, PackedJobs};
 use std::time::Instant;
 
 fn median(mut t: Vec<f64>) -> f64 {
@@ -72,20 +72,20 @@ fn cpu_rate(patches: usize, n: i32, band: i32, runs: usize) -> f64 {
 }
 
 /// Evaluates the deferred jobs of a frame, one dispatch per batch that fits the device.
-fn gpu_evaluate(r: &Renderer, pipelines: &MeshPipelines, frame: &gleval::gl::Frame) {
+fn gpu_evaluate(r: &Renderer, evaluator: &Evaluator, frame: &gleval::gl::Frame) {
     let mut encoder = r.device.create_command_encoder(&Default::default());
     let mut packed = PackedJobs::default();
     let mut keep = Vec::new();
     for mesh in &frame.meshes {
         let MeshVertices::Deferred(_) = &mesh.vertices else { continue };
         let extra = (mesh.nu * mesh.nv) as u64;
-        if !packed.jobs.is_empty() && !MeshPipelines::fits(&r.device, u64::from(packed.vertices) + extra, 0) {
-            keep.push(pipelines.evaluate(&r.device, &r.queue, &mut encoder, &packed));
+        if !packed.jobs.is_empty() && !Evaluator::fits(&r.device, u64::from(packed.vertices) + extra, 0) {
+            keep.push(evaluator.evaluate(&r.device, &r.queue, &mut encoder, &packed));
             packed = PackedJobs::default();
         }
         packed.push_mesh(mesh).expect("valid mesh");
     }
-    keep.push(pipelines.evaluate(&r.device, &r.queue, &mut encoder, &packed));
+    keep.push(evaluator.evaluate(&r.device, &r.queue, &mut encoder, &packed));
     let submission = r.queue.submit([encoder.finish()]);
     let waited = r.device.poll(wgpu::PollType::Wait { submission_index: Some(submission), timeout: None });
     if let Err(e) = r.take_error() {
@@ -95,15 +95,15 @@ fn gpu_evaluate(r: &Renderer, pipelines: &MeshPipelines, frame: &gleval::gl::Fra
     drop(keep);
 }
 
-fn gpu_rate(r: &Renderer, pipelines: &MeshPipelines, patches: usize, n: i32, band: i32, runs: usize) -> f64 {
+fn gpu_rate(r: &Renderer, evaluator: &Evaluator, patches: usize, n: i32, band: i32, runs: usize) -> f64 {
     let mut gl = Gl::new(64, 64);
     gl.set_tessellator(Tessellator::Gpu);
     // One untimed run compiles the pipeline.
     record(&mut gl, 1, 2, 2);
-    gpu_evaluate(r, pipelines, &gl.take_frame());
+    gpu_evaluate(r, evaluator, &gl.take_frame());
     let t = time(runs, || {
         record(&mut gl, patches, n, band);
-        gpu_evaluate(r, pipelines, &gl.take_frame());
+        gpu_evaluate(r, evaluator, &gl.take_frame());
     });
     (patches as f64) * f64::from((n + 1) * (n + 1)) / t
 }
@@ -116,13 +116,13 @@ fn main() {
             std::process::exit(1);
         }
     };
-    let pipelines = MeshPipelines::new(&renderer.device, renderer.provoking_vertex_is_last());
+    let evaluator = Evaluator::new(&renderer.device);
     let limit = renderer.device.limits().max_storage_buffer_binding_size;
     println!("# adapter {}; storage binding limit {} MiB", renderer.adapter_name(), limit >> 20);
     // Rows per band so that one band's vertices (64 bytes each) fit one binding.
     let band_for = |n: i32| ((limit / 64) / (n as u64 + 1) - 1).clamp(1, n as u64) as i32;
     if std::env::args().any(|a| a == "--overhead") {
-        let gpu = gpu_rate(&renderer, &pipelines, 1, 1, 1, 30);
+        let gpu = gpu_rate(&renderer, &evaluator, 1, 1, 1, 30);
         println!("4-point frame: {:.3} ms", 4.0 / gpu * 1e3);
         return;
     }
@@ -135,7 +135,7 @@ fn main() {
     for (name, patches, n, runs) in cases {
         let band = band_for(n);
         let cpu = cpu_rate(patches, n, band, runs);
-        let gpu = gpu_rate(&renderer, &pipelines, patches, n, band, runs);
+        let gpu = gpu_rate(&renderer, &evaluator, patches, n, band, runs);
         println!("{name} cpu={:.2} gpu={:.2} ratio={:.2}", cpu / 1e6, gpu / 1e6, gpu / cpu);
     }
 }

@@ -20,7 +20,8 @@
 //! | [`glu`] | GLU: projections and the NURBS object (sampling, trimming, display modes, callbacks) |
 //! | [`glut`] | GLUT's constants and the state behind its `Gl` methods |
 //! | [`gll`], [`data`] | the textbook's `gll.h` helpers (public API only); demo data (the teapot) |
-//! | [`render`] | drawing a frame: the CPU vertex stage and primitive assembly, the wgpu renderer, PNG |
+//! | [`render`] | drawing a frame: the CPU vertex stage and primitive assembly; PNG; the wgpu [`render::Renderer`] |
+//! | `gpu` (crate-private) | wgpu: the device and read-back, the one WGSL evaluator, the rasterisers behind `Renderer` |
 //! | `app` | the GLUT-like `App`: a window, or a headless PNG |
 //!
 //! One edge runs upward, by the porting rule: GLU and GLUT calls are methods of [`gl::Gl`]
@@ -40,6 +41,8 @@ pub mod gl;
 pub mod gll;
 pub mod glu;
 pub mod glut;
+#[cfg(feature = "gpu")]
+mod gpu;
 pub mod math;
 pub mod prelude;
 pub mod render;

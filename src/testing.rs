@@ -2,6 +2,11 @@
 //! documented API (`#[doc(hidden)]`): nothing here is stable or meant for users.
 
 // --- GPU evaluator and rasteriser internals (layouts, packing, pipelines) ---
+#[cfg(feature = "gpu")]
+pub use crate::gpu::{
+    evaluate_job_indices, evaluate_jobs, EvaluatedMeshes, Evaluator, Gpu, GpuMapDesc, GpuMeshJob, PackedJobs,
+    EVAL_MESH_WGSL, MESH_RASTER_WGSL, RASTER_WGSL, VERTEX_BYTES,
+};
 
 // --- tessellation internals: the f64 grid evaluator, the oracle of the GPU parity tests ---
 pub use crate::tess::grid::{eval_grid2, Grid2, MapView};

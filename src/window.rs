@@ -89,7 +89,7 @@ fn depth_view(device: &wgpu::Device, width: u32, height: u32) -> wgpu::TextureVi
             mip_level_count: 1,
             sample_count: 1,
             dimension: wgpu::TextureDimension::D2,
-            format: crate::render::DEPTH_FORMAT,
+            format: crate::gpu::DEPTH_FORMAT,
             usage: wgpu::TextureUsages::RENDER_ATTACHMENT,
             view_formats: &[],
         })
@@ -107,7 +107,7 @@ impl Gpu {
         let window =
             Arc::new(event_loop.create_window(attributes).map_err(|e| format!("could not open a window: {e}"))?);
         let mut tried = Vec::new();
-        for backends in crate::render::backend_order() {
+        for backends in crate::gpu::backend_order() {
             // EGL (the GL backend) must know the display at instance creation to present to it.
             let desc = wgpu::InstanceDescriptor { backends, ..wgpu::InstanceDescriptor::new_without_display_handle() }
                 .with_display_handle(Box::new(Arc::clone(&window)));

@@ -3,7 +3,7 @@
 //!
 //! The CPU back end evaluates a job at once ([`MeshJob::evaluate`]); the GPU back end keeps the
 //! job in the frame and evaluates every job of the frame in one compute dispatch
-//! (`render::mesh_gpu`). Both read the same numbers, so the CPU result is the GPU's oracle.
+//! (the crate's GPU evaluator, `src/gpu/evaluate.rs`). Both read the same numbers, so the CPU result is the GPU's oracle.
 
 use super::eval::{set_attribute, Slot};
 use super::Vertex;

@@ -1,7 +1,11 @@
-//! Drawing a recorded [`Frame`](crate::gl::Frame): the CPU vertex stage and primitive
-//! assembly (always available, testable without a GPU), and the wgpu rasteriser (feature `gpu`).
+//! Drawing a recorded [`Frame`](crate::gl::Frame): the CPU stages, always available and
+//! testable without a GPU: GL's per-vertex lighting, primitive assembly (wide lines, square
+//! points, viewports, depth range), the image metric the conformance tests score pictures with,
+//! and PNG output. The wgpu side (the `Renderer`, the GPU evaluator) lives in the crate's
+//! `gpu` module (feature `gpu`); its public types are re-exported here, their one documented
+//! home.
 
-mod assemble;
+pub(crate) mod assemble;
 #[cfg(all(feature = "gpu", feature = "png"))]
 pub(crate) mod compare;
 mod shade;
@@ -9,13 +13,7 @@ mod shade;
 pub use assemble::{assemble, assemble_frame, Batch, DrawList, Op, RasterVertex, Topology};
 
 #[cfg(feature = "gpu")]
-mod gpu;
-#[cfg(feature = "gpu")]
-pub mod mesh_gpu;
-#[cfg(feature = "window")]
-pub(crate) use gpu::{backend_order, DEPTH_FORMAT};
-#[cfg(feature = "gpu")]
-pub use gpu::{Image, RenderError, Renderer, RASTER_WGSL};
+pub use crate::gpu::{tessellate_patches, Image, RenderError, Renderer};
 
 /// Writes an image as an 8-bit RGB PNG: what a window shows (GL's framebuffer alpha, often 0
 /// after `glClearColor(r, g, b, 0)`, is not part of the picture).

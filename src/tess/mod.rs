@@ -1,11 +1,11 @@
-//! Tessellation: Bezier maps evaluated over grids into points, partial derivatives and normals.
+//! Tessellation on the CPU: Bezier maps evaluated over grids into points, partial derivatives
+//! and normals ([`Mesh`]), trimmed parameter domains triangulated ([`trim`]), and meshes
+//! exported ([`export`]).
 //!
-//! This is the CPU back end that `glEvalMesh` (and later GLU NURBS and the typed mesh API) draw
-//! through. It knows nothing of GL state: it takes packed control points and parameter lists.
+//! `glEvalMesh`, GLU's NURBS and the typed `BezierPatch::tessellate` all draw through it. It
+//! knows nothing of GL state: it takes packed control points and parameter lists.
 
 pub mod export;
-#[cfg(feature = "gpu")]
-pub mod gpu;
 pub(crate) mod grid;
 mod mesh;
 mod rows;

@@ -1,11 +1,12 @@
-//! GPU vs CPU parity: the WGSL grid evaluator against the f64 CPU evaluation of the same packed
-//! patches, for every order GL allows, rational maps, reversed parameter runs and a collapsed
-//! edge. Tolerances: positions 2e-5 relative to the patch's size, normals 2e-3 (absolute, unit
-//! vectors) where the CPU normal is non-zero, exactly zero where it is zero.
+//! GPU vs CPU parity: the GPU evaluator (`shaders/eval_mesh.wgsl`) against the f64 CPU
+//! evaluation of the same packed patches, for every order GL allows, rational maps, reversed
+//! parameter runs and a collapsed edge; then the façade's `glEvalMesh` jobs, GLU's trimmed
+//! surfaces and the typed API through the same evaluator. Tolerances: positions 2e-5 relative
+//! to the patch's size, normals 2e-3 (absolute, unit vectors) where the CPU normal is non-zero
+//! and well conditioned; where it is zero, finite, and exactly zero on a collapsed edge.
 
 use gleval::render::Renderer;
-use gleval::tess::gpu::{GpuTessellator, PatchGrid};
-use gleval::testing::{eval_grid2, Grid2, MapView};
+use gleval::testing::{eval_grid2, evaluate_job_indices, evaluate_jobs, Grid2, MapView};
 
 /// The renderer's device, or `None` (skip) when no adapter exists and CI did not require one.
 pub fn device() -> Option<Renderer> {
@@ -64,10 +65,25 @@ fn normal64(dim: usize, p: [f64; 4], du: [f64; 4], dv: [f64; 4]) -> ([f64; 3], f
 /// name, uorder, vorder, k, control points, u parameters, v parameters.
 type Case = (String, usize, usize, usize, Vec<f32>, Vec<f32>, Vec<f32>);
 
+/// A bare patch as the evaluator's job: its one vertex map over the grid `us` × `vs`, with
+/// `GL_AUTO_NORMAL` (GL_MAP2_VERTEX_3, or _4 for a rational patch).
+fn patch_job(k: usize, uorder: usize, vorder: usize, points: &[f32], us: &[f32], vs: &[f32]) -> (MeshJob, MeshMode) {
+    let slot = if k == 4 { Slot::Vertex4 } else { Slot::Vertex3 };
+    let map = MapSample { slot, uorder, vorder, points: points.to_vec(), us: us.to_vec(), vs: vs.to_vec() };
+    let job = MeshJob {
+        maps: vec![map],
+        auto_normal: true,
+        template: gleval::gl::Vertex::default(),
+        nu: us.len(),
+        nv: vs.len(),
+        scattered: false,
+    };
+    (job, MeshMode::Fill)
+}
+
 #[test]
 fn gpu_grid_matches_cpu_for_all_orders_rational_reversed_and_degenerate() {
     let Some(r) = device() else { return };
-    let gpu = GpuTessellator::new(&r.device);
     let us: Vec<f32> = (0..=12).map(|i| i as f32 / 12.0).collect();
     let reversed: Vec<f32> = us.iter().rev().copied().collect();
     let mut cases: Vec<Case> = Vec::new();
@@ -93,21 +109,15 @@ fn gpu_grid_matches_cpu_for_all_orders_rational_reversed_and_degenerate() {
         }
     }
     cases.push(("collapsed edge".into(), 4, 4, 3, collapsed, us.clone(), us.clone()));
-    let grids: Vec<PatchGrid> = cases
-        .iter()
-        .map(|(_, uo, vo, k, pts, u, v)| PatchGrid {
-            map: MapView { dim: *k, uorder: *uo, vorder: *vo, points: pts },
-            us: u,
-            vs: v,
-        })
-        .collect();
-    let out = gpu.evaluate(&r.device, &r.queue, &grids, true).expect("GPU evaluation");
+    let jobs: Vec<(MeshJob, MeshMode)> =
+        cases.iter().map(|(_, uo, vo, k, pts, u, v)| patch_job(*k, *uo, *vo, pts, u, v)).collect();
+    let out = evaluate_jobs(r.gpu(), &jobs).expect("GPU evaluation");
     let (mut offset, mut worst_p, mut worst_n) = (0, 0.0f64, 0.0f64);
     for (name, uo, vo, k, pts, u, v) in &cases {
         let want = oracle(pts, *k, *uo, *vo, u, v);
         let scale = pts.iter().fold(1.0f64, |m, &x| m.max(f64::from(x).abs()));
         for idx in 0..u.len() * v.len() {
-            let (gp, gn) = (out.points[offset + idx], out.normals[offset + idx]);
+            let (gp, gn) = (out[offset + idx][0], &out[offset + idx][1][..3]);
             for c in 0..*k {
                 let e = (f64::from(gp[c]) - want.points[idx][c]).abs() / scale;
                 worst_p = worst_p.max(e);
@@ -133,12 +143,11 @@ fn gpu_grid_matches_cpu_for_all_orders_rational_reversed_and_degenerate() {
 }
 
 // ---------------------------------------------------------------------------------------------
-// The façade's GPU tessellator (`render::mesh_gpu`): glEvalMesh jobs recorded by a `Gl` on the
-// GPU tessellator, evaluated in one dispatch, against an f64 evaluation of the same job.
+// The façade on the GPU tessellator: glEvalMesh jobs recorded by a `Gl` on the GPU
+// tessellator, evaluated in one dispatch, against an f64 evaluation of the same job.
 
-use gleval::gl::{Gl, MeshJob, MeshMode, MeshVertices, Slot, Tessellator};
+use gleval::gl::{Gl, MapSample, MeshJob, MeshMode, MeshVertices, Slot, Tessellator};
 use gleval::prelude::*;
-use gleval::render::mesh_gpu::{evaluate_job_indices, evaluate_jobs};
 
 /// The value GL gives attribute `slot` from the map's components `p` (spec table 5.1: missing
 /// texture components are 0, 0, 1; a 3-component vertex has w = 1).
@@ -262,7 +271,7 @@ fn facade_gpu_meshes_match_the_f64_oracle() {
         gl.eval_mesh1(GL_LINE, 0, 20);
         gl.eval_mesh1(GL_POINT, 3, 17);
     }));
-    let got = evaluate_jobs(&r, &jobs).expect("GPU evaluation");
+    let got = evaluate_jobs(r.gpu(), &jobs).expect("GPU evaluation");
     let (mut offset, mut worst_p, mut worst_n, mut worst_a, mut zero_normals) = (0, 0.0f64, 0.0f64, 0.0f64, 0);
     for (case, (job, _)) in jobs.iter().enumerate() {
         let (want, area) = oracle_job(job);
@@ -326,7 +335,7 @@ fn facade_gpu_indices_are_gls_primitives() {
         gl.map_grid1f(6, 0.0, 1.0);
         gl.eval_mesh1(GL_LINE, 0, 6);
     });
-    let got = evaluate_job_indices(&r, &jobs).expect("GPU indices");
+    let got = evaluate_job_indices(r.gpu(), &jobs).expect("GPU indices");
     let last = r.provoking_vertex_is_last();
     let (mut vertex_base, mut cursor) = (0u32, 0usize);
     for (job, mode) in &jobs {
@@ -384,7 +393,7 @@ fn many_patches_make_one_batch() {
             gl.eval_mesh2(GL_FILL, 0, 4, 0, 4);
         }
     });
-    let mut packed = gleval::render::mesh_gpu::PackedJobs::default();
+    let mut packed = gleval::testing::PackedJobs::default();
     for (job, mode) in &jobs {
         packed.push(job, *mode).expect("packs");
     }
@@ -445,7 +454,7 @@ fn trimmed_surface_points_on_the_gpu_match_the_cpu_triangles() {
     let MeshVertices::Deferred(jobs) = &mesh.vertices else { panic!("deferred") };
     assert_eq!(jobs.len(), 9, "the surface spans 3 x 3 Bezier pieces");
     let pairs: Vec<(MeshJob, MeshMode)> = jobs.iter().map(|j| (j.clone(), MeshMode::Triangles)).collect();
-    let got = evaluate_jobs(&r, &pairs).expect("GPU evaluation");
+    let got = evaluate_jobs(r.gpu(), &pairs).expect("GPU evaluation");
     let triangles: Vec<&[gleval::gl::Vertex]> =
         cpu.iter().filter(|(p, _)| p.mode == GL_TRIANGLES).map(|(_, v)| v).collect();
     let cpu_vertices: Vec<gleval::gl::Vertex> = triangles.concat();
@@ -471,7 +480,7 @@ fn trimmed_surface_points_on_the_gpu_match_the_cpu_triangles() {
 }
 
 /// The typed API's two back ends agree: `BezierPatch::tessellate` (CPU, f64) and
-/// `mesh_gpu::tessellate_patches` (one dispatch for all patches): same vertices, normals and
+/// `render::tessellate_patches` (one dispatch for all patches): same vertices, normals and
 /// texture coordinates, same triangles up to where each starts.
 #[test]
 fn typed_mesh_gpu_matches_cpu() {
@@ -484,7 +493,7 @@ fn typed_mesh_gpu_matches_cpu() {
             BezierPatch::try_new(k, uo, vo, net(uo, vo, k, s + 2).iter().map(|&x| f64::from(x)).collect()).unwrap()
         })
         .collect();
-    let gpu = gleval::render::mesh_gpu::tessellate_patches(&r, &patches, 7, 5).expect("GPU mesh");
+    let gpu = gleval::render::tessellate_patches(&r, &patches, 7, 5).expect("GPU mesh");
     let mut cpu = gleval::tess::Mesh::default();
     for p in &patches {
         cpu.append(&p.tessellate(7, 5).unwrap());

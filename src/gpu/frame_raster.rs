@@ -1,0 +1,105 @@
+//! The frame rasteriser: draws the CPU's assembled vertices ([`RasterVertex`]: clip position
+//! and final colour, `shaders/raster.wgsl`). GL's vertex stage already ran on the CPU, so all
+//! that is left is GL's viewport, which wgpu cannot take as GL gives it (see
+//! [`to_target_space`]).
+
+use super::device::shader_module;
+use super::layout::RASTER_WGSL;
+use super::raster::RasterPipeline;
+use crate::gl::types::GLenum;
+use crate::render::assemble::{DrawList, Op, RasterVertex, Topology};
+use std::collections::HashMap;
+use wgpu::util::DeviceExt;
+
+/// Pipeline key: topology, depth function, target format.
+type PipelineKey = (Topology, Option<GLenum>, wgpu::TextureFormat);
+
+/// The frame rasteriser's shader and its pipelines, made on first use.
+pub(crate) struct FrameRaster {
+    module: wgpu::ShaderModule,
+    layout: wgpu::PipelineLayout,
+    pipelines: HashMap<PipelineKey, wgpu::RenderPipeline>,
+}
+
+impl FrameRaster {
+    /// Compiles `shaders/raster.wgsl` on `device`.
+    pub(crate) fn new(device: &wgpu::Device) -> Self {
+        let module = shader_module(device, "raster.wgsl", RASTER_WGSL);
+        let layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: Some("raster"),
+            bind_group_layouts: &[],
+            immediate_size: 0,
+        });
+        Self { module, layout, pipelines: HashMap::new() }
+    }
+
+    /// Makes sure the pipeline for `key` exists (before a render pass borrows them all).
+    pub(crate) fn ensure_pipeline(&mut self, device: &wgpu::Device, key: PipelineKey) {
+        let (module, layout) = (&self.module, &self.layout);
+        self.pipelines.entry(key).or_insert_with(|| make_pipeline(device, module, layout, key));
+    }
+
+    /// The pipeline for `key`, made by [`FrameRaster::ensure_pipeline`].
+    pub(crate) fn pipeline(&self, key: PipelineKey) -> &wgpu::RenderPipeline {
+        &self.pipelines[&key]
+    }
+}
+
+fn make_pipeline(
+    device: &wgpu::Device,
+    module: &wgpu::ShaderModule,
+    layout: &wgpu::PipelineLayout,
+    (topology, depth, format): PipelineKey,
+) -> wgpu::RenderPipeline {
+    let attributes = wgpu::vertex_attr_array![0 => Float32x4, 1 => Float32x4];
+    let vertex = wgpu::VertexBufferLayout {
+        array_stride: std::mem::size_of::<RasterVertex>() as wgpu::BufferAddress,
+        step_mode: wgpu::VertexStepMode::Vertex,
+        attributes: &attributes,
+    };
+    RasterPipeline {
+        label: "gl raster",
+        module,
+        entry_points: ("vs_main", "fs_main"),
+        layout,
+        vertex,
+        topology,
+        depth,
+        // The CPU culled already; wgpu's defaults, no culling.
+        faces: (wgpu::FrontFace::Ccw, None),
+        format,
+    }
+    .build(device)
+}
+
+/// The list's vertices in one vertex buffer (in the target's clip space), if there are any.
+pub(crate) fn vertex_buffer(device: &wgpu::Device, list: &DrawList, size: (u32, u32)) -> Option<wgpu::Buffer> {
+    let vertices = to_target_space(list, size);
+    (!vertices.is_empty()).then(|| {
+        device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+            label: Some("frame vertices"),
+            contents: bytemuck::cast_slice(&vertices),
+            usage: wgpu::BufferUsages::VERTEX,
+        })
+    })
+}
+
+/// Moves each batch's vertices from its GL viewport's clip space into the whole target's:
+/// x' = x·(vw/W) + w·((2·vx + vw)/W − 1), likewise y. wgpu needs viewports inside the target;
+/// GL allows them anywhere, so the viewport transform is applied here instead.
+fn to_target_space(list: &DrawList, (width, height): (u32, u32)) -> Vec<RasterVertex> {
+    let mut out = list.vertices.clone();
+    let (fw, fh) = (width as f32, height as f32);
+    for op in &list.ops {
+        let Op::Draw(b) = op else { continue };
+        let [vx, vy, vw, vh] = b.viewport.map(|c| c as f32);
+        let (sx, ox) = (vw / fw, (2.0 * vx + vw) / fw - 1.0);
+        let (sy, oy) = (vh / fh, (2.0 * vy + vh) / fh - 1.0);
+        for v in &mut out[b.first as usize..(b.first + b.count) as usize] {
+            let w = v.clip[3];
+            v.clip[0] = v.clip[0] * sx + w * ox;
+            v.clip[1] = v.clip[1] * sy + w * oy;
+        }
+    }
+    out
+}

@@ -1,0 +1,81 @@
+//! A frame's render passes: GL clears split the frame's draws into passes (a clear is a pass's
+//! load operation in wgpu), and GL's viewports become scissor rectangles.
+
+use crate::render::assemble::{Batch, Op};
+
+/// What a render pass draws: a batch of assembled vertices or a GPU-tessellated mesh.
+pub(crate) enum PassItem {
+    Batch(Batch),
+    Mesh(usize),
+}
+
+/// Draws between two clears share one render pass.
+pub(crate) struct Pass {
+    pub clear_color: Option<[f32; 4]>,
+    pub clear_depth: Option<f32>,
+    pub draws: Vec<PassItem>,
+}
+
+/// Splits the ops at every clear. The first pass clears to transparent black and depth 1 (the
+/// state of a new OSMesa buffer) unless the program clears first.
+pub(crate) fn split_passes(ops: &[Op]) -> Vec<Pass> {
+    let mut passes = vec![Pass { clear_color: Some([0.0; 4]), clear_depth: Some(1.0), draws: Vec::new() }];
+    for op in ops {
+        match *op {
+            Op::Clear { color, depth } => {
+                let last = passes.last_mut().expect("at least one pass");
+                if last.draws.is_empty() {
+                    last.clear_color = color.or(last.clear_color);
+                    last.clear_depth = depth.or(last.clear_depth);
+                } else {
+                    passes.push(Pass { clear_color: color, clear_depth: depth, draws: Vec::new() });
+                }
+            }
+            Op::Draw(batch) => passes.last_mut().expect("at least one pass").draws.push(PassItem::Batch(batch)),
+            Op::GpuMesh(index) => passes.last_mut().expect("at least one pass").draws.push(PassItem::Mesh(index)),
+        }
+    }
+    passes
+}
+
+pub(crate) fn begin_pass<'e>(
+    encoder: &'e mut wgpu::CommandEncoder,
+    color: &wgpu::TextureView,
+    depth: &wgpu::TextureView,
+    clear_color: Option<[f32; 4]>,
+    clear_depth: Option<f32>,
+) -> wgpu::RenderPass<'e> {
+    let color_load = match clear_color {
+        Some([r, g, b, a]) => wgpu::LoadOp::Clear(wgpu::Color { r: r.into(), g: g.into(), b: b.into(), a: a.into() }),
+        None => wgpu::LoadOp::Load,
+    };
+    let depth_load = clear_depth.map_or(wgpu::LoadOp::Load, wgpu::LoadOp::Clear);
+    encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+        label: Some("gl frame"),
+        color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+            view: color,
+            depth_slice: None,
+            resolve_target: None,
+            ops: wgpu::Operations { load: color_load, store: wgpu::StoreOp::Store },
+        })],
+        depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
+            view: depth,
+            depth_ops: Some(wgpu::Operations { load: depth_load, store: wgpu::StoreOp::Store }),
+            stencil_ops: None,
+        }),
+        timestamp_writes: None,
+        occlusion_query_set: None,
+        multiview_mask: None,
+    })
+}
+
+/// The GL viewport (origin bottom-left) intersected with the target, in wgpu's top-left
+/// coordinates; `None` when empty.
+pub(crate) fn scissor_rect([x, y, w, h]: [i32; 4], (width, height): (u32, u32)) -> Option<[u32; 4]> {
+    let (fw, fh) = (i64::from(width), i64::from(height));
+    let x0 = i64::from(x).clamp(0, fw);
+    let x1 = (i64::from(x) + i64::from(w)).clamp(0, fw);
+    let top = (fh - i64::from(y) - i64::from(h)).clamp(0, fh);
+    let bottom = (fh - i64::from(y)).clamp(0, fh);
+    (x1 > x0 && bottom > top).then(|| [x0 as u32, top as u32, (x1 - x0) as u32, (bottom - top) as u32])
+}

@@ -1,0 +1,97 @@
+//! The one raster-pipeline builder, shared by the frame rasteriser (assembled vertices) and the
+//! mesh rasteriser (the evaluator's vertices): what GL's depth test, face culling and topology
+//! mean in wgpu is written here once, so a depth or culling fix reaches both.
+
+use crate::gl::consts::*;
+use crate::gl::types::GLenum;
+use crate::render::assemble::Topology;
+
+/// The depth buffer's format: GL's depth after the viewport transform, in [0, 1].
+pub(crate) const DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth32Float;
+
+/// Everything in which the two rasterisers' pipelines differ.
+pub(crate) struct RasterPipeline<'a> {
+    /// A label for wgpu's messages.
+    pub label: &'a str,
+    /// The shader module and its vertex and fragment entry points.
+    pub module: &'a wgpu::ShaderModule,
+    pub entry_points: (&'a str, &'a str),
+    /// The bind groups the shader reads.
+    pub layout: &'a wgpu::PipelineLayout,
+    /// The vertex buffer's stride and attributes.
+    pub vertex: wgpu::VertexBufferLayout<'a>,
+    pub topology: Topology,
+    /// GL's depth function while `GL_DEPTH_TEST` is on, `None` while it is off.
+    pub depth: Option<GLenum>,
+    /// GL's front face, and the face culled (only ever for triangles).
+    pub faces: (wgpu::FrontFace, Option<wgpu::Face>),
+    /// The colour target's format.
+    pub format: wgpu::TextureFormat,
+}
+
+impl RasterPipeline<'_> {
+    /// Builds the pipeline. No blending: the GL subset draws opaque colours.
+    pub(crate) fn build(self, device: &wgpu::Device) -> wgpu::RenderPipeline {
+        let (front_face, cull_mode) = self.faces;
+        let primitive =
+            wgpu::PrimitiveState { topology: topology(self.topology), front_face, cull_mode, ..Default::default() };
+        device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+            label: Some(self.label),
+            layout: Some(self.layout),
+            vertex: wgpu::VertexState {
+                module: self.module,
+                entry_point: Some(self.entry_points.0),
+                compilation_options: Default::default(),
+                buffers: &[Some(self.vertex)],
+            },
+            primitive,
+            depth_stencil: Some(depth_stencil(self.depth)),
+            multisample: wgpu::MultisampleState::default(),
+            fragment: Some(wgpu::FragmentState {
+                module: self.module,
+                entry_point: Some(self.entry_points.1),
+                compilation_options: Default::default(),
+                targets: &[Some(wgpu::ColorTargetState {
+                    format: self.format,
+                    blend: None,
+                    write_mask: wgpu::ColorWrites::ALL,
+                })],
+            }),
+            multiview_mask: None,
+            cache: None,
+        })
+    }
+}
+
+fn topology(topology: Topology) -> wgpu::PrimitiveTopology {
+    match topology {
+        Topology::Triangles => wgpu::PrimitiveTopology::TriangleList,
+        Topology::Lines => wgpu::PrimitiveTopology::LineList,
+        Topology::Points => wgpu::PrimitiveTopology::PointList,
+    }
+}
+
+/// Without `GL_DEPTH_TEST`, GL neither tests nor writes depth (GL 1.1 spec §4.1.5).
+fn depth_stencil(depth: Option<GLenum>) -> wgpu::DepthStencilState {
+    wgpu::DepthStencilState {
+        format: DEPTH_FORMAT,
+        depth_write_enabled: Some(depth.is_some()),
+        depth_compare: Some(depth.map_or(wgpu::CompareFunction::Always, compare)),
+        stencil: wgpu::StencilState::default(),
+        bias: wgpu::DepthBiasState::default(),
+    }
+}
+
+/// GL's depth function as wgpu's comparison.
+fn compare(func: GLenum) -> wgpu::CompareFunction {
+    match func {
+        GL_NEVER => wgpu::CompareFunction::Never,
+        GL_EQUAL => wgpu::CompareFunction::Equal,
+        GL_LEQUAL => wgpu::CompareFunction::LessEqual,
+        GL_GREATER => wgpu::CompareFunction::Greater,
+        GL_NOTEQUAL => wgpu::CompareFunction::NotEqual,
+        GL_GEQUAL => wgpu::CompareFunction::GreaterEqual,
+        GL_ALWAYS => wgpu::CompareFunction::Always,
+        _ => wgpu::CompareFunction::Less,
+    }
+}

@@ -1,0 +1,197 @@
+//! The [`Renderer`]: draws a recorded [`Frame`] into an RGBA8 target, headless (read back as an
+//! [`Image`]) or into a window's surface. It assembles the frame on the CPU, leaves the meshes
+//! the GPU can take to the mesh rasteriser (one evaluator dispatch), and draws everything in
+//! program order, one render pass per GL clear.
+//!
+//! GL conventions kept in one place: viewports (origin bottom-left, allowed outside the
+//! drawable) become a full-target transform of the clip coordinates plus a scissor rectangle,
+//! which is what clipping to GL's view volume amounts to; depth was already mapped to [0, 1]
+//! during assembly; the depth test and depth writes exist only while `GL_DEPTH_TEST` is on.
+
+use super::device::{first_adapter, request_device, ErrorSlot, Gpu, Image, RenderError};
+use super::evaluate;
+use super::frame_raster::{vertex_buffer, FrameRaster};
+use super::mesh_raster::{gpu_mesh_indices, MeshRaster, PreparedMeshes};
+use super::passes::{begin_pass, scissor_rect, split_passes, PassItem};
+use super::target::Target;
+use crate::gl::Frame;
+use crate::math::BezierPatch;
+use crate::render::assemble::{assemble_frame, DrawList};
+use crate::tess::Mesh;
+
+const COLOR_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8Unorm;
+
+/// A wgpu device with the pipelines that draw assembled GL frames.
+pub struct Renderer {
+    /// The instance the adapter came from (a window surface must be made from it).
+    pub instance: wgpu::Instance,
+    /// The adapter in use.
+    pub adapter: wgpu::Adapter,
+    /// The device.
+    pub device: wgpu::Device,
+    /// Its queue.
+    pub queue: wgpu::Queue,
+    frames: FrameRaster,
+    meshes: Option<MeshRaster>,
+    errors: ErrorSlot,
+}
+
+/// Where a render goes: colour and depth views of a `size` target whose colour is `format`.
+struct Attachments<'a> {
+    color: &'a wgpu::TextureView,
+    depth: &'a wgpu::TextureView,
+    size: (u32, u32),
+    format: wgpu::TextureFormat,
+}
+
+impl Renderer {
+    /// A headless renderer on the first adapter that works (see [`RenderError::NoAdapter`]).
+    pub fn new() -> Result<Self, RenderError> {
+        let (instance, adapter) = first_adapter()?;
+        Self::with_adapter(instance, adapter)
+    }
+
+    /// A renderer on a given instance and adapter (a window's).
+    pub fn with_adapter(instance: wgpu::Instance, adapter: wgpu::Adapter) -> Result<Self, RenderError> {
+        let (device, queue) = request_device(&adapter)?;
+        let errors = ErrorSlot::catching(&device);
+        let frames = FrameRaster::new(&device);
+        Ok(Self { instance, adapter, device, queue, frames, meshes: None, errors })
+    }
+
+    /// Whether flat shading takes a primitive's last vertex (GL's convention, kept by wgpu's GL
+    /// backend) rather than its first (Vulkan, Metal, DX12).
+    pub fn provoking_vertex_is_last(&self) -> bool {
+        self.adapter.get_info().backend == wgpu::Backend::Gl
+    }
+
+    /// A one-line description of the adapter (name and backend).
+    #[must_use]
+    pub fn adapter_name(&self) -> String {
+        let info = self.adapter.get_info();
+        format!("{} ({:?})", info.name, info.backend)
+    }
+
+    /// What the evaluator needs of this renderer (for the tests and benchmarks that drive it
+    /// directly).
+    #[doc(hidden)]
+    pub fn gpu(&self) -> Gpu<'_> {
+        Gpu {
+            device: &self.device,
+            queue: &self.queue,
+            errors: &self.errors,
+            provoking_last: self.provoking_vertex_is_last(),
+        }
+    }
+
+    /// Renders a recorded frame headless and reads it back.
+    pub fn render_frame(&mut self, frame: &Frame, width: u32, height: u32) -> Result<Image, RenderError> {
+        let target = Target::new(&self.device, width.max(1), height.max(1), COLOR_FORMAT);
+        let mut encoder = self.device.create_command_encoder(&Default::default());
+        let size = (target.width, target.height);
+        self.encode(frame, &mut encoder, &target.color_view, &target.depth_view, size, COLOR_FORMAT);
+        let pixels = target.read(&self.device, &self.queue, encoder);
+        // A validation error makes the submission fail; report the error itself.
+        self.take_error()?;
+        let pixels = pixels?;
+        Ok(Image { width: target.width, height: target.height, pixels })
+    }
+
+    /// The first wgpu validation or device error since the last call, if any.
+    pub fn take_error(&self) -> Result<(), RenderError> {
+        self.errors.take()
+    }
+
+    /// Records a frame into `encoder`, rendering to `color` (of `format`) and `depth`: meshes
+    /// left to the GPU tessellator are evaluated by one compute dispatch first, then everything
+    /// is drawn in program order.
+    pub fn encode(
+        &mut self,
+        frame: &Frame,
+        encoder: &mut wgpu::CommandEncoder,
+        color: &wgpu::TextureView,
+        depth: &wgpu::TextureView,
+        size: (u32, u32),
+        format: wgpu::TextureFormat,
+    ) {
+        let on_gpu = gpu_mesh_indices(&self.device, frame);
+        let list = assemble_frame(frame, &on_gpu);
+        let prepared = (!on_gpu.is_empty()).then(|| {
+            let provoking_last = self.provoking_vertex_is_last();
+            let meshes = self.meshes.get_or_insert_with(|| MeshRaster::new(&self.device, provoking_last));
+            let prepared = meshes.prepare(&self.device, &self.queue, encoder, frame, &on_gpu, size);
+            meshes.ensure_pipelines(&self.device, frame, &prepared, format);
+            prepared
+        });
+        let target = Attachments { color, depth, size, format };
+        self.encode_list(&list, frame, prepared.as_ref(), encoder, &target);
+    }
+
+    /// Records an assembled list (with its frame's GPU meshes already prepared).
+    fn encode_list(
+        &mut self,
+        list: &DrawList,
+        frame: &Frame,
+        prepared: Option<&PreparedMeshes>,
+        encoder: &mut wgpu::CommandEncoder,
+        target: &Attachments<'_>,
+    ) {
+        let buffer = vertex_buffer(&self.device, list, target.size);
+        for pass in split_passes(&list.ops) {
+            for item in &pass.draws {
+                if let PassItem::Batch(batch) = item {
+                    self.frames.ensure_pipeline(&self.device, (batch.topology, batch.depth_test, target.format));
+                }
+            }
+            let mut rp = begin_pass(encoder, target.color, target.depth, pass.clear_color, pass.clear_depth);
+            for item in &pass.draws {
+                self.draw_item(&mut rp, item, buffer.as_ref(), frame, prepared, target);
+            }
+        }
+    }
+
+    /// Draws a batch of the assembled vertices, or a prepared mesh, scissored to its viewport.
+    fn draw_item(
+        &self,
+        rp: &mut wgpu::RenderPass<'_>,
+        item: &PassItem,
+        buffer: Option<&wgpu::Buffer>,
+        frame: &Frame,
+        prepared: Option<&PreparedMeshes>,
+        target: &Attachments<'_>,
+    ) {
+        match item {
+            PassItem::Batch(batch) => {
+                let Some(buffer) = buffer else { return };
+                let Some(scissor) = scissor_rect(batch.viewport, target.size) else { return };
+                rp.set_scissor_rect(scissor[0], scissor[1], scissor[2], scissor[3]);
+                rp.set_pipeline(self.frames.pipeline((batch.topology, batch.depth_test, target.format)));
+                rp.set_vertex_buffer(0, buffer.slice(..));
+                rp.draw(batch.first..batch.first + batch.count, 0..1);
+            }
+            PassItem::Mesh(index) => {
+                let (Some(prepared), Some(meshes)) = (prepared, &self.meshes) else { return };
+                let Some(viewport) = prepared.viewport(frame, *index) else { return };
+                let Some(scissor) = scissor_rect(viewport, target.size) else { return };
+                rp.set_scissor_rect(scissor[0], scissor[1], scissor[2], scissor[3]);
+                meshes.draw(rp, frame, prepared, *index, target.format);
+            }
+        }
+    }
+}
+
+/// The typed API on the GPU tessellator: each patch over a uniform `segments_u` × `segments_v`
+/// grid of its unit domain, all patches in one dispatch, read back as one [`Mesh`] with the
+/// layout of [`BezierPatch::tessellate`] (the CPU back end): positions divided by w, unit
+/// normals (zero where degenerate), (u, v) texture coordinates, counter-clockwise triangles.
+///
+/// Errors: [`RenderError::Gpu`] for an empty grid (a segment count of 0), a patch of other
+/// than 3 or 4 components, a batch beyond the device's storage-buffer limit, or a wgpu error.
+pub fn tessellate_patches(
+    renderer: &Renderer,
+    patches: &[BezierPatch<f64>],
+    segments_u: usize,
+    segments_v: usize,
+) -> Result<Mesh, RenderError> {
+    evaluate::tessellate_patches(renderer.gpu(), patches, segments_u, segments_v)
+}
