@@ -4,21 +4,8 @@
 
 use super::lighting::Lighting;
 use super::types::{GLbitfield, GLenum};
+use super::vertex::Vertex;
 use glam::Mat4;
-
-/// One vertex as GL hands it to the rest of the pipeline: object-space position (w not divided),
-/// and the current (or evaluated) colour, normal and texture coordinate of unit 0.
-#[derive(Clone, Copy, Debug, Default, PartialEq, bytemuck::Zeroable)]
-pub struct Vertex {
-    /// (x, y, z, w); `vertex3f` gives w = 1; `GL_MAP*_VERTEX_4` passes w through.
-    pub position: [f32; 4],
-    /// RGBA, not clamped here (GL clamps after lighting).
-    pub color: [f32; 4],
-    /// The normal (unit length only when it came from `GL_AUTO_NORMAL`).
-    pub normal: [f32; 3],
-    /// (s, t, r, q).
-    pub tex_coord: [f32; 4],
-}
 
 /// A `begin`/`end` pair: its mode and its vertices `first..first + count` of [`Frame::vertices`].
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

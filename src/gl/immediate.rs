@@ -2,9 +2,10 @@
 //! texture coordinate (GL 1.1 spec §2.6–2.7).
 
 use super::consts::*;
-use super::frame::{Call, Primitive, Vertex};
+use super::frame::{Call, Primitive};
 use super::lists::ListCommand;
 use super::types::*;
+use super::vertex::Vertex;
 use super::Gl;
 
 impl Gl {

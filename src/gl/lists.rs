@@ -17,9 +17,9 @@
 //! `glDeleteLists`, `glIsList`, `glGet*`, `glIsEnabled`, `glGetError`, `glFlush`, `glFinish`.
 
 use super::consts::*;
-use super::frame::Vertex;
 use super::mesh_job::MeshJob;
 use super::types::*;
+use super::vertex::Vertex;
 use super::Gl;
 use std::collections::HashMap;
 use std::rc::Rc;

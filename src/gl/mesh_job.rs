@@ -5,8 +5,8 @@
 //! job in the frame and evaluates every job of the frame in one compute dispatch
 //! (the crate's GPU evaluator, `src/gpu/evaluate.rs`). Both read the same numbers, so the CPU result is the GPU's oracle.
 
-use super::eval::{set_attribute, Slot};
-use super::Vertex;
+use super::eval::Slot;
+use super::vertex::Vertex;
 use crate::math::rational::normalize;
 use crate::tess::{for_row_bands, MapView, Row, RowKernel};
 use std::cell::RefCell;
@@ -21,7 +21,7 @@ thread_local! {
     static SCRATCH_ROWS: RefCell<Vec<Row<f32>>> = const { RefCell::new(Vec::new()) };
 }
 
-/// Writes the evaluated `slot` of a row into its vertices (as [`set_attribute`] does, with the
+/// Writes the evaluated `slot` of a row into its vertices (as `Vertex::set_attribute` does, with the
 /// choice of field made once per row rather than per vertex).
 fn write_attribute(vertices: &mut [Vertex], slot: Slot, row: &Row<f32>) {
     let p = &row.point;
@@ -38,7 +38,7 @@ fn write_attribute(vertices: &mut [Vertex], slot: Slot, row: &Row<f32>) {
         }
         _ => {
             for (i, v) in vertices.iter_mut().enumerate() {
-                set_attribute(v, slot, row.point_at(i, slot.components()));
+                v.set_attribute(slot, row.point_at(i, slot.components()));
             }
         }
     }
@@ -183,7 +183,7 @@ impl MeshJob {
         for ((slot, normals, kernel), row) in kernels.iter().zip(rows.iter()) {
             // A malformed map (never made by the façade) evaluates to zeros.
             let Some(_) = kernel else {
-                vertices.iter_mut().for_each(|v| set_attribute(v, *slot, [0.0; 4]));
+                vertices.iter_mut().for_each(|v| v.set_attribute(*slot, [0.0; 4]));
                 if *normals {
                     vertices.iter_mut().for_each(|v| v.normal = [0.0; 3]);
                 }

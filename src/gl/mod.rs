@@ -18,13 +18,14 @@ mod matrix;
 mod mesh_job;
 mod raster;
 pub mod types;
+mod vertex;
 
-pub(crate) use eval::set_attribute as eval_set_attribute;
 pub use eval::{MapTarget, Slot};
-pub use frame::{Call, Command, DrawState, Frame, GridMesh, MeshMode, MeshVertices, Primitive, Vertex};
+pub use frame::{Call, Command, DrawState, Frame, GridMesh, MeshMode, MeshVertices, Primitive};
 pub use lighting::{Light, Lighting, Material};
 pub use lists::MAX_LIST_NESTING;
 pub use mesh_job::{MapSample, MeshJob};
+pub use vertex::Vertex;
 
 use consts::*;
 use types::*;

@@ -6,32 +6,10 @@ use super::target::Slot;
 use super::ActiveMaps;
 use crate::gl::lists::ListCommand;
 use crate::gl::types::*;
-use crate::gl::{Gl, Vertex};
+use crate::gl::Gl;
 use crate::math::bezier::horner;
 use crate::math::patch::{horner_patch, patch_with_partials};
 use crate::math::rational::{cross, normalize, rational_derivative};
-
-/// Widens a k-component result to GL's 4-vector, filling the missing components with the
-/// defaults (0, 0, 0, 1), as Mesa does when it evaluates into a vector initialised that way.
-pub(crate) fn widen(p: [f32; 4], k: usize) -> [f32; 4] {
-    let mut out = [0.0, 0.0, 0.0, 1.0];
-    out[..k].copy_from_slice(&p[..k]);
-    out
-}
-
-/// Writes an evaluated attribute into a vertex.
-pub(crate) fn set_attribute(v: &mut Vertex, slot: Slot, p: [f32; 4]) {
-    match slot {
-        Slot::Color4 => v.color = p,
-        Slot::Normal => v.normal = [p[0], p[1], p[2]],
-        Slot::TexCoord1 | Slot::TexCoord2 | Slot::TexCoord3 | Slot::TexCoord4 => {
-            v.tex_coord = widen(p, slot.components());
-        }
-        Slot::Vertex3 => v.position = widen(p, 3),
-        Slot::Vertex4 => v.position = p,
-        Slot::Index => {}
-    }
-}
 
 /// The unit normal from the partial derivatives of the vertex map: du × dv, with the rational
 /// correction for a 4-component map (Mesa `vbo_exec_do_EvalCoord2f`); zero stays zero.
@@ -66,7 +44,7 @@ impl Gl {
         for slot in act.attributes().chain([vertex_slot]) {
             let m = self.eval.map(1, slot);
             let p = horner(&m.points, slot.components(), m.uorder, m.norm_u(u));
-            set_attribute(&mut v, slot, p);
+            v.set_attribute(slot, p);
         }
         self.emit_vertex(v);
     }
@@ -97,7 +75,7 @@ impl Gl {
         for slot in act.attributes() {
             let m = self.eval.map(2, slot);
             let p = horner_patch(&m.points, slot.components(), m.uorder, m.vorder, m.norm_u(u), m.norm_v(v));
-            set_attribute(&mut out, slot, p);
+            out.set_attribute(slot, p);
         }
         let m = self.eval.map(2, vertex_slot);
         let k = vertex_slot.components();
@@ -105,10 +83,10 @@ impl Gl {
         if self.eval.auto_normal {
             let s = patch_with_partials(&m.points, k, m.uorder, m.vorder, uu, vv);
             out.normal = auto_normal(k, s.point, s.du, s.dv);
-            set_attribute(&mut out, vertex_slot, s.point);
+            out.set_attribute(vertex_slot, s.point);
         } else {
             let p = horner_patch(&m.points, k, m.uorder, m.vorder, uu, vv);
-            set_attribute(&mut out, vertex_slot, p);
+            out.set_attribute(vertex_slot, p);
         }
         self.emit_vertex(out);
     }

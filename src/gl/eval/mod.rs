@@ -7,7 +7,6 @@ mod mesh;
 mod query;
 mod target;
 
-pub(crate) use coord::set_attribute;
 pub use target::{MapTarget, Slot};
 
 use super::consts::*;

@@ -6,8 +6,7 @@
 use super::geometry::{orient, point, P};
 use super::lattice::LatticeLines;
 use super::loops::TrimError;
-use super::mesh::GridStrip;
-use super::plan::TrimBand;
+use super::mesh::{GridStrip, TrimBand};
 use spade::handles::DirectedEdgeHandle;
 use spade::{CdtEdge, ConstrainedDelaunayTriangulation, HasPosition, Point2, Triangulation};
 

@@ -101,3 +101,13 @@ impl TrimMesh {
         self.triangles().map(|t| 0.5 * orient(at(t[0]), at(t[1]), at(t[2]))).sum()
     }
 }
+
+/// The band of a `TrimPlan`: its triangles, over the plan's grid points (ids below
+/// `TrimPlan::grid_points().len()`) and the band's own `points` after them.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub(crate) struct TrimBand {
+    /// The points the band adds after the grid points: loop points, crossings.
+    pub points: Vec<[f64; 2]>,
+    /// Counter-clockwise triangles.
+    pub triangles: Vec<[u32; 3]>,
+}

@@ -35,7 +35,7 @@
 //! | `geometry.rs` | orientation, areas, segment tests and bounds in (u, v) |
 //! | `lattice.rs` | the sampling lattice's lines and the loops traced through them |
 //! | `loops.rs` | [`TrimLoop`], joining curves, GLU's loop rules, [`TrimError`] |
-//! | `mesh.rs` | the result: [`TrimMesh`], [`Lattice`], [`GridStrip`] |
+//! | `mesh.rs` | the results: [`TrimMesh`], [`Lattice`], [`GridStrip`], and a plan's triangulated band |
 //! | `band.rs` | the split into clean cells and the band; the band's Delaunay triangulation |
 //! | `cells.rs` | the band triangulated cell by cell |
 //! | `plan.rs` | [`TrimOptions`], the plan, [`triangulate`] and [`triangulate_with`] |

@@ -7,7 +7,7 @@ use super::cells::triangulate_cells;
 use super::geometry::P;
 use super::lattice::{EdgeTrace, LatticeLines};
 use super::loops::{clean_loop, is_domain_border, validate, TrimError, TrimLoop};
-use super::mesh::{GridStrip, Lattice, TrimMesh};
+use super::mesh::{GridStrip, Lattice, TrimBand, TrimMesh};
 
 /// How [`triangulate_with`] samples the retained region.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -139,16 +139,6 @@ pub struct TrimPlan {
     edges: Vec<[usize; 2]>,
     by_cells: bool,
     strips: Vec<GridStrip>,
-}
-
-/// The band of a [`TrimPlan`]: its triangles, over the plan's grid points (ids below
-/// `TrimPlan::grid_points().len()`) and the band's own `points` after them.
-#[derive(Clone, Debug, Default, PartialEq)]
-pub(crate) struct TrimBand {
-    /// The points the band adds after the grid points: loop points, crossings.
-    pub points: Vec<[f64; 2]>,
-    /// Counter-clockwise triangles.
-    pub triangles: Vec<[u32; 3]>,
 }
 
 impl TrimPlan {

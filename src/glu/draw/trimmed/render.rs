@@ -82,13 +82,13 @@ fn trimmed_vertex(gl: &Gl, surface: &Surface, u: f64, v: f64, auto_normal: bool)
             continue;
         };
         let p = [s.point[0] as f32, s.point[1] as f32, s.point[2] as f32, s.point[3] as f32];
-        crate::gl::eval_set_attribute(&mut vertex, slot, p);
+        vertex.set_attribute(slot, p);
     }
     let s = pos.eval(u, v)?;
     if auto_normal {
         vertex.normal = surface_normal(pos, k, u, v, surface.domain());
     }
     let p = [s.point[0] as f32, s.point[1] as f32, s.point[2] as f32, s.point[3] as f32];
-    crate::gl::eval_set_attribute(&mut vertex, if k == 4 { Slot::Vertex4 } else { Slot::Vertex3 }, p);
+    vertex.set_attribute(if k == 4 { Slot::Vertex4 } else { Slot::Vertex3 }, p);
     Some(vertex)
 }
