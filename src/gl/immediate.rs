@@ -12,7 +12,7 @@ impl Gl {
     /// `glBegin`: starts a primitive. Nested begin → `GL_INVALID_OPERATION`; a mode outside
     /// `GL_POINTS..=GL_POLYGON` → `GL_INVALID_ENUM` (checked in that order, as Mesa does).
     pub fn begin(&mut self, mode: GLenum) {
-        if self.compiled(|| ListCommand::Begin(mode)) {
+        if self.compiled(|| ListCommand::Immediate(Call::Begin(mode))) {
             return;
         }
         if self.reject_inside_begin_end() {
@@ -28,7 +28,7 @@ impl Gl {
 
     /// `glEnd`: closes the primitive; outside `begin` → `GL_INVALID_OPERATION`.
     pub fn end(&mut self) {
-        if self.compiled(|| ListCommand::End) {
+        if self.compiled(|| ListCommand::Immediate(Call::End)) {
             return;
         }
         if !self.inside_begin_end() {
@@ -64,7 +64,7 @@ impl Gl {
     }
 
     fn vertex(&mut self, position: [f32; 4]) {
-        if self.compiled(|| ListCommand::Vertex(position)) {
+        if self.compiled(|| ListCommand::Immediate(Call::Vertex(position))) {
             return;
         }
         self.frame.calls.push(Call::Vertex(position));
@@ -125,7 +125,7 @@ impl Gl {
 
     /// `glColor4f`.
     pub fn color4f(&mut self, r: GLfloat, g: GLfloat, b: GLfloat, a: GLfloat) {
-        if self.compiled(|| ListCommand::Color([r, g, b, a])) {
+        if self.compiled(|| ListCommand::Immediate(Call::Color([r, g, b, a]))) {
             return;
         }
         self.current.color = [r, g, b, a];
@@ -154,7 +154,7 @@ impl Gl {
 
     /// `glNormal3f`.
     pub fn normal3f(&mut self, x: GLfloat, y: GLfloat, z: GLfloat) {
-        if self.compiled(|| ListCommand::Normal([x, y, z])) {
+        if self.compiled(|| ListCommand::Immediate(Call::Normal([x, y, z]))) {
             return;
         }
         self.current.normal = [x, y, z];
@@ -185,7 +185,7 @@ impl Gl {
 
     /// `glTexCoord4f`.
     pub fn tex_coord4f(&mut self, s: GLfloat, t: GLfloat, r: GLfloat, q: GLfloat) {
-        if self.compiled(|| ListCommand::TexCoord([s, t, r, q])) {
+        if self.compiled(|| ListCommand::Immediate(Call::TexCoord([s, t, r, q]))) {
             return;
         }
         self.current.tex_coord = [s, t, r, q];

@@ -17,6 +17,7 @@
 //! `glDeleteLists`, `glIsList`, `glGet*`, `glIsEnabled`, `glGetError`, `glFlush`, `glFinish`.
 
 use super::consts::*;
+use super::frame::Call;
 use super::mesh_job::MeshJob;
 use super::types::*;
 use super::vertex::Vertex;
@@ -31,12 +32,8 @@ pub const MAX_LIST_NESTING: usize = 64;
 /// shorter forms stored as the call they reduce to), with its data copied.
 #[derive(Clone, Debug, PartialEq)]
 pub(crate) enum ListCommand {
-    Begin(GLenum),
-    End,
-    Vertex([f32; 4]),
-    Color([f32; 4]),
-    Normal([f32; 3]),
-    TexCoord([f32; 4]),
+    /// `glBegin`, `glEnd`, `glVertex`, `glColor`, `glNormal`, `glTexCoord`: the calls a frame logs.
+    Immediate(Call),
     Enable(GLenum),
     Disable(GLenum),
     Light(GLenum, GLenum, Vec<f32>),
@@ -331,12 +328,12 @@ impl Gl {
     fn execute(&mut self, command: &ListCommand) {
         use ListCommand as C;
         match command {
-            C::Begin(mode) => self.begin(*mode),
-            C::End => self.end(),
-            C::Vertex([x, y, z, w]) => self.vertex4f(*x, *y, *z, *w),
-            C::Color([r, g, b, a]) => self.color4f(*r, *g, *b, *a),
-            C::Normal([x, y, z]) => self.normal3f(*x, *y, *z),
-            C::TexCoord([s, t, r, q]) => self.tex_coord4f(*s, *t, *r, *q),
+            C::Immediate(Call::Begin(mode)) => self.begin(*mode),
+            C::Immediate(Call::End) => self.end(),
+            C::Immediate(Call::Vertex([x, y, z, w])) => self.vertex4f(*x, *y, *z, *w),
+            C::Immediate(Call::Color([r, g, b, a])) => self.color4f(*r, *g, *b, *a),
+            C::Immediate(Call::Normal([x, y, z])) => self.normal3f(*x, *y, *z),
+            C::Immediate(Call::TexCoord([s, t, r, q])) => self.tex_coord4f(*s, *t, *r, *q),
             C::Enable(cap) => self.enable(*cap),
             C::Disable(cap) => self.disable(*cap),
             C::Light(light, pname, params) => self.light_fv(*light, *pname, params),
