@@ -187,3 +187,17 @@ pub const GL_VENDOR: GLenum = 0x1F00;
 pub const GL_RENDERER: GLenum = 0x1F01;
 pub const GL_VERSION: GLenum = 0x1F02;
 pub const GL_EXTENSIONS: GLenum = 0x1F03;
+
+// Pixel storage modes (glPixelStore).
+pub const GL_UNPACK_SWAP_BYTES: GLenum = 0x0CF0;
+pub const GL_UNPACK_LSB_FIRST: GLenum = 0x0CF1;
+pub const GL_UNPACK_ROW_LENGTH: GLenum = 0x0CF2;
+pub const GL_UNPACK_SKIP_ROWS: GLenum = 0x0CF3;
+pub const GL_UNPACK_SKIP_PIXELS: GLenum = 0x0CF4;
+pub const GL_UNPACK_ALIGNMENT: GLenum = 0x0CF5;
+pub const GL_PACK_SWAP_BYTES: GLenum = 0x0D00;
+pub const GL_PACK_LSB_FIRST: GLenum = 0x0D01;
+pub const GL_PACK_ROW_LENGTH: GLenum = 0x0D02;
+pub const GL_PACK_SKIP_ROWS: GLenum = 0x0D03;
+pub const GL_PACK_SKIP_PIXELS: GLenum = 0x0D04;
+pub const GL_PACK_ALIGNMENT: GLenum = 0x0D05;

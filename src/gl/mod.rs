@@ -16,6 +16,7 @@ mod lighting;
 pub(crate) mod lists;
 mod matrix;
 mod mesh_job;
+mod pixels;
 mod raster;
 pub mod types;
 mod vertex;
@@ -120,6 +121,8 @@ pub struct Gl {
     tessellator: Tessellator,
     /// Display lists, and the one being compiled.
     lists: lists::Lists,
+    /// How client memory is laid out for images and bitmaps (`glPixelStore`).
+    pixel_stores: pixels::PixelStores,
     /// GLU NURBS objects, indexed by their handles: the one import from `gl` into `glu`, since
     /// GLU's calls are methods of `Gl` (the porting rule).
     pub(crate) nurbs: Vec<Option<crate::glu::NurbsObject>>,
@@ -149,6 +152,7 @@ impl Gl {
             glut: crate::glut::GlutState::default(),
             tessellator: Tessellator::Cpu,
             lists: lists::Lists::default(),
+            pixel_stores: pixels::PixelStores::default(),
             nurbs: Vec::new(),
         }
     }

@@ -1,0 +1,147 @@
+//! Pixel storage modes (`glPixelStore`, GL 1.1 spec §3.6.1 and table 3.1; Mesa `main/pixelstore.c`):
+//! how images, bitmaps and textures are laid out in client memory, and the addressing they
+//! imply (row length, skipped rows and pixels, row alignment).
+
+use super::consts::*;
+use super::types::*;
+use super::Gl;
+
+/// One direction's storage modes (unpack: memory → GL; pack: GL → memory).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) struct PixelStore {
+    pub swap_bytes: bool,
+    pub lsb_first: bool,
+    /// Pixels per row in memory; 0 means the image's own width.
+    pub row_length: usize,
+    pub skip_rows: usize,
+    pub skip_pixels: usize,
+    /// Rows start at multiples of this many bytes: 1, 2, 4 (GL's initial value) or 8.
+    pub alignment: usize,
+}
+
+impl Default for PixelStore {
+    fn default() -> Self {
+        Self { swap_bytes: false, lsb_first: false, row_length: 0, skip_rows: 0, skip_pixels: 0, alignment: 4 }
+    }
+}
+
+// Read by the image calls (bitmaps, pixels, textures) as they land.
+#[allow(dead_code)]
+impl PixelStore {
+    /// Bytes from one row's start to the next for rows of `width` pixels of `size` bytes
+    /// (`size` a power of two up to 8; GL 1.1 eq. 3.1: `k = a/s · ⌈s·n·l / a⌉` when s < a).
+    #[must_use]
+    pub fn row_stride(&self, width: usize, size: usize) -> usize {
+        let pixels = if self.row_length > 0 { self.row_length } else { width };
+        let bytes = pixels * size;
+        if size >= self.alignment {
+            bytes
+        } else {
+            bytes.div_ceil(self.alignment) * self.alignment
+        }
+    }
+
+    /// Bytes from one bitmap row's start to the next (one bit a pixel, GL 1.1 §3.6.4).
+    #[must_use]
+    pub fn bitmap_row_stride(&self, width: usize) -> usize {
+        let pixels = if self.row_length > 0 { self.row_length } else { width };
+        pixels.div_ceil(8).div_ceil(self.alignment) * self.alignment
+    }
+
+    /// The byte offset of the first pixel read: skipped rows and pixels.
+    #[must_use]
+    pub fn first_byte(&self, row_stride: usize, size: usize) -> usize {
+        self.skip_rows * row_stride + self.skip_pixels * size
+    }
+}
+
+/// The client's pixel storage state.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub(crate) struct PixelStores {
+    pub unpack: PixelStore,
+    pub pack: PixelStore,
+}
+
+impl Gl {
+    /// `glPixelStorei`. An unknown name → `GL_INVALID_ENUM`; a negative length or skip, or an
+    /// alignment other than 1, 2, 4 or 8 → `GL_INVALID_VALUE` (Mesa's checks). Not compiled
+    /// into display lists (GL 1.1 §5.4): it runs at once.
+    pub fn pixel_storei(&mut self, pname: GLenum, param: GLint) {
+        if self.reject_inside_begin_end() {
+            return;
+        }
+        let (store, field) = match pname {
+            GL_UNPACK_SWAP_BYTES..=GL_UNPACK_ALIGNMENT => (&mut self.pixel_stores.unpack, pname - GL_UNPACK_SWAP_BYTES),
+            GL_PACK_SWAP_BYTES..=GL_PACK_ALIGNMENT => (&mut self.pixel_stores.pack, pname - GL_PACK_SWAP_BYTES),
+            _ => return self.set_error(GL_INVALID_ENUM),
+        };
+        let count = usize::try_from(param).ok();
+        let value_ok = match field {
+            0 | 1 => true,
+            2..=4 => count.is_some(),
+            _ => matches!(param, 1 | 2 | 4 | 8),
+        };
+        if !value_ok {
+            return self.set_error(GL_INVALID_VALUE);
+        }
+        let count = count.unwrap_or(0);
+        match field {
+            0 => store.swap_bytes = param != 0,
+            1 => store.lsb_first = param != 0,
+            2 => store.row_length = count,
+            3 => store.skip_rows = count,
+            4 => store.skip_pixels = count,
+            _ => store.alignment = count,
+        }
+    }
+
+    /// `glPixelStoref`: as [`Gl::pixel_storei`] with the value rounded to the nearest integer
+    /// (booleans: non-zero is true), as Mesa converts it.
+    pub fn pixel_storef(&mut self, pname: GLenum, param: GLfloat) {
+        let boolean =
+            matches!(pname, GL_UNPACK_SWAP_BYTES | GL_UNPACK_LSB_FIRST | GL_PACK_SWAP_BYTES | GL_PACK_LSB_FIRST);
+        let value = if boolean { GLint::from(param != 0.0) } else { param.round() as GLint };
+        self.pixel_storei(pname, value);
+    }
+
+    /// The unpack modes images, bitmaps and textures are read with.
+    #[allow(dead_code)]
+    pub(crate) fn unpack_store(&self) -> PixelStore {
+        self.pixel_stores.unpack
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn rows_are_aligned_as_gl_says() {
+        let four = PixelStore::default();
+        assert_eq!(four.row_stride(3, 3), 12); // 9 bytes of RGB, padded to 4
+        assert_eq!(four.row_stride(3, 4), 12);
+        assert_eq!(four.bitmap_row_stride(9), 4); // 2 bytes, padded to 4
+        let one = PixelStore { alignment: 1, ..four };
+        assert_eq!(one.row_stride(3, 3), 9);
+        assert_eq!(one.bitmap_row_stride(9), 2);
+        let long = PixelStore { row_length: 10, skip_rows: 2, skip_pixels: 1, ..one };
+        assert_eq!(long.row_stride(3, 3), 30);
+        assert_eq!(long.first_byte(30, 3), 63);
+    }
+
+    #[test]
+    fn pixel_store_errors() {
+        let mut gl = Gl::new(4, 4);
+        gl.pixel_storei(GL_UNPACK_ALIGNMENT, 3);
+        assert_eq!(gl.get_error(), GL_INVALID_VALUE);
+        gl.pixel_storei(GL_UNPACK_ROW_LENGTH, -1);
+        assert_eq!(gl.get_error(), GL_INVALID_VALUE);
+        gl.pixel_storei(0x1234, 1);
+        assert_eq!(gl.get_error(), GL_INVALID_ENUM);
+        gl.pixel_storei(GL_UNPACK_ALIGNMENT, 1);
+        gl.pixel_storef(GL_PACK_ALIGNMENT, 8.0);
+        assert_eq!(gl.get_error(), GL_NO_ERROR);
+        assert_eq!(gl.unpack_store().alignment, 1);
+        assert_eq!(gl.pixel_stores.pack.alignment, 8);
+    }
+}
