@@ -49,13 +49,15 @@ mod rationalmap;
 mod specular;
 #[path = "teapot.rs"]
 mod teapot;
+#[path = "texsurf.rs"]
+mod texsurf;
 #[path = "trimmed.rs"]
 mod trimmed;
 
 /// A built-in program: its name and how to build it.
 type Program = (&'static str, fn() -> App);
 
-const PROGRAMS: [Program; 21] = [
+const PROGRAMS: [Program; 22] = [
     ("bezcurve", bezcurve::app),
     ("bezsurf", bezsurf::app),
     ("bcurve", bcurve::app),
@@ -76,6 +78,7 @@ const PROGRAMS: [Program; 21] = [
     ("demo", demo::app),
     ("teapot", teapot::app),
     ("lists", lists::app),
+    ("texsurf", texsurf::app),
     ("operations", operations::app),
 ];
 

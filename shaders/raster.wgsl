@@ -1,21 +1,83 @@
 // The rasteriser for gleval's assembled frames: GL's fixed-function vertex work (transform,
 // lighting, primitive assembly, wide lines and points) is already done, so a vertex carries its
-// clip-space position and final colour, and the fragment stage writes the interpolated colour.
+// clip-space position, final colour and texture coordinates. The fragment stage applies unit
+// 0's texture with GL's texture environment (GL 1.1 spec §3.8.9, tables 3.17 and 3.18; ADD
+// from GL 1.3).
+
+struct TexEnv {
+    // 0 no texture, 1 MODULATE, 2 DECAL, 3 BLEND, 4 REPLACE, 5 ADD.
+    mode: u32,
+    // The base internal format: 0 ALPHA, 1 LUMINANCE, 2 LUMINANCE_ALPHA, 3 RGB, 4 RGBA.
+    format: u32,
+    // GL_CLAMP in s and t: the coordinate is clamped to [0, 1] before filtering (GL 1.1
+    // §3.8.6), so linear filtering at the edge mixes in the border colour.
+    clamp_s: u32,
+    clamp_t: u32,
+    color: vec4<f32>,
+};
+
+@group(0) @binding(0) var tex_image: texture_2d<f32>;
+@group(0) @binding(1) var tex_sampler: sampler;
+@group(0) @binding(2) var<uniform> env: TexEnv;
 
 struct VertexOut {
     @builtin(position) clip: vec4<f32>,
     @location(0) color: vec4<f32>,
+    @location(1) tex: vec4<f32>,
 };
 
 @vertex
-fn vs_main(@location(0) clip: vec4<f32>, @location(1) color: vec4<f32>) -> VertexOut {
+fn vs_main(@location(0) clip: vec4<f32>, @location(1) color: vec4<f32>, @location(2) tex: vec4<f32>) -> VertexOut {
     var out: VertexOut;
     out.clip = clip;
     out.color = color;
+    out.tex = tex;
     return out;
 }
 
 @fragment
 fn fs_main(in: VertexOut) -> @location(0) vec4<f32> {
-    return in.color;
+    // (s/q, t/q); GL's first image row is t = 0, uploaded as row 0.
+    let q = select(1.0, in.tex.w, in.tex.w != 0.0);
+    let st = in.tex.xy / q;
+    let clamped = vec2<bool>(env.clamp_s != 0u, env.clamp_t != 0u);
+    let texel = textureSample(tex_image, tex_sampler, select(st, clamp(st, vec2<f32>(0.0), vec2<f32>(1.0)), clamped));
+    if env.mode == 0u {
+        return in.color;
+    }
+    return apply_env(in.color, texel);
+}
+
+// GL's texture functions: Cf, Af the fragment's colour; Ct, At the texture's by base format.
+fn apply_env(cf: vec4<f32>, texel: vec4<f32>) -> vec4<f32> {
+    let has_rgb = env.format != 0u;
+    let has_alpha = env.format == 0u || env.format == 2u || env.format == 4u;
+    let luminance = env.format == 1u || env.format == 2u;
+    let ct = select(texel.rgb, vec3<f32>(texel.r), luminance);
+    let at = texel.a;
+    var c = cf.rgb;
+    var a = cf.a;
+    switch env.mode {
+        case 1u: {
+            if has_rgb { c = cf.rgb * ct; }
+            if has_alpha { a = cf.a * at; }
+        }
+        case 2u: {
+            if env.format == 3u { c = ct; }
+            if env.format == 4u { c = mix(cf.rgb, ct, at); }
+        }
+        case 3u: {
+            if has_rgb { c = mix(cf.rgb, env.color.rgb, ct); }
+            if has_alpha { a = cf.a * at; }
+        }
+        case 4u: {
+            if has_rgb { c = ct; }
+            if has_alpha { a = at; }
+        }
+        default: {
+            if has_rgb { c = min(cf.rgb + ct, vec3<f32>(1.0)); }
+            if has_alpha { a = cf.a * at; }
+        }
+    }
+    return vec4<f32>(c, a);
 }

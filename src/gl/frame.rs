@@ -3,6 +3,7 @@
 //! Tests read it; the renderer draws it.
 
 use super::lighting::Lighting;
+use super::texture::BoundTexture;
 use super::types::{GLbitfield, GLenum};
 use super::vertex::Vertex;
 use glam::Mat4;
@@ -53,6 +54,8 @@ pub struct DrawState {
     pub cull_face: Option<GLenum>,
     /// The depth function when `GL_DEPTH_TEST` is enabled.
     pub depth_test: Option<GLenum>,
+    /// The texture of unit 0 when a target is enabled and its texture complete.
+    pub texture: Option<BoundTexture>,
 }
 
 /// Framebuffer operations and draws, in program order.

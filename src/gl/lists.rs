@@ -19,6 +19,7 @@
 use super::consts::*;
 use super::frame::Call;
 use super::mesh_job::MeshJob;
+use super::pixels::PixelStore;
 use super::types::*;
 use super::vertex::Vertex;
 use super::Gl;
@@ -89,6 +90,29 @@ pub(crate) enum ListCommand {
     EvalPoint2(i32, i32),
     EvalMesh1(GLenum, i32, i32),
     EvalMesh2(GLenum, i32, i32, i32, i32),
+    BindTexture(GLenum, GLuint),
+    /// `glTexImage1D/2D`: the client's bytes with the pixel store of compile time, as GL
+    /// unpacks them then (GL 1.1 §5.4).
+    TexImage {
+        dims: u8,
+        target: GLenum,
+        level: GLint,
+        internalformat: GLint,
+        size: (GLsizei, GLsizei),
+        border: GLint,
+        format: (GLenum, GLenum),
+        image: (PixelStore, Vec<u8>),
+    },
+    TexSubImage {
+        target: GLenum,
+        level: GLint,
+        offset: (GLint, GLint),
+        size: (GLsizei, GLsizei),
+        format: (GLenum, GLenum),
+        image: (PixelStore, Vec<u8>),
+    },
+    TexParameter(GLenum, GLenum, GLint),
+    TexEnv(GLenum, GLenum, Vec<f32>),
     PushAttrib(GLbitfield),
     PopAttrib,
     /// A vertex with all its attributes, as GLU issues a trimmed surface's (its
@@ -376,6 +400,25 @@ impl Gl {
             C::EvalPoint2(i, j) => self.eval_point2(*i, *j),
             C::EvalMesh1(mode, i1, i2) => self.eval_mesh1(*mode, *i1, *i2),
             C::EvalMesh2(mode, i1, i2, j1, j2) => self.eval_mesh2(*mode, *i1, *i2, *j1, *j2),
+            C::BindTexture(target, texture) => self.bind_texture(*target, *texture),
+            C::TexImage { dims, target, level, internalformat, size, border, format, image } => {
+                self.with_unpack_store(image.0, |gl| {
+                    let (f, t) = *format;
+                    if *dims == 1 {
+                        gl.tex_image_1d(*target, *level, *internalformat, size.0, *border, f, t, &image.1);
+                    } else {
+                        gl.tex_image_2d(*target, *level, *internalformat, size.0, size.1, *border, f, t, &image.1);
+                    }
+                });
+            }
+            C::TexSubImage { target, level, offset, size, format, image } => {
+                self.with_unpack_store(image.0, |gl| {
+                    let (x, y, (f, t)) = (offset.0, offset.1, *format);
+                    gl.tex_sub_image_2d(*target, *level, x, y, size.0, size.1, f, t, &image.1);
+                });
+            }
+            C::TexParameter(target, pname, param) => self.tex_parameteri(*target, *pname, *param),
+            C::TexEnv(target, pname, params) => self.tex_envfv(*target, *pname, params),
             C::PushAttrib(mask) => self.push_attrib(*mask),
             C::PopAttrib => self.pop_attrib(),
             C::EmitVertex(v) => self.emit_listed_vertex(*v),

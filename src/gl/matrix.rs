@@ -34,6 +34,10 @@ impl MatrixStacks {
         *self.stacks[1].last().unwrap_or(&Mat4::IDENTITY)
     }
 
+    pub fn texture(&self) -> Mat4 {
+        *self.stacks[2].last().unwrap_or(&Mat4::IDENTITY)
+    }
+
     fn top(&mut self) -> &mut Mat4 {
         let stack = &mut self.stacks[self.mode];
         if stack.is_empty() {

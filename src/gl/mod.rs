@@ -18,6 +18,7 @@ mod matrix;
 mod mesh_job;
 mod pixels;
 mod raster;
+mod texture;
 pub mod types;
 mod vertex;
 
@@ -26,6 +27,7 @@ pub use frame::{Call, Command, DrawState, Frame, GridMesh, MeshMode, MeshVertice
 pub use lighting::{Light, Lighting, Material};
 pub use lists::MAX_LIST_NESTING;
 pub use mesh_job::{MapSample, MeshJob};
+pub use texture::{BoundTexture, TexLevel, TexParams, MAX_TEXTURE_SIZE};
 pub use vertex::Vertex;
 
 use consts::*;
@@ -121,6 +123,8 @@ pub struct Gl {
     tessellator: Tessellator,
     /// Display lists, and the one being compiled.
     lists: lists::Lists,
+    /// Texture objects and unit 0's environment.
+    textures: texture::Textures,
     /// How client memory is laid out for images and bitmaps (`glPixelStore`).
     pixel_stores: pixels::PixelStores,
     /// GLU NURBS objects, indexed by their handles: the one import from `gl` into `glu`, since
@@ -153,6 +157,7 @@ impl Gl {
             tessellator: Tessellator::Cpu,
             lists: lists::Lists::default(),
             pixel_stores: pixels::PixelStores::default(),
+            textures: texture::Textures::default(),
             nurbs: Vec::new(),
         }
     }
@@ -236,14 +241,15 @@ impl Gl {
         if let Some(i) = self.state_index {
             return i;
         }
-        let state = self.snapshot();
+        let texture = self.bound_texture();
+        let state = self.snapshot(texture);
         self.frame.states.push(state);
         let i = self.frame.states.len() - 1;
         self.state_index = Some(i);
         i
     }
 
-    fn snapshot(&self) -> DrawState {
+    fn snapshot(&self, texture: Option<texture::BoundTexture>) -> DrawState {
         let r = &self.raster;
         let lighting = self.caps.is_on(GL_LIGHTING).then(|| {
             let mut l = self.lighting.clone();
@@ -268,6 +274,7 @@ impl Gl {
             front_face: r.front_face,
             cull_face: self.caps.is_on(GL_CULL_FACE).then_some(r.cull_face),
             depth_test: self.caps.is_on(GL_DEPTH_TEST).then_some(r.depth_func),
+            texture,
         }
     }
 
@@ -350,7 +357,7 @@ impl Gl {
                 out[0] = f64::from(MAX_EVAL_ORDER);
                 1
             }
-            _ => match (self.eval.grid_query(pname, out), self.list_query(pname)) {
+            _ => match (self.eval.grid_query(pname, out), self.list_query(pname).or(self.texture_query(pname))) {
                 (Some(n), _) => n,
                 (None, Some(value)) => {
                     out[0] = value;

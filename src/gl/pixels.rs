@@ -25,8 +25,6 @@ impl Default for PixelStore {
     }
 }
 
-// Read by the image calls (bitmaps, pixels, textures) as they land.
-#[allow(dead_code)]
 impl PixelStore {
     /// Bytes from one row's start to the next for rows of `width` pixels of `size` bytes
     /// (`size` a power of two up to 8; GL 1.1 eq. 3.1: `k = a/s · ⌈s·n·l / a⌉` when s < a).
@@ -42,6 +40,7 @@ impl PixelStore {
     }
 
     /// Bytes from one bitmap row's start to the next (one bit a pixel, GL 1.1 §3.6.4).
+    #[allow(dead_code)] // glBitmap's
     #[must_use]
     pub fn bitmap_row_stride(&self, width: usize) -> usize {
         let pixels = if self.row_length > 0 { self.row_length } else { width };
@@ -105,9 +104,23 @@ impl Gl {
     }
 
     /// The unpack modes images, bitmaps and textures are read with.
-    #[allow(dead_code)]
     pub(crate) fn unpack_store(&self) -> PixelStore {
         self.pixel_stores.unpack
+    }
+
+    /// `glGetIntegerv(GL_UNPACK_ALIGNMENT)`, which GLU saves around its own unpacking.
+    pub(crate) fn unpack_alignment(&self) -> GLint {
+        self.pixel_stores.unpack.alignment as GLint
+    }
+}
+
+impl Gl {
+    /// Runs `f` with `store` as the unpack modes, then restores the client's (a display list
+    /// replays an image with the modes it was compiled with).
+    pub(crate) fn with_unpack_store(&mut self, store: PixelStore, f: impl FnOnce(&mut Gl)) {
+        let saved = std::mem::replace(&mut self.pixel_stores.unpack, store);
+        f(self);
+        self.pixel_stores.unpack = saved;
     }
 }
 

@@ -23,6 +23,7 @@ pub mod consts;
 mod draw;
 mod errors;
 mod evaluation;
+mod mipmap;
 mod model;
 
 pub use errors::glu_error_string;

@@ -6,6 +6,7 @@
 use super::device::shader_module;
 use super::layout::RASTER_WGSL;
 use super::raster::RasterPipeline;
+use super::textures::{self, TextureCache};
 use crate::gl::types::GLenum;
 use crate::render::assemble::{DrawList, Op, RasterVertex, Topology};
 use std::collections::HashMap;
@@ -14,23 +15,38 @@ use wgpu::util::DeviceExt;
 /// Pipeline key: topology, depth function, target format.
 type PipelineKey = (Topology, Option<GLenum>, wgpu::TextureFormat);
 
-/// The frame rasteriser's shader and its pipelines, made on first use.
+/// The frame rasteriser's shader and its pipelines, made on first use, and the textures it
+/// samples.
 pub(crate) struct FrameRaster {
     module: wgpu::ShaderModule,
     layout: wgpu::PipelineLayout,
+    texture_layout: wgpu::BindGroupLayout,
     pipelines: HashMap<PipelineKey, wgpu::RenderPipeline>,
+    textures: TextureCache,
 }
 
 impl FrameRaster {
     /// Compiles `shaders/raster.wgsl` on `device`.
     pub(crate) fn new(device: &wgpu::Device) -> Self {
         let module = shader_module(device, "raster.wgsl", RASTER_WGSL);
+        let texture_layout = textures::bind_group_layout(device);
         let layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
             label: Some("raster"),
-            bind_group_layouts: &[],
+            bind_group_layouts: &[Some(&texture_layout)],
             immediate_size: 0,
         });
-        Self { module, layout, pipelines: HashMap::new() }
+        Self { module, layout, texture_layout, pipelines: HashMap::new(), textures: TextureCache::default() }
+    }
+
+    /// The bind groups of a list's batches: one per texture of the list, in its order, then
+    /// the one for batches without a texture (see [`TextureCache::bind_groups`]).
+    pub(crate) fn texture_bind_groups(
+        &mut self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        list: &DrawList,
+    ) -> Vec<wgpu::BindGroup> {
+        self.textures.bind_groups(device, queue, &self.texture_layout, &list.textures)
     }
 
     /// Makes sure the pipeline for `key` exists (before a render pass borrows them all).
@@ -51,7 +67,7 @@ fn make_pipeline(
     layout: &wgpu::PipelineLayout,
     (topology, depth, format): PipelineKey,
 ) -> wgpu::RenderPipeline {
-    let attributes = wgpu::vertex_attr_array![0 => Float32x4, 1 => Float32x4];
+    let attributes = wgpu::vertex_attr_array![0 => Float32x4, 1 => Float32x4, 2 => Float32x4];
     let vertex = wgpu::VertexBufferLayout {
         array_stride: std::mem::size_of::<RasterVertex>() as wgpu::BufferAddress,
         step_mode: wgpu::VertexStepMode::Vertex,

@@ -32,6 +32,7 @@ mod passes;
 mod raster;
 mod renderer;
 mod target;
+mod textures;
 
 pub use device::{Gpu, Image, RenderError};
 pub use evaluate::{evaluate_job_indices, evaluate_jobs, EvaluatedMeshes, Evaluator};

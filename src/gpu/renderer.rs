@@ -137,6 +137,7 @@ impl Renderer {
         target: &Attachments<'_>,
     ) {
         let buffer = vertex_buffer(&self.device, list, target.size);
+        let bind_groups = self.frames.texture_bind_groups(&self.device, &self.queue, list);
         for pass in split_passes(&list.ops) {
             for item in &pass.draws {
                 if let PassItem::Batch(batch) = item {
@@ -145,7 +146,7 @@ impl Renderer {
             }
             let mut rp = begin_pass(encoder, target.color, target.depth, pass.clear_color, pass.clear_depth);
             for item in &pass.draws {
-                self.draw_item(&mut rp, item, buffer.as_ref(), frame, prepared, target);
+                self.draw_item(&mut rp, item, (buffer.as_ref(), &bind_groups), frame, prepared, target);
             }
         }
     }
@@ -155,7 +156,7 @@ impl Renderer {
         &self,
         rp: &mut wgpu::RenderPass<'_>,
         item: &PassItem,
-        buffer: Option<&wgpu::Buffer>,
+        (buffer, bind_groups): (Option<&wgpu::Buffer>, &[wgpu::BindGroup]),
         frame: &Frame,
         prepared: Option<&PreparedMeshes>,
         target: &Attachments<'_>,
@@ -166,6 +167,9 @@ impl Renderer {
                 let Some(scissor) = scissor_rect(batch.viewport, target.size) else { return };
                 rp.set_scissor_rect(scissor[0], scissor[1], scissor[2], scissor[3]);
                 rp.set_pipeline(self.frames.pipeline((batch.topology, batch.depth_test, target.format)));
+                // The last bind group is the one without a texture.
+                let group = batch.texture.map_or(bind_groups.len() - 1, |t| t as usize);
+                rp.set_bind_group(0, &bind_groups[group], &[]);
                 rp.set_vertex_buffer(0, buffer.slice(..));
                 rp.draw(batch.first..batch.first + batch.count, 0..1);
             }

@@ -10,11 +10,12 @@
 use super::shade::{ShadedVertex, Shader};
 use crate::gl::consts::*;
 use crate::gl::types::GLenum;
-use crate::gl::{Command, DrawState, Frame, MeshVertices, Vertex};
+use crate::gl::{BoundTexture, Command, DrawState, Frame, MeshVertices, Vertex};
 use glam::Vec4;
 
 /// A vertex ready for the rasteriser: clip position (depth already mapped to [0, 1] through
-/// `glDepthRange`) and the final colour.
+/// `glDepthRange`), the final colour, and the texture coordinates (s, t, r, q) after the
+/// texture matrix (the rasteriser divides by q per fragment).
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 #[cfg_attr(feature = "gpu", derive(bytemuck::Pod, bytemuck::Zeroable))]
@@ -23,6 +24,8 @@ pub struct RasterVertex {
     pub clip: [f32; 4],
     /// RGBA in [0, 1].
     pub color: [f32; 4],
+    /// (s, t, r, q); zero when the batch has no texture.
+    pub tex: [f32; 4],
 }
 
 /// What a batch draws.
@@ -49,6 +52,8 @@ pub struct Batch {
     pub first: u32,
     /// Number of vertices.
     pub count: u32,
+    /// The texture, as an index into [`DrawList::textures`].
+    pub texture: Option<u32>,
 }
 
 /// A framebuffer operation.
@@ -74,6 +79,8 @@ pub struct DrawList {
     pub vertices: Vec<RasterVertex>,
     /// Clears and draws in program order.
     pub ops: Vec<Op>,
+    /// The textures the batches are drawn with.
+    pub textures: Vec<BoundTexture>,
 }
 
 /// Assembles a frame, evaluating deferred (GPU) meshes on the CPU.
@@ -125,6 +132,7 @@ struct Assembler {
 struct Corner {
     clip: Vec4,
     color: Vec4,
+    tex: Vec4,
 }
 
 impl Assembler {
@@ -172,20 +180,36 @@ impl Assembler {
     /// Appends vertices to the last batch if it has the same state, else starts a batch.
     fn push(&mut self, state: &DrawState, topology: Topology, corners: &[Corner]) {
         let depth_range = state.depth_range;
-        let batch_key = (state.viewport, state.depth_test, topology);
+        let texture = self.texture_index(state.texture.as_ref());
+        let batch_key = (state.viewport, state.depth_test, topology, texture);
         let first = self.list.vertices.len() as u32;
-        self.list.vertices.extend(
-            corners.iter().map(|c| RasterVertex { clip: depth_mapped(c.clip, depth_range), color: c.color.to_array() }),
-        );
+        self.list.vertices.extend(corners.iter().map(|c| RasterVertex {
+            clip: depth_mapped(c.clip, depth_range),
+            color: c.color.to_array(),
+            tex: c.tex.to_array(),
+        }));
         let added = corners.len() as u32;
         if let Some(Op::Draw(last)) = self.list.ops.last_mut() {
-            if (last.viewport, last.depth_test, last.topology) == batch_key && last.first + last.count == first {
+            let last_key = (last.viewport, last.depth_test, last.topology, last.texture);
+            if last_key == batch_key && last.first + last.count == first {
                 last.count += added;
                 return;
             }
         }
-        let (viewport, depth_test, topology) = batch_key;
-        self.list.ops.push(Op::Draw(Batch { viewport, depth_test, topology, first, count: added }));
+        let (viewport, depth_test, topology, texture) = batch_key;
+        self.list.ops.push(Op::Draw(Batch { viewport, depth_test, topology, first, count: added, texture }));
+    }
+
+    /// The index of `texture` in the list's textures, adding it if it is new (the last one is
+    /// checked first: consecutive primitives share their texture).
+    fn texture_index(&mut self, texture: Option<&BoundTexture>) -> Option<u32> {
+        let texture = texture?;
+        let textures = &mut self.list.textures;
+        let found = textures.iter().rposition(|t| t == texture);
+        Some(found.unwrap_or_else(|| {
+            textures.push(texture.clone());
+            textures.len() - 1
+        }) as u32)
     }
 }
 
@@ -209,7 +233,7 @@ impl PrimitiveContext<'_, '_> {
     /// A point of the point size: one pixel natively, else a square in window space.
     fn point(&mut self, i: usize) {
         let sv = self.v[i];
-        self.point_at(Corner { clip: sv.clip, color: sv.front });
+        self.point_at(Corner { clip: sv.clip, color: sv.front, tex: sv.tex });
     }
 
     fn point_at(&mut self, c: Corner) {
@@ -224,14 +248,15 @@ impl PrimitiveContext<'_, '_> {
         }
         let [_, _, vw, vh] = self.state.viewport;
         let (hx, hy) = (size / vw.max(1) as f32 * p.w, size / vh.max(1) as f32 * p.w);
-        let corner = |dx: f32, dy: f32| Corner { clip: p + Vec4::new(dx * hx, dy * hy, 0.0, 0.0), color: c.color };
+        let corner =
+            |dx: f32, dy: f32| Corner { clip: p + Vec4::new(dx * hx, dy * hy, 0.0, 0.0), color: c.color, tex: c.tex };
         let (a, b, cc, d) = (corner(-1.0, -1.0), corner(1.0, -1.0), corner(1.0, 1.0), corner(-1.0, 1.0));
         self.out.push(self.state, Topology::Triangles, &[a, b, cc, a, cc, d]);
     }
 
     /// A segment of a line primitive; `provoking` gives its colour under flat shading.
     fn segment(&mut self, a: usize, b: usize, provoking: usize) {
-        let pick = |i: usize| Corner { clip: self.v[i].clip, color: self.v[i].front };
+        let pick = |i: usize| Corner { clip: self.v[i].clip, color: self.v[i].front, tex: self.v[i].tex };
         let (mut ca, mut cb) = (pick(a), pick(b));
         if self.flat() {
             ca.color = self.v[provoking].front;
@@ -259,7 +284,7 @@ impl PrimitiveContext<'_, '_> {
         } else {
             Vec4::new(width / vw, 0.0, 0.0, 0.0)
         };
-        let shift = |c: Corner, s: f32| Corner { clip: c.clip + offset * (s * c.clip.w), color: c.color };
+        let shift = |c: Corner, s: f32| Corner { clip: c.clip + offset * (s * c.clip.w), ..c };
         let (a0, a1, b0, b1) = (shift(a, -1.0), shift(a, 1.0), shift(b, -1.0), shift(b, 1.0));
         self.out.push(self.state, Topology::Triangles, &[a0, a1, b1, a0, b1, b0]);
     }
@@ -279,7 +304,11 @@ impl PrimitiveContext<'_, '_> {
         let colour_of = |i: usize| if front { self.v[i].front } else { self.v[i].back };
         let corners: Vec<Corner> = idx
             .iter()
-            .map(|&i| Corner { clip: self.v[i].clip, color: colour_of(if self.flat() { provoking } else { i }) })
+            .map(|&i| Corner {
+                clip: self.v[i].clip,
+                color: colour_of(if self.flat() { provoking } else { i }),
+                tex: self.v[i].tex,
+            })
             .collect();
         let mode = self.state.polygon_mode[usize::from(!front)];
         match mode {

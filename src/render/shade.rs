@@ -11,12 +11,14 @@ pub(crate) struct Shader<'a> {
     normal_matrix: Mat3,
 }
 
-/// A vertex after the vertex stage: clip-space position and its front and back colours.
+/// A vertex after the vertex stage: clip-space position, its front and back colours, and its
+/// texture coordinates through the texture matrix (zero without a texture).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) struct ShadedVertex {
     pub clip: Vec4,
     pub front: Vec4,
     pub back: Vec4,
+    pub tex: Vec4,
 }
 
 impl<'a> Shader<'a> {
@@ -31,9 +33,10 @@ impl<'a> Shader<'a> {
         let eye = self.state.modelview * Vec4::from_array(v.position);
         let clip = self.state.projection * eye;
         let color = Vec4::from_array(v.color);
+        let tex = self.state.texture.as_ref().map_or(Vec4::ZERO, |t| t.matrix * Vec4::from_array(v.tex_coord));
         let Some(lighting) = &self.state.lighting else {
             let c = color.clamp(Vec4::ZERO, Vec4::ONE);
-            return ShadedVertex { clip, front: c, back: c };
+            return ShadedVertex { clip, front: c, back: c, tex };
         };
         let mut n = self.normal_matrix * Vec3::from_array(v.normal);
         if self.state.normalize || self.state.rescale_normal {
@@ -42,7 +45,7 @@ impl<'a> Shader<'a> {
         let position = if eye.w != 0.0 { eye.xyz() / eye.w } else { eye.xyz() };
         let front = self.light(lighting, 0, n, position, color);
         let back = if lighting.two_side { self.light(lighting, 1, -n, position, color) } else { front };
-        ShadedVertex { clip, front, back }
+        ShadedVertex { clip, front, back, tex }
     }
 
     /// The material of `face` with `GL_COLOR_MATERIAL` applied.

@@ -46,6 +46,8 @@ mod rationalmap;
 mod specular;
 #[path = "../../examples/teapot.rs"]
 mod teapot;
+#[path = "../../examples/texsurf.rs"]
+mod texsurf;
 #[path = "../../examples/trimmed.rs"]
 mod trimmed;
 
@@ -199,6 +201,14 @@ fn textbook_exercises_match_mesa() {
 #[test]
 fn display_lists_match_mesa() {
     check("lists", lists::app, 0.0);
+}
+
+/// A Bezier surface with `GL_MAP2_TEXTURE_COORD_2`, two texture objects (RGB and
+/// luminance-alpha) in the four environment modes with NEAREST and LINEAR filters and the
+/// REPEAT, CLAMP and CLAMP_TO_EDGE wraps (`TexSurf.c`).
+#[test]
+fn textured_surface_matches_mesa() {
+    check("texsurf", texsurf::app, 0.0);
 }
 
 /// GLUT's solid teapot (32 bicubic patches through glMap2f/glEvalMesh2) against `Teapot.c`.

@@ -202,6 +202,10 @@ impl Gl {
     /// filled polygons (both faces `GL_FILL`), one-pixel lines and one-pixel points. GL's wide
     /// lines, large points and polygon-mode edges are built on the CPU, so such meshes are too.
     pub(crate) fn gpu_draws(&self, mode: MeshMode) -> bool {
+        // Textured meshes are sampled by the frame rasteriser, which draws the CPU's vertices.
+        if self.capability(GL_TEXTURE_2D) || self.capability(GL_TEXTURE_1D) {
+            return false;
+        }
         let r = &self.raster;
         match mode {
             MeshMode::Fill | MeshMode::Triangles => r.polygon_mode == [GL_FILL, GL_FILL],

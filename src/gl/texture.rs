@@ -1,0 +1,748 @@
+//! Texture objects, images, parameters and the texture environment of unit 0 (GL 1.1 spec
+//! §3.8; Mesa `main/teximage.c`, `texobj.c`, `texparam.c`, `texenv.c`).
+//!
+//! Images are unpacked from client memory with the pixel store ([`super::pixels`]) into RGBA8
+//! levels; the base internal format (`GL_RGB`, `GL_LUMINANCE`, ...) travels beside them, since
+//! the texture environment's result depends on it (GL 1.1 tables 3.17 and 3.18). When a
+//! primitive is recorded, the bound, complete texture of the enabled target is part of its
+//! [`DrawState`](super::DrawState) ([`BoundTexture`]); the renderer uploads each texture once
+//! per version and samples it with GL's filters and wrap modes.
+
+use super::consts::*;
+use super::lists::ListCommand;
+use super::types::*;
+use super::Gl;
+use glam::Mat4;
+use std::collections::HashMap;
+use std::sync::Arc;
+
+/// The largest texture side accepted (Mesa's `MAX_TEXTURE_SIZE` for llvmpipe is 16384; GL's
+/// minimum is 64). Larger images are `GL_INVALID_VALUE`.
+pub const MAX_TEXTURE_SIZE: i32 = 8192;
+
+/// One mipmap level: RGBA8 texels, row by row from the bottom (GL's first row is t = 0).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct TexLevel {
+    /// Width in texels.
+    pub width: u32,
+    /// Height in texels (1 for a 1D texture).
+    pub height: u32,
+    /// The texels as GL converted them to RGBA (before the base format picks components).
+    pub texels: Vec<[u8; 4]>,
+}
+
+/// `glTexParameter` state of a texture object.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct TexParams {
+    /// `GL_TEXTURE_MIN_FILTER` (initially `GL_NEAREST_MIPMAP_LINEAR`).
+    pub min_filter: GLenum,
+    /// `GL_TEXTURE_MAG_FILTER` (initially `GL_LINEAR`).
+    pub mag_filter: GLenum,
+    /// `GL_TEXTURE_WRAP_S` (initially `GL_REPEAT`).
+    pub wrap_s: GLenum,
+    /// `GL_TEXTURE_WRAP_T`.
+    pub wrap_t: GLenum,
+}
+
+impl Default for TexParams {
+    fn default() -> Self {
+        Self { min_filter: GL_NEAREST_MIPMAP_LINEAR, mag_filter: GL_LINEAR, wrap_s: GL_REPEAT, wrap_t: GL_REPEAT }
+    }
+}
+
+impl TexParams {
+    /// Whether the minification filter reads mipmap levels.
+    #[must_use]
+    pub fn uses_mipmaps(&self) -> bool {
+        self.min_filter != GL_NEAREST && self.min_filter != GL_LINEAR
+    }
+}
+
+/// The texture a recorded primitive is drawn with: the complete mipmap chain of the enabled
+/// target's bound object, its parameters, unit 0's environment and the texture matrix.
+#[derive(Clone, Debug)]
+pub struct BoundTexture {
+    /// Identifies the object and the version of its images (the renderer's upload cache key).
+    pub key: u64,
+    /// Level 0 and, when the minification filter uses them, every further level down to 1×1.
+    pub levels: Arc<Vec<TexLevel>>,
+    /// `GL_ALPHA`, `GL_LUMINANCE`, `GL_LUMINANCE_ALPHA`, `GL_RGB` or `GL_RGBA`.
+    pub base_format: GLenum,
+    /// Filters and wrap modes.
+    pub params: TexParams,
+    /// `GL_TEXTURE_ENV_MODE`: `GL_MODULATE`, `GL_DECAL`, `GL_BLEND`, `GL_REPLACE` or `GL_ADD`.
+    pub env_mode: GLenum,
+    /// `GL_TEXTURE_ENV_COLOR`, for `GL_BLEND`.
+    pub env_color: [f32; 4],
+    /// The top of the texture matrix stack.
+    pub matrix: Mat4,
+    /// A `GL_TEXTURE_1D` texture (t is not used).
+    pub one_d: bool,
+}
+
+impl BoundTexture {
+    /// A 1×1 white texture under key 0 (no object has that key), for where none is bound.
+    #[must_use]
+    pub fn blank() -> Self {
+        Self {
+            key: 0,
+            levels: Arc::new(vec![TexLevel { width: 1, height: 1, texels: vec![[255; 4]] }]),
+            base_format: GL_RGBA,
+            params: TexParams { min_filter: GL_NEAREST, ..TexParams::default() },
+            env_mode: GL_REPLACE,
+            env_color: [0.0; 4],
+            matrix: Mat4::IDENTITY,
+            one_d: false,
+        }
+    }
+}
+
+impl PartialEq for BoundTexture {
+    fn eq(&self, other: &Self) -> bool {
+        self.key == other.key
+            && self.base_format == other.base_format
+            && self.params == other.params
+            && self.env_mode == other.env_mode
+            && self.env_color == other.env_color
+            && self.matrix == other.matrix
+            && self.one_d == other.one_d
+    }
+}
+
+/// A texture object.
+#[derive(Clone, Debug, Default)]
+struct TextureObject {
+    /// 1 or 2 once bound to `GL_TEXTURE_1D` or `GL_TEXTURE_2D`; 0 before.
+    dims: u8,
+    levels: Vec<Option<TexLevel>>,
+    /// The base format of each level.
+    formats: Vec<GLenum>,
+    params: TexParams,
+    /// Unique among all objects and versions: changes whenever an image does.
+    key: u64,
+    /// The complete chain, made when first drawn with (dropped when an image changes).
+    complete: Option<Option<Arc<Vec<TexLevel>>>>,
+}
+
+/// Unit 0's texture state.
+#[derive(Debug)]
+pub(crate) struct Textures {
+    objects: HashMap<GLuint, TextureObject>,
+    /// The default objects (name 0) of `GL_TEXTURE_1D` and `GL_TEXTURE_2D`.
+    defaults: [TextureObject; 2],
+    bound: [GLuint; 2],
+    env_mode: GLenum,
+    env_color: [f32; 4],
+    next_key: u64,
+    max_name: GLuint,
+}
+
+impl Default for Textures {
+    fn default() -> Self {
+        let default = |dims, key| TextureObject { dims, key, ..TextureObject::default() };
+        Self {
+            objects: HashMap::new(),
+            defaults: [default(1, 1), default(2, 2)],
+            bound: [0, 0],
+            env_mode: GL_MODULATE,
+            env_color: [0.0; 4],
+            next_key: 3,
+            max_name: 0,
+        }
+    }
+}
+
+/// 0 for `GL_TEXTURE_1D`, 1 for `GL_TEXTURE_2D`.
+fn target_index(target: GLenum) -> Option<usize> {
+    match target {
+        GL_TEXTURE_1D => Some(0),
+        GL_TEXTURE_2D => Some(1),
+        _ => None,
+    }
+}
+
+/// The base internal format of an `internalformat` argument (GL 1.1 table 3.15, with GL 1.0's
+/// component counts 1..4), `None` for one GL rejects.
+fn base_format(internal: GLint) -> Option<GLenum> {
+    match internal as GLenum {
+        1 | GL_LUMINANCE | GL_LUMINANCE8 => Some(GL_LUMINANCE),
+        2 | GL_LUMINANCE_ALPHA | GL_LUMINANCE8_ALPHA8 => Some(GL_LUMINANCE_ALPHA),
+        3 | GL_RGB | GL_RGB8 => Some(GL_RGB),
+        4 | GL_RGBA | GL_RGBA8 => Some(GL_RGBA),
+        GL_ALPHA | GL_ALPHA8 => Some(GL_ALPHA),
+        _ => None,
+    }
+}
+
+/// Components per pixel of a client `format`, `None` for one not taken.
+fn format_components(format: GLenum) -> Option<usize> {
+    match format {
+        GL_ALPHA | GL_LUMINANCE => Some(1),
+        GL_LUMINANCE_ALPHA => Some(2),
+        GL_RGB => Some(3),
+        GL_RGBA => Some(4),
+        _ => None,
+    }
+}
+
+/// Bytes per component of a client `type`, `None` for one not taken.
+fn type_size(type_: GLenum) -> Option<usize> {
+    match type_ {
+        GL_UNSIGNED_BYTE => Some(1),
+        GL_FLOAT => Some(4),
+        _ => None,
+    }
+}
+
+/// One client pixel's components as GL's RGBA (GL 1.1 §3.6.3: luminance to R, G and B, a
+/// missing alpha 1, a missing colour 0), each in [0, 1] as a byte.
+fn to_rgba(format: GLenum, c: &[f32]) -> [u8; 4] {
+    let byte = |x: f32| (x.clamp(0.0, 1.0) * 255.0).round() as u8;
+    let [r, g, b, a] = match format {
+        GL_ALPHA => [0.0, 0.0, 0.0, c[0]],
+        GL_LUMINANCE => [c[0], c[0], c[0], 1.0],
+        GL_LUMINANCE_ALPHA => [c[0], c[0], c[0], c[1]],
+        GL_RGB => [c[0], c[1], c[2], 1.0],
+        _ => [c[0], c[1], c[2], c[3]],
+    };
+    [byte(r), byte(g), byte(b), byte(a)]
+}
+
+/// An image's pixel layout in client memory, checked against GL's rules.
+#[derive(Clone, Copy, Debug)]
+struct ImageFormat {
+    format: GLenum,
+    type_: GLenum,
+    components: usize,
+    component_size: usize,
+}
+
+impl ImageFormat {
+    fn pixel_size(&self) -> usize {
+        self.components * self.component_size
+    }
+}
+
+impl Gl {
+    /// `glGenTextures`: `n` unused names into `textures` (short of room → `GL_INVALID_VALUE`,
+    /// as is `n` < 0).
+    pub fn gen_textures(&mut self, n: GLsizei, textures: &mut [GLuint]) {
+        if self.reject_inside_begin_end() {
+            return;
+        }
+        let Ok(count) = usize::try_from(n) else { return self.set_error(GL_INVALID_VALUE) };
+        if textures.len() < count {
+            return self.set_error(GL_INVALID_VALUE);
+        }
+        for name in &mut textures[..count] {
+            self.textures.max_name += 1;
+            *name = self.textures.max_name;
+            self.textures.objects.insert(*name, TextureObject::default());
+        }
+    }
+
+    /// `glBindTexture`: binds `texture` (0: the target's default) to `GL_TEXTURE_1D` or
+    /// `GL_TEXTURE_2D`, creating it on first use. Another target → `GL_INVALID_ENUM`; an
+    /// object made for the other target → `GL_INVALID_OPERATION`.
+    pub fn bind_texture(&mut self, target: GLenum, texture: GLuint) {
+        if self.compiled(|| ListCommand::BindTexture(target, texture)) || self.reject_inside_begin_end() {
+            return;
+        }
+        let Some(t) = target_index(target) else { return self.set_error(GL_INVALID_ENUM) };
+        if texture != 0 {
+            let next_key = &mut self.textures.next_key;
+            let object = self.textures.objects.entry(texture).or_default();
+            match object.dims {
+                0 => {
+                    object.dims = t as u8 + 1;
+                    object.key = *next_key;
+                    *next_key += 1;
+                }
+                d if usize::from(d) != t + 1 => return self.set_error(GL_INVALID_OPERATION),
+                _ => {}
+            }
+            self.textures.max_name = self.textures.max_name.max(texture);
+        }
+        self.textures.bound[t] = texture;
+        self.touch_state();
+    }
+
+    /// `glDeleteTextures`: deletes the named objects (0 and unused names are ignored); a bound
+    /// one is replaced by its target's default. `n` < 0 or a short slice → `GL_INVALID_VALUE`.
+    pub fn delete_textures(&mut self, n: GLsizei, textures: &[GLuint]) {
+        if self.reject_inside_begin_end() {
+            return;
+        }
+        let Ok(count) = usize::try_from(n) else { return self.set_error(GL_INVALID_VALUE) };
+        let Some(names) = textures.get(..count) else { return self.set_error(GL_INVALID_VALUE) };
+        for &name in names.iter().filter(|&&name| name != 0) {
+            if self.textures.objects.remove(&name).is_some() {
+                for bound in &mut self.textures.bound {
+                    if *bound == name {
+                        *bound = 0;
+                    }
+                }
+            }
+        }
+        self.touch_state();
+    }
+
+    /// `glIsTexture`: whether `texture` names an object that has been bound (a name only
+    /// generated is not yet a texture, as in Mesa).
+    pub fn is_texture(&mut self, texture: GLuint) -> GLboolean {
+        if self.reject_inside_begin_end() {
+            return GL_FALSE;
+        }
+        let bound = self.textures.objects.get(&texture).is_some_and(|o| o.dims != 0);
+        if bound {
+            GL_TRUE
+        } else {
+            GL_FALSE
+        }
+    }
+
+    /// `glTexImage2D`: defines level `level` of the bound 2D texture from `pixels` (any plain
+    /// data: bytes for `GL_UNSIGNED_BYTE`, floats for `GL_FLOAT`), unpacked with the pixel
+    /// store. An empty slice is C's NULL: the level gets undefined (zero) texels. Errors, in
+    /// Mesa's order: target (`GL_INVALID_ENUM`), level, internal format, sizes, border
+    /// (`GL_INVALID_VALUE`), format and type (`GL_INVALID_ENUM`), a slice shorter than the
+    /// image (`GL_INVALID_VALUE`). Only border 0 is taken.
+    #[allow(clippy::too_many_arguments)]
+    pub fn tex_image_2d<P: bytemuck::Pod>(
+        &mut self,
+        target: GLenum,
+        level: GLint,
+        internalformat: GLint,
+        width: GLsizei,
+        height: GLsizei,
+        border: GLint,
+        format: GLenum,
+        type_: GLenum,
+        pixels: &[P],
+    ) {
+        let bytes: &[u8] = bytemuck::cast_slice(pixels);
+        self.tex_image(2, target, level, internalformat, (width, height), border, (format, type_), bytes);
+    }
+
+    /// `glTexImage1D`: as [`Gl::tex_image_2d`] for the bound 1D texture (height 1).
+    #[allow(clippy::too_many_arguments)]
+    pub fn tex_image_1d<P: bytemuck::Pod>(
+        &mut self,
+        target: GLenum,
+        level: GLint,
+        internalformat: GLint,
+        width: GLsizei,
+        border: GLint,
+        format: GLenum,
+        type_: GLenum,
+        pixels: &[P],
+    ) {
+        let bytes: &[u8] = bytemuck::cast_slice(pixels);
+        self.tex_image(1, target, level, internalformat, (width, 1), border, (format, type_), bytes);
+    }
+
+    #[allow(clippy::too_many_arguments)]
+    fn tex_image(
+        &mut self,
+        dims: u8,
+        target: GLenum,
+        level: GLint,
+        internalformat: GLint,
+        (width, height): (GLsizei, GLsizei),
+        border: GLint,
+        (format, type_): (GLenum, GLenum),
+        bytes: &[u8],
+    ) {
+        let store = self.unpack_store();
+        if self.compiled(|| ListCommand::TexImage {
+            dims,
+            target,
+            level,
+            internalformat,
+            size: (width, height),
+            border,
+            format: (format, type_),
+            image: (store, bytes.to_vec()),
+        }) || self.reject_inside_begin_end()
+        {
+            return;
+        }
+        let wanted = if dims == 1 { GL_TEXTURE_1D } else { GL_TEXTURE_2D };
+        if target != wanted {
+            return self.set_error(GL_INVALID_ENUM);
+        }
+        let max_level = MAX_TEXTURE_SIZE.ilog2() as GLint;
+        let Some(base) = base_format(internalformat) else { return self.set_error(GL_INVALID_VALUE) };
+        let sizes_ok = (0..=MAX_TEXTURE_SIZE).contains(&width) && (0..=MAX_TEXTURE_SIZE).contains(&height);
+        if !(0..=max_level).contains(&level) || !sizes_ok || border != 0 {
+            return self.set_error(GL_INVALID_VALUE);
+        }
+        let Some(layout) = self.image_format(format, type_) else { return };
+        let (w, h) = (width as usize, height as usize);
+        let texels = if bytes.is_empty() {
+            vec![[0; 4]; w * h]
+        } else {
+            match self.unpack_texels(layout, w, h, bytes) {
+                Some(texels) => texels,
+                None => return self.set_error(GL_INVALID_VALUE),
+            }
+        };
+        let object = self.bound_object_mut(dims);
+        let level = level as usize;
+        if object.levels.len() <= level {
+            object.levels.resize(level + 1, None);
+            object.formats.resize(level + 1, 0);
+        }
+        object.levels[level] = Some(TexLevel { width: w as u32, height: h as u32, texels });
+        object.formats[level] = base;
+        self.image_changed(dims);
+    }
+
+    /// `glTexSubImage2D`: replaces a rectangle of an existing level. Errors: target
+    /// (`GL_INVALID_ENUM`), a level not defined (`GL_INVALID_OPERATION`), a rectangle outside
+    /// it or negative sizes (`GL_INVALID_VALUE`), format and type (`GL_INVALID_ENUM`).
+    #[allow(clippy::too_many_arguments)]
+    pub fn tex_sub_image_2d<P: bytemuck::Pod>(
+        &mut self,
+        target: GLenum,
+        level: GLint,
+        xoffset: GLint,
+        yoffset: GLint,
+        width: GLsizei,
+        height: GLsizei,
+        format: GLenum,
+        type_: GLenum,
+        pixels: &[P],
+    ) {
+        let bytes: &[u8] = bytemuck::cast_slice(pixels);
+        let store = self.unpack_store();
+        if self.compiled(|| ListCommand::TexSubImage {
+            target,
+            level,
+            offset: (xoffset, yoffset),
+            size: (width, height),
+            format: (format, type_),
+            image: (store, bytes.to_vec()),
+        }) || self.reject_inside_begin_end()
+        {
+            return;
+        }
+        if target != GL_TEXTURE_2D {
+            return self.set_error(GL_INVALID_ENUM);
+        }
+        let defined = usize::try_from(level)
+            .ok()
+            .and_then(|l| self.bound_object(2).levels.get(l).cloned().flatten())
+            .map(|l| (l.width as i64, l.height as i64));
+        let Some((lw, lh)) = defined else { return self.set_error(GL_INVALID_OPERATION) };
+        let (x, y, w, h) = (i64::from(xoffset), i64::from(yoffset), i64::from(width), i64::from(height));
+        if w < 0 || h < 0 || x < 0 || y < 0 || x + w > lw || y + h > lh {
+            return self.set_error(GL_INVALID_VALUE);
+        }
+        let Some(layout) = self.image_format(format, type_) else { return };
+        let Some(texels) = self.unpack_texels(layout, w as usize, h as usize, bytes) else {
+            return self.set_error(GL_INVALID_VALUE);
+        };
+        let level = self.bound_object_mut(2).levels[level as usize].as_mut().expect("checked above");
+        for row in 0..h as usize {
+            let start = (y as usize + row) * level.width as usize + x as usize;
+            level.texels[start..start + w as usize].copy_from_slice(&texels[row * w as usize..][..w as usize]);
+        }
+        self.image_changed(2);
+    }
+
+    /// `glTexParameteri` for `GL_TEXTURE_MIN_FILTER`, `GL_TEXTURE_MAG_FILTER`,
+    /// `GL_TEXTURE_WRAP_S` and `GL_TEXTURE_WRAP_T` of the bound object. Another target or
+    /// name, or a value the name does not take → `GL_INVALID_ENUM`.
+    pub fn tex_parameteri(&mut self, target: GLenum, pname: GLenum, param: GLint) {
+        if self.compiled(|| ListCommand::TexParameter(target, pname, param)) || self.reject_inside_begin_end() {
+            return;
+        }
+        let Some(t) = target_index(target) else { return self.set_error(GL_INVALID_ENUM) };
+        let value = param as GLenum;
+        let mipmap_filters = GL_NEAREST_MIPMAP_NEAREST..=GL_LINEAR_MIPMAP_LINEAR;
+        let ok = match pname {
+            GL_TEXTURE_MIN_FILTER => value == GL_NEAREST || value == GL_LINEAR || mipmap_filters.contains(&value),
+            GL_TEXTURE_MAG_FILTER => value == GL_NEAREST || value == GL_LINEAR,
+            GL_TEXTURE_WRAP_S | GL_TEXTURE_WRAP_T => matches!(value, GL_REPEAT | GL_CLAMP | GL_CLAMP_TO_EDGE),
+            _ => false,
+        };
+        if !ok {
+            return self.set_error(GL_INVALID_ENUM);
+        }
+        let object = self.bound_object_mut(t as u8 + 1);
+        let field = match pname {
+            GL_TEXTURE_MIN_FILTER => &mut object.params.min_filter,
+            GL_TEXTURE_MAG_FILTER => &mut object.params.mag_filter,
+            GL_TEXTURE_WRAP_S => &mut object.params.wrap_s,
+            _ => &mut object.params.wrap_t,
+        };
+        *field = value;
+        // The complete chain depends on whether the filter reads mipmaps.
+        object.complete = None;
+        self.touch_state();
+    }
+
+    /// `glTexParameterf`: as [`Gl::tex_parameteri`] with the enum passed as a float.
+    pub fn tex_parameterf(&mut self, target: GLenum, pname: GLenum, param: GLfloat) {
+        self.tex_parameteri(target, pname, param as GLint);
+    }
+
+    /// `glTexEnvi` for `GL_TEXTURE_ENV_MODE`: `GL_MODULATE` (initial), `GL_DECAL`, `GL_BLEND`,
+    /// `GL_REPLACE` or `GL_ADD`. Another target, name or mode → `GL_INVALID_ENUM`.
+    pub fn tex_envi(&mut self, target: GLenum, pname: GLenum, param: GLint) {
+        if self.compiled(|| ListCommand::TexEnv(target, pname, vec![param as f32])) || self.reject_inside_begin_end() {
+            return;
+        }
+        let mode = param as GLenum;
+        let known = matches!(mode, GL_MODULATE | GL_DECAL | GL_BLEND | GL_REPLACE | GL_ADD);
+        if target != GL_TEXTURE_ENV || pname != GL_TEXTURE_ENV_MODE || !known {
+            return self.set_error(GL_INVALID_ENUM);
+        }
+        self.textures.env_mode = mode;
+        self.touch_state();
+    }
+
+    /// `glTexEnvf`: as [`Gl::tex_envi`].
+    pub fn tex_envf(&mut self, target: GLenum, pname: GLenum, param: GLfloat) {
+        self.tex_envi(target, pname, param as GLint);
+    }
+
+    /// `glTexEnvfv`: `GL_TEXTURE_ENV_COLOR` (4 values, clamped to [0, 1]) or
+    /// `GL_TEXTURE_ENV_MODE` (the first value). A short slice → `GL_INVALID_VALUE`.
+    pub fn tex_envfv(&mut self, target: GLenum, pname: GLenum, params: &[GLfloat]) {
+        if pname == GL_TEXTURE_ENV_MODE {
+            let Some(&mode) = params.first() else { return self.set_error(GL_INVALID_VALUE) };
+            return self.tex_envi(target, pname, mode as GLint);
+        }
+        if self.compiled(|| ListCommand::TexEnv(target, pname, params.to_vec())) || self.reject_inside_begin_end() {
+            return;
+        }
+        if target != GL_TEXTURE_ENV || pname != GL_TEXTURE_ENV_COLOR {
+            return self.set_error(GL_INVALID_ENUM);
+        }
+        let Some(color) = self.needs::<4>(params) else { return };
+        self.textures.env_color = color.map(|c| c.clamp(0.0, 1.0));
+        self.touch_state();
+    }
+
+    /// The texture the next primitive is drawn with: the bound object of the enabled target
+    /// (`GL_TEXTURE_2D` before `GL_TEXTURE_1D`, GL 1.1 §3.8.10), if its mipmap chain is
+    /// complete (§3.8.9; an incomplete texture disables texturing).
+    pub(crate) fn bound_texture(&mut self) -> Option<BoundTexture> {
+        let dims = if self.capability(GL_TEXTURE_2D) {
+            2
+        } else if self.capability(GL_TEXTURE_1D) {
+            1
+        } else {
+            return None;
+        };
+        let matrix = self.matrices.texture();
+        let (env_mode, env_color) = (self.textures.env_mode, self.textures.env_color);
+        let object = self.bound_object_mut(dims);
+        let levels = object
+            .complete
+            .get_or_insert_with(|| complete_chain(&object.levels, &object.formats, &object.params))
+            .clone()?;
+        Some(BoundTexture {
+            key: object.key,
+            levels,
+            base_format: object.formats[0],
+            params: object.params,
+            env_mode,
+            env_color,
+            matrix,
+            one_d: dims == 1,
+        })
+    }
+
+    /// `glGetIntegerv(GL_TEXTURE_BINDING_1D/2D)`.
+    pub(crate) fn texture_query(&self, pname: GLenum) -> Option<f64> {
+        match pname {
+            GL_TEXTURE_BINDING_1D => Some(f64::from(self.textures.bound[0])),
+            GL_TEXTURE_BINDING_2D => Some(f64::from(self.textures.bound[1])),
+            GL_MAX_TEXTURE_SIZE => Some(f64::from(MAX_TEXTURE_SIZE)),
+            _ => None,
+        }
+    }
+
+    fn bound_object(&self, dims: u8) -> &TextureObject {
+        let t = usize::from(dims - 1);
+        match self.textures.bound[t] {
+            0 => &self.textures.defaults[t],
+            name => &self.textures.objects[&name],
+        }
+    }
+
+    fn bound_object_mut(&mut self, dims: u8) -> &mut TextureObject {
+        let t = usize::from(dims - 1);
+        match self.textures.bound[t] {
+            0 => &mut self.textures.defaults[t],
+            name => self.textures.objects.get_mut(&name).expect("a bound texture exists"),
+        }
+    }
+
+    /// A level of the bound object changed: a new key (the renderer uploads again) and chain.
+    fn image_changed(&mut self, dims: u8) {
+        let key = self.textures.next_key;
+        self.textures.next_key += 1;
+        let object = self.bound_object_mut(dims);
+        object.key = key;
+        object.complete = None;
+        self.touch_state();
+    }
+
+    /// Checks `format` and `type_` (`GL_INVALID_ENUM` otherwise).
+    fn image_format(&mut self, format: GLenum, type_: GLenum) -> Option<ImageFormat> {
+        match (format_components(format), type_size(type_)) {
+            (Some(components), Some(component_size)) => Some(ImageFormat { format, type_, components, component_size }),
+            _ => {
+                self.set_error(GL_INVALID_ENUM);
+                None
+            }
+        }
+    }
+
+    /// Unpacks a `w`×`h` image from client memory to RGBA8, or `None` if `bytes` is short.
+    fn unpack_texels(&self, layout: ImageFormat, w: usize, h: usize, bytes: &[u8]) -> Option<Vec<[u8; 4]>> {
+        let store = self.unpack_store();
+        let size = layout.pixel_size();
+        let stride = store.row_stride(w, size);
+        let first = store.first_byte(stride, size);
+        if w == 0 || h == 0 {
+            return Some(Vec::new());
+        }
+        let needed = first + (h - 1) * stride + w * size;
+        if bytes.len() < needed {
+            return None;
+        }
+        let mut texels = Vec::with_capacity(w * h);
+        let mut components = [0.0f32; 4];
+        for row in 0..h {
+            let row_bytes = &bytes[first + row * stride..][..w * size];
+            for pixel in row_bytes.chunks_exact(size) {
+                for (c, value) in pixel.chunks_exact(layout.component_size).zip(&mut components) {
+                    *value = match layout.type_ {
+                        GL_FLOAT => f32::from_ne_bytes([c[0], c[1], c[2], c[3]]),
+                        _ => f32::from(c[0]) / 255.0,
+                    };
+                }
+                texels.push(to_rgba(layout.format, &components));
+            }
+        }
+        Some(texels)
+    }
+}
+
+/// Level 0 and, when the filter uses mipmaps, every level down to 1×1 with the sizes and base
+/// format GL requires (GL 1.1 §3.8.9); `None` when that chain is incomplete.
+fn complete_chain(levels: &[Option<TexLevel>], formats: &[GLenum], params: &TexParams) -> Option<Arc<Vec<TexLevel>>> {
+    let base = levels.first()?.as_ref()?;
+    if base.width == 0 || base.height == 0 {
+        return None;
+    }
+    if !params.uses_mipmaps() {
+        return Some(Arc::new(vec![base.clone()]));
+    }
+    let count = base.width.max(base.height).ilog2() as usize + 1;
+    let mut chain = Vec::with_capacity(count);
+    for i in 0..count {
+        let level = levels.get(i)?.as_ref()?;
+        let (w, h) = ((base.width >> i).max(1), (base.height >> i).max(1));
+        if level.width != w || level.height != h || formats[i] != formats[0] {
+            return None;
+        }
+        chain.push(level.clone());
+    }
+    Some(Arc::new(chain))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn checker(gl: &mut Gl) -> GLuint {
+        let mut name = [0];
+        gl.gen_textures(1, &mut name);
+        gl.bind_texture(GL_TEXTURE_2D, name[0]);
+        let texels: [u8; 12] = [255, 0, 0, 0, 255, 0, 0, 0, 255, 255, 255, 255];
+        gl.pixel_storei(GL_UNPACK_ALIGNMENT, 1);
+        gl.tex_image_2d(GL_TEXTURE_2D, 0, GL_RGB as i32, 2, 2, 0, GL_RGB, GL_UNSIGNED_BYTE, &texels);
+        name[0]
+    }
+
+    #[test]
+    fn an_incomplete_mipmap_chain_disables_texturing() {
+        let mut gl = Gl::new(4, 4);
+        checker(&mut gl);
+        gl.enable(GL_TEXTURE_2D);
+        // The initial minification filter reads mipmaps, and only level 0 exists.
+        assert!(gl.bound_texture().is_none());
+        gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR as i32);
+        let bound = gl.bound_texture().expect("complete");
+        assert_eq!(bound.levels[0].texels[1], [0, 255, 0, 255]);
+        assert_eq!(bound.base_format, GL_RGB);
+        assert_eq!(gl.get_error(), GL_NO_ERROR);
+    }
+
+    #[test]
+    fn rows_are_unpacked_with_the_alignment() {
+        let mut gl = Gl::new(4, 4);
+        let mut name = [0];
+        gl.gen_textures(1, &mut name);
+        gl.bind_texture(GL_TEXTURE_2D, name[0]);
+        gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST as i32);
+        // 1×2 luminance with the default alignment 4: the second row starts at byte 4.
+        gl.tex_image_2d(GL_TEXTURE_2D, 0, 1, 1, 2, 0, GL_LUMINANCE, GL_UNSIGNED_BYTE, &[10u8, 0, 0, 0, 20]);
+        gl.enable(GL_TEXTURE_2D);
+        let bound = gl.bound_texture().expect("complete");
+        assert_eq!(bound.levels[0].texels, vec![[10, 10, 10, 255], [20, 20, 20, 255]]);
+        // Too short for the aligned layout.
+        gl.tex_image_2d(GL_TEXTURE_2D, 0, 1, 1, 2, 0, GL_LUMINANCE, GL_UNSIGNED_BYTE, &[10u8, 20]);
+        assert_eq!(gl.get_error(), GL_INVALID_VALUE);
+    }
+
+    #[test]
+    fn texture_errors() {
+        let mut gl = Gl::new(4, 4);
+        gl.bind_texture(0x1234, 1);
+        assert_eq!(gl.get_error(), GL_INVALID_ENUM);
+        gl.bind_texture(GL_TEXTURE_1D, 7);
+        gl.bind_texture(GL_TEXTURE_2D, 7);
+        assert_eq!(gl.get_error(), GL_INVALID_OPERATION);
+        gl.tex_image_2d(GL_TEXTURE_2D, 0, 5, 1, 1, 0, GL_RGB, GL_UNSIGNED_BYTE, &[0u8; 4]);
+        assert_eq!(gl.get_error(), GL_INVALID_VALUE);
+        gl.tex_image_2d(GL_TEXTURE_2D, 0, 3, 1, 1, 0, 0x1234, GL_UNSIGNED_BYTE, &[0u8; 4]);
+        assert_eq!(gl.get_error(), GL_INVALID_ENUM);
+        gl.tex_image_2d(GL_TEXTURE_2D, -1, 3, 1, 1, 0, GL_RGB, GL_UNSIGNED_BYTE, &[0u8; 4]);
+        assert_eq!(gl.get_error(), GL_INVALID_VALUE);
+        gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR_MIPMAP_LINEAR as i32);
+        assert_eq!(gl.get_error(), GL_INVALID_ENUM);
+        gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_LINEAR as i32);
+        assert_eq!(gl.get_error(), GL_INVALID_ENUM);
+        gl.tex_sub_image_2d(GL_TEXTURE_2D, 3, 0, 0, 1, 1, GL_RGB, GL_UNSIGNED_BYTE, &[0u8; 4]);
+        assert_eq!(gl.get_error(), GL_INVALID_OPERATION);
+        let mut names = [0; 2];
+        gl.gen_textures(-1, &mut names);
+        assert_eq!(gl.get_error(), GL_INVALID_VALUE);
+        gl.gen_textures(2, &mut names);
+        assert_eq!(gl.is_texture(names[0]), GL_FALSE);
+        gl.bind_texture(GL_TEXTURE_2D, names[0]);
+        assert_eq!(gl.is_texture(names[0]), GL_TRUE);
+        gl.delete_textures(2, &names);
+        assert_eq!(gl.is_texture(names[0]), GL_FALSE);
+        assert_eq!(gl.get_error(), GL_NO_ERROR);
+    }
+
+    #[test]
+    fn sub_images_replace_a_rectangle() {
+        let mut gl = Gl::new(4, 4);
+        checker(&mut gl);
+        gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST as i32);
+        gl.tex_sub_image_2d(GL_TEXTURE_2D, 0, 1, 1, 1, 1, GL_RGBA, GL_FLOAT, &[0.5f32, 0.5, 0.5, 1.0]);
+        gl.enable(GL_TEXTURE_2D);
+        let bound = gl.bound_texture().expect("complete");
+        assert_eq!(bound.levels[0].texels[3], [128, 128, 128, 255]);
+        assert_eq!(gl.get_error(), GL_NO_ERROR);
+    }
+}

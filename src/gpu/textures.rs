@@ -1,0 +1,205 @@
+//! GL textures on wgpu: each [`BoundTexture`] of a frame uploaded once per version (its key),
+//! a sampler per GL filter and wrap combination, and the texture environment as a uniform
+//! (`shaders/raster.wgsl` applies GL 1.1 tables 3.17 and 3.18 per fragment).
+
+use crate::gl::consts::*;
+use crate::gl::types::GLenum;
+use crate::gl::{BoundTexture, TexParams};
+use std::collections::HashMap;
+use wgpu::util::DeviceExt;
+
+/// The texture environment as the fragment shader reads it (`TexEnv` in `raster.wgsl`).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
+pub(crate) struct GpuTexEnv {
+    /// 0 none, 1 `GL_MODULATE`, 2 `GL_DECAL`, 3 `GL_BLEND`, 4 `GL_REPLACE`, 5 `GL_ADD`.
+    pub mode: u32,
+    /// 0 `GL_ALPHA`, 1 `GL_LUMINANCE`, 2 `GL_LUMINANCE_ALPHA`, 3 `GL_RGB`, 4 `GL_RGBA`.
+    pub format: u32,
+    /// `GL_CLAMP` in s and in t (the shader clamps the coordinate to [0, 1]).
+    pub clamp: [u32; 2],
+    /// `GL_TEXTURE_ENV_COLOR`.
+    pub color: [f32; 4],
+}
+
+impl GpuTexEnv {
+    fn of(texture: &BoundTexture) -> Self {
+        let mode = match texture.env_mode {
+            GL_MODULATE => 1,
+            GL_DECAL => 2,
+            GL_BLEND => 3,
+            GL_REPLACE => 4,
+            _ => 5,
+        };
+        let format = match texture.base_format {
+            GL_ALPHA => 0,
+            GL_LUMINANCE => 1,
+            GL_LUMINANCE_ALPHA => 2,
+            GL_RGB => 3,
+            _ => 4,
+        };
+        let clamp = |w: GLenum| u32::from(w == GL_CLAMP);
+        let clamp_t = if texture.one_d { 0 } else { clamp(texture.params.wrap_t) };
+        Self { mode, format, clamp: [clamp(texture.params.wrap_s), clamp_t], color: texture.env_color }
+    }
+}
+
+/// The bind group layout of `raster.wgsl`'s group 0: image, sampler, environment.
+pub(crate) fn bind_group_layout(device: &wgpu::Device) -> wgpu::BindGroupLayout {
+    let fragment = wgpu::ShaderStages::FRAGMENT;
+    device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+        label: Some("texture"),
+        entries: &[
+            wgpu::BindGroupLayoutEntry {
+                binding: 0,
+                visibility: fragment,
+                ty: wgpu::BindingType::Texture {
+                    sample_type: wgpu::TextureSampleType::Float { filterable: true },
+                    view_dimension: wgpu::TextureViewDimension::D2,
+                    multisampled: false,
+                },
+                count: None,
+            },
+            wgpu::BindGroupLayoutEntry {
+                binding: 1,
+                visibility: fragment,
+                ty: wgpu::BindingType::Sampler(wgpu::SamplerBindingType::Filtering),
+                count: None,
+            },
+            super::device::uniform(2, fragment, false),
+        ],
+    })
+}
+
+/// Uploaded textures and samplers, kept between frames.
+#[derive(Default)]
+pub(crate) struct TextureCache {
+    views: HashMap<u64, wgpu::TextureView>,
+    samplers: HashMap<(TexParams, bool), wgpu::Sampler>,
+}
+
+impl TextureCache {
+    /// One bind group per texture of the frame (in the order of `textures`), then one for
+    /// batches without a texture. Textures of earlier frames not drawn now are dropped.
+    pub(crate) fn bind_groups(
+        &mut self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        layout: &wgpu::BindGroupLayout,
+        textures: &[BoundTexture],
+    ) -> Vec<wgpu::BindGroup> {
+        self.views.retain(|key, _| textures.iter().any(|t| t.key == *key));
+        let mut groups: Vec<wgpu::BindGroup> = textures
+            .iter()
+            .map(|t| {
+                let view = self.views.entry(t.key).or_insert_with(|| upload(device, queue, t)).clone();
+                let border = device.features().contains(wgpu::Features::ADDRESS_MODE_CLAMP_TO_BORDER);
+                let one_d = t.one_d;
+                let sampler =
+                    self.samplers.entry((t.params, one_d)).or_insert_with(|| sampler(device, &t.params, one_d, border));
+                bind_group(device, layout, &view, sampler, GpuTexEnv::of(t))
+            })
+            .collect();
+        let blank = self.views.entry(0).or_insert_with(|| blank_view(device, queue)).clone();
+        let none = self.samplers.entry((TexParams::default(), false)).or_insert_with(|| {
+            sampler(device, &TexParams { min_filter: GL_NEAREST, ..TexParams::default() }, false, false)
+        });
+        groups.push(bind_group(device, layout, &blank, none, GpuTexEnv::default()));
+        groups
+    }
+}
+
+fn bind_group(
+    device: &wgpu::Device,
+    layout: &wgpu::BindGroupLayout,
+    view: &wgpu::TextureView,
+    sampler: &wgpu::Sampler,
+    env: GpuTexEnv,
+) -> wgpu::BindGroup {
+    let uniform = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+        label: Some("texture env"),
+        contents: bytemuck::bytes_of(&env),
+        usage: wgpu::BufferUsages::UNIFORM,
+    });
+    device.create_bind_group(&wgpu::BindGroupDescriptor {
+        label: Some("texture"),
+        layout,
+        entries: &[
+            wgpu::BindGroupEntry { binding: 0, resource: wgpu::BindingResource::TextureView(view) },
+            wgpu::BindGroupEntry { binding: 1, resource: wgpu::BindingResource::Sampler(sampler) },
+            wgpu::BindGroupEntry { binding: 2, resource: uniform.as_entire_binding() },
+        ],
+    })
+}
+
+/// The texture's levels as an RGBA8 wgpu texture; GL's first row (t = 0) is row 0.
+fn upload(device: &wgpu::Device, queue: &wgpu::Queue, texture: &BoundTexture) -> wgpu::TextureView {
+    let base = &texture.levels[0];
+    let size = wgpu::Extent3d { width: base.width, height: base.height, depth_or_array_layers: 1 };
+    let gpu = device.create_texture(&wgpu::TextureDescriptor {
+        label: Some("gl texture"),
+        size,
+        mip_level_count: texture.levels.len() as u32,
+        sample_count: 1,
+        dimension: wgpu::TextureDimension::D2,
+        format: wgpu::TextureFormat::Rgba8Unorm,
+        usage: wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST,
+        view_formats: &[],
+    });
+    for (mip, level) in texture.levels.iter().enumerate() {
+        queue.write_texture(
+            wgpu::TexelCopyTextureInfo {
+                texture: &gpu,
+                mip_level: mip as u32,
+                origin: wgpu::Origin3d::ZERO,
+                aspect: wgpu::TextureAspect::All,
+            },
+            bytemuck::cast_slice(&level.texels),
+            wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(4 * level.width), rows_per_image: None },
+            wgpu::Extent3d { width: level.width, height: level.height, depth_or_array_layers: 1 },
+        );
+    }
+    gpu.create_view(&Default::default())
+}
+
+/// A white texel, bound where no texture is (the shader ignores it).
+fn blank_view(device: &wgpu::Device, queue: &wgpu::Queue) -> wgpu::TextureView {
+    let texture = BoundTexture::blank();
+    upload(device, queue, &texture)
+}
+
+/// GL's filters and wrap modes as a wgpu sampler (GL 1.1 §3.8.5–3.8.8). `GL_CLAMP` is the
+/// border mode (transparent black, GL's initial border colour) where the device has it, which
+/// is GL's result for coordinates in [0, 1]; a 1D texture ignores t.
+fn sampler(device: &wgpu::Device, params: &TexParams, one_d: bool, border: bool) -> wgpu::Sampler {
+    let filter = |f: GLenum| if f == GL_NEAREST { wgpu::FilterMode::Nearest } else { wgpu::FilterMode::Linear };
+    let (min, mip) = match params.min_filter {
+        GL_NEAREST => (wgpu::FilterMode::Nearest, None),
+        GL_LINEAR => (wgpu::FilterMode::Linear, None),
+        GL_NEAREST_MIPMAP_NEAREST => (wgpu::FilterMode::Nearest, Some(wgpu::MipmapFilterMode::Nearest)),
+        GL_LINEAR_MIPMAP_NEAREST => (wgpu::FilterMode::Linear, Some(wgpu::MipmapFilterMode::Nearest)),
+        GL_NEAREST_MIPMAP_LINEAR => (wgpu::FilterMode::Nearest, Some(wgpu::MipmapFilterMode::Linear)),
+        _ => (wgpu::FilterMode::Linear, Some(wgpu::MipmapFilterMode::Linear)),
+    };
+    let linear = params.min_filter != GL_NEAREST || params.mag_filter != GL_NEAREST;
+    let wrap = |w: GLenum| match w {
+        GL_REPEAT => wgpu::AddressMode::Repeat,
+        // With nearest filtering GL_CLAMP never reaches the border: GL_CLAMP_TO_EDGE.
+        GL_CLAMP if border && linear => wgpu::AddressMode::ClampToBorder,
+        _ => wgpu::AddressMode::ClampToEdge,
+    };
+    let (u, v) = (wrap(params.wrap_s), if one_d { wgpu::AddressMode::Repeat } else { wrap(params.wrap_t) });
+    let uses_border = u == wgpu::AddressMode::ClampToBorder || v == wgpu::AddressMode::ClampToBorder;
+    device.create_sampler(&wgpu::SamplerDescriptor {
+        label: Some("gl sampler"),
+        address_mode_u: u,
+        address_mode_v: v,
+        mag_filter: filter(params.mag_filter),
+        min_filter: min,
+        mipmap_filter: mip.unwrap_or(wgpu::MipmapFilterMode::Nearest),
+        // Without a mipmap filter only level 0 is read (the chain then has one level anyway).
+        lod_max_clamp: if mip.is_some() { 32.0 } else { 0.0 },
+        border_color: uses_border.then_some(wgpu::SamplerBorderColor::TransparentBlack),
+        ..Default::default()
+    })
+}
