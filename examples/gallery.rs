@@ -35,6 +35,8 @@ mod ex5_bird;
 mod flattwoviewports;
 #[path = "linespoints.rs"]
 mod linespoints;
+#[path = "mipnurbs.rs"]
+mod mipnurbs;
 #[path = "lists.rs"]
 mod lists;
 #[path = "operations.rs"]
@@ -57,7 +59,7 @@ mod trimmed;
 /// A built-in program: its name and how to build it.
 type Program = (&'static str, fn() -> App);
 
-const PROGRAMS: [Program; 22] = [
+const PROGRAMS: [Program; 23] = [
     ("bezcurve", bezcurve::app),
     ("bezsurf", bezsurf::app),
     ("bcurve", bcurve::app),
@@ -79,6 +81,7 @@ const PROGRAMS: [Program; 22] = [
     ("teapot", teapot::app),
     ("lists", lists::app),
     ("texsurf", texsurf::app),
+    ("mipnurbs", mipnurbs::app),
     ("operations", operations::app),
 ];
 

@@ -34,6 +34,8 @@ mod flattwoviewports;
 mod linespoints;
 #[path = "../../examples/lists.rs"]
 mod lists;
+#[path = "../../examples/mipnurbs.rs"]
+mod mipnurbs;
 #[path = "../../examples/operations.rs"]
 mod operations;
 #[path = "../../examples/outline.rs"]
@@ -209,6 +211,13 @@ fn display_lists_match_mesa() {
 #[test]
 fn textured_surface_matches_mesa() {
     check("texsurf", texsurf::app, 0.0);
+}
+
+/// A NURBS surface with a texture-coordinate companion surface, textured through
+/// `gluBuild2DMipmaps` and LINEAR_MIPMAP_LINEAR under perspective (`MipNurbs.c`).
+#[test]
+fn mipmapped_nurbs_surface_matches_mesa() {
+    check("mipnurbs", mipnurbs::app, 0.0);
 }
 
 /// GLUT's solid teapot (32 bicubic patches through glMap2f/glEvalMesh2) against `Teapot.c`.
