@@ -304,8 +304,9 @@ impl Gl {
     /// `glTexImage2D`: defines level `level` of the bound 2D texture from `pixels` (any plain
     /// data: bytes for `GL_UNSIGNED_BYTE`, floats for `GL_FLOAT`), unpacked with the pixel
     /// store. An empty slice is C's NULL: the level gets undefined (zero) texels. Errors, in
-    /// Mesa's order: target (`GL_INVALID_ENUM`), level, internal format, sizes, border
-    /// (`GL_INVALID_VALUE`), format and type (`GL_INVALID_ENUM`), a slice shorter than the
+    /// Mesa's order (checked against Mesa 22 in `tests/reference/calls/cases/textures.calls`):
+    /// target (`GL_INVALID_ENUM`), level, sizes, border (`GL_INVALID_VALUE`), format and type
+    /// (`GL_INVALID_ENUM`), internal format (`GL_INVALID_VALUE`), a slice shorter than the
     /// image (`GL_INVALID_VALUE`). Only border 0 is taken.
     #[allow(clippy::too_many_arguments)]
     pub fn tex_image_2d<P: bytemuck::Pod>(
@@ -372,12 +373,12 @@ impl Gl {
             return self.set_error(GL_INVALID_ENUM);
         }
         let max_level = MAX_TEXTURE_SIZE.ilog2() as GLint;
-        let Some(base) = base_format(internalformat) else { return self.set_error(GL_INVALID_VALUE) };
         let sizes_ok = (0..=MAX_TEXTURE_SIZE).contains(&width) && (0..=MAX_TEXTURE_SIZE).contains(&height);
         if !(0..=max_level).contains(&level) || !sizes_ok || border != 0 {
             return self.set_error(GL_INVALID_VALUE);
         }
         let Some(layout) = self.image_format(format, type_) else { return };
+        let Some(base) = base_format(internalformat) else { return self.set_error(GL_INVALID_VALUE) };
         let (w, h) = (width as usize, height as usize);
         let texels = if bytes.is_empty() {
             vec![[0; 4]; w * h]

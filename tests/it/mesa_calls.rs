@@ -61,6 +61,37 @@ fn enum_value(token: &str) -> u32 {
         ("GL_3_BYTES", GL_3_BYTES),
         ("GL_4_BYTES", GL_4_BYTES),
         ("GL_DOUBLE", GL_DOUBLE),
+        ("GL_TEXTURE_1D", GL_TEXTURE_1D),
+        ("GL_RGB", GL_RGB),
+        ("GL_RGBA", GL_RGBA),
+        ("GL_LUMINANCE", GL_LUMINANCE),
+        ("GL_LUMINANCE_ALPHA", GL_LUMINANCE_ALPHA),
+        ("GL_ALPHA", GL_ALPHA),
+        ("GL_TEXTURE_MIN_FILTER", GL_TEXTURE_MIN_FILTER),
+        ("GL_TEXTURE_MAG_FILTER", GL_TEXTURE_MAG_FILTER),
+        ("GL_TEXTURE_WRAP_S", GL_TEXTURE_WRAP_S),
+        ("GL_TEXTURE_WRAP_T", GL_TEXTURE_WRAP_T),
+        ("GL_NEAREST", GL_NEAREST),
+        ("GL_LINEAR", GL_LINEAR),
+        ("GL_LINEAR_MIPMAP_LINEAR", GL_LINEAR_MIPMAP_LINEAR),
+        ("GL_NEAREST_MIPMAP_NEAREST", GL_NEAREST_MIPMAP_NEAREST),
+        ("GL_REPEAT", GL_REPEAT),
+        ("GL_CLAMP", GL_CLAMP),
+        ("GL_CLAMP_TO_EDGE", GL_CLAMP_TO_EDGE),
+        ("GL_TEXTURE_ENV", GL_TEXTURE_ENV),
+        ("GL_TEXTURE_ENV_MODE", GL_TEXTURE_ENV_MODE),
+        ("GL_TEXTURE_ENV_COLOR", GL_TEXTURE_ENV_COLOR),
+        ("GL_MODULATE", GL_MODULATE),
+        ("GL_DECAL", GL_DECAL),
+        ("GL_BLEND", GL_BLEND),
+        ("GL_REPLACE", GL_REPLACE),
+        ("GL_ADD", GL_ADD),
+        ("GL_UNPACK_ALIGNMENT", GL_UNPACK_ALIGNMENT),
+        ("GL_UNPACK_ROW_LENGTH", GL_UNPACK_ROW_LENGTH),
+        ("GL_UNPACK_SKIP_ROWS", GL_UNPACK_SKIP_ROWS),
+        ("GL_PACK_ALIGNMENT", GL_PACK_ALIGNMENT),
+        ("GL_TEXTURE_BINDING_1D", GL_TEXTURE_BINDING_1D),
+        ("GL_TEXTURE_BINDING_2D", GL_TEXTURE_BINDING_2D),
     ];
     if let Some((_, v)) = named.iter().find(|(n, _)| *n == token) {
         return *v;
@@ -90,6 +121,11 @@ fn enum_value(token: &str) -> u32 {
         return u32::from_str_radix(hex, 16).unwrap_or_else(|_| panic!("bad enum {token}"));
     }
     token.parse().unwrap_or_else(|_| panic!("unknown enum {token}"))
+}
+
+/// Floats as the bytes C's array holds (native byte order).
+fn bytemuck_floats(values: &[f32]) -> Vec<u8> {
+    values.iter().flat_map(|v| v.to_ne_bytes()).collect()
 }
 
 /// Splits a script line into tokens, with `[` and `]` always separate.
@@ -245,6 +281,42 @@ impl Runner {
                 let bytes: Vec<u8> = a.floats().iter().map(|&b| b as u8).collect();
                 gl.call_lists(n, type_, &bytes);
             }
+            "gen_textures" => {
+                let n = a.int();
+                let mut names = [0; 16];
+                gl.gen_textures(n, &mut names[..usize::try_from(n).unwrap_or(0).min(16)]);
+                values.extend(names.iter().take(usize::try_from(n).unwrap_or(0).min(16)).map(u32::to_string));
+            }
+            "bind_texture" => gl.bind_texture(a.e(), a.int() as u32),
+            "delete_textures" => {
+                let n = a.int();
+                let names: Vec<u32> = a.floats().iter().map(|&f| f as u32).collect();
+                gl.delete_textures(n, &names);
+            }
+            "is_texture" => values.push(gl.is_texture(a.int() as u32).to_string()),
+            "tex_image_2d" | "tex_sub_image_2d" => {
+                let sub = cmd == "tex_sub_image_2d";
+                // tex_image_2d: level internalformat width height border;
+                // tex_sub_image_2d: level xoffset yoffset width height.
+                let (target, level) = (a.e(), a.int());
+                let p = if sub { a.int() } else { a.e() as i32 };
+                let (q, w, h) = (a.int(), a.int(), a.int());
+                let (format, type_) = (a.e(), a.e());
+                let numbers = a.floats();
+                let bytes: Vec<u8> = if type_ == GL_FLOAT {
+                    bytemuck_floats(&numbers)
+                } else {
+                    numbers.iter().map(|&x| x as u8).collect()
+                };
+                if sub {
+                    gl.tex_sub_image_2d(target, level, p, q, w, h, format, type_, &bytes);
+                } else {
+                    gl.tex_image_2d(target, level, p, q, w, h, format, type_, &bytes);
+                }
+            }
+            "tex_parameteri" => gl.tex_parameteri(a.e(), a.e(), a.e() as i32),
+            "tex_envi" => gl.tex_envi(a.e(), a.e(), a.e() as i32),
+            "pixel_storei" => gl.pixel_storei(a.e(), a.int()),
             "texgen_normal" => self.texgen_normal = true,
             "defer_errors" => self.deferred = a.next() == "on",
             "get_error" => {

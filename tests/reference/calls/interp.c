@@ -33,6 +33,7 @@ static const char *script_name;
 struct enum_name { const char *name; GLenum value; };
 #define E(x) { #x, x }
 static const struct enum_name enums[] = {
+    E(GL_TEXTURE_1D), E(GL_RGB), E(GL_RGBA), E(GL_LUMINANCE), E(GL_LUMINANCE_ALPHA), E(GL_ALPHA), E(GL_TEXTURE_MIN_FILTER), E(GL_TEXTURE_MAG_FILTER), E(GL_TEXTURE_WRAP_S), E(GL_TEXTURE_WRAP_T), E(GL_NEAREST), E(GL_LINEAR), E(GL_LINEAR_MIPMAP_LINEAR), E(GL_NEAREST_MIPMAP_NEAREST), E(GL_REPEAT), E(GL_CLAMP), E(GL_CLAMP_TO_EDGE), E(GL_TEXTURE_ENV), E(GL_TEXTURE_ENV_MODE), E(GL_TEXTURE_ENV_COLOR), E(GL_MODULATE), E(GL_DECAL), E(GL_BLEND), E(GL_REPLACE), E(GL_ADD), E(GL_UNPACK_ALIGNMENT), E(GL_UNPACK_ROW_LENGTH), E(GL_UNPACK_SKIP_ROWS), E(GL_PACK_ALIGNMENT), E(GL_TEXTURE_BINDING_1D), E(GL_TEXTURE_BINDING_2D),
     E(GL_COMPILE), E(GL_COMPILE_AND_EXECUTE), E(GL_LIST_BASE), E(GL_LIST_INDEX), E(GL_LIST_MODE),
     E(GL_MAX_LIST_NESTING), E(GL_BYTE), E(GL_UNSIGNED_BYTE), E(GL_SHORT), E(GL_UNSIGNED_SHORT), E(GL_INT),
     E(GL_UNSIGNED_INT), E(GL_FLOAT), E(GL_2_BYTES), E(GL_3_BYTES), E(GL_4_BYTES), E(GL_DOUBLE),
@@ -412,6 +413,49 @@ static void run_call(const char *c)
         for (long i = 0; i < given; i++) bytes[i] = (GLubyte)f[i];
         glCallLists(n, type, f ? (const GLvoid *)bytes : NULL);
         free(f);
+    } else if (!strcmp(c, "gen_textures")) {
+        GLuint names[16] = { 0 };
+        GLsizei n = arg_int();
+        glGenTextures(n, names);
+        for (int i = 0; i < n && i < 16; i++) val(" %u", names[i]);
+    } else if (!strcmp(c, "bind_texture")) {
+        GLenum target = arg_enum();
+        glBindTexture(target, (GLuint)arg_int());
+    } else if (!strcmp(c, "delete_textures")) {
+        GLsizei n = arg_int();
+        float *f = arg_array(0, 0, &given);
+        GLuint names[16] = { 0 };
+        for (long i = 0; i < given && i < 16; i++) names[i] = (GLuint)f[i];
+        glDeleteTextures(n, names);
+        free(f);
+    } else if (!strcmp(c, "is_texture")) {
+        val(" %d", glIsTexture((GLuint)arg_int()));
+    } else if (!strcmp(c, "tex_image_2d") || !strcmp(c, "tex_sub_image_2d")) {
+        /* the pixels as numbers: bytes for GL_UNSIGNED_BYTE, floats for GL_FLOAT */
+        int sub = c[4] == 's';
+        GLenum target = arg_enum();
+        /* tex_image_2d: level internalformat width height border;
+         * tex_sub_image_2d: level xoffset yoffset width height */
+        GLint level = arg_int();
+        GLint a = sub ? arg_int() : (GLint)arg_enum();
+        GLint b = arg_int(), w = arg_int(), h = arg_int();
+        GLenum format = arg_enum(), type = arg_enum();
+        float *f = arg_array(0, 0, &given);
+        GLubyte bytes[MAX_TOK];
+        for (long i = 0; i < given; i++) bytes[i] = (GLubyte)f[i];
+        const GLvoid *data = f ? (type == GL_FLOAT ? (const GLvoid *)f : (const GLvoid *)bytes) : NULL;
+        if (sub) glTexSubImage2D(target, level, a, b, w, h, format, type, data);
+        else glTexImage2D(target, level, a, b, w, h, format, type, data);
+        free(f);
+    } else if (!strcmp(c, "tex_parameteri")) {
+        GLenum target = arg_enum(), pname = arg_enum();
+        glTexParameteri(target, pname, (GLint)arg_enum());
+    } else if (!strcmp(c, "tex_envi")) {
+        GLenum target = arg_enum(), pname = arg_enum();
+        glTexEnvi(target, pname, (GLint)arg_enum());
+    } else if (!strcmp(c, "pixel_storei")) {
+        GLenum pname = arg_enum();
+        glPixelStorei(pname, arg_int());
     } else if (!strcmp(c, "texgen_normal")) {
         /* eye-space normal (= object normal with identity modelview) -> s,t,r.
          * Mesa applies texgen only on an enabled unit with a complete texture. */
