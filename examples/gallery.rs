@@ -31,14 +31,16 @@ mod ex3_bspline_n;
 mod ex4_bspline_surface;
 #[path = "ex5_bird.rs"]
 mod ex5_bird;
+#[path = "fogblend.rs"]
+mod fogblend;
 #[path = "flattwoviewports.rs"]
 mod flattwoviewports;
 #[path = "linespoints.rs"]
 mod linespoints;
-#[path = "mipnurbs.rs"]
-mod mipnurbs;
 #[path = "lists.rs"]
 mod lists;
+#[path = "mipnurbs.rs"]
+mod mipnurbs;
 #[path = "operations.rs"]
 mod operations;
 #[path = "outline.rs"]
@@ -59,7 +61,7 @@ mod trimmed;
 /// A built-in program: its name and how to build it.
 type Program = (&'static str, fn() -> App);
 
-const PROGRAMS: [Program; 23] = [
+const PROGRAMS: [Program; 24] = [
     ("bezcurve", bezcurve::app),
     ("bezsurf", bezsurf::app),
     ("bcurve", bcurve::app),
@@ -82,6 +84,7 @@ const PROGRAMS: [Program; 23] = [
     ("lists", lists::app),
     ("texsurf", texsurf::app),
     ("mipnurbs", mipnurbs::app),
+    ("fogblend", fogblend::app),
     ("operations", operations::app),
 ];
 

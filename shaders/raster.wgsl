@@ -1,10 +1,11 @@
 // The rasteriser for gleval's assembled frames: GL's fixed-function vertex work (transform,
 // lighting, primitive assembly, wide lines and points) is already done, so a vertex carries its
-// clip-space position, final colour and texture coordinates. The fragment stage applies unit
-// 0's texture with GL's texture environment (GL 1.1 spec §3.8.9, tables 3.17 and 3.18; ADD
-// from GL 1.3).
+// clip-space position, final colour, texture coordinates and fog coordinate. The fragment stage
+// does GL's per-fragment work in GL's order: unit 0's texture with GL's texture environment
+// (GL 1.1 spec §3.8.9, tables 3.17 and 3.18; ADD from GL 1.3), fog (§3.9), the alpha test
+// (§4.1.3); blending is the pipeline's blend state.
 
-struct TexEnv {
+struct Fragment {
     // 0 no texture, 1 MODULATE, 2 DECAL, 3 BLEND, 4 REPLACE, 5 ADD.
     mode: u32,
     // The base internal format: 0 ALPHA, 1 LUMINANCE, 2 LUMINANCE_ALPHA, 3 RGB, 4 RGBA.
@@ -14,24 +15,42 @@ struct TexEnv {
     clamp_s: u32,
     clamp_t: u32,
     color: vec4<f32>,
+    // 0 no fog, 1 LINEAR, 2 EXP, 3 EXP2.
+    fog_mode: u32,
+    // 0 no alpha test, else the GL comparison (GL_NEVER .. GL_ALWAYS) as 1 .. 8.
+    alpha_func: u32,
+    fog_density: f32,
+    alpha_ref: f32,
+    fog_start: f32,
+    fog_end: f32,
+    pad0: f32,
+    pad1: f32,
+    fog_color: vec4<f32>,
 };
 
 @group(0) @binding(0) var tex_image: texture_2d<f32>;
 @group(0) @binding(1) var tex_sampler: sampler;
-@group(0) @binding(2) var<uniform> env: TexEnv;
+@group(0) @binding(2) var<uniform> env: Fragment;
 
 struct VertexOut {
     @builtin(position) clip: vec4<f32>,
     @location(0) color: vec4<f32>,
     @location(1) tex: vec4<f32>,
+    @location(2) fog: f32,
 };
 
 @vertex
-fn vs_main(@location(0) clip: vec4<f32>, @location(1) color: vec4<f32>, @location(2) tex: vec4<f32>) -> VertexOut {
+fn vs_main(
+    @location(0) clip: vec4<f32>,
+    @location(1) color: vec4<f32>,
+    @location(2) tex: vec4<f32>,
+    @location(3) fog: f32,
+) -> VertexOut {
     var out: VertexOut;
     out.clip = clip;
     out.color = color;
     out.tex = tex;
+    out.fog = fog;
     return out;
 }
 
@@ -42,10 +61,43 @@ fn fs_main(in: VertexOut) -> @location(0) vec4<f32> {
     let st = in.tex.xy / q;
     let clamped = vec2<bool>(env.clamp_s != 0u, env.clamp_t != 0u);
     let texel = textureSample(tex_image, tex_sampler, select(st, clamp(st, vec2<f32>(0.0), vec2<f32>(1.0)), clamped));
-    if env.mode == 0u {
-        return in.color;
+    var color = in.color;
+    if env.mode != 0u {
+        color = apply_env(color, texel);
     }
-    return apply_env(in.color, texel);
+    if env.fog_mode != 0u {
+        color = vec4<f32>(mix(env.fog_color.rgb, color.rgb, fog_factor(in.fog)), color.a);
+    }
+    if env.alpha_func != 0u && !alpha_passes(color.a) {
+        discard;
+    }
+    return color;
+}
+
+// GL's fog factor f (the fragment's share), clamped to [0, 1]: C = f·Cf + (1 − f)·Cfog.
+fn fog_factor(z: f32) -> f32 {
+    var f: f32;
+    switch env.fog_mode {
+        case 1u: { f = (env.fog_end - z) / (env.fog_end - env.fog_start); }
+        case 2u: { f = exp(-env.fog_density * z); }
+        default: { let dz = env.fog_density * z; f = exp(-dz * dz); }
+    }
+    return clamp(f, 0.0, 1.0);
+}
+
+// The alpha test: NEVER, LESS, EQUAL, LEQUAL, GREATER, NOTEQUAL, GEQUAL, ALWAYS as 1 .. 8.
+fn alpha_passes(a: f32) -> bool {
+    let r = env.alpha_ref;
+    switch env.alpha_func {
+        case 1u: { return false; }
+        case 2u: { return a < r; }
+        case 3u: { return a == r; }
+        case 4u: { return a <= r; }
+        case 5u: { return a > r; }
+        case 6u: { return a != r; }
+        case 7u: { return a >= r; }
+        default: { return true; }
+    }
 }
 
 // GL's texture functions: Cf, Af the fragment's colour; Ct, At the texture's by base format.

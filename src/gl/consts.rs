@@ -236,3 +236,24 @@ pub const GL_RGBA8: GLenum = 0x8058;
 pub const GL_ALPHA8: GLenum = 0x803C;
 pub const GL_LUMINANCE8: GLenum = 0x8040;
 pub const GL_LUMINANCE8_ALPHA8: GLenum = 0x8045;
+
+// Blending, the alpha test and fog (GL 1.1 spec §4.1.3, §4.1.6, §3.9).
+pub const GL_ZERO: GLenum = 0;
+pub const GL_ONE: GLenum = 1;
+pub const GL_SRC_COLOR: GLenum = 0x0300;
+pub const GL_ONE_MINUS_SRC_COLOR: GLenum = 0x0301;
+pub const GL_SRC_ALPHA: GLenum = 0x0302;
+pub const GL_ONE_MINUS_SRC_ALPHA: GLenum = 0x0303;
+pub const GL_DST_ALPHA: GLenum = 0x0304;
+pub const GL_ONE_MINUS_DST_ALPHA: GLenum = 0x0305;
+pub const GL_DST_COLOR: GLenum = 0x0306;
+pub const GL_ONE_MINUS_DST_COLOR: GLenum = 0x0307;
+pub const GL_SRC_ALPHA_SATURATE: GLenum = 0x0308;
+pub const GL_FOG_MODE: GLenum = 0x0B65;
+pub const GL_FOG_DENSITY: GLenum = 0x0B62;
+pub const GL_FOG_START: GLenum = 0x0B63;
+pub const GL_FOG_END: GLenum = 0x0B64;
+pub const GL_FOG_COLOR: GLenum = 0x0B66;
+pub const GL_FOG_INDEX: GLenum = 0x0B61;
+pub const GL_EXP: GLenum = 0x0800;
+pub const GL_EXP2: GLenum = 0x0801;

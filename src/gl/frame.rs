@@ -2,6 +2,7 @@
 //! `end` (from immediate mode or from the evaluators), and a log of the immediate-mode calls.
 //! Tests read it; the renderer draws it.
 
+use super::fragment::Fog;
 use super::lighting::Lighting;
 use super::texture::BoundTexture;
 use super::types::{GLbitfield, GLenum};
@@ -56,6 +57,12 @@ pub struct DrawState {
     pub depth_test: Option<GLenum>,
     /// The texture of unit 0 when a target is enabled and its texture complete.
     pub texture: Option<BoundTexture>,
+    /// Source and destination blend factors when `GL_BLEND` is enabled.
+    pub blend: Option<[GLenum; 2]>,
+    /// The alpha test's function and reference when `GL_ALPHA_TEST` is enabled.
+    pub alpha_test: Option<(GLenum, f32)>,
+    /// Fog when `GL_FOG` is enabled.
+    pub fog: Option<Fog>,
 }
 
 /// Framebuffer operations and draws, in program order.

@@ -199,6 +199,27 @@ impl Gl {
         }
     }
 
+    /// `glRectf`: exactly `glBegin(GL_POLYGON)`, the four corners (x1, y1), (x2, y1), (x2, y2),
+    /// (x1, y2) with z = 0, `glEnd()` (GL 1.1 spec §2.9).
+    pub fn rectf(&mut self, x1: GLfloat, y1: GLfloat, x2: GLfloat, y2: GLfloat) {
+        self.begin(GL_POLYGON);
+        self.vertex2f(x1, y1);
+        self.vertex2f(x2, y1);
+        self.vertex2f(x2, y2);
+        self.vertex2f(x1, y2);
+        self.end();
+    }
+
+    /// `glRectd` (cast to float).
+    pub fn rectd(&mut self, x1: GLdouble, y1: GLdouble, x2: GLdouble, y2: GLdouble) {
+        self.rectf(x1 as f32, y1 as f32, x2 as f32, y2 as f32);
+    }
+
+    /// `glRecti`.
+    pub fn recti(&mut self, x1: GLint, y1: GLint, x2: GLint, y2: GLint) {
+        self.rectf(x1 as f32, y1 as f32, x2 as f32, y2 as f32);
+    }
+
     /// The first `N` values of a `*v` argument, or `GL_INVALID_VALUE` if the slice is shorter.
     pub(crate) fn needs<const N: usize>(&mut self, v: &[GLfloat]) -> Option<[GLfloat; N]> {
         match v.get(..N) {

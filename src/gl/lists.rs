@@ -113,6 +113,9 @@ pub(crate) enum ListCommand {
     },
     TexParameter(GLenum, GLenum, GLint),
     TexEnv(GLenum, GLenum, Vec<f32>),
+    BlendFunc(GLenum, GLenum),
+    AlphaFunc(GLenum, f32),
+    Fog(GLenum, Vec<f32>),
     PushAttrib(GLbitfield),
     PopAttrib,
     /// A vertex with all its attributes, as GLU issues a trimmed surface's (its
@@ -419,6 +422,9 @@ impl Gl {
             }
             C::TexParameter(target, pname, param) => self.tex_parameteri(*target, *pname, *param),
             C::TexEnv(target, pname, params) => self.tex_envfv(*target, *pname, params),
+            C::BlendFunc(s, d) => self.blend_func(*s, *d),
+            C::AlphaFunc(func, reference) => self.alpha_func(*func, *reference),
+            C::Fog(pname, params) => self.fogfv(*pname, params),
             C::PushAttrib(mask) => self.push_attrib(*mask),
             C::PopAttrib => self.pop_attrib(),
             C::EmitVertex(v) => self.emit_listed_vertex(*v),

@@ -10,6 +10,7 @@ mod attrib;
 pub mod consts;
 mod enable;
 mod eval;
+mod fragment;
 mod frame;
 mod immediate;
 mod lighting;
@@ -23,6 +24,7 @@ pub mod types;
 mod vertex;
 
 pub use eval::{MapTarget, Slot};
+pub use fragment::Fog;
 pub use frame::{Call, Command, DrawState, Frame, GridMesh, MeshMode, MeshVertices, Primitive};
 pub use lighting::{Light, Lighting, Material};
 pub use lists::MAX_LIST_NESTING;
@@ -125,6 +127,8 @@ pub struct Gl {
     lists: lists::Lists,
     /// Texture objects and unit 0's environment.
     textures: texture::Textures,
+    /// Blending, the alpha test and fog.
+    fragment_ops: fragment::FragmentOps,
     /// How client memory is laid out for images and bitmaps (`glPixelStore`).
     pixel_stores: pixels::PixelStores,
     /// GLU NURBS objects, indexed by their handles: the one import from `gl` into `glu`, since
@@ -158,6 +162,7 @@ impl Gl {
             lists: lists::Lists::default(),
             pixel_stores: pixels::PixelStores::default(),
             textures: texture::Textures::default(),
+            fragment_ops: fragment::FragmentOps::default(),
             nurbs: Vec::new(),
         }
     }
@@ -275,6 +280,9 @@ impl Gl {
             cull_face: self.caps.is_on(GL_CULL_FACE).then_some(r.cull_face),
             depth_test: self.caps.is_on(GL_DEPTH_TEST).then_some(r.depth_func),
             texture,
+            blend: self.enabled_blend(),
+            alpha_test: self.enabled_alpha_test(),
+            fog: self.enabled_fog(),
         }
     }
 

@@ -7,13 +7,14 @@ use super::device::shader_module;
 use super::layout::RASTER_WGSL;
 use super::raster::RasterPipeline;
 use super::textures::{self, TextureCache};
+use crate::gl::consts::*;
 use crate::gl::types::GLenum;
 use crate::render::assemble::{DrawList, Op, RasterVertex, Topology};
 use std::collections::HashMap;
 use wgpu::util::DeviceExt;
 
-/// Pipeline key: topology, depth function, target format.
-type PipelineKey = (Topology, Option<GLenum>, wgpu::TextureFormat);
+/// Pipeline key: topology, depth function, target format, blend factors.
+pub(crate) type PipelineKey = (Topology, Option<GLenum>, wgpu::TextureFormat, Option<[GLenum; 2]>);
 
 /// The frame rasteriser's shader and its pipelines, made on first use, and the textures it
 /// samples.
@@ -38,15 +39,15 @@ impl FrameRaster {
         Self { module, layout, texture_layout, pipelines: HashMap::new(), textures: TextureCache::default() }
     }
 
-    /// The bind groups of a list's batches: one per texture of the list, in its order, then
-    /// the one for batches without a texture (see [`TextureCache::bind_groups`]).
+    /// The bind groups of a list's batches: one per fragment state of the list, in its order,
+    /// then the one for batches without any (see [`TextureCache::bind_groups`]).
     pub(crate) fn texture_bind_groups(
         &mut self,
         device: &wgpu::Device,
         queue: &wgpu::Queue,
         list: &DrawList,
     ) -> Vec<wgpu::BindGroup> {
-        self.textures.bind_groups(device, queue, &self.texture_layout, &list.textures)
+        self.textures.bind_groups(device, queue, &self.texture_layout, &list.fragments)
     }
 
     /// Makes sure the pipeline for `key` exists (before a render pass borrows them all).
@@ -65,9 +66,9 @@ fn make_pipeline(
     device: &wgpu::Device,
     module: &wgpu::ShaderModule,
     layout: &wgpu::PipelineLayout,
-    (topology, depth, format): PipelineKey,
+    (topology, depth, format, blend): PipelineKey,
 ) -> wgpu::RenderPipeline {
-    let attributes = wgpu::vertex_attr_array![0 => Float32x4, 1 => Float32x4, 2 => Float32x4];
+    let attributes = wgpu::vertex_attr_array![0 => Float32x4, 1 => Float32x4, 2 => Float32x4, 3 => Float32];
     let vertex = wgpu::VertexBufferLayout {
         array_stride: std::mem::size_of::<RasterVertex>() as wgpu::BufferAddress,
         step_mode: wgpu::VertexStepMode::Vertex,
@@ -84,8 +85,36 @@ fn make_pipeline(
         // The CPU culled already; wgpu's defaults, no culling.
         faces: (wgpu::FrontFace::Ccw, None),
         format,
+        blend: blend.map(blend_state),
     }
     .build(device)
+}
+
+/// GL's `glBlendFunc` factors (for colour and alpha alike) as a wgpu blend state, adding.
+fn blend_state([source, destination]: [GLenum; 2]) -> wgpu::BlendState {
+    let component = wgpu::BlendComponent {
+        src_factor: blend_factor(source),
+        dst_factor: blend_factor(destination),
+        operation: wgpu::BlendOperation::Add,
+    };
+    wgpu::BlendState { color: component, alpha: component }
+}
+
+fn blend_factor(factor: GLenum) -> wgpu::BlendFactor {
+    use wgpu::BlendFactor as F;
+    match factor {
+        GL_ZERO => F::Zero,
+        GL_SRC_COLOR => F::Src,
+        GL_ONE_MINUS_SRC_COLOR => F::OneMinusSrc,
+        GL_SRC_ALPHA => F::SrcAlpha,
+        GL_ONE_MINUS_SRC_ALPHA => F::OneMinusSrcAlpha,
+        GL_DST_ALPHA => F::DstAlpha,
+        GL_ONE_MINUS_DST_ALPHA => F::OneMinusDstAlpha,
+        GL_DST_COLOR => F::Dst,
+        GL_ONE_MINUS_DST_COLOR => F::OneMinusDst,
+        GL_SRC_ALPHA_SATURATE => F::SrcAlphaSaturated,
+        _ => F::One,
+    }
 }
 
 /// The list's vertices in one vertex buffer (in the target's clip space), if there are any.

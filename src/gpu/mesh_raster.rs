@@ -247,6 +247,19 @@ fn make_pipeline(
         attributes: &attributes,
     };
     let entry_points = if flat { ("vs_flat", "fs_flat") } else { ("vs_smooth", "fs_smooth") };
-    RasterPipeline { label: "gl mesh raster", module, entry_points, layout, vertex, topology, depth, faces, format }
-        .build(device)
+    // Meshes with blending, fog, textures or the alpha test are left to the frame rasteriser.
+    let blend = None;
+    RasterPipeline {
+        label: "gl mesh raster",
+        module,
+        entry_points,
+        layout,
+        vertex,
+        topology,
+        depth,
+        faces,
+        format,
+        blend,
+    }
+    .build(device)
 }

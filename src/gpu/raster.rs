@@ -27,6 +27,8 @@ pub(crate) struct RasterPipeline<'a> {
     pub faces: (wgpu::FrontFace, Option<wgpu::Face>),
     /// The colour target's format.
     pub format: wgpu::TextureFormat,
+    /// GL's blending, when enabled.
+    pub blend: Option<wgpu::BlendState>,
 }
 
 impl RasterPipeline<'_> {
@@ -53,7 +55,7 @@ impl RasterPipeline<'_> {
                 compilation_options: Default::default(),
                 targets: &[Some(wgpu::ColorTargetState {
                     format: self.format,
-                    blend: None,
+                    blend: self.blend,
                     write_mask: wgpu::ColorWrites::ALL,
                 })],
             }),

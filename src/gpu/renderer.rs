@@ -10,13 +10,13 @@
 
 use super::device::{first_adapter, request_device, ErrorSlot, Gpu, Image, RenderError};
 use super::evaluate;
-use super::frame_raster::{vertex_buffer, FrameRaster};
+use super::frame_raster::{vertex_buffer, FrameRaster, PipelineKey};
 use super::mesh_raster::{gpu_mesh_indices, MeshRaster, PreparedMeshes};
 use super::passes::{begin_pass, scissor_rect, split_passes, PassItem};
 use super::target::Target;
 use crate::gl::Frame;
 use crate::math::BezierPatch;
-use crate::render::assemble::{assemble_frame, DrawList};
+use crate::render::assemble::{assemble_frame, Batch, DrawList};
 use crate::tess::Mesh;
 
 const COLOR_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8Unorm;
@@ -141,7 +141,7 @@ impl Renderer {
         for pass in split_passes(&list.ops) {
             for item in &pass.draws {
                 if let PassItem::Batch(batch) = item {
-                    self.frames.ensure_pipeline(&self.device, (batch.topology, batch.depth_test, target.format));
+                    self.frames.ensure_pipeline(&self.device, pipeline_key(batch, target));
                 }
             }
             let mut rp = begin_pass(encoder, target.color, target.depth, pass.clear_color, pass.clear_depth);
@@ -166,9 +166,9 @@ impl Renderer {
                 let Some(buffer) = buffer else { return };
                 let Some(scissor) = scissor_rect(batch.viewport, target.size) else { return };
                 rp.set_scissor_rect(scissor[0], scissor[1], scissor[2], scissor[3]);
-                rp.set_pipeline(self.frames.pipeline((batch.topology, batch.depth_test, target.format)));
-                // The last bind group is the one without a texture.
-                let group = batch.texture.map_or(bind_groups.len() - 1, |t| t as usize);
+                rp.set_pipeline(self.frames.pipeline(pipeline_key(batch, target)));
+                // The last bind group is the one without fragment operations.
+                let group = batch.fragment.map_or(bind_groups.len() - 1, |f| f as usize);
                 rp.set_bind_group(0, &bind_groups[group], &[]);
                 rp.set_vertex_buffer(0, buffer.slice(..));
                 rp.draw(batch.first..batch.first + batch.count, 0..1);
@@ -182,6 +182,11 @@ impl Renderer {
             }
         }
     }
+}
+
+/// The frame rasteriser's pipeline for a batch drawn into `target`.
+fn pipeline_key(batch: &Batch, target: &Attachments<'_>) -> PipelineKey {
+    (batch.topology, batch.depth_test, target.format, batch.blend)
 }
 
 /// The typed API on the GPU tessellator: each patch over a uniform `segments_u` × `segments_v`

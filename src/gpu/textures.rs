@@ -1,17 +1,20 @@
-//! GL textures on wgpu: each [`BoundTexture`] of a frame uploaded once per version (its key),
-//! a sampler per GL filter and wrap combination, and the texture environment as a uniform
-//! (`shaders/raster.wgsl` applies GL 1.1 tables 3.17 and 3.18 per fragment).
+//! GL's fragment operations on wgpu: each [`BoundTexture`] of a frame uploaded once per version
+//! (its key), a sampler per GL filter and wrap combination, and the texture environment, fog
+//! and alpha test as a uniform (`shaders/raster.wgsl` applies them per fragment; blending is
+//! the pipeline's).
 
 use crate::gl::consts::*;
 use crate::gl::types::GLenum;
 use crate::gl::{BoundTexture, TexParams};
+use crate::render::assemble::FragmentState;
 use std::collections::HashMap;
 use wgpu::util::DeviceExt;
 
-/// The texture environment as the fragment shader reads it (`TexEnv` in `raster.wgsl`).
+/// A batch's fragment operations as the fragment shader reads them (`Fragment` in
+/// `raster.wgsl`): the texture environment, fog and the alpha test.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
-pub(crate) struct GpuTexEnv {
+pub(crate) struct GpuFragment {
     /// 0 none, 1 `GL_MODULATE`, 2 `GL_DECAL`, 3 `GL_BLEND`, 4 `GL_REPLACE`, 5 `GL_ADD`.
     pub mode: u32,
     /// 0 `GL_ALPHA`, 1 `GL_LUMINANCE`, 2 `GL_LUMINANCE_ALPHA`, 3 `GL_RGB`, 4 `GL_RGBA`.
@@ -19,19 +22,48 @@ pub(crate) struct GpuTexEnv {
     /// `GL_CLAMP` in s and in t (the shader clamps the coordinate to [0, 1]).
     pub clamp: [u32; 2],
     /// `GL_TEXTURE_ENV_COLOR`.
-    pub color: [f32; 4],
+    pub env_color: [f32; 4],
+    /// 0 none, 1 `GL_LINEAR`, 2 `GL_EXP`, 3 `GL_EXP2`.
+    pub fog_mode: u32,
+    /// 0 none, else the GL comparison minus `GL_NEVER` plus 1.
+    pub alpha_func: u32,
+    pub fog_density: f32,
+    pub alpha_ref: f32,
+    pub fog_start: f32,
+    pub fog_end: f32,
+    pub pad: [f32; 2],
+    pub fog_color: [f32; 4],
 }
 
-impl GpuTexEnv {
-    fn of(texture: &BoundTexture) -> Self {
-        let mode = match texture.env_mode {
+impl GpuFragment {
+    fn of(fragment: &FragmentState) -> Self {
+        let mut out = Self::default();
+        if let Some(texture) = &fragment.texture {
+            out.set_texture(texture);
+        }
+        if let Some(fog) = &fragment.fog {
+            out.fog_mode = match fog.mode {
+                GL_LINEAR => 1,
+                GL_EXP => 2,
+                _ => 3,
+            };
+            (out.fog_density, out.fog_start, out.fog_end, out.fog_color) = (fog.density, fog.start, fog.end, fog.color);
+        }
+        if let Some((func, reference)) = fragment.alpha_test {
+            (out.alpha_func, out.alpha_ref) = (func - GL_NEVER + 1, reference);
+        }
+        out
+    }
+
+    fn set_texture(&mut self, texture: &BoundTexture) {
+        self.mode = match texture.env_mode {
             GL_MODULATE => 1,
             GL_DECAL => 2,
             GL_BLEND => 3,
             GL_REPLACE => 4,
             _ => 5,
         };
-        let format = match texture.base_format {
+        self.format = match texture.base_format {
             GL_ALPHA => 0,
             GL_LUMINANCE => 1,
             GL_LUMINANCE_ALPHA => 2,
@@ -40,7 +72,8 @@ impl GpuTexEnv {
         };
         let clamp = |w: GLenum| u32::from(w == GL_CLAMP);
         let clamp_t = if texture.one_d { 0 } else { clamp(texture.params.wrap_t) };
-        Self { mode, format, clamp: [clamp(texture.params.wrap_s), clamp_t], color: texture.env_color }
+        self.clamp = [clamp(texture.params.wrap_s), clamp_t];
+        self.env_color = texture.env_color;
     }
 }
 
@@ -79,32 +112,28 @@ pub(crate) struct TextureCache {
 }
 
 impl TextureCache {
-    /// One bind group per texture of the frame (in the order of `textures`), then one for
-    /// batches without a texture. Textures of earlier frames not drawn now are dropped.
+    /// One bind group per fragment state of the frame (in the order of `fragments`), then one
+    /// for batches without any. Textures of earlier frames not drawn now are dropped.
     pub(crate) fn bind_groups(
         &mut self,
         device: &wgpu::Device,
         queue: &wgpu::Queue,
         layout: &wgpu::BindGroupLayout,
-        textures: &[BoundTexture],
+        fragments: &[FragmentState],
     ) -> Vec<wgpu::BindGroup> {
-        self.views.retain(|key, _| textures.iter().any(|t| t.key == *key));
-        let mut groups: Vec<wgpu::BindGroup> = textures
-            .iter()
-            .map(|t| {
-                let view = self.views.entry(t.key).or_insert_with(|| upload(device, queue, t)).clone();
-                let border = device.features().contains(wgpu::Features::ADDRESS_MODE_CLAMP_TO_BORDER);
-                let one_d = t.one_d;
-                let sampler =
-                    self.samplers.entry((t.params, one_d)).or_insert_with(|| sampler(device, &t.params, one_d, border));
-                bind_group(device, layout, &view, sampler, GpuTexEnv::of(t))
-            })
-            .collect();
-        let blank = self.views.entry(0).or_insert_with(|| blank_view(device, queue)).clone();
-        let none = self.samplers.entry((TexParams::default(), false)).or_insert_with(|| {
-            sampler(device, &TexParams { min_filter: GL_NEAREST, ..TexParams::default() }, false, false)
-        });
-        groups.push(bind_group(device, layout, &blank, none, GpuTexEnv::default()));
+        let drawn = |key: u64| key == 0 || fragments.iter().any(|f| f.texture.as_ref().is_some_and(|t| t.key == key));
+        self.views.retain(|key, _| drawn(*key));
+        let border = device.features().contains(wgpu::Features::ADDRESS_MODE_CLAMP_TO_BORDER);
+        let blank = BoundTexture::blank();
+        let mut groups = Vec::with_capacity(fragments.len() + 1);
+        for fragment in fragments.iter().map(Some).chain([None]) {
+            let t = fragment.and_then(|f| f.texture.as_ref()).unwrap_or(&blank);
+            let view = self.views.entry(t.key).or_insert_with(|| upload(device, queue, t)).clone();
+            let key = (t.params, t.one_d);
+            let sampler = self.samplers.entry(key).or_insert_with(|| sampler(device, &t.params, t.one_d, border));
+            let uniform = fragment.map(GpuFragment::of).unwrap_or_default();
+            groups.push(bind_group(device, layout, &view, sampler, uniform));
+        }
         groups
     }
 }
@@ -114,11 +143,11 @@ fn bind_group(
     layout: &wgpu::BindGroupLayout,
     view: &wgpu::TextureView,
     sampler: &wgpu::Sampler,
-    env: GpuTexEnv,
+    fragment: GpuFragment,
 ) -> wgpu::BindGroup {
     let uniform = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
-        label: Some("texture env"),
-        contents: bytemuck::bytes_of(&env),
+        label: Some("fragment"),
+        contents: bytemuck::bytes_of(&fragment),
         usage: wgpu::BufferUsages::UNIFORM,
     });
     device.create_bind_group(&wgpu::BindGroupDescriptor {
@@ -160,12 +189,6 @@ fn upload(device: &wgpu::Device, queue: &wgpu::Queue, texture: &BoundTexture) ->
         );
     }
     gpu.create_view(&Default::default())
-}
-
-/// A white texel, bound where no texture is (the shader ignores it).
-fn blank_view(device: &wgpu::Device, queue: &wgpu::Queue) -> wgpu::TextureView {
-    let texture = BoundTexture::blank();
-    upload(device, queue, &texture)
 }
 
 /// GL's filters and wrap modes as a wgpu sampler (GL 1.1 §3.8.5–3.8.8). `GL_CLAMP` is the

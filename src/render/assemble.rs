@@ -10,7 +10,7 @@
 use super::shade::{ShadedVertex, Shader};
 use crate::gl::consts::*;
 use crate::gl::types::GLenum;
-use crate::gl::{BoundTexture, Command, DrawState, Frame, MeshVertices, Vertex};
+use crate::gl::{BoundTexture, Command, DrawState, Fog, Frame, MeshVertices, Vertex};
 use glam::Vec4;
 
 /// A vertex ready for the rasteriser: clip position (depth already mapped to [0, 1] through
@@ -26,6 +26,8 @@ pub struct RasterVertex {
     pub color: [f32; 4],
     /// (s, t, r, q); zero when the batch has no texture.
     pub tex: [f32; 4],
+    /// The fog coordinate: eye-space distance.
+    pub fog: f32,
 }
 
 /// What a batch draws.
@@ -52,8 +54,22 @@ pub struct Batch {
     pub first: u32,
     /// Number of vertices.
     pub count: u32,
-    /// The texture, as an index into [`DrawList::textures`].
-    pub texture: Option<u32>,
+    /// The texture, fog and alpha test, as an index into [`DrawList::fragments`]; `None`
+    /// when the batch has none of them.
+    pub fragment: Option<u32>,
+    /// Source and destination blend factors when blending.
+    pub blend: Option<[GLenum; 2]>,
+}
+
+/// What a batch's fragments go through before blending: texturing, fog, the alpha test.
+#[derive(Clone, Debug, PartialEq)]
+pub struct FragmentState {
+    /// The texture and its environment.
+    pub texture: Option<BoundTexture>,
+    /// Fog.
+    pub fog: Option<Fog>,
+    /// The alpha test's function and reference.
+    pub alpha_test: Option<(GLenum, f32)>,
 }
 
 /// A framebuffer operation.
@@ -79,8 +95,8 @@ pub struct DrawList {
     pub vertices: Vec<RasterVertex>,
     /// Clears and draws in program order.
     pub ops: Vec<Op>,
-    /// The textures the batches are drawn with.
-    pub textures: Vec<BoundTexture>,
+    /// The fragment states the batches are drawn with.
+    pub fragments: Vec<FragmentState>,
 }
 
 /// Assembles a frame, evaluating deferred (GPU) meshes on the CPU.
@@ -133,6 +149,7 @@ struct Corner {
     clip: Vec4,
     color: Vec4,
     tex: Vec4,
+    fog: f32,
 }
 
 impl Assembler {
@@ -180,35 +197,42 @@ impl Assembler {
     /// Appends vertices to the last batch if it has the same state, else starts a batch.
     fn push(&mut self, state: &DrawState, topology: Topology, corners: &[Corner]) {
         let depth_range = state.depth_range;
-        let texture = self.texture_index(state.texture.as_ref());
-        let batch_key = (state.viewport, state.depth_test, topology, texture);
+        let fragment = self.fragment_index(state);
+        let batch_key = (state.viewport, state.depth_test, topology, fragment, state.blend);
         let first = self.list.vertices.len() as u32;
         self.list.vertices.extend(corners.iter().map(|c| RasterVertex {
             clip: depth_mapped(c.clip, depth_range),
             color: c.color.to_array(),
             tex: c.tex.to_array(),
+            fog: c.fog,
         }));
         let added = corners.len() as u32;
         if let Some(Op::Draw(last)) = self.list.ops.last_mut() {
-            let last_key = (last.viewport, last.depth_test, last.topology, last.texture);
+            let last_key = (last.viewport, last.depth_test, last.topology, last.fragment, last.blend);
             if last_key == batch_key && last.first + last.count == first {
                 last.count += added;
                 return;
             }
         }
-        let (viewport, depth_test, topology, texture) = batch_key;
-        self.list.ops.push(Op::Draw(Batch { viewport, depth_test, topology, first, count: added, texture }));
+        let (viewport, depth_test, topology, fragment, blend) = batch_key;
+        self.list.ops.push(Op::Draw(Batch { viewport, depth_test, topology, first, count: added, fragment, blend }));
     }
 
-    /// The index of `texture` in the list's textures, adding it if it is new (the last one is
-    /// checked first: consecutive primitives share their texture).
-    fn texture_index(&mut self, texture: Option<&BoundTexture>) -> Option<u32> {
-        let texture = texture?;
-        let textures = &mut self.list.textures;
-        let found = textures.iter().rposition(|t| t == texture);
+    /// The index of the state's fragment operations in the list, adding them if they are new
+    /// (searched from the last: consecutive primitives share them); `None` without any.
+    fn fragment_index(&mut self, state: &DrawState) -> Option<u32> {
+        if state.texture.is_none() && state.fog.is_none() && state.alpha_test.is_none() {
+            return None;
+        }
+        let fragments = &mut self.list.fragments;
+        let same = |f: &FragmentState| {
+            f.texture.as_ref() == state.texture.as_ref() && f.fog == state.fog && f.alpha_test == state.alpha_test
+        };
+        let found = fragments.iter().rposition(same);
         Some(found.unwrap_or_else(|| {
-            textures.push(texture.clone());
-            textures.len() - 1
+            let (texture, fog, alpha_test) = (state.texture.clone(), state.fog, state.alpha_test);
+            fragments.push(FragmentState { texture, fog, alpha_test });
+            fragments.len() - 1
         }) as u32)
     }
 }
@@ -233,7 +257,7 @@ impl PrimitiveContext<'_, '_> {
     /// A point of the point size: one pixel natively, else a square in window space.
     fn point(&mut self, i: usize) {
         let sv = self.v[i];
-        self.point_at(Corner { clip: sv.clip, color: sv.front, tex: sv.tex });
+        self.point_at(Corner { clip: sv.clip, color: sv.front, tex: sv.tex, fog: sv.fog });
     }
 
     fn point_at(&mut self, c: Corner) {
@@ -248,15 +272,15 @@ impl PrimitiveContext<'_, '_> {
         }
         let [_, _, vw, vh] = self.state.viewport;
         let (hx, hy) = (size / vw.max(1) as f32 * p.w, size / vh.max(1) as f32 * p.w);
-        let corner =
-            |dx: f32, dy: f32| Corner { clip: p + Vec4::new(dx * hx, dy * hy, 0.0, 0.0), color: c.color, tex: c.tex };
+        let corner = |dx: f32, dy: f32| Corner { clip: p + Vec4::new(dx * hx, dy * hy, 0.0, 0.0), ..c };
         let (a, b, cc, d) = (corner(-1.0, -1.0), corner(1.0, -1.0), corner(1.0, 1.0), corner(-1.0, 1.0));
         self.out.push(self.state, Topology::Triangles, &[a, b, cc, a, cc, d]);
     }
 
     /// A segment of a line primitive; `provoking` gives its colour under flat shading.
     fn segment(&mut self, a: usize, b: usize, provoking: usize) {
-        let pick = |i: usize| Corner { clip: self.v[i].clip, color: self.v[i].front, tex: self.v[i].tex };
+        let pick =
+            |i: usize| Corner { clip: self.v[i].clip, color: self.v[i].front, tex: self.v[i].tex, fog: self.v[i].fog };
         let (mut ca, mut cb) = (pick(a), pick(b));
         if self.flat() {
             ca.color = self.v[provoking].front;
@@ -308,6 +332,7 @@ impl PrimitiveContext<'_, '_> {
                 clip: self.v[i].clip,
                 color: colour_of(if self.flat() { provoking } else { i }),
                 tex: self.v[i].tex,
+                fog: self.v[i].fog,
             })
             .collect();
         let mode = self.state.polygon_mode[usize::from(!front)];

@@ -11,14 +11,16 @@ pub(crate) struct Shader<'a> {
     normal_matrix: Mat3,
 }
 
-/// A vertex after the vertex stage: clip-space position, its front and back colours, and its
-/// texture coordinates through the texture matrix (zero without a texture).
+/// A vertex after the vertex stage: clip-space position, its front and back colours, its
+/// texture coordinates through the texture matrix (zero without a texture) and its fog
+/// coordinate, the eye-space distance |z| (Mesa's default, `GL_EYE_PLANE_ABSOLUTE_NV`).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) struct ShadedVertex {
     pub clip: Vec4,
     pub front: Vec4,
     pub back: Vec4,
     pub tex: Vec4,
+    pub fog: f32,
 }
 
 impl<'a> Shader<'a> {
@@ -34,9 +36,10 @@ impl<'a> Shader<'a> {
         let clip = self.state.projection * eye;
         let color = Vec4::from_array(v.color);
         let tex = self.state.texture.as_ref().map_or(Vec4::ZERO, |t| t.matrix * Vec4::from_array(v.tex_coord));
+        let fog = eye.z.abs();
         let Some(lighting) = &self.state.lighting else {
             let c = color.clamp(Vec4::ZERO, Vec4::ONE);
-            return ShadedVertex { clip, front: c, back: c, tex };
+            return ShadedVertex { clip, front: c, back: c, tex, fog };
         };
         let mut n = self.normal_matrix * Vec3::from_array(v.normal);
         if self.state.normalize || self.state.rescale_normal {
@@ -45,7 +48,7 @@ impl<'a> Shader<'a> {
         let position = if eye.w != 0.0 { eye.xyz() / eye.w } else { eye.xyz() };
         let front = self.light(lighting, 0, n, position, color);
         let back = if lighting.two_side { self.light(lighting, 1, -n, position, color) } else { front };
-        ShadedVertex { clip, front, back, tex }
+        ShadedVertex { clip, front, back, tex, fog }
     }
 
     /// The material of `face` with `GL_COLOR_MATERIAL` applied.

@@ -30,6 +30,8 @@ mod ex4_bspline_surface;
 mod ex5_bird;
 #[path = "../../examples/flattwoviewports.rs"]
 mod flattwoviewports;
+#[path = "../../examples/fogblend.rs"]
+mod fogblend;
 #[path = "../../examples/linespoints.rs"]
 mod linespoints;
 #[path = "../../examples/lists.rs"]
@@ -218,6 +220,12 @@ fn textured_surface_matches_mesa() {
 #[test]
 fn mipmapped_nurbs_surface_matches_mesa() {
     check("mipnurbs", mipnurbs::app, 0.0);
+}
+
+/// Fog (LINEAR, EXP, EXP2) on evaluated surfaces, blending and the alpha test (`FogBlend.c`).
+#[test]
+fn fog_blending_and_alpha_test_match_mesa() {
+    check("fogblend", fogblend::app, 0.0);
 }
 
 /// GLUT's solid teapot (32 bicubic patches through glMap2f/glEvalMesh2) against `Teapot.c`.

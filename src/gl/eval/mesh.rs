@@ -202,8 +202,10 @@ impl Gl {
     /// filled polygons (both faces `GL_FILL`), one-pixel lines and one-pixel points. GL's wide
     /// lines, large points and polygon-mode edges are built on the CPU, so such meshes are too.
     pub(crate) fn gpu_draws(&self, mode: MeshMode) -> bool {
-        // Textured meshes are sampled by the frame rasteriser, which draws the CPU's vertices.
-        if self.capability(GL_TEXTURE_2D) || self.capability(GL_TEXTURE_1D) {
+        // Textures, blending, fog and the alpha test are the frame rasteriser's, which draws
+        // the CPU's vertices.
+        let fragment_ops = [GL_TEXTURE_2D, GL_TEXTURE_1D, GL_BLEND, GL_FOG, GL_ALPHA_TEST];
+        if fragment_ops.iter().any(|&cap| self.capability(cap)) {
             return false;
         }
         let r = &self.raster;
