@@ -201,3 +201,32 @@ pub const GL_PACK_ROW_LENGTH: GLenum = 0x0D02;
 pub const GL_PACK_SKIP_ROWS: GLenum = 0x0D03;
 pub const GL_PACK_SKIP_PIXELS: GLenum = 0x0D04;
 pub const GL_PACK_ALIGNMENT: GLenum = 0x0D05;
+
+// The current raster position (glGet, GL 1.1 spec §2.12).
+pub const GL_CURRENT_RASTER_COLOR: GLenum = 0x0B04;
+pub const GL_CURRENT_RASTER_INDEX: GLenum = 0x0B05;
+pub const GL_CURRENT_RASTER_TEXTURE_COORDS: GLenum = 0x0B06;
+pub const GL_CURRENT_RASTER_POSITION: GLenum = 0x0B07;
+pub const GL_CURRENT_RASTER_POSITION_VALID: GLenum = 0x0B08;
+pub const GL_CURRENT_RASTER_DISTANCE: GLenum = 0x0B09;
+
+// Pixel formats and the bitmap type (glDrawPixels, glBitmap; GL 1.1 tables 3.5, 3.6).
+pub const GL_COLOR_INDEX: GLenum = 0x1900;
+pub const GL_STENCIL_INDEX: GLenum = 0x1901;
+pub const GL_DEPTH_COMPONENT: GLenum = 0x1902;
+pub const GL_RED: GLenum = 0x1903;
+pub const GL_GREEN: GLenum = 0x1904;
+pub const GL_BLUE: GLenum = 0x1905;
+pub const GL_ALPHA: GLenum = 0x1906;
+pub const GL_RGB: GLenum = 0x1907;
+pub const GL_RGBA: GLenum = 0x1908;
+pub const GL_LUMINANCE: GLenum = 0x1909;
+pub const GL_LUMINANCE_ALPHA: GLenum = 0x190A;
+pub const GL_BITMAP: GLenum = 0x1A00;
+
+// The client attribute stack (glPushClientAttrib).
+pub const GL_CLIENT_PIXEL_STORE_BIT: GLenum = 0x0000_0001;
+pub const GL_CLIENT_VERTEX_ARRAY_BIT: GLenum = 0x0000_0002;
+pub const GL_CLIENT_ALL_ATTRIB_BITS: GLenum = 0xFFFF_FFFF;
+pub const GL_CLIENT_ATTRIB_STACK_DEPTH: GLenum = 0x0BB1;
+pub const GL_MAX_CLIENT_ATTRIB_STACK_DEPTH: GLenum = 0x0D3B;
