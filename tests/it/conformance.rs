@@ -30,6 +30,8 @@ mod ex4_bspline_surface;
 mod ex5_bird;
 #[path = "../../examples/flattwoviewports.rs"]
 mod flattwoviewports;
+#[path = "../../examples/labels.rs"]
+mod labels;
 #[path = "../../examples/linespoints.rs"]
 mod linespoints;
 #[path = "../../examples/lists.rs"]
@@ -199,6 +201,13 @@ fn textbook_exercises_match_mesa() {
 #[test]
 fn display_lists_match_mesa() {
     check("lists", lists::app, 0.0);
+}
+
+/// Raster positions, GLUT bitmap fonts, `draw_pixels` and a `bitmap` from a display list
+/// (`Labels.c`): every glyph and image pixel where real Mesa's glBitmap and glDrawPixels put it.
+#[test]
+fn labels_match_mesa() {
+    check("labels", labels::app, 0.0);
 }
 
 /// GLUT's solid teapot (32 bicubic patches through glMap2f/glEvalMesh2) against `Teapot.c`.
