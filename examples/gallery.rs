@@ -31,10 +31,10 @@ mod ex3_bspline_n;
 mod ex4_bspline_surface;
 #[path = "ex5_bird.rs"]
 mod ex5_bird;
-#[path = "fogblend.rs"]
-mod fogblend;
 #[path = "flattwoviewports.rs"]
 mod flattwoviewports;
+#[path = "fogblend.rs"]
+mod fogblend;
 #[path = "linespoints.rs"]
 mod linespoints;
 #[path = "lists.rs"]

@@ -226,6 +226,21 @@ pub const GL_CLAMP_TO_EDGE: GLenum = 0x812F;
 pub const GL_TEXTURE_BINDING_1D: GLenum = 0x8068;
 pub const GL_TEXTURE_BINDING_2D: GLenum = 0x8069;
 pub const GL_MAX_TEXTURE_SIZE: GLenum = 0x0D33;
+// The current raster position (glGet, GL 1.1 spec §2.12).
+pub const GL_CURRENT_RASTER_COLOR: GLenum = 0x0B04;
+pub const GL_CURRENT_RASTER_INDEX: GLenum = 0x0B05;
+pub const GL_CURRENT_RASTER_TEXTURE_COORDS: GLenum = 0x0B06;
+pub const GL_CURRENT_RASTER_POSITION: GLenum = 0x0B07;
+pub const GL_CURRENT_RASTER_POSITION_VALID: GLenum = 0x0B08;
+pub const GL_CURRENT_RASTER_DISTANCE: GLenum = 0x0B09;
+
+// Pixel formats and the bitmap type (glDrawPixels, glBitmap; GL 1.1 tables 3.5, 3.6).
+pub const GL_COLOR_INDEX: GLenum = 0x1900;
+pub const GL_STENCIL_INDEX: GLenum = 0x1901;
+pub const GL_DEPTH_COMPONENT: GLenum = 0x1902;
+pub const GL_RED: GLenum = 0x1903;
+pub const GL_GREEN: GLenum = 0x1904;
+pub const GL_BLUE: GLenum = 0x1905;
 pub const GL_ALPHA: GLenum = 0x1906;
 pub const GL_RGB: GLenum = 0x1907;
 pub const GL_RGBA: GLenum = 0x1908;
@@ -257,3 +272,11 @@ pub const GL_FOG_COLOR: GLenum = 0x0B66;
 pub const GL_FOG_INDEX: GLenum = 0x0B61;
 pub const GL_EXP: GLenum = 0x0800;
 pub const GL_EXP2: GLenum = 0x0801;
+pub const GL_BITMAP: GLenum = 0x1A00;
+
+// The client attribute stack (glPushClientAttrib).
+pub const GL_CLIENT_PIXEL_STORE_BIT: GLenum = 0x0000_0001;
+pub const GL_CLIENT_VERTEX_ARRAY_BIT: GLenum = 0x0000_0002;
+pub const GL_CLIENT_ALL_ATTRIB_BITS: GLenum = 0xFFFF_FFFF;
+pub const GL_CLIENT_ATTRIB_STACK_DEPTH: GLenum = 0x0BB1;
+pub const GL_MAX_CLIENT_ATTRIB_STACK_DEPTH: GLenum = 0x0D3B;

@@ -16,6 +16,7 @@
 //! Not compiled, executed at once (spec §5.4): `glGenLists`, `glNewList`, `glEndList`,
 //! `glDeleteLists`, `glIsList`, `glGet*`, `glIsEnabled`, `glGetError`, `glFlush`, `glFinish`.
 
+use super::bitmap::BitmapCall;
 use super::consts::*;
 use super::frame::Call;
 use super::mesh_job::MeshJob;
@@ -124,6 +125,11 @@ pub(crate) enum ListCommand {
     /// Triangles over scattered points evaluated by the GPU tessellator (GLU's trimmed
     /// surfaces there), with the jobs' maps copied.
     ScatteredMesh(Vec<MeshJob>, Vec<u32>),
+    RasterPos([f32; 4]),
+    /// `glBitmap` with its bits unpacked at compile time (`None`: the slice was too short).
+    Bitmap(BitmapCall, Option<Vec<bool>>),
+    /// `glDrawPixels` with its pixels unpacked to RGBA at compile time.
+    DrawPixels((GLsizei, GLsizei), GLenum, GLenum, Option<Vec<[f32; 4]>>),
     CallList(GLuint),
     CallLists(GLsizei, GLenum, Vec<u8>),
     ListBase(GLuint),
@@ -429,6 +435,9 @@ impl Gl {
             C::PopAttrib => self.pop_attrib(),
             C::EmitVertex(v) => self.emit_listed_vertex(*v),
             C::ScatteredMesh(jobs, triangles) => self.record_scattered_mesh(jobs.clone(), triangles.clone()),
+            C::RasterPos([x, y, z, w]) => self.raster_pos4f(*x, *y, *z, *w),
+            C::Bitmap(call, bits) => self.draw_bitmap(*call, bits.as_deref()),
+            C::DrawPixels(size, format, type_, rgba) => self.draw_rgba(*size, *format, *type_, rgba.as_deref()),
             C::CallList(list) => self.call_list(*list),
             C::CallLists(n, type_, names) => self.call_lists(*n, *type_, names),
             C::ListBase(base) => self.list_base(*base),

@@ -7,6 +7,7 @@
 //! bounds. Nothing here panics on bad input.
 
 mod attrib;
+mod bitmap;
 pub mod consts;
 mod enable;
 mod eval;
@@ -19,6 +20,7 @@ mod matrix;
 mod mesh_job;
 mod pixels;
 mod raster;
+mod raster_pos;
 mod texture;
 pub mod types;
 mod vertex;
@@ -112,6 +114,8 @@ pub struct Gl {
     pub(crate) matrices: matrix::MatrixStacks,
     lighting: lighting::Lighting,
     pub(crate) raster: raster::RasterState,
+    /// The current raster position, where bitmaps and pixels are drawn.
+    raster_pos: raster_pos::RasterPos,
     /// Index in `frame.states` of a snapshot of the current state, if still valid.
     state_index: Option<usize>,
     frame: Frame,
@@ -153,6 +157,7 @@ impl Gl {
             matrices: matrix::MatrixStacks::default(),
             lighting: lighting::Lighting::default(),
             raster: raster::RasterState::new(width, height),
+            raster_pos: raster_pos::RasterPos::default(),
             state_index: None,
             frame: Frame::default(),
             vertex_pool: Vec::new(),
@@ -333,12 +338,18 @@ impl Gl {
     }
 
     /// `glGetIntegerv` for the evaluator queries (`GL_MAX_EVAL_ORDER`, the grid domains and
-    /// segments). Floats are rounded to the nearest integer, as GL converts them.
+    /// segments), the display-list state and the raster position (`GL_CURRENT_RASTER_POSITION`,
+    /// `_POSITION_VALID`, `_COLOR`, `_TEXTURE_COORDS`, `_DISTANCE`). Floats are rounded to the
+    /// nearest integer, as GL converts them, except colours, which map [0, 1] linearly onto
+    /// [0, 2³¹ − 1] (GL 1.1 §6.1.2; Mesa `FLOAT_TO_INT`).
     pub fn get_integerv(&mut self, pname: GLenum, params: &mut [GLint]) {
+        if pname == GL_CURRENT_RASTER_COLOR {
+            return self.get_converted(pname, params, |v| (v * f64::from(GLint::MAX)) as GLint);
+        }
         self.get_converted(pname, params, |v| v.round() as GLint);
     }
 
-    /// `glGetFloatv` for the evaluator queries (see [`Gl::get_integerv`]).
+    /// `glGetFloatv` for the queries of [`Gl::get_integerv`].
     pub fn get_floatv(&mut self, pname: GLenum, params: &mut [GLfloat]) {
         self.get_converted(pname, params, |v| v as GLfloat);
     }
@@ -360,24 +371,19 @@ impl Gl {
         if self.reject_inside_begin_end() {
             return None;
         }
-        let n = match pname {
-            GL_MAX_EVAL_ORDER => {
-                out[0] = f64::from(MAX_EVAL_ORDER);
-                1
-            }
-            _ => match (self.eval.grid_query(pname, out), self.list_query(pname).or(self.texture_query(pname))) {
-                (Some(n), _) => n,
-                (None, Some(value)) => {
-                    out[0] = value;
-                    1
-                }
-                (None, None) => {
-                    self.set_error(GL_INVALID_ENUM);
-                    return None;
-                }
-            },
-        };
-        Some(n)
+        if pname == GL_MAX_EVAL_ORDER {
+            out[0] = f64::from(MAX_EVAL_ORDER);
+            return Some(1);
+        }
+        if let Some(value) = self.list_query(pname).or_else(|| self.texture_query(pname)) {
+            out[0] = value;
+            return Some(1);
+        }
+        let n = self.eval.grid_query(pname, out).or_else(|| self.raster_pos_query(pname, out));
+        if n.is_none() {
+            self.set_error(GL_INVALID_ENUM);
+        }
+        n
     }
 
     /// Records `code` unless an earlier error is still pending (GL's sticky flag; Mesa's `_mesa_error`).

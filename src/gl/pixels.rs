@@ -26,13 +26,14 @@ impl Default for PixelStore {
 }
 
 impl PixelStore {
-    /// Bytes from one row's start to the next for rows of `width` pixels of `size` bytes
-    /// (`size` a power of two up to 8; GL 1.1 eq. 3.1: `k = a/s · ⌈s·n·l / a⌉` when s < a).
+    /// Bytes from one row's start to the next for rows of `width` pixels of `components`
+    /// elements of `element` bytes (GL 1.1 eq. 3.1: `k = n·l` elements when `element` ≥ the
+    /// alignment `a`, else `a/s · ⌈s·n·l / a⌉`).
     #[must_use]
-    pub fn row_stride(&self, width: usize, size: usize) -> usize {
+    pub fn row_stride(&self, width: usize, components: usize, element: usize) -> usize {
         let pixels = if self.row_length > 0 { self.row_length } else { width };
-        let bytes = pixels * size;
-        if size >= self.alignment {
+        let bytes = pixels * components * element;
+        if element >= self.alignment {
             bytes
         } else {
             bytes.div_ceil(self.alignment) * self.alignment
@@ -40,7 +41,6 @@ impl PixelStore {
     }
 
     /// Bytes from one bitmap row's start to the next (one bit a pixel, GL 1.1 §3.6.4).
-    #[allow(dead_code)] // glBitmap's
     #[must_use]
     pub fn bitmap_row_stride(&self, width: usize) -> usize {
         let pixels = if self.row_length > 0 { self.row_length } else { width };
@@ -54,11 +54,17 @@ impl PixelStore {
     }
 }
 
-/// The client's pixel storage state.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+/// Mesa's `MAX_CLIENT_ATTRIB_STACK_DEPTH` (`main/config.h`).
+pub(crate) const MAX_CLIENT_ATTRIB_STACK_DEPTH: usize = 16;
+
+/// The client's pixel storage state, and `glPushClientAttrib`'s stack (the pixel-store group
+/// is the only client group kept: gleval has no vertex arrays).
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub(crate) struct PixelStores {
     pub unpack: PixelStore,
     pub pack: PixelStore,
+    /// One entry per push: the unpack and pack modes when `GL_CLIENT_PIXEL_STORE_BIT` was set.
+    saved: Vec<Option<(PixelStore, PixelStore)>>,
 }
 
 impl Gl {
@@ -103,6 +109,34 @@ impl Gl {
         self.pixel_storei(pname, value);
     }
 
+    /// `glPushClientAttrib(mask)`: saves the pixel-store modes when `mask` has
+    /// `GL_CLIENT_PIXEL_STORE_BIT` (other bits are accepted and save nothing). A full stack →
+    /// `GL_STACK_OVERFLOW`. Not compiled into display lists.
+    pub fn push_client_attrib(&mut self, mask: GLbitfield) {
+        if self.reject_inside_begin_end() {
+            return;
+        }
+        let stores = &mut self.pixel_stores;
+        if stores.saved.len() >= MAX_CLIENT_ATTRIB_STACK_DEPTH {
+            return self.set_error(GL_STACK_OVERFLOW);
+        }
+        let entry = (mask & GL_CLIENT_PIXEL_STORE_BIT != 0).then_some((stores.unpack, stores.pack));
+        stores.saved.push(entry);
+    }
+
+    /// `glPopClientAttrib`: restores what the matching push saved. An empty stack →
+    /// `GL_STACK_UNDERFLOW`.
+    pub fn pop_client_attrib(&mut self) {
+        if self.reject_inside_begin_end() {
+            return;
+        }
+        match self.pixel_stores.saved.pop() {
+            None => self.set_error(GL_STACK_UNDERFLOW),
+            Some(Some((unpack, pack))) => (self.pixel_stores.unpack, self.pixel_stores.pack) = (unpack, pack),
+            Some(None) => {}
+        }
+    }
+
     /// The unpack modes images, bitmaps and textures are read with.
     pub(crate) fn unpack_store(&self) -> PixelStore {
         self.pixel_stores.unpack
@@ -131,15 +165,42 @@ mod tests {
     #[test]
     fn rows_are_aligned_as_gl_says() {
         let four = PixelStore::default();
-        assert_eq!(four.row_stride(3, 3), 12); // 9 bytes of RGB, padded to 4
-        assert_eq!(four.row_stride(3, 4), 12);
+        assert_eq!(four.row_stride(3, 3, 1), 12); // 9 bytes of RGB, padded to 4
+        assert_eq!(four.row_stride(3, 4, 1), 12);
+        assert_eq!(four.row_stride(3, 3, 4), 36); // floats are aligned already
+        let two = PixelStore { alignment: 2, ..four };
+        assert_eq!(two.row_stride(3, 3, 1), 10);
+        let eight = PixelStore { alignment: 8, ..four };
+        assert_eq!(eight.row_stride(3, 3, 4), 40);
         assert_eq!(four.bitmap_row_stride(9), 4); // 2 bytes, padded to 4
         let one = PixelStore { alignment: 1, ..four };
-        assert_eq!(one.row_stride(3, 3), 9);
+        assert_eq!(one.row_stride(3, 3, 1), 9);
         assert_eq!(one.bitmap_row_stride(9), 2);
         let long = PixelStore { row_length: 10, skip_rows: 2, skip_pixels: 1, ..one };
-        assert_eq!(long.row_stride(3, 3), 30);
+        assert_eq!(long.row_stride(3, 3, 1), 30);
         assert_eq!(long.first_byte(30, 3), 63);
+    }
+
+    #[test]
+    fn client_attrib_saves_and_restores_the_pixel_stores() {
+        let mut gl = Gl::new(4, 4);
+        gl.pixel_storei(GL_UNPACK_ALIGNMENT, 2);
+        gl.push_client_attrib(GL_CLIENT_PIXEL_STORE_BIT);
+        gl.pixel_storei(GL_UNPACK_ALIGNMENT, 1);
+        gl.pixel_storei(GL_PACK_LSB_FIRST, 1);
+        gl.push_client_attrib(GL_CLIENT_VERTEX_ARRAY_BIT);
+        gl.pixel_storei(GL_UNPACK_ALIGNMENT, 8);
+        gl.pop_client_attrib();
+        assert_eq!(gl.unpack_store().alignment, 8, "the vertex-array group does not hold the pixel stores");
+        gl.pop_client_attrib();
+        assert_eq!(gl.unpack_store().alignment, 2);
+        assert!(!gl.pixel_stores.pack.lsb_first);
+        gl.pop_client_attrib();
+        assert_eq!(gl.get_error(), GL_STACK_UNDERFLOW);
+        for _ in 0..=MAX_CLIENT_ATTRIB_STACK_DEPTH {
+            gl.push_client_attrib(GL_CLIENT_ALL_ATTRIB_BITS);
+        }
+        assert_eq!(gl.get_error(), GL_STACK_OVERFLOW);
     }
 
     #[test]

@@ -608,7 +608,7 @@ impl Gl {
     fn unpack_texels(&self, layout: ImageFormat, w: usize, h: usize, bytes: &[u8]) -> Option<Vec<[u8; 4]>> {
         let store = self.unpack_store();
         let size = layout.pixel_size();
-        let stride = store.row_stride(w, size);
+        let stride = store.row_stride(w, layout.components, layout.component_size);
         let first = store.first_byte(stride, size);
         if w == 0 || h == 0 {
             return Some(Vec::new());

@@ -156,7 +156,7 @@ impl Gl {
     fn packed_image(&self, width: usize, height: usize, components: usize, bytes: &[u8]) -> Option<Image> {
         // GLU reads the unpack modes (glGetIntegerv) and unpacks the image itself.
         let store = self.unpack_store();
-        let stride = store.row_stride(width, components);
+        let stride = store.row_stride(width, components, 1);
         let first = store.first_byte(stride, components);
         let needed = first + (height - 1) * stride + width * components;
         if bytes.len() < needed {

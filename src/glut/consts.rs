@@ -3,6 +3,12 @@
 
 use crate::gl::types::GLenum;
 
+// Bitmap fonts (glutBitmapCharacter).
+pub use super::fonts::{
+    GLUT_BITMAP_8_BY_13, GLUT_BITMAP_9_BY_15, GLUT_BITMAP_HELVETICA_10, GLUT_BITMAP_HELVETICA_12,
+    GLUT_BITMAP_HELVETICA_18, GLUT_BITMAP_TIMES_ROMAN_10, GLUT_BITMAP_TIMES_ROMAN_24,
+};
+
 // Mouse buttons and states (glutMouseFunc), window entry (glutEntryFunc).
 /// The left mouse button.
 pub const GLUT_LEFT_BUTTON: i32 = 0;

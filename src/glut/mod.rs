@@ -9,6 +9,7 @@
 //! `App`'s builder methods.
 
 pub mod consts;
+pub mod fonts;
 // The main loop's scheduling belongs to the runner, `App`.
 #[cfg(all(feature = "gpu", feature = "png"))]
 mod schedule;

@@ -32,6 +32,8 @@ mod ex5_bird;
 mod flattwoviewports;
 #[path = "../../examples/fogblend.rs"]
 mod fogblend;
+#[path = "../../examples/labels.rs"]
+mod labels;
 #[path = "../../examples/linespoints.rs"]
 mod linespoints;
 #[path = "../../examples/lists.rs"]
@@ -226,6 +228,13 @@ fn mipmapped_nurbs_surface_matches_mesa() {
 #[test]
 fn fog_blending_and_alpha_test_match_mesa() {
     check("fogblend", fogblend::app, 0.0);
+}
+
+/// Raster positions, GLUT bitmap fonts, `draw_pixels` and a `bitmap` from a display list
+/// (`Labels.c`): every glyph and image pixel where real Mesa's glBitmap and glDrawPixels put it.
+#[test]
+fn labels_match_mesa() {
+    check("labels", labels::app, 0.0);
 }
 
 /// GLUT's solid teapot (32 bicubic patches through glMap2f/glEvalMesh2) against `Teapot.c`.

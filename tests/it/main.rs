@@ -10,6 +10,7 @@ mod gpu_parity;
 mod interactive_demo;
 mod mesa_calls;
 mod properties;
+mod raster_images;
 mod robustness;
 mod shaders;
 mod spec_errors;

@@ -8,6 +8,7 @@
 #include <time.h>
 #include <zlib.h>
 #include "glut_osmesa.h"
+#include "glut_fonts.h"
 
 static int width = 300, height = 300, frames = 0;
 static const char *png_path = "out.png";
@@ -31,6 +32,54 @@ void glutPostRedisplay(void) {}
 void glutSwapBuffers(void) { glFinish(); }
 int glutGet(unsigned int what) {
     return what == GLUT_WINDOW_WIDTH ? width : what == GLUT_WINDOW_HEIGHT ? height : -1;
+}
+
+/* The glyph of `c` in `font` and its rows, or NULL (codes outside 1..255 and ones the font lacks). */
+static const GlutGlyph *glyph(void *font, int c, const unsigned char **bits) {
+    static const struct { const GlutGlyph *glyphs; const unsigned char *bits; } fonts[] = {
+        {FIXED_9_BY_15_GLYPHS, FIXED_9_BY_15_BITS},   {FIXED_8_BY_13_GLYPHS, FIXED_8_BY_13_BITS},
+        {TIMES_ROMAN_10_GLYPHS, TIMES_ROMAN_10_BITS}, {TIMES_ROMAN_24_GLYPHS, TIMES_ROMAN_24_BITS},
+        {HELVETICA_10_GLYPHS, HELVETICA_10_BITS},     {HELVETICA_12_GLYPHS, HELVETICA_12_BITS},
+        {HELVETICA_18_GLYPHS, HELVETICA_18_BITS},
+    };
+    size_t id = (size_t)font;
+    if (id < 2 || id > 8 || c < 1 || c > 255) return NULL;
+    const GlutGlyph *g = &fonts[id - 2].glyphs[c];
+    if (g->offset < 0) return NULL;
+    *bits = fonts[id - 2].bits + g->offset;
+    return g;
+}
+
+/* As freeglut: glBitmap with the glyph's metrics, unpack alignment 1, the client's modes kept. */
+void glutBitmapCharacter(void *font, int character) {
+    const unsigned char *bits;
+    const GlutGlyph *g = glyph(font, character, &bits);
+    if (!g) return;
+    glPushClientAttrib(GL_CLIENT_PIXEL_STORE_BIT);
+    glPixelStorei(GL_UNPACK_SWAP_BYTES, GL_FALSE);
+    glPixelStorei(GL_UNPACK_LSB_FIRST, GL_FALSE);
+    glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+    glPixelStorei(GL_UNPACK_SKIP_ROWS, 0);
+    glPixelStorei(GL_UNPACK_SKIP_PIXELS, 0);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glBitmap(g->width, g->height, g->xorig, g->yorig, g->advance, 0, bits);
+    glPopClientAttrib();
+}
+
+int glutBitmapWidth(void *font, int character) {
+    const unsigned char *bits;
+    const GlutGlyph *g = glyph(font, character, &bits);
+    return g ? g->advance : 0;
+}
+
+int glutBitmapLength(void *font, const unsigned char *string) {
+    int longest = 0, line = 0;
+    for (; *string; string++) {
+        if (*string == '\n') line = 0;
+        else line += glutBitmapWidth(font, *string);
+        if (line > longest) longest = line;
+    }
+    return longest;
 }
 
 int glutCreateWindow(const char *title) {

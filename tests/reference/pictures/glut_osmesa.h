@@ -23,4 +23,15 @@ int glutGet(unsigned int what);
 void glutPostRedisplay(void);
 void glutSwapBuffers(void);
 void glutMainLoop(void);
+/* Bitmap fonts: freeglut's handle values; glyphs from glut_fonts.h (tools/fonts/gen.py). */
+#define GLUT_BITMAP_9_BY_15 ((void *)0x0002)
+#define GLUT_BITMAP_8_BY_13 ((void *)0x0003)
+#define GLUT_BITMAP_TIMES_ROMAN_10 ((void *)0x0004)
+#define GLUT_BITMAP_TIMES_ROMAN_24 ((void *)0x0005)
+#define GLUT_BITMAP_HELVETICA_10 ((void *)0x0006)
+#define GLUT_BITMAP_HELVETICA_12 ((void *)0x0007)
+#define GLUT_BITMAP_HELVETICA_18 ((void *)0x0008)
+void glutBitmapCharacter(void *font, int character);
+int glutBitmapWidth(void *font, int character);
+int glutBitmapLength(void *font, const unsigned char *string);
 #endif

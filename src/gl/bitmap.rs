@@ -1,0 +1,421 @@
+//! `glBitmap` and `glDrawPixels` (GL 1.1 spec §3.6.3–3.6.4; Mesa `main/drawpix.c`): images
+//! drawn at the current raster position, one fragment per pixel.
+//!
+//! The image is unpacked from client memory with the unpack modes (`glPixelStore`) when the
+//! call is made (or compiled into a display list, as GL copies it then). Its fragments are
+//! recorded as a `GL_POINTS` primitive of one-pixel points at the pixel centres, with a draw
+//! state that maps window coordinates straight onto the window (identity modelview, a
+//! projection from window to clip coordinates, the whole window as viewport), no lighting, the
+//! raster position's depth and the current depth test, so the renderer needs nothing new.
+
+use super::consts::*;
+use super::frame::{Command, Primitive};
+use super::lists::ListCommand;
+use super::pixels::PixelStore;
+use super::types::*;
+use super::vertex::Vertex;
+use super::Gl;
+use glam::{Mat4, Vec3};
+
+/// Mesa's nudge before flooring a bitmap's origin ("to satisfy conformance tests (matches SGI's
+/// OpenGL)", `_mesa_Bitmap`).
+const BITMAP_EPSILON: f32 = 0.0001;
+
+/// Unpacks a `width` × `height` bitmap from `data` as GL reads it with `store` (rows bottom
+/// first, bit order per `GL_UNPACK_LSB_FIRST`, rows and bits skipped, rows aligned): one bool
+/// per pixel, row by row. `None` when `data` is shorter than the bitmap; negative sizes give an
+/// empty image (the call reports them).
+pub(crate) fn unpack_bitmap(store: PixelStore, width: GLsizei, height: GLsizei, data: &[u8]) -> Option<Vec<bool>> {
+    let (Ok(w), Ok(h)) = (usize::try_from(width), usize::try_from(height)) else { return Some(Vec::new()) };
+    if w == 0 || h == 0 {
+        return Some(Vec::new());
+    }
+    let stride = store.bitmap_row_stride(w);
+    let first_row = store.skip_rows * stride;
+    let needed = first_row + (h - 1) * stride + (store.skip_pixels + w).div_ceil(8);
+    if data.len() < needed {
+        return None;
+    }
+    let bit = |row: usize, i: usize| {
+        let b = store.skip_pixels + i;
+        let byte = data[first_row + row * stride + b / 8];
+        let mask = if store.lsb_first { 1 << (b % 8) } else { 0x80 >> (b % 8) };
+        byte & mask != 0
+    };
+    Some((0..h).flat_map(|j| (0..w).map(move |i| bit(j, i))).collect())
+}
+
+/// Components per pixel of a colour format gleval draws, `None` for the others.
+fn color_components(format: GLenum) -> Option<usize> {
+    match format {
+        GL_RED | GL_GREEN | GL_BLUE | GL_ALPHA | GL_LUMINANCE => Some(1),
+        GL_LUMINANCE_ALPHA => Some(2),
+        GL_RGB => Some(3),
+        GL_RGBA => Some(4),
+        _ => None,
+    }
+}
+
+/// One pixel's components as RGBA (GL 1.1 §3.6.3 "Conversion to RGB": missing colour
+/// components are 0, a missing alpha is 1, luminance goes to R, G and B).
+fn to_rgba(format: GLenum, c: &[f32]) -> [f32; 4] {
+    match format {
+        GL_RED => [c[0], 0.0, 0.0, 1.0],
+        GL_GREEN => [0.0, c[0], 0.0, 1.0],
+        GL_BLUE => [0.0, 0.0, c[0], 1.0],
+        GL_ALPHA => [0.0, 0.0, 0.0, c[0]],
+        GL_LUMINANCE => [c[0], c[0], c[0], 1.0],
+        GL_LUMINANCE_ALPHA => [c[0], c[0], c[0], c[1]],
+        GL_RGB => [c[0], c[1], c[2], 1.0],
+        _ => [c[0], c[1], c[2], c[3]],
+    }
+}
+
+/// Unpacks a `glDrawPixels` image of a colour format with `GL_UNSIGNED_BYTE` or `GL_FLOAT`
+/// components (native byte order, or swapped with `GL_UNPACK_SWAP_BYTES`) into RGBA, row by
+/// row. `None` when `data` is too short; other formats and types, and negative sizes, give an
+/// empty image (the call reports the errors).
+pub(crate) fn unpack_pixels(
+    store: PixelStore,
+    (width, height): (GLsizei, GLsizei),
+    format: GLenum,
+    type_: GLenum,
+    data: &[u8],
+) -> Option<Vec<[f32; 4]>> {
+    let (Ok(w), Ok(h)) = (usize::try_from(width), usize::try_from(height)) else { return Some(Vec::new()) };
+    let (Some(n), Some(element)) = (color_components(format), element_size(type_)) else { return Some(Vec::new()) };
+    if w == 0 || h == 0 {
+        return Some(Vec::new());
+    }
+    let stride = store.row_stride(w, n, element);
+    let first = store.first_byte(stride, n * element);
+    if data.len() < first + (h - 1) * stride + w * n * element {
+        return None;
+    }
+    let component = |at: usize| match type_ {
+        GL_FLOAT => {
+            let mut b = [data[at], data[at + 1], data[at + 2], data[at + 3]];
+            if store.swap_bytes {
+                b.reverse();
+            }
+            f32::from_ne_bytes(b)
+        }
+        _ => f32::from(data[at]) / 255.0,
+    };
+    let pixel = |j: usize, i: usize| {
+        let at = first + j * stride + i * n * element;
+        let c: Vec<f32> = (0..n).map(|k| component(at + k * element)).collect();
+        to_rgba(format, &c)
+    };
+    Some((0..h).flat_map(|j| (0..w).map(move |i| pixel(j, i))).collect())
+}
+
+fn element_size(type_: GLenum) -> Option<usize> {
+    match type_ {
+        GL_UNSIGNED_BYTE => Some(1),
+        GL_FLOAT => Some(4),
+        _ => None,
+    }
+}
+
+/// `glDrawPixels`' format and type checks (Mesa `_mesa_error_check_format_and_type` for the GL
+/// 1.1 enums): an unknown format or type, or `GL_BITMAP` with a colour format, is
+/// `GL_INVALID_ENUM`.
+fn format_and_type_error(format: GLenum, type_: GLenum) -> Option<GLenum> {
+    let known_format = (GL_COLOR_INDEX..=GL_LUMINANCE_ALPHA).contains(&format);
+    let known_type = type_ == GL_BITMAP || (GL_BYTE..=GL_FLOAT).contains(&type_);
+    let bitmap_of_colors = type_ == GL_BITMAP && !matches!(format, GL_COLOR_INDEX | GL_STENCIL_INDEX);
+    (!known_format || !known_type || bitmap_of_colors).then_some(GL_INVALID_ENUM)
+}
+
+/// The matrix that takes window coordinates (x, y, and z already in [0, 1] mapped to NDC
+/// [−1, 1]) to clip coordinates for a `width` × `height` viewport at the origin.
+fn window_to_clip(width: i32, height: i32) -> Mat4 {
+    let scale = Vec3::new(2.0 / width.max(1) as f32, 2.0 / height.max(1) as f32, 1.0);
+    Mat4::from_translation(Vec3::new(-1.0, -1.0, 0.0)) * Mat4::from_scale(scale)
+}
+
+impl Gl {
+    /// `glBitmap`: draws a `width` × `height` bitmap (GL 1.1 §3.6.4): set bit (i, j) is a
+    /// fragment at window (⌊xr − xorig⌋ + i, ⌊yr − yorig⌋ + j) in the raster colour at the
+    /// raster depth; then the raster position moves by (`xmove`, `ymove`). With an invalid raster
+    /// position nothing is drawn and the position does not move (Mesa). `bitmap` is read with the
+    /// unpack modes ([`Gl::pixel_storei`]; alignment 4 unless set). Errors: inside
+    /// `begin`/`end` → `GL_INVALID_OPERATION`; a negative size, or `bitmap` shorter than the
+    /// image → `GL_INVALID_VALUE`. Compiled into display lists with the bits unpacked then.
+    #[allow(clippy::too_many_arguments)]
+    pub fn bitmap(
+        &mut self,
+        width: GLsizei,
+        height: GLsizei,
+        xorig: GLfloat,
+        yorig: GLfloat,
+        xmove: GLfloat,
+        ymove: GLfloat,
+        bitmap: &[u8],
+    ) {
+        let store = self.unpack_store();
+        let unpacked = || unpack_bitmap(store, width, height, bitmap);
+        let call = BitmapCall { size: (width, height), origin: (xorig, yorig), step: (xmove, ymove) };
+        if self.compiled(|| ListCommand::Bitmap(call, unpacked())) {
+            return;
+        }
+        self.draw_bitmap(call, unpacked().as_deref());
+    }
+
+    /// Executes an unpacked `glBitmap` (`bits` `None`: the client's slice was too short).
+    pub(crate) fn draw_bitmap(&mut self, call: BitmapCall, bits: Option<&[bool]>) {
+        if self.reject_inside_begin_end() {
+            return;
+        }
+        let (width, height) = call.size;
+        if width < 0 || height < 0 {
+            return self.set_error(GL_INVALID_VALUE);
+        }
+        let Some(bits) = bits else { return self.set_error(GL_INVALID_VALUE) };
+        if !self.raster_pos.valid {
+            return;
+        }
+        let [xr, yr, z, _] = self.raster_pos.window;
+        let x0 = (xr + BITMAP_EPSILON - call.origin.0).floor() as i32;
+        let y0 = (yr + BITMAP_EPSILON - call.origin.1).floor() as i32;
+        let w = width as usize;
+        let pixels = bits.iter().enumerate().filter(|(_, &set)| set).map(|(k, _)| {
+            let (i, j) = ((k % w) as i32, (k / w) as i32);
+            [x0 + i, y0 + j]
+        });
+        let color = self.raster_pos.color.map(|c| c.clamp(0.0, 1.0));
+        let fragments: Vec<_> = pixels.map(|p| (p, color)).collect();
+        self.record_fragments(z, &fragments);
+        self.advance_raster_pos(call.step.0, call.step.1);
+    }
+
+    /// `glDrawPixels` for the colour formats (`GL_RED` .. `GL_LUMINANCE_ALPHA`) with
+    /// `GL_UNSIGNED_BYTE` or `GL_FLOAT` components: pixel (i, j) is a fragment at window
+    /// (round(xr) + i, round(yr) + j) (Mesa rounds; zoom 1) at the raster depth. Nothing is drawn
+    /// when the raster position is invalid. `pixels` is read with the unpack modes. Errors, in
+    /// Mesa's order: inside `begin`/`end` → `GL_INVALID_OPERATION`; a negative size →
+    /// `GL_INVALID_VALUE`; an unknown format or type → `GL_INVALID_ENUM`; `pixels` shorter than
+    /// the image → `GL_INVALID_VALUE`. Other valid formats and types (indices, depth, stencil,
+    /// the other integer types) draw nothing.
+    pub fn draw_pixels(&mut self, width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum, pixels: &[u8]) {
+        let store = self.unpack_store();
+        let unpacked = || unpack_pixels(store, (width, height), format, type_, pixels);
+        if self.compiled(|| ListCommand::DrawPixels((width, height), format, type_, unpacked())) {
+            return;
+        }
+        self.draw_rgba((width, height), format, type_, unpacked().as_deref());
+    }
+
+    /// Executes an unpacked `glDrawPixels` (`rgba` `None`: the client's slice was too short).
+    pub(crate) fn draw_rgba(
+        &mut self,
+        (width, height): (GLsizei, GLsizei),
+        format: GLenum,
+        type_: GLenum,
+        rgba: Option<&[[f32; 4]]>,
+    ) {
+        if self.reject_inside_begin_end() {
+            return;
+        }
+        if width < 0 || height < 0 {
+            return self.set_error(GL_INVALID_VALUE);
+        }
+        if let Some(code) = format_and_type_error(format, type_) {
+            return self.set_error(code);
+        }
+        let Some(rgba) = rgba else { return self.set_error(GL_INVALID_VALUE) };
+        if !self.raster_pos.valid || rgba.is_empty() {
+            return;
+        }
+        let [xr, yr, z, _] = self.raster_pos.window;
+        let (x0, y0) = (xr.round() as i32, yr.round() as i32);
+        let w = width as usize;
+        let fragments: Vec<_> = rgba
+            .iter()
+            .enumerate()
+            .map(|(k, c)| ([x0 + (k % w) as i32, y0 + (k / w) as i32], c.map(|v| v.clamp(0.0, 1.0))))
+            .collect();
+        self.record_fragments(z, &fragments);
+    }
+
+    /// Records fragments (window pixel, colour) at window depth `z` as one-pixel points at the
+    /// pixel centres; those outside the window are dropped.
+    fn record_fragments(&mut self, z: f32, fragments: &[([i32; 2], [f32; 4])]) {
+        let (w, h) = (self.width(), self.height());
+        let inside = |p: &[i32; 2]| (0..w).contains(&p[0]) && (0..h).contains(&p[1]);
+        let first = self.frame.vertices.len();
+        for &(p, color) in fragments.iter().filter(|(p, _)| inside(p)) {
+            let position = [p[0] as f32 + 0.5, p[1] as f32 + 0.5, 2.0 * z - 1.0, 1.0];
+            self.frame.vertices.push(Vertex { position, color, ..self.current_vertex(position) });
+        }
+        let count = self.frame.vertices.len() - first;
+        if count == 0 {
+            return;
+        }
+        let state = self.window_state();
+        self.frame.primitives.push(Primitive { mode: GL_POINTS, first, count, state });
+        self.frame.commands.push(Command::Draw(self.frame.primitives.len() - 1));
+    }
+
+    /// The index of a draw state that puts window coordinates on their pixels: the current state
+    /// (depth test included) with identity modelview, a window-to-clip projection, the whole
+    /// window as viewport, depth range [0, 1], no lighting and one-pixel points.
+    fn window_state(&mut self) -> usize {
+        // No texture and no fog: the raster position's texture coordinates and distance are
+        // not applied to these fragments (left out; blending and the alpha test are kept).
+        let mut state = self.snapshot(None);
+        state.fog = None;
+        let (w, h) = (self.width(), self.height());
+        state.modelview = Mat4::IDENTITY;
+        state.projection = window_to_clip(w, h);
+        state.viewport = [0, 0, w, h];
+        state.depth_range = [0.0, 1.0];
+        state.lighting = None;
+        state.point_size = 1.0;
+        state.shade_model = GL_FLAT;
+        match self.frame.states.last() {
+            Some(last) if *last == state => self.frame.states.len() - 1,
+            _ => {
+                self.frame.states.push(state);
+                self.frame.states.len() - 1
+            }
+        }
+    }
+}
+
+/// A `glBitmap` call's sizes and offsets (its bits travel beside it).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct BitmapCall {
+    pub size: (GLsizei, GLsizei),
+    pub origin: (GLfloat, GLfloat),
+    pub step: (GLfloat, GLfloat),
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const MSB: PixelStore =
+        PixelStore { swap_bytes: false, lsb_first: false, row_length: 0, skip_rows: 0, skip_pixels: 0, alignment: 4 };
+
+    fn rows(bits: &[bool], w: usize) -> Vec<String> {
+        bits.chunks(w).map(|r| r.iter().map(|&b| if b { '#' } else { '.' }).collect()).collect()
+    }
+
+    #[test]
+    fn bitmaps_unpack_with_alignment_bit_order_and_skips() {
+        // 10 × 2: rows of 2 bytes, padded to 4 by the default alignment.
+        let data = [0b1000_0000, 0b0100_0000, 0xEE, 0xEE, 0b0000_0001, 0b1100_0000, 0xEE, 0xEE];
+        let bits = unpack_bitmap(MSB, 10, 2, &data).unwrap();
+        assert_eq!(rows(&bits, 10), ["#........#", ".......###"]);
+        let lsb = PixelStore { lsb_first: true, ..MSB };
+        assert_eq!(rows(&unpack_bitmap(lsb, 10, 2, &data).unwrap(), 10), [".......#..", "#........."]);
+        let one = PixelStore { alignment: 1, ..MSB };
+        assert_eq!(rows(&unpack_bitmap(one, 8, 2, &[0xF0, 0x0F]).unwrap(), 8), ["####....", "....####"]);
+        let skipped = PixelStore { skip_rows: 1, skip_pixels: 7, row_length: 16, alignment: 1, ..MSB };
+        assert_eq!(rows(&unpack_bitmap(skipped, 3, 1, &[0, 0, 0b0000_0001, 0b1000_0000]).unwrap(), 3), ["##."]);
+        assert_eq!(unpack_bitmap(MSB, 10, 2, &data[..5]), None, "the last row needs 2 bytes, not 4");
+        assert!(unpack_bitmap(MSB, 10, 2, &data[..6]).is_some());
+        assert_eq!(unpack_bitmap(MSB, 0, 5, &[]), Some(Vec::new()));
+    }
+
+    #[test]
+    fn pixels_unpack_to_rgba() {
+        let one = PixelStore { alignment: 1, ..MSB };
+        let rgb = unpack_pixels(one, (2, 1), GL_RGB, GL_UNSIGNED_BYTE, &[255, 0, 0, 0, 51, 255]).unwrap();
+        assert_eq!(rgb, [[1.0, 0.0, 0.0, 1.0], [0.0, 0.2, 1.0, 1.0]]);
+        // Rows of 3 luminance bytes are padded to 4.
+        let lum = unpack_pixels(MSB, (3, 2), GL_LUMINANCE, GL_UNSIGNED_BYTE, &[0, 0, 0, 9, 255, 255, 255]).unwrap();
+        assert_eq!(lum[3], [1.0, 1.0, 1.0, 1.0]);
+        assert_eq!(unpack_pixels(MSB, (3, 2), GL_LUMINANCE, GL_UNSIGNED_BYTE, &[0; 6]), None);
+        let floats: Vec<u8> = [0.25f32, 0.5, 0.75, 1.0].iter().flat_map(|f| f.to_ne_bytes()).collect();
+        assert_eq!(unpack_pixels(MSB, (1, 1), GL_RGBA, GL_FLOAT, &floats).unwrap(), [[0.25, 0.5, 0.75, 1.0]]);
+    }
+
+    fn points(gl: &mut Gl) -> Vec<([f32; 2], [f32; 4])> {
+        let frame = gl.frame().clone();
+        frame.iter().flat_map(|(_, v)| v.iter().map(|v| ([v.position[0], v.position[1]], v.color))).collect()
+    }
+
+    #[test]
+    fn a_bitmap_draws_at_the_floored_origin_in_the_raster_colour_and_advances() {
+        let mut gl = Gl::new(20, 20);
+        gl.pixel_storei(GL_UNPACK_ALIGNMENT, 1);
+        gl.color3f(1.0, 0.0, 0.0);
+        gl.raster_pos2f(0.0, 0.0); // window (10, 10)
+        gl.color3f(0.0, 1.0, 0.0);
+        gl.bitmap(2, 2, 0.5, 1.0, 5.0, -1.0, &[0b1000_0000, 0b0100_0000]);
+        let red = [1.0, 0.0, 0.0, 1.0];
+        assert_eq!(points(&mut gl), [([9.5, 9.5], red), ([10.5, 10.5], red)]);
+        let mut p = [0.0f32; 4];
+        gl.get_floatv(GL_CURRENT_RASTER_POSITION, &mut p);
+        assert_eq!(p, [15.0, 9.0, 0.5, 1.0]);
+        let frame = gl.frame();
+        let state = &frame.states[frame.primitives[0].state];
+        assert_eq!((state.viewport, state.lighting.is_none(), state.point_size), ([0, 0, 20, 20], true, 1.0));
+        assert_eq!(gl.get_error(), GL_NO_ERROR);
+    }
+
+    #[test]
+    fn an_invalid_raster_position_draws_nothing_and_does_not_move() {
+        let mut gl = Gl::new(20, 20);
+        gl.raster_pos2f(2.0, 0.0);
+        gl.bitmap(8, 1, 0.0, 0.0, 8.0, 0.0, &[0xFF, 0, 0, 0]);
+        gl.draw_pixels(1, 1, GL_RGBA, GL_UNSIGNED_BYTE, &[255; 4]);
+        assert!(points(&mut gl).is_empty());
+        assert_eq!(gl.get_error(), GL_NO_ERROR);
+    }
+
+    #[test]
+    fn draw_pixels_rounds_the_raster_position() {
+        let mut gl = Gl::new(8, 8);
+        gl.matrix_mode(GL_PROJECTION);
+        gl.ortho(0.0, 8.0, 0.0, 8.0, -1.0, 1.0);
+        gl.raster_pos2f(2.6, 3.4);
+        gl.pixel_storei(GL_UNPACK_ALIGNMENT, 1);
+        gl.draw_pixels(1, 2, GL_RGB, GL_UNSIGNED_BYTE, &[255, 0, 0, 0, 0, 255]);
+        assert_eq!(points(&mut gl), [([3.5, 3.5], [1.0, 0.0, 0.0, 1.0]), ([3.5, 4.5], [0.0, 0.0, 1.0, 1.0])]);
+    }
+
+    #[test]
+    fn bitmap_and_pixels_errors_in_mesas_order() {
+        let mut gl = Gl::new(8, 8);
+        gl.bitmap(-1, 1, 0.0, 0.0, 0.0, 0.0, &[]);
+        assert_eq!(gl.get_error(), GL_INVALID_VALUE);
+        gl.bitmap(8, 2, 0.0, 0.0, 0.0, 0.0, &[0xFF]);
+        assert_eq!(gl.get_error(), GL_INVALID_VALUE, "short slice");
+        gl.begin(GL_POINTS);
+        gl.bitmap(-1, 1, 0.0, 0.0, 0.0, 0.0, &[]);
+        gl.end();
+        assert_eq!(gl.get_error(), GL_INVALID_OPERATION);
+        gl.draw_pixels(-1, 1, 0x1234, GL_UNSIGNED_BYTE, &[]);
+        assert_eq!(gl.get_error(), GL_INVALID_VALUE);
+        gl.draw_pixels(1, 1, 0x1234, GL_UNSIGNED_BYTE, &[0; 4]);
+        assert_eq!(gl.get_error(), GL_INVALID_ENUM);
+        gl.draw_pixels(1, 1, GL_RGB, 0x1234, &[0; 4]);
+        assert_eq!(gl.get_error(), GL_INVALID_ENUM);
+        gl.draw_pixels(1, 1, GL_RGB, GL_BITMAP, &[0; 4]);
+        assert_eq!(gl.get_error(), GL_INVALID_ENUM);
+        gl.draw_pixels(2, 2, GL_RGBA, GL_UNSIGNED_BYTE, &[0; 12]);
+        assert_eq!(gl.get_error(), GL_INVALID_VALUE);
+        gl.draw_pixels(1, 1, GL_DEPTH_COMPONENT, GL_FLOAT, &[0; 4]);
+        assert_eq!(gl.get_error(), GL_NO_ERROR, "valid, but gleval draws only colours");
+    }
+
+    #[test]
+    fn a_list_keeps_the_bits_unpacked_when_it_was_compiled() {
+        let mut gl = Gl::new(32, 32);
+        gl.new_list(1, GL_COMPILE);
+        gl.raster_pos2i(0, 0);
+        gl.bitmap(8, 1, 0.0, 0.0, 8.0, 0.0, &[0b1100_0000, 0, 0, 0]);
+        gl.draw_pixels(1, 1, GL_LUMINANCE, GL_UNSIGNED_BYTE, &[255, 0, 0, 0]);
+        gl.end_list();
+        assert!(points(&mut gl).is_empty());
+        gl.pixel_storei(GL_UNPACK_LSB_FIRST, 1);
+        gl.call_list(1);
+        let xs: Vec<f32> = points(&mut gl).iter().map(|p| p.0[0]).collect();
+        assert_eq!(xs, [16.5, 17.5, 24.5]);
+        assert_eq!(gl.get_error(), GL_NO_ERROR);
+    }
+}

@@ -1,0 +1,281 @@
+//! The current raster position (GL 1.1 spec §2.12; Mesa `main/rastpos.c`, which Mesa's gallium
+//! drivers use for fixed-function `glRasterPos`): where `glBitmap` and `glDrawPixels` draw.
+//!
+//! `glRasterPos` treats its argument as a vertex: modelview, projection, a clip test (a
+//! position outside the clip volume makes the raster position invalid, and bitmaps and pixels
+//! then draw nothing), then the viewport and depth range give window coordinates. The raster
+//! colour and texture coordinate are the current ones at that moment. One difference: with
+//! `GL_LIGHTING` on, GL lights the raster colour; gleval keeps the current colour.
+
+use super::consts::*;
+use super::lists::ListCommand;
+use super::types::*;
+use super::Gl;
+use glam::{Mat4, Vec4};
+
+/// The raster position's state with GL's initial values.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct RasterPos {
+    /// Window x, y, z, and the clip w.
+    pub window: [f32; 4],
+    /// `GL_CURRENT_RASTER_POSITION_VALID`.
+    pub valid: bool,
+    /// The colour bitmaps are drawn in.
+    pub color: [f32; 4],
+    pub tex_coord: [f32; 4],
+    /// Distance from the eye to the position (`GL_CURRENT_RASTER_DISTANCE`).
+    pub distance: f32,
+}
+
+impl Default for RasterPos {
+    fn default() -> Self {
+        Self {
+            window: [0.0, 0.0, 0.0, 1.0],
+            valid: true,
+            color: [1.0; 4],
+            tex_coord: [0.0, 0.0, 0.0, 1.0],
+            distance: 0.0,
+        }
+    }
+}
+
+/// The transforms a raster position goes through.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Transform {
+    pub modelview: Mat4,
+    pub projection: Mat4,
+    pub viewport: [i32; 4],
+    pub depth_range: [f32; 2],
+}
+
+impl Transform {
+    /// Window x, y, z and clip w of object point `p`, and its eye distance; `None` when the
+    /// point is outside the clip volume (Mesa's `viewclip_point_z`, then `_xy`: bounds included).
+    pub fn project(&self, p: [f32; 4]) -> Option<([f32; 4], f32)> {
+        let eye = self.modelview * Vec4::from(p);
+        let clip = self.projection * eye;
+        let outside = |c: f32| c > clip.w || c < -clip.w;
+        if outside(clip.z) || outside(clip.x) || outside(clip.y) {
+            return None;
+        }
+        let d = if clip.w == 0.0 { 1.0 } else { 1.0 / clip.w };
+        let [vx, vy, vw, vh] = self.viewport.map(|v| v as f32);
+        let [near, far] = self.depth_range;
+        let x = clip.x * d * (vw / 2.0) + (vw / 2.0 + vx);
+        let y = clip.y * d * (vh / 2.0) + (vh / 2.0 + vy);
+        let z = clip.z * d * ((far - near) / 2.0) + (far + near) / 2.0;
+        Some(([x, y, z, clip.w], eye.truncate().length()))
+    }
+}
+
+impl Gl {
+    fn raster_transform(&self) -> Transform {
+        Transform {
+            modelview: self.matrices.modelview(),
+            projection: self.matrices.projection(),
+            viewport: self.raster.viewport,
+            depth_range: self.raster.depth_range,
+        }
+    }
+
+    fn raster_pos(&mut self, p: [f32; 4]) {
+        if self.compiled(|| ListCommand::RasterPos(p)) || self.reject_inside_begin_end() {
+            return;
+        }
+        let Some((window, distance)) = self.raster_transform().project(p) else {
+            self.raster_pos.valid = false;
+            return;
+        };
+        self.raster_pos =
+            RasterPos { window, valid: true, color: self.current.color, tex_coord: self.current.tex_coord, distance };
+    }
+
+    /// `glRasterPos2f` (z = 0, w = 1). Inside `begin`/`end` → `GL_INVALID_OPERATION`.
+    pub fn raster_pos2f(&mut self, x: GLfloat, y: GLfloat) {
+        self.raster_pos([x, y, 0.0, 1.0]);
+    }
+
+    /// `glRasterPos2i`.
+    pub fn raster_pos2i(&mut self, x: GLint, y: GLint) {
+        self.raster_pos([x as f32, y as f32, 0.0, 1.0]);
+    }
+
+    /// `glRasterPos2d` (cast to float, as Mesa does).
+    pub fn raster_pos2d(&mut self, x: GLdouble, y: GLdouble) {
+        self.raster_pos([x as f32, y as f32, 0.0, 1.0]);
+    }
+
+    /// `glRasterPos3f` (w = 1).
+    pub fn raster_pos3f(&mut self, x: GLfloat, y: GLfloat, z: GLfloat) {
+        self.raster_pos([x, y, z, 1.0]);
+    }
+
+    /// `glRasterPos3i`.
+    pub fn raster_pos3i(&mut self, x: GLint, y: GLint, z: GLint) {
+        self.raster_pos([x as f32, y as f32, z as f32, 1.0]);
+    }
+
+    /// `glRasterPos3d`.
+    pub fn raster_pos3d(&mut self, x: GLdouble, y: GLdouble, z: GLdouble) {
+        self.raster_pos([x as f32, y as f32, z as f32, 1.0]);
+    }
+
+    /// `glRasterPos4f`.
+    pub fn raster_pos4f(&mut self, x: GLfloat, y: GLfloat, z: GLfloat, w: GLfloat) {
+        self.raster_pos([x, y, z, w]);
+    }
+
+    /// `glRasterPos4d`.
+    pub fn raster_pos4d(&mut self, x: GLdouble, y: GLdouble, z: GLdouble, w: GLdouble) {
+        self.raster_pos([x as f32, y as f32, z as f32, w as f32]);
+    }
+
+    /// `glRasterPos2fv`: `v` needs 2 values.
+    pub fn raster_pos2fv(&mut self, v: &[GLfloat]) {
+        if let Some([x, y]) = self.needs::<2>(v) {
+            self.raster_pos2f(x, y);
+        }
+    }
+
+    /// `glRasterPos3fv`: `v` needs 3 values.
+    pub fn raster_pos3fv(&mut self, v: &[GLfloat]) {
+        if let Some([x, y, z]) = self.needs::<3>(v) {
+            self.raster_pos3f(x, y, z);
+        }
+    }
+
+    /// `glRasterPos4fv`: `v` needs 4 values.
+    pub fn raster_pos4fv(&mut self, v: &[GLfloat]) {
+        if let Some([x, y, z, w]) = self.needs::<4>(v) {
+            self.raster_pos4f(x, y, z, w);
+        }
+    }
+
+    /// `glRasterPos2iv`: `v` needs 2 values.
+    pub fn raster_pos2iv(&mut self, v: &[GLint]) {
+        match v {
+            [x, y, ..] => self.raster_pos2i(*x, *y),
+            _ => self.set_error(GL_INVALID_VALUE),
+        }
+    }
+
+    /// `glRasterPos2dv`: `v` needs 2 values.
+    pub fn raster_pos2dv(&mut self, v: &[GLdouble]) {
+        match v {
+            [x, y, ..] => self.raster_pos2d(*x, *y),
+            _ => self.set_error(GL_INVALID_VALUE),
+        }
+    }
+
+    /// `glRasterPos3dv`: `v` needs 3 values.
+    pub fn raster_pos3dv(&mut self, v: &[GLdouble]) {
+        match v {
+            [x, y, z, ..] => self.raster_pos3d(*x, *y, *z),
+            _ => self.set_error(GL_INVALID_VALUE),
+        }
+    }
+
+    /// Moves a valid raster position by (dx, dy) window pixels (`glBitmap`'s advance).
+    pub(crate) fn advance_raster_pos(&mut self, dx: f32, dy: f32) {
+        self.raster_pos.window[0] += dx;
+        self.raster_pos.window[1] += dy;
+    }
+
+    /// The raster position's `glGet` answers.
+    pub(crate) fn raster_pos_query(&self, pname: GLenum, out: &mut [f64; 4]) -> Option<usize> {
+        let r = &self.raster_pos;
+        let four = |out: &mut [f64; 4], v: [f32; 4]| {
+            *out = v.map(f64::from);
+            Some(4)
+        };
+        match pname {
+            GL_CURRENT_RASTER_POSITION => four(out, r.window),
+            GL_CURRENT_RASTER_COLOR => four(out, r.color.map(|c| c.clamp(0.0, 1.0))),
+            GL_CURRENT_RASTER_TEXTURE_COORDS => four(out, r.tex_coord),
+            GL_CURRENT_RASTER_POSITION_VALID | GL_CURRENT_RASTER_DISTANCE => {
+                out[0] = if pname == GL_CURRENT_RASTER_DISTANCE {
+                    f64::from(r.distance)
+                } else {
+                    f64::from(u8::from(r.valid))
+                };
+                Some(1)
+            }
+            _ => None,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn position(gl: &mut Gl) -> ([f32; 4], bool) {
+        let (mut p, mut valid) = ([0.0f32; 4], [0]);
+        gl.get_floatv(GL_CURRENT_RASTER_POSITION, &mut p);
+        gl.get_integerv(GL_CURRENT_RASTER_POSITION_VALID, &mut valid);
+        (p, valid[0] == 1)
+    }
+
+    #[test]
+    fn the_initial_raster_position_is_the_origin_and_valid() {
+        let mut gl = Gl::new(100, 50);
+        assert_eq!(position(&mut gl), ([0.0, 0.0, 0.0, 1.0], true));
+    }
+
+    #[test]
+    fn a_position_goes_through_the_matrices_viewport_and_depth_range() {
+        let mut gl = Gl::new(200, 100);
+        gl.viewport(10, 20, 100, 50);
+        gl.depth_range(0.5, 1.0);
+        gl.matrix_mode(GL_PROJECTION);
+        gl.ortho(0.0, 10.0, 0.0, 10.0, -1.0, 1.0);
+        gl.matrix_mode(GL_MODELVIEW);
+        gl.translatef(1.0, 0.0, 0.0);
+        gl.raster_pos3f(4.0, 5.0, 0.5);
+        // x: (5 / 10) of 100 + 10; y: (5 / 10) of 50 + 20; z: ndc −0.5 → 0.625 in [0.5, 1].
+        assert_eq!(position(&mut gl), ([60.0, 45.0, 0.625, 1.0], true));
+        assert_eq!(gl.get_error(), GL_NO_ERROR);
+    }
+
+    #[test]
+    fn outside_the_clip_volume_the_position_is_invalid_and_kept() {
+        let mut gl = Gl::new(100, 100);
+        gl.raster_pos2f(0.5, 0.5);
+        gl.raster_pos2f(1.5, 0.0);
+        assert_eq!(position(&mut gl), ([75.0, 75.0, 0.5, 1.0], false));
+        gl.raster_pos3f(0.0, 0.0, -1.01);
+        assert!(!position(&mut gl).1);
+        // The clip volume's bounds are inside it.
+        gl.raster_pos3f(1.0, -1.0, 1.0);
+        assert_eq!(position(&mut gl), ([100.0, 0.0, 1.0, 1.0], true));
+        gl.raster_pos4f(0.0, 0.0, 0.0, -1.0);
+        assert!(!position(&mut gl).1, "w < 0 clips everything");
+    }
+
+    #[test]
+    fn the_raster_colour_is_the_current_colour_when_the_position_is_set() {
+        let mut gl = Gl::new(10, 10);
+        gl.color3f(1.0, 0.5, 0.0);
+        gl.raster_pos2i(0, 0);
+        gl.color3f(0.0, 0.0, 1.0);
+        let mut c = [0.0f32; 4];
+        gl.get_floatv(GL_CURRENT_RASTER_COLOR, &mut c);
+        assert_eq!(c, [1.0, 0.5, 0.0, 1.0]);
+        let mut i = [0; 4];
+        gl.get_integerv(GL_CURRENT_RASTER_COLOR, &mut i);
+        assert_eq!(i, [i32::MAX, i32::MAX / 2, 0, i32::MAX], "colours map linearly onto the integers");
+    }
+
+    #[test]
+    fn raster_pos_errors() {
+        let mut gl = Gl::new(10, 10);
+        gl.begin(GL_POINTS);
+        gl.raster_pos2f(0.0, 0.0);
+        gl.end();
+        assert_eq!(gl.get_error(), GL_INVALID_OPERATION);
+        gl.raster_pos3fv(&[1.0, 2.0]);
+        assert_eq!(gl.get_error(), GL_INVALID_VALUE);
+        gl.raster_pos2dv(&[0.5, 0.5]);
+        assert_eq!(position(&mut gl).0, [7.5, 7.5, 0.5, 1.0]);
+    }
+}
