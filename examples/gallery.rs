@@ -55,13 +55,15 @@ mod specular;
 mod teapot;
 #[path = "texsurf.rs"]
 mod texsurf;
+#[path = "texteapot.rs"]
+mod texteapot;
 #[path = "trimmed.rs"]
 mod trimmed;
 
 /// A built-in program: its name and how to build it.
 type Program = (&'static str, fn() -> App);
 
-const PROGRAMS: [Program; 24] = [
+const PROGRAMS: [Program; 25] = [
     ("bezcurve", bezcurve::app),
     ("bezsurf", bezsurf::app),
     ("bcurve", bcurve::app),
@@ -85,6 +87,7 @@ const PROGRAMS: [Program; 24] = [
     ("texsurf", texsurf::app),
     ("mipnurbs", mipnurbs::app),
     ("fogblend", fogblend::app),
+    ("texteapot", texteapot::app),
     ("operations", operations::app),
 ];
 

@@ -1,19 +1,12 @@
-//! The Utah teapot drawn as GLUT's `glutSolidTeapot` draws it (GLUT 3.7, `teapot.c`): every
-//! bicubic patch loaded with `glMap2f` (u along a data row: stride 3, order 4; v across rows:
-//! stride 12, order 4) together with a bilinear texture-coordinate map, then
-//! `glMapGrid2f(14, 0, 1, 14, 0, 1)` and `glEvalMesh2(GL_FILL, 0, 14, 0, 14)`, with
-//! `GL_AUTO_NORMAL` and `GL_NORMALIZE` on, under `glRotatef(270, 1, 0, 0)`,
-//! `glScalef(0.5, 0.5, 0.5)` and `glTranslatef(0, 0, -1.5)` so that the pot stands upright on
-//! the y axis. GLUT keeps 10 patches and draws their mirror images; here the 32 patches of
-//! Newell's data ([`gleval::data::teapot`]) are drawn directly, which is the same surface.
+//! Teapot.c (tests/reference/pictures), ported line for line: GLUT's solid teapot, lit.
+//! `gl.glut_solid_teapot(1.0)` draws it as GLUT 3.7 does, through the evaluators (every
+//! bicubic patch loaded with `glMap2f` beside a bilinear texture-coordinate map, a 14 × 14
+//! `glEvalMesh2` per patch, `GL_AUTO_NORMAL` and `GL_NORMALIZE` on), from Newell's 32 patches
+//! ([`gleval::data::teapot`]).
 //!
 //! `cargo run --release --example teapot -- --png teapot.png`
 
-use gleval::data::teapot::{TEAPOT_PATCHES, TEAPOT_VERTICES};
 use gleval::prelude::*;
-
-/// GLUT's tessellation of the solid teapot (`glutSolidTeapot` calls `teapot(14, ...)`).
-const GRID: i32 = 14;
 
 fn reshape(gl: &mut Gl, w: i32, h: i32) {
     gl.viewport(0, 0, w, h);
@@ -39,39 +32,11 @@ fn init(gl: &mut Gl) {
     gl.material_f(GL_FRONT, GL_SHININESS, 40.0);
 }
 
-/// GLUT's `teapot(grid, scale, type)` with the 32-patch data.
-fn solid_teapot(gl: &mut Gl, scale: f32) {
-    // The texture coordinates run over each patch as (s, t) = (u, v) (GLUT's `tex`).
-    let tex: [f32; 8] = [0.0, 0.0, 1.0, 0.0, 0.0, 1.0, 1.0, 1.0];
-    gl.enable(GL_AUTO_NORMAL);
-    gl.enable(GL_NORMALIZE);
-    gl.enable(GL_MAP2_VERTEX_3);
-    gl.enable(GL_MAP2_TEXTURE_COORD_2);
-    gl.push_matrix();
-    gl.rotatef(270.0, 1.0, 0.0, 0.0);
-    gl.scalef(0.5 * scale, 0.5 * scale, 0.5 * scale);
-    gl.translatef(0.0, 0.0, -1.5);
-    for patch in &TEAPOT_PATCHES {
-        // p[j][k] = control point of row j, column k, as GLUT fills its `p`.
-        let mut p = [0.0f32; 48];
-        for (slot, &index) in patch.iter().enumerate() {
-            for l in 0..3 {
-                p[slot * 3 + l] = TEAPOT_VERTICES[index as usize][l] as f32;
-            }
-        }
-        gl.map2f(GL_MAP2_TEXTURE_COORD_2, 0.0, 1.0, 2, 2, 0.0, 1.0, 4, 2, &tex);
-        gl.map2f(GL_MAP2_VERTEX_3, 0.0, 1.0, 3, 4, 0.0, 1.0, 12, 4, &p);
-        gl.map_grid2f(GRID, 0.0, 1.0, GRID, 0.0, 1.0);
-        gl.eval_mesh2(GL_FILL, 0, GRID, 0, GRID);
-    }
-    gl.pop_matrix();
-}
-
 fn display(gl: &mut Gl) {
     gl.clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     gl.push_matrix();
     gl.rotatef(-30.0, 0.0, 1.0, 0.0);
-    solid_teapot(gl, 1.0);
+    gl.glut_solid_teapot(1.0);
     gl.pop_matrix();
     gl.flush();
 }

@@ -14,6 +14,7 @@ pub mod fonts;
 #[cfg(all(feature = "gpu", feature = "png"))]
 mod schedule;
 pub(crate) mod state;
+mod teapot;
 
 #[cfg(all(feature = "gpu", feature = "png"))]
 pub(crate) use schedule::Schedule;

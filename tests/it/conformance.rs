@@ -54,6 +54,8 @@ mod specular;
 mod teapot;
 #[path = "../../examples/texsurf.rs"]
 mod texsurf;
+#[path = "../../examples/texteapot.rs"]
+mod texteapot;
 #[path = "../../examples/trimmed.rs"]
 mod trimmed;
 
@@ -241,6 +243,12 @@ fn labels_match_mesa() {
 #[test]
 fn teapot_matches_mesa() {
     check("teapot", teapot::app, 0.0);
+}
+
+/// GLUT's solid teapot lit and textured, and its wire teapot (`TexTeapot.c`).
+#[test]
+fn glut_teapots_match_mesa() {
+    check("texteapot", texteapot::app, 0.0);
 }
 
 /// Programs with no C original: the GPU tessellator must still draw what the CPU draws.

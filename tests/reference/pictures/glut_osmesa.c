@@ -9,6 +9,7 @@
 #include <zlib.h>
 #include "glut_osmesa.h"
 #include "glut_fonts.h"
+#include "glut_teapot.h"
 
 static int width = 300, height = 300, frames = 0;
 static const char *png_path = "out.png";

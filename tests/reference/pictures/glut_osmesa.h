@@ -34,4 +34,6 @@ void glutMainLoop(void);
 void glutBitmapCharacter(void *font, int character);
 int glutBitmapWidth(void *font, int character);
 int glutBitmapLength(void *font, const unsigned char *string);
+void glutSolidTeapot(double size);
+void glutWireTeapot(double size);
 #endif
