@@ -35,6 +35,8 @@ mod ex5_bird;
 mod flattwoviewports;
 #[path = "fogblend.rs"]
 mod fogblend;
+#[path = "labels.rs"]
+mod labels;
 #[path = "linespoints.rs"]
 mod linespoints;
 #[path = "lists.rs"]
@@ -63,7 +65,7 @@ mod trimmed;
 /// A built-in program: its name and how to build it.
 type Program = (&'static str, fn() -> App);
 
-const PROGRAMS: [Program; 25] = [
+const PROGRAMS: [Program; 26] = [
     ("bezcurve", bezcurve::app),
     ("bezsurf", bezsurf::app),
     ("bcurve", bcurve::app),
@@ -88,6 +90,7 @@ const PROGRAMS: [Program; 25] = [
     ("mipnurbs", mipnurbs::app),
     ("fogblend", fogblend::app),
     ("texteapot", texteapot::app),
+    ("labels", labels::app),
     ("operations", operations::app),
 ];
 
