@@ -30,11 +30,14 @@ pub struct Options {
     /// `--frames N`: headless, run the program for N frames (idle and timer callbacks on a
     /// virtual 60 Hz clock) and render the last.
     pub frames: Option<usize>,
+    /// `--profile`: with `--png`, print to stderr where the run's time went.
+    pub profile: bool,
 }
 
 impl Options {
     /// Parses the options [`App::run`] takes out of the program's arguments: `--png PATH` (or
-    /// `--png=PATH`), `--time N`, `--frames N` and `--gpu`; anything else is left for the program.
+    /// `--png=PATH`), `--time N`, `--frames N`, `--gpu` and `--profile`; anything else is left
+    /// for the program.
     #[must_use]
     pub fn from_args(args: impl IntoIterator<Item = String>) -> Self {
         let mut out = Self::default();
@@ -50,6 +53,8 @@ impl Options {
                 out.gpu = true;
             } else if a == "--frames" {
                 out.frames = args.next().and_then(|n| n.parse().ok());
+            } else if a == "--profile" {
+                out.profile = true;
             }
         }
         out
@@ -324,6 +329,7 @@ impl App {
         self.frames = options.frames;
         let result = match (options.time, options.png) {
             (Some(frames), _) => self.print_frame_time(frames),
+            (None, Some(path)) if options.profile => self.write_png_profiled(&path),
             (None, Some(path)) => self.write_png(&path),
             (None, None) => self.run_window(),
         };
@@ -427,6 +433,41 @@ impl App {
     pub fn write_png(mut self, path: &str) -> Result<(), Box<dyn std::error::Error>> {
         let image = self.render_image()?;
         crate::render::write_png(path, &image)?;
+        Ok(())
+    }
+
+    /// [`App::write_png`] timing each phase of the run, printed to stderr (`--profile`): the
+    /// program's callbacks, the wgpu instance and adapter, the device with the frame
+    /// rasteriser's shader, the first frame (assembly, pipelines, rasterisation, read-back), a
+    /// second frame of the same picture (what the first cost beyond steady state is pipeline
+    /// creation), and the PNG encoding.
+    fn write_png_profiled(mut self, path: &str) -> Result<(), Box<dyn std::error::Error>> {
+        let start = std::time::Instant::now();
+        let mut lap = start;
+        let mut phase = |name: &str| {
+            let now = std::time::Instant::now();
+            eprintln!("profile: {name:<34} {:8.2} ms", (now - lap).as_secs_f64() * 1e3);
+            lap = now;
+        };
+        let mut gl = self.record_frames(self.frames.unwrap_or(1));
+        phase("program (init, reshape, display)");
+        let (instance, adapter) = crate::gpu::first_adapter()?;
+        phase("wgpu instance and adapter");
+        let mut renderer = Renderer::with_adapter(instance, adapter)?;
+        phase("device and shader");
+        let frame = gl.take_frame();
+        let (w, h) = (self.width as u32, self.height as u32);
+        let image = renderer.render_frame(&frame, w, h)?;
+        phase("first frame (with pipelines)");
+        renderer.render_frame(&frame, w, h)?;
+        phase("same frame again (steady state)");
+        crate::render::write_png(path, &image)?;
+        phase("PNG encoding and write");
+        eprintln!(
+            "profile: {:<34} {:8.2} ms (the repeated frame included)",
+            "total",
+            start.elapsed().as_secs_f64() * 1e3
+        );
         Ok(())
     }
 

@@ -41,6 +41,6 @@ pub use pack::PackedJobs;
 pub use renderer::{tessellate_patches, Renderer};
 
 #[cfg(feature = "window")]
-pub(crate) use device::backend_order;
+pub(crate) use device::{backend_order, first_adapter};
 #[cfg(feature = "window")]
 pub(crate) use raster::DEPTH_FORMAT;
