@@ -146,7 +146,7 @@ fn nurbs_untrimmed() -> Workload {
     gl.glu_nurbs_property(nb, GLU_V_STEP, 100.0);
     let count = Rc::new(Cell::new(0u64));
     let c = Rc::clone(&count);
-    gl.glu_nurbs_callback(nb, GLU_NURBS_VERTEX, Some(NurbsCallback::vertex(move |_| c.set(c.get() + 1))));
+    gl.glu_nurbs_callback(nb, GLU_NURBS_VERTEX, Some(NurbsCallback::vertex(move |_, _| c.set(c.get() + 1))));
     let mut run = move || {
         gl.glu_begin_surface(nb);
         gl.glu_nurbs_surface(nb, 14, &knots, 14, &knots, 30, 3, &ctl, 4, 4, GL_MAP2_VERTEX_3);
@@ -179,7 +179,7 @@ fn nurbs_trimmed() -> Workload {
     gl.glu_nurbs_property(nb, GLU_V_STEP, 300.0);
     let count = Rc::new(Cell::new(0u64));
     let c = Rc::clone(&count);
-    gl.glu_nurbs_callback(nb, GLU_NURBS_VERTEX, Some(NurbsCallback::vertex(move |_| c.set(c.get() + 1))));
+    gl.glu_nurbs_callback(nb, GLU_NURBS_VERTEX, Some(NurbsCallback::vertex(move |_, _| c.set(c.get() + 1))));
     let mut run = move || {
         gl.glu_begin_surface(nb);
         gl.glu_nurbs_surface(nb, 8, &knots, 8, &knots, 12, 3, &hills, 4, 4, GL_MAP2_VERTEX_3);

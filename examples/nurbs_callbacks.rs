@@ -17,10 +17,10 @@ fn main() {
     gl.glu_nurbs_property(nurb, GLU_SAMPLING_METHOD, GLU_DOMAIN_DISTANCE as f32);
     gl.glu_nurbs_property(nurb, GLU_U_STEP, 2.0);
     gl.glu_nurbs_property(nurb, GLU_V_STEP, 2.0);
-    gl.glu_nurbs_callback(nurb, GLU_NURBS_BEGIN, Some(NurbsCallback::begin(|prim| println!("begin 0x{prim:04x}"))));
-    gl.glu_nurbs_callback(nurb, GLU_NURBS_VERTEX, Some(NurbsCallback::vertex(|v| println!("  vertex {v:?}"))));
-    gl.glu_nurbs_callback(nurb, GLU_NURBS_NORMAL, Some(NurbsCallback::normal(|n| println!("  normal {n:?}"))));
-    gl.glu_nurbs_callback(nurb, GLU_NURBS_END, Some(NurbsCallback::end(|| println!("end"))));
+    gl.glu_nurbs_callback(nurb, GLU_NURBS_BEGIN, Some(NurbsCallback::begin(|_, prim| println!("begin 0x{prim:04x}"))));
+    gl.glu_nurbs_callback(nurb, GLU_NURBS_VERTEX, Some(NurbsCallback::vertex(|_, v| println!("  vertex {v:?}"))));
+    gl.glu_nurbs_callback(nurb, GLU_NURBS_NORMAL, Some(NurbsCallback::normal(|_, n| println!("  normal {n:?}"))));
+    gl.glu_nurbs_callback(nurb, GLU_NURBS_END, Some(NurbsCallback::end(|_| println!("end"))));
     gl.glu_nurbs_callback(
         nurb,
         GLU_NURBS_ERROR,

@@ -132,7 +132,7 @@ fn scenarios() -> Vec<Scenario> {
         ("bad_sampling_method", |gl, n| gl.glu_nurbs_property(n, GLU_SAMPLING_METHOD, 7.0)),
         ("bad_nurbs_mode", |gl, n| gl.glu_nurbs_property(n, GLU_NURBS_MODE, 7.0)),
         ("bad_get_property", |gl, n| gl.glu_get_nurbs_property(n, 12345, &mut [0.0])),
-        ("bad_callback", |gl, n| gl.glu_nurbs_callback(n, 12345, Some(NurbsCallback::end(|| {})))),
+        ("bad_callback", |gl, n| gl.glu_nurbs_callback(n, 12345, Some(NurbsCallback::end(|_| {})))),
         ("valid_surface", |gl, n| {
             gl.glu_begin_surface(n);
             surface(gl, n);
@@ -243,7 +243,7 @@ fn oversampled_patches_report_glu_out_of_memory() {
         gl.glu_nurbs_property(n, GLU_NURBS_MODE, mode as f32);
         let vertices = Rc::new(RefCell::new(0usize));
         let count = Rc::clone(&vertices);
-        gl.glu_nurbs_callback(n, GLU_NURBS_VERTEX, Some(NurbsCallback::vertex(move |_| *count.borrow_mut() += 1)));
+        gl.glu_nurbs_callback(n, GLU_NURBS_VERTEX, Some(NurbsCallback::vertex(move |_, _| *count.borrow_mut() += 1)));
         gl.glu_begin_surface(n);
         gl.glu_nurbs_surface(n, 4, &knots, 4, &knots, 8, 4, &ctl, 2, 2, GL_MAP2_VERTEX_4);
         gl.glu_end_surface(n);

@@ -55,7 +55,7 @@ fn configure(gl: &mut Gl, method: u32, tolerance: f32, step: f32) -> (GLUnurbs, 
     gl.glu_nurbs_callback(
         n,
         GLU_NURBS_VERTEX,
-        Some(NurbsCallback::vertex(move |v| sink.borrow_mut().push(v.to_vec()))),
+        Some(NurbsCallback::vertex(move |_, v| sink.borrow_mut().push(v.to_vec()))),
     );
     (n, seen)
 }
@@ -169,15 +169,15 @@ fn trace_surface(step: f32, data_forms: bool, unused_color: bool) -> Vec<String>
     if data_forms {
         gl.glu_nurbs_callback_data(n, Box::new(7u32));
         let cbs = [
-            NurbsCallback::BeginData(Box::new(move |p, d| {
+            NurbsCallback::BeginData(Box::new(move |_, p, d| {
                 tagged(d);
                 b.borrow_mut().push(format!("B {p}"));
             })),
-            NurbsCallback::VertexData(Box::new(move |x, d| {
+            NurbsCallback::VertexData(Box::new(move |_, x, d| {
                 tagged(d);
                 v.borrow_mut().push(format!("{x:?}"));
             })),
-            NurbsCallback::EndData(Box::new(move |d| {
+            NurbsCallback::EndData(Box::new(move |_, d| {
                 tagged(d);
                 e.borrow_mut().push("E".into());
             })),
@@ -189,17 +189,17 @@ fn trace_surface(step: f32, data_forms: bool, unused_color: bool) -> Vec<String>
         gl.glu_nurbs_callback(
             n,
             GLU_NURBS_BEGIN,
-            Some(NurbsCallback::begin(move |p| b.borrow_mut().push(format!("B {p}")))),
+            Some(NurbsCallback::begin(move |_, p| b.borrow_mut().push(format!("B {p}")))),
         );
         gl.glu_nurbs_callback(
             n,
             GLU_NURBS_VERTEX,
-            Some(NurbsCallback::vertex(move |x| v.borrow_mut().push(format!("{x:?}")))),
+            Some(NurbsCallback::vertex(move |_, x| v.borrow_mut().push(format!("{x:?}")))),
         );
-        gl.glu_nurbs_callback(n, GLU_NURBS_END, Some(NurbsCallback::end(move || e.borrow_mut().push("E".into()))));
+        gl.glu_nurbs_callback(n, GLU_NURBS_END, Some(NurbsCallback::end(move |_| e.borrow_mut().push("E".into()))));
     }
     if unused_color {
-        gl.glu_nurbs_callback(n, GLU_NURBS_COLOR, Some(NurbsCallback::color(|_| panic!("no colour map"))));
+        gl.glu_nurbs_callback(n, GLU_NURBS_COLOR, Some(NurbsCallback::color(|_, _| panic!("no colour map"))));
     }
     gl.glu_begin_surface(n);
     gl.glu_nurbs_surface(n, 14, &knots, 14, &knots, 30, 3, &ctl, 4, 4, GL_MAP2_VERTEX_3);
@@ -251,19 +251,19 @@ fn trimmed_primitives(step: f32, hole: &[[f32; 2]], unused_color: bool) -> Vec<(
     gl.glu_nurbs_callback(
         n,
         GLU_NURBS_BEGIN,
-        Some(NurbsCallback::begin(move |p| b.borrow_mut().push((p, Vec::new())))),
+        Some(NurbsCallback::begin(move |_, p| b.borrow_mut().push((p, Vec::new())))),
     );
     gl.glu_nurbs_callback(
         n,
         GLU_NURBS_VERTEX,
-        Some(NurbsCallback::vertex(move |x| {
+        Some(NurbsCallback::vertex(move |_, x| {
             if let Some(last) = v.borrow_mut().last_mut() {
                 last.1.push([x[0], x[1], x[2], x[3], x[4]]);
             }
         })),
     );
     if unused_color {
-        gl.glu_nurbs_callback(n, GLU_NURBS_COLOR, Some(NurbsCallback::color(|_| panic!("no colour map"))));
+        gl.glu_nurbs_callback(n, GLU_NURBS_COLOR, Some(NurbsCallback::color(|_, _| panic!("no colour map"))));
     }
     let border = [3.0f32, 3.0, 10.0, 3.0, 10.0, 10.0, 3.0, 10.0, 3.0, 3.0];
     let hole_closed: Vec<f32> = hole.iter().chain(&hole[..1]).flat_map(|p| *p).collect();
@@ -413,6 +413,66 @@ fn glu_surfaces_in_display_lists_draw_as_when_drawn_directly() {
             assert_eq!(first_difference, None, "{tessellator:?} mode {mode}");
             assert_eq!(a.primitives.len(), b.primitives.len(), "{tessellator:?} mode {mode}");
             assert_eq!((direct.get_error(), listed.get_error()), (GL_NO_ERROR, GL_NO_ERROR));
+        }
+    }
+}
+
+/// The usual way to draw GLU's tessellation yourself, as C programs do it: tessellator-mode
+/// callbacks that call `glBegin`, `glNormal3fv`, `glVertex3fv` and `glEnd` on the context
+/// they are given. What they draw is exactly what the callbacks were handed, on the fast path
+/// (begin, vertex, end only) and on the per-vertex path (with normals), trimmed or not.
+#[test]
+fn tessellator_callbacks_draw_through_the_context() {
+    fn surface(gl: &mut Gl, nurb: GLUnurbs, trimmed: bool) {
+        let knots = [0.0, 0.0, 0.0, 0.0, 1.0, 1.0, 1.0, 1.0];
+        let ctl: Vec<f32> =
+            (0..16).flat_map(|i| [(i / 4) as f32, (i % 4) as f32, if i == 5 || i == 10 { 1.0 } else { 0.0 }]).collect();
+        gl.glu_begin_surface(nurb);
+        gl.glu_nurbs_surface(nurb, 8, &knots, 8, &knots, 12, 3, &ctl, 4, 4, GL_MAP2_VERTEX_3);
+        if trimmed {
+            gl.glu_begin_trim(nurb);
+            gl.glu_pwl_curve(nurb, 5, &[0.0, 0.0, 1.0, 0.0, 1.0, 1.0, 0.0, 1.0, 0.0, 0.0], 2, GLU_MAP1_TRIM_2);
+            gl.glu_end_trim(nurb);
+            gl.glu_begin_trim(nurb);
+            gl.glu_pwl_curve(nurb, 5, &[0.2, 0.2, 0.2, 0.8, 0.8, 0.8, 0.8, 0.2, 0.2, 0.2], 2, GLU_MAP1_TRIM_2);
+            gl.glu_end_trim(nurb);
+        }
+        gl.glu_end_surface(nurb);
+    }
+    for (trimmed, normals) in [(false, false), (false, true), (true, false), (true, true)] {
+        let mut gl = Gl::new(100, 100);
+        let nurb = gl.glu_new_nurbs_renderer();
+        gl.glu_nurbs_property(nurb, GLU_NURBS_MODE, GLU_NURBS_TESSELLATOR as f32);
+        gl.glu_nurbs_property(nurb, GLU_SAMPLING_METHOD, GLU_DOMAIN_DISTANCE as f32);
+        gl.glu_nurbs_property(nurb, GLU_U_STEP, 6.0);
+        gl.glu_nurbs_property(nurb, GLU_V_STEP, 6.0);
+        let handed = Rc::new(RefCell::new(Vec::new()));
+        let sink = handed.clone();
+        gl.glu_nurbs_callback(nurb, GLU_NURBS_BEGIN, Some(NurbsCallback::begin(|gl, mode| gl.begin(mode))));
+        gl.glu_nurbs_callback(
+            nurb,
+            GLU_NURBS_VERTEX,
+            Some(NurbsCallback::vertex(move |gl, v| {
+                sink.borrow_mut().push([v[0], v[1], v[2]]);
+                gl.vertex3fv(v);
+            })),
+        );
+        if normals {
+            gl.glu_nurbs_callback(nurb, GLU_NURBS_NORMAL, Some(NurbsCallback::normal(|gl, n| gl.normal3fv(n))));
+        }
+        gl.glu_nurbs_callback(nurb, GLU_NURBS_END, Some(NurbsCallback::end(|gl| gl.end())));
+        surface(&mut gl, nurb, trimmed);
+        assert_eq!(gl.get_error(), GL_NO_ERROR);
+        let frame = gl.frame().expanded();
+        let drawn: Vec<[f32; 3]> =
+            frame.vertices.iter().map(|v| [v.position[0], v.position[1], v.position[2]]).collect();
+        assert!(drawn.len() > 50, "trimmed {trimmed}, normals {normals}: {} vertices", drawn.len());
+        assert_eq!(drawn, *handed.borrow(), "trimmed {trimmed}, normals {normals}");
+        if normals {
+            // Each vertex carries the normal GLU handed over before it: unit length, not the
+            // initial (0, 0, 1) everywhere.
+            assert!(frame.vertices.iter().all(|v| (v.normal.iter().map(|c| c * c).sum::<f32>() - 1.0).abs() < 1e-4));
+            assert!(frame.vertices.iter().any(|v| v.normal != [0.0, 0.0, 1.0]));
         }
     }
 }

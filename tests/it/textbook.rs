@@ -93,7 +93,7 @@ fn question_8_uniform_cubic_bspline() {
     gl.glu_nurbs_callback(
         nurb,
         GLU_NURBS_VERTEX,
-        Some(NurbsCallback::vertex(move |v| sink.borrow_mut().push(v.to_vec()))),
+        Some(NurbsCallback::vertex(move |_, v| sink.borrow_mut().push(v.to_vec()))),
     );
     let knots: Vec<f32> = (0..8).map(|k| k as f32).collect();
     let pts32: Vec<f32> = pts.iter().map(|&v| v as f32).collect();

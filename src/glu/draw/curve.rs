@@ -30,7 +30,7 @@ pub(crate) fn draw_curve(gl: &mut Gl, obj: &mut NurbsObject, maps: &[CurveMap]) 
     let spans = spans(&pos, &Sampler::new(obj.props, &obj.matrices));
     if obj.props.nurbs_mode == GLU_NURBS_TESSELLATOR {
         for span in spans {
-            tessellate_curve_span(obj, &all, &pos, span);
+            tessellate_curve_span(gl, obj, &all, &pos, span);
         }
         return;
     }
@@ -70,16 +70,22 @@ fn render_curve_span(gl: &mut Gl, attributes: &[CurvePieces], pos: &CurvePieces,
 
 /// One `GL_LINE_STRIP` of nu + 1 vertices through the callbacks; the vertex is the raw
 /// k-vector (not divided by w, as GLU does for curves).
-fn tessellate_curve_span(obj: &mut NurbsObject, attributes: &[CurvePieces], pos: &CurvePieces, span: CurveSpan) {
+fn tessellate_curve_span(
+    gl: &mut Gl,
+    obj: &mut NurbsObject,
+    attributes: &[CurvePieces],
+    pos: &CurvePieces,
+    span: CurveSpan,
+) {
     let ((r0, r1), nu) = span;
-    obj.callbacks.begin(GL_LINE_STRIP);
+    obj.callbacks.begin(gl, GL_LINE_STRIP);
     for i in 0..=nu {
         let u = if i == nu { r1 } else { r0 + i as f64 * (r1 - r0) / nu as f64 };
         for map in attributes.iter().chain([pos]) {
             let (Some(value), Some(kind)) = (map.eval(u), callback_kind(map.target)) else { continue };
             let v: Vec<f32> = value[..map.pieces.dim].iter().map(|&c| c as f32).collect();
-            obj.callbacks.attribute(kind, &v);
+            obj.callbacks.attribute(gl, kind, &v);
         }
     }
-    obj.callbacks.end();
+    obj.callbacks.end(gl);
 }

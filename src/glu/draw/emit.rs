@@ -1,6 +1,7 @@
 //! One surface vertex through the callbacks, when more than begin, vertex and end are
 //! registered: its attribute maps' values and normal, then its position (GLU `inDoEvalCoord`).
 
+use crate::gl::Gl;
 use crate::glu::consts::*;
 use crate::glu::evaluation::normals::surface_normal;
 use crate::glu::evaluation::pieces::SurfacePatches;
@@ -9,6 +10,7 @@ use crate::glu::model::targets::callback_kind;
 
 /// The attribute maps' values and the normal (if wanted) of the vertex at (u, v).
 pub(crate) fn emit_attributes(
+    gl: &mut Gl,
     obj: &mut NurbsObject,
     (pos, attributes, k): (&SurfacePatches, &[SurfacePatches], usize),
     u: f64,
@@ -19,7 +21,7 @@ pub(crate) fn emit_attributes(
         let (Some(s), Some(kind)) = (map.eval(u, v), callback_kind(map.target)) else { continue };
         has_normal_map |= kind == GLU_NURBS_NORMAL;
         let values: Vec<f32> = s.point[..map.patches.dim].iter().map(|&c| c as f32).collect();
-        obj.callbacks.attribute(kind, &values);
+        obj.callbacks.attribute(gl, kind, &values);
     }
     if !has_normal_map && obj.callbacks.wants_normals() {
         let p = &pos.patches;
@@ -29,14 +31,14 @@ pub(crate) fn emit_attributes(
             p.vintervals[0].0,
             p.vintervals[p.vintervals.len() - 1].1,
         ];
-        obj.callbacks.attribute(GLU_NURBS_NORMAL, &surface_normal(pos, k, u, v, domain));
+        obj.callbacks.attribute(gl, GLU_NURBS_NORMAL, &surface_normal(pos, k, u, v, domain));
     }
 }
 
 /// The vertex callback at (u, v): (x, y, z) divided by w, then u, v.
-pub(crate) fn emit_position(obj: &mut NurbsObject, pos: &SurfacePatches, k: usize, u: f64, v: f64) {
+pub(crate) fn emit_position(gl: &mut Gl, obj: &mut NurbsObject, pos: &SurfacePatches, k: usize, u: f64, v: f64) {
     let Some(s) = pos.eval(u, v) else { return };
     let w = if k == 4 { s.point[3] } else { 1.0 };
     let vertex = [(s.point[0] / w) as f32, (s.point[1] / w) as f32, (s.point[2] / w) as f32, u as f32, v as f32];
-    obj.callbacks.attribute(GLU_NURBS_VERTEX, &vertex);
+    obj.callbacks.attribute(gl, GLU_NURBS_VERTEX, &vertex);
 }

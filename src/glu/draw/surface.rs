@@ -30,7 +30,7 @@ pub(crate) fn draw_surface(gl: &mut Gl, obj: &mut NurbsObject, def: &SurfaceDef)
     }
     let patches = drawable_patches(obj, &surface, &sampler);
     if tessellate {
-        tessellate::tessellate_patches(obj, &surface, &patches);
+        tessellate::tessellate_patches(gl, obj, &surface, &patches);
     } else {
         patches::render_patches(gl, obj, &surface, &patches);
     }

@@ -5,6 +5,7 @@
 
 use super::emit::{emit_attributes, emit_position};
 use crate::gl::consts::*;
+use crate::gl::Gl;
 use crate::glu::consts::*;
 use crate::glu::evaluation::kernel::{grid_vertices, grid_vertices_into};
 use crate::glu::evaluation::surface::{PatchGrid, Surface};
@@ -12,12 +13,12 @@ use crate::glu::model::callbacks::StripSink;
 use crate::glu::model::object::NurbsObject;
 
 /// Issues every patch, in order.
-pub(crate) fn tessellate_patches(obj: &mut NurbsObject, surface: &Surface, patches: &[PatchGrid]) {
+pub(crate) fn tessellate_patches(gl: &mut Gl, obj: &mut NurbsObject, surface: &Surface, patches: &[PatchGrid]) {
     if obj.callbacks.sinks().is_some() {
-        return tessellate_patches_in_parallel(obj, surface, patches);
+        return tessellate_patches_in_parallel(gl, obj, surface, patches);
     }
     for patch in patches {
-        tessellate_patch(obj, surface, patch);
+        tessellate_patch(gl, obj, surface, patch);
     }
 }
 
@@ -72,7 +73,7 @@ fn evaluate_batch(surface: &Surface, batch: &[PatchGrid], out: &mut Vec<[f32; 5]
 /// grids are evaluated a batch ahead on rayon's workers while this thread issues the previous
 /// batch's strips, in patch order as GLU issues them (the callbacks need not be `Send`). The two
 /// buffers are kept in the object and reused.
-fn tessellate_patches_in_parallel(obj: &mut NurbsObject, surface: &Surface, patches: &[PatchGrid]) {
+fn tessellate_patches_in_parallel(gl: &mut Gl, obj: &mut NurbsObject, surface: &Surface, patches: &[PatchGrid]) {
     let mut current = std::mem::take(&mut obj.vertex_scratch[0]);
     let mut next = std::mem::take(&mut obj.vertex_scratch[1]);
     let batches = batches(patches);
@@ -87,7 +88,7 @@ fn tessellate_patches_in_parallel(obj: &mut NurbsObject, surface: &Surface, patc
                 let (next, next_ok) = (&mut next, &mut next_ok);
                 scope.spawn(move |_| *next_ok = evaluate_batch(surface, following, next));
             }
-            issue_batch(obj, surface, batch, &ok, &current);
+            issue_batch(gl, obj, surface, batch, &ok, &current);
         });
         std::mem::swap(&mut current, &mut next);
         ok = next_ok;
@@ -97,7 +98,14 @@ fn tessellate_patches_in_parallel(obj: &mut NurbsObject, surface: &Surface, patc
 
 /// The strips of a batch whose grids are in `grids` (patch after patch); a patch whose
 /// evaluation failed (`ok` false) is issued point by point.
-fn issue_batch(obj: &mut NurbsObject, surface: &Surface, batch: &[PatchGrid], ok: &[bool], grids: &[[f32; 5]]) {
+fn issue_batch(
+    gl: &mut Gl,
+    obj: &mut NurbsObject,
+    surface: &Surface,
+    batch: &[PatchGrid],
+    ok: &[bool],
+    grids: &[[f32; 5]],
+) {
     let mut start = 0;
     for (patch, &done) in batch.iter().zip(ok) {
         let grid = &grids[start..start + patch.points()];
@@ -105,12 +113,12 @@ fn issue_batch(obj: &mut NurbsObject, surface: &Surface, batch: &[PatchGrid], ok
         match obj.callbacks.sinks() {
             Some(mut sinks) if done => {
                 if let Some(mut plain) = sinks.plain() {
-                    quad_strips(&mut plain, grid, patch.nu, patch.nv);
+                    quad_strips(gl, &mut plain, grid, patch.nu, patch.nv);
                 } else {
-                    quad_strips(&mut sinks, grid, patch.nu, patch.nv);
+                    quad_strips(gl, &mut sinks, grid, patch.nu, patch.nv);
                 }
             }
-            _ => tessellate_patch(obj, surface, patch),
+            _ => tessellate_patch(gl, obj, surface, patch),
         }
     }
 }
@@ -118,62 +126,62 @@ fn issue_batch(obj: &mut NurbsObject, surface: &Surface, batch: &[PatchGrid], ok
 /// The grid blocks of one patch as `GL_QUAD_STRIP`s through the callbacks (GLU `mapmesh2f`).
 /// Positions come from one grid evaluation of the patch's Bezier piece (each point once, though
 /// the strips issue interior points twice); other maps and normals are evaluated per vertex.
-fn tessellate_patch(obj: &mut NurbsObject, surface: &Surface, patch: &PatchGrid) {
+fn tessellate_patch(gl: &mut Gl, obj: &mut NurbsObject, surface: &Surface, patch: &PatchGrid) {
     let (nu, nv) = (patch.nu, patch.nv);
     let (us, vs) = patch.lines();
     let grid = grid_vertices(&surface.pos, surface.k, &us, &vs);
     let per_vertex = !surface.attributes.is_empty() || obj.callbacks.wants_normals();
-    let emit = |obj: &mut NurbsObject, i: usize, j: usize| {
+    let emit = |gl: &mut Gl, obj: &mut NurbsObject, i: usize, j: usize| {
         if per_vertex {
-            emit_attributes(obj, surface.view_ref(), us[i], vs[j]);
+            emit_attributes(gl, obj, surface.view_ref(), us[i], vs[j]);
         }
         match &grid {
-            Some(g) => obj.callbacks.attribute(GLU_NURBS_VERTEX, &g[j * (nu + 1) + i]),
-            None => emit_position(obj, &surface.pos, surface.k, us[i], vs[j]),
+            Some(g) => obj.callbacks.attribute(gl, GLU_NURBS_VERTEX, &g[j * (nu + 1) + i]),
+            None => emit_position(gl, obj, &surface.pos, surface.k, us[i], vs[j]),
         }
     };
     if nu >= nv {
         for i in 0..nu {
-            obj.callbacks.begin(GL_QUAD_STRIP);
+            obj.callbacks.begin(gl, GL_QUAD_STRIP);
             for j in (0..=nv).rev() {
-                emit(obj, i, j);
-                emit(obj, i + 1, j);
+                emit(gl, obj, i, j);
+                emit(gl, obj, i + 1, j);
             }
-            obj.callbacks.end();
+            obj.callbacks.end(gl);
         }
     } else {
         for j in 0..nv {
-            obj.callbacks.begin(GL_QUAD_STRIP);
+            obj.callbacks.begin(gl, GL_QUAD_STRIP);
             for i in (0..=nu).rev() {
-                emit(obj, i, j + 1);
-                emit(obj, i, j);
+                emit(gl, obj, i, j + 1);
+                emit(gl, obj, i, j);
             }
-            obj.callbacks.end();
+            obj.callbacks.end(gl);
         }
     }
 }
 
 /// [`tessellate_patch`]'s strips when only begin, vertex and end callbacks are registered:
 /// the same primitives, one indirect call per vertex.
-fn quad_strips(sinks: &mut impl StripSink, g: &[[f32; 5]], nu: usize, nv: usize) {
+fn quad_strips(gl: &mut Gl, sinks: &mut impl StripSink, g: &[[f32; 5]], nu: usize, nv: usize) {
     let at = |i: usize, j: usize| &g[j * (nu + 1) + i];
     if nu >= nv {
         for i in 0..nu {
-            sinks.begin(GL_QUAD_STRIP);
+            sinks.begin(gl, GL_QUAD_STRIP);
             for j in (0..=nv).rev() {
-                sinks.vertex(at(i, j));
-                sinks.vertex(at(i + 1, j));
+                sinks.vertex(gl, at(i, j));
+                sinks.vertex(gl, at(i + 1, j));
             }
-            sinks.end();
+            sinks.end(gl);
         }
     } else {
         for j in 0..nv {
-            sinks.begin(GL_QUAD_STRIP);
+            sinks.begin(gl, GL_QUAD_STRIP);
             for i in (0..=nu).rev() {
-                sinks.vertex(at(i, j + 1));
-                sinks.vertex(at(i, j));
+                sinks.vertex(gl, at(i, j + 1));
+                sinks.vertex(gl, at(i, j));
             }
-            sinks.end();
+            sinks.end(gl);
         }
     }
 }

@@ -1,24 +1,32 @@
 //! `gluNurbsCallback`: the tessellator-mode callbacks and the error callback. C passes function
-//! pointers; here each callback is a closure, and the `_DATA` forms also receive the user data
-//! set with `gluNurbsCallbackData`.
+//! pointers that may call GL (the usual way to draw GLU's tessellation yourself: `glBegin`,
+//! `glNormal3fv`, `glVertex3fv`, `glEnd` in the callbacks); here each callback is a closure that
+//! gets the context first, as GLUT's callbacks do, and the `_DATA` forms also receive the user
+//! data set with `gluNurbsCallbackData`. The error callback gets the error code only (GLU
+//! reports some errors while the context is busy with the call that caused them).
 
 use crate::gl::types::{GLenum, GLfloat};
+use crate::gl::Gl;
 use crate::glu::consts::*;
 use std::any::Any;
 
 /// User data handed to the `_DATA` callbacks (`gluNurbsCallbackData`).
 pub type UserData = Box<dyn Any>;
 
-/// A callback taking a primitive type or error code.
-pub type EnumFn = Box<dyn FnMut(GLenum)>;
-/// A callback taking an attribute's floats.
-pub type ValuesFn = Box<dyn FnMut(&[GLfloat])>;
-/// A `_DATA` callback taking a primitive type and the user data.
-pub type EnumDataFn = Box<dyn FnMut(GLenum, &mut dyn Any)>;
-/// A `_DATA` callback taking an attribute's floats and the user data.
-pub type ValuesDataFn = Box<dyn FnMut(&[GLfloat], &mut dyn Any)>;
+/// A begin callback: the context and the primitive type.
+pub type EnumFn = Box<dyn FnMut(&mut Gl, GLenum)>;
+/// An error callback: the error code.
+pub type ErrorFn = Box<dyn FnMut(GLenum)>;
+/// A callback taking the context and an attribute's floats.
+pub type ValuesFn = Box<dyn FnMut(&mut Gl, &[GLfloat])>;
+/// An end callback.
+pub type EndFn = Box<dyn FnMut(&mut Gl)>;
+/// A `_DATA` callback taking the context, a primitive type and the user data.
+pub type EnumDataFn = Box<dyn FnMut(&mut Gl, GLenum, &mut dyn Any)>;
+/// A `_DATA` callback taking the context, an attribute's floats and the user data.
+pub type ValuesDataFn = Box<dyn FnMut(&mut Gl, &[GLfloat], &mut dyn Any)>;
 /// A `_DATA` end callback.
-pub type DataFn = Box<dyn FnMut(&mut dyn Any)>;
+pub type DataFn = Box<dyn FnMut(&mut Gl, &mut dyn Any)>;
 
 /// One callback, tagged with its signature.
 pub enum NurbsCallback {
@@ -33,9 +41,9 @@ pub enum NurbsCallback {
     /// `GLU_NURBS_TEXTURE_COORD`: 1 to 4 floats.
     TexCoord(ValuesFn),
     /// `GLU_NURBS_END`.
-    End(Box<dyn FnMut()>),
+    End(EndFn),
     /// `GLU_NURBS_ERROR`: `GLU_NURBS_ERRORn` or `GLU_INVALID_ENUM`/`VALUE`.
-    Error(EnumFn),
+    Error(ErrorFn),
     /// `GLU_NURBS_BEGIN_DATA`.
     BeginData(EnumDataFn),
     /// `GLU_NURBS_VERTEX_DATA`.
@@ -52,27 +60,27 @@ pub enum NurbsCallback {
 
 impl NurbsCallback {
     /// A begin callback.
-    pub fn begin(f: impl FnMut(GLenum) + 'static) -> Self {
+    pub fn begin(f: impl FnMut(&mut Gl, GLenum) + 'static) -> Self {
         Self::Begin(Box::new(f))
     }
     /// A vertex callback.
-    pub fn vertex(f: impl FnMut(&[GLfloat]) + 'static) -> Self {
+    pub fn vertex(f: impl FnMut(&mut Gl, &[GLfloat]) + 'static) -> Self {
         Self::Vertex(Box::new(f))
     }
     /// A normal callback.
-    pub fn normal(f: impl FnMut(&[GLfloat]) + 'static) -> Self {
+    pub fn normal(f: impl FnMut(&mut Gl, &[GLfloat]) + 'static) -> Self {
         Self::Normal(Box::new(f))
     }
     /// A colour callback.
-    pub fn color(f: impl FnMut(&[GLfloat]) + 'static) -> Self {
+    pub fn color(f: impl FnMut(&mut Gl, &[GLfloat]) + 'static) -> Self {
         Self::Color(Box::new(f))
     }
     /// A texture-coordinate callback.
-    pub fn tex_coord(f: impl FnMut(&[GLfloat]) + 'static) -> Self {
+    pub fn tex_coord(f: impl FnMut(&mut Gl, &[GLfloat]) + 'static) -> Self {
         Self::TexCoord(Box::new(f))
     }
     /// An end callback.
-    pub fn end(f: impl FnMut() + 'static) -> Self {
+    pub fn end(f: impl FnMut(&mut Gl) + 'static) -> Self {
         Self::End(Box::new(f))
     }
     /// An error callback.
@@ -150,23 +158,23 @@ impl Callbacks {
         r
     }
 
-    pub fn begin(&mut self, prim: GLenum) {
+    pub fn begin(&mut self, gl: &mut Gl, prim: GLenum) {
         self.with_data(|cbs, d| match cbs.find(GLU_NURBS_BEGIN_DATA) {
-            Some(NurbsCallback::BeginData(f)) => f(prim, d),
+            Some(NurbsCallback::BeginData(f)) => f(gl, prim, d),
             _ => {
                 if let Some(NurbsCallback::Begin(f)) = cbs.find(GLU_NURBS_BEGIN) {
-                    f(prim);
+                    f(gl, prim);
                 }
             }
         });
     }
 
-    pub fn end(&mut self) {
+    pub fn end(&mut self, gl: &mut Gl) {
         self.with_data(|cbs, d| match cbs.find(GLU_NURBS_END_DATA) {
-            Some(NurbsCallback::EndData(f)) => f(d),
+            Some(NurbsCallback::EndData(f)) => f(gl, d),
             _ => {
                 if let Some(NurbsCallback::End(f)) = cbs.find(GLU_NURBS_END) {
-                    f();
+                    f(gl);
                 }
             }
         });
@@ -174,7 +182,7 @@ impl Callbacks {
 
     /// Sends an attribute through the (data) callback of `kind` (`GLU_NURBS_VERTEX`, `_NORMAL`,
     /// `_COLOR` or `_TEXTURE_COORD`).
-    pub fn attribute(&mut self, kind: GLenum, values: &[f32]) {
+    pub fn attribute(&mut self, gl: &mut Gl, kind: GLenum, values: &[f32]) {
         let with_data = kind + (GLU_NURBS_BEGIN_DATA - GLU_NURBS_BEGIN);
         self.with_data(|cbs, d| match cbs.find(with_data) {
             Some(
@@ -182,7 +190,7 @@ impl Callbacks {
                 | NurbsCallback::NormalData(f)
                 | NurbsCallback::ColorData(f)
                 | NurbsCallback::TexCoordData(f),
-            ) => f(values, d),
+            ) => f(gl, values, d),
             _ => {
                 if let Some(
                     NurbsCallback::Vertex(f)
@@ -191,7 +199,7 @@ impl Callbacks {
                     | NurbsCallback::TexCoord(f),
                 ) = cbs.find(kind)
                 {
-                    f(values);
+                    f(gl, values);
                 }
             }
         });
@@ -237,9 +245,9 @@ impl Callbacks {
 /// Where the tessellator's tight loops send primitives: [`Sinks`], or [`PlainSinks`] when no
 /// `_DATA` form is registered.
 pub(crate) trait StripSink {
-    fn begin(&mut self, prim: GLenum);
-    fn vertex(&mut self, values: &[f32]);
-    fn end(&mut self);
+    fn begin(&mut self, gl: &mut Gl, prim: GLenum);
+    fn vertex(&mut self, gl: &mut Gl, values: &[f32]);
+    fn end(&mut self, gl: &mut Gl);
 }
 
 /// The plain begin, vertex and end callbacks, their forms resolved: a vertex is one indirect
@@ -247,7 +255,7 @@ pub(crate) trait StripSink {
 pub(crate) struct PlainSinks<'a> {
     begin: Option<&'a mut EnumFn>,
     vertex: &'a mut ValuesFn,
-    end: Option<&'a mut Box<dyn FnMut()>>,
+    end: Option<&'a mut EndFn>,
 }
 
 impl<'a> Sinks<'a> {
@@ -269,36 +277,36 @@ impl<'a> Sinks<'a> {
 }
 
 impl StripSink for PlainSinks<'_> {
-    fn begin(&mut self, prim: GLenum) {
+    fn begin(&mut self, gl: &mut Gl, prim: GLenum) {
         if let Some(f) = self.begin.as_deref_mut() {
-            f(prim);
+            f(gl, prim);
         }
     }
 
     #[inline]
-    fn vertex(&mut self, values: &[f32]) {
-        (self.vertex)(values);
+    fn vertex(&mut self, gl: &mut Gl, values: &[f32]) {
+        (self.vertex)(gl, values);
     }
 
-    fn end(&mut self) {
+    fn end(&mut self, gl: &mut Gl) {
         if let Some(f) = self.end.as_deref_mut() {
-            f();
+            f(gl);
         }
     }
 }
 
 impl StripSink for Sinks<'_> {
-    fn begin(&mut self, prim: GLenum) {
-        Sinks::begin(self, prim);
+    fn begin(&mut self, gl: &mut Gl, prim: GLenum) {
+        Sinks::begin(self, gl, prim);
     }
 
     #[inline]
-    fn vertex(&mut self, values: &[f32]) {
-        Sinks::vertex(self, values);
+    fn vertex(&mut self, gl: &mut Gl, values: &[f32]) {
+        Sinks::vertex(self, gl, values);
     }
 
-    fn end(&mut self) {
-        Sinks::end(self);
+    fn end(&mut self, gl: &mut Gl) {
+        Sinks::end(self, gl);
     }
 }
 
@@ -310,27 +318,27 @@ impl Sinks<'_> {
         }
     }
 
-    pub fn begin(&mut self, prim: GLenum) {
+    pub fn begin(&mut self, gl: &mut Gl, prim: GLenum) {
         match self.begin.as_deref_mut() {
-            Some(NurbsCallback::Begin(f)) => f(prim),
-            Some(NurbsCallback::BeginData(f)) => Self::with_data(&mut self.data, |d| f(prim, d)),
+            Some(NurbsCallback::Begin(f)) => f(gl, prim),
+            Some(NurbsCallback::BeginData(f)) => Self::with_data(&mut self.data, |d| f(gl, prim, d)),
             _ => {}
         }
     }
 
     #[inline]
-    pub fn vertex(&mut self, values: &[f32]) {
+    pub fn vertex(&mut self, gl: &mut Gl, values: &[f32]) {
         match self.vertex.as_deref_mut() {
-            Some(NurbsCallback::Vertex(f)) => f(values),
-            Some(NurbsCallback::VertexData(f)) => Self::with_data(&mut self.data, |d| f(values, d)),
+            Some(NurbsCallback::Vertex(f)) => f(gl, values),
+            Some(NurbsCallback::VertexData(f)) => Self::with_data(&mut self.data, |d| f(gl, values, d)),
             _ => {}
         }
     }
 
-    pub fn end(&mut self) {
+    pub fn end(&mut self, gl: &mut Gl) {
         match self.end.as_deref_mut() {
-            Some(NurbsCallback::End(f)) => f(),
-            Some(NurbsCallback::EndData(f)) => Self::with_data(&mut self.data, f),
+            Some(NurbsCallback::End(f)) => f(gl),
+            Some(NurbsCallback::EndData(f)) => Self::with_data(&mut self.data, |d| f(gl, d)),
             _ => {}
         }
     }

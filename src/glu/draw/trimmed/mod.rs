@@ -28,7 +28,7 @@ pub(super) fn draw_trimmed(
     let Some(trim_loops) = domain::trim_loops(obj, loops, &steps) else { return };
     let bounds = surface.domain();
     if tessellate {
-        tessellate::tessellate_trimmed(obj, surface, &trim_loops, bounds, (&us, &vs));
+        tessellate::tessellate_trimmed(gl, obj, surface, &trim_loops, bounds, (&us, &vs));
     } else {
         render::render_trimmed(gl, obj, surface, &trim_loops, bounds, (&us, &vs));
     }

@@ -5,6 +5,7 @@
 use super::domain::BY_CELLS;
 use super::values::{LatticeValues, PointValues};
 use crate::gl::consts::*;
+use crate::gl::Gl;
 use crate::glu::consts::*;
 use crate::glu::draw::emit::emit_attributes;
 use crate::glu::evaluation::surface::Surface;
@@ -18,6 +19,7 @@ use crate::tess::trim::{GridStrip, Lattice, TrimLoop, TrimPlan};
 /// thread issues the grid cells wholly inside, a `GL_QUAD_STRIP` per run, as GLU issues its grid
 /// blocks; the band follows as `GL_TRIANGLES`. Each point is evaluated once.
 pub(super) fn tessellate_trimmed(
+    gl: &mut Gl,
     obj: &mut NurbsObject,
     surface: &Surface,
     loops: &[TrimLoop],
@@ -41,15 +43,15 @@ pub(super) fn tessellate_trimmed(
             scope.spawn(|_| band = Some(plan.triangulate_band()));
             let value = |i: u32| lattice.values[plan.grid_index()[i as usize] as usize].as_ref();
             match sinks.plain() {
-                Some(mut plain) => issue_strips(&mut plain, plan.strips(), value),
-                None => issue_strips(&mut sinks, plan.strips(), value),
+                Some(mut plain) => issue_strips(gl, &mut plain, plan.strips(), value),
+                None => issue_strips(gl, &mut sinks, plan.strips(), value),
             }
         });
         if let Some(Ok(band)) = &band {
             let data = PointValues::new(surface, plan.grid_points(), plan.grid_index(), &band.points, values.take());
             match sinks.plain() {
-                Some(mut plain) => issue_band(&mut plain, &band.triangles, |i| data.get(i)),
-                None => issue_band(&mut sinks, &band.triangles, |i| data.get(i)),
+                Some(mut plain) => issue_band(gl, &mut plain, &band.triangles, |i| data.get(i)),
+                None => issue_band(gl, &mut sinks, &band.triangles, |i| data.get(i)),
             }
             return;
         }
@@ -63,15 +65,16 @@ pub(super) fn tessellate_trimmed(
     let (grid_points, extra) = mesh.points.split_at(mesh.lattice.index.len());
     let data = PointValues::new(surface, grid_points, &mesh.lattice.index, extra, values);
     if let Some(mut sinks) = obj.callbacks.sinks() {
-        issue_strips(&mut sinks, &mesh.strips, |i| data.get(i));
-        return issue_band(&mut sinks, &mesh.band, |i| data.get(i));
+        issue_strips(gl, &mut sinks, &mesh.strips, |i| data.get(i));
+        return issue_band(gl, &mut sinks, &mesh.band, |i| data.get(i));
     }
-    issue_per_vertex(obj, surface, &mesh.points, (&mesh.strips, &mesh.band), &data);
+    issue_per_vertex(gl, obj, surface, &mesh.points, (&mesh.strips, &mesh.band), &data);
 }
 
 /// The strips and the band when other callbacks are registered: attributes and normals per
 /// vertex, before the position.
 fn issue_per_vertex(
+    gl: &mut Gl,
     obj: &mut NurbsObject,
     surface: &Surface,
     points: &[[f64; 2]],
@@ -79,49 +82,59 @@ fn issue_per_vertex(
     data: &PointValues<'_>,
 ) {
     let per_vertex = !surface.attributes.is_empty() || obj.callbacks.wants_normals();
-    let emit = |obj: &mut NurbsObject, i: u32| {
+    let emit = |gl: &mut Gl, obj: &mut NurbsObject, i: u32| {
         let [u, v] = points[i as usize];
         if per_vertex {
-            emit_attributes(obj, surface.view_ref(), u, v);
+            emit_attributes(gl, obj, surface.view_ref(), u, v);
         }
         if let Some(d) = data.get(i) {
-            obj.callbacks.attribute(GLU_NURBS_VERTEX, d);
+            obj.callbacks.attribute(gl, GLU_NURBS_VERTEX, d);
         }
     };
     for strip in strips {
-        obj.callbacks.begin(GL_QUAD_STRIP);
+        obj.callbacks.begin(gl, GL_QUAD_STRIP);
         for (top, bottom) in strip_pairs(*strip) {
-            emit(obj, top);
-            emit(obj, bottom);
+            emit(gl, obj, top);
+            emit(gl, obj, bottom);
         }
-        obj.callbacks.end();
+        obj.callbacks.end(gl);
     }
     if !band.is_empty() {
-        obj.callbacks.begin(GL_TRIANGLES);
-        band.iter().flatten().for_each(|&i| emit(obj, i));
-        obj.callbacks.end();
+        obj.callbacks.begin(gl, GL_TRIANGLES);
+        band.iter().flatten().for_each(|&i| emit(gl, obj, i));
+        obj.callbacks.end(gl);
     }
 }
 
 /// The grid strips, a `GL_QUAD_STRIP` per run of cells, through the fast callbacks.
-fn issue_strips<'v>(sinks: &mut impl StripSink, strips: &[GridStrip], value: impl Fn(u32) -> Option<&'v [f32; 5]>) {
+fn issue_strips<'v>(
+    gl: &mut Gl,
+    sinks: &mut impl StripSink,
+    strips: &[GridStrip],
+    value: impl Fn(u32) -> Option<&'v [f32; 5]>,
+) {
     for strip in strips {
-        sinks.begin(GL_QUAD_STRIP);
+        sinks.begin(gl, GL_QUAD_STRIP);
         for (top, bottom) in strip_pairs(*strip) {
             for d in [top, bottom].into_iter().filter_map(&value) {
-                sinks.vertex(d);
+                sinks.vertex(gl, d);
             }
         }
-        sinks.end();
+        sinks.end(gl);
     }
 }
 
 /// The band's triangles as `GL_TRIANGLES` through the fast callbacks.
-fn issue_band<'v>(sinks: &mut impl StripSink, triangles: &[[u32; 3]], value: impl Fn(u32) -> Option<&'v [f32; 5]>) {
+fn issue_band<'v>(
+    gl: &mut Gl,
+    sinks: &mut impl StripSink,
+    triangles: &[[u32; 3]],
+    value: impl Fn(u32) -> Option<&'v [f32; 5]>,
+) {
     if !triangles.is_empty() {
-        sinks.begin(GL_TRIANGLES);
-        triangles.iter().flatten().filter_map(|&i| value(i)).for_each(|d| sinks.vertex(d));
-        sinks.end();
+        sinks.begin(gl, GL_TRIANGLES);
+        triangles.iter().flatten().filter_map(|&i| value(i)).for_each(|d| sinks.vertex(gl, d));
+        sinks.end(gl);
     }
 }
 
