@@ -1,13 +1,14 @@
 //! A course-style NURBS demo, as students write them with GLUT: a bicubic NURBS surface that
 //! the arrow keys rotate and the idle callback spins; `m` switches the display mode (FILL,
-//! OUTLINE_POLYGON, OUTLINE_PATCH), space starts and stops the spin, `p` shows the control
-//! points. The title says the state.
+//! OUTLINE_POLYGON, OUTLINE_PATCH), `t` the checker texture (a `GL_MAP2_TEXTURE_COORD_2`
+//! companion surface gives (s, t)), space starts and stops the spin, `p` shows the control
+//! points, labelled with GLUT bitmap text. The title says the state.
 //!
 //! `cargo run --release --example spin` (a window), or headless:
 //! `cargo run --release --example spin -- --frames 30 --png spin.png` (30 frames of the spin on
 //! a virtual 60 Hz clock, the last one written).
 //!
-//! Left for later (issue 17): the right-click menu, the texture, the control points' labels.
+//! Left for later (issue 17): the right-click menu (GLUT menus are not implemented yet).
 
 use gleval::prelude::*;
 use std::cell::RefCell;
@@ -21,6 +22,7 @@ struct State {
     spinning: bool,
     mode: usize,
     show_points: bool,
+    textured: bool,
 }
 
 const MODES: [(GLenum, &str); 3] =
@@ -51,6 +53,13 @@ fn init(gl: &mut Gl, state: &mut State) {
     gl.enable(GL_DEPTH_TEST);
     gl.enable(GL_AUTO_NORMAL);
     gl.enable(GL_NORMALIZE);
+    // An 8×8 checker, one texel per square, repeated over the surface.
+    let checker: Vec<u8> =
+        (0..64).flat_map(|i| if (i / 8 + i % 8) % 2 == 0 { [240, 240, 220] } else { [60, 90, 160] }).collect();
+    gl.pixel_storei(GL_UNPACK_ALIGNMENT, 1);
+    gl.tex_image_2d(GL_TEXTURE_2D, 0, GL_RGB as i32, 8, 8, 0, GL_RGB, GL_UNSIGNED_BYTE, &checker);
+    gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST as i32);
+    gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST as i32);
     let nurb = gl.glu_new_nurbs_renderer();
     gl.glu_nurbs_property(nurb, GLU_SAMPLING_TOLERANCE, 25.0);
     state.nurb = Some(nurb);
@@ -59,7 +68,11 @@ fn init(gl: &mut Gl, state: &mut State) {
 
 fn update_title(gl: &mut Gl, state: &State) {
     let spin = if state.spinning { "spinning" } else { "still" };
-    gl.glut_set_window_title(&format!("spin: {} ({spin}; arrows rotate, m mode, space spin)", MODES[state.mode].1));
+    let texture = if state.textured { "textured" } else { "plain" };
+    gl.glut_set_window_title(&format!(
+        "spin: {} {texture} ({spin}; arrows rotate, m mode, t texture, space spin)",
+        MODES[state.mode].1
+    ));
 }
 
 fn reshape(gl: &mut Gl, w: i32, h: i32) {
@@ -82,10 +95,31 @@ fn display(gl: &mut Gl, state: &State) {
     gl.rotatef(state.spin_y, 0.0, 0.0, 1.0);
     gl.scalef(0.5, 0.5, 0.5);
     gl.glu_nurbs_property(nurb, GLU_DISPLAY_MODE, MODES[state.mode].0 as f32);
+    if state.textured {
+        gl.enable(GL_TEXTURE_2D);
+    }
+    // (s, t) from 0 to 3 over the surface: a bilinear companion surface (GLU evaluates it beside
+    // the position, as GL_MAP2_TEXTURE_COORD_2).
+    let tex = [[[0.0f32, 0.0], [0.0, 3.0]], [[3.0, 0.0], [3.0, 3.0]]];
+    let tknots = [0.0, 0.0, 1.0, 1.0];
     gl.glu_begin_surface(nurb);
+    gl.glu_nurbs_surface(
+        nurb,
+        4,
+        &tknots,
+        4,
+        &tknots,
+        2 * 2,
+        2,
+        tex.as_flattened().as_flattened(),
+        2,
+        2,
+        GL_MAP2_TEXTURE_COORD_2,
+    );
     let points = ctl.as_flattened().as_flattened();
     gl.glu_nurbs_surface(nurb, 8, &knots, 8, &knots, 4 * 3, 3, points, 4, 4, GL_MAP2_VERTEX_3);
     gl.glu_end_surface(nurb);
+    gl.disable(GL_TEXTURE_2D);
     if state.show_points {
         gl.disable(GL_LIGHTING);
         gl.point_size(5.0);
@@ -95,6 +129,14 @@ fn display(gl: &mut Gl, state: &State) {
             gl.vertex3fv(p);
         }
         gl.end();
+        // Label the corner points, as course demos do: P(u,v) beside each.
+        for (u, v) in [(0, 0), (3, 0), (0, 3), (3, 3)] {
+            let p = ctl[u][v];
+            gl.raster_pos3f(p[0], p[1], p[2] + 0.3);
+            for c in format!("P{u}{v}").bytes() {
+                gl.glut_bitmap_character(GLUT_BITMAP_HELVETICA_12, c);
+            }
+        }
         gl.enable(GL_LIGHTING);
     }
     gl.pop_matrix();
@@ -119,6 +161,7 @@ fn main() {
         spinning: true,
         mode: 0,
         show_points: true,
+        textured: true,
     }));
     let (s_init, s_display, s_key, s_special, s_idle) =
         (state.clone(), state.clone(), state.clone(), state.clone(), state.clone());
@@ -132,6 +175,7 @@ fn main() {
             match key {
                 'm' => state.mode = (state.mode + 1) % MODES.len(),
                 'p' => state.show_points = !state.show_points,
+                't' => state.textured = !state.textured,
                 ' ' => state.spinning = !state.spinning,
                 _ => return,
             }
