@@ -10,8 +10,11 @@ struct Fragment {
     mode: u32,
     // The base internal format: 0 ALPHA, 1 LUMINANCE, 2 LUMINANCE_ALPHA, 3 RGB, 4 RGBA.
     format: u32,
-    // GL_CLAMP in s and t: the coordinate is clamped to [0, 1] before filtering (GL 1.1
-    // §3.8.6), so linear filtering at the edge mixes in the border colour.
+    // GL_CLAMP in s and t: 0 not, 1 with nearest filtering, 2 with linear filtering. The
+    // coordinate is clamped to [0, 1] before filtering (GL 1.1 §3.8.6), so linear filtering at
+    // the edge mixes in the border colour (transparent black, GL's initial one); the sampler
+    // clamps to the edge, and the share of the filter that falls outside is replaced by the
+    // border here.
     clamp_s: u32,
     clamp_t: u32,
     color: vec4<f32>,
@@ -60,7 +63,8 @@ fn fs_main(in: VertexOut) -> @location(0) vec4<f32> {
     let q = select(1.0, in.tex.w, in.tex.w != 0.0);
     let st = in.tex.xy / q;
     let clamped = vec2<bool>(env.clamp_s != 0u, env.clamp_t != 0u);
-    let texel = textureSample(tex_image, tex_sampler, select(st, clamp(st, vec2<f32>(0.0), vec2<f32>(1.0)), clamped));
+    let coord = select(st, clamp(st, vec2<f32>(0.0), vec2<f32>(1.0)), clamped);
+    let texel = textureSample(tex_image, tex_sampler, coord) * inside_border(coord);
     var color = in.color;
     if env.mode != 0u {
         color = apply_env(color, texel);
@@ -72,6 +76,17 @@ fn fs_main(in: VertexOut) -> @location(0) vec4<f32> {
         discard;
     }
     return color;
+}
+
+// The share of a linear filter at `coord` that lies on the texture rather than on GL_CLAMP's
+// border (1 away from the edges): the edge texel's weight where the sampler duplicated it.
+fn inside_border(coord: vec2<f32>) -> f32 {
+    let size = vec2<f32>(textureDimensions(tex_image, 0));
+    let u = coord * size - 0.5;
+    let inside = clamp(min(u + 1.0, size - u), vec2<f32>(0.0), vec2<f32>(1.0));
+    let s = select(1.0, inside.x, env.clamp_s == 2u);
+    let t = select(1.0, inside.y, env.clamp_t == 2u);
+    return s * t;
 }
 
 // GL's fog factor f (the fragment's share), clamped to [0, 1]: C = f·Cf + (1 − f)·Cfog.

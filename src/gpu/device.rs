@@ -76,10 +76,7 @@ pub(crate) fn request_device(adapter: &wgpu::Adapter) -> Result<(wgpu::Device, w
         max_buffer_size: available.max_buffer_size,
         ..wgpu::Limits::downlevel_defaults().using_resolution(available)
     };
-    // GL_CLAMP with linear filtering reads the border colour; Vulkan has the border mode.
-    let required_features = adapter.features() & wgpu::Features::ADDRESS_MODE_CLAMP_TO_BORDER;
-    let desc =
-        wgpu::DeviceDescriptor { label: Some("gleval"), required_limits, required_features, ..Default::default() };
+    let desc = wgpu::DeviceDescriptor { label: Some("gleval"), required_limits, ..Default::default() };
     pollster::block_on(adapter.request_device(&desc)).map_err(|e| RenderError::Device(e.to_string()))
 }
 

@@ -19,7 +19,8 @@ pub(crate) struct GpuFragment {
     pub mode: u32,
     /// 0 `GL_ALPHA`, 1 `GL_LUMINANCE`, 2 `GL_LUMINANCE_ALPHA`, 3 `GL_RGB`, 4 `GL_RGBA`.
     pub format: u32,
-    /// `GL_CLAMP` in s and in t (the shader clamps the coordinate to [0, 1]).
+    /// `GL_CLAMP` in s and in t: 0 not, 1 with nearest, 2 with linear filtering (the shader
+    /// clamps the coordinate to [0, 1] and mixes in the border colour).
     pub clamp: [u32; 2],
     /// `GL_TEXTURE_ENV_COLOR`.
     pub env_color: [f32; 4],
@@ -70,7 +71,17 @@ impl GpuFragment {
             GL_RGB => 3,
             _ => 4,
         };
-        let clamp = |w: GLenum| u32::from(w == GL_CLAMP);
+        let linear = texture.params.mag_filter == GL_LINEAR
+            && matches!(texture.params.min_filter, GL_LINEAR | GL_LINEAR_MIPMAP_NEAREST | GL_LINEAR_MIPMAP_LINEAR);
+        let clamp = |w: GLenum| {
+            if w != GL_CLAMP {
+                0
+            } else if linear {
+                2
+            } else {
+                1
+            }
+        };
         let clamp_t = if texture.one_d { 0 } else { clamp(texture.params.wrap_t) };
         self.clamp = [clamp(texture.params.wrap_s), clamp_t];
         self.env_color = texture.env_color;
@@ -123,14 +134,13 @@ impl TextureCache {
     ) -> Vec<wgpu::BindGroup> {
         let drawn = |key: u64| key == 0 || fragments.iter().any(|f| f.texture.as_ref().is_some_and(|t| t.key == key));
         self.views.retain(|key, _| drawn(*key));
-        let border = device.features().contains(wgpu::Features::ADDRESS_MODE_CLAMP_TO_BORDER);
         let blank = BoundTexture::blank();
         let mut groups = Vec::with_capacity(fragments.len() + 1);
         for fragment in fragments.iter().map(Some).chain([None]) {
             let t = fragment.and_then(|f| f.texture.as_ref()).unwrap_or(&blank);
             let view = self.views.entry(t.key).or_insert_with(|| upload(device, queue, t)).clone();
             let key = (t.params, t.one_d);
-            let sampler = self.samplers.entry(key).or_insert_with(|| sampler(device, &t.params, t.one_d, border));
+            let sampler = self.samplers.entry(key).or_insert_with(|| sampler(device, &t.params, t.one_d));
             let uniform = fragment.map(GpuFragment::of).unwrap_or_default();
             groups.push(bind_group(device, layout, &view, sampler, uniform));
         }
@@ -191,10 +201,10 @@ fn upload(device: &wgpu::Device, queue: &wgpu::Queue, texture: &BoundTexture) ->
     gpu.create_view(&Default::default())
 }
 
-/// GL's filters and wrap modes as a wgpu sampler (GL 1.1 §3.8.5–3.8.8). `GL_CLAMP` is the
-/// border mode (transparent black, GL's initial border colour) where the device has it, which
-/// is GL's result for coordinates in [0, 1]; a 1D texture ignores t.
-fn sampler(device: &wgpu::Device, params: &TexParams, one_d: bool, border: bool) -> wgpu::Sampler {
+/// GL's filters and wrap modes as a wgpu sampler (GL 1.1 §3.8.5–3.8.8). `GL_CLAMP` clamps to
+/// the edge here; the shader clamps the coordinate and mixes in the border colour, the same on
+/// every backend. A 1D texture ignores t.
+fn sampler(device: &wgpu::Device, params: &TexParams, one_d: bool) -> wgpu::Sampler {
     let filter = |f: GLenum| if f == GL_NEAREST { wgpu::FilterMode::Nearest } else { wgpu::FilterMode::Linear };
     let (min, mip) = match params.min_filter {
         GL_NEAREST => (wgpu::FilterMode::Nearest, None),
@@ -204,15 +214,8 @@ fn sampler(device: &wgpu::Device, params: &TexParams, one_d: bool, border: bool)
         GL_NEAREST_MIPMAP_LINEAR => (wgpu::FilterMode::Nearest, Some(wgpu::MipmapFilterMode::Linear)),
         _ => (wgpu::FilterMode::Linear, Some(wgpu::MipmapFilterMode::Linear)),
     };
-    let linear = params.min_filter != GL_NEAREST || params.mag_filter != GL_NEAREST;
-    let wrap = |w: GLenum| match w {
-        GL_REPEAT => wgpu::AddressMode::Repeat,
-        // With nearest filtering GL_CLAMP never reaches the border: GL_CLAMP_TO_EDGE.
-        GL_CLAMP if border && linear => wgpu::AddressMode::ClampToBorder,
-        _ => wgpu::AddressMode::ClampToEdge,
-    };
+    let wrap = |w: GLenum| if w == GL_REPEAT { wgpu::AddressMode::Repeat } else { wgpu::AddressMode::ClampToEdge };
     let (u, v) = (wrap(params.wrap_s), if one_d { wgpu::AddressMode::Repeat } else { wrap(params.wrap_t) });
-    let uses_border = u == wgpu::AddressMode::ClampToBorder || v == wgpu::AddressMode::ClampToBorder;
     device.create_sampler(&wgpu::SamplerDescriptor {
         label: Some("gl sampler"),
         address_mode_u: u,
@@ -222,7 +225,6 @@ fn sampler(device: &wgpu::Device, params: &TexParams, one_d: bool, border: bool)
         mipmap_filter: mip.unwrap_or(wgpu::MipmapFilterMode::Nearest),
         // Without a mipmap filter only level 0 is read (the chain then has one level anyway).
         lod_max_clamp: if mip.is_some() { 32.0 } else { 0.0 },
-        border_color: uses_border.then_some(wgpu::SamplerBorderColor::TransparentBlack),
         ..Default::default()
     })
 }
