@@ -1,21 +1,74 @@
-//! The attribute stack: `glPushAttrib` / `glPopAttrib` (GL 1.1 spec, "Saving and Restoring
-//! State"; Mesa `main/attrib.c`), for the one group GLU saves around its drawing, `GL_EVAL_BIT`
-//! (`glcurveval.cc`, `glsurfeval.cc`). Other bits are accepted, as GL accepts any mask, but
-//! nothing is saved for them: the stack stays crate-private until their groups are kept.
+//! The attribute stack: `glPushAttrib` / `glPopAttrib` (GL 1.1 spec §6.1.13 and its state
+//! tables; Mesa `main/attrib.c`). Each group a mask names is saved whole and restored whole,
+//! with the enables GL files under it. GLU saves `GL_EVAL_BIT` around its drawing
+//! (`glcurveval.cc`, `glsurfeval.cc`); GLUT's teapot saves `GL_ENABLE_BIT | GL_EVAL_BIT`.
+//!
+//! Kept: current (colour, normal, texture coordinates), point, line, polygon, lighting, fog,
+//! depth buffer, viewport, transform, enable, colour buffer (clear colour, blending, alpha
+//! test), evaluator, list (base) and texture (unit 0's bindings and environment). Groups of
+//! state this façade does not have (stencil, accumulation, pixel modes, scissor, hints) are
+//! accepted and keep nothing.
 
 use super::consts::*;
 use super::eval::EvalAttrib;
+use super::fragment::FragmentOps;
+use super::lighting::Lighting;
 use super::lists::ListCommand;
 use super::types::*;
-use super::Gl;
+use super::{Current, Gl};
 
 /// Mesa's `MAX_ATTRIB_STACK_DEPTH` (`main/config.h`), GL's minimum.
 pub(crate) const MAX_ATTRIB_STACK_DEPTH: usize = 16;
 
-/// What one `glPushAttrib` saved: each group whose bit was set.
+/// The enables GL files under each group besides `GL_ENABLE_BIT` (GL 1.1 tables 6.6–6.19).
+const POINT_ENABLES: &[GLenum] = &[GL_POINT_SMOOTH];
+const LINE_ENABLES: &[GLenum] = &[GL_LINE_SMOOTH, GL_LINE_STIPPLE];
+const POLYGON_ENABLES: &[GLenum] = &[GL_CULL_FACE, GL_POLYGON_SMOOTH];
+const LIGHTING_ENABLES: &[GLenum] = &[
+    GL_LIGHTING,
+    GL_COLOR_MATERIAL,
+    GL_LIGHT0,
+    GL_LIGHT0 + 1,
+    GL_LIGHT0 + 2,
+    GL_LIGHT0 + 3,
+    GL_LIGHT0 + 4,
+    GL_LIGHT0 + 5,
+    GL_LIGHT0 + 6,
+    GL_LIGHT0 + 7,
+];
+const FOG_ENABLES: &[GLenum] = &[GL_FOG];
+const DEPTH_ENABLES: &[GLenum] = &[GL_DEPTH_TEST];
+const TRANSFORM_ENABLES: &[GLenum] = &[GL_NORMALIZE, GL_RESCALE_NORMAL];
+const COLOR_ENABLES: &[GLenum] = &[GL_BLEND, GL_ALPHA_TEST, GL_DITHER];
+const TEXTURE_ENABLES: &[GLenum] = &[GL_TEXTURE_1D, GL_TEXTURE_2D];
+
+/// The raster values of the point, line, polygon, lighting (shade model), depth, viewport and
+/// colour buffer groups.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct RasterValues {
+    point_size: f32,
+    line_width: f32,
+    polygon: ([GLenum; 2], GLenum, GLenum),
+    shade_model: GLenum,
+    depth: (GLenum, f32),
+    viewport: ([i32; 4], [f32; 2]),
+    clear_color: [f32; 4],
+}
+
+/// What one `glPushAttrib` saved: the mask, and every group's values (restored by the mask).
 #[derive(Clone, Debug)]
 struct Saved {
+    mask: GLbitfield,
+    current: Current,
+    raster: RasterValues,
+    lighting: Option<Lighting>,
+    fragment: FragmentOps,
+    matrix_mode: usize,
     eval: Option<EvalAttrib>,
+    list_base: GLuint,
+    texture: ([GLuint; 2], GLenum, [f32; 4]),
+    /// (capability, on) for every enable a group of the mask files.
+    enables: Vec<(GLenum, bool)>,
 }
 
 /// The server attribute stack.
@@ -24,31 +77,132 @@ pub(crate) struct AttribStack {
     entries: Vec<Saved>,
 }
 
+/// The enables the groups of `mask` save (`GL_ENABLE_BIT`: every capability).
+fn enables_of(mask: GLbitfield) -> Vec<GLenum> {
+    let groups: [(GLbitfield, &[GLenum]); 9] = [
+        (GL_POINT_BIT, POINT_ENABLES),
+        (GL_LINE_BIT, LINE_ENABLES),
+        (GL_POLYGON_BIT, POLYGON_ENABLES),
+        (GL_LIGHTING_BIT, LIGHTING_ENABLES),
+        (GL_FOG_BIT, FOG_ENABLES),
+        (GL_DEPTH_BUFFER_BIT, DEPTH_ENABLES),
+        (GL_TRANSFORM_BIT, TRANSFORM_ENABLES),
+        (GL_COLOR_BUFFER_BIT, COLOR_ENABLES),
+        (GL_TEXTURE_BIT, TEXTURE_ENABLES),
+    ];
+    let all = mask & GL_ENABLE_BIT != 0;
+    let mut caps: Vec<GLenum> =
+        groups.iter().filter(|(bit, _)| all || mask & bit != 0).flat_map(|(_, caps)| caps.iter().copied()).collect();
+    if all {
+        caps.extend(super::enable::KNOWN.iter().copied());
+    }
+    caps.sort_unstable();
+    caps.dedup();
+    caps
+}
+
 impl Gl {
     /// `glPushAttrib(mask)`: saves the groups of `mask`. A full stack → `GL_STACK_OVERFLOW`
     /// (nothing is saved); inside `begin`/`end` → `GL_INVALID_OPERATION`.
-    pub(crate) fn push_attrib(&mut self, mask: GLbitfield) {
+    pub fn push_attrib(&mut self, mask: GLbitfield) {
         if self.compiled(|| ListCommand::PushAttrib(mask)) || self.reject_inside_begin_end() {
             return;
         }
         if self.attrib_stack.entries.len() >= MAX_ATTRIB_STACK_DEPTH {
             return self.set_error(GL_STACK_OVERFLOW);
         }
-        let eval = (mask & GL_EVAL_BIT != 0).then(|| self.eval.attrib());
-        self.attrib_stack.entries.push(Saved { eval });
+        let r = &self.raster;
+        let raster = RasterValues {
+            point_size: r.point_size,
+            line_width: r.line_width,
+            polygon: (r.polygon_mode, r.front_face, r.cull_face),
+            shade_model: r.shade_model,
+            depth: (r.depth_func, r.clear_depth),
+            viewport: (r.viewport, r.depth_range),
+            clear_color: r.clear_color,
+        };
+        let enables = enables_of(mask).into_iter().map(|cap| (cap, self.caps.is_on(cap))).collect();
+        let saved = Saved {
+            mask,
+            current: self.current,
+            raster,
+            lighting: (mask & GL_LIGHTING_BIT != 0).then(|| self.lighting.clone()),
+            fragment: self.fragment_ops,
+            matrix_mode: self.matrices.mode(),
+            // The evaluator group holds the map enables and GL_AUTO_NORMAL, which
+            // GL_ENABLE_BIT saves too.
+            eval: (mask & (GL_EVAL_BIT | GL_ENABLE_BIT) != 0).then(|| self.eval.attrib()),
+            list_base: self.list_base_value(),
+            texture: self.texture_attrib(),
+            enables,
+        };
+        self.attrib_stack.entries.push(saved);
     }
 
     /// `glPopAttrib`: restores the groups the matching push saved. An empty stack →
     /// `GL_STACK_UNDERFLOW`; inside `begin`/`end` → `GL_INVALID_OPERATION`.
-    pub(crate) fn pop_attrib(&mut self) {
+    pub fn pop_attrib(&mut self) {
         if self.compiled(|| ListCommand::PopAttrib) || self.reject_inside_begin_end() {
             return;
         }
         let Some(saved) = self.attrib_stack.entries.pop() else {
             return self.set_error(GL_STACK_UNDERFLOW);
         };
+        self.restore_groups(saved);
+        self.touch_state();
+    }
+
+    fn restore_groups(&mut self, saved: Saved) {
+        let (mask, v) = (saved.mask, saved.raster);
+        let has = |bit: GLbitfield| mask & bit != 0;
+        let r = &mut self.raster;
+        if has(GL_CURRENT_BIT) {
+            self.current = saved.current;
+        }
+        if has(GL_POINT_BIT) {
+            r.point_size = v.point_size;
+        }
+        if has(GL_LINE_BIT) {
+            r.line_width = v.line_width;
+        }
+        if has(GL_POLYGON_BIT) {
+            (r.polygon_mode, r.front_face, r.cull_face) = v.polygon;
+        }
+        if has(GL_LIGHTING_BIT) {
+            r.shade_model = v.shade_model;
+        }
+        if has(GL_DEPTH_BUFFER_BIT) {
+            (r.depth_func, r.clear_depth) = v.depth;
+        }
+        if has(GL_VIEWPORT_BIT) {
+            (r.viewport, r.depth_range) = v.viewport;
+        }
+        if has(GL_COLOR_BUFFER_BIT) {
+            r.clear_color = v.clear_color;
+            (self.fragment_ops.blend, self.fragment_ops.alpha) = (saved.fragment.blend, saved.fragment.alpha);
+        }
+        if has(GL_FOG_BIT) {
+            self.fragment_ops.fog = saved.fragment.fog;
+        }
+        if let Some(lighting) = saved.lighting {
+            self.lighting = lighting;
+        }
+        if has(GL_TRANSFORM_BIT) {
+            self.matrices.set_mode(saved.matrix_mode);
+        }
+        if has(GL_LIST_BIT) {
+            self.set_list_base_value(saved.list_base);
+        }
+        if has(GL_TEXTURE_BIT) {
+            self.restore_texture_attrib(saved.texture);
+        }
         if let Some(eval) = saved.eval {
+            // GL_ENABLE_BIT alone restores the map enables and GL_AUTO_NORMAL, not the grids.
+            let eval = if has(GL_EVAL_BIT) { eval } else { eval.enables_with_grids_of(&self.eval.attrib()) };
             self.eval.restore(eval);
+        }
+        for (cap, on) in saved.enables {
+            self.caps.set(cap, on);
         }
     }
 }
@@ -56,6 +210,46 @@ impl Gl {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn each_group_comes_back_whole() {
+        let mut gl = Gl::new(10, 10);
+        gl.color3f(0.5, 0.25, 0.125);
+        gl.enable(GL_LIGHTING);
+        gl.light_fv(GL_LIGHT0, GL_DIFFUSE, &[0.1, 0.2, 0.3, 1.0]);
+        gl.push_attrib(GL_CURRENT_BIT | GL_LIGHTING_BIT | GL_VIEWPORT_BIT | GL_POLYGON_BIT);
+        gl.color3f(1.0, 1.0, 1.0);
+        gl.disable(GL_LIGHTING);
+        gl.enable(GL_LIGHT3);
+        gl.light_fv(GL_LIGHT0, GL_DIFFUSE, &[1.0, 1.0, 1.0, 1.0]);
+        gl.shade_model(GL_FLAT);
+        gl.viewport(1, 2, 3, 4);
+        gl.polygon_mode(GL_FRONT_AND_BACK, GL_LINE);
+        gl.enable(GL_CULL_FACE);
+        // Not saved: the depth test (GL_DEPTH_BUFFER_BIT, GL_ENABLE_BIT).
+        gl.enable(GL_DEPTH_TEST);
+        gl.pop_attrib();
+        assert_eq!(gl.current.color, [0.5, 0.25, 0.125, 1.0]);
+        assert_eq!((gl.is_enabled(GL_LIGHTING), gl.is_enabled(GL_LIGHT3)), (GL_TRUE, GL_FALSE));
+        assert_eq!(gl.lighting.lights[0].diffuse.to_array(), [0.1, 0.2, 0.3, 1.0]);
+        assert_eq!(gl.raster.shade_model, GL_SMOOTH);
+        assert_eq!(gl.raster.viewport, [0, 0, 10, 10]);
+        assert_eq!(gl.raster.polygon_mode, [GL_FILL, GL_FILL]);
+        assert_eq!((gl.is_enabled(GL_CULL_FACE), gl.is_enabled(GL_DEPTH_TEST)), (GL_FALSE, GL_TRUE));
+        assert_eq!(gl.get_error(), GL_NO_ERROR);
+    }
+
+    #[test]
+    fn the_enable_group_restores_map_enables_but_not_grids() {
+        let mut gl = Gl::new(10, 10);
+        gl.push_attrib(GL_ENABLE_BIT);
+        gl.enable(GL_MAP1_VERTEX_3);
+        gl.enable(GL_TEXTURE_2D);
+        gl.map_grid1f(7, 0.0, 1.0);
+        gl.pop_attrib();
+        assert_eq!((gl.is_enabled(GL_MAP1_VERTEX_3), gl.is_enabled(GL_TEXTURE_2D)), (GL_FALSE, GL_FALSE));
+        assert_eq!(grid1(&mut gl), [7]);
+    }
 
     fn grid1(gl: &mut Gl) -> [i32; 1] {
         let mut n = [0];

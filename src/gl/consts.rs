@@ -280,3 +280,16 @@ pub const GL_CLIENT_VERTEX_ARRAY_BIT: GLenum = 0x0000_0002;
 pub const GL_CLIENT_ALL_ATTRIB_BITS: GLenum = 0xFFFF_FFFF;
 pub const GL_CLIENT_ATTRIB_STACK_DEPTH: GLenum = 0x0BB1;
 pub const GL_MAX_CLIENT_ATTRIB_STACK_DEPTH: GLenum = 0x0D3B;
+
+// glPushAttrib groups (GL 1.1 spec table 6.x).
+pub const GL_CURRENT_BIT: GLenum = 0x0000_0001;
+pub const GL_POINT_BIT: GLenum = 0x0000_0002;
+pub const GL_LINE_BIT: GLenum = 0x0000_0004;
+pub const GL_POLYGON_BIT: GLenum = 0x0000_0008;
+pub const GL_LIGHTING_BIT: GLenum = 0x0000_0040;
+pub const GL_FOG_BIT: GLenum = 0x0000_0080;
+pub const GL_VIEWPORT_BIT: GLenum = 0x0000_0800;
+pub const GL_TRANSFORM_BIT: GLenum = 0x0000_1000;
+pub const GL_ENABLE_BIT: GLenum = 0x0000_2000;
+pub const GL_TEXTURE_BIT: GLenum = 0x0004_0000;
+pub const GL_ALL_ATTRIB_BITS: GLenum = 0xFFFF_FFFF;

@@ -14,7 +14,7 @@ pub(crate) struct Caps {
 
 /// Capabilities accepted besides the maps and `GL_AUTO_NORMAL` (all initially off, except
 /// `GL_DITHER` and `GL_MULTISAMPLE`, which GL starts enabled).
-const KNOWN: &[GLenum] = &[
+pub(crate) const KNOWN: &[GLenum] = &[
     GL_POINT_SMOOTH,
     GL_LINE_SMOOTH,
     GL_LINE_STIPPLE,
@@ -50,7 +50,7 @@ impl Caps {
         self.on.contains(&cap) != default_on
     }
 
-    fn set(&mut self, cap: GLenum, on: bool) {
+    pub(crate) fn set(&mut self, cap: GLenum, on: bool) {
         let default_on = cap == GL_DITHER || cap == GL_MULTISAMPLE;
         if on != default_on {
             self.on.insert(cap);

@@ -331,6 +331,16 @@ impl Gl {
         }
     }
 
+    /// `GL_LIST_BASE`, which `GL_LIST_BIT` saves.
+    pub(crate) fn list_base_value(&self) -> GLuint {
+        self.lists.base
+    }
+
+    /// Restores `GL_LIST_BASE` (`glPopAttrib`).
+    pub(crate) fn set_list_base_value(&mut self, base: GLuint) {
+        self.lists.base = base;
+    }
+
     /// The list `glGet(GL_LIST_INDEX)`, `GL_LIST_MODE`, `GL_LIST_BASE` and
     /// `GL_MAX_LIST_NESTING` report.
     pub(crate) fn list_query(&self, pname: GLenum) -> Option<f64> {

@@ -34,6 +34,16 @@ impl MatrixStacks {
         *self.stacks[1].last().unwrap_or(&Mat4::IDENTITY)
     }
 
+    /// The matrix mode as an index: 0 modelview, 1 projection, 2 texture.
+    pub fn mode(&self) -> usize {
+        self.mode
+    }
+
+    /// Sets the matrix mode (an index, as [`MatrixStacks::mode`] gives it).
+    pub fn set_mode(&mut self, mode: usize) {
+        self.mode = mode.min(2);
+    }
+
     pub fn texture(&self) -> Mat4 {
         *self.stacks[2].last().unwrap_or(&Mat4::IDENTITY)
     }

@@ -557,6 +557,20 @@ impl Gl {
         })
     }
 
+    /// What `GL_TEXTURE_BIT` saves of unit 0: the bindings and the environment.
+    pub(crate) fn texture_attrib(&self) -> ([GLuint; 2], GLenum, [f32; 4]) {
+        (self.textures.bound, self.textures.env_mode, self.textures.env_color)
+    }
+
+    /// Restores what [`Gl::texture_attrib`] saved (a binding whose object was deleted since
+    /// falls back to the default texture).
+    pub(crate) fn restore_texture_attrib(&mut self, (bound, env_mode, env_color): ([GLuint; 2], GLenum, [f32; 4])) {
+        let exists = |name: GLuint| name == 0 || self.textures.objects.contains_key(&name);
+        self.textures.bound = bound.map(|name| if exists(name) { name } else { 0 });
+        (self.textures.env_mode, self.textures.env_color) = (env_mode, env_color);
+        self.touch_state();
+    }
+
     /// `glGetIntegerv(GL_TEXTURE_BINDING_1D/2D)`.
     pub(crate) fn texture_query(&self, pname: GLenum) -> Option<f64> {
         match pname {

@@ -21,11 +21,9 @@ impl Gl {
     }
 
     /// GLUT's `teapot(grid, scale, type)`: the evaluator state and enables it changes are
-    /// saved and restored around it (`glPushAttrib(GL_ENABLE_BIT | GL_EVAL_BIT)`; of the enable
-    /// group, the only one it touches outside the evaluator group is `GL_NORMALIZE`).
+    /// saved and restored around it, as GLUT does.
     fn teapot(&mut self, grid: GLint, size: GLdouble, mode: GLenum) {
-        let normalize = self.is_enabled(GL_NORMALIZE);
-        self.push_attrib(GL_EVAL_BIT);
+        self.push_attrib(GL_ENABLE_BIT | GL_EVAL_BIT);
         self.enable(GL_AUTO_NORMAL);
         self.enable(GL_NORMALIZE);
         self.enable(GL_MAP2_VERTEX_3);
@@ -47,8 +45,5 @@ impl Gl {
         }
         self.pop_matrix();
         self.pop_attrib();
-        if normalize == GL_FALSE {
-            self.disable(GL_NORMALIZE);
-        }
     }
 }

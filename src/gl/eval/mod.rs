@@ -91,6 +91,14 @@ pub(crate) struct EvalAttrib {
     grid2: (Grid, Grid),
 }
 
+impl EvalAttrib {
+    /// These enables (the maps' and `GL_AUTO_NORMAL`) with `grids`' grids: what popping
+    /// `GL_ENABLE_BIT` without `GL_EVAL_BIT` restores.
+    pub fn enables_with_grids_of(self, grids: &EvalAttrib) -> Self {
+        Self { grid1: grids.grid1, grid2: grids.grid2, ..self }
+    }
+}
+
 impl EvalState {
     /// The `GL_EVAL_BIT` group.
     pub fn attrib(&self) -> EvalAttrib {

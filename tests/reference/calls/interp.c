@@ -34,6 +34,8 @@ struct enum_name { const char *name; GLenum value; };
 #define E(x) { #x, x }
 static const struct enum_name enums[] = {
     E(GL_TEXTURE_1D), E(GL_RGB), E(GL_RGBA), E(GL_LUMINANCE), E(GL_LUMINANCE_ALPHA), E(GL_ALPHA), E(GL_TEXTURE_MIN_FILTER), E(GL_TEXTURE_MAG_FILTER), E(GL_TEXTURE_WRAP_S), E(GL_TEXTURE_WRAP_T), E(GL_NEAREST), E(GL_LINEAR), E(GL_LINEAR_MIPMAP_LINEAR), E(GL_NEAREST_MIPMAP_NEAREST), E(GL_REPEAT), E(GL_CLAMP), E(GL_CLAMP_TO_EDGE), E(GL_TEXTURE_ENV), E(GL_TEXTURE_ENV_MODE), E(GL_TEXTURE_ENV_COLOR), E(GL_MODULATE), E(GL_DECAL), E(GL_BLEND), E(GL_REPLACE), E(GL_ADD), E(GL_UNPACK_ALIGNMENT), E(GL_UNPACK_ROW_LENGTH), E(GL_UNPACK_SKIP_ROWS), E(GL_PACK_ALIGNMENT), E(GL_TEXTURE_BINDING_1D), E(GL_TEXTURE_BINDING_2D),
+    E(GL_ENABLE_BIT), E(GL_EVAL_BIT), E(GL_CURRENT_BIT), E(GL_LIGHTING_BIT), E(GL_TEXTURE_BIT),
+    E(GL_ALL_ATTRIB_BITS), E(GL_CULL_FACE), E(GL_DEPTH_TEST), E(GL_BLEND), E(GL_FOG),
     E(GL_COMPILE), E(GL_COMPILE_AND_EXECUTE), E(GL_LIST_BASE), E(GL_LIST_INDEX), E(GL_LIST_MODE),
     E(GL_MAX_LIST_NESTING), E(GL_BYTE), E(GL_UNSIGNED_BYTE), E(GL_SHORT), E(GL_UNSIGNED_SHORT), E(GL_INT),
     E(GL_UNSIGNED_INT), E(GL_FLOAT), E(GL_2_BYTES), E(GL_3_BYTES), E(GL_4_BYTES), E(GL_DOUBLE),
@@ -453,6 +455,10 @@ static void run_call(const char *c)
     } else if (!strcmp(c, "tex_envi")) {
         GLenum target = arg_enum(), pname = arg_enum();
         glTexEnvi(target, pname, (GLint)arg_enum());
+    } else if (!strcmp(c, "push_attrib")) {
+        glPushAttrib(arg_enum());
+    } else if (!strcmp(c, "pop_attrib")) {
+        glPopAttrib();
     } else if (!strcmp(c, "pixel_storei")) {
         GLenum pname = arg_enum();
         glPixelStorei(pname, arg_int());
