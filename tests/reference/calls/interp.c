@@ -34,6 +34,9 @@ struct enum_name { const char *name; GLenum value; };
 #define E(x) { #x, x }
 static const struct enum_name enums[] = {
     E(GL_TEXTURE_1D), E(GL_RGB), E(GL_RGBA), E(GL_LUMINANCE), E(GL_LUMINANCE_ALPHA), E(GL_ALPHA), E(GL_TEXTURE_MIN_FILTER), E(GL_TEXTURE_MAG_FILTER), E(GL_TEXTURE_WRAP_S), E(GL_TEXTURE_WRAP_T), E(GL_NEAREST), E(GL_LINEAR), E(GL_LINEAR_MIPMAP_LINEAR), E(GL_NEAREST_MIPMAP_NEAREST), E(GL_REPEAT), E(GL_CLAMP), E(GL_CLAMP_TO_EDGE), E(GL_TEXTURE_ENV), E(GL_TEXTURE_ENV_MODE), E(GL_TEXTURE_ENV_COLOR), E(GL_MODULATE), E(GL_DECAL), E(GL_BLEND), E(GL_REPLACE), E(GL_ADD), E(GL_UNPACK_ALIGNMENT), E(GL_UNPACK_ROW_LENGTH), E(GL_UNPACK_SKIP_ROWS), E(GL_PACK_ALIGNMENT), E(GL_TEXTURE_BINDING_1D), E(GL_TEXTURE_BINDING_2D),
+    E(GL_SRC_ALPHA), E(GL_ONE_MINUS_SRC_ALPHA), E(GL_ONE), E(GL_ZERO), E(GL_SRC_ALPHA_SATURATE),
+    E(GL_GREATER), E(GL_ALWAYS), E(GL_NEVER), E(GL_FOG_MODE), E(GL_FOG_DENSITY), E(GL_FOG_START),
+    E(GL_FOG_END), E(GL_EXP), E(GL_EXP2), E(GL_ALPHA_TEST),
     E(GL_ENABLE_BIT), E(GL_EVAL_BIT), E(GL_CURRENT_BIT), E(GL_LIGHTING_BIT), E(GL_TEXTURE_BIT),
     E(GL_ALL_ATTRIB_BITS), E(GL_CULL_FACE), E(GL_DEPTH_TEST), E(GL_BLEND), E(GL_FOG),
     E(GL_COMPILE), E(GL_COMPILE_AND_EXECUTE), E(GL_LIST_BASE), E(GL_LIST_INDEX), E(GL_LIST_MODE),
@@ -455,6 +458,18 @@ static void run_call(const char *c)
     } else if (!strcmp(c, "tex_envi")) {
         GLenum target = arg_enum(), pname = arg_enum();
         glTexEnvi(target, pname, (GLint)arg_enum());
+    } else if (!strcmp(c, "blend_func")) {
+        GLenum sf = arg_enum();
+        glBlendFunc(sf, arg_enum());
+    } else if (!strcmp(c, "alpha_func")) {
+        GLenum func = arg_enum();
+        glAlphaFunc(func, arg_float());
+    } else if (!strcmp(c, "fogi")) {
+        GLenum pname = arg_enum();
+        glFogi(pname, (GLint)arg_enum());
+    } else if (!strcmp(c, "fogf")) {
+        GLenum pname = arg_enum();
+        glFogf(pname, arg_float());
     } else if (!strcmp(c, "push_attrib")) {
         glPushAttrib(arg_enum());
     } else if (!strcmp(c, "pop_attrib")) {
