@@ -145,6 +145,35 @@ pub(crate) struct GpuDraw {
     pub lights: [GpuLight; 8],
 }
 
+/// A batch's fragment operations as the fragment shader reads them (`Fragment` in
+/// `raster.wgsl`): the texture environment, fog and the alpha test.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
+pub(crate) struct GpuFragment {
+    /// 0 none, 1 `GL_MODULATE`, 2 `GL_DECAL`, 3 `GL_BLEND`, 4 `GL_REPLACE`, 5 `GL_ADD`.
+    pub mode: u32,
+    /// 0 `GL_ALPHA`, 1 `GL_LUMINANCE`, 2 `GL_LUMINANCE_ALPHA`, 3 `GL_RGB`, 4 `GL_RGBA`.
+    pub format: u32,
+    /// `GL_CLAMP` in s: 0 not, 1 with nearest, 2 with linear filtering (the shader clamps the
+    /// coordinate to [0, 1] and mixes in the border colour).
+    pub clamp_s: u32,
+    /// `GL_CLAMP` in t, likewise.
+    pub clamp_t: u32,
+    /// `GL_TEXTURE_ENV_COLOR`.
+    pub color: [f32; 4],
+    /// 0 none, 1 `GL_LINEAR`, 2 `GL_EXP`, 3 `GL_EXP2`.
+    pub fog_mode: u32,
+    /// 0 none, else the GL comparison minus `GL_NEVER` plus 1.
+    pub alpha_func: u32,
+    pub fog_density: f32,
+    pub alpha_ref: f32,
+    pub fog_start: f32,
+    pub fog_end: f32,
+    pub pad0: f32,
+    pub pad1: f32,
+    pub fog_color: [f32; 4],
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -216,6 +245,31 @@ mod tests {
         );
         let (_, vertex) = wgsl_layout(EVAL_MESH_WGSL, "Vertex");
         assert_eq!(u64::from(vertex), VERTEX_BYTES);
+    }
+
+    /// The frame rasteriser's per-batch fragment operations.
+    #[test]
+    fn fragment_uniform_layout_matches_raster_wgsl() {
+        check_twin!(
+            RASTER_WGSL,
+            "Fragment",
+            GpuFragment {
+                mode,
+                format,
+                clamp_s,
+                clamp_t,
+                color,
+                fog_mode,
+                alpha_func,
+                fog_density,
+                alpha_ref,
+                fog_start,
+                fog_end,
+                pad0,
+                pad1,
+                fog_color
+            }
+        );
     }
 
     /// The mesh rasteriser's draw uniform: GL's state, materials and lights.

@@ -3,38 +3,13 @@
 //! and alpha test as a uniform (`shaders/raster.wgsl` applies them per fragment; blending is
 //! the pipeline's).
 
+use super::layout::GpuFragment;
 use crate::gl::consts::*;
 use crate::gl::types::GLenum;
 use crate::gl::{BoundTexture, TexParams};
 use crate::render::assemble::FragmentState;
 use std::collections::HashMap;
 use wgpu::util::DeviceExt;
-
-/// A batch's fragment operations as the fragment shader reads them (`Fragment` in
-/// `raster.wgsl`): the texture environment, fog and the alpha test.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, Default, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
-pub(crate) struct GpuFragment {
-    /// 0 none, 1 `GL_MODULATE`, 2 `GL_DECAL`, 3 `GL_BLEND`, 4 `GL_REPLACE`, 5 `GL_ADD`.
-    pub mode: u32,
-    /// 0 `GL_ALPHA`, 1 `GL_LUMINANCE`, 2 `GL_LUMINANCE_ALPHA`, 3 `GL_RGB`, 4 `GL_RGBA`.
-    pub format: u32,
-    /// `GL_CLAMP` in s and in t: 0 not, 1 with nearest, 2 with linear filtering (the shader
-    /// clamps the coordinate to [0, 1] and mixes in the border colour).
-    pub clamp: [u32; 2],
-    /// `GL_TEXTURE_ENV_COLOR`.
-    pub env_color: [f32; 4],
-    /// 0 none, 1 `GL_LINEAR`, 2 `GL_EXP`, 3 `GL_EXP2`.
-    pub fog_mode: u32,
-    /// 0 none, else the GL comparison minus `GL_NEVER` plus 1.
-    pub alpha_func: u32,
-    pub fog_density: f32,
-    pub alpha_ref: f32,
-    pub fog_start: f32,
-    pub fog_end: f32,
-    pub pad: [f32; 2],
-    pub fog_color: [f32; 4],
-}
 
 impl GpuFragment {
     fn of(fragment: &FragmentState) -> Self {
@@ -83,8 +58,8 @@ impl GpuFragment {
             }
         };
         let clamp_t = if texture.one_d { 0 } else { clamp(texture.params.wrap_t) };
-        self.clamp = [clamp(texture.params.wrap_s), clamp_t];
-        self.env_color = texture.env_color;
+        (self.clamp_s, self.clamp_t) = (clamp(texture.params.wrap_s), clamp_t);
+        self.color = texture.env_color;
     }
 }
 
