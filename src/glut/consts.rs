@@ -82,3 +82,5 @@ pub const GLUT_INIT_WINDOW_WIDTH: GLenum = 502;
 pub const GLUT_INIT_WINDOW_HEIGHT: GLenum = 503;
 pub const GLUT_INIT_DISPLAY_MODE: GLenum = 504;
 pub const GLUT_ELAPSED_TIME: GLenum = 700;
+/// `glutGet`: the number of items in the current menu.
+pub const GLUT_MENU_NUM_ITEMS: GLenum = 300;

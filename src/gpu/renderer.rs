@@ -114,17 +114,37 @@ impl Renderer {
         size: (u32, u32),
         format: wgpu::TextureFormat,
     ) {
+        let target = Attachments { color, depth, size, format };
+        self.encode_onto(frame, encoder, &target, false);
+    }
+
+    /// [`Renderer::encode`] over what `color` and `depth` already hold: no clear unless the
+    /// frame asks for one (a GLUT menu drawn over the program's picture).
+    pub(crate) fn encode_over(
+        &mut self,
+        frame: &Frame,
+        encoder: &mut wgpu::CommandEncoder,
+        color: &wgpu::TextureView,
+        depth: &wgpu::TextureView,
+        size: (u32, u32),
+        format: wgpu::TextureFormat,
+    ) {
+        let target = Attachments { color, depth, size, format };
+        self.encode_onto(frame, encoder, &target, true);
+    }
+
+    fn encode_onto(&mut self, frame: &Frame, encoder: &mut wgpu::CommandEncoder, target: &Attachments<'_>, keep: bool) {
+        let size = target.size;
         let on_gpu = gpu_mesh_indices(&self.device, frame);
         let list = assemble_frame(frame, &on_gpu);
         let prepared = (!on_gpu.is_empty()).then(|| {
             let provoking_last = self.provoking_vertex_is_last();
             let meshes = self.meshes.get_or_insert_with(|| MeshRaster::new(&self.device, provoking_last));
             let prepared = meshes.prepare(&self.device, &self.queue, encoder, frame, &on_gpu, size);
-            meshes.ensure_pipelines(&self.device, frame, &prepared, format);
+            meshes.ensure_pipelines(&self.device, frame, &prepared, target.format);
             prepared
         });
-        let target = Attachments { color, depth, size, format };
-        self.encode_list(&list, frame, prepared.as_ref(), encoder, &target);
+        self.encode_list(&list, frame, prepared.as_ref(), encoder, target, keep);
     }
 
     /// Records an assembled list (with its frame's GPU meshes already prepared).
@@ -135,10 +155,11 @@ impl Renderer {
         prepared: Option<&PreparedMeshes>,
         encoder: &mut wgpu::CommandEncoder,
         target: &Attachments<'_>,
+        keep: bool,
     ) {
         let buffer = vertex_buffer(&self.device, list, target.size);
         let bind_groups = self.frames.texture_bind_groups(&self.device, &self.queue, list);
-        for pass in split_passes(&list.ops) {
+        for pass in split_passes(&list.ops, keep) {
             for item in &pass.draws {
                 if let PassItem::Batch(batch) = item {
                     self.frames.ensure_pipeline(&self.device, pipeline_key(batch, target));
