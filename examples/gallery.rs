@@ -55,6 +55,8 @@ mod rationalmap;
 mod specular;
 #[path = "teapot.rs"]
 mod teapot;
+#[path = "texgen.rs"]
+mod texgen;
 #[path = "texsurf.rs"]
 mod texsurf;
 #[path = "texteapot.rs"]
@@ -65,7 +67,7 @@ mod trimmed;
 /// A built-in program: its name and how to build it.
 type Program = (&'static str, fn() -> App);
 
-const PROGRAMS: [Program; 26] = [
+const PROGRAMS: [Program; 27] = [
     ("bezcurve", bezcurve::app),
     ("bezsurf", bezsurf::app),
     ("bcurve", bcurve::app),
@@ -90,6 +92,7 @@ const PROGRAMS: [Program; 26] = [
     ("mipnurbs", mipnurbs::app),
     ("fogblend", fogblend::app),
     ("texteapot", texteapot::app),
+    ("texgen", texgen::app),
     ("labels", labels::app),
     ("operations", operations::app),
 ];

@@ -40,7 +40,8 @@ const FOG_ENABLES: &[GLenum] = &[GL_FOG];
 const DEPTH_ENABLES: &[GLenum] = &[GL_DEPTH_TEST];
 const TRANSFORM_ENABLES: &[GLenum] = &[GL_NORMALIZE, GL_RESCALE_NORMAL];
 const COLOR_ENABLES: &[GLenum] = &[GL_BLEND, GL_ALPHA_TEST, GL_DITHER];
-const TEXTURE_ENABLES: &[GLenum] = &[GL_TEXTURE_1D, GL_TEXTURE_2D];
+const TEXTURE_ENABLES: &[GLenum] =
+    &[GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q];
 
 /// The raster values of the point, line, polygon, lighting (shade model), depth, viewport and
 /// colour buffer groups.
@@ -66,7 +67,7 @@ struct Saved {
     matrix_mode: usize,
     eval: Option<EvalAttrib>,
     list_base: GLuint,
-    texture: ([GLuint; 2], GLenum, [f32; 4]),
+    texture: super::texture::TextureAttrib,
     /// (capability, on) for every enable a group of the mask files.
     enables: Vec<(GLenum, bool)>,
 }

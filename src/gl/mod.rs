@@ -21,6 +21,7 @@ mod mesh_job;
 mod pixels;
 mod raster;
 mod raster_pos;
+mod texgen;
 mod texture;
 pub mod types;
 mod vertex;
@@ -31,6 +32,7 @@ pub use frame::{Call, Command, DrawState, Frame, GridMesh, MeshMode, MeshVertice
 pub use lighting::{Light, Lighting, Material};
 pub use lists::MAX_LIST_NESTING;
 pub use mesh_job::{MapSample, MeshJob};
+pub use texgen::{TexGen, TexGenCoord, TexGenState};
 pub use texture::{BoundTexture, TexLevel, TexParams, MAX_TEXTURE_SIZE};
 pub use vertex::Vertex;
 
@@ -131,6 +133,8 @@ pub struct Gl {
     lists: lists::Lists,
     /// Texture objects and unit 0's environment.
     textures: texture::Textures,
+    /// `glTexGen`'s modes and planes.
+    tex_gen: texgen::TexGen,
     /// Blending, the alpha test and fog.
     fragment_ops: fragment::FragmentOps,
     /// How client memory is laid out for images and bitmaps (`glPixelStore`).
@@ -167,6 +171,7 @@ impl Gl {
             lists: lists::Lists::default(),
             pixel_stores: pixels::PixelStores::default(),
             textures: texture::Textures::default(),
+            tex_gen: texgen::TexGen::default(),
             fragment_ops: fragment::FragmentOps::default(),
             nurbs: Vec::new(),
         }

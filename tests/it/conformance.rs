@@ -52,6 +52,8 @@ mod rationalmap;
 mod specular;
 #[path = "../../examples/teapot.rs"]
 mod teapot;
+#[path = "../../examples/texgen.rs"]
+mod texgen;
 #[path = "../../examples/texsurf.rs"]
 mod texsurf;
 #[path = "../../examples/texteapot.rs"]
@@ -249,6 +251,13 @@ fn teapot_matches_mesa() {
 #[test]
 fn glut_teapots_match_mesa() {
     check("texteapot", texteapot::app, 0.0);
+}
+
+/// Generated texture coordinates: object-linear contours, eye-linear stripes and a
+/// sphere-mapped teapot (`TexGen.c`).
+#[test]
+fn texgen_matches_mesa() {
+    check("texgen", texgen::app, 0.0);
 }
 
 /// Programs with no C original: the GPU tessellator must still draw what the CPU draws.

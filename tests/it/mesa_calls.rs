@@ -76,6 +76,21 @@ fn enum_value(token: &str) -> u32 {
         ("GL_EXP", GL_EXP),
         ("GL_EXP2", GL_EXP2),
         ("GL_ALPHA_TEST", GL_ALPHA_TEST),
+        ("GL_S", GL_S),
+        ("GL_T", GL_T),
+        ("GL_R", GL_R),
+        ("GL_Q", GL_Q),
+        ("GL_TEXTURE_GEN_MODE", GL_TEXTURE_GEN_MODE),
+        ("GL_OBJECT_PLANE", GL_OBJECT_PLANE),
+        ("GL_EYE_PLANE", GL_EYE_PLANE),
+        ("GL_OBJECT_LINEAR", GL_OBJECT_LINEAR),
+        ("GL_EYE_LINEAR", GL_EYE_LINEAR),
+        ("GL_SPHERE_MAP", GL_SPHERE_MAP),
+        ("GL_NORMAL_MAP", GL_NORMAL_MAP),
+        ("GL_REFLECTION_MAP", GL_REFLECTION_MAP),
+        ("GL_TEXTURE_GEN_S", GL_TEXTURE_GEN_S),
+        ("GL_TEXTURE_GEN_T", GL_TEXTURE_GEN_T),
+        ("GL_TEXTURE_GEN_Q", GL_TEXTURE_GEN_Q),
         ("GL_ENABLE_BIT", GL_ENABLE_BIT),
         ("GL_EVAL_BIT", GL_EVAL_BIT),
         ("GL_CURRENT_BIT", GL_CURRENT_BIT),
@@ -346,6 +361,18 @@ impl Runner {
             "alpha_func" => gl.alpha_func(a.e(), a.f()),
             "fogi" => gl.fogi(a.e(), a.e() as i32),
             "fogf" => gl.fogf(a.e(), a.f()),
+            "translatef" => gl.translatef(a.f(), a.f(), a.f()),
+            "scalef" => gl.scalef(a.f(), a.f(), a.f()),
+            "rotatef" => gl.rotatef(a.f(), a.f(), a.f(), a.f()),
+            "tex_geni" => gl.tex_geni(a.e(), a.e(), a.e() as i32),
+            "tex_genfv" => gl.tex_genfv(a.e(), a.e(), &a.floats()),
+            "get_tex_genfv" => {
+                let (coord, pname) = (a.e(), a.e());
+                let mut v = [0.0f32; 4];
+                gl.get_tex_genfv(coord, pname, &mut v);
+                let count = if pname == GL_TEXTURE_GEN_MODE { 1 } else { 4 };
+                values = v[..count].iter().map(|x| x.to_string()).collect();
+            }
             "push_attrib" => gl.push_attrib(a.e()),
             "pop_attrib" => gl.pop_attrib(),
             "texgen_normal" => self.texgen_normal = true,

@@ -37,6 +37,9 @@ static const struct enum_name enums[] = {
     E(GL_SRC_ALPHA), E(GL_ONE_MINUS_SRC_ALPHA), E(GL_ONE), E(GL_ZERO), E(GL_SRC_ALPHA_SATURATE),
     E(GL_GREATER), E(GL_ALWAYS), E(GL_NEVER), E(GL_FOG_MODE), E(GL_FOG_DENSITY), E(GL_FOG_START),
     E(GL_FOG_END), E(GL_EXP), E(GL_EXP2), E(GL_ALPHA_TEST),
+    E(GL_S), E(GL_T), E(GL_R), E(GL_Q), E(GL_TEXTURE_GEN_MODE), E(GL_OBJECT_PLANE), E(GL_EYE_PLANE),
+    E(GL_OBJECT_LINEAR), E(GL_EYE_LINEAR), E(GL_SPHERE_MAP), E(GL_NORMAL_MAP), E(GL_REFLECTION_MAP),
+    E(GL_TEXTURE_GEN_S), E(GL_TEXTURE_GEN_T), E(GL_TEXTURE_GEN_Q),
     E(GL_ENABLE_BIT), E(GL_EVAL_BIT), E(GL_CURRENT_BIT), E(GL_LIGHTING_BIT), E(GL_TEXTURE_BIT),
     E(GL_ALL_ATTRIB_BITS), E(GL_CULL_FACE), E(GL_DEPTH_TEST), E(GL_BLEND), E(GL_FOG),
     E(GL_COMPILE), E(GL_COMPILE_AND_EXECUTE), E(GL_LIST_BASE), E(GL_LIST_INDEX), E(GL_LIST_MODE),
@@ -467,6 +470,26 @@ static void run_call(const char *c)
     } else if (!strcmp(c, "fogi")) {
         GLenum pname = arg_enum();
         glFogi(pname, (GLint)arg_enum());
+    } else if (!strcmp(c, "translatef") || !strcmp(c, "scalef")) {
+        GLfloat x = arg_float(), y = arg_float(), z = arg_float();
+        if (c[0] == 't') glTranslatef(x, y, z); else glScalef(x, y, z);
+    } else if (!strcmp(c, "rotatef")) {
+        GLfloat angle = arg_float(), x = arg_float(), y = arg_float(), z = arg_float();
+        glRotatef(angle, x, y, z);
+    } else if (!strcmp(c, "tex_geni")) {
+        GLenum coord = arg_enum(), pname = arg_enum();
+        glTexGeni(coord, pname, (GLint)arg_enum());
+    } else if (!strcmp(c, "tex_genfv")) {
+        GLenum coord = arg_enum(), pname = arg_enum();
+        long given;
+        float *f = arg_array(0, 0, &given);
+        glTexGenfv(coord, pname, f);
+        free(f);
+    } else if (!strcmp(c, "get_tex_genfv")) {
+        GLenum coord = arg_enum(), pname = arg_enum();
+        GLfloat fv[4] = { 0 };
+        glGetTexGenfv(coord, pname, fv);
+        for (int i = 0; i < (pname == GL_TEXTURE_GEN_MODE ? 1 : 4); i++) val(" %.9g", fv[i]);
     } else if (!strcmp(c, "fogf")) {
         GLenum pname = arg_enum();
         glFogf(pname, arg_float());
