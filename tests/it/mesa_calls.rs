@@ -76,6 +76,24 @@ fn enum_value(token: &str) -> u32 {
         ("GL_EXP", GL_EXP),
         ("GL_EXP2", GL_EXP2),
         ("GL_ALPHA_TEST", GL_ALPHA_TEST),
+        ("GL_CURRENT_RASTER_POSITION", GL_CURRENT_RASTER_POSITION),
+        ("GL_CURRENT_RASTER_POSITION_VALID", GL_CURRENT_RASTER_POSITION_VALID),
+        ("GL_CURRENT_RASTER_COLOR", GL_CURRENT_RASTER_COLOR),
+        ("GL_CURRENT_RASTER_TEXTURE_COORDS", GL_CURRENT_RASTER_TEXTURE_COORDS),
+        ("GL_CURRENT_RASTER_DISTANCE", GL_CURRENT_RASTER_DISTANCE),
+        ("GL_COLOR_INDEX", GL_COLOR_INDEX),
+        ("GL_STENCIL_INDEX", GL_STENCIL_INDEX),
+        ("GL_DEPTH_COMPONENT", GL_DEPTH_COMPONENT),
+        ("GL_RED", GL_RED),
+        ("GL_GREEN", GL_GREEN),
+        ("GL_BLUE", GL_BLUE),
+        ("GL_BGR", GL_BGR),
+        ("GL_BGRA", GL_BGRA),
+        ("GL_BITMAP", GL_BITMAP),
+        ("GL_UNSIGNED_SHORT_5_6_5", GL_UNSIGNED_SHORT_5_6_5),
+        ("GL_UNSIGNED_SHORT_4_4_4_4", GL_UNSIGNED_SHORT_4_4_4_4),
+        ("GL_UNSIGNED_BYTE_3_3_2", GL_UNSIGNED_BYTE_3_3_2),
+        ("GL_UNSIGNED_INT_8_8_8_8_REV", GL_UNSIGNED_INT_8_8_8_8_REV),
         ("GL_S", GL_S),
         ("GL_T", GL_T),
         ("GL_R", GL_R),
@@ -258,6 +276,8 @@ impl Runner {
         }
         let mut a = Args { tokens, at: 1 };
         let mut values: Vec<String> = Vec::new();
+        // The feedback token a glBitmap or glDrawPixels writes if it succeeds.
+        let mut raster_token = None;
         let gl = &mut self.gl;
         match cmd {
             "map1f" => {
@@ -364,6 +384,26 @@ impl Runner {
             "translatef" => gl.translatef(a.f(), a.f(), a.f()),
             "scalef" => gl.scalef(a.f(), a.f(), a.f()),
             "rotatef" => gl.rotatef(a.f(), a.f(), a.f(), a.f()),
+            "raster_pos2f" => gl.raster_pos2f(a.f(), a.f()),
+            "raster_pos3f" => gl.raster_pos3f(a.f(), a.f(), a.f()),
+            "raster_pos4f" => gl.raster_pos4f(a.f(), a.f(), a.f(), a.f()),
+            "bitmap" => {
+                let (w, h, xo, yo, xm, ym) = (a.int(), a.int(), a.f(), a.f(), a.f(), a.f());
+                let bytes: Vec<u8> = a.floats().iter().map(|&b| b as u8).collect();
+                raster_token = raster_feedback(gl, "bitmap");
+                gl.bitmap(w, h, xo, yo, xm, ym, &bytes);
+            }
+            "draw_pixels" => {
+                let (w, h, format, type_) = (a.int(), a.int(), a.e(), a.e());
+                let values = a.floats();
+                let bytes: Vec<u8> = if type_ == GL_FLOAT {
+                    bytemuck::cast_slice(&values).to_vec()
+                } else {
+                    values.iter().map(|&b| b as u8).collect()
+                };
+                raster_token = raster_feedback(gl, "draw_pixel");
+                gl.draw_pixels(w, h, format, type_, &bytes);
+            }
             "tex_geni" => gl.tex_geni(a.e(), a.e(), a.e() as i32),
             "tex_genfv" => gl.tex_genfv(a.e(), a.e(), &a.floats()),
             "get_tex_genfv" => {
@@ -394,7 +434,13 @@ impl Runner {
             line.push(' ');
             line.push_str(&v);
         }
+        let succeeded = err == "0x0000";
         self.out.push(line);
+        if let (Some(token), true) = (raster_token, succeeded) {
+            // Feedback mode reports the raster position instead of the pixels drawn.
+            self.out.push(token);
+            self.collected = self.gl.frame().expanded().primitives.len();
+        }
         if cmd == "new_list" || cmd == "end_list" {
             // Mesa buffers what GL_COMPILE_AND_EXECUTE draws until the list ends (its vertex
             // lists run when complete), so feedback shows it after `end_list`.
@@ -454,6 +500,23 @@ impl Runner {
     }
 }
 
+/// What feedback mode writes for a glBitmap or glDrawPixels at the current raster position
+/// (window coordinates, clip w, the raster colour and texture coordinates), if it is valid.
+fn raster_feedback(gl: &mut Gl, token: &str) -> Option<String> {
+    let mut valid = [0];
+    gl.get_integerv(GL_CURRENT_RASTER_POSITION_VALID, &mut valid);
+    if valid[0] == 0 {
+        return None;
+    }
+    let mut values = Vec::new();
+    for pname in [GL_CURRENT_RASTER_POSITION, GL_CURRENT_RASTER_COLOR, GL_CURRENT_RASTER_TEXTURE_COORDS] {
+        let mut v = [0.0f32; 4];
+        gl.get_floatv(pname, &mut v);
+        values.extend(v.map(|x| x.to_string()));
+    }
+    Some(format!("fb {token} {}", values.join(" ")))
+}
+
 fn fresh_gl() -> Gl {
     let mut gl = Gl::new(64, 64);
     gl.viewport(0, 0, 2, 2);
@@ -498,7 +561,8 @@ fn get_map(gl: &mut Gl, cmd: &str, target: u32, query: u32) -> Vec<String> {
 fn get_state(gl: &mut Gl, cmd: &str, pname: u32) -> Vec<String> {
     let count = match pname {
         GL_MAP1_GRID_DOMAIN | GL_MAP2_GRID_SEGMENTS => 2,
-        GL_MAP2_GRID_DOMAIN => 4,
+        GL_MAP2_GRID_DOMAIN | GL_CURRENT_RASTER_POSITION | GL_CURRENT_RASTER_COLOR => 4,
+        GL_CURRENT_RASTER_TEXTURE_COORDS => 4,
         _ => 1,
     };
     if cmd == "get_integerv" {

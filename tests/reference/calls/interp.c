@@ -37,6 +37,11 @@ static const struct enum_name enums[] = {
     E(GL_SRC_ALPHA), E(GL_ONE_MINUS_SRC_ALPHA), E(GL_ONE), E(GL_ZERO), E(GL_SRC_ALPHA_SATURATE),
     E(GL_GREATER), E(GL_ALWAYS), E(GL_NEVER), E(GL_FOG_MODE), E(GL_FOG_DENSITY), E(GL_FOG_START),
     E(GL_FOG_END), E(GL_EXP), E(GL_EXP2), E(GL_ALPHA_TEST),
+    E(GL_CURRENT_RASTER_POSITION), E(GL_CURRENT_RASTER_POSITION_VALID), E(GL_CURRENT_RASTER_COLOR),
+    E(GL_CURRENT_RASTER_TEXTURE_COORDS), E(GL_CURRENT_RASTER_DISTANCE), E(GL_COLOR_INDEX), E(GL_STENCIL_INDEX),
+    E(GL_DEPTH_COMPONENT), E(GL_RED), E(GL_GREEN), E(GL_BLUE), E(GL_BGR), E(GL_BGRA), E(GL_BITMAP),
+    E(GL_UNSIGNED_SHORT_5_6_5), E(GL_UNSIGNED_SHORT_4_4_4_4), E(GL_UNSIGNED_BYTE_3_3_2),
+    E(GL_UNSIGNED_INT_8_8_8_8_REV), E(GL_UNPACK_LSB_FIRST),
     E(GL_S), E(GL_T), E(GL_R), E(GL_Q), E(GL_TEXTURE_GEN_MODE), E(GL_OBJECT_PLANE), E(GL_EYE_PLANE),
     E(GL_OBJECT_LINEAR), E(GL_EYE_LINEAR), E(GL_SPHERE_MAP), E(GL_NORMAL_MAP), E(GL_REFLECTION_MAP),
     E(GL_TEXTURE_GEN_S), E(GL_TEXTURE_GEN_T), E(GL_TEXTURE_GEN_Q),
@@ -282,6 +287,8 @@ static int get_count(GLenum pname)
     case GL_MAP1_GRID_DOMAIN: return 2;
     case GL_MAP2_GRID_DOMAIN: return 4;
     case GL_MAP2_GRID_SEGMENTS: return 2;
+    case GL_CURRENT_RASTER_POSITION: case GL_CURRENT_RASTER_COLOR:
+    case GL_CURRENT_RASTER_TEXTURE_COORDS: return 4;
     default: return 1;
     }
 }
@@ -476,6 +483,29 @@ static void run_call(const char *c)
     } else if (!strcmp(c, "rotatef")) {
         GLfloat angle = arg_float(), x = arg_float(), y = arg_float(), z = arg_float();
         glRotatef(angle, x, y, z);
+    } else if (!strncmp(c, "raster_pos", 10) && strlen(c) == 12 && c[11] == 'f') {
+        GLfloat v[4] = { 0, 0, 0, 1 };
+        int n = c[10] - '0';
+        for (int i = 0; i < n; i++) v[i] = arg_float();
+        if (n == 2) glRasterPos2f(v[0], v[1]);
+        else if (n == 3) glRasterPos3f(v[0], v[1], v[2]);
+        else glRasterPos4f(v[0], v[1], v[2], v[3]);
+    } else if (!strcmp(c, "bitmap")) {
+        GLsizei w = arg_int(), h = arg_int();
+        GLfloat xo = arg_float(), yo = arg_float(), xm = arg_float(), ym = arg_float();
+        float *f = arg_array(0, 0, &given);
+        GLubyte bytes[MAX_TOK];
+        for (long i = 0; i < given; i++) bytes[i] = (GLubyte)f[i];
+        glBitmap(w, h, xo, yo, xm, ym, f ? bytes : NULL);
+        free(f);
+    } else if (!strcmp(c, "draw_pixels")) {
+        GLsizei w = arg_int(), h = arg_int();
+        GLenum format = arg_enum(), type = arg_enum();
+        float *f = arg_array(0, 0, &given);
+        GLubyte bytes[MAX_TOK];
+        for (long i = 0; i < given; i++) bytes[i] = (GLubyte)f[i];
+        glDrawPixels(w, h, format, type, f ? (type == GL_FLOAT ? (const GLvoid *)f : (const GLvoid *)bytes) : NULL);
+        free(f);
     } else if (!strcmp(c, "tex_geni")) {
         GLenum coord = arg_enum(), pname = arg_enum();
         glTexGeni(coord, pname, (GLint)arg_enum());
