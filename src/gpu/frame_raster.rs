@@ -50,6 +50,11 @@ impl FrameRaster {
         self.textures.bind_groups(device, queue, &self.texture_layout, &list.fragments)
     }
 
+    /// The layout of the texture bind groups (the mesh rasteriser's group 1 too).
+    pub(crate) fn texture_layout(&self) -> &wgpu::BindGroupLayout {
+        &self.texture_layout
+    }
+
     /// Makes sure the pipeline for `key` exists (before a render pass borrows them all).
     pub(crate) fn ensure_pipeline(&mut self, device: &wgpu::Device, key: PipelineKey) {
         let (module, layout) = (&self.module, &self.layout);
@@ -91,7 +96,7 @@ fn make_pipeline(
 }
 
 /// GL's `glBlendFunc` factors (for colour and alpha alike) as a wgpu blend state, adding.
-fn blend_state([source, destination]: [GLenum; 2]) -> wgpu::BlendState {
+pub(crate) fn blend_state([source, destination]: [GLenum; 2]) -> wgpu::BlendState {
     let component = wgpu::BlendComponent {
         src_factor: blend_factor(source),
         dst_factor: blend_factor(destination),

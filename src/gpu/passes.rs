@@ -6,7 +6,11 @@ use crate::render::assemble::{Batch, Op};
 /// What a render pass draws: a batch of assembled vertices or a GPU-tessellated mesh.
 pub(crate) enum PassItem {
     Batch(Batch),
-    Mesh(usize),
+    /// Mesh `mesh` of the frame, with its fragment state's index (see `Batch::fragment`).
+    Mesh {
+        mesh: usize,
+        fragment: Option<u32>,
+    },
 }
 
 /// Draws between two clears share one render pass.
@@ -34,7 +38,9 @@ pub(crate) fn split_passes(ops: &[Op], keep: bool) -> Vec<Pass> {
                 }
             }
             Op::Draw(batch) => passes.last_mut().expect("at least one pass").draws.push(PassItem::Batch(batch)),
-            Op::GpuMesh(index) => passes.last_mut().expect("at least one pass").draws.push(PassItem::Mesh(index)),
+            Op::GpuMesh { mesh, fragment } => {
+                passes.last_mut().expect("at least one pass").draws.push(PassItem::Mesh { mesh, fragment })
+            }
         }
     }
     passes

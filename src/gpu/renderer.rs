@@ -139,7 +139,9 @@ impl Renderer {
         let list = assemble_frame(frame, &on_gpu);
         let prepared = (!on_gpu.is_empty()).then(|| {
             let provoking_last = self.provoking_vertex_is_last();
-            let meshes = self.meshes.get_or_insert_with(|| MeshRaster::new(&self.device, provoking_last));
+            let texture_layout = self.frames.texture_layout();
+            let meshes =
+                self.meshes.get_or_insert_with(|| MeshRaster::new(&self.device, texture_layout, provoking_last));
             let prepared = meshes.prepare(&self.device, &self.queue, encoder, frame, &on_gpu, size);
             meshes.ensure_pipelines(&self.device, frame, &prepared, target.format);
             prepared
@@ -188,21 +190,25 @@ impl Renderer {
                 let Some(scissor) = scissor_rect(batch.viewport, target.size) else { return };
                 rp.set_scissor_rect(scissor[0], scissor[1], scissor[2], scissor[3]);
                 rp.set_pipeline(self.frames.pipeline(pipeline_key(batch, target)));
-                // The last bind group is the one without fragment operations.
-                let group = batch.fragment.map_or(bind_groups.len() - 1, |f| f as usize);
-                rp.set_bind_group(0, &bind_groups[group], &[]);
+                rp.set_bind_group(0, fragment_group(bind_groups, batch.fragment), &[]);
                 rp.set_vertex_buffer(0, buffer.slice(..));
                 rp.draw(batch.first..batch.first + batch.count, 0..1);
             }
-            PassItem::Mesh(index) => {
+            PassItem::Mesh { mesh, fragment } => {
                 let (Some(prepared), Some(meshes)) = (prepared, &self.meshes) else { return };
-                let Some(viewport) = prepared.viewport(frame, *index) else { return };
+                let Some(viewport) = prepared.viewport(frame, *mesh) else { return };
                 let Some(scissor) = scissor_rect(viewport, target.size) else { return };
                 rp.set_scissor_rect(scissor[0], scissor[1], scissor[2], scissor[3]);
-                meshes.draw(rp, frame, prepared, *index, target.format);
+                let fragment = fragment_group(bind_groups, *fragment);
+                meshes.draw(rp, frame, prepared, (*mesh, fragment), target.format);
             }
         }
     }
+}
+
+/// The bind group of a fragment state; the last one is the one without fragment operations.
+fn fragment_group(bind_groups: &[wgpu::BindGroup], fragment: Option<u32>) -> &wgpu::BindGroup {
+    &bind_groups[fragment.map_or(bind_groups.len() - 1, |f| f as usize)]
 }
 
 /// The frame rasteriser's pipeline for a batch drawn into `target`.

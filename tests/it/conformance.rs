@@ -4,7 +4,7 @@
 //! metric of `gleval::testing::compare`.
 
 use gleval::app::App;
-use gleval::gl::{MeshVertices, Tessellator};
+use gleval::gl::{DrawState, MeshVertices, Tessellator};
 use gleval::testing::compare::{assert_matches, compare, RgbImage};
 use std::path::Path;
 
@@ -269,5 +269,32 @@ fn programs_without_a_reference_draw_the_same_on_the_gpu() {
         let between = compare(&cpu, &gpu).expect("same size").fraction;
         println!("{name}: GPU vs CPU {:.3}% ({} meshes on the GPU)", between * 100.0, gpu_meshes(app));
         assert!(between <= GPU_VS_CPU, "{name}: GPU and CPU tessellators differ in {:.3}% of pixels", between * 100.0);
+    }
+}
+
+/// The GPU tessellator evaluates and draws textured (every env mode, mipmaps), fogged, blended
+/// and listed meshes itself: none of them falls back to the CPU (the pictures above then show
+/// they match the CPU path and Mesa).
+#[test]
+fn fragment_operations_and_lists_stay_on_the_gpu_tessellator() {
+    for (name, app) in [
+        ("texsurf", texsurf::app as fn() -> App),
+        ("mipnurbs", mipnurbs::app),
+        ("fogblend", fogblend::app),
+        ("lists", lists::app),
+        ("texteapot", texteapot::app),
+    ] {
+        let mut gl = app().with_tessellator(Tessellator::Gpu).record_frame();
+        let frame = gl.frame();
+        // Wide lines and points are the CPU assembler's; every other mesh is the GPU's.
+        let fragment_ops = |s: &DrawState| s.texture.is_some() || s.fog.is_some() || s.blend.is_some();
+        let wide = |s: &DrawState| s.line_width.round() > 1.0 || s.point_size.round() > 1.0;
+        let meshes: Vec<_> = frame.meshes.iter().filter(|m| !wide(&frame.states[m.state])).collect();
+        let listed = name == "lists";
+        assert!(listed || meshes.iter().any(|m| fragment_ops(&frame.states[m.state])), "{name} has a textured mesh");
+        assert!(!meshes.is_empty(), "{name} draws meshes");
+        for mesh in meshes {
+            assert!(matches!(mesh.vertices, MeshVertices::Deferred(_)), "{name}: a mesh left to the CPU");
+        }
     }
 }

@@ -202,10 +202,10 @@ impl Gl {
     /// filled polygons (both faces `GL_FILL`), one-pixel lines and one-pixel points. GL's wide
     /// lines, large points and polygon-mode edges are built on the CPU, so such meshes are too.
     pub(crate) fn gpu_draws(&self, mode: MeshMode) -> bool {
-        // Textures, blending, fog and the alpha test are the frame rasteriser's, which draws
-        // the CPU's vertices.
-        let fragment_ops = [GL_TEXTURE_2D, GL_TEXTURE_1D, GL_BLEND, GL_FOG, GL_ALPHA_TEST];
-        if fragment_ops.iter().any(|&cap| self.capability(cap)) {
+        // Generated texture coordinates are computed with the CPU's vertex stage.
+        let texturing = self.capability(GL_TEXTURE_2D) || self.capability(GL_TEXTURE_1D);
+        let generating = [GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q];
+        if texturing && generating.iter().any(|&cap| self.capability(cap)) {
             return false;
         }
         let r = &self.raster;
