@@ -51,8 +51,12 @@ mod outline;
 mod rational;
 #[path = "rationalmap.rs"]
 mod rationalmap;
+#[path = "shapes.rs"]
+mod shapes;
 #[path = "specular.rs"]
 mod specular;
+#[path = "strokes.rs"]
+mod strokes;
 #[path = "teapot.rs"]
 mod teapot;
 #[path = "texsurf.rs"]
@@ -65,7 +69,7 @@ mod trimmed;
 /// A built-in program: its name and how to build it.
 type Program = (&'static str, fn() -> App);
 
-const PROGRAMS: [Program; 26] = [
+const PROGRAMS: [Program; 28] = [
     ("bezcurve", bezcurve::app),
     ("bezsurf", bezsurf::app),
     ("bcurve", bcurve::app),
@@ -91,6 +95,8 @@ const PROGRAMS: [Program; 26] = [
     ("fogblend", fogblend::app),
     ("texteapot", texteapot::app),
     ("labels", labels::app),
+    ("shapes", shapes::app),
+    ("strokes", strokes::app),
     ("operations", operations::app),
 ];
 

@@ -14,6 +14,7 @@ pub mod fonts;
 #[cfg(all(feature = "gpu", feature = "png"))]
 mod schedule;
 pub(crate) mod state;
+mod shapes;
 mod teapot;
 
 #[cfg(all(feature = "gpu", feature = "png"))]
