@@ -13,8 +13,8 @@ pub mod fonts;
 // The main loop's scheduling belongs to the runner, `App`.
 #[cfg(all(feature = "gpu", feature = "png"))]
 mod schedule;
-pub(crate) mod state;
 mod shapes;
+pub(crate) mod state;
 mod teapot;
 
 #[cfg(all(feature = "gpu", feature = "png"))]

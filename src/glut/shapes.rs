@@ -3,8 +3,7 @@
 //! the round solids and triangles for the cube; line strips, lines and line loops for the
 //! wires), so the same winding and the same pixels. freeglut hands the GL client arrays and
 //! `glDrawElements`; these send the same vertices through `glBegin`/`glEnd`, and, as drawing from
-//! arrays leaves the current normal alone in Mesa, put the current normal back afterwards
-//! (inside `glNewList` the normal put back is the one current when the list is compiled).
+//! arrays leaves the current normal alone in Mesa, put the current normal back afterwards.
 //!
 //! Checked against real freeglut: `tests/reference/pictures/glut_shapes.h` draws what these
 //! draw, and was compared with freeglut 3.4 pixel for pixel (its header says how).
@@ -137,7 +136,7 @@ impl Gl {
         if slices < 1 || stacks < 2 {
             return;
         }
-        self.keeping_normal(|gl| {
+        self.drawing_shape(|gl| {
             for i in 0..stacks {
                 let band = (0..=slices).flat_map(|j| [sphere.point(i + 1, j % slices), sphere.point(i, j % slices)]);
                 gl.shape_primitive(GL_TRIANGLE_STRIP, band);
@@ -152,7 +151,7 @@ impl Gl {
         if slices < 1 || stacks < 2 {
             return;
         }
-        self.keeping_normal(|gl| {
+        self.drawing_shape(|gl| {
             for j in 0..slices {
                 gl.shape_primitive(GL_LINE_STRIP, (0..=stacks).map(|i| sphere.point(i, j)));
             }
@@ -170,7 +169,7 @@ impl Gl {
         }
         let cone = Cone::new(base as f32, height as f32, slices, stacks);
         let centre = ([0.0, 0.0, -1.0], [0.0; 3]);
-        self.keeping_normal(|gl| {
+        self.drawing_shape(|gl| {
             gl.shape_primitive(GL_TRIANGLE_STRIP, (0..=slices).flat_map(|j| [centre, cone.rim(j % slices)]));
             for i in 0..stacks {
                 let band = (0..=slices).flat_map(|j| [cone.side(i, j % slices), cone.side(i + 1, j % slices)]);
@@ -186,7 +185,7 @@ impl Gl {
             return;
         }
         let cone = Cone::new(base as f32, height as f32, slices, stacks);
-        self.keeping_normal(|gl| {
+        self.drawing_shape(|gl| {
             gl.shape_primitive(GL_LINES, (0..slices).flat_map(|j| [cone.side(0, j), cone.side(stacks, j)]));
             for i in 0..stacks {
                 gl.shape_primitive(GL_LINE_LOOP, (0..slices).map(|j| cone.side(i, j)));
@@ -201,7 +200,7 @@ impl Gl {
         if sides < 2 || rings < 2 {
             return;
         }
-        self.keeping_normal(|gl| {
+        self.drawing_shape(|gl| {
             for i in 0..sides {
                 let strip =
                     (0..=rings).flat_map(|j| [torus.point(j % rings, i), torus.point(j % rings, (i + 1) % sides)]);
@@ -217,7 +216,7 @@ impl Gl {
         if sides < 2 || rings < 2 {
             return;
         }
-        self.keeping_normal(|gl| {
+        self.drawing_shape(|gl| {
             for j in 0..rings {
                 gl.shape_primitive(GL_LINE_LOOP, (0..sides).map(|i| torus.point(j, i)));
             }
@@ -232,13 +231,13 @@ impl Gl {
     pub fn glut_solid_cube(&mut self, size: GLdouble) {
         let size = size as f32;
         let triangles = CUBE_FACES.iter().flat_map(|face| [0, 1, 2, 0, 2, 3].map(|k| cube_corner(face, k, size)));
-        self.keeping_normal(|gl| gl.shape_primitive(GL_TRIANGLES, triangles));
+        self.drawing_shape(|gl| gl.shape_primitive(GL_TRIANGLES, triangles));
     }
 
     /// `glutWireCube(size)`: a line loop a face.
     pub fn glut_wire_cube(&mut self, size: GLdouble) {
         let size = size as f32;
-        self.keeping_normal(|gl| {
+        self.drawing_shape(|gl| {
             for face in &CUBE_FACES {
                 gl.shape_primitive(GL_LINE_LOOP, (0..4).map(|k| cube_corner(face, k, size)));
             }
@@ -255,11 +254,26 @@ impl Gl {
         self.end();
     }
 
-    /// Runs `draw` and puts back the normal that was current before it.
-    fn keeping_normal(&mut self, draw: impl FnOnce(&mut Gl)) {
-        let [x, y, z] = self.current.normal;
-        draw(self);
-        self.normal3f(x, y, z);
+    /// Runs `draw` as freeglut's array drawing behaves in Mesa: inside `glBegin`/`glEnd` it is
+    /// `GL_INVALID_OPERATION` and draws nothing (as `glDrawElements` there), and afterwards the
+    /// current normal is the one before (arrays do not set it). In a display list being compiled
+    /// that is the normal current when the list is called, kept by `glPushAttrib(GL_CURRENT_BIT)`,
+    /// which saves nothing else the shapes change. (All checked with freeglut 3.4 on Mesa.)
+    fn drawing_shape(&mut self, draw: impl FnOnce(&mut Gl)) {
+        if self.inside_begin_end() {
+            return self.set_error(GL_INVALID_OPERATION);
+        }
+        let mut list = [0];
+        self.get_integerv(GL_LIST_INDEX, &mut list);
+        if list[0] != 0 {
+            self.push_attrib(GL_CURRENT_BIT);
+            draw(self);
+            self.pop_attrib();
+        } else {
+            let [x, y, z] = self.current.normal;
+            draw(self);
+            self.normal3f(x, y, z);
+        }
     }
 }
 
@@ -335,6 +349,31 @@ mod tests {
             let from_axis = (p[0] * p[0] + p[1] * p[1]).sqrt() - 2.0;
             assert!((from_axis * from_axis + p[2] * p[2] - 0.25).abs() < 1e-5);
         }
+    }
+
+    #[test]
+    fn inside_begin_end_a_shape_is_an_error_and_draws_nothing() {
+        let mut gl = Gl::new(10, 10);
+        gl.begin(GL_LINES);
+        gl.glut_wire_cube(1.0);
+        gl.end();
+        assert_eq!(gl.get_error(), GL_INVALID_OPERATION);
+        let primitives: Vec<_> = gl.frame().primitives.iter().map(|p| (p.mode, p.count)).collect();
+        assert_eq!(primitives, [(GL_LINES, 0)], "only the program's own primitive, empty");
+    }
+
+    #[test]
+    fn a_shape_in_a_list_keeps_the_normal_current_when_the_list_is_called() {
+        let mut gl = Gl::new(10, 10);
+        let list = gl.gen_lists(1);
+        gl.new_list(list, GL_COMPILE);
+        gl.glut_solid_cube(1.0);
+        gl.end_list();
+        gl.normal3f(0.0, 0.0, 0.25);
+        gl.call_list(list);
+        assert_eq!(gl.current.normal, [0.0, 0.0, 0.25]);
+        assert_eq!(gl.frame().vertices.len(), 36);
+        assert_eq!(gl.get_error(), GL_NO_ERROR);
     }
 
     #[test]
