@@ -51,8 +51,12 @@ mod outline;
 mod rational;
 #[path = "rationalmap.rs"]
 mod rationalmap;
+#[path = "shapes.rs"]
+mod shapes;
 #[path = "specular.rs"]
 mod specular;
+#[path = "strokes.rs"]
+mod strokes;
 #[path = "teapot.rs"]
 mod teapot;
 #[path = "texgen.rs"]
@@ -67,7 +71,7 @@ mod trimmed;
 /// A built-in program: its name and how to build it.
 type Program = (&'static str, fn() -> App);
 
-const PROGRAMS: [Program; 27] = [
+const PROGRAMS: [Program; 29] = [
     ("bezcurve", bezcurve::app),
     ("bezsurf", bezsurf::app),
     ("bcurve", bcurve::app),
@@ -94,6 +98,8 @@ const PROGRAMS: [Program; 27] = [
     ("texteapot", texteapot::app),
     ("texgen", texgen::app),
     ("labels", labels::app),
+    ("shapes", shapes::app),
+    ("strokes", strokes::app),
     ("operations", operations::app),
 ];
 

@@ -10,4 +10,4 @@ pub use crate::gll;
 pub use crate::glu::consts::*;
 pub use crate::glu::{glu_error_string, GLUnurbs, NurbsCallback};
 pub use crate::glut::consts::*;
-pub use crate::glut::fonts::{GlutBitmapFont, GlutCharacter};
+pub use crate::glut::fonts::{GlutBitmapFont, GlutCharacter, GlutStrokeFont};

@@ -16,6 +16,7 @@ pub(crate) mod popup;
 // The main loop's scheduling belongs to the runner, `App`.
 #[cfg(all(feature = "gpu", feature = "png"))]
 mod schedule;
+mod shapes;
 pub(crate) mod state;
 mod teapot;
 

@@ -48,8 +48,12 @@ mod outline;
 mod rational;
 #[path = "../../examples/rationalmap.rs"]
 mod rationalmap;
+#[path = "../../examples/shapes.rs"]
+mod shapes;
 #[path = "../../examples/specular.rs"]
 mod specular;
+#[path = "../../examples/strokes.rs"]
+mod strokes;
 #[path = "../../examples/teapot.rs"]
 mod teapot;
 #[path = "../../examples/texgen.rs"]
@@ -258,6 +262,19 @@ fn glut_teapots_match_mesa() {
 #[test]
 fn texgen_matches_mesa() {
     check("texgen", texgen::app, 0.0);
+}
+
+/// GLUT's sphere, cube, cone and torus, solid (lit, back faces culled) and wire (`Shapes.c`):
+/// the stand-in's shapes were checked against real freeglut (`glut_shapes.h`).
+#[test]
+fn glut_shapes_match_mesa() {
+    check("shapes", shapes::app, 0.0);
+}
+
+/// GLUT's stroke fonts, scaled, turned, centred and on two lines (`Strokes.c`).
+#[test]
+fn glut_stroke_fonts_match_mesa() {
+    check("strokes", strokes::app, 0.0);
 }
 
 /// Programs with no C original: the GPU tessellator must still draw what the CPU draws.
