@@ -405,8 +405,13 @@ impl App {
     /// `glutMainLoop`: `--png PATH` renders one frame to PNG and returns; otherwise a window.
     /// `--gpu` selects the GPU tessellator. Errors are printed and the process exits with
     /// status 1, as a C program would fail.
-    pub fn run(mut self) {
-        let options = Options::from_args(std::env::args().skip(1));
+    pub fn run(self) {
+        self.run_with(Options::from_args(std::env::args().skip(1)));
+    }
+
+    /// [`App::run`] with options parsed elsewhere (C's `glutInit` takes them out of the
+    /// program's `argv`, which then no longer holds them).
+    pub fn run_with(mut self, options: Options) {
         if options.gpu {
             self.tessellator = Tessellator::Gpu;
         }

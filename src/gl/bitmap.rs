@@ -204,7 +204,9 @@ impl Gl {
         let w = width as usize;
         let pixels = bits.iter().enumerate().filter(|(_, &set)| set).map(|(k, _)| {
             let (i, j) = ((k % w) as i32, (k / w) as i32);
-            [x0 + i, y0 + j]
+            // A raster position or origin far outside the window (1e30, ∞) saturates x0, y0:
+            // such pixels lie off the window either way.
+            [x0.saturating_add(i), y0.saturating_add(j)]
         });
         let color = self.raster_pos.color.map(|c| c.clamp(0.0, 1.0));
         let fragments: Vec<_> = pixels.map(|p| (p, color)).collect();
@@ -258,7 +260,9 @@ impl Gl {
         let fragments: Vec<_> = rgba
             .iter()
             .enumerate()
-            .map(|(k, c)| ([x0 + (k % w) as i32, y0 + (k / w) as i32], c.map(|v| v.clamp(0.0, 1.0))))
+            .map(|(k, c)| {
+                ([x0.saturating_add((k % w) as i32), y0.saturating_add((k / w) as i32)], c.map(|v| v.clamp(0.0, 1.0)))
+            })
             .collect();
         self.record_fragments(z, &fragments);
     }

@@ -7,6 +7,7 @@
 //! bounds. Nothing here panics on bad input.
 
 mod attrib;
+mod binding;
 mod bitmap;
 pub mod consts;
 mod enable;

@@ -94,6 +94,11 @@ impl Gl {
         if !self.reserve_vertices(issued) {
             return;
         }
+        if nu == 0 || nv == 0 {
+            // GL issues only empty strips (j2 < j1 with a huge i range, say): nothing is drawn,
+            // and a mesh of 2³⁰ empty columns would cost gigabytes to assemble.
+            return;
+        }
         let (gu, gv) = self.eval.grid2;
         let us = grid_params(&gu, i1, i2);
         let vs = grid_params(&gv, j1, j2);

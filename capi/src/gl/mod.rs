@@ -1,0 +1,11 @@
+//! `GL/gl.h`: the GL 1.x entry points `Gl` implements, one file per area.
+
+mod eval;
+mod fragment;
+mod immediate;
+mod lighting;
+mod lists;
+mod matrix;
+mod pixels;
+mod state;
+mod texture;
