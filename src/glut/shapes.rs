@@ -334,9 +334,9 @@ mod tests {
         assert_eq!(v.len(), 12 + 3 * 6);
         assert_eq!(v[0], [1.0, 0.0, 0.0]);
         assert!(v[1][0].abs() < 1e-6 && (v[1][2] - 2.0).abs() < 1e-6, "apex {:?}", v[1]);
-        // The side's normal is perpendicular to the side: (cos, sin) of the slope · (2, 1) = 0 ...
+        // The side's normal is perpendicular to the side, from the rim (1, 0, 0) to the apex (0, 0, 2).
         let n = gl.frame().vertices[0].normal;
-        assert!((n[0] * -1.0 + n[2] * 2.0).abs() < 1e-6, "normal {n:?}");
+        assert!((n[2] * 2.0 - n[0]).abs() < 1e-6, "normal {n:?}");
     }
 
     #[test]

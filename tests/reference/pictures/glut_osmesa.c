@@ -105,6 +105,22 @@ void glutStrokeCharacter(void *font, int character) {
     glTranslatef(g->advance, 0.0f, 0.0f);
 }
 
+/* freeglut's glutStrokeString: a newline goes back to the line's start and down by the height. */
+void glutStrokeString(void *font, const unsigned char *string) {
+    const GlutStrokeFont *f;
+    float line = 0.0f;
+    stroke_glyph(font, 0, &f);
+    for (; string && *string; string++) {
+        if (*string == '\n') {
+            glTranslatef(-line, -f->height, 0.0f);
+            line = 0.0f;
+        } else if (stroke_glyph(font, *string, &f)) {
+            glutStrokeCharacter(font, *string);
+            line += f->glyphs[*string].advance;
+        }
+    }
+}
+
 float glutStrokeWidthf(void *font, int character) {
     const GlutStrokeFont *f;
     const GlutStrokeGlyph *g = stroke_glyph(font, character, &f);

@@ -38,6 +38,7 @@ int glutBitmapLength(void *font, const unsigned char *string);
 #define GLUT_STROKE_ROMAN ((void *)0x0000)
 #define GLUT_STROKE_MONO_ROMAN ((void *)0x0001)
 void glutStrokeCharacter(void *font, int character);
+void glutStrokeString(void *font, const unsigned char *string);
 int glutStrokeWidth(void *font, int character);
 float glutStrokeWidthf(void *font, int character);
 int glutStrokeLength(void *font, const unsigned char *string);

@@ -10,7 +10,8 @@
  * Shapes.c built on <GL/glut.h> (a double-buffered window, the same Reshape and Display, the back
  * buffer read with glReadPixels) and on this stand-in: 0 of 204800 pixels differ; a second
  * program of odd arguments (3 slices and 2 stacks, a negative radius, size and height, a torus
- * of 2 sides, a one-slice wire cone, zero slices or stacks that draw nothing): 0 of 80000. */
+ * of 2 sides, a one-slice wire cone, zero slices or stacks that draw nothing): 0 of 80000.
+ * Both with tools/freeglut_check/check.sh [PROGRAM.c] (Shapes.c by default, OddShapes.c there). */
 
 #include <math.h>
 #include <stdlib.h>
