@@ -3,7 +3,8 @@
 // clip-space position, final colour, texture coordinates and fog coordinate. The fragment stage
 // does GL's per-fragment work in GL's order: unit 0's texture with GL's texture environment
 // (GL 1.1 spec §3.8.9, tables 3.17 and 3.18; ADD from GL 1.3), fog (§3.9), the alpha test
-// (§4.1.3); blending is the pipeline's blend state.
+// (§4.1.3); blending is the pipeline's blend state. Smooth points and lines multiply the
+// alpha by their coverage before the alpha test, as Mesa's llvmpipe does (src/render/smooth.rs).
 
 struct Fragment {
     // 0 no texture, 1 MODULATE, 2 DECAL, 3 BLEND, 4 REPLACE, 5 ADD.
@@ -26,7 +27,8 @@ struct Fragment {
     alpha_ref: f32,
     fog_start: f32,
     fog_end: f32,
-    pad0: f32,
+    // 0 none, 1 a smooth point's coverage, 2 a smooth line's.
+    coverage: u32,
     pad1: f32,
     fog_color: vec4<f32>,
 };
@@ -40,6 +42,7 @@ struct VertexOut {
     @location(0) color: vec4<f32>,
     @location(1) tex: vec4<f32>,
     @location(2) fog: f32,
+    @location(3) aa: vec4<f32>,
 };
 
 @vertex
@@ -48,12 +51,14 @@ fn vs_main(
     @location(1) color: vec4<f32>,
     @location(2) tex: vec4<f32>,
     @location(3) fog: f32,
+    @location(4) aa: vec4<f32>,
 ) -> VertexOut {
     var out: VertexOut;
     out.clip = clip;
     out.color = color;
     out.tex = tex;
     out.fog = fog;
+    out.aa = aa;
     return out;
 }
 
@@ -72,6 +77,15 @@ fn fs_main(in: VertexOut) -> @location(0) vec4<f32> {
     if env.fog_mode != 0u {
         color = vec4<f32>(mix(env.fog_color.rgb, color.rgb, fog_factor(in.fog)), color.a);
     }
+    if env.coverage == 1u {
+        let d = dot(in.aa.xy, in.aa.xy);
+        if d > in.aa.w {
+            discard;
+        }
+        color.a *= point_coverage(d, in.aa.z);
+    } else if env.coverage == 2u {
+        color.a *= saturate(in.aa.y - abs(in.aa.x)) * saturate(in.aa.w - abs(in.aa.z));
+    }
     if env.alpha_func != 0u && !alpha_passes(color.a) {
         discard;
     }
@@ -87,6 +101,13 @@ fn inside_border(coord: vec2<f32>) -> f32 {
     let s = select(1.0, inside.x, env.clamp_s == 2u);
     let t = select(1.0, inside.y, env.clamp_t == 2u);
     return s * t;
+}
+
+// A smooth point's coverage at d = u² + v² with k = 1/r: Mesa 22.3's NIR pass takes
+// (1 − d)/(1 − k) where k ≥ d and 1 elsewhere (k = 1 for r = 1: a huge factor, clamped with
+// the colour as Mesa's infinite one is).
+fn point_coverage(d: f32, k: f32) -> f32 {
+    return select(1.0, (1.0 - d) / max(1.0 - k, 1e-20), k >= d);
 }
 
 // GL's fog factor f (the fragment's share), clamped to [0, 1]: C = f·Cf + (1 − f)·Cfog.

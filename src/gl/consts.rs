@@ -85,6 +85,15 @@ pub const GL_TEXTURE_GEN_Q: GLenum = 0x0C63;
 pub const GL_TEXTURE_1D: GLenum = 0x0DE0;
 pub const GL_TEXTURE_2D: GLenum = 0x0DE1;
 pub const GL_POLYGON_OFFSET_FILL: GLenum = 0x8037;
+pub const GL_POLYGON_OFFSET_LINE: GLenum = 0x2A02;
+pub const GL_POLYGON_OFFSET_POINT: GLenum = 0x2A01;
+pub const GL_POLYGON_STIPPLE: GLenum = 0x0B42;
+pub const GL_CLIP_PLANE0: GLenum = 0x3000;
+pub const GL_CLIP_PLANE1: GLenum = 0x3001;
+pub const GL_CLIP_PLANE2: GLenum = 0x3002;
+pub const GL_CLIP_PLANE3: GLenum = 0x3003;
+pub const GL_CLIP_PLANE4: GLenum = 0x3004;
+pub const GL_CLIP_PLANE5: GLenum = 0x3005;
 pub const GL_RESCALE_NORMAL: GLenum = 0x803A;
 pub const GL_MULTISAMPLE: GLenum = 0x809D;
 pub const GL_LIGHT0: GLenum = 0x4000;
@@ -293,3 +302,10 @@ pub const GL_TRANSFORM_BIT: GLenum = 0x0000_1000;
 pub const GL_ENABLE_BIT: GLenum = 0x0000_2000;
 pub const GL_TEXTURE_BIT: GLenum = 0x0004_0000;
 pub const GL_ALL_ATTRIB_BITS: GLenum = 0xFFFF_FFFF;
+
+// Line stipple, polygon offset and clip-plane queries.
+pub const GL_LINE_STIPPLE_PATTERN: GLenum = 0x0B25;
+pub const GL_LINE_STIPPLE_REPEAT: GLenum = 0x0B26;
+pub const GL_POLYGON_OFFSET_FACTOR: GLenum = 0x8038;
+pub const GL_POLYGON_OFFSET_UNITS: GLenum = 0x2A00;
+pub const GL_MAX_CLIP_PLANES: GLenum = 0x0D32;

@@ -4,6 +4,7 @@
 
 use super::fragment::Fog;
 use super::lighting::Lighting;
+use super::offset::PolygonOffset;
 use super::texture::BoundTexture;
 use super::types::{GLbitfield, GLenum};
 use super::vertex::Vertex;
@@ -63,6 +64,16 @@ pub struct DrawState {
     pub alpha_test: Option<(GLenum, f32)>,
     /// Fog when `GL_FOG` is enabled.
     pub fog: Option<Fog>,
+    /// `glLineStipple`'s (factor, pattern) when `GL_LINE_STIPPLE` is enabled.
+    pub line_stipple: Option<(i32, u16)>,
+    /// `GL_POINT_SMOOTH` enabled.
+    pub point_smooth: bool,
+    /// `GL_LINE_SMOOTH` enabled.
+    pub line_smooth: bool,
+    /// `glPolygonOffset` when any of its enables is on.
+    pub polygon_offset: Option<PolygonOffset>,
+    /// The enabled clip planes in eye coordinates, in plane order.
+    pub clip_planes: Vec<[f32; 4]>,
 }
 
 /// Framebuffer operations and draws, in program order.

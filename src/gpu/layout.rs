@@ -169,7 +169,8 @@ pub(crate) struct GpuFragment {
     pub alpha_ref: f32,
     pub fog_start: f32,
     pub fog_end: f32,
-    pub pad0: f32,
+    /// 0 none, 1 a smooth point's coverage, 2 a smooth line's.
+    pub coverage: u32,
     pub pad1: f32,
     pub fog_color: [f32; 4],
 }
@@ -265,7 +266,7 @@ mod tests {
                 alpha_ref,
                 fog_start,
                 fog_end,
-                pad0,
+                coverage,
                 pad1,
                 fog_color
             }

@@ -7,7 +7,7 @@ use super::layout::GpuFragment;
 use crate::gl::consts::*;
 use crate::gl::types::GLenum;
 use crate::gl::{BoundTexture, TexParams};
-use crate::render::assemble::FragmentState;
+use crate::render::assemble::{FragmentState, Smooth};
 use std::collections::HashMap;
 use wgpu::util::DeviceExt;
 
@@ -28,6 +28,11 @@ impl GpuFragment {
         if let Some((func, reference)) = fragment.alpha_test {
             (out.alpha_func, out.alpha_ref) = (func - GL_NEVER + 1, reference);
         }
+        out.coverage = match fragment.smooth {
+            Smooth::None => 0,
+            Smooth::Point => 1,
+            Smooth::Line => 2,
+        };
         out
     }
 

@@ -7,7 +7,10 @@
 //! polygon edges (no interior diagonals of quads and polygons), and GL's aliased wide lines
 //! (widened along the minor axis) and square points, which wgpu does not have, as quads.
 
+use super::corner::Corner;
 use super::shade::{ShadedVertex, Shader};
+use super::stipple::Stipple;
+use super::{clip, offset, smooth};
 use crate::gl::consts::*;
 use crate::gl::types::GLenum;
 use crate::gl::{BoundTexture, Command, DrawState, Fog, Frame, MeshVertices, Vertex};
@@ -28,6 +31,21 @@ pub struct RasterVertex {
     pub tex: [f32; 4],
     /// The fog coordinate: eye-space distance.
     pub fog: f32,
+    /// A smooth point's or line's coverage coordinates (zero otherwise; see [`Smooth`]).
+    pub aa: [f32; 4],
+}
+
+/// Which coverage a batch's fragments compute from [`RasterVertex::aa`] (Mesa's smooth
+/// points and lines, `render::smooth`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum Smooth {
+    /// None: the fragments keep their alpha.
+    #[default]
+    None,
+    /// A smooth point's square: (u, v, k, 1).
+    Point,
+    /// A smooth line's rectangle: (across, half width, along, half length).
+    Line,
 }
 
 /// What a batch draws.
@@ -70,6 +88,8 @@ pub struct FragmentState {
     pub fog: Option<Fog>,
     /// The alpha test's function and reference.
     pub alpha_test: Option<(GLenum, f32)>,
+    /// The coverage of smooth points or lines.
+    pub smooth: Smooth,
 }
 
 /// A framebuffer operation.
@@ -143,15 +163,6 @@ struct Assembler {
     list: DrawList,
 }
 
-/// A shaded vertex with the colour chosen for its primitive.
-#[derive(Clone, Copy)]
-struct Corner {
-    clip: Vec4,
-    color: Vec4,
-    tex: Vec4,
-    fog: f32,
-}
-
 impl Assembler {
     fn clear(&mut self, mask: u32, color: [f32; 4], depth: f32) {
         let color = (mask & GL_COLOR_BUFFER_BIT != 0).then_some(color);
@@ -165,10 +176,14 @@ impl Assembler {
         let shader = Shader::new(state);
         let v: Vec<ShadedVertex> = vertices.iter().map(|v| shader.shade(v)).collect();
         let n = v.len();
-        let mut ctx = PrimitiveContext { out: self, state, v: &v };
+        let mut ctx = PrimitiveContext { out: self, state, v: &v, stipple: Stipple::default() };
         match mode {
             GL_POINTS => (0..n).for_each(|i| ctx.point(i)),
-            GL_LINES => (0..n / 2).for_each(|i| ctx.segment(2 * i, 2 * i + 1, 2 * i + 1)),
+            GL_LINES => (0..n / 2).for_each(|i| {
+                // Each separate segment restarts the stipple (GL 1.1 §3.4.2).
+                ctx.stipple.reset();
+                ctx.segment(2 * i, 2 * i + 1, 2 * i + 1);
+            }),
             GL_LINE_STRIP => (1..n).for_each(|i| ctx.segment(i - 1, i, i)),
             GL_LINE_LOOP if n >= 2 => {
                 (1..n).for_each(|i| ctx.segment(i - 1, i, i));
@@ -196,15 +211,20 @@ impl Assembler {
 
     /// Appends vertices to the last batch if it has the same state, else starts a batch.
     fn push(&mut self, state: &DrawState, topology: Topology, corners: &[Corner]) {
+        self.push_as(state, topology, Smooth::None, corners);
+    }
+
+    fn push_as(&mut self, state: &DrawState, topology: Topology, smooth: Smooth, corners: &[Corner]) {
         let depth_range = state.depth_range;
-        let fragment = self.fragment_index(state);
+        let fragment = self.fragment_index(state, smooth);
         let batch_key = (state.viewport, state.depth_test, topology, fragment, state.blend);
         let first = self.list.vertices.len() as u32;
         self.list.vertices.extend(corners.iter().map(|c| RasterVertex {
-            clip: depth_mapped(c.clip, depth_range),
+            clip: offset_depth(depth_mapped(c.clip, depth_range), c.depth_offset),
             color: c.color.to_array(),
             tex: c.tex.to_array(),
             fog: c.fog,
+            aa: c.aa.to_array(),
         }));
         let added = corners.len() as u32;
         if let Some(Op::Draw(last)) = self.list.ops.last_mut() {
@@ -220,18 +240,21 @@ impl Assembler {
 
     /// The index of the state's fragment operations in the list, adding them if they are new
     /// (searched from the last: consecutive primitives share them); `None` without any.
-    fn fragment_index(&mut self, state: &DrawState) -> Option<u32> {
-        if state.texture.is_none() && state.fog.is_none() && state.alpha_test.is_none() {
+    fn fragment_index(&mut self, state: &DrawState, smooth: Smooth) -> Option<u32> {
+        if state.texture.is_none() && state.fog.is_none() && state.alpha_test.is_none() && smooth == Smooth::None {
             return None;
         }
         let fragments = &mut self.list.fragments;
         let same = |f: &FragmentState| {
-            f.texture.as_ref() == state.texture.as_ref() && f.fog == state.fog && f.alpha_test == state.alpha_test
+            f.texture.as_ref() == state.texture.as_ref()
+                && f.fog == state.fog
+                && f.alpha_test == state.alpha_test
+                && f.smooth == smooth
         };
         let found = fragments.iter().rposition(same);
         Some(found.unwrap_or_else(|| {
             let (texture, fog, alpha_test) = (state.texture.clone(), state.fog, state.alpha_test);
-            fragments.push(FragmentState { texture, fog, alpha_test });
+            fragments.push(FragmentState { texture, fog, alpha_test, smooth });
             fragments.len() - 1
         }) as u32)
     }
@@ -243,10 +266,17 @@ fn depth_mapped(clip: Vec4, [near, far]: [f32; 2]) -> [f32; 4] {
     [clip.x, clip.y, z, clip.w]
 }
 
+/// Adds a polygon offset (window depth units) to a clip position already in wgpu's depth.
+fn offset_depth(mut clip: [f32; 4], offset: f32) -> [f32; 4] {
+    clip[2] += offset * clip[3];
+    clip
+}
+
 struct PrimitiveContext<'a, 'b> {
     out: &'a mut Assembler,
     state: &'b DrawState,
     v: &'b [ShadedVertex],
+    stipple: Stipple,
 }
 
 impl PrimitiveContext<'_, '_> {
@@ -256,11 +286,27 @@ impl PrimitiveContext<'_, '_> {
 
     /// A point of the point size: one pixel natively, else a square in window space.
     fn point(&mut self, i: usize) {
-        let sv = self.v[i];
-        self.point_at(Corner { clip: sv.clip, color: sv.front, tex: sv.tex, fog: sv.fog });
+        let c = self.corner(i, self.v[i].front);
+        self.point_at(c);
     }
 
+    /// Vertex `i` as a corner of the colour chosen for it.
+    fn corner(&self, i: usize, color: Vec4) -> Corner {
+        let v = &self.v[i];
+        Corner { clip: v.clip, eye: v.eye, color, tex: v.tex, fog: v.fog, depth_offset: 0.0, aa: Vec4::ZERO }
+    }
+
+    /// A point is clipped whole when its vertex is outside a clip plane (GL 1.1 §2.11).
     fn point_at(&mut self, c: Corner) {
+        if !clip::point_inside(&c, &self.state.clip_planes) {
+            return;
+        }
+        if self.state.point_smooth {
+            if let Some(quad) = smooth::point_quad(c, self.state.point_size, self.state.viewport) {
+                self.out.push_as(self.state, Topology::Triangles, Smooth::Point, &quad);
+            }
+            return;
+        }
         let size = self.state.point_size.round().max(1.0);
         if size <= 1.0 {
             return self.out.push(self.state, Topology::Points, &[c]);
@@ -279,9 +325,7 @@ impl PrimitiveContext<'_, '_> {
 
     /// A segment of a line primitive; `provoking` gives its colour under flat shading.
     fn segment(&mut self, a: usize, b: usize, provoking: usize) {
-        let pick =
-            |i: usize| Corner { clip: self.v[i].clip, color: self.v[i].front, tex: self.v[i].tex, fog: self.v[i].fog };
-        let (mut ca, mut cb) = (pick(a), pick(b));
+        let (mut ca, mut cb) = (self.corner(a, self.v[a].front), self.corner(b, self.v[b].front));
         if self.flat() {
             ca.color = self.v[provoking].front;
             cb.color = ca.color;
@@ -289,9 +333,27 @@ impl PrimitiveContext<'_, '_> {
         self.line(ca, cb);
     }
 
-    /// One line of the line width: one pixel natively, else GL's aliased wide line, a
-    /// parallelogram widened along the minor axis by the width in pixels.
+    /// One line: clipped by the clip planes, then cut into its stippled pieces (Mesa's order:
+    /// the stipple counts the clipped line's length).
     fn line(&mut self, a: Corner, b: Corner) {
+        let Some((a, b)) = clip::segment(a, b, &self.state.clip_planes) else { return };
+        let Some(stipple) = self.state.line_stipple else { return self.raster_line(a, b) };
+        let Some((a, b)) = clip::near_far(a, b) else { return };
+        let euclidean = self.state.line_smooth;
+        for (p, q) in self.stipple.pieces(a, b, self.state.viewport, stipple, euclidean) {
+            self.raster_line(p, q);
+        }
+    }
+
+    /// A line of the line width: one pixel natively, else GL's aliased wide line, a
+    /// parallelogram widened along the minor axis by the width in pixels.
+    fn raster_line(&mut self, a: Corner, b: Corner) {
+        if self.state.line_smooth {
+            if let Some(quad) = smooth::line_quad(a, b, self.state.line_width, self.state.viewport) {
+                self.out.push_as(self.state, Topology::Triangles, Smooth::Line, &quad);
+            }
+            return;
+        }
         let width = self.state.line_width.round().max(1.0);
         if width <= 1.0 {
             return self.out.push(self.state, Topology::Lines, &[a, b]);
@@ -326,16 +388,17 @@ impl PrimitiveContext<'_, '_> {
             }
         }
         let colour_of = |i: usize| if front { self.v[i].front } else { self.v[i].back };
-        let corners: Vec<Corner> = idx
-            .iter()
-            .map(|&i| Corner {
-                clip: self.v[i].clip,
-                color: colour_of(if self.flat() { provoking } else { i }),
-                tex: self.v[i].tex,
-                fog: self.v[i].fog,
-            })
-            .collect();
+        let corners: Vec<Corner> =
+            idx.iter().map(|&i| self.corner(i, colour_of(if self.flat() { provoking } else { i }))).collect();
+        let mut corners = clip::polygon(corners, &self.state.clip_planes);
+        if corners.len() < 3 {
+            return;
+        }
         let mode = self.state.polygon_mode[usize::from(!front)];
+        if let Some(o) = self.state.polygon_offset.filter(|o| o.applies_to(mode)) {
+            let depth = offset::polygon_offset(&corners, self.state.viewport, self.state.depth_range, &o);
+            corners.iter_mut().for_each(|c| c.depth_offset = depth);
+        }
         match mode {
             GL_POINT => corners.iter().for_each(|&c| self.point_at(c)),
             GL_LINE => {
