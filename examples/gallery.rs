@@ -53,6 +53,8 @@ mod rational;
 mod rationalmap;
 #[path = "specular.rs"]
 mod specular;
+#[path = "stipple.rs"]
+mod stipple;
 #[path = "teapot.rs"]
 mod teapot;
 #[path = "texsurf.rs"]
@@ -91,6 +93,7 @@ const PROGRAMS: [Program; 26] = [
     ("fogblend", fogblend::app),
     ("texteapot", texteapot::app),
     ("labels", labels::app),
+    ("stipple", stipple::app),
     ("operations", operations::app),
 ];
 
