@@ -23,6 +23,18 @@ pub struct Primitive {
     pub state: usize,
 }
 
+/// A `glMaterial` call between `begin` and `end`: from vertex `vertex` of primitive
+/// `primitive` on, vertices are lit with the lighting of [`Frame::states`]`[state]`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct MaterialChange {
+    /// Index in [`Frame::primitives`].
+    pub primitive: usize,
+    /// The first vertex (counted in the primitive) the new material applies to.
+    pub vertex: usize,
+    /// Index in [`Frame::states`] of the state holding the new material.
+    pub state: usize,
+}
+
 /// The GL state a primitive is drawn with, captured at `begin`.
 #[derive(Clone, Debug, PartialEq)]
 pub struct DrawState {
@@ -128,6 +140,8 @@ pub struct Frame {
     /// The grids `glEvalMesh` drew, each point stored once (see [`Frame::expanded`] for the
     /// primitives GL would have issued).
     pub meshes: Vec<GridMesh>,
+    /// Materials changed between `begin` and `end`, in order.
+    pub material_changes: Vec<MaterialChange>,
 }
 
 /// What a `glEvalMesh` grid draws.
@@ -210,6 +224,12 @@ impl Frame {
         &self.vertices[primitive.first..primitive.first + primitive.count]
     }
 
+    /// The material changes inside primitive `index`, as (first vertex, state index).
+    #[must_use]
+    pub fn material_changes_of(&self, index: usize) -> Vec<(usize, usize)> {
+        self.material_changes.iter().filter(|c| c.primitive == index).map(|c| (c.vertex, c.state)).collect()
+    }
+
     /// Iterates over (primitive, its vertices).
     pub fn iter(&self) -> impl Iterator<Item = (&Primitive, &[Vertex])> {
         self.primitives.iter().map(move |p| (p, self.vertices_of(p)))
@@ -223,6 +243,7 @@ impl Frame {
         self.states.clear();
         self.commands.clear();
         self.meshes.clear();
+        self.material_changes.clear();
     }
 
     /// The frame with every mesh replaced by the primitives GL issues for it (deferred meshes
@@ -236,6 +257,10 @@ impl Frame {
                 Command::Draw(i) => {
                     let p = self.primitives[i];
                     out.push_primitive(p.mode, p.state, self.vertices_of(&p).iter().copied());
+                    let primitive = out.primitives.len() - 1;
+                    for (vertex, state) in self.material_changes_of(i) {
+                        out.material_changes.push(MaterialChange { primitive, vertex, state });
+                    }
                 }
                 Command::Mesh(i) => {
                     let mesh = &self.meshes[i];

@@ -204,6 +204,7 @@ impl Gl {
             }
         }
         self.touch_state();
+        self.note_material_change();
     }
 
     /// `glMaterialf` (`GL_SHININESS`).

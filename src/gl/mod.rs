@@ -30,7 +30,7 @@ mod vertex;
 
 pub use eval::{MapTarget, Slot};
 pub use fragment::Fog;
-pub use frame::{Call, Command, DrawState, Frame, GridMesh, MeshMode, MeshVertices, Primitive};
+pub use frame::{Call, Command, DrawState, Frame, GridMesh, MaterialChange, MeshMode, MeshVertices, Primitive};
 pub use lighting::{Light, Lighting, Material};
 pub use lists::MAX_LIST_NESTING;
 pub use mesh_job::{MapSample, MeshJob};
@@ -236,6 +236,7 @@ impl Gl {
             frame.calls.clear();
             frame.states.clear();
             frame.commands.clear();
+            frame.material_changes.clear();
             self.frame = frame;
         }
     }

@@ -136,7 +136,12 @@ pub fn assemble_frame(frame: &Frame, gpu_meshes: &[usize]) -> DrawList {
             Command::Draw(index) => {
                 if let Some(p) = frame.primitives.get(index) {
                     if let Some(state) = frame.states.get(p.state) {
-                        out.primitive(p.mode, frame.vertices_of(p), state);
+                        let materials: Vec<(usize, &DrawState)> = frame
+                            .material_changes_of(index)
+                            .into_iter()
+                            .filter_map(|(vertex, s)| Some((vertex, frame.states.get(s)?)))
+                            .collect();
+                        out.lit_primitive(p.mode, frame.vertices_of(p), state, &materials);
                     }
                 }
             }
@@ -173,8 +178,22 @@ impl Assembler {
     }
 
     fn primitive(&mut self, mode: GLenum, vertices: &[crate::gl::Vertex], state: &DrawState) {
-        let shader = Shader::new(state);
-        let v: Vec<ShadedVertex> = vertices.iter().map(|v| shader.shade(v)).collect();
+        self.lit_primitive(mode, vertices, state, &[]);
+    }
+
+    /// A primitive whose vertices from `materials[k].0` on are lit with the lighting of
+    /// `materials[k].1` (`glMaterial` between `begin` and `end`); everything else is `state`'s.
+    fn lit_primitive(
+        &mut self,
+        mode: GLenum,
+        vertices: &[crate::gl::Vertex],
+        state: &DrawState,
+        materials: &[(usize, &DrawState)],
+    ) {
+        let shaders: Vec<Shader> =
+            std::iter::once(Shader::new(state)).chain(materials.iter().map(|(_, s)| Shader::new(s))).collect();
+        let shader_of = |i: usize| materials.iter().rposition(|&(first, _)| first <= i).map_or(0, |k| k + 1);
+        let v: Vec<ShadedVertex> = vertices.iter().enumerate().map(|(i, v)| shaders[shader_of(i)].shade(v)).collect();
         let n = v.len();
         let mut ctx = PrimitiveContext { out: self, state, v: &v, stipple: Stipple::default() };
         match mode {
@@ -507,6 +526,36 @@ mod tests {
         gl.end();
         let list = assemble(&gl.take_frame());
         assert!(list.vertices.iter().all(|v| v.color == [0.0, 0.0, 1.0, 1.0]), "last vertex of a triangle");
+    }
+
+    /// GL 1.1 §2.13: with light 0's defaults and the normal towards it, a vertex's colour is
+    /// 0.2 · 0.2 ambient + its diffuse material (alpha: the diffuse alpha). Real Mesa gives the
+    /// same in feedback mode: (1, .04, .04, 1), (.04, 1, .04, 1), (.04, .04, 1, .5), and the
+    /// point drawn after `end` keeps the last material.
+    #[test]
+    fn materials_changed_between_begin_and_end_light_the_vertices_after_them() {
+        let mut gl = Gl::new(16, 16);
+        gl.enable(GL_LIGHTING);
+        gl.enable(GL_LIGHT0);
+        gl.normal3f(0.0, 0.0, 1.0);
+        gl.begin(GL_TRIANGLES);
+        gl.material_fv(GL_FRONT, GL_DIFFUSE, &[1.0, 0.0, 0.0, 1.0]);
+        gl.vertex2f(0.0, 0.0);
+        gl.material_fv(GL_FRONT, GL_DIFFUSE, &[0.0, 1.0, 0.0, 1.0]);
+        gl.vertex2f(0.5, 0.0);
+        gl.material_fv(GL_FRONT, GL_DIFFUSE, &[0.0, 0.0, 1.0, 0.5]);
+        gl.vertex2f(0.0, 0.5);
+        gl.end();
+        gl.begin(GL_POINTS);
+        gl.vertex2f(0.2, 0.2);
+        gl.end();
+        assert_eq!(gl.get_error(), GL_NO_ERROR);
+        let list = assemble(&gl.take_frame());
+        let expected = [[1.0, 0.04, 0.04, 1.0], [0.04, 1.0, 0.04, 1.0], [0.04, 0.04, 1.0, 0.5], [0.04, 0.04, 1.0, 0.5]];
+        assert_eq!(list.vertices.len(), 4);
+        for (v, e) in list.vertices.iter().zip(expected) {
+            assert!(v.color.iter().zip(e).all(|(a, b)| (a - b).abs() < 1e-6), "{:?} vs {e:?}", v.color);
+        }
     }
 
     #[test]
