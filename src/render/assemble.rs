@@ -357,7 +357,7 @@ impl PrimitiveContext<'_, '_> {
     fn line(&mut self, a: Corner, b: Corner) {
         let Some((a, b)) = clip::segment(a, b, &self.state.clip_planes) else { return };
         let Some(stipple) = self.state.line_stipple else { return self.raster_line(a, b) };
-        let Some((a, b)) = clip::near_far(a, b) else { return };
+        let Some((a, b)) = clip::view_volume(a, b) else { return };
         let euclidean = self.state.line_smooth;
         for (p, q) in self.stipple.pieces(a, b, self.state.viewport, stipple, euclidean) {
             self.raster_line(p, q);

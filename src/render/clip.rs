@@ -1,7 +1,7 @@
 //! Clipping by the user's clip planes (GL 1.1 spec §2.11): a point is kept whole or not at all,
 //! a line is cut where it crosses a plane, a polygon is cut into the polygon inside every plane
 //! (Sutherland–Hodgman), its attributes interpolated at the cuts. The view volume is left to
-//! the GPU, except where stippling needs a line's drawn length (`near_far`).
+//! the GPU, except where stippling needs a line's drawn length (`view_volume`).
 
 use super::corner::Corner;
 use glam::Vec4;
@@ -16,11 +16,17 @@ pub(crate) fn segment(a: Corner, b: Corner, planes: &[[f32; 4]]) -> Option<(Corn
     segment_by(a, b, planes.iter().map(|p| |c: &Corner| Vec4::from_array(*p).dot(c.eye)))
 }
 
-/// The part of the segment between GL's near and far clip planes (−w ≤ z ≤ w), if any.
-pub(crate) fn near_far(a: Corner, b: Corner) -> Option<(Corner, Corner)> {
-    let near = |c: &Corner| c.clip.z + c.clip.w;
-    let far = |c: &Corner| c.clip.w - c.clip.z;
-    segment_by(a, b, [&near as &dyn Fn(&Corner) -> f32, &far])
+/// The part of the segment inside GL's view volume (−w ≤ x, y, z ≤ w), if any.
+pub(crate) fn view_volume(a: Corner, b: Corner) -> Option<(Corner, Corner)> {
+    let planes: [fn(&Corner) -> f32; 6] = [
+        |c| c.clip.w + c.clip.x,
+        |c| c.clip.w - c.clip.x,
+        |c| c.clip.w + c.clip.y,
+        |c| c.clip.w - c.clip.y,
+        |c| c.clip.w + c.clip.z,
+        |c| c.clip.w - c.clip.z,
+    ];
+    segment_by(a, b, planes)
 }
 
 /// Cuts the segment by each distance function (inside where ≥ 0), both ends at once

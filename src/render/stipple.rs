@@ -6,9 +6,16 @@
 //! mod 16 of the pattern; a run of kept steps i0..i1 becomes the piece from i0/L to i1/L of
 //! the line (the last run ending at the line's end). s carries on along a strip or loop and
 //! restarts with each `glBegin` and with each segment of `GL_LINES` (§3.4.2). Measured on
-//! Mesa 22.3 llvmpipe: the counter moves by whole steps (⌈L⌉ per line), not by L.
+//! Mesa 22.3 llvmpipe: the counter moves by whole steps (⌈L⌉ per line), not by L. Lines are
+//! cut to the view volume first, so a line leaving the viewport counts only its visible part
+//! (Mesa clips before stippling too; where its guard band lets a line through unclipped the
+//! count may differ).
 
 use super::corner::Corner;
+
+/// The most steps one line takes (GL's largest viewport, Mesa's 16384, along a diagonal, with
+/// room to spare).
+const MAX_STEPS: f32 = 65536.0;
 
 /// The stipple counter of one primitive.
 #[derive(Clone, Copy, Debug, Default)]
@@ -22,7 +29,7 @@ impl Stipple {
         self.counter = 0;
     }
 
-    /// The drawn pieces of the line from `a` to `b` (clip coordinates in front of the eye),
+    /// The drawn pieces of the line from `a` to `b` (clip coordinates inside the view volume),
     /// in the viewport `[x, y, w, h]`, as corners with w = 1 (cut in window space).
     /// With `euclidean` (smooth lines, drawn as rectangles) L is the Euclidean length.
     pub fn pieces(
@@ -37,7 +44,8 @@ impl Stipple {
         let (sx, sy) = (viewport[2] as f32 * 0.5, viewport[3] as f32 * 0.5);
         let (dx, dy) = ((b.clip.x - a.clip.x) * sx, (b.clip.y - a.clip.y) * sy);
         let length = if euclidean { dx.hypot(dy) } else { dx.abs().max(dy.abs()) };
-        let steps = if length.is_finite() { length.ceil() as u32 } else { 0 };
+        // The line is inside the view volume, so this bounds only absurd viewports.
+        let steps = if length.is_finite() { length.ceil().min(MAX_STEPS) as u32 } else { 0 };
         let factor = factor.max(1) as u32;
         let kept = |i: u32| pattern >> ((self.counter.wrapping_add(i) / factor) % 16) & 1 == 1;
         let mut pieces = Vec::new();
