@@ -1,9 +1,11 @@
 //! Stipple.c (tests/reference/pictures), ported line for line: GL's rasterisation modes on
 //! evaluated curves and surfaces. Top left: an evaluated curve drawn with four line stipples,
-//! separate stippled `GL_LINES` (each restarts the pattern) and a wide stippled loop. Top
-//! right: smooth points and lines, blended. Bottom left: a lit surface cut by a clip plane
-//! (given under a rotation, kept in eye space), in fog. Bottom right: a filled surface pushed
-//! back by polygon offset under its own wire outline.
+//! separate stippled `GL_LINES` (each restarts the pattern) and a wide stippled loop around a
+//! bar filled through a polygon stipple of diagonal hatching (its rows 20 to 31 empty, so that
+//! the pattern shows where the window's row 0 is). Top right: smooth points and lines,
+//! blended. Bottom left: a lit surface cut by a clip plane (given under a rotation, kept in eye
+//! space), in fog. Bottom right: a filled surface pushed back by polygon offset under its own
+//! wire outline.
 //!
 //! `cargo run --release --example stipple -- --png stipple.png`
 
@@ -17,6 +19,15 @@ const FACTORS: [GLint; 4] = [1, 1, 2, 3];
 const PATTERNS: [GLushort; 4] = [0x0F0F, 0x1C47, 0xAAAA, 0x00FF];
 
 fn init(gl: &mut Gl) {
+    let mut hatch = [0u8; 128];
+    for y in 0..32 {
+        for x in 0..32 {
+            if (x + y) % 8 < 3 && y < 20 {
+                hatch[4 * y + x / 8] |= 0x80 >> (x % 8);
+            }
+        }
+    }
+    gl.polygon_stipple(&hatch);
     let mut hill = [[[0.0f32; 3]; 4]; 4];
     for u in 0..4 {
         for v in 0..4 {
@@ -78,6 +89,10 @@ fn stippled(gl: &mut Gl, x: i32, y: i32, w: i32, h: i32) {
         gl.vertex2f(-1.05 + 0.45 * f, -0.7);
     }
     gl.end();
+    gl.enable(GL_POLYGON_STIPPLE);
+    gl.color3f(0.5, 0.7, 0.3);
+    gl.rectf(-1.4, -1.4, 1.4, -1.15);
+    gl.disable(GL_POLYGON_STIPPLE);
     gl.line_width(3.0);
     gl.line_stipple(4, 0x3F3F);
     gl.color3f(0.1, 0.5, 0.2);

@@ -31,6 +31,13 @@ struct Fragment {
     coverage: u32,
     pad1: f32,
     fog_color: vec4<f32>,
+    // 1 with a polygon stipple (GL 1.1 §3.5.6): row y of the window (from the bottom, modulo
+    // 32) keeps the fragments of column x where bit x is set.
+    stipple: u32,
+    height: u32,
+    pad2: u32,
+    pad3: u32,
+    stipple_rows: array<vec4<u32>, 8>,
 };
 
 @group(0) @binding(0) var tex_image: texture_2d<f32>;
@@ -70,6 +77,9 @@ fn fs_main(in: VertexOut) -> @location(0) vec4<f32> {
     let clamped = vec2<bool>(env.clamp_s != 0u, env.clamp_t != 0u);
     let coord = select(st, clamp(st, vec2<f32>(0.0), vec2<f32>(1.0)), clamped);
     let texel = textureSample(tex_image, tex_sampler, coord) * inside_border(coord);
+    if env.stipple != 0u && !stipple_keeps(in.clip.xy) {
+        discard;
+    }
     var color = in.color;
     if env.mode != 0u {
         color = apply_env(color, texel);
@@ -108,6 +118,15 @@ fn inside_border(coord: vec2<f32>) -> f32 {
 // the colour as Mesa's infinite one is).
 fn point_coverage(d: f32, k: f32) -> f32 {
     return select(1.0, (1.0 - d) / max(1.0 - k, 1e-20), k >= d);
+}
+
+// Whether the polygon stipple keeps the fragment at framebuffer position `p` (y down, pixel
+// centres at +0.5): GL's window row is height − 1 − ⌊y⌋.
+fn stipple_keeps(p: vec2<f32>) -> bool {
+    let x = u32(p.x) % 32u;
+    let y = (env.height - 1u - min(u32(p.y), env.height - 1u)) % 32u;
+    let row = env.stipple_rows[y / 4u][y % 4u];
+    return ((row >> x) & 1u) != 0u;
 }
 
 // GL's fog factor f (the fragment's share), clamped to [0, 1]: C = f·Cf + (1 − f)·Cfog.

@@ -4,7 +4,7 @@
 //! (`glcurveval.cc`, `glsurfeval.cc`); GLUT's teapot saves `GL_ENABLE_BIT | GL_EVAL_BIT`.
 //!
 //! Kept: current (colour, normal, texture coordinates), point, line, polygon, lighting, fog,
-//! depth buffer, viewport, transform, enable, colour buffer (clear colour, blending, alpha
+//! polygon stipple, depth buffer, viewport, transform, enable, colour buffer (clear colour, blending, alpha
 //! test), evaluator, list (base) and texture (unit 0's bindings and environment). Groups of
 //! state this façade does not have (stencil, accumulation, pixel modes, scissor, hints) are
 //! accepted and keep nothing.
@@ -23,8 +23,14 @@ pub(crate) const MAX_ATTRIB_STACK_DEPTH: usize = 16;
 /// The enables GL files under each group besides `GL_ENABLE_BIT` (GL 1.1 tables 6.6–6.19).
 const POINT_ENABLES: &[GLenum] = &[GL_POINT_SMOOTH];
 const LINE_ENABLES: &[GLenum] = &[GL_LINE_SMOOTH, GL_LINE_STIPPLE];
-const POLYGON_ENABLES: &[GLenum] =
-    &[GL_CULL_FACE, GL_POLYGON_SMOOTH, GL_POLYGON_OFFSET_POINT, GL_POLYGON_OFFSET_LINE, GL_POLYGON_OFFSET_FILL];
+const POLYGON_ENABLES: &[GLenum] = &[
+    GL_CULL_FACE,
+    GL_POLYGON_SMOOTH,
+    GL_POLYGON_OFFSET_POINT,
+    GL_POLYGON_OFFSET_LINE,
+    GL_POLYGON_OFFSET_FILL,
+    GL_POLYGON_STIPPLE,
+];
 const LIGHTING_ENABLES: &[GLenum] = &[
     GL_LIGHTING,
     GL_COLOR_MATERIAL,
@@ -64,6 +70,7 @@ struct RasterValues {
     polygon: ([GLenum; 2], GLenum, GLenum),
     polygon_offset: (f32, f32),
     clip_planes: [[f32; 4]; super::clip::MAX_CLIP_PLANES],
+    polygon_stipple: [u32; 32],
     shade_model: GLenum,
     depth: (GLenum, f32),
     viewport: ([i32; 4], [f32; 2]),
@@ -134,6 +141,7 @@ impl Gl {
             polygon: (r.polygon_mode, r.front_face, r.cull_face),
             polygon_offset: r.polygon_offset,
             clip_planes: r.clip_planes,
+            polygon_stipple: r.polygon_stipple,
             shade_model: r.shade_model,
             depth: (r.depth_func, r.clear_depth),
             viewport: (r.viewport, r.depth_range),
@@ -186,6 +194,9 @@ impl Gl {
         if has(GL_POLYGON_BIT) {
             (r.polygon_mode, r.front_face, r.cull_face) = v.polygon;
             r.polygon_offset = v.polygon_offset;
+        }
+        if has(GL_POLYGON_STIPPLE_BIT) {
+            r.polygon_stipple = v.polygon_stipple;
         }
         if has(GL_LIGHTING_BIT) {
             r.shade_model = v.shade_model;

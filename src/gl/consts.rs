@@ -295,6 +295,7 @@ pub const GL_CURRENT_BIT: GLenum = 0x0000_0001;
 pub const GL_POINT_BIT: GLenum = 0x0000_0002;
 pub const GL_LINE_BIT: GLenum = 0x0000_0004;
 pub const GL_POLYGON_BIT: GLenum = 0x0000_0008;
+pub const GL_POLYGON_STIPPLE_BIT: GLenum = 0x0000_0010;
 pub const GL_LIGHTING_BIT: GLenum = 0x0000_0040;
 pub const GL_FOG_BIT: GLenum = 0x0000_0080;
 pub const GL_VIEWPORT_BIT: GLenum = 0x0000_0800;

@@ -86,6 +86,9 @@ pub struct DrawState {
     pub polygon_offset: Option<PolygonOffset>,
     /// The enabled clip planes in eye coordinates, in plane order.
     pub clip_planes: Vec<[f32; 4]>,
+    /// `glPolygonStipple`'s mask when `GL_POLYGON_STIPPLE` is enabled: row y, bit x for window
+    /// pixel (x, y) modulo 32.
+    pub polygon_stipple: Option<[u32; 32]>,
 }
 
 /// Framebuffer operations and draws, in program order.

@@ -298,6 +298,7 @@ impl Gl {
             line_smooth: self.caps.is_on(GL_LINE_SMOOTH),
             polygon_offset: self.enabled_polygon_offset(),
             clip_planes: self.enabled_clip_planes(),
+            polygon_stipple: self.enabled_polygon_stipple(),
         }
     }
 

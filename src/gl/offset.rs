@@ -60,6 +60,7 @@ impl Gl {
     pub(crate) fn raster_modes_on(&self) -> bool {
         self.enabled_polygon_offset().is_some()
             || self.enabled_line_stipple().is_some()
+            || self.enabled_polygon_stipple().is_some()
             || !self.enabled_clip_planes().is_empty()
     }
 

@@ -28,6 +28,8 @@ pub(crate) struct RasterState {
     pub polygon_offset: (f32, f32),
     /// `glClipPlane`: the planes in eye coordinates, as transformed at the call.
     pub clip_planes: [[f32; 4]; super::clip::MAX_CLIP_PLANES],
+    /// `glPolygonStipple`: row y, bit x for window pixel (x, y) modulo 32.
+    pub polygon_stipple: [u32; 32],
 }
 
 impl RasterState {
@@ -47,6 +49,7 @@ impl RasterState {
             line_stipple: (1, 0xFFFF),
             polygon_offset: (0.0, 0.0),
             clip_planes: [[0.0; 4]; super::clip::MAX_CLIP_PLANES],
+            polygon_stipple: [u32::MAX; 32],
         }
     }
 }

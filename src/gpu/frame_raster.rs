@@ -46,8 +46,9 @@ impl FrameRaster {
         device: &wgpu::Device,
         queue: &wgpu::Queue,
         list: &DrawList,
+        height: u32,
     ) -> Vec<wgpu::BindGroup> {
-        self.textures.bind_groups(device, queue, &self.texture_layout, &list.fragments)
+        self.textures.bind_groups(device, queue, &self.texture_layout, &list.fragments, height)
     }
 
     /// Makes sure the pipeline for `key` exists (before a render pass borrows them all).

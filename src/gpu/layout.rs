@@ -173,6 +173,14 @@ pub(crate) struct GpuFragment {
     pub coverage: u32,
     pub pad1: f32,
     pub fog_color: [f32; 4],
+    /// 1 with a polygon stipple.
+    pub stipple: u32,
+    /// The target's height in pixels (the stipple counts rows from the bottom).
+    pub height: u32,
+    pub pad2: u32,
+    pub pad3: u32,
+    /// The stipple's 32 rows, four to a vector.
+    pub stipple_rows: [[u32; 4]; 8],
 }
 
 #[cfg(test)]
@@ -268,7 +276,12 @@ mod tests {
                 fog_end,
                 coverage,
                 pad1,
-                fog_color
+                fog_color,
+                stipple,
+                height,
+                pad2,
+                pad3,
+                stipple_rows
             }
         );
     }

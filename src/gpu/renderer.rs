@@ -137,7 +137,7 @@ impl Renderer {
         target: &Attachments<'_>,
     ) {
         let buffer = vertex_buffer(&self.device, list, target.size);
-        let bind_groups = self.frames.texture_bind_groups(&self.device, &self.queue, list);
+        let bind_groups = self.frames.texture_bind_groups(&self.device, &self.queue, list, target.size.1);
         for pass in split_passes(&list.ops) {
             for item in &pass.draws {
                 if let PassItem::Batch(batch) = item {

@@ -90,6 +90,8 @@ pub struct FragmentState {
     pub alpha_test: Option<(GLenum, f32)>,
     /// The coverage of smooth points or lines.
     pub smooth: Smooth,
+    /// The polygon stipple of filled polygons: row y, bit x for window pixel (x, y) mod 32.
+    pub polygon_stipple: Option<[u32; 32]>,
 }
 
 /// A framebuffer operation.
@@ -230,12 +232,19 @@ impl Assembler {
 
     /// Appends vertices to the last batch if it has the same state, else starts a batch.
     fn push(&mut self, state: &DrawState, topology: Topology, corners: &[Corner]) {
-        self.push_as(state, topology, Smooth::None, corners);
+        self.push_as(state, topology, (Smooth::None, None), corners);
     }
 
-    fn push_as(&mut self, state: &DrawState, topology: Topology, smooth: Smooth, corners: &[Corner]) {
+    /// As [`Assembler::push`], with a smooth coverage or a polygon stipple for the fragments.
+    fn push_as(
+        &mut self,
+        state: &DrawState,
+        topology: Topology,
+        extra: (Smooth, Option<[u32; 32]>),
+        corners: &[Corner],
+    ) {
         let depth_range = state.depth_range;
-        let fragment = self.fragment_index(state, smooth);
+        let fragment = self.fragment_index(state, extra);
         let batch_key = (state.viewport, state.depth_test, topology, fragment, state.blend);
         let first = self.list.vertices.len() as u32;
         self.list.vertices.extend(corners.iter().map(|c| RasterVertex {
@@ -259,8 +268,13 @@ impl Assembler {
 
     /// The index of the state's fragment operations in the list, adding them if they are new
     /// (searched from the last: consecutive primitives share them); `None` without any.
-    fn fragment_index(&mut self, state: &DrawState, smooth: Smooth) -> Option<u32> {
-        if state.texture.is_none() && state.fog.is_none() && state.alpha_test.is_none() && smooth == Smooth::None {
+    fn fragment_index(
+        &mut self,
+        state: &DrawState,
+        (smooth, polygon_stipple): (Smooth, Option<[u32; 32]>),
+    ) -> Option<u32> {
+        let plain = smooth == Smooth::None && polygon_stipple.is_none();
+        if state.texture.is_none() && state.fog.is_none() && state.alpha_test.is_none() && plain {
             return None;
         }
         let fragments = &mut self.list.fragments;
@@ -269,11 +283,12 @@ impl Assembler {
                 && f.fog == state.fog
                 && f.alpha_test == state.alpha_test
                 && f.smooth == smooth
+                && f.polygon_stipple == polygon_stipple
         };
         let found = fragments.iter().rposition(same);
         Some(found.unwrap_or_else(|| {
             let (texture, fog, alpha_test) = (state.texture.clone(), state.fog, state.alpha_test);
-            fragments.push(FragmentState { texture, fog, alpha_test, smooth });
+            fragments.push(FragmentState { texture, fog, alpha_test, smooth, polygon_stipple });
             fragments.len() - 1
         }) as u32)
     }
@@ -322,7 +337,7 @@ impl PrimitiveContext<'_, '_> {
         }
         if self.state.point_smooth {
             if let Some(quad) = smooth::point_quad(c, self.state.point_size, self.state.viewport) {
-                self.out.push_as(self.state, Topology::Triangles, Smooth::Point, &quad);
+                self.out.push_as(self.state, Topology::Triangles, (Smooth::Point, None), &quad);
             }
             return;
         }
@@ -369,7 +384,7 @@ impl PrimitiveContext<'_, '_> {
     fn raster_line(&mut self, a: Corner, b: Corner) {
         if self.state.line_smooth {
             if let Some(quad) = smooth::line_quad(a, b, self.state.line_width, self.state.viewport) {
-                self.out.push_as(self.state, Topology::Triangles, Smooth::Line, &quad);
+                self.out.push_as(self.state, Topology::Triangles, (Smooth::Line, None), &quad);
             }
             return;
         }
@@ -428,7 +443,9 @@ impl PrimitiveContext<'_, '_> {
             _ => {
                 let tris: Vec<Corner> =
                     (1..corners.len() - 1).flat_map(|k| [corners[0], corners[k], corners[k + 1]]).collect();
-                self.out.push(self.state, Topology::Triangles, &tris);
+                // The polygon stipple applies to filled polygons only (GL 1.1 §3.5.6).
+                let extra = (Smooth::None, self.state.polygon_stipple);
+                self.out.push_as(self.state, Topology::Triangles, extra, &tris);
             }
         }
     }

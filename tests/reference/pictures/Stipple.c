@@ -1,14 +1,17 @@
 // Stipple.c: GL's rasterisation modes on evaluated curves and surfaces. Top left: an evaluated
 // curve drawn with four line stipples, separate stippled GL_LINES (each restarts the pattern)
-// and a wide stippled loop. Top right: smooth points and lines, blended. Bottom left: a lit
-// surface cut by a clip plane (given under a rotation, kept in eye space), in fog. Bottom
-// right: a filled surface pushed back by polygon offset under its own wire outline.
+// and a wide stippled loop around a bar filled through a polygon stipple of diagonal hatching
+// (its rows 20 to 31 empty, so that the pattern shows where the window's row 0 is). Top right:
+// smooth points and lines, blended. Bottom left: a lit surface cut by a clip plane (given
+// under a rotation, kept in eye space), in fog. Bottom right: a filled surface pushed back by
+// polygon offset under its own wire outline.
 #include "gl.h"
 
 static GLfloat curve[4][3] = {{-1.3, -0.2, 0.0}, {-0.5, 1.0, 0.0}, {0.5, -1.0, 0.0}, {1.3, 0.2, 0.0}};
 static GLfloat hill[4][4][3];
 static GLint factors[4] = {1, 1, 2, 3};
 static GLushort patterns[4] = {0x0F0F, 0x1C47, 0xAAAA, 0x00FF};
+static GLubyte hatch[128];
 
 static void init(void)
 {
@@ -18,6 +21,11 @@ static void init(void)
             hill[u][v][1] = -1.5f + v;
             hill[u][v][2] = ((u == 1 || u == 2) && (v == 1 || v == 2)) ? 1.5f : -0.3f;
         }
+    for (int y = 0; y < 32; y++)
+        for (int x = 0; x < 32; x++)
+            if ((x + y) % 8 < 3 && y < 20)
+                hatch[4 * y + x / 8] |= (GLubyte)(0x80 >> (x % 8));
+    glPolygonStipple(hatch);
     glClearColor(0.95, 0.95, 0.9, 1.0);
     glMap1f(GL_MAP1_VERTEX_3, 0, 1, 3, 4, &curve[0][0]);
     glEnable(GL_MAP1_VERTEX_3);
@@ -72,6 +80,10 @@ static void stippled(int x, int y, int w, int h)
         glVertex2f(-1.05f + 0.45f * k, -0.7f);
     }
     glEnd();
+    glEnable(GL_POLYGON_STIPPLE);
+    glColor3f(0.5, 0.7, 0.3);
+    glRectf(-1.4, -1.4, 1.4, -1.15);
+    glDisable(GL_POLYGON_STIPPLE);
     glLineWidth(3.0);
     glLineStipple(4, 0x3F3F);
     glColor3f(0.1, 0.5, 0.2);
