@@ -40,7 +40,7 @@ impl Default for RasterPos {
 }
 
 /// The transforms a raster position goes through.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Debug)]
 pub(crate) struct Transform {
     pub modelview: Mat4,
     pub projection: Mat4,
