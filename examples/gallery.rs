@@ -55,6 +55,8 @@ mod rationalmap;
 mod shapes;
 #[path = "specular.rs"]
 mod specular;
+#[path = "stipple.rs"]
+mod stipple;
 #[path = "strokes.rs"]
 mod strokes;
 #[path = "teapot.rs"]
@@ -71,7 +73,7 @@ mod trimmed;
 /// A built-in program: its name and how to build it.
 type Program = (&'static str, fn() -> App);
 
-const PROGRAMS: [Program; 29] = [
+const PROGRAMS: [Program; 30] = [
     ("bezcurve", bezcurve::app),
     ("bezsurf", bezsurf::app),
     ("bcurve", bcurve::app),
@@ -98,6 +100,7 @@ const PROGRAMS: [Program; 29] = [
     ("texteapot", texteapot::app),
     ("texgen", texgen::app),
     ("labels", labels::app),
+    ("stipple", stipple::app),
     ("shapes", shapes::app),
     ("strokes", strokes::app),
     ("operations", operations::app),

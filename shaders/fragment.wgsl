@@ -25,9 +25,17 @@ struct Fragment {
     alpha_ref: f32,
     fog_start: f32,
     fog_end: f32,
-    pad0: f32,
+    // 0 none, 1 a smooth point's coverage, 2 a smooth line's.
+    coverage: u32,
     pad1: f32,
     fog_color: vec4<f32>,
+    // 1 with a polygon stipple (GL 1.1 §3.5.6): row y of the window (from the bottom, modulo
+    // 32) keeps the fragments of column x where bit x is set.
+    stipple: u32,
+    height: u32,
+    pad2: u32,
+    pad3: u32,
+    stipple_rows: array<vec4<u32>, 8>,
 };
 
 // The fragment's colour after texturing and fog: `tex` the interpolated (s, t, r, q), `fog`
@@ -59,6 +67,15 @@ fn inside_border(coord: vec2<f32>) -> f32 {
     let s = select(1.0, inside.x, env.clamp_s == 2u);
     let t = select(1.0, inside.y, env.clamp_t == 2u);
     return s * t;
+}
+
+// Whether the polygon stipple keeps the fragment at framebuffer position `p` (y down, pixel
+// centres at +0.5): GL's window row is height − 1 − ⌊y⌋.
+fn stipple_keeps(p: vec2<f32>) -> bool {
+    let x = u32(p.x) % 32u;
+    let y = (env.height - 1u - min(u32(p.y), env.height - 1u)) % 32u;
+    let row = env.stipple_rows[y / 4u][y % 4u];
+    return ((row >> x) & 1u) != 0u;
 }
 
 // GL's fog factor f (the fragment's share), clamped to [0, 1]: C = f·Cf + (1 − f)·Cfog.

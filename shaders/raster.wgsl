@@ -2,7 +2,9 @@
 // lighting, primitive assembly, wide lines and points) is already done, so a vertex carries its
 // clip-space position, final colour, texture coordinates and fog coordinate. The fragment stage
 // is GL's per-fragment work, shared with the mesh rasteriser (`shaders/fragment.wgsl`, appended
-// to this source when the module is made); blending is the pipeline's blend state.
+// to this source when the module is made), plus what only this rasteriser draws: the polygon
+// stipple, and smooth points and lines, whose coverage multiplies the alpha before the alpha
+// test, as Mesa's llvmpipe does (src/render/smooth.rs). Blending is the pipeline's blend state.
 
 @group(0) @binding(0) var tex_image: texture_2d<f32>;
 @group(0) @binding(1) var tex_sampler: sampler;
@@ -13,6 +15,7 @@ struct VertexOut {
     @location(0) color: vec4<f32>,
     @location(1) tex: vec4<f32>,
     @location(2) fog: f32,
+    @location(3) aa: vec4<f32>,
 };
 
 @vertex
@@ -21,20 +24,41 @@ fn vs_main(
     @location(1) color: vec4<f32>,
     @location(2) tex: vec4<f32>,
     @location(3) fog: f32,
+    @location(4) aa: vec4<f32>,
 ) -> VertexOut {
     var out: VertexOut;
     out.clip = clip;
     out.color = color;
     out.tex = tex;
     out.fog = fog;
+    out.aa = aa;
     return out;
 }
 
 @fragment
 fn fs_main(in: VertexOut) -> @location(0) vec4<f32> {
-    let color = fragment_ops(in.color, in.tex, in.fog);
+    var color = fragment_ops(in.color, in.tex, in.fog);
+    if env.stipple != 0u && !stipple_keeps(in.clip.xy) {
+        discard;
+    }
+    if env.coverage == 1u {
+        let d = dot(in.aa.xy, in.aa.xy);
+        if d > in.aa.w {
+            discard;
+        }
+        color.a *= point_coverage(d, in.aa.z);
+    } else if env.coverage == 2u {
+        color.a *= saturate(in.aa.y - abs(in.aa.x)) * saturate(in.aa.w - abs(in.aa.z));
+    }
     if env.alpha_func != 0u && !alpha_passes(color.a) {
         discard;
     }
     return color;
+}
+
+// A smooth point's coverage at d = u² + v² with k = 1/r: Mesa 22.3's NIR pass takes
+// (1 − d)/(1 − k) where k ≥ d and 1 elsewhere (k = 1 for r = 1: a huge factor, clamped with
+// the colour as Mesa's infinite one is).
+fn point_coverage(d: f32, k: f32) -> f32 {
+    return select(1.0, (1.0 - d) / max(1.0 - k, 1e-20), k >= d);
 }

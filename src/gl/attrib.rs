@@ -4,7 +4,7 @@
 //! (`glcurveval.cc`, `glsurfeval.cc`); GLUT's teapot saves `GL_ENABLE_BIT | GL_EVAL_BIT`.
 //!
 //! Kept: current (colour, normal, texture coordinates), point, line, polygon, lighting, fog,
-//! depth buffer, viewport, transform, enable, colour buffer (clear colour, blending, alpha
+//! polygon stipple, depth buffer, viewport, transform, enable, colour buffer (clear colour, blending, alpha
 //! test), evaluator, list (base) and texture (unit 0's bindings and environment). Groups of
 //! state this façade does not have (stencil, accumulation, pixel modes, scissor, hints) are
 //! accepted and keep nothing.
@@ -23,7 +23,14 @@ pub(crate) const MAX_ATTRIB_STACK_DEPTH: usize = 16;
 /// The enables GL files under each group besides `GL_ENABLE_BIT` (GL 1.1 tables 6.6–6.19).
 const POINT_ENABLES: &[GLenum] = &[GL_POINT_SMOOTH];
 const LINE_ENABLES: &[GLenum] = &[GL_LINE_SMOOTH, GL_LINE_STIPPLE];
-const POLYGON_ENABLES: &[GLenum] = &[GL_CULL_FACE, GL_POLYGON_SMOOTH];
+const POLYGON_ENABLES: &[GLenum] = &[
+    GL_CULL_FACE,
+    GL_POLYGON_SMOOTH,
+    GL_POLYGON_OFFSET_POINT,
+    GL_POLYGON_OFFSET_LINE,
+    GL_POLYGON_OFFSET_FILL,
+    GL_POLYGON_STIPPLE,
+];
 const LIGHTING_ENABLES: &[GLenum] = &[
     GL_LIGHTING,
     GL_COLOR_MATERIAL,
@@ -38,7 +45,18 @@ const LIGHTING_ENABLES: &[GLenum] = &[
 ];
 const FOG_ENABLES: &[GLenum] = &[GL_FOG];
 const DEPTH_ENABLES: &[GLenum] = &[GL_DEPTH_TEST];
-const TRANSFORM_ENABLES: &[GLenum] = &[GL_NORMALIZE, GL_RESCALE_NORMAL];
+const TRANSFORM_ENABLES: &[GLenum] = &[
+    GL_NORMALIZE,
+    GL_RESCALE_NORMAL,
+    GL_CLIP_PLANE0,
+    GL_CLIP_PLANE1,
+    GL_CLIP_PLANE2,
+    GL_CLIP_PLANE3,
+    GL_CLIP_PLANE4,
+    GL_CLIP_PLANE5,
+    GL_CLIP_PLANE5 + 1,
+    GL_CLIP_PLANE5 + 2,
+];
 const COLOR_ENABLES: &[GLenum] = &[GL_BLEND, GL_ALPHA_TEST, GL_DITHER];
 const TEXTURE_ENABLES: &[GLenum] =
     &[GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q];
@@ -49,7 +67,11 @@ const TEXTURE_ENABLES: &[GLenum] =
 struct RasterValues {
     point_size: f32,
     line_width: f32,
+    line_stipple: (i32, u16),
     polygon: ([GLenum; 2], GLenum, GLenum),
+    polygon_offset: (f32, f32),
+    clip_planes: [[f32; 4]; super::clip::MAX_CLIP_PLANES],
+    polygon_stipple: [u32; 32],
     shade_model: GLenum,
     depth: (GLenum, f32),
     viewport: ([i32; 4], [f32; 2]),
@@ -116,7 +138,11 @@ impl Gl {
         let raster = RasterValues {
             point_size: r.point_size,
             line_width: r.line_width,
+            line_stipple: r.line_stipple,
             polygon: (r.polygon_mode, r.front_face, r.cull_face),
+            polygon_offset: r.polygon_offset,
+            clip_planes: r.clip_planes,
+            polygon_stipple: r.polygon_stipple,
             shade_model: r.shade_model,
             depth: (r.depth_func, r.clear_depth),
             viewport: (r.viewport, r.depth_range),
@@ -164,10 +190,14 @@ impl Gl {
             r.point_size = v.point_size;
         }
         if has(GL_LINE_BIT) {
-            r.line_width = v.line_width;
+            (r.line_width, r.line_stipple) = (v.line_width, v.line_stipple);
         }
         if has(GL_POLYGON_BIT) {
             (r.polygon_mode, r.front_face, r.cull_face) = v.polygon;
+            r.polygon_offset = v.polygon_offset;
+        }
+        if has(GL_POLYGON_STIPPLE_BIT) {
+            r.polygon_stipple = v.polygon_stipple;
         }
         if has(GL_LIGHTING_BIT) {
             r.shade_model = v.shade_model;
@@ -190,6 +220,7 @@ impl Gl {
         }
         if has(GL_TRANSFORM_BIT) {
             self.matrices.set_mode(saved.matrix_mode);
+            self.raster.clip_planes = v.clip_planes;
         }
         if has(GL_LIST_BIT) {
             self.set_list_base_value(saved.list_base);

@@ -36,13 +36,16 @@ pub(crate) const KNOWN: &[GLenum] = &[
     GL_TEXTURE_1D,
     GL_TEXTURE_2D,
     GL_POLYGON_OFFSET_FILL,
+    GL_POLYGON_OFFSET_LINE,
+    GL_POLYGON_OFFSET_POINT,
+    GL_POLYGON_STIPPLE,
     GL_RESCALE_NORMAL,
     GL_MULTISAMPLE,
 ];
 
 impl Caps {
     fn known(cap: GLenum) -> bool {
-        KNOWN.contains(&cap) || (GL_LIGHT0..=GL_LIGHT7).contains(&cap)
+        KNOWN.contains(&cap) || (GL_LIGHT0..=GL_LIGHT7).contains(&cap) || super::clip::plane_index(cap).is_some()
     }
 
     pub(crate) fn is_on(&self, cap: GLenum) -> bool {

@@ -4,6 +4,7 @@
 
 use super::fragment::Fog;
 use super::lighting::Lighting;
+use super::offset::PolygonOffset;
 use super::texture::BoundTexture;
 use super::types::{GLbitfield, GLenum};
 use super::vertex::Vertex;
@@ -19,6 +20,18 @@ pub struct Primitive {
     /// Number of vertices (may be too few to draw anything, as in GL).
     pub count: usize,
     /// Index in [`Frame::states`] of the GL state the primitive is drawn with.
+    pub state: usize,
+}
+
+/// A `glMaterial` call between `begin` and `end`: from vertex `vertex` of primitive
+/// `primitive` on, vertices are lit with the lighting of [`Frame::states`]`[state]`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct MaterialChange {
+    /// Index in [`Frame::primitives`].
+    pub primitive: usize,
+    /// The first vertex (counted in the primitive) the new material applies to.
+    pub vertex: usize,
+    /// Index in [`Frame::states`] of the state holding the new material.
     pub state: usize,
 }
 
@@ -63,6 +76,19 @@ pub struct DrawState {
     pub alpha_test: Option<(GLenum, f32)>,
     /// Fog when `GL_FOG` is enabled.
     pub fog: Option<Fog>,
+    /// `glLineStipple`'s (factor, pattern) when `GL_LINE_STIPPLE` is enabled.
+    pub line_stipple: Option<(i32, u16)>,
+    /// `GL_POINT_SMOOTH` enabled.
+    pub point_smooth: bool,
+    /// `GL_LINE_SMOOTH` enabled.
+    pub line_smooth: bool,
+    /// `glPolygonOffset` when any of its enables is on.
+    pub polygon_offset: Option<PolygonOffset>,
+    /// The enabled clip planes in eye coordinates, in plane order.
+    pub clip_planes: Vec<[f32; 4]>,
+    /// `glPolygonStipple`'s mask when `GL_POLYGON_STIPPLE` is enabled: row y, bit x for window
+    /// pixel (x, y) modulo 32.
+    pub polygon_stipple: Option<[u32; 32]>,
 }
 
 /// Framebuffer operations and draws, in program order.
@@ -117,6 +143,8 @@ pub struct Frame {
     /// The grids `glEvalMesh` drew, each point stored once (see [`Frame::expanded`] for the
     /// primitives GL would have issued).
     pub meshes: Vec<GridMesh>,
+    /// Materials changed between `begin` and `end`, in order.
+    pub material_changes: Vec<MaterialChange>,
 }
 
 /// What a `glEvalMesh` grid draws.
@@ -199,6 +227,12 @@ impl Frame {
         &self.vertices[primitive.first..primitive.first + primitive.count]
     }
 
+    /// The material changes inside primitive `index`, as (first vertex, state index).
+    #[must_use]
+    pub fn material_changes_of(&self, index: usize) -> Vec<(usize, usize)> {
+        self.material_changes.iter().filter(|c| c.primitive == index).map(|c| (c.vertex, c.state)).collect()
+    }
+
     /// Iterates over (primitive, its vertices).
     pub fn iter(&self) -> impl Iterator<Item = (&Primitive, &[Vertex])> {
         self.primitives.iter().map(move |p| (p, self.vertices_of(p)))
@@ -212,6 +246,7 @@ impl Frame {
         self.states.clear();
         self.commands.clear();
         self.meshes.clear();
+        self.material_changes.clear();
     }
 
     /// The frame with every mesh replaced by the primitives GL issues for it (deferred meshes
@@ -225,6 +260,10 @@ impl Frame {
                 Command::Draw(i) => {
                     let p = self.primitives[i];
                     out.push_primitive(p.mode, p.state, self.vertices_of(&p).iter().copied());
+                    let primitive = out.primitives.len() - 1;
+                    for (vertex, state) in self.material_changes_of(i) {
+                        out.material_changes.push(MaterialChange { primitive, vertex, state });
+                    }
                 }
                 Command::Mesh(i) => {
                     let mesh = &self.meshes[i];

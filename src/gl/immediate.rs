@@ -2,7 +2,7 @@
 //! texture coordinate (GL 1.1 spec §2.6–2.7).
 
 use super::consts::*;
-use super::frame::{Call, Primitive};
+use super::frame::{Call, MaterialChange, Primitive};
 use super::lists::ListCommand;
 use super::types::*;
 use super::vertex::Vertex;
@@ -55,6 +55,20 @@ impl Gl {
         if let Some(p) = self.open_primitive {
             self.frame.vertices.push(v);
             self.frame.primitives[p].count += 1;
+        }
+    }
+
+    /// Inside `begin`/`end`, a material change applies from the primitive's next vertex on
+    /// (GL 1.1 §2.13.2: each vertex is lit with the material current when it is issued):
+    /// recorded as a [`MaterialChange`] naming the state the following vertices are lit with.
+    pub(crate) fn note_material_change(&mut self) {
+        let Some(p) = self.open_primitive else { return };
+        let state = self.current_state_index();
+        let vertex = self.frame.primitives[p].count;
+        let change = MaterialChange { primitive: p, vertex, state };
+        match self.frame.material_changes.last_mut() {
+            Some(last) if last.primitive == p && last.vertex == vertex => *last = change,
+            _ => self.frame.material_changes.push(change),
         }
     }
 

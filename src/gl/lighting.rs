@@ -204,11 +204,13 @@ impl Gl {
             }
         }
         self.touch_state();
+        self.note_material_change();
     }
 
-    /// `glMaterialf` (`GL_SHININESS`).
+    /// `glMaterialf`: `GL_SHININESS`; a colour name gets (param, 0, 0, 0), as in Mesa.
     pub fn material_f(&mut self, face: GLenum, pname: GLenum, param: GLfloat) {
-        self.material_fv(face, pname, &[param]);
+        // Mesa passes (param, 0, 0, 0), so a colour name sets that colour without an error.
+        self.material_fv(face, pname, &[param, 0.0, 0.0, 0.0]);
     }
 
     /// `glLightModelfv`: `GL_LIGHT_MODEL_AMBIENT` (4 values), `_LOCAL_VIEWER`, `_TWO_SIDE`.

@@ -58,6 +58,11 @@ pub(crate) enum ListCommand {
     DepthRange(f64, f64),
     PointSize(f32),
     LineWidth(f32),
+    LineStipple(GLint, GLushort),
+    PolygonOffset(f32, f32),
+    ClipPlane(GLenum, Vec<f64>),
+    /// `glPolygonStipple` with its mask unpacked at compile time (`None`: too short).
+    PolygonStipple(Option<[u32; 32]>),
     PolygonMode(GLenum, GLenum),
     FrontFace(GLenum),
     CullFace(GLenum),
@@ -401,6 +406,14 @@ impl Gl {
             C::DepthRange(near, far) => self.depth_range(*near, *far),
             C::PointSize(size) => self.point_size(*size),
             C::LineWidth(width) => self.line_width(*width),
+            C::LineStipple(factor, pattern) => self.line_stipple(*factor, *pattern),
+            C::PolygonOffset(factor, units) => self.polygon_offset(*factor, *units),
+            C::ClipPlane(plane, equation) => self.clip_plane(*plane, equation),
+            C::PolygonStipple(rows) => {
+                if !self.reject_inside_begin_end() {
+                    self.set_polygon_stipple(*rows);
+                }
+            }
             C::PolygonMode(face, mode) => self.polygon_mode(*face, *mode),
             C::FrontFace(mode) => self.front_face(*mode),
             C::CullFace(mode) => self.cull_face(*mode),

@@ -9,6 +9,7 @@
 mod attrib;
 mod binding;
 mod bitmap;
+mod clip;
 pub mod consts;
 mod enable;
 mod eval;
@@ -19,9 +20,11 @@ mod lighting;
 pub(crate) mod lists;
 mod matrix;
 mod mesh_job;
+mod offset;
 mod pixels;
 mod raster;
 mod raster_pos;
+mod stipple;
 mod texgen;
 mod texture;
 pub mod types;
@@ -29,10 +32,11 @@ mod vertex;
 
 pub use eval::{MapTarget, Slot};
 pub use fragment::Fog;
-pub use frame::{Call, Command, DrawState, Frame, GridMesh, MeshMode, MeshVertices, Primitive};
+pub use frame::{Call, Command, DrawState, Frame, GridMesh, MaterialChange, MeshMode, MeshVertices, Primitive};
 pub use lighting::{Light, Lighting, Material};
 pub use lists::MAX_LIST_NESTING;
 pub use mesh_job::{MapSample, MeshJob};
+pub use offset::PolygonOffset;
 pub use texgen::{TexGen, TexGenCoord, TexGenState};
 pub use texture::{BoundTexture, TexLevel, TexParams, MAX_TEXTURE_SIZE};
 pub use vertex::Vertex;
@@ -238,6 +242,7 @@ impl Gl {
             frame.calls.clear();
             frame.states.clear();
             frame.commands.clear();
+            frame.material_changes.clear();
             self.frame = frame;
         }
     }
@@ -294,6 +299,12 @@ impl Gl {
             blend: self.enabled_blend(),
             alpha_test: self.enabled_alpha_test(),
             fog: self.enabled_fog(),
+            line_stipple: self.enabled_line_stipple(),
+            point_smooth: self.caps.is_on(GL_POINT_SMOOTH),
+            line_smooth: self.caps.is_on(GL_LINE_SMOOTH),
+            polygon_offset: self.enabled_polygon_offset(),
+            clip_planes: self.enabled_clip_planes(),
+            polygon_stipple: self.enabled_polygon_stipple(),
         }
     }
 
@@ -381,7 +392,8 @@ impl Gl {
             out[0] = f64::from(MAX_EVAL_ORDER);
             return Some(1);
         }
-        if let Some(value) = self.list_query(pname).or_else(|| self.texture_query(pname)) {
+        let value = self.list_query(pname).or_else(|| self.texture_query(pname));
+        if let Some(value) = value.or_else(|| self.primitive_mode_query(pname)) {
             out[0] = value;
             return Some(1);
         }

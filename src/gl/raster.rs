@@ -22,6 +22,14 @@ pub(crate) struct RasterState {
     pub depth_func: GLenum,
     pub clear_color: [f32; 4],
     pub clear_depth: f32,
+    /// `glLineStipple`: the repeat factor (clamped to 1..=256) and the pattern.
+    pub line_stipple: (i32, u16),
+    /// `glPolygonOffset`: factor and units.
+    pub polygon_offset: (f32, f32),
+    /// `glClipPlane`: the planes in eye coordinates, as transformed at the call.
+    pub clip_planes: [[f32; 4]; super::clip::MAX_CLIP_PLANES],
+    /// `glPolygonStipple`: row y, bit x for window pixel (x, y) modulo 32.
+    pub polygon_stipple: [u32; 32],
 }
 
 impl RasterState {
@@ -38,6 +46,10 @@ impl RasterState {
             depth_func: GL_LESS,
             clear_color: [0.0; 4],
             clear_depth: 1.0,
+            line_stipple: (1, 0xFFFF),
+            polygon_offset: (0.0, 0.0),
+            clip_planes: [[0.0; 4]; super::clip::MAX_CLIP_PLANES],
+            polygon_stipple: [u32::MAX; 32],
         }
     }
 }

@@ -40,19 +40,26 @@ impl Default for RasterPos {
 }
 
 /// The transforms a raster position goes through.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Debug)]
 pub(crate) struct Transform {
     pub modelview: Mat4,
     pub projection: Mat4,
     pub viewport: [i32; 4],
     pub depth_range: [f32; 2],
+    /// The enabled clip planes (eye coordinates).
+    pub clip_planes: Vec<[f32; 4]>,
 }
 
 impl Transform {
     /// Window x, y, z and clip w of object point `p`, and its eye distance; `None` when the
-    /// point is outside the clip volume (Mesa's `viewclip_point_z`, then `_xy`: bounds included).
+    /// point is outside the clip volume (Mesa's `viewclip_point_z`, then `_xy`: bounds included)
+    /// or outside an enabled clip plane (GL 1.1 §2.12; measured on Mesa: a plane through the
+    /// point keeps it).
     pub fn project(&self, p: [f32; 4]) -> Option<([f32; 4], f32)> {
         let eye = self.modelview * Vec4::from(p);
+        if self.clip_planes.iter().any(|plane| Vec4::from_array(*plane).dot(eye) < 0.0) {
+            return None;
+        }
         let clip = self.projection * eye;
         let outside = |c: f32| c > clip.w || c < -clip.w;
         if outside(clip.z) || outside(clip.x) || outside(clip.y) {
@@ -75,6 +82,7 @@ impl Gl {
             projection: self.matrices.projection(),
             viewport: self.raster.viewport,
             depth_range: self.raster.depth_range,
+            clip_planes: self.enabled_clip_planes(),
         }
     }
 
@@ -235,6 +243,19 @@ mod tests {
         // x: (5 / 10) of 100 + 10; y: (5 / 10) of 50 + 20; z: ndc −0.5 → 0.625 in [0.5, 1].
         assert_eq!(position(&mut gl), ([60.0, 45.0, 0.625, 1.0], true));
         assert_eq!(gl.get_error(), GL_NO_ERROR);
+    }
+
+    /// As real Mesa: with the plane x ≥ 0, x = −0.5 is invalid, x = 0.5 and x = 0 are valid.
+    #[test]
+    fn outside_a_clip_plane_the_position_is_invalid() {
+        let mut gl = Gl::new(16, 16);
+        gl.clip_plane(GL_CLIP_PLANE0, &[1.0, 0.0, 0.0, 0.0]);
+        gl.enable(GL_CLIP_PLANE0);
+        let valid = |gl: &mut Gl, x: f32| {
+            gl.raster_pos2f(x, 0.0);
+            position(gl).1
+        };
+        assert_eq!([valid(&mut gl, -0.5), valid(&mut gl, 0.5), valid(&mut gl, 0.0)], [false, true, true]);
     }
 
     #[test]

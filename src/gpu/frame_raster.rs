@@ -46,8 +46,9 @@ impl FrameRaster {
         device: &wgpu::Device,
         queue: &wgpu::Queue,
         list: &DrawList,
+        height: u32,
     ) -> Vec<wgpu::BindGroup> {
-        self.textures.bind_groups(device, queue, &self.texture_layout, &list.fragments)
+        self.textures.bind_groups(device, queue, &self.texture_layout, &list.fragments, height)
     }
 
     /// The layout of the texture bind groups (the mesh rasteriser's group 1 too).
@@ -73,7 +74,8 @@ fn make_pipeline(
     layout: &wgpu::PipelineLayout,
     (topology, depth, format, blend): PipelineKey,
 ) -> wgpu::RenderPipeline {
-    let attributes = wgpu::vertex_attr_array![0 => Float32x4, 1 => Float32x4, 2 => Float32x4, 3 => Float32];
+    let attributes =
+        wgpu::vertex_attr_array![0 => Float32x4, 1 => Float32x4, 2 => Float32x4, 3 => Float32, 4 => Float32x4];
     let vertex = wgpu::VertexBufferLayout {
         array_stride: std::mem::size_of::<RasterVertex>() as wgpu::BufferAddress,
         step_mode: wgpu::VertexStepMode::Vertex,

@@ -175,9 +175,18 @@ pub(crate) struct GpuFragment {
     pub alpha_ref: f32,
     pub fog_start: f32,
     pub fog_end: f32,
-    pub pad0: f32,
+    /// 0 none, 1 a smooth point's coverage, 2 a smooth line's.
+    pub coverage: u32,
     pub pad1: f32,
     pub fog_color: [f32; 4],
+    /// 1 with a polygon stipple.
+    pub stipple: u32,
+    /// The target's height in pixels (the stipple counts rows from the bottom).
+    pub height: u32,
+    pub pad2: u32,
+    pub pad3: u32,
+    /// The stipple's 32 rows, four to a vector.
+    pub stipple_rows: [[u32; 4]; 8],
 }
 
 #[cfg(test)]
@@ -271,9 +280,14 @@ mod tests {
                 alpha_ref,
                 fog_start,
                 fog_end,
-                pad0,
+                coverage,
                 pad1,
-                fog_color
+                fog_color,
+                stipple,
+                height,
+                pad2,
+                pad3,
+                stipple_rows
             }
         );
     }

@@ -160,7 +160,7 @@ impl Renderer {
         keep: bool,
     ) {
         let buffer = vertex_buffer(&self.device, list, target.size);
-        let bind_groups = self.frames.texture_bind_groups(&self.device, &self.queue, list);
+        let bind_groups = self.frames.texture_bind_groups(&self.device, &self.queue, list, target.size.1);
         for pass in split_passes(&list.ops, keep) {
             for item in &pass.draws {
                 if let PassItem::Batch(batch) = item {

@@ -7,13 +7,17 @@ use super::layout::GpuFragment;
 use crate::gl::consts::*;
 use crate::gl::types::GLenum;
 use crate::gl::{BoundTexture, TexParams};
-use crate::render::assemble::FragmentState;
+use crate::render::assemble::{FragmentState, Smooth};
 use std::collections::HashMap;
 use wgpu::util::DeviceExt;
 
 impl GpuFragment {
-    fn of(fragment: &FragmentState) -> Self {
-        let mut out = Self::default();
+    fn of(fragment: &FragmentState, height: u32) -> Self {
+        let mut out = Self { height, ..Self::default() };
+        if let Some(rows) = fragment.polygon_stipple {
+            out.stipple = 1;
+            out.stipple_rows = std::array::from_fn(|k| std::array::from_fn(|i| rows[4 * k + i]));
+        }
         if let Some(texture) = &fragment.texture {
             out.set_texture(texture);
         }
@@ -28,6 +32,11 @@ impl GpuFragment {
         if let Some((func, reference)) = fragment.alpha_test {
             (out.alpha_func, out.alpha_ref) = (func - GL_NEVER + 1, reference);
         }
+        out.coverage = match fragment.smooth {
+            Smooth::None => 0,
+            Smooth::Point => 1,
+            Smooth::Line => 2,
+        };
         out
     }
 
@@ -99,13 +108,15 @@ pub(crate) struct TextureCache {
 
 impl TextureCache {
     /// One bind group per fragment state of the frame (in the order of `fragments`), then one
-    /// for batches without any. Textures of earlier frames not drawn now are dropped.
+    /// for batches without any, for a target `height` pixels tall (the polygon stipple's rows
+    /// count from its bottom). Textures of earlier frames not drawn now are dropped.
     pub(crate) fn bind_groups(
         &mut self,
         device: &wgpu::Device,
         queue: &wgpu::Queue,
         layout: &wgpu::BindGroupLayout,
         fragments: &[FragmentState],
+        height: u32,
     ) -> Vec<wgpu::BindGroup> {
         let drawn = |key: u64| key == 0 || fragments.iter().any(|f| f.texture.as_ref().is_some_and(|t| t.key == key));
         self.views.retain(|key, _| drawn(*key));
@@ -116,7 +127,7 @@ impl TextureCache {
             let view = self.views.entry(t.key).or_insert_with(|| upload(device, queue, t)).clone();
             let key = (t.params, t.one_d);
             let sampler = self.samplers.entry(key).or_insert_with(|| sampler(device, &t.params, t.one_d));
-            let uniform = fragment.map(GpuFragment::of).unwrap_or_default();
+            let uniform = fragment.map(|f| GpuFragment::of(f, height)).unwrap_or_default();
             groups.push(bind_group(device, layout, &view, sampler, uniform));
         }
         groups

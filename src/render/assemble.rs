@@ -7,7 +7,10 @@
 //! polygon edges (no interior diagonals of quads and polygons), and GL's aliased wide lines
 //! (widened along the minor axis) and square points, which wgpu does not have, as quads.
 
+use super::corner::Corner;
 use super::shade::{ShadedVertex, Shader};
+use super::stipple::Stipple;
+use super::{clip, offset, smooth};
 use crate::gl::consts::*;
 use crate::gl::types::GLenum;
 use crate::gl::{BoundTexture, Command, DrawState, Fog, Frame, MeshVertices, Vertex};
@@ -28,6 +31,21 @@ pub struct RasterVertex {
     pub tex: [f32; 4],
     /// The fog coordinate: eye-space distance.
     pub fog: f32,
+    /// A smooth point's or line's coverage coordinates (zero otherwise; see [`Smooth`]).
+    pub aa: [f32; 4],
+}
+
+/// Which coverage a batch's fragments compute from [`RasterVertex::aa`] (Mesa's smooth
+/// points and lines, `render::smooth`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum Smooth {
+    /// None: the fragments keep their alpha.
+    #[default]
+    None,
+    /// A smooth point's square: (u, v, k, 1).
+    Point,
+    /// A smooth line's rectangle: (across, half width, along, half length).
+    Line,
 }
 
 /// What a batch draws.
@@ -70,6 +88,10 @@ pub struct FragmentState {
     pub fog: Option<Fog>,
     /// The alpha test's function and reference.
     pub alpha_test: Option<(GLenum, f32)>,
+    /// The coverage of smooth points or lines.
+    pub smooth: Smooth,
+    /// The polygon stipple of filled polygons: row y, bit x for window pixel (x, y) mod 32.
+    pub polygon_stipple: Option<[u32; 32]>,
 }
 
 /// A framebuffer operation.
@@ -121,7 +143,12 @@ pub fn assemble_frame(frame: &Frame, gpu_meshes: &[usize]) -> DrawList {
             Command::Draw(index) => {
                 if let Some(p) = frame.primitives.get(index) {
                     if let Some(state) = frame.states.get(p.state) {
-                        out.primitive(p.mode, frame.vertices_of(p), state);
+                        let materials: Vec<(usize, &DrawState)> = frame
+                            .material_changes_of(index)
+                            .into_iter()
+                            .filter_map(|(vertex, s)| Some((vertex, frame.states.get(s)?)))
+                            .collect();
+                        out.lit_primitive(p.mode, frame.vertices_of(p), state, &materials);
                     }
                 }
             }
@@ -129,7 +156,8 @@ pub fn assemble_frame(frame: &Frame, gpu_meshes: &[usize]) -> DrawList {
                 let Some(mesh) = frame.meshes.get(index) else { continue };
                 let Some(state) = frame.states.get(mesh.state) else { continue };
                 if gpu_meshes.binary_search(&index).is_ok() && matches!(mesh.vertices, MeshVertices::Deferred(_)) {
-                    let fragment = out.fragment_index(state);
+                    // A mesh with smoothing or a polygon stipple is never left to the GPU.
+                    let fragment = out.fragment_index(state, (Smooth::None, None));
                     out.list.ops.push(Op::GpuMesh { mesh: index, fragment });
                     continue;
                 }
@@ -149,15 +177,6 @@ struct Assembler {
     list: DrawList,
 }
 
-/// A shaded vertex with the colour chosen for its primitive.
-#[derive(Clone, Copy)]
-struct Corner {
-    clip: Vec4,
-    color: Vec4,
-    tex: Vec4,
-    fog: f32,
-}
-
 impl Assembler {
     fn clear(&mut self, mask: u32, color: [f32; 4], depth: f32) {
         let color = (mask & GL_COLOR_BUFFER_BIT != 0).then_some(color);
@@ -168,13 +187,31 @@ impl Assembler {
     }
 
     fn primitive(&mut self, mode: GLenum, vertices: &[crate::gl::Vertex], state: &DrawState) {
-        let shader = Shader::new(state);
-        let v: Vec<ShadedVertex> = vertices.iter().map(|v| shader.shade(v)).collect();
+        self.lit_primitive(mode, vertices, state, &[]);
+    }
+
+    /// A primitive whose vertices from `materials[k].0` on are lit with the lighting of
+    /// `materials[k].1` (`glMaterial` between `begin` and `end`); everything else is `state`'s.
+    fn lit_primitive(
+        &mut self,
+        mode: GLenum,
+        vertices: &[crate::gl::Vertex],
+        state: &DrawState,
+        materials: &[(usize, &DrawState)],
+    ) {
+        let shaders: Vec<Shader> =
+            std::iter::once(Shader::new(state)).chain(materials.iter().map(|(_, s)| Shader::new(s))).collect();
+        let shader_of = |i: usize| materials.iter().rposition(|&(first, _)| first <= i).map_or(0, |k| k + 1);
+        let v: Vec<ShadedVertex> = vertices.iter().enumerate().map(|(i, v)| shaders[shader_of(i)].shade(v)).collect();
         let n = v.len();
-        let mut ctx = PrimitiveContext { out: self, state, v: &v };
+        let mut ctx = PrimitiveContext { out: self, state, v: &v, stipple: Stipple::default() };
         match mode {
             GL_POINTS => (0..n).for_each(|i| ctx.point(i)),
-            GL_LINES => (0..n / 2).for_each(|i| ctx.segment(2 * i, 2 * i + 1, 2 * i + 1)),
+            GL_LINES => (0..n / 2).for_each(|i| {
+                // Each separate segment restarts the stipple (GL 1.1 §3.4.2).
+                ctx.stipple.reset();
+                ctx.segment(2 * i, 2 * i + 1, 2 * i + 1);
+            }),
             GL_LINE_STRIP => (1..n).for_each(|i| ctx.segment(i - 1, i, i)),
             GL_LINE_LOOP if n >= 2 => {
                 (1..n).for_each(|i| ctx.segment(i - 1, i, i));
@@ -202,15 +239,27 @@ impl Assembler {
 
     /// Appends vertices to the last batch if it has the same state, else starts a batch.
     fn push(&mut self, state: &DrawState, topology: Topology, corners: &[Corner]) {
+        self.push_as(state, topology, (Smooth::None, None), corners);
+    }
+
+    /// As [`Assembler::push`], with a smooth coverage or a polygon stipple for the fragments.
+    fn push_as(
+        &mut self,
+        state: &DrawState,
+        topology: Topology,
+        extra: (Smooth, Option<[u32; 32]>),
+        corners: &[Corner],
+    ) {
         let depth_range = state.depth_range;
-        let fragment = self.fragment_index(state);
+        let fragment = self.fragment_index(state, extra);
         let batch_key = (state.viewport, state.depth_test, topology, fragment, state.blend);
         let first = self.list.vertices.len() as u32;
         self.list.vertices.extend(corners.iter().map(|c| RasterVertex {
-            clip: depth_mapped(c.clip, depth_range),
+            clip: offset_depth(depth_mapped(c.clip, depth_range), c.depth_offset),
             color: c.color.to_array(),
             tex: c.tex.to_array(),
             fog: c.fog,
+            aa: c.aa.to_array(),
         }));
         let added = corners.len() as u32;
         if let Some(Op::Draw(last)) = self.list.ops.last_mut() {
@@ -226,18 +275,27 @@ impl Assembler {
 
     /// The index of the state's fragment operations in the list, adding them if they are new
     /// (searched from the last: consecutive primitives share them); `None` without any.
-    fn fragment_index(&mut self, state: &DrawState) -> Option<u32> {
-        if state.texture.is_none() && state.fog.is_none() && state.alpha_test.is_none() {
+    fn fragment_index(
+        &mut self,
+        state: &DrawState,
+        (smooth, polygon_stipple): (Smooth, Option<[u32; 32]>),
+    ) -> Option<u32> {
+        let plain = smooth == Smooth::None && polygon_stipple.is_none();
+        if state.texture.is_none() && state.fog.is_none() && state.alpha_test.is_none() && plain {
             return None;
         }
         let fragments = &mut self.list.fragments;
         let same = |f: &FragmentState| {
-            f.texture.as_ref() == state.texture.as_ref() && f.fog == state.fog && f.alpha_test == state.alpha_test
+            f.texture.as_ref() == state.texture.as_ref()
+                && f.fog == state.fog
+                && f.alpha_test == state.alpha_test
+                && f.smooth == smooth
+                && f.polygon_stipple == polygon_stipple
         };
         let found = fragments.iter().rposition(same);
         Some(found.unwrap_or_else(|| {
             let (texture, fog, alpha_test) = (state.texture.clone(), state.fog, state.alpha_test);
-            fragments.push(FragmentState { texture, fog, alpha_test });
+            fragments.push(FragmentState { texture, fog, alpha_test, smooth, polygon_stipple });
             fragments.len() - 1
         }) as u32)
     }
@@ -249,10 +307,17 @@ fn depth_mapped(clip: Vec4, [near, far]: [f32; 2]) -> [f32; 4] {
     [clip.x, clip.y, z, clip.w]
 }
 
+/// Adds a polygon offset (window depth units) to a clip position already in wgpu's depth.
+fn offset_depth(mut clip: [f32; 4], offset: f32) -> [f32; 4] {
+    clip[2] += offset * clip[3];
+    clip
+}
+
 struct PrimitiveContext<'a, 'b> {
     out: &'a mut Assembler,
     state: &'b DrawState,
     v: &'b [ShadedVertex],
+    stipple: Stipple,
 }
 
 impl PrimitiveContext<'_, '_> {
@@ -262,11 +327,27 @@ impl PrimitiveContext<'_, '_> {
 
     /// A point of the point size: one pixel natively, else a square in window space.
     fn point(&mut self, i: usize) {
-        let sv = self.v[i];
-        self.point_at(Corner { clip: sv.clip, color: sv.front, tex: sv.tex, fog: sv.fog });
+        let c = self.corner(i, self.v[i].front);
+        self.point_at(c);
     }
 
+    /// Vertex `i` as a corner of the colour chosen for it.
+    fn corner(&self, i: usize, color: Vec4) -> Corner {
+        let v = &self.v[i];
+        Corner { clip: v.clip, eye: v.eye, color, tex: v.tex, fog: v.fog, depth_offset: 0.0, aa: Vec4::ZERO }
+    }
+
+    /// A point is clipped whole when its vertex is outside a clip plane (GL 1.1 §2.11).
     fn point_at(&mut self, c: Corner) {
+        if !clip::point_inside(&c, &self.state.clip_planes) {
+            return;
+        }
+        if self.state.point_smooth {
+            if let Some(quad) = smooth::point_quad(c, self.state.point_size, self.state.viewport) {
+                self.out.push_as(self.state, Topology::Triangles, (Smooth::Point, None), &quad);
+            }
+            return;
+        }
         let size = self.state.point_size.round().max(1.0);
         if size <= 1.0 {
             return self.out.push(self.state, Topology::Points, &[c]);
@@ -285,9 +366,7 @@ impl PrimitiveContext<'_, '_> {
 
     /// A segment of a line primitive; `provoking` gives its colour under flat shading.
     fn segment(&mut self, a: usize, b: usize, provoking: usize) {
-        let pick =
-            |i: usize| Corner { clip: self.v[i].clip, color: self.v[i].front, tex: self.v[i].tex, fog: self.v[i].fog };
-        let (mut ca, mut cb) = (pick(a), pick(b));
+        let (mut ca, mut cb) = (self.corner(a, self.v[a].front), self.corner(b, self.v[b].front));
         if self.flat() {
             ca.color = self.v[provoking].front;
             cb.color = ca.color;
@@ -295,9 +374,27 @@ impl PrimitiveContext<'_, '_> {
         self.line(ca, cb);
     }
 
-    /// One line of the line width: one pixel natively, else GL's aliased wide line, a
-    /// parallelogram widened along the minor axis by the width in pixels.
+    /// One line: clipped by the clip planes, then cut into its stippled pieces (Mesa's order:
+    /// the stipple counts the clipped line's length).
     fn line(&mut self, a: Corner, b: Corner) {
+        let Some((a, b)) = clip::segment(a, b, &self.state.clip_planes) else { return };
+        let Some(stipple) = self.state.line_stipple else { return self.raster_line(a, b) };
+        let Some((a, b)) = clip::view_volume(a, b) else { return };
+        let euclidean = self.state.line_smooth;
+        for (p, q) in self.stipple.pieces(a, b, self.state.viewport, stipple, euclidean) {
+            self.raster_line(p, q);
+        }
+    }
+
+    /// A line of the line width: one pixel natively, else GL's aliased wide line, a
+    /// parallelogram widened along the minor axis by the width in pixels.
+    fn raster_line(&mut self, a: Corner, b: Corner) {
+        if self.state.line_smooth {
+            if let Some(quad) = smooth::line_quad(a, b, self.state.line_width, self.state.viewport) {
+                self.out.push_as(self.state, Topology::Triangles, (Smooth::Line, None), &quad);
+            }
+            return;
+        }
         let width = self.state.line_width.round().max(1.0);
         if width <= 1.0 {
             return self.out.push(self.state, Topology::Lines, &[a, b]);
@@ -332,16 +429,17 @@ impl PrimitiveContext<'_, '_> {
             }
         }
         let colour_of = |i: usize| if front { self.v[i].front } else { self.v[i].back };
-        let corners: Vec<Corner> = idx
-            .iter()
-            .map(|&i| Corner {
-                clip: self.v[i].clip,
-                color: colour_of(if self.flat() { provoking } else { i }),
-                tex: self.v[i].tex,
-                fog: self.v[i].fog,
-            })
-            .collect();
+        let corners: Vec<Corner> =
+            idx.iter().map(|&i| self.corner(i, colour_of(if self.flat() { provoking } else { i }))).collect();
+        let mut corners = clip::polygon(corners, &self.state.clip_planes);
+        if corners.len() < 3 {
+            return;
+        }
         let mode = self.state.polygon_mode[usize::from(!front)];
+        if let Some(o) = self.state.polygon_offset.filter(|o| o.applies_to(mode)) {
+            let depth = offset::polygon_offset(&corners, self.state.viewport, self.state.depth_range, &o);
+            corners.iter_mut().for_each(|c| c.depth_offset = depth);
+        }
         match mode {
             GL_POINT => corners.iter().for_each(|&c| self.point_at(c)),
             GL_LINE => {
@@ -352,7 +450,9 @@ impl PrimitiveContext<'_, '_> {
             _ => {
                 let tris: Vec<Corner> =
                     (1..corners.len() - 1).flat_map(|k| [corners[0], corners[k], corners[k + 1]]).collect();
-                self.out.push(self.state, Topology::Triangles, &tris);
+                // The polygon stipple applies to filled polygons only (GL 1.1 §3.5.6).
+                let extra = (Smooth::None, self.state.polygon_stipple);
+                self.out.push_as(self.state, Topology::Triangles, extra, &tris);
             }
         }
     }
@@ -450,6 +550,36 @@ mod tests {
         gl.end();
         let list = assemble(&gl.take_frame());
         assert!(list.vertices.iter().all(|v| v.color == [0.0, 0.0, 1.0, 1.0]), "last vertex of a triangle");
+    }
+
+    /// GL 1.1 §2.13: with light 0's defaults and the normal towards it, a vertex's colour is
+    /// 0.2 · 0.2 ambient + its diffuse material (alpha: the diffuse alpha). Real Mesa gives the
+    /// same in feedback mode: (1, .04, .04, 1), (.04, 1, .04, 1), (.04, .04, 1, .5), and the
+    /// point drawn after `end` keeps the last material.
+    #[test]
+    fn materials_changed_between_begin_and_end_light_the_vertices_after_them() {
+        let mut gl = Gl::new(16, 16);
+        gl.enable(GL_LIGHTING);
+        gl.enable(GL_LIGHT0);
+        gl.normal3f(0.0, 0.0, 1.0);
+        gl.begin(GL_TRIANGLES);
+        gl.material_fv(GL_FRONT, GL_DIFFUSE, &[1.0, 0.0, 0.0, 1.0]);
+        gl.vertex2f(0.0, 0.0);
+        gl.material_fv(GL_FRONT, GL_DIFFUSE, &[0.0, 1.0, 0.0, 1.0]);
+        gl.vertex2f(0.5, 0.0);
+        gl.material_fv(GL_FRONT, GL_DIFFUSE, &[0.0, 0.0, 1.0, 0.5]);
+        gl.vertex2f(0.0, 0.5);
+        gl.end();
+        gl.begin(GL_POINTS);
+        gl.vertex2f(0.2, 0.2);
+        gl.end();
+        assert_eq!(gl.get_error(), GL_NO_ERROR);
+        let list = assemble(&gl.take_frame());
+        let expected = [[1.0, 0.04, 0.04, 1.0], [0.04, 1.0, 0.04, 1.0], [0.04, 0.04, 1.0, 0.5], [0.04, 0.04, 1.0, 0.5]];
+        assert_eq!(list.vertices.len(), 4);
+        for (v, e) in list.vertices.iter().zip(expected) {
+            assert!(v.color.iter().zip(e).all(|(a, b)| (a - b).abs() < 1e-6), "{:?} vs {e:?}", v.color);
+        }
     }
 
     #[test]

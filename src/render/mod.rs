@@ -6,11 +6,16 @@
 //! home.
 
 pub(crate) mod assemble;
+mod clip;
 #[cfg(all(feature = "gpu", feature = "png"))]
 pub(crate) mod compare;
+mod corner;
+mod offset;
 mod shade;
+mod smooth;
+mod stipple;
 
-pub use assemble::{assemble, assemble_frame, Batch, DrawList, Op, RasterVertex, Topology};
+pub use assemble::{assemble, assemble_frame, Batch, DrawList, Op, RasterVertex, Smooth, Topology};
 
 #[cfg(feature = "gpu")]
 pub use crate::gpu::{tessellate_patches, Image, RenderError, Renderer};

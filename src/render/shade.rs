@@ -17,6 +17,8 @@ pub(crate) struct Shader<'a> {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) struct ShadedVertex {
     pub clip: Vec4,
+    /// The eye-space position, where clip planes are tested.
+    pub eye: Vec4,
     pub front: Vec4,
     pub back: Vec4,
     pub tex: Vec4,
@@ -44,7 +46,7 @@ impl<'a> Shader<'a> {
         let fog = eye.z.abs();
         let Some(lighting) = &self.state.lighting else {
             let c = color.clamp(Vec4::ZERO, Vec4::ONE);
-            return ShadedVertex { clip, front: c, back: c, tex, fog };
+            return ShadedVertex { clip, eye, front: c, back: c, tex, fog };
         };
         let mut n = self.normal_matrix * Vec3::from_array(v.normal);
         if self.state.normalize || self.state.rescale_normal {
@@ -53,7 +55,7 @@ impl<'a> Shader<'a> {
         let position = if eye.w != 0.0 { eye.xyz() / eye.w } else { eye.xyz() };
         let front = self.light(lighting, 0, n, position, color);
         let back = if lighting.two_side { self.light(lighting, 1, -n, position, color) } else { front };
-        ShadedVertex { clip, front, back, tex, fog }
+        ShadedVertex { clip, eye, front, back, tex, fog }
     }
 
     /// The vertex's normal in eye coordinates, normalised when `GL_NORMALIZE` or

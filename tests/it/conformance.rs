@@ -52,6 +52,8 @@ mod rationalmap;
 mod shapes;
 #[path = "../../examples/specular.rs"]
 mod specular;
+#[path = "../../examples/stipple.rs"]
+mod stipple;
 #[path = "../../examples/strokes.rs"]
 mod strokes;
 #[path = "../../examples/teapot.rs"]
@@ -236,6 +238,14 @@ fn mipmapped_nurbs_surface_matches_mesa() {
 #[test]
 fn fog_blending_and_alpha_test_match_mesa() {
     check("fogblend", fogblend::app, 0.0);
+}
+
+/// Line stipple along evaluated curves, smooth points and lines with blending, a surface cut by
+/// a clip plane in fog, and an outline over a surface pushed back by polygon offset
+/// (`Stipple.c`).
+#[test]
+fn stipple_smoothing_clip_planes_and_offset_match_mesa() {
+    check("stipple", stipple::app, 0.0);
 }
 
 /// Raster positions, GLUT bitmap fonts, `draw_pixels` and a `bitmap` from a display list

@@ -11,6 +11,7 @@ mod interactive_demo;
 mod mesa_calls;
 mod properties;
 mod raster_images;
+mod raster_modes;
 mod robustness;
 mod shaders;
 mod spec_errors;

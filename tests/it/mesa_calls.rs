@@ -150,6 +150,29 @@ fn enum_value(token: &str) -> u32 {
         ("GL_PACK_ALIGNMENT", GL_PACK_ALIGNMENT),
         ("GL_TEXTURE_BINDING_1D", GL_TEXTURE_BINDING_1D),
         ("GL_TEXTURE_BINDING_2D", GL_TEXTURE_BINDING_2D),
+        ("GL_LINE_STIPPLE", GL_LINE_STIPPLE),
+        ("GL_LINE_SMOOTH", GL_LINE_SMOOTH),
+        ("GL_POINT_SMOOTH", GL_POINT_SMOOTH),
+        ("GL_POLYGON_OFFSET_FILL", GL_POLYGON_OFFSET_FILL),
+        ("GL_POLYGON_OFFSET_LINE", GL_POLYGON_OFFSET_LINE),
+        ("GL_POLYGON_OFFSET_POINT", GL_POLYGON_OFFSET_POINT),
+        ("GL_CLIP_PLANE0", GL_CLIP_PLANE0),
+        ("GL_CLIP_PLANE1", GL_CLIP_PLANE1),
+        ("GL_CLIP_PLANE2", GL_CLIP_PLANE2),
+        ("GL_CLIP_PLANE3", GL_CLIP_PLANE3),
+        ("GL_CLIP_PLANE4", GL_CLIP_PLANE4),
+        ("GL_CLIP_PLANE5", GL_CLIP_PLANE5),
+        ("GL_LINE_STIPPLE_PATTERN", GL_LINE_STIPPLE_PATTERN),
+        ("GL_LINE_STIPPLE_REPEAT", GL_LINE_STIPPLE_REPEAT),
+        ("GL_POLYGON_OFFSET_FACTOR", GL_POLYGON_OFFSET_FACTOR),
+        ("GL_POLYGON_OFFSET_UNITS", GL_POLYGON_OFFSET_UNITS),
+        ("GL_MAX_CLIP_PLANES", GL_MAX_CLIP_PLANES),
+        ("GL_LINE_BIT", GL_LINE_BIT),
+        ("GL_POLYGON_BIT", GL_POLYGON_BIT),
+        ("GL_TRANSFORM_BIT", GL_TRANSFORM_BIT),
+        ("GL_FRONT", GL_FRONT),
+        ("GL_DIFFUSE", GL_DIFFUSE),
+        ("GL_SHININESS", GL_SHININESS),
     ];
     if let Some((_, v)) = named.iter().find(|(n, _)| *n == token) {
         return *v;
@@ -413,6 +436,16 @@ impl Runner {
                 let count = if pname == GL_TEXTURE_GEN_MODE { 1 } else { 4 };
                 values = v[..count].iter().map(|x| x.to_string()).collect();
             }
+            "line_stipple" => gl.line_stipple(a.int(), a.int() as u16),
+            "polygon_offset" => gl.polygon_offset(a.f(), a.f()),
+            "clip_plane" => gl.clip_plane(a.e(), &a.array()),
+            "get_clip_plane" => {
+                let mut eq = [0.0f64; 4];
+                gl.get_clip_plane(a.e(), &mut eq);
+                values.extend(eq.iter().map(|c| c.to_string()));
+            }
+            "load_identity" => gl.load_identity(),
+            "materialf" => gl.material_f(a.e(), a.e(), a.f()),
             "push_attrib" => gl.push_attrib(a.e()),
             "pop_attrib" => gl.pop_attrib(),
             "texgen_normal" => self.texgen_normal = true,

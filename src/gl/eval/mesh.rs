@@ -213,6 +213,12 @@ impl Gl {
         if texturing && generating.iter().any(|&cap| self.capability(cap)) {
             return false;
         }
+        // So are clip planes, polygon offset, stipple and smoothing, done by the CPU assembler.
+        let (state, smooth) =
+            (self.raster_modes_on(), self.capability(GL_POINT_SMOOTH) || self.capability(GL_LINE_SMOOTH));
+        if state || smooth {
+            return false;
+        }
         let r = &self.raster;
         match mode {
             MeshMode::Fill | MeshMode::Triangles => r.polygon_mode == [GL_FILL, GL_FILL],

@@ -65,6 +65,12 @@ static const struct enum_name enums[] = {
     E(GL_TEXTURE0), E(GL_TEXTURE1), E(GL_TEXTURE2), E(GL_TEXTURE3),
     E(GL_TEXTURE4), E(GL_TEXTURE5), E(GL_TEXTURE6), E(GL_TEXTURE7),
     E(GL_TEXTURE_2D), E(GL_LIGHTING), E(GL_NORMALIZE),
+    E(GL_LINE_STIPPLE), E(GL_LINE_SMOOTH), E(GL_POINT_SMOOTH), E(GL_POLYGON_OFFSET_FILL),
+    E(GL_POLYGON_OFFSET_LINE), E(GL_POLYGON_OFFSET_POINT), E(GL_CLIP_PLANE0), E(GL_CLIP_PLANE1),
+    E(GL_CLIP_PLANE2), E(GL_CLIP_PLANE3), E(GL_CLIP_PLANE4), E(GL_CLIP_PLANE5),
+    E(GL_LINE_STIPPLE_PATTERN), E(GL_LINE_STIPPLE_REPEAT), E(GL_POLYGON_OFFSET_FACTOR),
+    E(GL_POLYGON_OFFSET_UNITS), E(GL_MAX_CLIP_PLANES), E(GL_LINE_BIT), E(GL_POLYGON_BIT),
+    E(GL_TRANSFORM_BIT), E(GL_FRONT), E(GL_DIFFUSE), E(GL_SHININESS),
     { NULL, 0 }
 };
 
@@ -477,12 +483,6 @@ static void run_call(const char *c)
     } else if (!strcmp(c, "fogi")) {
         GLenum pname = arg_enum();
         glFogi(pname, (GLint)arg_enum());
-    } else if (!strcmp(c, "translatef") || !strcmp(c, "scalef")) {
-        GLfloat x = arg_float(), y = arg_float(), z = arg_float();
-        if (c[0] == 't') glTranslatef(x, y, z); else glScalef(x, y, z);
-    } else if (!strcmp(c, "rotatef")) {
-        GLfloat angle = arg_float(), x = arg_float(), y = arg_float(), z = arg_float();
-        glRotatef(angle, x, y, z);
     } else if (!strncmp(c, "raster_pos", 10) && strlen(c) == 12 && c[11] == 'f') {
         GLfloat v[4] = { 0, 0, 0, 1 };
         int n = c[10] - '0';
@@ -523,6 +523,37 @@ static void run_call(const char *c)
     } else if (!strcmp(c, "fogf")) {
         GLenum pname = arg_enum();
         glFogf(pname, arg_float());
+    } else if (!strcmp(c, "line_stipple")) {
+        GLint factor = arg_int();
+        glLineStipple(factor, (GLushort)arg_int());
+    } else if (!strcmp(c, "polygon_offset")) {
+        GLfloat factor = arg_float();
+        glPolygonOffset(factor, arg_float());
+    } else if (!strcmp(c, "clip_plane")) {
+        GLenum plane = arg_enum();
+        long given;
+        GLdouble *eq = arg_array(1, 4, &given);
+        if (given < 4) die("clip_plane needs 4 values", NULL);
+        glClipPlane(plane, eq);
+        free(eq);
+    } else if (!strcmp(c, "get_clip_plane")) {
+        GLdouble eq[4] = { 0, 0, 0, 0 };
+        glGetClipPlane(arg_enum(), eq);
+        for (int i = 0; i < 4; i++) val(" %.9g", eq[i]);
+    } else if (!strcmp(c, "translatef")) {
+        GLfloat x = arg_float(), y = arg_float();
+        glTranslatef(x, y, arg_float());
+    } else if (!strcmp(c, "rotatef")) {
+        GLfloat angle = arg_float(), x = arg_float(), y = arg_float();
+        glRotatef(angle, x, y, arg_float());
+    } else if (!strcmp(c, "scalef")) {
+        GLfloat x = arg_float(), y = arg_float();
+        glScalef(x, y, arg_float());
+    } else if (!strcmp(c, "load_identity")) {
+        glLoadIdentity();
+    } else if (!strcmp(c, "materialf")) {
+        GLenum face = arg_enum(), pname = arg_enum();
+        glMaterialf(face, pname, arg_float());
     } else if (!strcmp(c, "push_attrib")) {
         glPushAttrib(arg_enum());
     } else if (!strcmp(c, "pop_attrib")) {

@@ -1,0 +1,82 @@
+//! `glClipPlane` / `glGetClipPlane` (GL 1.1 spec §2.11): half-spaces in eye coordinates that
+//! clip every primitive. A plane is given in object coordinates and stored transformed by the
+//! inverse of the modelview matrix current at the call, so later matrix changes do not move
+//! it. The renderer clips against the enabled ones (`render::clip`).
+
+use super::consts::*;
+use super::lists::ListCommand;
+use super::types::*;
+use super::Gl;
+use glam::Vec4;
+
+/// Mesa's `MAX_CLIP_PLANES` on llvmpipe (`glGetIntegerv(GL_MAX_CLIP_PLANES)` answers 8).
+pub(crate) const MAX_CLIP_PLANES: usize = 8;
+
+/// The plane index of `GL_CLIP_PLANEi`, if `plane` names one.
+pub(crate) fn plane_index(plane: GLenum) -> Option<usize> {
+    let i = plane.checked_sub(GL_CLIP_PLANE0)? as usize;
+    (i < MAX_CLIP_PLANES).then_some(i)
+}
+
+impl Gl {
+    /// `glClipPlane(plane, equation)`: `equation` needs 4 values (else `GL_INVALID_VALUE`);
+    /// `plane` other than `GL_CLIP_PLANE0..7` → `GL_INVALID_ENUM`; inside `begin`/`end` →
+    /// `GL_INVALID_OPERATION`. Stored as (a b c d)·M⁻¹ with M the modelview, in `f32` as Mesa
+    /// stores it.
+    pub fn clip_plane(&mut self, plane: GLenum, equation: &[GLdouble]) {
+        if self.compiled(|| ListCommand::ClipPlane(plane, equation.to_vec())) || self.reject_inside_begin_end() {
+            return;
+        }
+        let Some(i) = plane_index(plane) else { return self.set_error(GL_INVALID_ENUM) };
+        let Some(eq) = equation.get(..4) else { return self.set_error(GL_INVALID_VALUE) };
+        let eq = [eq[0], eq[1], eq[2], eq[3]];
+        let object = Vec4::from_array(eq.map(|c| c as f32));
+        // A row vector times M⁻¹ is (M⁻¹)ᵀ times the column vector.
+        let eye = self.matrices.modelview().inverse().transpose() * object;
+        self.raster.clip_planes[i] = eye.to_array();
+        self.touch_state();
+    }
+
+    /// `glGetClipPlane(plane, equation)`: the stored eye-space plane; `equation` needs room
+    /// for 4 values (else `GL_INVALID_VALUE`).
+    pub fn get_clip_plane(&mut self, plane: GLenum, equation: &mut [GLdouble]) {
+        if self.reject_inside_begin_end() {
+            return;
+        }
+        let Some(i) = plane_index(plane) else { return self.set_error(GL_INVALID_ENUM) };
+        let Some(out) = equation.get_mut(..4) else { return self.set_error(GL_INVALID_VALUE) };
+        for (o, c) in out.iter_mut().zip(self.raster.clip_planes[i]) {
+            *o = f64::from(c);
+        }
+    }
+
+    /// The enabled planes, in eye coordinates, in plane order.
+    pub(crate) fn enabled_clip_planes(&self) -> Vec<[f32; 4]> {
+        (0..MAX_CLIP_PLANES)
+            .filter(|&i| self.capability(GL_CLIP_PLANE0 + i as GLenum))
+            .map(|i| self.raster.clip_planes[i])
+            .collect()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_plane_is_kept_in_eye_coordinates() {
+        let mut gl = Gl::new(4, 4);
+        gl.translatef(0.0, 0.0, -5.0);
+        // z >= 1 in object coordinates is z >= -4 in eye coordinates.
+        gl.clip_plane(GL_CLIP_PLANE2, &[0.0, 0.0, 1.0, -1.0]);
+        gl.load_identity();
+        let mut eq = [0.0; 4];
+        gl.get_clip_plane(GL_CLIP_PLANE2, &mut eq);
+        assert_eq!(eq, [0.0, 0.0, 1.0, 4.0]);
+        assert_eq!(gl.get_error(), GL_NO_ERROR);
+        gl.clip_plane(GL_CLIP_PLANE0 + 8, &eq);
+        assert_eq!(gl.get_error(), GL_INVALID_ENUM);
+        gl.get_clip_plane(GL_CLIP_PLANE0, &mut eq[..3]);
+        assert_eq!(gl.get_error(), GL_INVALID_VALUE);
+    }
+}

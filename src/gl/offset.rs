@@ -1,0 +1,74 @@
+//! `glPolygonOffset` (GL 1.1 spec §3.5.5): a depth offset for polygons drawn filled, as lines
+//! or as points, each mode with its own enable. The renderer adds it to each polygon's window
+//! depth (`render::offset`).
+
+use super::consts::*;
+use super::lists::ListCommand;
+use super::types::*;
+use super::Gl;
+
+/// The offset a polygon is drawn with: `factor · DZ + units · r` (§3.5.5), for the polygon
+/// modes whose enable is on.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PolygonOffset {
+    /// The factor of the polygon's depth slope.
+    pub factor: f32,
+    /// The multiple of the depth buffer's smallest resolvable difference.
+    pub units: f32,
+    /// `GL_POLYGON_OFFSET_POINT`, `_LINE`, `_FILL` enabled, in that order.
+    pub modes: [bool; 3],
+}
+
+impl PolygonOffset {
+    /// Whether polygons drawn in `mode` (`GL_POINT`, `GL_LINE`, `GL_FILL`) are offset.
+    #[must_use]
+    pub fn applies_to(&self, mode: GLenum) -> bool {
+        match mode {
+            GL_POINT => self.modes[0],
+            GL_LINE => self.modes[1],
+            _ => self.modes[2],
+        }
+    }
+}
+
+impl Gl {
+    /// `glPolygonOffset(factor, units)`: no value is an error (Mesa stores any float);
+    /// inside `begin`/`end` → `GL_INVALID_OPERATION`.
+    pub fn polygon_offset(&mut self, factor: GLfloat, units: GLfloat) {
+        if self.compiled(|| ListCommand::PolygonOffset(factor, units)) || self.reject_inside_begin_end() {
+            return;
+        }
+        self.raster.polygon_offset = (factor, units);
+        self.touch_state();
+    }
+
+    /// `glGet` of the one-valued primitive modes: the stipple's pattern and repeat, the polygon
+    /// offset's factor and units, the number of clip planes.
+    pub(crate) fn primitive_mode_query(&self, pname: GLenum) -> Option<f64> {
+        let r = &self.raster;
+        Some(match pname {
+            GL_LINE_STIPPLE_PATTERN => f64::from(r.line_stipple.1),
+            GL_LINE_STIPPLE_REPEAT => f64::from(r.line_stipple.0),
+            GL_POLYGON_OFFSET_FACTOR => f64::from(r.polygon_offset.0),
+            GL_POLYGON_OFFSET_UNITS => f64::from(r.polygon_offset.1),
+            GL_MAX_CLIP_PLANES => super::clip::MAX_CLIP_PLANES as f64,
+            _ => return None,
+        })
+    }
+
+    /// Whether a clip plane, polygon offset or line stipple is on (the CPU assembler's work).
+    pub(crate) fn raster_modes_on(&self) -> bool {
+        self.enabled_polygon_offset().is_some()
+            || self.enabled_line_stipple().is_some()
+            || self.enabled_polygon_stipple().is_some()
+            || !self.enabled_clip_planes().is_empty()
+    }
+
+    /// The offset while any of its three enables is on.
+    pub(crate) fn enabled_polygon_offset(&self) -> Option<PolygonOffset> {
+        let modes =
+            [GL_POLYGON_OFFSET_POINT, GL_POLYGON_OFFSET_LINE, GL_POLYGON_OFFSET_FILL].map(|c| self.capability(c));
+        let (factor, units) = self.raster.polygon_offset;
+        modes.contains(&true).then_some(PolygonOffset { factor, units, modes })
+    }
+}

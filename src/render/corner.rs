@@ -1,0 +1,36 @@
+//! A vertex of an assembled primitive, between the vertex stage and the rasteriser: the unit
+//! that clipping, stippling and polygon offset cut and move.
+
+use glam::Vec4;
+
+/// A shaded vertex with the colour chosen for its primitive (face, flat shading).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Corner {
+    /// Clip coordinates (GL's, z in [−w, w]).
+    pub clip: Vec4,
+    /// Eye coordinates, where clip planes are tested (GL 1.1 §2.11).
+    pub eye: Vec4,
+    pub color: Vec4,
+    pub tex: Vec4,
+    pub fog: f32,
+    /// Polygon offset in window depth units ([0, 1]), added after the depth range.
+    pub depth_offset: f32,
+    /// The coordinates a smooth point's or line's coverage is computed from (`smooth`).
+    pub aa: Vec4,
+}
+
+impl Corner {
+    /// The point a fraction `t` of the way from `self` to `other`, every attribute linear in
+    /// clip space (GL 1.1 §2.12: clipped attributes are interpolated so).
+    pub fn lerp(self, other: Corner, t: f32) -> Corner {
+        Corner {
+            clip: self.clip.lerp(other.clip, t),
+            eye: self.eye.lerp(other.eye, t),
+            color: self.color.lerp(other.color, t),
+            tex: self.tex.lerp(other.tex, t),
+            fog: self.fog + (other.fog - self.fog) * t,
+            depth_offset: self.depth_offset + (other.depth_offset - self.depth_offset) * t,
+            aa: self.aa.lerp(other.aa, t),
+        }
+    }
+}
