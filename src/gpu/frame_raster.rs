@@ -56,13 +56,13 @@ impl FrameRaster {
         &self.texture_layout
     }
 
-    /// Makes sure the pipeline for `key` exists (before a render pass borrows them all).
-    pub(crate) fn ensure_pipeline(&mut self, device: &wgpu::Device, key: PipelineKey) {
+    /// Makes sure the pipelines for `keys` exist (before a render pass borrows them all).
+    pub(crate) fn ensure_pipelines(&mut self, device: &wgpu::Device, keys: impl IntoIterator<Item = PipelineKey>) {
         let (module, layout) = (&self.module, &self.layout);
-        self.pipelines.entry(key).or_insert_with(|| make_pipeline(device, module, layout, key));
+        super::raster::make_missing(&mut self.pipelines, keys, |key| make_pipeline(device, module, layout, key));
     }
 
-    /// The pipeline for `key`, made by [`FrameRaster::ensure_pipeline`].
+    /// The pipeline for `key`, made by [`FrameRaster::ensure_pipelines`].
     pub(crate) fn pipeline(&self, key: PipelineKey) -> &wgpu::RenderPipeline {
         &self.pipelines[&key]
     }

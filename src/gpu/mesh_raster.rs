@@ -190,12 +190,9 @@ impl MeshRaster {
         prepared: &PreparedMeshes,
         format: wgpu::TextureFormat,
     ) {
-        for draw in prepared.draws.values() {
-            if let Some(key) = pipeline_key(draw, &frame.states[draw.state], format) {
-                let (module, layout) = (&self.module, &self.layout);
-                self.pipelines.entry(key).or_insert_with(|| make_pipeline(device, module, layout, key));
-            }
-        }
+        let keys = prepared.draws.values().filter_map(|draw| pipeline_key(draw, &frame.states[draw.state], format));
+        let (module, layout) = (&self.module, &self.layout);
+        super::raster::make_missing(&mut self.pipelines, keys, |key| make_pipeline(device, module, layout, key));
     }
 
     /// Draws mesh `index` of the frame inside a render pass, with the bind group of its

@@ -161,12 +161,13 @@ impl Renderer {
     ) {
         let buffer = vertex_buffer(&self.device, list, target.size);
         let bind_groups = self.frames.texture_bind_groups(&self.device, &self.queue, list, target.size.1);
-        for pass in split_passes(&list.ops, keep) {
-            for item in &pass.draws {
-                if let PassItem::Batch(batch) = item {
-                    self.frames.ensure_pipeline(&self.device, pipeline_key(batch, target));
-                }
-            }
+        let passes = split_passes(&list.ops, keep);
+        let batches = passes.iter().flat_map(|p| &p.draws).filter_map(|item| match item {
+            PassItem::Batch(batch) => Some(pipeline_key(batch, target)),
+            PassItem::Mesh { .. } => None,
+        });
+        self.frames.ensure_pipelines(&self.device, batches);
+        for pass in passes {
             let mut rp = begin_pass(encoder, target.color, target.depth, pass.clear_color, pass.clear_depth);
             for item in &pass.draws {
                 self.draw_item(&mut rp, item, (buffer.as_ref(), &bind_groups), frame, prepared, target);
