@@ -131,9 +131,6 @@ pub(crate) fn make_missing<K: Copy + Eq + Hash + Send + Sync>(
     });
     cache.extend(made);
     for key in missing {
-        if !cache.contains_key(&key) {
-            let pipeline = make(key);
-            cache.insert(key, pipeline);
-        }
+        cache.entry(key).or_insert_with(|| make(key));
     }
 }
