@@ -248,6 +248,10 @@ pub const GL_CLAMP_TO_EDGE: GLenum = 0x812F;
 pub const GL_TEXTURE_BINDING_1D: GLenum = 0x8068;
 pub const GL_TEXTURE_BINDING_2D: GLenum = 0x8069;
 pub const GL_MAX_TEXTURE_SIZE: GLenum = 0x0D33;
+// The current attributes (glGet, GL 1.1 table 6.5).
+pub const GL_CURRENT_COLOR: GLenum = 0x0B00;
+pub const GL_CURRENT_NORMAL: GLenum = 0x0B02;
+pub const GL_CURRENT_TEXTURE_COORDS: GLenum = 0x0B03;
 // The current raster position (glGet, GL 1.1 spec §2.12).
 pub const GL_CURRENT_RASTER_COLOR: GLenum = 0x0B04;
 pub const GL_CURRENT_RASTER_INDEX: GLenum = 0x0B05;

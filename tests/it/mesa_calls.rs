@@ -76,6 +76,9 @@ fn enum_value(token: &str) -> u32 {
         ("GL_EXP", GL_EXP),
         ("GL_EXP2", GL_EXP2),
         ("GL_ALPHA_TEST", GL_ALPHA_TEST),
+        ("GL_CURRENT_COLOR", GL_CURRENT_COLOR),
+        ("GL_CURRENT_NORMAL", GL_CURRENT_NORMAL),
+        ("GL_CURRENT_TEXTURE_COORDS", GL_CURRENT_TEXTURE_COORDS),
         ("GL_CURRENT_RASTER_POSITION", GL_CURRENT_RASTER_POSITION),
         ("GL_CURRENT_RASTER_POSITION_VALID", GL_CURRENT_RASTER_POSITION_VALID),
         ("GL_CURRENT_RASTER_COLOR", GL_CURRENT_RASTER_COLOR),
@@ -427,6 +430,7 @@ impl Runner {
                 raster_token = raster_feedback(gl, "draw_pixel");
                 gl.draw_pixels(w, h, format, type_, &bytes);
             }
+            "typed" => typed_call(gl, &mut a),
             "tex_geni" => gl.tex_geni(a.e(), a.e(), a.e() as i32),
             "tex_genfv" => gl.tex_genfv(a.e(), a.e(), &a.floats()),
             "get_tex_genfv" => {
@@ -533,6 +537,50 @@ impl Runner {
     }
 }
 
+/// `typed NAME values`: a type variant of a per-vertex call through its v form, the values
+/// cast to the call's type as C casts them.
+fn typed_call(gl: &mut Gl, a: &mut Args) {
+    let name = a.next().to_owned();
+    let (base, ty) = name.trim_end_matches('v').split_at(name.trim_end_matches('v').len() - 1);
+    // Two-letter types (ub, us, ui) end in b, s or i too.
+    let (base, ty) = match base.strip_suffix('u') {
+        Some(b) => (b.to_owned(), format!("u{ty}")),
+        None => (base.to_owned(), ty.to_owned()),
+    };
+    let n = base.chars().last().and_then(|c| c.to_digit(10)).expect("a component count") as usize;
+    let values: Vec<f64> = (0..n).map(|_| a.d()).collect();
+    macro_rules! call {
+        ($t:ty, $($fn:literal => $method:ident),+) => {{
+            let v: Vec<$t> = values.iter().map(|&x| x as $t).collect();
+            match base.as_str() {
+                $($fn => gl.$method(&v),)+
+                other => panic!("typed {other}{ty}v not emulated"),
+            }
+        }};
+    }
+    match ty.as_str() {
+        "b" => call!(i8, "glColor3" => color3bv, "glColor4" => color4bv, "glNormal3" => normal3bv),
+        "ub" => call!(u8, "glColor3" => color3ubv, "glColor4" => color4ubv),
+        "s" => call!(i16, "glColor3" => color3sv, "glColor4" => color4sv, "glNormal3" => normal3sv,
+            "glVertex2" => vertex2sv, "glVertex3" => vertex3sv, "glVertex4" => vertex4sv,
+            "glTexCoord1" => tex_coord1sv, "glTexCoord2" => tex_coord2sv, "glTexCoord3" => tex_coord3sv,
+            "glTexCoord4" => tex_coord4sv, "glRasterPos2" => raster_pos2sv, "glRasterPos3" => raster_pos3sv,
+            "glRasterPos4" => raster_pos4sv),
+        "us" => call!(u16, "glColor3" => color3usv, "glColor4" => color4usv),
+        "i" => call!(i32, "glColor3" => color3iv, "glColor4" => color4iv, "glNormal3" => normal3iv,
+            "glVertex2" => vertex2iv, "glVertex3" => vertex3iv, "glVertex4" => vertex4iv,
+            "glTexCoord1" => tex_coord1iv, "glTexCoord2" => tex_coord2iv, "glTexCoord3" => tex_coord3iv,
+            "glTexCoord4" => tex_coord4iv, "glRasterPos3" => raster_pos3iv, "glRasterPos4" => raster_pos4iv),
+        "ui" => call!(u32, "glColor3" => color3uiv, "glColor4" => color4uiv),
+        "f" => call!(f32, "glTexCoord1" => tex_coord1fv, "glTexCoord2" => tex_coord2fv,
+            "glTexCoord3" => tex_coord3fv, "glTexCoord4" => tex_coord4fv),
+        _ => call!(f64, "glColor3" => color3dv, "glColor4" => color4dv, "glNormal3" => normal3dv,
+            "glVertex2" => vertex2dv, "glVertex3" => vertex3dv, "glVertex4" => vertex4dv,
+            "glTexCoord1" => tex_coord1dv, "glTexCoord2" => tex_coord2dv, "glTexCoord3" => tex_coord3dv,
+            "glTexCoord4" => tex_coord4dv, "glRasterPos4" => raster_pos4dv),
+    }
+}
+
 /// What feedback mode writes for a glBitmap or glDrawPixels at the current raster position
 /// (window coordinates, clip w, the raster colour and texture coordinates), if it is valid.
 fn raster_feedback(gl: &mut Gl, token: &str) -> Option<String> {
@@ -595,7 +643,8 @@ fn get_state(gl: &mut Gl, cmd: &str, pname: u32) -> Vec<String> {
     let count = match pname {
         GL_MAP1_GRID_DOMAIN | GL_MAP2_GRID_SEGMENTS => 2,
         GL_MAP2_GRID_DOMAIN | GL_CURRENT_RASTER_POSITION | GL_CURRENT_RASTER_COLOR => 4,
-        GL_CURRENT_RASTER_TEXTURE_COORDS => 4,
+        GL_CURRENT_RASTER_TEXTURE_COORDS | GL_CURRENT_COLOR | GL_CURRENT_TEXTURE_COORDS => 4,
+        GL_CURRENT_NORMAL => 3,
         _ => 1,
     };
     if cmd == "get_integerv" {

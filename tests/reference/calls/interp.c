@@ -37,6 +37,7 @@ static const struct enum_name enums[] = {
     E(GL_SRC_ALPHA), E(GL_ONE_MINUS_SRC_ALPHA), E(GL_ONE), E(GL_ZERO), E(GL_SRC_ALPHA_SATURATE),
     E(GL_GREATER), E(GL_ALWAYS), E(GL_NEVER), E(GL_FOG_MODE), E(GL_FOG_DENSITY), E(GL_FOG_START),
     E(GL_FOG_END), E(GL_EXP), E(GL_EXP2), E(GL_ALPHA_TEST),
+    E(GL_CURRENT_COLOR), E(GL_CURRENT_NORMAL), E(GL_CURRENT_TEXTURE_COORDS),
     E(GL_CURRENT_RASTER_POSITION), E(GL_CURRENT_RASTER_POSITION_VALID), E(GL_CURRENT_RASTER_COLOR),
     E(GL_CURRENT_RASTER_TEXTURE_COORDS), E(GL_CURRENT_RASTER_DISTANCE), E(GL_COLOR_INDEX), E(GL_STENCIL_INDEX),
     E(GL_DEPTH_COMPONENT), E(GL_RED), E(GL_GREEN), E(GL_BLUE), E(GL_BGR), E(GL_BGRA), E(GL_BITMAP),
@@ -295,8 +296,88 @@ static int get_count(GLenum pname)
     case GL_MAP2_GRID_SEGMENTS: return 2;
     case GL_CURRENT_RASTER_POSITION: case GL_CURRENT_RASTER_COLOR:
     case GL_CURRENT_RASTER_TEXTURE_COORDS: return 4;
+    case GL_CURRENT_COLOR: case GL_CURRENT_TEXTURE_COORDS: return 4;
+    case GL_CURRENT_NORMAL: return 3;
     default: return 1;
     }
+}
+
+/* ---------------------------------------------------------------- typed calls */
+/* The type variants of the per-vertex calls, through their v forms: `typed NAME v...`. */
+struct typed_fn { const char *name; int n; const char *type; void (*fn)(const void *); };
+static const struct typed_fn typed_fns[] = {
+    { "glColor3bv", 3, "b", (void (*)(const void *))glColor3bv },
+    { "glColor3sv", 3, "s", (void (*)(const void *))glColor3sv },
+    { "glColor3iv", 3, "i", (void (*)(const void *))glColor3iv },
+    { "glColor3dv", 3, "d", (void (*)(const void *))glColor3dv },
+    { "glColor3ubv", 3, "ub", (void (*)(const void *))glColor3ubv },
+    { "glColor3usv", 3, "us", (void (*)(const void *))glColor3usv },
+    { "glColor3uiv", 3, "ui", (void (*)(const void *))glColor3uiv },
+    { "glColor4bv", 4, "b", (void (*)(const void *))glColor4bv },
+    { "glColor4sv", 4, "s", (void (*)(const void *))glColor4sv },
+    { "glColor4iv", 4, "i", (void (*)(const void *))glColor4iv },
+    { "glColor4dv", 4, "d", (void (*)(const void *))glColor4dv },
+    { "glColor4ubv", 4, "ub", (void (*)(const void *))glColor4ubv },
+    { "glColor4usv", 4, "us", (void (*)(const void *))glColor4usv },
+    { "glColor4uiv", 4, "ui", (void (*)(const void *))glColor4uiv },
+    { "glNormal3bv", 3, "b", (void (*)(const void *))glNormal3bv },
+    { "glNormal3sv", 3, "s", (void (*)(const void *))glNormal3sv },
+    { "glNormal3iv", 3, "i", (void (*)(const void *))glNormal3iv },
+    { "glNormal3dv", 3, "d", (void (*)(const void *))glNormal3dv },
+    { "glVertex2dv", 2, "d", (void (*)(const void *))glVertex2dv },
+    { "glVertex2iv", 2, "i", (void (*)(const void *))glVertex2iv },
+    { "glVertex2sv", 2, "s", (void (*)(const void *))glVertex2sv },
+    { "glVertex3dv", 3, "d", (void (*)(const void *))glVertex3dv },
+    { "glVertex3iv", 3, "i", (void (*)(const void *))glVertex3iv },
+    { "glVertex3sv", 3, "s", (void (*)(const void *))glVertex3sv },
+    { "glVertex4dv", 4, "d", (void (*)(const void *))glVertex4dv },
+    { "glVertex4iv", 4, "i", (void (*)(const void *))glVertex4iv },
+    { "glVertex4sv", 4, "s", (void (*)(const void *))glVertex4sv },
+    { "glTexCoord1fv", 1, "f", (void (*)(const void *))glTexCoord1fv },
+    { "glTexCoord1dv", 1, "d", (void (*)(const void *))glTexCoord1dv },
+    { "glTexCoord1iv", 1, "i", (void (*)(const void *))glTexCoord1iv },
+    { "glTexCoord1sv", 1, "s", (void (*)(const void *))glTexCoord1sv },
+    { "glTexCoord2fv", 2, "f", (void (*)(const void *))glTexCoord2fv },
+    { "glTexCoord2dv", 2, "d", (void (*)(const void *))glTexCoord2dv },
+    { "glTexCoord2iv", 2, "i", (void (*)(const void *))glTexCoord2iv },
+    { "glTexCoord2sv", 2, "s", (void (*)(const void *))glTexCoord2sv },
+    { "glTexCoord3fv", 3, "f", (void (*)(const void *))glTexCoord3fv },
+    { "glTexCoord3dv", 3, "d", (void (*)(const void *))glTexCoord3dv },
+    { "glTexCoord3iv", 3, "i", (void (*)(const void *))glTexCoord3iv },
+    { "glTexCoord3sv", 3, "s", (void (*)(const void *))glTexCoord3sv },
+    { "glTexCoord4fv", 4, "f", (void (*)(const void *))glTexCoord4fv },
+    { "glTexCoord4dv", 4, "d", (void (*)(const void *))glTexCoord4dv },
+    { "glTexCoord4iv", 4, "i", (void (*)(const void *))glTexCoord4iv },
+    { "glTexCoord4sv", 4, "s", (void (*)(const void *))glTexCoord4sv },
+    { "glRasterPos2sv", 2, "s", (void (*)(const void *))glRasterPos2sv },
+    { "glRasterPos3iv", 3, "i", (void (*)(const void *))glRasterPos3iv },
+    { "glRasterPos3sv", 3, "s", (void (*)(const void *))glRasterPos3sv },
+    { "glRasterPos4dv", 4, "d", (void (*)(const void *))glRasterPos4dv },
+    { "glRasterPos4iv", 4, "i", (void (*)(const void *))glRasterPos4iv },
+    { "glRasterPos4sv", 4, "s", (void (*)(const void *))glRasterPos4sv },
+    { NULL, 0, NULL, NULL }
+};
+
+static void run_typed(void)
+{
+    const char *name = next();
+    const struct typed_fn *t = typed_fns;
+    while (t->name && strcmp(t->name, name)) t++;
+    if (!t->name) die("unknown typed call", name);
+    union { GLbyte b[4]; GLubyte ub[4]; GLshort s[4]; GLushort us[4]; GLint i[4]; GLuint ui[4];
+            GLfloat f[4]; GLdouble d[4]; } v;
+    for (int k = 0; k < t->n; k++) {
+        double x = arg_double();
+        if (!strcmp(t->type, "b")) v.b[k] = (GLbyte)x;
+        else if (!strcmp(t->type, "ub")) v.ub[k] = (GLubyte)x;
+        else if (!strcmp(t->type, "s")) v.s[k] = (GLshort)x;
+        else if (!strcmp(t->type, "us")) v.us[k] = (GLushort)x;
+        else if (!strcmp(t->type, "i")) v.i[k] = (GLint)x;
+        else if (!strcmp(t->type, "ui")) v.ui[k] = (GLuint)x;
+        else if (!strcmp(t->type, "f")) v.f[k] = (GLfloat)x;
+        else v.d[k] = x;
+    }
+    t->fn(&v);
 }
 
 /* ---------------------------------------------------------------- calls */
@@ -506,6 +587,8 @@ static void run_call(const char *c)
         for (long i = 0; i < given; i++) bytes[i] = (GLubyte)f[i];
         glDrawPixels(w, h, format, type, f ? (type == GL_FLOAT ? (const GLvoid *)f : (const GLvoid *)bytes) : NULL);
         free(f);
+    } else if (!strcmp(c, "typed")) {
+        run_typed();
     } else if (!strcmp(c, "tex_geni")) {
         GLenum coord = arg_enum(), pname = arg_enum();
         glTexGeni(coord, pname, (GLint)arg_enum());
