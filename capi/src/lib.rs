@@ -28,3 +28,4 @@ mod strings;
 mod gl;
 mod glu;
 mod glut;
+mod osmesa;
