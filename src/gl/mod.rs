@@ -23,6 +23,7 @@ mod mesh_job;
 mod pixels;
 mod raster;
 mod raster_pos;
+mod read_pixels;
 mod texture;
 pub mod types;
 mod vertex;

@@ -489,6 +489,7 @@ GLAPI void GLAPIENTRY glRasterPos2iv(const GLint *v);
 GLAPI void GLAPIENTRY glRasterPos2dv(const GLdouble *v);
 GLAPI void GLAPIENTRY glRasterPos3dv(const GLdouble *v);
 GLAPI void GLAPIENTRY glBitmap(GLsizei width, GLsizei height, GLfloat xorig, GLfloat yorig, GLfloat xmove, GLfloat ymove, const GLubyte *bitmap);
+GLAPI void GLAPIENTRY glReadPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum format, GLenum type, GLvoid *pixels);
 GLAPI void GLAPIENTRY glDrawPixels(GLsizei width, GLsizei height, GLenum format, GLenum type, const GLvoid *pixels);
 
 #ifdef __cplusplus

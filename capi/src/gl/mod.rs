@@ -8,5 +8,6 @@ mod lighting;
 mod lists;
 mod matrix;
 mod pixels;
+mod read_pixels;
 mod state;
 mod texture;
