@@ -47,6 +47,21 @@ pub fn install(gl: Gl) {
     OWNED.with(|o| *o.borrow_mut() = Some(boxed));
 }
 
+/// Makes a context owned elsewhere (an OSMesa context) current on this thread.
+pub fn make_current(gl: &mut Gl) {
+    CURRENT.with(|c| c.set(gl));
+}
+
+/// Nothing is current any more if `gl` was (it is being destroyed).
+pub fn release_if_current(gl: &mut Gl) {
+    let gl: *mut Gl = gl;
+    CURRENT.with(|c| {
+        if c.get() == gl {
+            c.set(std::ptr::null_mut());
+        }
+    });
+}
+
 /// Takes the owned context out (`glutMainLoop` hands it to `App`); nothing is current after.
 pub fn take_owned() -> Option<Box<Gl>> {
     CURRENT.with(|c| c.set(std::ptr::null_mut()));

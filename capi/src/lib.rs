@@ -16,8 +16,10 @@
 //!   ([`boundary`]).
 //!
 //! Files follow the headers' areas: `gl/` (state, immediate mode, matrices, evaluators,
-//! lighting, lists, textures, pixels, fragments), `glu/` (projections, NURBS, callbacks,
-//! mipmaps), `glut/` (the main loop over `App`, callbacks, fonts and the teapot).
+//! lighting, lists, textures, pixels, fragments, feedback), `glu/` (projections, NURBS,
+//! callbacks, mipmaps), `glut/` (the main loop over `App`, callbacks, fonts and the teapot),
+//! and `osmesa.rs` (`GL/osmesa.h`'s context calls, for off-screen programs such as the
+//! scripted-call interpreter of `tests/reference/calls`).
 
 #[macro_use]
 pub mod boundary;
@@ -28,3 +30,4 @@ mod strings;
 mod gl;
 mod glu;
 mod glut;
+mod osmesa;

@@ -64,15 +64,17 @@ pub fn count(n: GLint) -> Option<usize> {
 }
 
 /// Elements a strided layout reads: `k` values at the last point of each dimension's
-/// `(stride, order)`; `None` for a stride below `k`, an order below 1 or above GL's maximum
-/// (GL rejects those before reading) or an overflow.
+/// `(stride, order)`; `None` for a negative stride, an order below 1 or above GL's maximum
+/// (GL rejects those before reading) or an overflow. A stride below `k` is read as given: GL
+/// rejects it when it executes the call, but a display list copies the points first, with the
+/// caller's stride (Mesa's `_mesa_copy_map_points1f`).
 pub fn strided_len(k: usize, layout: &[(GLint, GLint)], max_order: GLint) -> Option<usize> {
     let mut last = k;
     for &(stride, order) in layout {
         if !(1..=max_order).contains(&order) {
             return None;
         }
-        let stride = usize::try_from(stride).ok().filter(|&s| s >= k)?;
+        let stride = usize::try_from(stride).ok()?;
         last = last.checked_add(stride.checked_mul(order as usize - 1)?)?;
     }
     Some(last)

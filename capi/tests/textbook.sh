@@ -5,7 +5,7 @@
 # Mesa renders from the same source (system GL/GLU headers and freeglut's GL/glut.h, linked with
 # the OSMesa GLUT stand-in of tests/reference/pictures), with the project's image metric.
 #   capi/tests/textbook.sh [OUT_DIR]    (default target/capi/textbook)
-# Expects libgleval_c and gleval-compare built (capi/tests/pictures.sh builds them); the same
+# Also builds BezCurve with pkg-config (capi/gleval.pc). Expects libgleval_c and gleval-compare built (capi/tests/pictures.sh builds them); the same
 # CAPI_PROFILE as there.
 set -eu
 root=$(cd "$(dirname "$0")/../.." && pwd)
@@ -27,4 +27,10 @@ for name in BezCurve BezSurf BCurve BSurf; do
   printf '%s (textbook): ' "$lower"
   "$GLEVAL_LIB_DIR/gleval-compare" "$out/$lower.mesa.png" "$out/$lower.png" 0.01 || failed=1
 done
+# The same program built with pkg-config instead of glevalcc.
+flags=$(PKG_CONFIG_PATH="$root/capi" pkg-config --cflags --libs --define-variable=libdir="$GLEVAL_LIB_DIR" gleval)
+cc -std=gnu99 -O1 -w -o "$out/bezcurve.pc" "$book/BezCurve.c" $flags
+"$out/bezcurve.pc" --png "$out/bezcurve.pc.png" 2>/dev/null
+printf 'bezcurve (textbook, pkg-config): '
+"$GLEVAL_LIB_DIR/gleval-compare" "$out/bezcurve.mesa.png" "$out/bezcurve.pc.png" 0.01 || failed=1
 exit $failed

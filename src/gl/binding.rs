@@ -100,7 +100,7 @@ mod tests {
         assert_eq!(gl.unpacked_image_len(3, 3, GL_RGB, GL_UNSIGNED_BYTE), Some(33));
         gl.pixel_storei(GL_UNPACK_ALIGNMENT, 1);
         assert_eq!(gl.unpacked_image_len(3, 3, GL_RGB, GL_UNSIGNED_BYTE), Some(27));
-        assert_eq!(gl.unpacked_image_len(2, 2, GL_RGBA, GL_FLOAT), Some(32));
+        assert_eq!(gl.unpacked_image_len(2, 2, GL_RGBA, GL_FLOAT), Some(64)); // 2 × 2 pixels of 4 floats
         assert_eq!(gl.unpacked_image_len(-1, 2, GL_RGBA, GL_FLOAT), None);
         assert_eq!(gl.unpacked_image_len(2, 2, 0x1234, GL_FLOAT), None);
         assert_eq!(gl.unpacked_image_len(0, 2, GL_RGB, GL_FLOAT), Some(0));

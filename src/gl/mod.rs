@@ -13,6 +13,7 @@ mod clip;
 pub mod consts;
 mod enable;
 mod eval;
+pub mod feedback;
 mod fragment;
 mod frame;
 mod immediate;
@@ -24,6 +25,7 @@ mod offset;
 mod pixels;
 mod raster;
 mod raster_pos;
+mod read_pixels;
 mod stipple;
 mod texgen;
 mod texture;
@@ -136,6 +138,8 @@ pub struct Gl {
     /// What GLUT's calls made inside callbacks ask of the window (redisplay, timers, idle, title).
     pub(crate) glut: crate::glut::GlutState,
     tessellator: Tessellator,
+    /// `glRenderMode(GL_FEEDBACK)` and its buffer.
+    feedback: feedback::Feedback,
     /// Display lists, and the one being compiled.
     lists: lists::Lists,
     /// Texture objects and unit 0's environment.
@@ -187,6 +191,7 @@ impl Gl {
             pending_meshes: (Vec::new(), 0),
             glut: crate::glut::GlutState::default(),
             tessellator: Tessellator::Cpu,
+            feedback: feedback::Feedback::default(),
             lists: lists::Lists::default(),
             pixel_stores: pixels::PixelStores::default(),
             textures: texture::Textures::default(),

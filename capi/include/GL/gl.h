@@ -450,6 +450,25 @@ GLAPI void GLAPIENTRY glFogf(GLenum pname, GLfloat param);
 GLAPI void GLAPIENTRY glFogi(GLenum pname, GLint param);
 GLAPI void GLAPIENTRY glFogfv(GLenum pname, const GLfloat *params);
 
+/* Feedback mode. */
+#define GL_RENDER 0x1C00
+#define GL_FEEDBACK 0x1C01
+#define GL_2D 0x0600
+#define GL_3D 0x0601
+#define GL_3D_COLOR 0x0602
+#define GL_3D_COLOR_TEXTURE 0x0603
+#define GL_4D_COLOR_TEXTURE 0x0604
+#define GL_PASS_THROUGH_TOKEN 0x0700
+#define GL_POINT_TOKEN 0x0701
+#define GL_LINE_TOKEN 0x0702
+#define GL_POLYGON_TOKEN 0x0703
+#define GL_BITMAP_TOKEN 0x0704
+#define GL_DRAW_PIXEL_TOKEN 0x0705
+#define GL_COPY_PIXEL_TOKEN 0x0706
+#define GL_LINE_RESET_TOKEN 0x0707
+GLAPI void GLAPIENTRY glFeedbackBuffer(GLsizei size, GLenum type, GLfloat *buffer);
+GLAPI GLint GLAPIENTRY glRenderMode(GLenum mode);
+
 /* Pixels, the raster position and bitmaps. */
 GLAPI void GLAPIENTRY glPixelStorei(GLenum pname, GLint param);
 GLAPI void GLAPIENTRY glPixelStoref(GLenum pname, GLfloat param);
@@ -470,6 +489,7 @@ GLAPI void GLAPIENTRY glRasterPos2iv(const GLint *v);
 GLAPI void GLAPIENTRY glRasterPos2dv(const GLdouble *v);
 GLAPI void GLAPIENTRY glRasterPos3dv(const GLdouble *v);
 GLAPI void GLAPIENTRY glBitmap(GLsizei width, GLsizei height, GLfloat xorig, GLfloat yorig, GLfloat xmove, GLfloat ymove, const GLubyte *bitmap);
+GLAPI void GLAPIENTRY glReadPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum format, GLenum type, GLvoid *pixels);
 GLAPI void GLAPIENTRY glDrawPixels(GLsizei width, GLsizei height, GLenum format, GLenum type, const GLvoid *pixels);
 
 #ifdef __cplusplus

@@ -28,17 +28,18 @@ vector! {
     glEvalCoord2dv(GLdouble; 2) => eval_coord2dv;
 }
 
-/// Values a `glMap` reads: the last point's offset plus its `k` components, for a target of
-/// the call's dimension; `None` where GL rejects the call before reading.
-fn map_len(target: GLenum, dims: u8, layout: &[(GLint, GLint)]) -> Option<usize> {
-    let target = MapTarget::from_enum(target).filter(|t| t.dims == dims)?;
+/// Values a `glMap` reads: the last point's offset plus its `k` components, as a display
+/// list copies them (for a target of either dimension); `None` for an unknown target, which
+/// GL rejects before reading.
+fn map_len(target: GLenum, layout: &[(GLint, GLint)]) -> Option<usize> {
+    let target = MapTarget::from_enum(target)?;
     strided_len(target.components(), layout, MAX_EVAL_ORDER)
 }
 
 entry! {
     /// `glMap1f`: reads `(order − 1) · stride + k` floats.
     unsafe fn glMap1f(target: GLenum, u1: GLfloat, u2: GLfloat, stride: GLint, order: GLint, points: *const GLfloat) {
-        let points = unsafe { array(points, map_len(target, 1, &[(stride, order)])) };
+        let points = unsafe { array(points, map_len(target, &[(stride, order)])) };
         with_gl(|gl| gl.map1f(target, u1, u2, stride, order, points))
     }
 }
@@ -46,7 +47,7 @@ entry! {
 entry! {
     /// `glMap1d`: as `glMap1f`.
     unsafe fn glMap1d(target: GLenum, u1: GLdouble, u2: GLdouble, stride: GLint, order: GLint, points: *const GLdouble) {
-        let points = unsafe { array(points, map_len(target, 1, &[(stride, order)])) };
+        let points = unsafe { array(points, map_len(target, &[(stride, order)])) };
         with_gl(|gl| gl.map1d(target, u1, u2, stride, order, points))
     }
 }
@@ -58,7 +59,7 @@ entry! {
         target: GLenum, u1: GLfloat, u2: GLfloat, ustride: GLint, uorder: GLint,
         v1: GLfloat, v2: GLfloat, vstride: GLint, vorder: GLint, points: *const GLfloat,
     ) {
-        let points = unsafe { array(points, map_len(target, 2, &[(ustride, uorder), (vstride, vorder)])) };
+        let points = unsafe { array(points, map_len(target, &[(ustride, uorder), (vstride, vorder)])) };
         with_gl(|gl| gl.map2f(target, u1, u2, ustride, uorder, v1, v2, vstride, vorder, points))
     }
 }
@@ -70,7 +71,7 @@ entry! {
         target: GLenum, u1: GLdouble, u2: GLdouble, ustride: GLint, uorder: GLint,
         v1: GLdouble, v2: GLdouble, vstride: GLint, vorder: GLint, points: *const GLdouble,
     ) {
-        let points = unsafe { array(points, map_len(target, 2, &[(ustride, uorder), (vstride, vorder)])) };
+        let points = unsafe { array(points, map_len(target, &[(ustride, uorder), (vstride, vorder)])) };
         with_gl(|gl| gl.map2d(target, u1, u2, ustride, uorder, v1, v2, vstride, vorder, points))
     }
 }

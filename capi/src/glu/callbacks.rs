@@ -3,7 +3,10 @@
 //! GLU declares every callback as `void (*)()` and calls it with the arguments its `which`
 //! implies; the pointer is cast back to that signature here. Each call into C makes the
 //! context GLU hands the callback current for its duration, so the callback's own GL calls
-//! (`glVertex3fv` in a vertex callback) reach that context.
+//! (`glVertex3fv` in a vertex callback) reach that context. The error callback gets no
+//! context from GLU (`Gl` reports the code alone): it may call GLU's `gluErrorString`, but GL
+//! calls from inside it reach the context of the GLU call that failed while that call is
+//! still running, which real GLU allows and gleval does not promise.
 
 use super::nurbs::{handle, GLUnurbs};
 use crate::context::{enter, with_gl};

@@ -143,8 +143,10 @@ entry! {
         let options = SETUP.with(|s| s.borrow().options.clone());
         let app = callbacks::register(app_from_setup().init(hand_over(made)));
         callbacks::set_in_loop(true);
-        app.run_with(options);
-        std::process::exit(0);
+        // The loop does not return to C either way: a panic inside it (a bug) ends the
+        // program with status 1 after its message, as a failed run does.
+        let ran = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| app.run_with(options)));
+        std::process::exit(if ran.is_ok() { 0 } else { 1 });
     }
 }
 
