@@ -4,8 +4,7 @@
 # cases/*.calls script, and compared with real Mesa's committed outputs (expected/*.out) with
 # the Rust interpreter's tolerances (calls-compare).
 #   capi/tests/calls.sh [MIN_AGREEING]
-# Fails if fewer cases agree than MIN_AGREEING (default: all). Known differences: the cases
-# that use `texgen_normal` (gleval has no glTexGen, so interp.c skips it when built on gleval),
+# Fails if fewer cases agree than MIN_AGREEING (default: all). Known differences:
 # quirks.calls (Mesa lets evaluated values leak into state never set; the spec forbids it) and
 # map2_null_points (NULL points are GL_INVALID_VALUE in gleval), as FORMAT.md and
 # tests/it/mesa_calls.rs record.

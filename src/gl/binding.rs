@@ -17,8 +17,26 @@ fn format_components(format: GLenum) -> Option<usize> {
         GL_COLOR_INDEX | GL_STENCIL_INDEX | GL_DEPTH_COMPONENT | GL_RED | GL_GREEN | GL_BLUE | GL_ALPHA
         | GL_LUMINANCE => Some(1),
         GL_LUMINANCE_ALPHA => Some(2),
-        GL_RGB => Some(3),
-        GL_RGBA => Some(4),
+        GL_RGB | GL_BGR => Some(3),
+        GL_RGBA | GL_BGRA => Some(4),
+        _ => None,
+    }
+}
+
+/// Bytes per pixel of a GL 1.2 packed type (one value holds the whole pixel).
+fn packed_pixel_size(type_: GLenum) -> Option<usize> {
+    match type_ {
+        GL_UNSIGNED_BYTE_3_3_2 | GL_UNSIGNED_BYTE_2_3_3_REV => Some(1),
+        GL_UNSIGNED_SHORT_5_6_5
+        | GL_UNSIGNED_SHORT_5_6_5_REV
+        | GL_UNSIGNED_SHORT_4_4_4_4
+        | GL_UNSIGNED_SHORT_4_4_4_4_REV
+        | GL_UNSIGNED_SHORT_5_5_5_1
+        | GL_UNSIGNED_SHORT_1_5_5_5_REV => Some(2),
+        GL_UNSIGNED_INT_8_8_8_8
+        | GL_UNSIGNED_INT_8_8_8_8_REV
+        | GL_UNSIGNED_INT_10_10_10_2
+        | GL_UNSIGNED_INT_2_10_10_10_REV => Some(4),
         _ => None,
     }
 }
@@ -52,7 +70,11 @@ impl Gl {
     #[must_use]
     pub fn unpacked_image_len(&self, width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum) -> Option<usize> {
         let (w, h) = (usize::try_from(width).ok()?, usize::try_from(height).ok()?);
-        let (components, size) = (format_components(format)?, type_size(type_)?);
+        // A packed type is one element a pixel, whatever the format's component count.
+        let (components, size) = match packed_pixel_size(type_) {
+            Some(size) => (format_components(format).map(|_| 1)?, size),
+            None => (format_components(format)?, type_size(type_)?),
+        };
         if w == 0 || h == 0 {
             return Some(0);
         }

@@ -10,15 +10,14 @@
 //! order (checked against Mesa 22 in `tests/reference/calls/cases/feedback.calls`).
 //!
 //! Not modelled: clipping (vertices outside the view volume are reported, not clipped),
-//! lighting (the colour is the current or evaluated one), the texture matrix, polygon mode
-//! and culling, `glPassThrough`, and selection mode (`GL_SELECT` is `GL_INVALID_ENUM` here).
+//! lighting (the colour is the current or evaluated one), polygon mode and culling, `glPassThrough`, and selection mode (`GL_SELECT` is `GL_INVALID_ENUM` here).
 
 use super::consts::*;
 use super::frame::{Command, DrawState};
 use super::types::*;
 use super::vertex::Vertex;
 use super::Gl;
-use glam::Vec4;
+use glam::{Mat3, Vec3, Vec4};
 
 /// `GL_FEEDBACK` (GL 1.1 table 5.3).
 pub const GL_FEEDBACK: GLenum = 0x1C01;
@@ -65,11 +64,23 @@ pub(crate) struct Feedback {
     values: Vec<GLfloat>,
     /// Primitives drawn while a list compiles wait for the next pass after it ends.
     held: bool,
+    /// The `GL_BITMAP_TOKEN`s and `GL_DRAW_PIXEL_TOKEN`s of this pass, each with the frame
+    /// command it came before and the vertex it reports (window position, colour, texture
+    /// coordinate of the raster position).
+    raster_tokens: Vec<(usize, GLenum, [[GLfloat; 4]; 3])>,
 }
 
 impl Default for Feedback {
     fn default() -> Self {
-        Self { mode: GL_RENDER, size: 0, kind: GL_2D, start: 0, values: Vec::new(), held: false }
+        Self {
+            mode: GL_RENDER,
+            size: 0,
+            kind: GL_2D,
+            start: 0,
+            values: Vec::new(),
+            held: false,
+            raster_tokens: Vec::new(),
+        }
     }
 }
 
@@ -171,6 +182,7 @@ impl Gl {
                 if !self.feedback.held {
                     self.evaluate_pending_meshes();
                     self.feedback.start = self.frame.commands.len();
+                    self.feedback.raster_tokens.clear();
                 }
             }
             _ => {
@@ -201,8 +213,12 @@ impl Gl {
         self.evaluate_pending_meshes();
         let start = self.feedback.start.min(self.frame.commands.len());
         let commands: Vec<Command> = self.frame.commands.drain(start..).collect();
+        let mut tokens = std::mem::take(&mut self.feedback.raster_tokens).into_iter().peekable();
         let mut values = Vec::new();
-        for command in commands {
+        for (k, command) in commands.into_iter().enumerate() {
+            while let Some((_, token, vertex)) = tokens.next_if(|t| t.0 <= start + k) {
+                self.feedback_raster(&mut values, token, vertex);
+            }
             match command {
                 Command::Draw(i) => {
                     let p = self.frame.primitives[i];
@@ -221,6 +237,9 @@ impl Gl {
                 Command::Clear { .. } => {}
             }
         }
+        for (_, token, vertex) in tokens {
+            self.feedback_raster(&mut values, token, vertex);
+        }
         let overflow = values.len() > self.feedback.size;
         values.truncate(self.feedback.size);
         let count = values.len();
@@ -229,6 +248,37 @@ impl Gl {
             -1
         } else {
             GLint::try_from(count).unwrap_or(GLint::MAX)
+        }
+    }
+
+    /// In feedback mode a `glBitmap` or `glDrawPixels` at a valid raster position writes
+    /// `token` and the raster position as a vertex instead of drawing (GL 1.1 §5.3); true
+    /// when it did.
+    pub(crate) fn feedback_raster_token(&mut self, token: GLenum) -> bool {
+        if self.feedback.mode != GL_FEEDBACK {
+            return false;
+        }
+        let r = &self.raster_pos;
+        let vertex = [r.window, r.color.map(|c| c.clamp(0.0, 1.0)), r.tex_coord];
+        self.feedback.raster_tokens.push((self.frame.commands.len(), token, vertex));
+        true
+    }
+
+    /// A raster token and its vertex, laid out as the buffer type says.
+    fn feedback_raster(&self, out: &mut Vec<GLfloat>, token: GLenum, [window, color, tex]: [[GLfloat; 4]; 3]) {
+        let (four, with_color, with_texture) = layout(self.feedback.kind).unwrap_or_default();
+        let position = match self.feedback.kind {
+            GL_2D => 2,
+            _ if four => 4,
+            _ => 3,
+        };
+        out.push(token as GLfloat);
+        out.extend_from_slice(&window[..position]);
+        if with_color {
+            out.extend_from_slice(&color);
+        }
+        if with_texture {
+            out.extend_from_slice(&tex);
         }
     }
 
@@ -268,9 +318,27 @@ impl Gl {
             out.extend_from_slice(&v.color);
         }
         if texture {
-            out.extend_from_slice(&v.tex_coord);
+            out.extend_from_slice(&feedback_tex_coord(state, v));
         }
     }
+}
+
+/// The texture coordinate GL reports for a vertex: with a texture enabled, generated where
+/// `glTexGen` is on (GL 1.1 §2.10.4) and through the texture matrix; as given without one.
+fn feedback_tex_coord(state: &DrawState, v: &Vertex) -> [GLfloat; 4] {
+    let Some(texture) = &state.texture else { return v.tex_coord };
+    let given = Vec4::from_array(v.tex_coord);
+    let generated = texture.generate.map_or(given, |g| {
+        let object = Vec4::from_array(v.position);
+        let eye = state.modelview * object;
+        let normal_matrix = Mat3::from_mat4(state.modelview).inverse().transpose();
+        let mut normal = normal_matrix * Vec3::from_array(v.normal);
+        if state.normalize || state.rescale_normal {
+            normal = normal.normalize_or_zero();
+        }
+        g.apply(given, object, eye, normal)
+    });
+    (texture.matrix * generated).to_array()
 }
 
 #[cfg(test)]

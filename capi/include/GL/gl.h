@@ -123,9 +123,31 @@ typedef double GLclampd;
 #define GL_TEXTURE_GEN_T 0x0C61
 #define GL_TEXTURE_GEN_R 0x0C62
 #define GL_TEXTURE_GEN_Q 0x0C63
+/* glTexGen: the coordinates, names and modes. */
+#define GL_S 0x2000
+#define GL_T 0x2001
+#define GL_R 0x2002
+#define GL_Q 0x2003
+#define GL_TEXTURE_GEN_MODE 0x2500
+#define GL_OBJECT_PLANE 0x2501
+#define GL_EYE_PLANE 0x2502
+#define GL_EYE_LINEAR 0x2400
+#define GL_OBJECT_LINEAR 0x2401
+#define GL_SPHERE_MAP 0x2402
+#define GL_NORMAL_MAP 0x8511
+#define GL_REFLECTION_MAP 0x8512
 #define GL_TEXTURE_1D 0x0DE0
 #define GL_TEXTURE_2D 0x0DE1
 #define GL_POLYGON_OFFSET_FILL 0x8037
+#define GL_POLYGON_OFFSET_LINE 0x2A02
+#define GL_POLYGON_OFFSET_POINT 0x2A01
+#define GL_POLYGON_STIPPLE 0x0B42
+#define GL_CLIP_PLANE0 0x3000
+#define GL_CLIP_PLANE1 0x3001
+#define GL_CLIP_PLANE2 0x3002
+#define GL_CLIP_PLANE3 0x3003
+#define GL_CLIP_PLANE4 0x3004
+#define GL_CLIP_PLANE5 0x3005
 #define GL_RESCALE_NORMAL 0x803A
 #define GL_MULTISAMPLE 0x809D
 #define GL_LIGHT0 0x4000
@@ -144,6 +166,7 @@ typedef double GLclampd;
 #define GL_DEPTH_BUFFER_BIT 0x00000100
 #define GL_COLOR_BUFFER_BIT 0x00004000
 #define GL_EVAL_BIT 0x00010000
+/* Mesa's limit on evaluator order (`src/mesa/main/config.h` MAX_EVAL_ORDER). */
 /* Matrices. */
 #define GL_MATRIX_MODE 0x0BA0
 #define GL_MODELVIEW 0x1700
@@ -252,6 +275,10 @@ typedef double GLclampd;
 #define GL_TEXTURE_BINDING_1D 0x8068
 #define GL_TEXTURE_BINDING_2D 0x8069
 #define GL_MAX_TEXTURE_SIZE 0x0D33
+/* The current attributes (glGet, GL 1.1 table 6.5). */
+#define GL_CURRENT_COLOR 0x0B00
+#define GL_CURRENT_NORMAL 0x0B02
+#define GL_CURRENT_TEXTURE_COORDS 0x0B03
 /* The current raster position (glGet, GL 1.1 spec §2.12). */
 #define GL_CURRENT_RASTER_COLOR 0x0B04
 #define GL_CURRENT_RASTER_INDEX 0x0B05
@@ -271,6 +298,21 @@ typedef double GLclampd;
 #define GL_RGBA 0x1908
 #define GL_LUMINANCE 0x1909
 #define GL_LUMINANCE_ALPHA 0x190A
+/* GL 1.2's reversed colour orders and packed pixel types. */
+#define GL_BGR 0x80E0
+#define GL_BGRA 0x80E1
+#define GL_UNSIGNED_BYTE_3_3_2 0x8032
+#define GL_UNSIGNED_SHORT_4_4_4_4 0x8033
+#define GL_UNSIGNED_SHORT_5_5_5_1 0x8034
+#define GL_UNSIGNED_INT_8_8_8_8 0x8035
+#define GL_UNSIGNED_INT_10_10_10_2 0x8036
+#define GL_UNSIGNED_BYTE_2_3_3_REV 0x8362
+#define GL_UNSIGNED_SHORT_5_6_5 0x8363
+#define GL_UNSIGNED_SHORT_5_6_5_REV 0x8364
+#define GL_UNSIGNED_SHORT_4_4_4_4_REV 0x8365
+#define GL_UNSIGNED_SHORT_1_5_5_5_REV 0x8366
+#define GL_UNSIGNED_INT_8_8_8_8_REV 0x8367
+#define GL_UNSIGNED_INT_2_10_10_10_REV 0x8368
 #define GL_RGB8 0x8051
 #define GL_RGBA8 0x8058
 #define GL_ALPHA8 0x803C
@@ -308,6 +350,7 @@ typedef double GLclampd;
 #define GL_POINT_BIT 0x00000002
 #define GL_LINE_BIT 0x00000004
 #define GL_POLYGON_BIT 0x00000008
+#define GL_POLYGON_STIPPLE_BIT 0x00000010
 #define GL_LIGHTING_BIT 0x00000040
 #define GL_FOG_BIT 0x00000080
 #define GL_VIEWPORT_BIT 0x00000800
@@ -315,6 +358,12 @@ typedef double GLclampd;
 #define GL_ENABLE_BIT 0x00002000
 #define GL_TEXTURE_BIT 0x00040000
 #define GL_ALL_ATTRIB_BITS 0xFFFFFFFF
+/* Line stipple, polygon offset and clip-plane queries. */
+#define GL_LINE_STIPPLE_PATTERN 0x0B25
+#define GL_LINE_STIPPLE_REPEAT 0x0B26
+#define GL_POLYGON_OFFSET_FACTOR 0x8038
+#define GL_POLYGON_OFFSET_UNITS 0x2A00
+#define GL_MAX_CLIP_PLANES 0x0D32
 
 /* State, errors and queries. */
 GLAPI void GLAPIENTRY glEnable(GLenum cap);
@@ -491,6 +540,118 @@ GLAPI void GLAPIENTRY glRasterPos3dv(const GLdouble *v);
 GLAPI void GLAPIENTRY glBitmap(GLsizei width, GLsizei height, GLfloat xorig, GLfloat yorig, GLfloat xmove, GLfloat ymove, const GLubyte *bitmap);
 GLAPI void GLAPIENTRY glReadPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum format, GLenum type, GLvoid *pixels);
 GLAPI void GLAPIENTRY glDrawPixels(GLsizei width, GLsizei height, GLenum format, GLenum type, const GLvoid *pixels);
+
+/* Type variants of the per-vertex calls (integers normalised for colours and normals). */
+GLAPI void GLAPIENTRY glColor3b(GLbyte r, GLbyte g, GLbyte b);
+GLAPI void GLAPIENTRY glColor3s(GLshort r, GLshort g, GLshort b);
+GLAPI void GLAPIENTRY glColor3i(GLint r, GLint g, GLint b);
+GLAPI void GLAPIENTRY glColor3d(GLdouble r, GLdouble g, GLdouble b);
+GLAPI void GLAPIENTRY glColor3us(GLushort r, GLushort g, GLushort b);
+GLAPI void GLAPIENTRY glColor3ui(GLuint r, GLuint g, GLuint b);
+GLAPI void GLAPIENTRY glColor4b(GLbyte r, GLbyte g, GLbyte b, GLbyte a);
+GLAPI void GLAPIENTRY glColor4s(GLshort r, GLshort g, GLshort b, GLshort a);
+GLAPI void GLAPIENTRY glColor4i(GLint r, GLint g, GLint b, GLint a);
+GLAPI void GLAPIENTRY glColor4d(GLdouble r, GLdouble g, GLdouble b, GLdouble a);
+GLAPI void GLAPIENTRY glColor4ub(GLubyte r, GLubyte g, GLubyte b, GLubyte a);
+GLAPI void GLAPIENTRY glColor4us(GLushort r, GLushort g, GLushort b, GLushort a);
+GLAPI void GLAPIENTRY glColor4ui(GLuint r, GLuint g, GLuint b, GLuint a);
+GLAPI void GLAPIENTRY glNormal3b(GLbyte x, GLbyte y, GLbyte z);
+GLAPI void GLAPIENTRY glNormal3s(GLshort x, GLshort y, GLshort z);
+GLAPI void GLAPIENTRY glNormal3i(GLint x, GLint y, GLint z);
+GLAPI void GLAPIENTRY glNormal3d(GLdouble x, GLdouble y, GLdouble z);
+GLAPI void GLAPIENTRY glVertex2i(GLint x, GLint y);
+GLAPI void GLAPIENTRY glVertex2s(GLshort x, GLshort y);
+GLAPI void GLAPIENTRY glVertex3i(GLint x, GLint y, GLint z);
+GLAPI void GLAPIENTRY glVertex3s(GLshort x, GLshort y, GLshort z);
+GLAPI void GLAPIENTRY glVertex4d(GLdouble x, GLdouble y, GLdouble z, GLdouble w);
+GLAPI void GLAPIENTRY glVertex4i(GLint x, GLint y, GLint z, GLint w);
+GLAPI void GLAPIENTRY glVertex4s(GLshort x, GLshort y, GLshort z, GLshort w);
+GLAPI void GLAPIENTRY glTexCoord1d(GLdouble s);
+GLAPI void GLAPIENTRY glTexCoord1i(GLint s);
+GLAPI void GLAPIENTRY glTexCoord1s(GLshort s);
+GLAPI void GLAPIENTRY glTexCoord2d(GLdouble s, GLdouble t);
+GLAPI void GLAPIENTRY glTexCoord2i(GLint s, GLint t);
+GLAPI void GLAPIENTRY glTexCoord2s(GLshort s, GLshort t);
+GLAPI void GLAPIENTRY glTexCoord3d(GLdouble s, GLdouble t, GLdouble r);
+GLAPI void GLAPIENTRY glTexCoord3i(GLint s, GLint t, GLint r);
+GLAPI void GLAPIENTRY glTexCoord3s(GLshort s, GLshort t, GLshort r);
+GLAPI void GLAPIENTRY glTexCoord4d(GLdouble s, GLdouble t, GLdouble r, GLdouble q);
+GLAPI void GLAPIENTRY glTexCoord4i(GLint s, GLint t, GLint r, GLint q);
+GLAPI void GLAPIENTRY glTexCoord4s(GLshort s, GLshort t, GLshort r, GLshort q);
+GLAPI void GLAPIENTRY glRasterPos2s(GLshort x, GLshort y);
+GLAPI void GLAPIENTRY glRasterPos3s(GLshort x, GLshort y, GLshort z);
+GLAPI void GLAPIENTRY glRasterPos4i(GLint x, GLint y, GLint z, GLint w);
+GLAPI void GLAPIENTRY glRasterPos4s(GLshort x, GLshort y, GLshort z, GLshort w);
+GLAPI void GLAPIENTRY glRects(GLshort x1, GLshort y1, GLshort x2, GLshort y2);
+GLAPI void GLAPIENTRY glColor3bv(const GLbyte *v);
+GLAPI void GLAPIENTRY glColor3sv(const GLshort *v);
+GLAPI void GLAPIENTRY glColor3iv(const GLint *v);
+GLAPI void GLAPIENTRY glColor3dv(const GLdouble *v);
+GLAPI void GLAPIENTRY glColor3ubv(const GLubyte *v);
+GLAPI void GLAPIENTRY glColor3usv(const GLushort *v);
+GLAPI void GLAPIENTRY glColor3uiv(const GLuint *v);
+GLAPI void GLAPIENTRY glColor4bv(const GLbyte *v);
+GLAPI void GLAPIENTRY glColor4sv(const GLshort *v);
+GLAPI void GLAPIENTRY glColor4iv(const GLint *v);
+GLAPI void GLAPIENTRY glColor4dv(const GLdouble *v);
+GLAPI void GLAPIENTRY glColor4ubv(const GLubyte *v);
+GLAPI void GLAPIENTRY glColor4usv(const GLushort *v);
+GLAPI void GLAPIENTRY glColor4uiv(const GLuint *v);
+GLAPI void GLAPIENTRY glNormal3bv(const GLbyte *v);
+GLAPI void GLAPIENTRY glNormal3sv(const GLshort *v);
+GLAPI void GLAPIENTRY glNormal3iv(const GLint *v);
+GLAPI void GLAPIENTRY glNormal3dv(const GLdouble *v);
+GLAPI void GLAPIENTRY glVertex2dv(const GLdouble *v);
+GLAPI void GLAPIENTRY glVertex2iv(const GLint *v);
+GLAPI void GLAPIENTRY glVertex2sv(const GLshort *v);
+GLAPI void GLAPIENTRY glVertex3dv(const GLdouble *v);
+GLAPI void GLAPIENTRY glVertex3iv(const GLint *v);
+GLAPI void GLAPIENTRY glVertex3sv(const GLshort *v);
+GLAPI void GLAPIENTRY glVertex4dv(const GLdouble *v);
+GLAPI void GLAPIENTRY glVertex4iv(const GLint *v);
+GLAPI void GLAPIENTRY glVertex4sv(const GLshort *v);
+GLAPI void GLAPIENTRY glTexCoord1fv(const GLfloat *v);
+GLAPI void GLAPIENTRY glTexCoord1dv(const GLdouble *v);
+GLAPI void GLAPIENTRY glTexCoord1iv(const GLint *v);
+GLAPI void GLAPIENTRY glTexCoord1sv(const GLshort *v);
+GLAPI void GLAPIENTRY glTexCoord2dv(const GLdouble *v);
+GLAPI void GLAPIENTRY glTexCoord2iv(const GLint *v);
+GLAPI void GLAPIENTRY glTexCoord2sv(const GLshort *v);
+GLAPI void GLAPIENTRY glTexCoord3fv(const GLfloat *v);
+GLAPI void GLAPIENTRY glTexCoord3dv(const GLdouble *v);
+GLAPI void GLAPIENTRY glTexCoord3iv(const GLint *v);
+GLAPI void GLAPIENTRY glTexCoord3sv(const GLshort *v);
+GLAPI void GLAPIENTRY glTexCoord4fv(const GLfloat *v);
+GLAPI void GLAPIENTRY glTexCoord4dv(const GLdouble *v);
+GLAPI void GLAPIENTRY glTexCoord4iv(const GLint *v);
+GLAPI void GLAPIENTRY glTexCoord4sv(const GLshort *v);
+GLAPI void GLAPIENTRY glRasterPos2sv(const GLshort *v);
+GLAPI void GLAPIENTRY glRasterPos3iv(const GLint *v);
+GLAPI void GLAPIENTRY glRasterPos3sv(const GLshort *v);
+GLAPI void GLAPIENTRY glRasterPos4dv(const GLdouble *v);
+GLAPI void GLAPIENTRY glRasterPos4iv(const GLint *v);
+GLAPI void GLAPIENTRY glRasterPos4sv(const GLshort *v);
+GLAPI void GLAPIENTRY glRectfv(const GLfloat *v1, const GLfloat *v2);
+GLAPI void GLAPIENTRY glRectdv(const GLdouble *v1, const GLdouble *v2);
+GLAPI void GLAPIENTRY glRectiv(const GLint *v1, const GLint *v2);
+GLAPI void GLAPIENTRY glRectsv(const GLshort *v1, const GLshort *v2);
+
+/* Texture coordinate generation. */
+GLAPI void GLAPIENTRY glTexGeni(GLenum coord, GLenum pname, GLint param);
+GLAPI void GLAPIENTRY glTexGenf(GLenum coord, GLenum pname, GLfloat param);
+GLAPI void GLAPIENTRY glTexGend(GLenum coord, GLenum pname, GLdouble param);
+GLAPI void GLAPIENTRY glTexGenfv(GLenum coord, GLenum pname, const GLfloat *params);
+GLAPI void GLAPIENTRY glTexGeniv(GLenum coord, GLenum pname, const GLint *params);
+GLAPI void GLAPIENTRY glTexGendv(GLenum coord, GLenum pname, const GLdouble *params);
+GLAPI void GLAPIENTRY glGetTexGenfv(GLenum coord, GLenum pname, GLfloat *params);
+GLAPI void GLAPIENTRY glGetTexGeniv(GLenum coord, GLenum pname, GLint *params);
+
+/* Rasterisation modes. */
+GLAPI void GLAPIENTRY glLineStipple(GLint factor, GLushort pattern);
+GLAPI void GLAPIENTRY glPolygonStipple(const GLubyte *mask);
+GLAPI void GLAPIENTRY glPolygonOffset(GLfloat factor, GLfloat units);
+GLAPI void GLAPIENTRY glClipPlane(GLenum plane, const GLdouble *equation);
+GLAPI void GLAPIENTRY glGetClipPlane(GLenum plane, GLdouble *equation);
 
 #ifdef __cplusplus
 }

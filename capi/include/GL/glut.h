@@ -26,6 +26,9 @@ extern "C" {
 #define GLUT_BITMAP_HELVETICA_10 ((void *)0x0006)
 #define GLUT_BITMAP_HELVETICA_12 ((void *)0x0007)
 #define GLUT_BITMAP_HELVETICA_18 ((void *)0x0008)
+/* Stroke fonts (glutStrokeCharacter): freeglut's handle values. */
+#define GLUT_STROKE_ROMAN ((void *)0x0000)
+#define GLUT_STROKE_MONO_ROMAN ((void *)0x0001)
 /* Mouse buttons and states (glutMouseFunc), window entry (glutEntryFunc). */
 #define GLUT_LEFT_BUTTON 0
 #define GLUT_MIDDLE_BUTTON 1
@@ -88,6 +91,7 @@ extern "C" {
 #define GLUT_INIT_WINDOW_HEIGHT 503
 #define GLUT_INIT_DISPLAY_MODE 504
 #define GLUT_ELAPSED_TIME 700
+#define GLUT_MENU_NUM_ITEMS 300
 
 /* Initialisation and the main loop. */
 void glutInit(int *argcp, char **argv);
@@ -128,6 +132,36 @@ int glutBitmapLength(void *font, const unsigned char *string);
 int glutBitmapHeight(void *font);
 void glutSolidTeapot(GLdouble size);
 void glutWireTeapot(GLdouble size);
+void glutStrokeCharacter(void *font, int character);
+void glutStrokeString(void *font, const unsigned char *string);
+int glutStrokeWidth(void *font, int character);
+float glutStrokeWidthf(void *font, int character);
+int glutStrokeLength(void *font, const unsigned char *string);
+float glutStrokeLengthf(void *font, const unsigned char *string);
+float glutStrokeHeight(void *font);
+
+/* The solids (freeglut's geometry). */
+void glutSolidSphere(GLdouble radius, GLint slices, GLint stacks);
+void glutWireSphere(GLdouble radius, GLint slices, GLint stacks);
+void glutSolidCube(GLdouble size);
+void glutWireCube(GLdouble size);
+void glutSolidCone(GLdouble base, GLdouble height, GLint slices, GLint stacks);
+void glutWireCone(GLdouble base, GLdouble height, GLint slices, GLint stacks);
+void glutSolidTorus(GLdouble innerRadius, GLdouble outerRadius, GLint sides, GLint rings);
+void glutWireTorus(GLdouble innerRadius, GLdouble outerRadius, GLint sides, GLint rings);
+
+/* Menus: a real pop-up in the window (see the README). */
+int glutCreateMenu(void (*func)(int value));
+void glutSetMenu(int menu);
+int glutGetMenu(void);
+void glutDestroyMenu(int menu);
+void glutAddMenuEntry(const char *label, int value);
+void glutAddSubMenu(const char *label, int submenu);
+void glutChangeToMenuEntry(int item, const char *label, int value);
+void glutChangeToSubMenu(int item, const char *label, int submenu);
+void glutRemoveMenuItem(int item);
+void glutAttachMenu(int button);
+void glutDetachMenu(int button);
 
 #ifdef __cplusplus
 }

@@ -36,7 +36,10 @@ fn get_count(pname: GLenum) -> usize {
         GL_MAP2_GRID_DOMAIN
         | GL_CURRENT_RASTER_POSITION
         | GL_CURRENT_RASTER_COLOR
-        | GL_CURRENT_RASTER_TEXTURE_COORDS => 4,
+        | GL_CURRENT_RASTER_TEXTURE_COORDS
+        | GL_CURRENT_COLOR
+        | GL_CURRENT_TEXTURE_COORDS => 4,
+        GL_CURRENT_NORMAL => 3,
         GL_MAP1_GRID_DOMAIN | GL_MAP2_GRID_SEGMENTS => 2,
         _ => 1,
     }

@@ -8,4 +8,7 @@
 mod callbacks;
 mod fonts;
 mod init;
+mod menus;
 mod requests;
+mod shapes;
+mod strokes;

@@ -654,14 +654,12 @@ static void run_call(const char *c)
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
         glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, texel);
         glEnable(GL_TEXTURE_2D);
-#ifndef GLEVAL_GL_H /* gleval's C ABI (capi/) has no glTexGen: there these cases differ */
         glTexGeni(GL_S, GL_TEXTURE_GEN_MODE, GL_NORMAL_MAP);
         glTexGeni(GL_T, GL_TEXTURE_GEN_MODE, GL_NORMAL_MAP);
         glTexGeni(GL_R, GL_TEXTURE_GEN_MODE, GL_NORMAL_MAP);
         glEnable(GL_TEXTURE_GEN_S);
         glEnable(GL_TEXTURE_GEN_T);
         glEnable(GL_TEXTURE_GEN_R);
-#endif
     } else {
         die("unknown call", c);
     }

@@ -1,0 +1,83 @@
+//! GLUT's stroke fonts. Their C handles are freeglut's, `(void *)0` for `GLUT_STROKE_ROMAN`
+//! and `(void *)1` for `GLUT_STROKE_MONO_ROMAN`; another pointer is no font, and the calls
+//! draw nothing and measure 0.
+
+use crate::context::with_gl;
+use gleval::glut::fonts::{GlutStrokeFont, GLUT_STROKE_MONO_ROMAN, GLUT_STROKE_ROMAN};
+use std::ffi::{c_char, c_float, c_int, c_uchar, c_void, CStr};
+
+/// The font a C handle names.
+fn font(handle: *const c_void) -> Option<GlutStrokeFont> {
+    match handle as usize {
+        0 => Some(GLUT_STROKE_ROMAN),
+        1 => Some(GLUT_STROKE_MONO_ROMAN),
+        _ => None,
+    }
+}
+
+/// The bytes of a C string up to its NUL; empty for NULL.
+///
+/// # Safety
+/// `s` is NULL or a NUL-terminated string.
+unsafe fn c_bytes<'a>(s: *const c_uchar) -> &'a [u8] {
+    if s.is_null() {
+        return &[];
+    }
+    unsafe { CStr::from_ptr(s.cast::<c_char>()) }.to_bytes()
+}
+
+entry! {
+    /// `glutStrokeCharacter`.
+    fn glutStrokeCharacter(handle: *const c_void, character: c_int) {
+        if let Some(f) = font(handle) {
+            with_gl(|gl| gl.glut_stroke_character(f, character))
+        }
+    }
+}
+
+entry! {
+    /// `glutStrokeString` (freeglut).
+    unsafe fn glutStrokeString(handle: *const c_void, string: *const c_uchar) {
+        if let Some(f) = font(handle) {
+            let s = unsafe { c_bytes(string) };
+            with_gl(|gl| gl.glut_stroke_string(f, s))
+        }
+    }
+}
+
+entry! {
+    /// `glutStrokeWidth`.
+    fn glutStrokeWidth(handle: *const c_void, character: c_int) -> c_int {
+        font(handle).map_or(0, |f| with_gl(|gl| gl.glut_stroke_width(f, character)))
+    }
+}
+
+entry! {
+    /// `glutStrokeWidthf` (freeglut).
+    fn glutStrokeWidthf(handle: *const c_void, character: c_int) -> c_float {
+        font(handle).map_or(0.0, |f| with_gl(|gl| gl.glut_stroke_widthf(f, character)))
+    }
+}
+
+entry! {
+    /// `glutStrokeLength`.
+    unsafe fn glutStrokeLength(handle: *const c_void, string: *const c_uchar) -> c_int {
+        let s = unsafe { c_bytes(string) };
+        font(handle).map_or(0, |f| with_gl(|gl| gl.glut_stroke_length(f, s)))
+    }
+}
+
+entry! {
+    /// `glutStrokeLengthf` (freeglut).
+    unsafe fn glutStrokeLengthf(handle: *const c_void, string: *const c_uchar) -> c_float {
+        let s = unsafe { c_bytes(string) };
+        font(handle).map_or(0.0, |f| with_gl(|gl| gl.glut_stroke_lengthf(f, s)))
+    }
+}
+
+entry! {
+    /// `glutStrokeHeight` (freeglut).
+    fn glutStrokeHeight(handle: *const c_void) -> c_float {
+        font(handle).map_or(0.0, |f| with_gl(|gl| gl.glut_stroke_height(f)))
+    }
+}
