@@ -120,6 +120,13 @@ fn smooth(gl: &mut Gl, x: i32, y: i32, w: i32, h: i32) {
         gl.vertex2f(-1.25 + 0.5 * f + 0.013, 0.8);
         gl.end();
     }
+    gl.point_size(9.0);
+    gl.color4f(0.9, 0.2, 0.1, 0.4);
+    gl.begin(GL_POINTS);
+    for i in 0..3 {
+        gl.vertex2f(-0.9 + 0.9 * i as f32, -0.8);
+    }
+    gl.end();
     gl.point_size(1.0);
     gl.disable(GL_POINT_SMOOTH);
     gl.enable(GL_LINE_SMOOTH);

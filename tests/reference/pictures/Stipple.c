@@ -2,7 +2,7 @@
 // curve drawn with four line stipples, separate stippled GL_LINES (each restarts the pattern)
 // and a wide stippled loop around a bar filled through a polygon stipple of diagonal hatching
 // (its rows 20 to 31 empty, so that the pattern shows where the window's row 0 is). Top right:
-// smooth points and lines, blended. Bottom left: a lit surface cut by a clip plane (given
+// smooth points (opaque and translucent) and lines, blended. Bottom left: a lit surface cut by a clip plane (given
 // under a rotation, kept in eye space), in fog. Bottom right: a filled surface pushed back by
 // polygon offset under its own wire outline.
 #include "gl.h"
@@ -111,6 +111,12 @@ static void smooth(int x, int y, int w, int h)
         glVertex2f(-1.25f + 0.5f * i + 0.013f, 0.8f);
         glEnd();
     }
+    glPointSize(9.0);
+    glColor4f(0.9, 0.2, 0.1, 0.4);
+    glBegin(GL_POINTS);
+    for (int i = 0; i < 3; i++)
+        glVertex2f(-0.9f + 0.9f * i, -0.8f);
+    glEnd();
     glPointSize(1.0);
     glDisable(GL_POINT_SMOOTH);
     glEnable(GL_LINE_SMOOTH);
