@@ -4,7 +4,8 @@
 //! bar filled through a polygon stipple of diagonal hatching (its rows 20 to 31 empty, so that
 //! the pattern shows where the window's row 0 is). Top right: smooth points and lines,
 //! blended. Bottom left: a lit surface cut by a clip plane (given under a rotation, kept in eye
-//! space), in fog. Bottom right: a filled surface pushed back by polygon offset under its own
+//! space), in fog, under stippled quads, a triangle strip and a polygon drawn in `GL_LINE`
+//! mode. Bottom right: a filled surface pushed back by polygon offset under its own
 //! wire outline.
 //!
 //! `cargo run --release --example stipple -- --png stipple.png`
@@ -164,6 +165,36 @@ fn clipped(gl: &mut Gl, x: i32, y: i32, w: i32, h: i32) {
     gl.disable(GL_FOG);
     gl.disable(GL_LIGHTING);
     gl.disable(GL_CLIP_PLANE0);
+    flat_view(gl, x, y, w, h);
+    gl.enable(GL_LINE_STIPPLE);
+    gl.line_stipple(1, 0x0F0F);
+    gl.polygon_mode(GL_FRONT_AND_BACK, GL_LINE);
+    gl.color3f(0.3, 0.2, 0.6);
+    gl.begin(GL_QUADS);
+    gl.vertex2f(-1.39, 0.81);
+    gl.vertex2f(-0.89, 0.81);
+    gl.vertex2f(-0.89, 1.34);
+    gl.vertex2f(-1.39, 1.34);
+    gl.vertex2f(-0.79, 0.81);
+    gl.vertex2f(-0.29, 0.81);
+    gl.vertex2f(-0.29, 1.34);
+    gl.vertex2f(-0.79, 1.34);
+    gl.end();
+    gl.begin(GL_TRIANGLE_STRIP);
+    gl.vertex2f(-0.19, 0.81);
+    gl.vertex2f(-0.19, 1.34);
+    gl.vertex2f(0.31, 0.81);
+    gl.vertex2f(0.31, 1.34);
+    gl.end();
+    gl.begin(GL_POLYGON);
+    gl.vertex2f(0.91, 1.34);
+    gl.vertex2f(0.61, 1.16);
+    gl.vertex2f(0.71, 0.81);
+    gl.vertex2f(1.11, 0.81);
+    gl.vertex2f(1.21, 1.16);
+    gl.end();
+    gl.polygon_mode(GL_FRONT_AND_BACK, GL_FILL);
+    gl.disable(GL_LINE_STIPPLE);
 }
 
 fn outlined(gl: &mut Gl, x: i32, y: i32, w: i32, h: i32) {

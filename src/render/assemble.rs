@@ -197,7 +197,8 @@ impl Assembler {
         let shader_of = |i: usize| materials.iter().rposition(|&(first, _)| first <= i).map_or(0, |k| k + 1);
         let v: Vec<ShadedVertex> = vertices.iter().enumerate().map(|(i, v)| shaders[shader_of(i)].shade(v)).collect();
         let n = v.len();
-        let mut ctx = PrimitiveContext { out: self, state, v: &v, stipple: Stipple::default() };
+        let closing_edge_first = mode != GL_POLYGON;
+        let mut ctx = PrimitiveContext { out: self, state, v: &v, stipple: Stipple::default(), closing_edge_first };
         match mode {
             GL_POINTS => (0..n).for_each(|i| ctx.point(i)),
             GL_LINES => (0..n / 2).for_each(|i| {
@@ -311,6 +312,9 @@ struct PrimitiveContext<'a, 'b> {
     state: &'b DrawState,
     v: &'b [ShadedVertex],
     stipple: Stipple,
+    /// Polygon edges in line mode start with the closing edge (triangles and quads), not the
+    /// first (`GL_POLYGON`): see [`PrimitiveContext::edges`].
+    closing_edge_first: bool,
 }
 
 impl PrimitiveContext<'_, '_> {
@@ -409,6 +413,21 @@ impl PrimitiveContext<'_, '_> {
         self.out.push(self.state, Topology::Triangles, &[a0, a1, b1, a0, b1, b0]);
     }
 
+    /// A polygon's edges in line mode, in the order Mesa's draw module strokes them, which the
+    /// line stipple shows: it splits triangles and quads into triangles and strokes each
+    /// triangle's edges from its last vertex (v2 → v0, v0 → v1, v1 → v2), restarting the
+    /// stipple at each triangle and quad; `GL_POLYGON` is stroked v0 → v1 → … → v0 with one
+    /// restart (`draw_pipe_unfilled.c`, `draw_pt_decompose.h`; measured on llvmpipe).
+    fn edges(&mut self, corners: &[Corner]) {
+        let n = corners.len();
+        self.stipple.reset();
+        let first = if self.closing_edge_first { n - 1 } else { 0 };
+        for j in 0..n {
+            let k = (first + j) % n;
+            self.line(corners[k], corners[(k + 1) % n]);
+        }
+    }
+
     /// A polygon (triangle, quad or `GL_POLYGON`): orientation, culling, face colour, flat
     /// shading, then the polygon mode of its face. In line mode only the polygon's own edges
     /// are drawn, never the diagonals used to fill it.
@@ -435,11 +454,7 @@ impl PrimitiveContext<'_, '_> {
         }
         match mode {
             GL_POINT => corners.iter().for_each(|&c| self.point_at(c)),
-            GL_LINE => {
-                for k in 0..corners.len() {
-                    self.line(corners[k], corners[(k + 1) % corners.len()]);
-                }
-            }
+            GL_LINE => self.edges(&corners),
             _ => {
                 let tris: Vec<Corner> =
                     (1..corners.len() - 1).flat_map(|k| [corners[0], corners[k], corners[k + 1]]).collect();

@@ -2,9 +2,10 @@
 // curve drawn with four line stipples, separate stippled GL_LINES (each restarts the pattern)
 // and a wide stippled loop around a bar filled through a polygon stipple of diagonal hatching
 // (its rows 20 to 31 empty, so that the pattern shows where the window's row 0 is). Top right:
-// smooth points (opaque and translucent) and lines, blended. Bottom left: a lit surface cut by a clip plane (given
-// under a rotation, kept in eye space), in fog. Bottom right: a filled surface pushed back by
-// polygon offset under its own wire outline.
+// smooth points (opaque and translucent) and lines, blended. Bottom left: a lit surface cut by
+// a clip plane (given under a rotation, kept in eye space), in fog, under stippled quads, a
+// triangle strip and a polygon drawn in GL_LINE mode. Bottom right: a filled surface pushed
+// back by polygon offset under its own wire outline.
 #include "gl.h"
 
 static GLfloat curve[4][3] = {{-1.3, -0.2, 0.0}, {-0.5, 1.0, 0.0}, {0.5, -1.0, 0.0}, {1.3, 0.2, 0.0}};
@@ -154,6 +155,36 @@ static void clipped(int x, int y, int w, int h)
     glDisable(GL_FOG);
     glDisable(GL_LIGHTING);
     glDisable(GL_CLIP_PLANE0);
+    flat_view(x, y, w, h);
+    glEnable(GL_LINE_STIPPLE);
+    glLineStipple(1, 0x0F0F);
+    glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+    glColor3f(0.3, 0.2, 0.6);
+    glBegin(GL_QUADS);
+    glVertex2f(-1.39, 0.81);
+    glVertex2f(-0.89, 0.81);
+    glVertex2f(-0.89, 1.34);
+    glVertex2f(-1.39, 1.34);
+    glVertex2f(-0.79, 0.81);
+    glVertex2f(-0.29, 0.81);
+    glVertex2f(-0.29, 1.34);
+    glVertex2f(-0.79, 1.34);
+    glEnd();
+    glBegin(GL_TRIANGLE_STRIP);
+    glVertex2f(-0.19, 0.81);
+    glVertex2f(-0.19, 1.34);
+    glVertex2f(0.31, 0.81);
+    glVertex2f(0.31, 1.34);
+    glEnd();
+    glBegin(GL_POLYGON);
+    glVertex2f(0.91, 1.34);
+    glVertex2f(0.61, 1.16);
+    glVertex2f(0.71, 0.81);
+    glVertex2f(1.11, 0.81);
+    glVertex2f(1.21, 1.16);
+    glEnd();
+    glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+    glDisable(GL_LINE_STIPPLE);
 }
 
 static void outlined(int x, int y, int w, int h)
