@@ -5,8 +5,8 @@
 //! the pattern shows where the window's row 0 is). Top right: smooth points and lines,
 //! blended. Bottom left: a lit surface cut by a clip plane (given under a rotation, kept in eye
 //! space), in fog, under stippled quads, a triangle strip and a polygon drawn in `GL_LINE`
-//! mode. Bottom right: a filled surface pushed back by polygon offset under its own
-//! wire outline.
+//! mode. Bottom right: a filled surface pushed back by polygon offset under its own wire
+//! outline, under a smooth stippled line strip.
 //!
 //! `cargo run --release --example stipple -- --png stipple.png`
 
@@ -208,6 +208,23 @@ fn outlined(gl: &mut Gl, x: i32, y: i32, w: i32, h: i32) {
     gl.disable(GL_LIGHTING);
     gl.color3f(0.0, 0.0, 0.0);
     gl.eval_mesh2(GL_LINE, 0, 12, 0, 12);
+    flat_view(gl, x, y, w, h);
+    gl.enable(GL_BLEND);
+    gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    gl.enable(GL_LINE_SMOOTH);
+    gl.enable(GL_LINE_STIPPLE);
+    gl.line_stipple(2, 0x0F0F);
+    gl.line_width(2.0);
+    gl.color3f(0.6, 0.1, 0.3);
+    gl.begin(GL_LINE_STRIP);
+    gl.vertex2f(-1.37, 0.79);
+    gl.vertex2f(-0.81, 1.35);
+    gl.vertex2f(0.93, 0.83);
+    gl.end();
+    gl.line_width(1.0);
+    gl.disable(GL_LINE_STIPPLE);
+    gl.disable(GL_LINE_SMOOTH);
+    gl.disable(GL_BLEND);
 }
 
 fn display(gl: &mut Gl) {

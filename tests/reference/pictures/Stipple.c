@@ -5,7 +5,7 @@
 // smooth points (opaque and translucent) and lines, blended. Bottom left: a lit surface cut by
 // a clip plane (given under a rotation, kept in eye space), in fog, under stippled quads, a
 // triangle strip and a polygon drawn in GL_LINE mode. Bottom right: a filled surface pushed
-// back by polygon offset under its own wire outline.
+// back by polygon offset under its own wire outline, under a smooth stippled line strip.
 #include "gl.h"
 
 static GLfloat curve[4][3] = {{-1.3, -0.2, 0.0}, {-0.5, 1.0, 0.0}, {0.5, -1.0, 0.0}, {1.3, 0.2, 0.0}};
@@ -199,6 +199,23 @@ static void outlined(int x, int y, int w, int h)
     glDisable(GL_LIGHTING);
     glColor3f(0.0, 0.0, 0.0);
     glEvalMesh2(GL_LINE, 0, 12, 0, 12);
+    flat_view(x, y, w, h);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    glEnable(GL_LINE_SMOOTH);
+    glEnable(GL_LINE_STIPPLE);
+    glLineStipple(2, 0x0F0F);
+    glLineWidth(2.0);
+    glColor3f(0.6, 0.1, 0.3);
+    glBegin(GL_LINE_STRIP);
+    glVertex2f(-1.37, 0.79);
+    glVertex2f(-0.81, 1.35);
+    glVertex2f(0.93, 0.83);
+    glEnd();
+    glLineWidth(1.0);
+    glDisable(GL_LINE_STIPPLE);
+    glDisable(GL_LINE_SMOOTH);
+    glDisable(GL_BLEND);
 }
 
 void Reshape(int w, int h) {}
