@@ -6,7 +6,7 @@
 //! blended. Bottom left: a lit surface cut by a clip plane (given under a rotation, kept in eye
 //! space), in fog, under stippled quads, a triangle strip and a polygon drawn in `GL_LINE`
 //! mode. Bottom right: a filled surface pushed back by polygon offset under its own wire
-//! outline, under a smooth stippled line strip.
+//! outline, under a smooth stippled line strip, and a smooth line and point without blending.
 //!
 //! `cargo run --release --example stipple -- --png stipple.png`
 
@@ -221,10 +221,22 @@ fn outlined(gl: &mut Gl, x: i32, y: i32, w: i32, h: i32) {
     gl.vertex2f(-0.81, 1.35);
     gl.vertex2f(0.93, 0.83);
     gl.end();
-    gl.line_width(1.0);
     gl.disable(GL_LINE_STIPPLE);
-    gl.disable(GL_LINE_SMOOTH);
     gl.disable(GL_BLEND);
+    gl.line_width(3.0);
+    gl.begin(GL_LINES);
+    gl.vertex2f(1.01, 0.83);
+    gl.vertex2f(1.43, 1.07);
+    gl.end();
+    gl.line_width(1.0);
+    gl.disable(GL_LINE_SMOOTH);
+    gl.enable(GL_POINT_SMOOTH);
+    gl.point_size(7.0);
+    gl.begin(GL_POINTS);
+    gl.vertex2f(1.23, 1.23);
+    gl.end();
+    gl.point_size(1.0);
+    gl.disable(GL_POINT_SMOOTH);
 }
 
 fn display(gl: &mut Gl) {

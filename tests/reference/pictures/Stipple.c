@@ -5,7 +5,8 @@
 // smooth points (opaque and translucent) and lines, blended. Bottom left: a lit surface cut by
 // a clip plane (given under a rotation, kept in eye space), in fog, under stippled quads, a
 // triangle strip and a polygon drawn in GL_LINE mode. Bottom right: a filled surface pushed
-// back by polygon offset under its own wire outline, under a smooth stippled line strip.
+// back by polygon offset under its own wire outline, under a smooth stippled line strip, and a
+// smooth line and point without blending.
 #include "gl.h"
 
 static GLfloat curve[4][3] = {{-1.3, -0.2, 0.0}, {-0.5, 1.0, 0.0}, {0.5, -1.0, 0.0}, {1.3, 0.2, 0.0}};
@@ -212,10 +213,22 @@ static void outlined(int x, int y, int w, int h)
     glVertex2f(-0.81, 1.35);
     glVertex2f(0.93, 0.83);
     glEnd();
-    glLineWidth(1.0);
     glDisable(GL_LINE_STIPPLE);
-    glDisable(GL_LINE_SMOOTH);
     glDisable(GL_BLEND);
+    glLineWidth(3.0);
+    glBegin(GL_LINES);
+    glVertex2f(1.01, 0.83);
+    glVertex2f(1.43, 1.07);
+    glEnd();
+    glLineWidth(1.0);
+    glDisable(GL_LINE_SMOOTH);
+    glEnable(GL_POINT_SMOOTH);
+    glPointSize(7.0);
+    glBegin(GL_POINTS);
+    glVertex2f(1.23, 1.23);
+    glEnd();
+    glPointSize(1.0);
+    glDisable(GL_POINT_SMOOTH);
 }
 
 void Reshape(int w, int h) {}
