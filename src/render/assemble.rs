@@ -590,6 +590,33 @@ mod tests {
         }
     }
 
+    /// GL 1.1 §2.13.3: the tracked material keeps the last colour when tracking stops. Real
+    /// Mesa's feedback: red, green, then blue (diffuse 0, 0, 1 after glDisable).
+    #[test]
+    fn the_tracked_material_keeps_the_last_colour() {
+        let mut gl = Gl::new(16, 16);
+        gl.enable(GL_LIGHTING);
+        gl.enable(GL_LIGHT0);
+        gl.normal3f(0.0, 0.0, 1.0);
+        gl.enable(GL_COLOR_MATERIAL);
+        gl.begin(GL_POINTS);
+        gl.color3f(1.0, 0.0, 0.0);
+        gl.vertex2f(0.0, 0.0);
+        gl.color3f(0.0, 1.0, 0.0);
+        gl.vertex2f(0.1, 0.0);
+        gl.end();
+        gl.color3f(0.0, 0.0, 1.0);
+        gl.disable(GL_COLOR_MATERIAL);
+        gl.color3f(1.0, 1.0, 0.0);
+        gl.begin(GL_POINTS);
+        gl.vertex2f(0.2, 0.0);
+        gl.end();
+        let list = assemble(&gl.take_frame());
+        let colours: Vec<[f32; 4]> = list.vertices.iter().map(|v| v.color).collect();
+        // Ambient 0.2 · tracked colour + diffuse tracked colour, clamped to 1.
+        assert_eq!(colours, [[1.0, 0.0, 0.0, 1.0], [0.0, 1.0, 0.0, 1.0], [0.0, 0.0, 1.0, 1.0]]);
+    }
+
     #[test]
     fn depth_range_maps_to_zero_one() {
         assert_eq!(depth_mapped(Vec4::new(0.0, 0.0, -1.0, 1.0), [0.0, 1.0])[2], 0.0);
