@@ -69,6 +69,55 @@ static void mesh1(int runs) {
     printf("eval_mesh1_degree10 %.0f\n", (n + 1) / median(t, runs));
 }
 
+/* The first glEvalMesh2 of a fresh context: 1000^2, GL_AUTO_NORMAL, nothing warm (a new OSMesa
+   context each run; the context's creation is not timed). */
+static void first_mesh2(int runs) {
+    static unsigned char buf[64 * 64 * 4];
+    double t[16];
+    int n = 1000;
+    OSMesaContext previous = OSMesaGetCurrentContext();
+    for (int r = 0; r < runs; r++) {
+        OSMesaContext c = OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 0, NULL);
+        OSMesaMakeCurrent(c, buf, GL_UNSIGNED_BYTE, 64, 64);
+        glEnable(GL_CULL_FACE);
+        glCullFace(GL_FRONT_AND_BACK);
+        glMap2f(GL_MAP2_VERTEX_3, 0, 1, 12, 4, 0, 1, 3, 4, &patch[0][0][0]);
+        glEnable(GL_MAP2_VERTEX_3);
+        glEnable(GL_AUTO_NORMAL);
+        glMapGrid2f(n, 0, 1, n, 0, 1);
+        double s = now();
+        glEvalMesh2(GL_FILL, 0, n, 0, n);
+        glFinish();
+        t[r] = now() - s;
+        OSMesaMakeCurrent(previous, buf, GL_UNSIGNED_BYTE, 64, 64);
+        OSMesaDestroyContext(c);
+    }
+    printf("first_eval_mesh2_1000 %.0f\n", (double)(n + 1) * (n + 1) / median(t, runs));
+}
+
+/* 10,000 curves drawn as the textbook's B-spline programs draw their Bezier pieces: a glMap1f
+   of 4 points, then glBegin(GL_LINE_STRIP), 31 glEvalCoord1f, glEnd. */
+static void eval_coord_curves(int runs) {
+    GLfloat ctl[4][3] = {{-0.5f, 0, 0}, {-0.2f, 0.4f, 0}, {0.2f, -0.4f, 0}, {0.5f, 0, 0}};
+    double t[16];
+    int count = 10000, n = 30;
+    glEnable(GL_MAP1_VERTEX_3);
+    for (int r = 0; r < runs; r++) {
+        double s = now();
+        for (int k = 0; k < count; k++) {
+            ctl[0][1] = (k % 5) * 0.1f;
+            glMap1f(GL_MAP1_VERTEX_3, 0, 1, 3, 4, &ctl[0][0]);
+            glBegin(GL_LINE_STRIP);
+            for (int i = 0; i <= n; i++) glEvalCoord1f((GLfloat)i / n);
+            glEnd();
+        }
+        glFinish();
+        t[r] = now() - s;
+    }
+    glDisable(GL_MAP1_VERTEX_3);
+    printf("eval_coord_curves %.0f\n", (double)count * (n + 1) / median(t, runs));
+}
+
 static void nurbs(int runs) {
     static GLfloat knots[14], ctl[10][10][3];
     for (int i = 0; i < 14; i++) knots[i] = i;
@@ -153,6 +202,8 @@ int main(void) {
     mesh2(4000, 3);
     patches(5);
     mesh1(5);
+    eval_coord_curves(5);
+    first_mesh2(5);
     nurbs(5);
     nurbs_trimmed(5);
     return 0;

@@ -8,6 +8,8 @@
 # median over the rounds, the ratio being the median of each round's own ratio, since the
 # machine's speed drifts between rounds (shared cores) more than within one.
 # The typed-API grid cases (grid_N, grid_fresh_N, grid_normals_N) are compared with Mesa's eval_mesh2_N.
+# The whole_* cases are whole processes (bench/whole_process.sh): each textbook program's headless
+# PNG render, the C original on OSMesa against the Rust port, in renders per second.
 # Peak memory of the 4000^2 typed case goes to stderr.
 set -eu
 rounds=${1:-1}
@@ -15,12 +17,16 @@ here=$(cd "$(dirname "$0")" && pwd)
 build="$here/../tests/reference/build/bench"
 mkdir -p "$build"
 cc -std=gnu99 -O2 -o "$build/anchor" "$here/anchor.c" -lOSMesa -lGLU -lGL -lm
-(cd "$here/.." && cargo build --release --quiet --example bench)
+(cd "$here/.." && cargo build --release --quiet --example bench --example bezcurve --example bezsurf --example bcurve \
+  --example bsurf --example ex1_bezier --example ex2_bspline --example ex3_bspline_n --example ex4_bspline_surface \
+  --example ex5_bird)
 : > "$build/rounds.txt"
 r=1
 while [ "$r" -le "$rounds" ]; do
   GALLIUM_DRIVER=llvmpipe "$build/anchor" > "$build/anchor.txt"
   "$here/../target/release/examples/bench" > "$build/ours.txt"
+  sh "$here/whole_process.sh" anchor 5 >> "$build/anchor.txt"
+  sh "$here/whole_process.sh" ours 5 >> "$build/ours.txt"
   # One line per case and round: case ours anchor (anchor "-" where it has no such case).
   awk 'NR == FNR { anchor[$1] = $2; next }
        { key = $1; sub(/^grid_(fresh_|normals_)?/, "eval_mesh2_", key)
@@ -38,7 +44,9 @@ awk 'function median(list,   n, a, i, j, t) {
      END {
        for (k = 1; k <= cases; k++) {
          c = order[k]
-         if (c in anchor)
+         if (c ~ /^whole_/)
+           printf "%s ours=%.1f/s anchor=%.1f/s ratio=%.2f\n", c, median(ours[c]), median(anchor[c]), median(ratio[c])
+         else if (c in anchor)
            printf "%s ours=%.2f anchor=%.2f ratio=%.2f\n", c, median(ours[c]) / 1e6, median(anchor[c]) / 1e6, median(ratio[c])
          else
            printf "%s ours=%.2f anchor=- ratio=-\n", c, median(ours[c]) / 1e6

@@ -33,6 +33,8 @@ pub fn cases() -> Vec<(&'static str, Setup)> {
         ("grid_normals_1000", || typed_points_and_normals(1000)),
         ("patches_10000", facade_patches),
         ("eval_mesh1_degree10", facade_mesh1),
+        ("eval_coord_curves", eval_coord_curves),
+        ("first_eval_mesh2_1000", first_mesh2),
         ("nurbs_untrimmed", nurbs_untrimmed),
         ("nurbs_trimmed", nurbs_trimmed),
         ("callback_floor", callback_floor),
@@ -114,6 +116,45 @@ fn facade_patches() -> Workload {
         finish_frame(&mut gl);
     };
     Workload { items: f64::from(count * (n + 1) * (n + 1)), run: Box::new(run) }
+}
+
+/// 10,000 curves as the textbook's B-spline programs draw their Bezier pieces: a `map1f` of 4
+/// points, then `begin(GL_LINE_STRIP)`, 31 `eval_coord1f`, `end`.
+fn eval_coord_curves() -> Workload {
+    let (count, n) = (10_000, 30);
+    let mut ctl = [-0.5, 0.0, 0.0, -0.2, 0.4, 0.0, 0.2, -0.4, 0.0, 0.5, 0.0, 0.0];
+    let mut gl = Gl::new(64, 64);
+    gl.enable(GL_MAP1_VERTEX_3);
+    let run = move || {
+        for k in 0..count {
+            ctl[1] = (k % 5) as f32 * 0.1;
+            gl.map1f(GL_MAP1_VERTEX_3, 0.0, 1.0, 3, 4, &ctl);
+            gl.begin(GL_LINE_STRIP);
+            for i in 0..=n {
+                gl.eval_coord1f(i as f32 / n as f32);
+            }
+            gl.end();
+        }
+        finish_frame(&mut gl);
+    };
+    Workload { items: f64::from(count * (n + 1)), run: Box::new(run) }
+}
+
+/// The first `eval_mesh2` of a fresh context: 1000², `GL_AUTO_NORMAL`, nothing warm (the
+/// context, its map and its frame are new each time; all of it is timed).
+fn first_mesh2() -> Workload {
+    let n = 1000;
+    let points = patch();
+    let run = move || {
+        let mut gl = Gl::new(64, 64);
+        gl.map2f(GL_MAP2_VERTEX_3, 0.0, 1.0, 12, 4, 0.0, 1.0, 3, 4, &points);
+        gl.enable(GL_MAP2_VERTEX_3);
+        gl.enable(GL_AUTO_NORMAL);
+        gl.map_grid2f(n, 0.0, 1.0, n, 0.0, 1.0);
+        gl.eval_mesh2(GL_FILL, 0, n, 0, n);
+        std::hint::black_box(gl.frame());
+    };
+    Workload { items: f64::from((n + 1) * (n + 1)), run: Box::new(run) }
 }
 
 /// `glEvalMesh1(GL_LINE)` of a degree-10 curve at 10⁶ + 1 points.

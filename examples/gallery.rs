@@ -51,12 +51,18 @@ mod outline;
 mod rational;
 #[path = "rationalmap.rs"]
 mod rationalmap;
+#[path = "shapes.rs"]
+mod shapes;
 #[path = "specular.rs"]
 mod specular;
 #[path = "stipple.rs"]
 mod stipple;
+#[path = "strokes.rs"]
+mod strokes;
 #[path = "teapot.rs"]
 mod teapot;
+#[path = "texgen.rs"]
+mod texgen;
 #[path = "texsurf.rs"]
 mod texsurf;
 #[path = "texteapot.rs"]
@@ -67,7 +73,7 @@ mod trimmed;
 /// A built-in program: its name and how to build it.
 type Program = (&'static str, fn() -> App);
 
-const PROGRAMS: [Program; 27] = [
+const PROGRAMS: [Program; 30] = [
     ("bezcurve", bezcurve::app),
     ("bezsurf", bezsurf::app),
     ("bcurve", bcurve::app),
@@ -92,8 +98,11 @@ const PROGRAMS: [Program; 27] = [
     ("mipnurbs", mipnurbs::app),
     ("fogblend", fogblend::app),
     ("texteapot", texteapot::app),
+    ("texgen", texgen::app),
     ("labels", labels::app),
     ("stipple", stipple::app),
+    ("shapes", shapes::app),
+    ("strokes", strokes::app),
     ("operations", operations::app),
 ];
 

@@ -2,13 +2,12 @@
 //! the arrow keys rotate and the idle callback spins; `m` switches the display mode (FILL,
 //! OUTLINE_POLYGON, OUTLINE_PATCH), `t` the checker texture (a `GL_MAP2_TEXTURE_COORD_2`
 //! companion surface gives (s, t)), space starts and stops the spin, `p` shows the control
-//! points, labelled with GLUT bitmap text. The title says the state.
+//! points, labelled with GLUT bitmap text. The right mouse button opens a GLUT menu that does
+//! the same (the display modes in a sub-menu). The title says the state.
 //!
 //! `cargo run --release --example spin` (a window), or headless:
 //! `cargo run --release --example spin -- --frames 30 --png spin.png` (30 frames of the spin on
 //! a virtual 60 Hz clock, the last one written).
-//!
-//! Left for later (issue 17): the right-click menu (GLUT menus are not implemented yet).
 
 use gleval::prelude::*;
 use std::cell::RefCell;
@@ -66,11 +65,44 @@ fn init(gl: &mut Gl, state: &mut State) {
     update_title(gl, state);
 }
 
+/// The right-button menu: a sub-menu of display modes, then the toggles. Its callback hands
+/// the entry's value to the same code the keyboard uses.
+fn make_menu(gl: &mut Gl, on_choice: impl FnMut(&mut Gl, i32) + Clone + 'static) {
+    let modes = gl.glut_create_menu(on_choice.clone());
+    gl.glut_add_menu_entry("Fill", MENU_FILL);
+    gl.glut_add_menu_entry("Outline polygon", MENU_FILL + 1);
+    gl.glut_add_menu_entry("Outline patch", MENU_FILL + 2);
+    gl.glut_create_menu(on_choice);
+    gl.glut_add_sub_menu("Display mode", modes);
+    gl.glut_add_menu_entry("Texture on/off", 't' as i32);
+    gl.glut_add_menu_entry("Control points on/off", 'p' as i32);
+    gl.glut_add_menu_entry("Spin on/off", ' ' as i32);
+    gl.glut_attach_menu(GLUT_RIGHT_BUTTON);
+}
+
+/// Menu values of the display modes (the toggles use their keys' codes).
+const MENU_FILL: i32 = 1000;
+
+/// A key or menu choice: returns false if it means nothing.
+fn command(state: &mut State, choice: i32) -> bool {
+    match choice {
+        MENU_FILL..=1002 => state.mode = (choice - MENU_FILL) as usize,
+        _ => match char::from_u32(choice as u32) {
+            Some('m') => state.mode = (state.mode + 1) % MODES.len(),
+            Some('p') => state.show_points = !state.show_points,
+            Some('t') => state.textured = !state.textured,
+            Some(' ') => state.spinning = !state.spinning,
+            _ => return false,
+        },
+    }
+    true
+}
+
 fn update_title(gl: &mut Gl, state: &State) {
     let spin = if state.spinning { "spinning" } else { "still" };
     let texture = if state.textured { "textured" } else { "plain" };
     gl.glut_set_window_title(&format!(
-        "spin: {} {texture} ({spin}; arrows rotate, m mode, t texture, space spin)",
+        "spin: {} {texture} ({spin}; arrows rotate, m mode, t texture, space spin, right button menu)",
         MODES[state.mode].1
     ));
 }
@@ -163,21 +195,27 @@ fn main() {
         show_points: true,
         textured: true,
     }));
-    let (s_init, s_display, s_key, s_special, s_idle) =
-        (state.clone(), state.clone(), state.clone(), state.clone(), state.clone());
+    let (s_init, s_display, s_key, s_special, s_idle, s_menu) =
+        (state.clone(), state.clone(), state.clone(), state.clone(), state.clone(), state.clone());
+    let on_choice = move |gl: &mut Gl, value: i32| {
+        let mut state = s_menu.borrow_mut();
+        if command(&mut state, value) {
+            update_title(gl, &state);
+            gl.glut_post_redisplay();
+        }
+    };
     App::new("spin", 500, 500)
         .init_display_mode(GLUT_DOUBLE | GLUT_RGB | GLUT_DEPTH)
-        .init(move |gl| init(gl, &mut s_init.borrow_mut()))
+        .init(move |gl| {
+            init(gl, &mut s_init.borrow_mut());
+            make_menu(gl, on_choice.clone());
+        })
         .reshape(reshape)
         .display(move |gl| display(gl, &s_display.borrow()))
         .keyboard(move |gl, key, _, _| {
             let mut state = s_key.borrow_mut();
-            match key {
-                'm' => state.mode = (state.mode + 1) % MODES.len(),
-                'p' => state.show_points = !state.show_points,
-                't' => state.textured = !state.textured,
-                ' ' => state.spinning = !state.spinning,
-                _ => return,
+            if !command(&mut state, key as i32) {
+                return;
             }
             update_title(gl, &state);
             gl.glut_post_redisplay();

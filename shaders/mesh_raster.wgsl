@@ -1,9 +1,11 @@
 // Draws the GPU tessellator's vertices (shaders/eval_mesh.wgsl) with GL 1.x's fixed-function
 // vertex stage: modelview/projection transform, per-vertex lighting (GL 1.1 spec §2.13.1, the
-// same formulas as src/render/shade.rs), glDepthRange, and the GL viewport applied as a clip
-// transform (wgpu needs viewports inside the target; GL allows them anywhere). Two-sided
-// lighting picks the back colour by the rasteriser's facing; flat shading takes the first
-// vertex, which the index buffer makes GL's provoking vertex.
+// same formulas as src/render/shade.rs), the texture matrix, the fog coordinate, glDepthRange,
+// and the GL viewport applied as a clip transform (wgpu needs viewports inside the target; GL
+// allows them anywhere). Two-sided lighting picks the back colour by the rasteriser's facing;
+// flat shading takes the first vertex, which the index buffer makes GL's provoking vertex. The
+// fragment stage is GL's texturing, fog and alpha test (`shaders/fragment.wgsl`, appended to this
+// source when the module is made), with the frame rasteriser's bind group as group 1.
 
 struct Light {
     ambient: vec4<f32>,
@@ -27,6 +29,7 @@ struct Draw {
     modelview: mat4x4<f32>,
     projection: mat4x4<f32>,
     normal_matrix: mat4x4<f32>, // inverse transpose of the modelview's 3x3
+    texture_matrix: mat4x4<f32>,
     viewport: vec4<f32>,        // x' = x·sx + w·ox, y' = y·sy + w·oy
     depth_range: vec4<f32>,     // near, far
     flags: vec4<f32>,           // lighting, two-sided, local viewer, normalize
@@ -38,17 +41,24 @@ struct Draw {
 };
 
 @group(0) @binding(0) var<uniform> draw: Draw;
+@group(1) @binding(0) var tex_image: texture_2d<f32>;
+@group(1) @binding(1) var tex_sampler: sampler;
+@group(1) @binding(2) var<uniform> env: Fragment;
 
 struct Smooth {
     @builtin(position) clip: vec4<f32>,
     @location(0) front: vec4<f32>,
     @location(1) back: vec4<f32>,
+    @location(2) tex: vec4<f32>,
+    @location(3) fog: f32,
 };
 
 struct Flat {
     @builtin(position) clip: vec4<f32>,
     @location(0) @interpolate(flat) front: vec4<f32>,
     @location(1) @interpolate(flat) back: vec4<f32>,
+    @location(2) tex: vec4<f32>,
+    @location(3) fog: f32,
 };
 
 fn material(face: u32, color: vec4<f32>) -> Material {
@@ -136,12 +146,17 @@ struct Lit {
     clip: vec4<f32>,
     front: vec4<f32>,
     back: vec4<f32>,
+    tex: vec4<f32>,
+    fog: f32,
 };
 
-fn vertex_stage(position: vec4<f32>, normal: vec4<f32>, color: vec4<f32>) -> Lit {
+fn vertex_stage(position: vec4<f32>, normal: vec4<f32>, color: vec4<f32>, tex: vec4<f32>) -> Lit {
     let eye = draw.modelview * position;
     let clip = draw.projection * eye;
     var out: Lit;
+    out.tex = draw.texture_matrix * tex;
+    // The fog coordinate: the eye-space distance |z| (Mesa's default, as src/render/shade.rs).
+    out.fog = abs(eye.z);
     // glDepthRange into wgpu's [0, w], then the GL viewport as a clip transform.
     let near = draw.depth_range.x;
     let far = draw.depth_range.y;
@@ -175,15 +190,25 @@ fn vertex_stage(position: vec4<f32>, normal: vec4<f32>, color: vec4<f32>) -> Lit
 }
 
 @vertex
-fn vs_smooth(@location(0) position: vec4<f32>, @location(1) normal: vec4<f32>, @location(2) color: vec4<f32>) -> Smooth {
-    let lit = vertex_stage(position, normal, color);
-    return Smooth(lit.clip, lit.front, lit.back);
+fn vs_smooth(
+    @location(0) position: vec4<f32>,
+    @location(1) normal: vec4<f32>,
+    @location(2) color: vec4<f32>,
+    @location(3) tex: vec4<f32>,
+) -> Smooth {
+    let lit = vertex_stage(position, normal, color, tex);
+    return Smooth(lit.clip, lit.front, lit.back, lit.tex, lit.fog);
 }
 
 @vertex
-fn vs_flat(@location(0) position: vec4<f32>, @location(1) normal: vec4<f32>, @location(2) color: vec4<f32>) -> Flat {
-    let lit = vertex_stage(position, normal, color);
-    return Flat(lit.clip, lit.front, lit.back);
+fn vs_flat(
+    @location(0) position: vec4<f32>,
+    @location(1) normal: vec4<f32>,
+    @location(2) color: vec4<f32>,
+    @location(3) tex: vec4<f32>,
+) -> Flat {
+    let lit = vertex_stage(position, normal, color, tex);
+    return Flat(lit.clip, lit.front, lit.back, lit.tex, lit.fog);
 }
 
 fn face_colour(front: vec4<f32>, back: vec4<f32>, facing: bool) -> vec4<f32> {
@@ -193,12 +218,25 @@ fn face_colour(front: vec4<f32>, back: vec4<f32>, facing: bool) -> vec4<f32> {
     return front;
 }
 
+// The face's colour through texturing and fog (the caller applies the alpha test).
+fn shade(front: vec4<f32>, back: vec4<f32>, facing: bool, tex: vec4<f32>, fog: f32) -> vec4<f32> {
+    return fragment_ops(face_colour(front, back, facing), tex, fog);
+}
+
 @fragment
 fn fs_smooth(in: Smooth, @builtin(front_facing) facing: bool) -> @location(0) vec4<f32> {
-    return face_colour(in.front, in.back, facing);
+    let color = shade(in.front, in.back, facing, in.tex, in.fog);
+    if env.alpha_func != 0u && !alpha_passes(color.a) {
+        discard;
+    }
+    return color;
 }
 
 @fragment
 fn fs_flat(in: Flat, @builtin(front_facing) facing: bool) -> @location(0) vec4<f32> {
-    return face_colour(in.front, in.back, facing);
+    let color = shade(in.front, in.back, facing, in.tex, in.fog);
+    if env.alpha_func != 0u && !alpha_passes(color.a) {
+        discard;
+    }
+    return color;
 }

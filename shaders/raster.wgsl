@@ -1,44 +1,10 @@
 // The rasteriser for gleval's assembled frames: GL's fixed-function vertex work (transform,
 // lighting, primitive assembly, wide lines and points) is already done, so a vertex carries its
 // clip-space position, final colour, texture coordinates and fog coordinate. The fragment stage
-// does GL's per-fragment work in GL's order: unit 0's texture with GL's texture environment
-// (GL 1.1 spec §3.8.9, tables 3.17 and 3.18; ADD from GL 1.3), fog (§3.9), the alpha test
-// (§4.1.3); blending is the pipeline's blend state. Smooth points and lines multiply the
-// alpha by their coverage before the alpha test, as Mesa's llvmpipe does (src/render/smooth.rs).
-
-struct Fragment {
-    // 0 no texture, 1 MODULATE, 2 DECAL, 3 BLEND, 4 REPLACE, 5 ADD.
-    mode: u32,
-    // The base internal format: 0 ALPHA, 1 LUMINANCE, 2 LUMINANCE_ALPHA, 3 RGB, 4 RGBA.
-    format: u32,
-    // GL_CLAMP in s and t: 0 not, 1 with nearest filtering, 2 with linear filtering. The
-    // coordinate is clamped to [0, 1] before filtering (GL 1.1 §3.8.6), so linear filtering at
-    // the edge mixes in the border colour (transparent black, GL's initial one); the sampler
-    // clamps to the edge, and the share of the filter that falls outside is replaced by the
-    // border here.
-    clamp_s: u32,
-    clamp_t: u32,
-    color: vec4<f32>,
-    // 0 no fog, 1 LINEAR, 2 EXP, 3 EXP2.
-    fog_mode: u32,
-    // 0 no alpha test, else the GL comparison (GL_NEVER .. GL_ALWAYS) as 1 .. 8.
-    alpha_func: u32,
-    fog_density: f32,
-    alpha_ref: f32,
-    fog_start: f32,
-    fog_end: f32,
-    // 0 none, 1 a smooth point's coverage, 2 a smooth line's.
-    coverage: u32,
-    pad1: f32,
-    fog_color: vec4<f32>,
-    // 1 with a polygon stipple (GL 1.1 §3.5.6): row y of the window (from the bottom, modulo
-    // 32) keeps the fragments of column x where bit x is set.
-    stipple: u32,
-    height: u32,
-    pad2: u32,
-    pad3: u32,
-    stipple_rows: array<vec4<u32>, 8>,
-};
+// is GL's per-fragment work, shared with the mesh rasteriser (`shaders/fragment.wgsl`, appended
+// to this source when the module is made), plus what only this rasteriser draws: the polygon
+// stipple, and smooth points and lines, whose coverage multiplies the alpha before the alpha
+// test, as Mesa's llvmpipe does (src/render/smooth.rs). Blending is the pipeline's blend state.
 
 @group(0) @binding(0) var tex_image: texture_2d<f32>;
 @group(0) @binding(1) var tex_sampler: sampler;
@@ -71,21 +37,9 @@ fn vs_main(
 
 @fragment
 fn fs_main(in: VertexOut) -> @location(0) vec4<f32> {
-    // (s/q, t/q); GL's first image row is t = 0, uploaded as row 0.
-    let q = select(1.0, in.tex.w, in.tex.w != 0.0);
-    let st = in.tex.xy / q;
-    let clamped = vec2<bool>(env.clamp_s != 0u, env.clamp_t != 0u);
-    let coord = select(st, clamp(st, vec2<f32>(0.0), vec2<f32>(1.0)), clamped);
-    let texel = textureSample(tex_image, tex_sampler, coord) * inside_border(coord);
+    var color = fragment_ops(in.color, in.tex, in.fog);
     if env.stipple != 0u && !stipple_keeps(in.clip.xy) {
         discard;
-    }
-    var color = in.color;
-    if env.mode != 0u {
-        color = apply_env(color, texel);
-    }
-    if env.fog_mode != 0u {
-        color = vec4<f32>(mix(env.fog_color.rgb, color.rgb, fog_factor(in.fog)), color.a);
     }
     if env.coverage == 1u {
         let d = dot(in.aa.xy, in.aa.xy);
@@ -102,88 +56,8 @@ fn fs_main(in: VertexOut) -> @location(0) vec4<f32> {
     return color;
 }
 
-// The share of a linear filter at `coord` that lies on the texture rather than on GL_CLAMP's
-// border (1 away from the edges): the edge texel's weight where the sampler duplicated it.
-fn inside_border(coord: vec2<f32>) -> f32 {
-    let size = vec2<f32>(textureDimensions(tex_image, 0));
-    let u = coord * size - 0.5;
-    let inside = clamp(min(u + 1.0, size - u), vec2<f32>(0.0), vec2<f32>(1.0));
-    let s = select(1.0, inside.x, env.clamp_s == 2u);
-    let t = select(1.0, inside.y, env.clamp_t == 2u);
-    return s * t;
-}
-
 // A smooth point's coverage at d = u² + v² with k = (1 − 1/r)²: Mesa 22.3's NIR pass takes
 // (1 − d)/(1 − k) where k ≥ d and 1 elsewhere (k < 1 for every radius).
 fn point_coverage(d: f32, k: f32) -> f32 {
     return select(1.0, (1.0 - d) / max(1.0 - k, 1e-6), k >= d);
-}
-
-// Whether the polygon stipple keeps the fragment at framebuffer position `p` (y down, pixel
-// centres at +0.5): GL's window row is height − 1 − ⌊y⌋.
-fn stipple_keeps(p: vec2<f32>) -> bool {
-    let x = u32(p.x) % 32u;
-    let y = (env.height - 1u - min(u32(p.y), env.height - 1u)) % 32u;
-    let row = env.stipple_rows[y / 4u][y % 4u];
-    return ((row >> x) & 1u) != 0u;
-}
-
-// GL's fog factor f (the fragment's share), clamped to [0, 1]: C = f·Cf + (1 − f)·Cfog.
-fn fog_factor(z: f32) -> f32 {
-    var f: f32;
-    switch env.fog_mode {
-        case 1u: { f = (env.fog_end - z) / (env.fog_end - env.fog_start); }
-        case 2u: { f = exp(-env.fog_density * z); }
-        default: { let dz = env.fog_density * z; f = exp(-dz * dz); }
-    }
-    return clamp(f, 0.0, 1.0);
-}
-
-// The alpha test: NEVER, LESS, EQUAL, LEQUAL, GREATER, NOTEQUAL, GEQUAL, ALWAYS as 1 .. 8.
-fn alpha_passes(a: f32) -> bool {
-    let r = env.alpha_ref;
-    switch env.alpha_func {
-        case 1u: { return false; }
-        case 2u: { return a < r; }
-        case 3u: { return a == r; }
-        case 4u: { return a <= r; }
-        case 5u: { return a > r; }
-        case 6u: { return a != r; }
-        case 7u: { return a >= r; }
-        default: { return true; }
-    }
-}
-
-// GL's texture functions: Cf, Af the fragment's colour; Ct, At the texture's by base format.
-fn apply_env(cf: vec4<f32>, texel: vec4<f32>) -> vec4<f32> {
-    let has_rgb = env.format != 0u;
-    let has_alpha = env.format == 0u || env.format == 2u || env.format == 4u;
-    let luminance = env.format == 1u || env.format == 2u;
-    let ct = select(texel.rgb, vec3<f32>(texel.r), luminance);
-    let at = texel.a;
-    var c = cf.rgb;
-    var a = cf.a;
-    switch env.mode {
-        case 1u: {
-            if has_rgb { c = cf.rgb * ct; }
-            if has_alpha { a = cf.a * at; }
-        }
-        case 2u: {
-            if env.format == 3u { c = ct; }
-            if env.format == 4u { c = mix(cf.rgb, ct, at); }
-        }
-        case 3u: {
-            if has_rgb { c = mix(cf.rgb, env.color.rgb, ct); }
-            if has_alpha { a = cf.a * at; }
-        }
-        case 4u: {
-            if has_rgb { c = ct; }
-            if has_alpha { a = at; }
-        }
-        default: {
-            if has_rgb { c = min(cf.rgb + ct, vec3<f32>(1.0)); }
-            if has_alpha { a = cf.a * at; }
-        }
-    }
-    return vec4<f32>(c, a);
 }

@@ -5,7 +5,9 @@
 //! Callbacks take the [`Gl`] context, which keeps its state from frame to frame as a GL
 //! context does; `gl.glut_get(GLUT_WINDOW_WIDTH)` answers inside them.
 
-use crate::gl::{Gl, Tessellator};
+use crate::gl::{Frame, Gl, Tessellator};
+use crate::glut::consts::{GLUT_DOWN, GLUT_UP};
+use crate::glut::popup::{Popup, PopupEvent};
 use crate::glut::state::TimerRequest;
 use crate::glut::{IdleFn, Schedule};
 use crate::render::{Image, RenderError, Renderer};
@@ -17,6 +19,28 @@ type SpecialFn = Box<dyn FnMut(&mut Gl, i32, i32, i32)>;
 type MouseFn = Box<dyn FnMut(&mut Gl, i32, i32, i32, i32)>;
 type MotionFn = Box<dyn FnMut(&mut Gl, i32, i32)>;
 type EntryFn = Box<dyn FnMut(&mut Gl, i32)>;
+
+/// What an input event asks of the window.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Redraw {
+    /// Nothing changed.
+    Nothing,
+    /// Only the open menu changed: the program's last frame is shown again under it.
+    Menu,
+    /// A program callback ran: the display callback draws again (the convenience this
+    /// runner has always offered: input changes what is drawn).
+    Program,
+}
+
+impl Redraw {
+    fn program_if(ran: bool) -> Self {
+        if ran {
+            Self::Program
+        } else {
+            Self::Nothing
+        }
+    }
+}
 
 /// What the command line asked for.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -83,6 +107,8 @@ pub struct App {
     /// `--frames N`: how many frames a run draws before it stops (headless: renders the last).
     frames: Option<usize>,
     tessellator: Tessellator,
+    /// The GLUT menu open in the window, if any.
+    popup: Option<Popup>,
 }
 
 impl App {
@@ -109,6 +135,7 @@ impl App {
             display_mode: 0,
             frames: None,
             tessellator: Tessellator::from_env(),
+            popup: None,
         }
     }
 
@@ -256,6 +283,63 @@ impl App {
         self.mouse.as_mut().map(|mouse| mouse(gl, button, state, x, y)).is_some()
     }
 
+    /// What the window does with a mouse button, as GLUT's main loop does: while a menu is
+    /// open the event goes to it (a choice runs the menu's callback); a press of a button with
+    /// a menu attached (`glutAttachMenu`) opens that menu at the pointer; any other event goes
+    /// to the mouse callback.
+    pub(crate) fn mouse_button(&mut self, gl: &mut Gl, button: i32, state: i32, x: i32, y: i32) -> Redraw {
+        if let Some(popup) = &mut self.popup {
+            let event = if state == GLUT_DOWN { popup.press(x, y) } else { popup.release(&gl.glut.menus, x, y) };
+            return self.after_menu_event(gl, event);
+        }
+        if state == GLUT_DOWN {
+            if let Some(menu) = gl.glut.menus.attached(button) {
+                self.popup = Popup::open(gl, menu, x, y, (gl.width(), gl.height()));
+                return Redraw::Menu;
+            }
+        }
+        // The release of the press that opened a menu belongs to the menu, not the program.
+        if state == GLUT_UP && gl.glut.menus.attached(button).is_some() {
+            return Redraw::Nothing;
+        }
+        Redraw::program_if(self.run_mouse(gl, button, state, x, y))
+    }
+
+    /// What the window does when the pointer moves: an open menu follows it; otherwise the
+    /// motion callback if a button is held, the passive-motion callback if not.
+    pub(crate) fn pointer_moved(&mut self, gl: &mut Gl, x: i32, y: i32, button_held: bool) -> Redraw {
+        if let Some(popup) = &mut self.popup {
+            return if popup.hover(gl, x, y) { Redraw::Menu } else { Redraw::Nothing };
+        }
+        Redraw::program_if(if button_held { self.run_motion(gl, x, y) } else { self.run_passive_motion(gl, x, y) })
+    }
+
+    /// Closes an open menu without a choice (Escape); false if none was open.
+    pub(crate) fn close_menu(&mut self) -> bool {
+        self.popup.take().is_some()
+    }
+
+    /// The open menu as a frame to draw over the program's last one (no clear, its own
+    /// matrices), or `None` when no menu is open.
+    pub(crate) fn menu_overlay(&self, gl: &Gl) -> Option<Frame> {
+        self.popup.as_ref().map(|popup| popup.overlay(gl))
+    }
+
+    fn after_menu_event(&mut self, gl: &mut Gl, event: PopupEvent) -> Redraw {
+        match event {
+            PopupEvent::Open => Redraw::Menu,
+            PopupEvent::Closed => {
+                self.popup = None;
+                Redraw::Menu
+            }
+            PopupEvent::Chosen { menu, value } => {
+                self.popup = None;
+                gl.run_menu_callback(menu, value);
+                Redraw::Program
+            }
+        }
+    }
+
     /// What the window does when the mouse moves with a button held: the motion callback;
     /// false if there is none.
     pub fn run_motion(&mut self, gl: &mut Gl, x: i32, y: i32) -> bool {
@@ -321,8 +405,13 @@ impl App {
     /// `glutMainLoop`: `--png PATH` renders one frame to PNG and returns; otherwise a window.
     /// `--gpu` selects the GPU tessellator. Errors are printed and the process exits with
     /// status 1, as a C program would fail.
-    pub fn run(mut self) {
-        let options = Options::from_args(std::env::args().skip(1));
+    pub fn run(self) {
+        self.run_with(Options::from_args(std::env::args().skip(1)));
+    }
+
+    /// [`App::run`] with options parsed elsewhere (C's `glutInit` takes them out of the
+    /// program's `argv`, which then no longer holds them).
+    pub fn run_with(mut self, options: Options) {
         if options.gpu {
             self.tessellator = Tessellator::Gpu;
         }
@@ -505,4 +594,58 @@ fn advance_to_redisplay(gl: &mut Gl, schedule: &mut Schedule, clock: &mut f64) -
         }
     }
     false
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::glut::consts::*;
+    use std::cell::RefCell;
+    use std::rc::Rc;
+
+    /// A program with a right-button menu of two entries and a mouse callback that logs.
+    fn program(log: &Rc<RefCell<Vec<String>>>) -> (App, Gl) {
+        let (menu_log, mouse_log) = (log.clone(), log.clone());
+        let mut app = App::new("menus", 300, 200)
+            .init(move |gl| {
+                let log = menu_log.clone();
+                gl.glut_create_menu(move |_, value| log.borrow_mut().push(format!("menu {value}")));
+                gl.glut_add_menu_entry("Fill", 1);
+                gl.glut_add_menu_entry("Outline", 2);
+                gl.glut_attach_menu(GLUT_RIGHT_BUTTON);
+            })
+            .mouse(move |_, button, state, _, _| mouse_log.borrow_mut().push(format!("mouse {button} {state}")));
+        let gl = app.record_frame();
+        (app, gl)
+    }
+
+    #[test]
+    fn the_attached_button_opens_the_menu_and_a_release_on_an_entry_chooses_it() {
+        let log = Rc::new(RefCell::new(Vec::new()));
+        let (mut app, mut gl) = program(&log);
+        assert_eq!(app.mouse_button(&mut gl, GLUT_RIGHT_BUTTON, GLUT_DOWN, 40, 30), Redraw::Menu);
+        assert!(app.menu_overlay(&gl).is_some());
+        // Down to the second entry (the items start at the press point, 24 pixels each).
+        assert_eq!(app.pointer_moved(&mut gl, 60, 30 + 2 + 24 + 12, true), Redraw::Menu);
+        assert_eq!(app.mouse_button(&mut gl, GLUT_RIGHT_BUTTON, GLUT_UP, 60, 30 + 2 + 24 + 12), Redraw::Program);
+        assert!(app.menu_overlay(&gl).is_none());
+        // The other buttons still reach the program; the menu's button does not.
+        app.mouse_button(&mut gl, GLUT_LEFT_BUTTON, GLUT_DOWN, 5, 5);
+        assert_eq!(*log.borrow(), ["menu 2", "mouse 0 0"]);
+    }
+
+    #[test]
+    fn escape_or_a_click_outside_closes_it_without_a_choice() {
+        let log = Rc::new(RefCell::new(Vec::new()));
+        let (mut app, mut gl) = program(&log);
+        app.mouse_button(&mut gl, GLUT_RIGHT_BUTTON, GLUT_DOWN, 40, 30);
+        assert_eq!(app.mouse_button(&mut gl, GLUT_RIGHT_BUTTON, GLUT_UP, 40, 30), Redraw::Menu);
+        assert!(app.menu_overlay(&gl).is_some(), "a click leaves the menu open");
+        assert_eq!(app.mouse_button(&mut gl, GLUT_LEFT_BUTTON, GLUT_DOWN, 250, 150), Redraw::Menu);
+        assert!(app.menu_overlay(&gl).is_none());
+        app.mouse_button(&mut gl, GLUT_RIGHT_BUTTON, GLUT_DOWN, 40, 30);
+        assert!(app.close_menu());
+        assert!(!app.close_menu());
+        assert!(log.borrow().iter().all(|entry| !entry.starts_with("menu")));
+    }
 }

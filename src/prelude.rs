@@ -4,10 +4,11 @@
 #[cfg(all(feature = "gpu", feature = "png"))]
 pub use crate::app::App;
 pub use crate::gl::consts::*;
+pub use crate::gl::feedback::*;
 pub use crate::gl::types::*;
 pub use crate::gl::{Frame, Gl, Primitive, Vertex};
 pub use crate::gll;
 pub use crate::glu::consts::*;
 pub use crate::glu::{glu_error_string, GLUnurbs, NurbsCallback};
 pub use crate::glut::consts::*;
-pub use crate::glut::fonts::{GlutBitmapFont, GlutCharacter};
+pub use crate::glut::fonts::{GlutBitmapFont, GlutCharacter, GlutStrokeFont};

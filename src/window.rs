@@ -3,8 +3,8 @@
 //! long as the window, so GL state set in `init` or in earlier frames persists; only what a
 //! frame draws is taken from it each time.
 
-use crate::app::App;
-use crate::gl::Gl;
+use crate::app::{App, Redraw};
+use crate::gl::{Frame, Gl};
 use crate::glut::consts::*;
 use crate::glut::Schedule;
 use crate::render::{RenderError, Renderer};
@@ -39,6 +39,8 @@ pub(crate) fn run(app: App) -> Result<(), Box<dyn Error>> {
         schedule: Schedule::default(),
         start: Instant::now(),
         frames_drawn: 0,
+        last_frame: None,
+        program_changed: true,
         error: None,
     };
     event_loop.run_app(&mut state)?;
@@ -77,6 +79,11 @@ struct WindowState {
     start: Instant,
     /// Frames presented (`--frames N` closes the window after N).
     frames_drawn: usize,
+    /// What the display callback drew last: shown again under a menu that changed.
+    last_frame: Option<Frame>,
+    /// The display callback must draw again at the next redraw (false when only the open
+    /// menu changed).
+    program_changed: bool,
     error: Option<String>,
 }
 
@@ -238,20 +245,32 @@ impl WindowState {
             }
         };
         let (width, height) = (size.width, size.height);
-        gl.glut.elapsed_ms = self.start.elapsed().as_millis() as i32;
-        if self.size != Some((width, height)) {
-            self.size = Some((width, height));
-            self.app.run_reshape(gl, width as i32, height as i32);
+        let program_changed = std::mem::take(&mut self.program_changed) || self.size != Some((width, height));
+        if program_changed || self.last_frame.is_none() {
+            gl.glut.elapsed_ms = self.start.elapsed().as_millis() as i32;
+            if self.size != Some((width, height)) {
+                self.size = Some((width, height));
+                self.app.run_reshape(gl, width as i32, height as i32);
+            }
+            self.app.run_display(gl);
+            let recorded = gl.take_frame();
+            if let Some(previous) = self.last_frame.replace(recorded) {
+                gl.recycle_frame(previous);
+            }
         }
-        self.app.run_display(gl);
-        let recorded = gl.take_frame();
+        let Some(recorded) = self.last_frame.as_ref() else { return };
         let view = frame.texture.create_view(&Default::default());
         let mut encoder = gpu.renderer.device.create_command_encoder(&Default::default());
-        gpu.renderer.encode(&recorded, &mut encoder, &view, &gpu.depth, (width, height), gpu.config.format);
+        gpu.renderer.encode(recorded, &mut encoder, &view, &gpu.depth, (width, height), gpu.config.format);
         gpu.renderer.queue.submit([encoder.finish()]);
+        // An open GLUT menu over the picture: a second pass that loads what the first drew.
+        if let Some(menu) = self.app.menu_overlay(gl) {
+            let mut encoder = gpu.renderer.device.create_command_encoder(&Default::default());
+            gpu.renderer.encode_over(&menu, &mut encoder, &view, &gpu.depth, (width, height), gpu.config.format);
+            gpu.renderer.queue.submit([encoder.finish()]);
+        }
         gpu.window.pre_present_notify();
         gpu.renderer.queue.present(frame);
-        gl.recycle_frame(recorded);
         self.frames_drawn += 1;
         if self.app.frames().is_some_and(|n| self.frames_drawn >= n) {
             return event_loop.exit();
@@ -271,6 +290,7 @@ impl WindowState {
         let (Some(gpu), Some(gl)) = (self.gpu.as_ref(), self.gl.as_mut()) else { return };
         self.schedule.absorb(gl, now);
         if std::mem::take(&mut gl.glut.redisplay) {
+            self.program_changed = true;
             gpu.window.request_redraw();
         }
         if let Some(title) = gl.take_window_title() {
@@ -289,18 +309,26 @@ impl WindowState {
     /// convenience this runner has always offered: input changes what is drawn) and carries
     /// out its requests.
     fn input(&mut self, run: impl FnOnce(&mut App, &mut Gl) -> bool) {
+        self.input_event(|app, gl| if run(app, gl) { Redraw::Program } else { Redraw::Nothing });
+    }
+
+    /// [`WindowState::input`] for events that may go to a menu instead of the program.
+    fn input_event(&mut self, run: impl FnOnce(&mut App, &mut Gl) -> Redraw) {
         let Some(gl) = self.gl.as_mut() else { return };
         gl.glut.modifiers = self.modifiers;
         gl.glut.elapsed_ms = self.start.elapsed().as_millis() as i32;
-        let ran = run(&mut self.app, gl);
+        let redraw = run(&mut self.app, gl);
         gl.glut.modifiers = 0;
-        self.redraw_if(ran);
+        self.request(redraw);
         self.after_callback();
     }
 
-    /// Asks for a redraw after a callback ran.
-    fn redraw_if(&self, ran: bool) {
-        if let (true, Some(gpu)) = (ran, &self.gpu) {
+    /// Asks for the redraw an event needs.
+    fn request(&mut self, redraw: Redraw) {
+        if redraw == Redraw::Program {
+            self.program_changed = true;
+        }
+        if let (Redraw::Menu | Redraw::Program, Some(gpu)) = (redraw, &self.gpu) {
             gpu.window.request_redraw();
         }
     }
@@ -310,6 +338,9 @@ impl WindowState {
     fn key(&mut self, event_loop: &ActiveEventLoop, event: &KeyEvent) {
         let pressed = event.state == ElementState::Pressed;
         if pressed && event.logical_key == Key::Named(NamedKey::Escape) {
+            if self.app.close_menu() {
+                return self.request(Redraw::Menu);
+            }
             return event_loop.exit();
         }
         let (x, y) = self.cursor;
@@ -380,16 +411,14 @@ impl ApplicationHandler for WindowState {
                     gpu.resize(size);
                     gpu.window.request_redraw();
                 }
+                self.program_changed = true;
             }
             WindowEvent::RedrawRequested => self.redraw(event_loop),
             WindowEvent::CursorMoved { position, .. } => {
                 self.cursor = (position.x as i32, position.y as i32);
                 let (x, y) = self.cursor;
-                if self.buttons_down > 0 {
-                    self.input(|app, gl| app.run_motion(gl, x, y));
-                } else {
-                    self.input(|app, gl| app.run_passive_motion(gl, x, y));
-                }
+                let held = self.buttons_down > 0;
+                self.input_event(|app, gl| app.pointer_moved(gl, x, y, held));
             }
             WindowEvent::CursorEntered { .. } => self.input(|app, gl| app.run_entry(gl, GLUT_ENTERED)),
             WindowEvent::CursorLeft { .. } => self.input(|app, gl| app.run_entry(gl, GLUT_LEFT)),
@@ -405,7 +434,7 @@ impl ApplicationHandler for WindowState {
                 self.buttons_down = if down { self.buttons_down + 1 } else { self.buttons_down.saturating_sub(1) };
                 let (x, y) = self.cursor;
                 let glut_state = if down { GLUT_DOWN } else { GLUT_UP };
-                self.input(|app, gl| app.run_mouse(gl, button, glut_state, x, y));
+                self.input_event(|app, gl| app.mouse_button(gl, button, glut_state, x, y));
             }
             WindowEvent::KeyboardInput { event, .. } => self.key(event_loop, &event),
             _ => {}

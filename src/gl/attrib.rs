@@ -58,7 +58,8 @@ const TRANSFORM_ENABLES: &[GLenum] = &[
     GL_CLIP_PLANE5 + 2,
 ];
 const COLOR_ENABLES: &[GLenum] = &[GL_BLEND, GL_ALPHA_TEST, GL_DITHER];
-const TEXTURE_ENABLES: &[GLenum] = &[GL_TEXTURE_1D, GL_TEXTURE_2D];
+const TEXTURE_ENABLES: &[GLenum] =
+    &[GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q];
 
 /// The raster values of the point, line, polygon, lighting (shade model), depth, viewport and
 /// colour buffer groups.
@@ -88,7 +89,7 @@ struct Saved {
     matrix_mode: usize,
     eval: Option<EvalAttrib>,
     list_base: GLuint,
-    texture: ([GLuint; 2], GLenum, [f32; 4]),
+    texture: super::texture::TextureAttrib,
     /// (capability, on) for every enable a group of the mask files.
     enables: Vec<(GLenum, bool)>,
 }

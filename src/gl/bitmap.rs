@@ -50,8 +50,8 @@ fn color_components(format: GLenum) -> Option<usize> {
     match format {
         GL_RED | GL_GREEN | GL_BLUE | GL_ALPHA | GL_LUMINANCE => Some(1),
         GL_LUMINANCE_ALPHA => Some(2),
-        GL_RGB => Some(3),
-        GL_RGBA => Some(4),
+        GL_RGB | GL_BGR => Some(3),
+        GL_RGBA | GL_BGRA => Some(4),
         _ => None,
     }
 }
@@ -67,6 +67,8 @@ fn to_rgba(format: GLenum, c: &[f32]) -> [f32; 4] {
         GL_LUMINANCE => [c[0], c[0], c[0], 1.0],
         GL_LUMINANCE_ALPHA => [c[0], c[0], c[0], c[1]],
         GL_RGB => [c[0], c[1], c[2], 1.0],
+        GL_BGR => [c[2], c[1], c[0], 1.0],
+        GL_BGRA => [c[2], c[1], c[0], c[3]],
         _ => [c[0], c[1], c[2], c[3]],
     }
 }
@@ -118,14 +120,34 @@ fn element_size(type_: GLenum) -> Option<usize> {
     }
 }
 
-/// `glDrawPixels`' format and type checks (Mesa `_mesa_error_check_format_and_type` for the GL
-/// 1.1 enums): an unknown format or type, or `GL_BITMAP` with a colour format, is
-/// `GL_INVALID_ENUM`.
+/// `glDrawPixels`' format and type checks, as Mesa makes them (`_mesa_error_check_format_and_type`
+/// and `glDrawPixels`' own): an unknown format or type, or `GL_BITMAP` with a colour format, is
+/// `GL_INVALID_ENUM`; a packed type (GL 1.2) whose component count the format does not have,
+/// and `GL_STENCIL_INDEX` (the window has no stencil buffer) are `GL_INVALID_OPERATION`.
 fn format_and_type_error(format: GLenum, type_: GLenum) -> Option<GLenum> {
-    let known_format = (GL_COLOR_INDEX..=GL_LUMINANCE_ALPHA).contains(&format);
-    let known_type = type_ == GL_BITMAP || (GL_BYTE..=GL_FLOAT).contains(&type_);
+    let known_format = (GL_COLOR_INDEX..=GL_LUMINANCE_ALPHA).contains(&format) || matches!(format, GL_BGR | GL_BGRA);
+    let packed_rgb = matches!(
+        type_,
+        GL_UNSIGNED_BYTE_3_3_2 | GL_UNSIGNED_BYTE_2_3_3_REV | GL_UNSIGNED_SHORT_5_6_5 | GL_UNSIGNED_SHORT_5_6_5_REV
+    );
+    let packed_rgba = matches!(
+        type_,
+        GL_UNSIGNED_SHORT_4_4_4_4
+            | GL_UNSIGNED_SHORT_4_4_4_4_REV
+            | GL_UNSIGNED_SHORT_5_5_5_1
+            | GL_UNSIGNED_SHORT_1_5_5_5_REV
+            | GL_UNSIGNED_INT_8_8_8_8
+            | GL_UNSIGNED_INT_8_8_8_8_REV
+            | GL_UNSIGNED_INT_10_10_10_2
+            | GL_UNSIGNED_INT_2_10_10_10_REV
+    );
+    let known_type = type_ == GL_BITMAP || (GL_BYTE..=GL_FLOAT).contains(&type_) || packed_rgb || packed_rgba;
     let bitmap_of_colors = type_ == GL_BITMAP && !matches!(format, GL_COLOR_INDEX | GL_STENCIL_INDEX);
-    (!known_format || !known_type || bitmap_of_colors).then_some(GL_INVALID_ENUM)
+    if !known_format || !known_type || bitmap_of_colors {
+        return Some(GL_INVALID_ENUM);
+    }
+    let packed_mismatch = (packed_rgb && format != GL_RGB) || (packed_rgba && !matches!(format, GL_RGBA | GL_BGRA));
+    (packed_mismatch || format == GL_STENCIL_INDEX).then_some(GL_INVALID_OPERATION)
 }
 
 /// The matrix that takes window coordinates (x, y, and z already in [0, 1] mapped to NDC
@@ -182,7 +204,9 @@ impl Gl {
         let w = width as usize;
         let pixels = bits.iter().enumerate().filter(|(_, &set)| set).map(|(k, _)| {
             let (i, j) = ((k % w) as i32, (k / w) as i32);
-            [x0 + i, y0 + j]
+            // A raster position or origin far outside the window (1e30, ∞) saturates x0, y0:
+            // such pixels lie off the window either way.
+            [x0.saturating_add(i), y0.saturating_add(j)]
         });
         let color = self.raster_pos.color.map(|c| c.clamp(0.0, 1.0));
         let fragments: Vec<_> = pixels.map(|p| (p, color)).collect();
@@ -195,9 +219,11 @@ impl Gl {
     /// (round(xr) + i, round(yr) + j) (Mesa rounds; zoom 1) at the raster depth. Nothing is drawn
     /// when the raster position is invalid. `pixels` is read with the unpack modes. Errors, in
     /// Mesa's order: inside `begin`/`end` → `GL_INVALID_OPERATION`; a negative size →
-    /// `GL_INVALID_VALUE`; an unknown format or type → `GL_INVALID_ENUM`; `pixels` shorter than
-    /// the image → `GL_INVALID_VALUE`. Other valid formats and types (indices, depth, stencil,
-    /// the other integer types) draw nothing.
+    /// `GL_INVALID_VALUE`; an unknown format or type → `GL_INVALID_ENUM`; a packed type the
+    /// format does not fit, or `GL_STENCIL_INDEX` → `GL_INVALID_OPERATION`; `pixels` shorter
+    /// than the image → `GL_INVALID_VALUE`. The colour formats (with `GL_BGR`, `GL_BGRA`) are
+    /// drawn from `GL_UNSIGNED_BYTE` and `GL_FLOAT` components; the other valid formats and
+    /// types (indices, depth, the other integer and the packed types) draw nothing.
     pub fn draw_pixels(&mut self, width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum, pixels: &[u8]) {
         let store = self.unpack_store();
         let unpacked = || unpack_pixels(store, (width, height), format, type_, pixels);
@@ -234,7 +260,9 @@ impl Gl {
         let fragments: Vec<_> = rgba
             .iter()
             .enumerate()
-            .map(|(k, c)| ([x0 + (k % w) as i32, y0 + (k / w) as i32], c.map(|v| v.clamp(0.0, 1.0))))
+            .map(|(k, c)| {
+                ([x0.saturating_add((k % w) as i32), y0.saturating_add((k / w) as i32)], c.map(|v| v.clamp(0.0, 1.0)))
+            })
             .collect();
         self.record_fragments(z, &fragments);
     }

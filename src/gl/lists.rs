@@ -119,6 +119,8 @@ pub(crate) enum ListCommand {
     },
     TexParameter(GLenum, GLenum, GLint),
     TexEnv(GLenum, GLenum, Vec<f32>),
+    /// `glTexGen*`: coordinate, name and values (the eye plane is transformed when called).
+    TexGen(GLenum, GLenum, Vec<f32>),
     BlendFunc(GLenum, GLenum),
     AlphaFunc(GLenum, f32),
     Fog(GLenum, Vec<f32>),
@@ -451,6 +453,7 @@ impl Gl {
             }
             C::TexParameter(target, pname, param) => self.tex_parameteri(*target, *pname, *param),
             C::TexEnv(target, pname, params) => self.tex_envfv(*target, *pname, params),
+            C::TexGen(coord, pname, params) => self.tex_genfv(*coord, *pname, params),
             C::BlendFunc(s, d) => self.blend_func(*s, *d),
             C::AlphaFunc(func, reference) => self.alpha_func(*func, *reference),
             C::Fog(pname, params) => self.fogfv(*pname, params),

@@ -7,11 +7,13 @@
 //! bounds. Nothing here panics on bad input.
 
 mod attrib;
+mod binding;
 mod bitmap;
 mod clip;
 pub mod consts;
 mod enable;
 mod eval;
+pub mod feedback;
 mod fragment;
 mod frame;
 mod immediate;
@@ -23,9 +25,12 @@ mod offset;
 mod pixels;
 mod raster;
 mod raster_pos;
+mod read_pixels;
 mod stipple;
+mod texgen;
 mod texture;
 pub mod types;
+mod variants;
 mod vertex;
 
 pub use eval::{MapTarget, Slot};
@@ -35,7 +40,9 @@ pub use lighting::{Light, Lighting, Material};
 pub use lists::MAX_LIST_NESTING;
 pub use mesh_job::{MapSample, MeshJob};
 pub use offset::PolygonOffset;
+pub use texgen::{TexGen, TexGenCoord, TexGenState};
 pub use texture::{BoundTexture, TexLevel, TexParams, MAX_TEXTURE_SIZE};
+pub use variants::GlComponent;
 pub use vertex::Vertex;
 
 use consts::*;
@@ -131,10 +138,14 @@ pub struct Gl {
     /// What GLUT's calls made inside callbacks ask of the window (redisplay, timers, idle, title).
     pub(crate) glut: crate::glut::GlutState,
     tessellator: Tessellator,
+    /// `glRenderMode(GL_FEEDBACK)` and its buffer.
+    feedback: feedback::Feedback,
     /// Display lists, and the one being compiled.
     lists: lists::Lists,
     /// Texture objects and unit 0's environment.
     textures: texture::Textures,
+    /// `glTexGen`'s modes and planes.
+    tex_gen: texgen::TexGen,
     /// Blending, the alpha test and fog.
     fragment_ops: fragment::FragmentOps,
     /// How client memory is laid out for images and bitmaps (`glPixelStore`).
@@ -142,6 +153,18 @@ pub struct Gl {
     /// GLU NURBS objects, indexed by their handles: the one import from `gl` into `glu`, since
     /// GLU's calls are methods of `Gl` (the porting rule).
     pub(crate) nurbs: Vec<Option<crate::glu::NurbsObject>>,
+}
+
+/// Mesa's `FLOAT_TO_INT` for colours and normals in `glGetIntegerv`: c · (2³¹ − 1) truncated. A
+/// value outside [−1, 1] overflows C's conversion, which gives `INT_MIN` on the machines Mesa
+/// runs on (x86's "integer indefinite"); so does this.
+fn float_to_int(v: f64) -> GLint {
+    let x = v * f64::from(GLint::MAX);
+    if !(-2_147_483_648.0..2_147_483_648.0).contains(&x) {
+        GLint::MIN
+    } else {
+        x as GLint
+    }
 }
 
 impl Gl {
@@ -168,9 +191,11 @@ impl Gl {
             pending_meshes: (Vec::new(), 0),
             glut: crate::glut::GlutState::default(),
             tessellator: Tessellator::Cpu,
+            feedback: feedback::Feedback::default(),
             lists: lists::Lists::default(),
             pixel_stores: pixels::PixelStores::default(),
             textures: texture::Textures::default(),
+            tex_gen: texgen::TexGen::default(),
             fragment_ops: fragment::FragmentOps::default(),
             nurbs: Vec::new(),
         }
@@ -349,13 +374,15 @@ impl Gl {
     }
 
     /// `glGetIntegerv` for the evaluator queries (`GL_MAX_EVAL_ORDER`, the grid domains and
-    /// segments), the display-list state and the raster position (`GL_CURRENT_RASTER_POSITION`,
-    /// `_POSITION_VALID`, `_COLOR`, `_TEXTURE_COORDS`, `_DISTANCE`). Floats are rounded to the
-    /// nearest integer, as GL converts them, except colours, which map [0, 1] linearly onto
-    /// [0, 2³¹ − 1] (GL 1.1 §6.1.2; Mesa `FLOAT_TO_INT`).
+    /// segments), the display-list state, the current colour, normal and texture coordinates
+    /// (`GL_CURRENT_COLOR`, `_NORMAL`, `_TEXTURE_COORDS`) and the raster position
+    /// (`GL_CURRENT_RASTER_POSITION`, `_POSITION_VALID`, `_COLOR`, `_TEXTURE_COORDS`,
+    /// `_DISTANCE`). Floats are rounded to the nearest integer, as GL converts them, except
+    /// colours and normals, which map [−1, 1] linearly onto [−2³¹ + 1, 2³¹ − 1], truncated
+    /// (GL 1.1 §6.1.2; Mesa `FLOAT_TO_INT`).
     pub fn get_integerv(&mut self, pname: GLenum, params: &mut [GLint]) {
-        if pname == GL_CURRENT_RASTER_COLOR {
-            return self.get_converted(pname, params, |v| (v * f64::from(GLint::MAX)) as GLint);
+        if matches!(pname, GL_CURRENT_RASTER_COLOR | GL_CURRENT_COLOR | GL_CURRENT_NORMAL) {
+            return self.get_converted(pname, params, float_to_int);
         }
         self.get_converted(pname, params, |v| v.round() as GLint);
     }
@@ -391,11 +418,29 @@ impl Gl {
             out[0] = value;
             return Some(1);
         }
-        let n = self.eval.grid_query(pname, out).or_else(|| self.raster_pos_query(pname, out));
+        let n = self
+            .eval
+            .grid_query(pname, out)
+            .or_else(|| self.raster_pos_query(pname, out))
+            .or_else(|| self.current_query(pname, out));
         if n.is_none() {
             self.set_error(GL_INVALID_ENUM);
         }
         n
+    }
+
+    /// The current attributes' `glGet` answers (GL 1.1 table 6.5).
+    fn current_query(&self, pname: GLenum, out: &mut [f64; 4]) -> Option<usize> {
+        let values: &[f32] = match pname {
+            GL_CURRENT_COLOR => &self.current.color,
+            GL_CURRENT_NORMAL => &self.current.normal,
+            GL_CURRENT_TEXTURE_COORDS => &self.current.tex_coord,
+            _ => return None,
+        };
+        for (o, v) in out.iter_mut().zip(values) {
+            *o = f64::from(*v);
+        }
+        Some(values.len())
     }
 
     /// Records `code` unless an earlier error is still pending (GL's sticky flag; Mesa's `_mesa_error`).

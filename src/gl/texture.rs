@@ -10,6 +10,7 @@
 
 use super::consts::*;
 use super::lists::ListCommand;
+use super::texgen::{TexGen, TexGenState};
 use super::types::*;
 use super::Gl;
 use glam::Mat4;
@@ -58,6 +59,9 @@ impl TexParams {
     }
 }
 
+/// What `GL_TEXTURE_BIT` saves: the bindings, the environment mode and colour, `glTexGen`.
+pub(crate) type TextureAttrib = ([GLuint; 2], GLenum, [f32; 4], TexGen);
+
 /// The texture a recorded primitive is drawn with: the complete mipmap chain of the enabled
 /// target's bound object, its parameters, unit 0's environment and the texture matrix.
 #[derive(Clone, Debug)]
@@ -78,6 +82,8 @@ pub struct BoundTexture {
     pub matrix: Mat4,
     /// A `GL_TEXTURE_1D` texture (t is not used).
     pub one_d: bool,
+    /// `glTexGen`: the coordinates generated per vertex, if any is enabled.
+    pub generate: Option<TexGenState>,
 }
 
 impl BoundTexture {
@@ -93,6 +99,7 @@ impl BoundTexture {
             env_color: [0.0; 4],
             matrix: Mat4::IDENTITY,
             one_d: false,
+            generate: None,
         }
     }
 }
@@ -106,6 +113,7 @@ impl PartialEq for BoundTexture {
             && self.env_color == other.env_color
             && self.matrix == other.matrix
             && self.one_d == other.one_d
+            && self.generate == other.generate
     }
 }
 
@@ -539,6 +547,7 @@ impl Gl {
             return None;
         };
         let matrix = self.matrices.texture();
+        let generate = self.tex_gen_state();
         let (env_mode, env_color) = (self.textures.env_mode, self.textures.env_color);
         let object = self.bound_object_mut(dims);
         let levels = object
@@ -554,17 +563,20 @@ impl Gl {
             env_color,
             matrix,
             one_d: dims == 1,
+            generate,
         })
     }
 
-    /// What `GL_TEXTURE_BIT` saves of unit 0: the bindings and the environment.
-    pub(crate) fn texture_attrib(&self) -> ([GLuint; 2], GLenum, [f32; 4]) {
-        (self.textures.bound, self.textures.env_mode, self.textures.env_color)
+    /// What `GL_TEXTURE_BIT` saves of unit 0: the bindings, the environment and the
+    /// coordinate generation (its enables are saved with the bit's other enables).
+    pub(crate) fn texture_attrib(&self) -> TextureAttrib {
+        (self.textures.bound, self.textures.env_mode, self.textures.env_color, self.tex_gen)
     }
 
     /// Restores what [`Gl::texture_attrib`] saved (a binding whose object was deleted since
     /// falls back to the default texture).
-    pub(crate) fn restore_texture_attrib(&mut self, (bound, env_mode, env_color): ([GLuint; 2], GLenum, [f32; 4])) {
+    pub(crate) fn restore_texture_attrib(&mut self, (bound, env_mode, env_color, tex_gen): TextureAttrib) {
+        self.tex_gen = tex_gen;
         let exists = |name: GLuint| name == 0 || self.textures.objects.contains_key(&name);
         self.textures.bound = bound.map(|name| if exists(name) { name } else { 0 });
         (self.textures.env_mode, self.textures.env_color) = (env_mode, env_color);

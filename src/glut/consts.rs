@@ -8,6 +8,8 @@ pub use super::fonts::{
     GLUT_BITMAP_8_BY_13, GLUT_BITMAP_9_BY_15, GLUT_BITMAP_HELVETICA_10, GLUT_BITMAP_HELVETICA_12,
     GLUT_BITMAP_HELVETICA_18, GLUT_BITMAP_TIMES_ROMAN_10, GLUT_BITMAP_TIMES_ROMAN_24,
 };
+// Stroke fonts (glutStrokeCharacter).
+pub use super::fonts::{GLUT_STROKE_MONO_ROMAN, GLUT_STROKE_ROMAN};
 
 // Mouse buttons and states (glutMouseFunc), window entry (glutEntryFunc).
 /// The left mouse button.
@@ -82,3 +84,5 @@ pub const GLUT_INIT_WINDOW_WIDTH: GLenum = 502;
 pub const GLUT_INIT_WINDOW_HEIGHT: GLenum = 503;
 pub const GLUT_INIT_DISPLAY_MODE: GLenum = 504;
 pub const GLUT_ELAPSED_TIME: GLenum = 700;
+/// `glutGet`: the number of items in the current menu.
+pub const GLUT_MENU_NUM_ITEMS: GLenum = 300;

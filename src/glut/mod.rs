@@ -10,12 +10,17 @@
 
 pub mod consts;
 pub mod fonts;
+mod menu;
+#[cfg(all(feature = "gpu", feature = "png"))]
+pub(crate) mod popup;
 // The main loop's scheduling belongs to the runner, `App`.
 #[cfg(all(feature = "gpu", feature = "png"))]
 mod schedule;
+mod shapes;
 pub(crate) mod state;
 mod teapot;
 
+pub use menu::MenuFn;
 #[cfg(all(feature = "gpu", feature = "png"))]
 pub(crate) use schedule::Schedule;
 pub(crate) use state::GlutState;
@@ -101,6 +106,7 @@ impl Gl {
             GLUT_WINDOW_RGBA => 1,
             GLUT_WINDOW_DEPTH_SIZE => 24,
             GLUT_ELAPSED_TIME => glut.elapsed_ms,
+            GLUT_MENU_NUM_ITEMS => self.glut_menu_num_items(),
             _ => -1,
         }
     }

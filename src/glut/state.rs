@@ -1,5 +1,6 @@
 //! What GLUT calls made inside callbacks leave for the runner, and what the runner tells them.
 
+use super::menu::Menus;
 use super::{IdleFn, TimerFn};
 
 /// A timer asked for with `glutTimerFunc`: delay in ms, callback, value.
@@ -28,6 +29,8 @@ pub(crate) struct GlutState {
     pub idle: Option<Option<IdleFn>>,
     /// `glutTimerFunc` calls not yet scheduled.
     pub timers: Vec<TimerRequest>,
+    /// The menus made with `glutCreateMenu` and the buttons they are attached to.
+    pub menus: Menus,
 }
 
 impl std::fmt::Debug for GlutState {
@@ -42,6 +45,7 @@ impl std::fmt::Debug for GlutState {
             .field("elapsed_ms", &self.elapsed_ms)
             .field("idle_changed", &self.idle.is_some())
             .field("timers", &self.timers.len())
+            .field("menus", &self.menus)
             .finish()
     }
 }

@@ -1,5 +1,5 @@
 //! GL's state for the mesh rasteriser's vertex and fragment stages, as the draw uniform of
-//! `shaders/mesh_raster.wgsl` ([`GpuDraw`]): matrices, the viewport as a clip transform,
+//! `shaders/mesh_raster.wgsl` ([`GpuDraw`]): matrices (the texture's too), the viewport as a clip transform,
 //! lighting, materials and lights, with GL's meaning of each field (GL 1.1 spec §2.13).
 
 use super::layout::{GpuDraw, GpuLight, GpuMaterial};
@@ -46,6 +46,7 @@ pub(crate) fn draw_uniform(state: &DrawState, polygon: bool, (width, height): (u
         modelview: state.modelview.to_cols_array_2d(),
         projection: state.projection.to_cols_array_2d(),
         normal_matrix: normal_matrix.to_cols_array_2d(),
+        texture_matrix: state.texture.as_ref().map_or(Mat4::IDENTITY, |t| t.matrix).to_cols_array_2d(),
         viewport,
         depth_range: [state.depth_range[0], state.depth_range[1], 0.0, 0.0],
         primitive: [flag(polygon), 0.0, 0.0, 0.0],

@@ -51,13 +51,18 @@ impl FrameRaster {
         self.textures.bind_groups(device, queue, &self.texture_layout, &list.fragments, height)
     }
 
-    /// Makes sure the pipeline for `key` exists (before a render pass borrows them all).
-    pub(crate) fn ensure_pipeline(&mut self, device: &wgpu::Device, key: PipelineKey) {
-        let (module, layout) = (&self.module, &self.layout);
-        self.pipelines.entry(key).or_insert_with(|| make_pipeline(device, module, layout, key));
+    /// The layout of the texture bind groups (the mesh rasteriser's group 1 too).
+    pub(crate) fn texture_layout(&self) -> &wgpu::BindGroupLayout {
+        &self.texture_layout
     }
 
-    /// The pipeline for `key`, made by [`FrameRaster::ensure_pipeline`].
+    /// Makes sure the pipelines for `keys` exist (before a render pass borrows them all).
+    pub(crate) fn ensure_pipelines(&mut self, device: &wgpu::Device, keys: impl IntoIterator<Item = PipelineKey>) {
+        let (module, layout) = (&self.module, &self.layout);
+        super::raster::make_missing(&mut self.pipelines, keys, |key| make_pipeline(device, module, layout, key));
+    }
+
+    /// The pipeline for `key`, made by [`FrameRaster::ensure_pipelines`].
     pub(crate) fn pipeline(&self, key: PipelineKey) -> &wgpu::RenderPipeline {
         &self.pipelines[&key]
     }
@@ -93,7 +98,7 @@ fn make_pipeline(
 }
 
 /// GL's `glBlendFunc` factors (for colour and alpha alike) as a wgpu blend state, adding.
-fn blend_state([source, destination]: [GLenum; 2]) -> wgpu::BlendState {
+pub(crate) fn blend_state([source, destination]: [GLenum; 2]) -> wgpu::BlendState {
     let component = wgpu::BlendComponent {
         src_factor: blend_factor(source),
         dst_factor: blend_factor(destination),

@@ -4,12 +4,16 @@
 //! reflection of the shader, so a field added on one side only fails at `cargo test`, not as a
 //! wrong picture.
 
-/// The frame rasteriser's source (`shaders/raster.wgsl`).
-pub const RASTER_WGSL: &str = include_str!("../../shaders/raster.wgsl");
+/// GL's per-fragment operations (`shaders/fragment.wgsl`), appended to both rasterisers.
+pub const FRAGMENT_WGSL: &str = include_str!("../../shaders/fragment.wgsl");
+/// The frame rasteriser's source (`shaders/raster.wgsl`, then `shaders/fragment.wgsl`).
+pub const RASTER_WGSL: &str =
+    concat!(include_str!("../../shaders/raster.wgsl"), include_str!("../../shaders/fragment.wgsl"));
 /// The evaluator's compute shader (`shaders/eval_mesh.wgsl`).
 pub const EVAL_MESH_WGSL: &str = include_str!("../../shaders/eval_mesh.wgsl");
-/// The mesh rasteriser's source (`shaders/mesh_raster.wgsl`).
-pub const MESH_RASTER_WGSL: &str = include_str!("../../shaders/mesh_raster.wgsl");
+/// The mesh rasteriser's source (`shaders/mesh_raster.wgsl`, then `shaders/fragment.wgsl`).
+pub const MESH_RASTER_WGSL: &str =
+    concat!(include_str!("../../shaders/mesh_raster.wgsl"), include_str!("../../shaders/fragment.wgsl"));
 
 /// Bytes per evaluated vertex (`struct Vertex`): position, normal, colour, texture coordinate.
 pub const VERTEX_BYTES: u64 = 64;
@@ -127,6 +131,8 @@ pub(crate) struct GpuDraw {
     pub projection: [[f32; 4]; 4],
     /// Inverse transpose of the modelview's 3×3, in a 4×4.
     pub normal_matrix: [[f32; 4]; 4],
+    /// The top of the texture matrix stack (identity without a texture).
+    pub texture_matrix: [[f32; 4]; 4],
     /// Viewport as a clip transform: sx, ox, sy, oy.
     pub viewport: [f32; 4],
     /// Depth range near, far.
@@ -302,6 +308,7 @@ mod tests {
                 modelview,
                 projection,
                 normal_matrix,
+                texture_matrix,
                 viewport,
                 depth_range,
                 flags,

@@ -21,8 +21,9 @@ use std::collections::HashMap;
 use wgpu::util::DeviceExt;
 
 /// Pipeline key: topology, depth function, target format, culling (front face, culled face),
-/// flat shading.
-type PipelineKey = (Topology, Option<GLenum>, wgpu::TextureFormat, (wgpu::FrontFace, Option<wgpu::Face>), bool);
+/// flat shading, blend factors.
+type PipelineKey =
+    (Topology, Option<GLenum>, wgpu::TextureFormat, (wgpu::FrontFace, Option<wgpu::Face>), bool, Option<[GLenum; 2]>);
 
 /// The evaluator and the render pipelines that draw what it writes.
 pub(crate) struct MeshRaster {
@@ -100,7 +101,8 @@ pub(crate) fn gpu_mesh_indices(device: &wgpu::Device, frame: &Frame) -> Vec<usiz
 impl MeshRaster {
     /// Compiles the evaluator and the mesh rasteriser on `device`; `provoking_last` tells
     /// whether the backend's flat shading takes a primitive's last vertex.
-    pub(crate) fn new(device: &wgpu::Device, provoking_last: bool) -> Self {
+    /// `texture_layout` is the frame rasteriser's: meshes are textured with its bind groups.
+    pub(crate) fn new(device: &wgpu::Device, texture_layout: &wgpu::BindGroupLayout, provoking_last: bool) -> Self {
         let evaluator = Evaluator::new(device);
         let module = shader_module(device, "mesh_raster.wgsl", MESH_RASTER_WGSL);
         let draw_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
@@ -109,7 +111,7 @@ impl MeshRaster {
         });
         let layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
             label: Some("mesh raster"),
-            bind_group_layouts: &[Some(&draw_layout)],
+            bind_group_layouts: &[Some(&draw_layout), Some(texture_layout)],
             immediate_size: 0,
         });
         Self { evaluator, module, draw_layout, layout, pipelines: HashMap::new(), provoking_last }
@@ -188,21 +190,19 @@ impl MeshRaster {
         prepared: &PreparedMeshes,
         format: wgpu::TextureFormat,
     ) {
-        for draw in prepared.draws.values() {
-            if let Some(key) = pipeline_key(draw, &frame.states[draw.state], format) {
-                let (module, layout) = (&self.module, &self.layout);
-                self.pipelines.entry(key).or_insert_with(|| make_pipeline(device, module, layout, key));
-            }
-        }
+        let keys = prepared.draws.values().filter_map(|draw| pipeline_key(draw, &frame.states[draw.state], format));
+        let (module, layout) = (&self.module, &self.layout);
+        super::raster::make_missing(&mut self.pipelines, keys, |key| make_pipeline(device, module, layout, key));
     }
 
-    /// Draws mesh `index` of the frame inside a render pass.
+    /// Draws mesh `index` of the frame inside a render pass, with the bind group of its
+    /// texture, fog and alpha test.
     pub(crate) fn draw(
         &self,
         rp: &mut wgpu::RenderPass<'_>,
         frame: &Frame,
         prepared: &PreparedMeshes,
-        index: usize,
+        (index, fragment): (usize, &wgpu::BindGroup),
         format: wgpu::TextureFormat,
     ) {
         let Some(draw) = prepared.draws.get(&index) else { return };
@@ -211,6 +211,7 @@ impl MeshRaster {
         let Some(pipeline) = self.pipelines.get(&key) else { return };
         rp.set_pipeline(pipeline);
         rp.set_bind_group(0, &prepared.bind, &[draw.uniform_offset]);
+        rp.set_bind_group(1, fragment, &[]);
         rp.set_vertex_buffer(0, prepared.buffers.vertices.slice(..));
         if draw.topology == Topology::Points {
             rp.draw(draw.first_vertex..draw.first_vertex + draw.vertex_count, 0..1);
@@ -231,24 +232,23 @@ fn pipeline_key(draw: &MeshDraw, state: &DrawState, format: wgpu::TextureFormat)
         (Topology::Triangles, Some(_)) => Some(wgpu::Face::Back),
         _ => None,
     };
-    Some((draw.topology, state.depth_test, format, (front, cull), state.shade_model == GL_FLAT))
+    Some((draw.topology, state.depth_test, format, (front, cull), state.shade_model == GL_FLAT, state.blend))
 }
 
 fn make_pipeline(
     device: &wgpu::Device,
     module: &wgpu::ShaderModule,
     layout: &wgpu::PipelineLayout,
-    (topology, depth, format, faces, flat): PipelineKey,
+    (topology, depth, format, faces, flat, blend): PipelineKey,
 ) -> wgpu::RenderPipeline {
-    let attributes = wgpu::vertex_attr_array![0 => Float32x4, 1 => Float32x4, 2 => Float32x4];
+    let attributes = wgpu::vertex_attr_array![0 => Float32x4, 1 => Float32x4, 2 => Float32x4, 3 => Float32x4];
     let vertex = wgpu::VertexBufferLayout {
         array_stride: VERTEX_BYTES,
         step_mode: wgpu::VertexStepMode::Vertex,
         attributes: &attributes,
     };
     let entry_points = if flat { ("vs_flat", "fs_flat") } else { ("vs_smooth", "fs_smooth") };
-    // Meshes with blending, fog, textures or the alpha test are left to the frame rasteriser.
-    let blend = None;
+    let blend = blend.map(super::frame_raster::blend_state);
     RasterPipeline {
         label: "gl mesh raster",
         module,

@@ -36,7 +36,7 @@ mod textures;
 
 pub use device::{Gpu, Image, RenderError};
 pub use evaluate::{evaluate_job_indices, evaluate_jobs, EvaluatedMeshes, Evaluator};
-pub use layout::{GpuMapDesc, GpuMeshJob, EVAL_MESH_WGSL, MESH_RASTER_WGSL, RASTER_WGSL, VERTEX_BYTES};
+pub use layout::{GpuMapDesc, GpuMeshJob, EVAL_MESH_WGSL, FRAGMENT_WGSL, MESH_RASTER_WGSL, RASTER_WGSL, VERTEX_BYTES};
 pub use pack::PackedJobs;
 pub use renderer::{tessellate_patches, Renderer};
 

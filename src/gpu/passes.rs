@@ -6,7 +6,11 @@ use crate::render::assemble::{Batch, Op};
 /// What a render pass draws: a batch of assembled vertices or a GPU-tessellated mesh.
 pub(crate) enum PassItem {
     Batch(Batch),
-    Mesh(usize),
+    /// Mesh `mesh` of the frame, with its fragment state's index (see `Batch::fragment`).
+    Mesh {
+        mesh: usize,
+        fragment: Option<u32>,
+    },
 }
 
 /// Draws between two clears share one render pass.
@@ -17,9 +21,11 @@ pub(crate) struct Pass {
 }
 
 /// Splits the ops at every clear. The first pass clears to transparent black and depth 1 (the
-/// state of a new OSMesa buffer) unless the program clears first.
-pub(crate) fn split_passes(ops: &[Op]) -> Vec<Pass> {
-    let mut passes = vec![Pass { clear_color: Some([0.0; 4]), clear_depth: Some(1.0), draws: Vec::new() }];
+/// state of a new OSMesa buffer) unless the program clears first, or, with `keep` (a frame
+/// drawn over another, as a GLUT menu is), starts from what the target holds.
+pub(crate) fn split_passes(ops: &[Op], keep: bool) -> Vec<Pass> {
+    let start = if keep { (None, None) } else { (Some([0.0; 4]), Some(1.0)) };
+    let mut passes = vec![Pass { clear_color: start.0, clear_depth: start.1, draws: Vec::new() }];
     for op in ops {
         match *op {
             Op::Clear { color, depth } => {
@@ -32,7 +38,9 @@ pub(crate) fn split_passes(ops: &[Op]) -> Vec<Pass> {
                 }
             }
             Op::Draw(batch) => passes.last_mut().expect("at least one pass").draws.push(PassItem::Batch(batch)),
-            Op::GpuMesh(index) => passes.last_mut().expect("at least one pass").draws.push(PassItem::Mesh(index)),
+            Op::GpuMesh { mesh, fragment } => {
+                passes.last_mut().expect("at least one pass").draws.push(PassItem::Mesh { mesh, fragment })
+            }
         }
     }
     passes

@@ -5,6 +5,8 @@
 use crate::gl::consts::*;
 use crate::gl::types::GLenum;
 use crate::render::assemble::Topology;
+use std::collections::HashMap;
+use std::hash::Hash;
 
 /// The depth buffer's format: GL's depth after the viewport transform, in [0, 1].
 pub(crate) const DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth32Float;
@@ -95,5 +97,40 @@ fn compare(func: GLenum) -> wgpu::CompareFunction {
         GL_GEQUAL => wgpu::CompareFunction::GreaterEqual,
         GL_ALWAYS => wgpu::CompareFunction::Always,
         _ => wgpu::CompareFunction::Less,
+    }
+}
+
+/// Makes the pipelines of `keys` that `cache` lacks, several at once: a software driver
+/// compiles each pipeline on the thread that asks for it (lavapipe: a few milliseconds each,
+/// most of a first frame's time), so a frame needing several pays for the slowest, not the sum.
+pub(crate) fn make_missing<K: Copy + Eq + Hash + Send + Sync>(
+    cache: &mut HashMap<K, wgpu::RenderPipeline>,
+    keys: impl IntoIterator<Item = K>,
+    make: impl Fn(K) -> wgpu::RenderPipeline + Sync,
+) {
+    let mut missing: Vec<K> = Vec::new();
+    for key in keys {
+        if !cache.contains_key(&key) && !missing.contains(&key) {
+            missing.push(key);
+        }
+    }
+    if missing.len() < 2 {
+        cache.extend(missing.into_iter().map(|k| (k, make(k))));
+        return;
+    }
+    let threads = std::thread::available_parallelism().map_or(1, |n| n.get()).min(missing.len());
+    let chunk = missing.len().div_ceil(threads);
+    let made: Vec<(K, wgpu::RenderPipeline)> = std::thread::scope(|scope| {
+        let workers: Vec<_> = missing
+            .chunks(chunk)
+            .map(|keys| scope.spawn(|| keys.iter().map(|&k| (k, make(k))).collect::<Vec<_>>()))
+            .collect();
+        // A worker that panicked (wgpu reports its errors through the device, not by
+        // panicking) loses its pipelines; they are made again below.
+        workers.into_iter().filter_map(|w| w.join().ok()).flatten().collect()
+    });
+    cache.extend(made);
+    for key in missing {
+        cache.entry(key).or_insert_with(|| make(key));
     }
 }

@@ -114,17 +114,39 @@ impl Renderer {
         size: (u32, u32),
         format: wgpu::TextureFormat,
     ) {
+        let target = Attachments { color, depth, size, format };
+        self.encode_onto(frame, encoder, &target, false);
+    }
+
+    /// [`Renderer::encode`] over what `color` and `depth` already hold: no clear unless the
+    /// frame asks for one (a GLUT menu drawn over the program's picture).
+    pub(crate) fn encode_over(
+        &mut self,
+        frame: &Frame,
+        encoder: &mut wgpu::CommandEncoder,
+        color: &wgpu::TextureView,
+        depth: &wgpu::TextureView,
+        size: (u32, u32),
+        format: wgpu::TextureFormat,
+    ) {
+        let target = Attachments { color, depth, size, format };
+        self.encode_onto(frame, encoder, &target, true);
+    }
+
+    fn encode_onto(&mut self, frame: &Frame, encoder: &mut wgpu::CommandEncoder, target: &Attachments<'_>, keep: bool) {
+        let size = target.size;
         let on_gpu = gpu_mesh_indices(&self.device, frame);
         let list = assemble_frame(frame, &on_gpu);
         let prepared = (!on_gpu.is_empty()).then(|| {
             let provoking_last = self.provoking_vertex_is_last();
-            let meshes = self.meshes.get_or_insert_with(|| MeshRaster::new(&self.device, provoking_last));
+            let texture_layout = self.frames.texture_layout();
+            let meshes =
+                self.meshes.get_or_insert_with(|| MeshRaster::new(&self.device, texture_layout, provoking_last));
             let prepared = meshes.prepare(&self.device, &self.queue, encoder, frame, &on_gpu, size);
-            meshes.ensure_pipelines(&self.device, frame, &prepared, format);
+            meshes.ensure_pipelines(&self.device, frame, &prepared, target.format);
             prepared
         });
-        let target = Attachments { color, depth, size, format };
-        self.encode_list(&list, frame, prepared.as_ref(), encoder, &target);
+        self.encode_list(&list, frame, prepared.as_ref(), encoder, target, keep);
     }
 
     /// Records an assembled list (with its frame's GPU meshes already prepared).
@@ -135,15 +157,17 @@ impl Renderer {
         prepared: Option<&PreparedMeshes>,
         encoder: &mut wgpu::CommandEncoder,
         target: &Attachments<'_>,
+        keep: bool,
     ) {
         let buffer = vertex_buffer(&self.device, list, target.size);
         let bind_groups = self.frames.texture_bind_groups(&self.device, &self.queue, list, target.size.1);
-        for pass in split_passes(&list.ops) {
-            for item in &pass.draws {
-                if let PassItem::Batch(batch) = item {
-                    self.frames.ensure_pipeline(&self.device, pipeline_key(batch, target));
-                }
-            }
+        let passes = split_passes(&list.ops, keep);
+        let batches = passes.iter().flat_map(|p| &p.draws).filter_map(|item| match item {
+            PassItem::Batch(batch) => Some(pipeline_key(batch, target)),
+            PassItem::Mesh { .. } => None,
+        });
+        self.frames.ensure_pipelines(&self.device, batches);
+        for pass in passes {
             let mut rp = begin_pass(encoder, target.color, target.depth, pass.clear_color, pass.clear_depth);
             for item in &pass.draws {
                 self.draw_item(&mut rp, item, (buffer.as_ref(), &bind_groups), frame, prepared, target);
@@ -167,21 +191,25 @@ impl Renderer {
                 let Some(scissor) = scissor_rect(batch.viewport, target.size) else { return };
                 rp.set_scissor_rect(scissor[0], scissor[1], scissor[2], scissor[3]);
                 rp.set_pipeline(self.frames.pipeline(pipeline_key(batch, target)));
-                // The last bind group is the one without fragment operations.
-                let group = batch.fragment.map_or(bind_groups.len() - 1, |f| f as usize);
-                rp.set_bind_group(0, &bind_groups[group], &[]);
+                rp.set_bind_group(0, fragment_group(bind_groups, batch.fragment), &[]);
                 rp.set_vertex_buffer(0, buffer.slice(..));
                 rp.draw(batch.first..batch.first + batch.count, 0..1);
             }
-            PassItem::Mesh(index) => {
+            PassItem::Mesh { mesh, fragment } => {
                 let (Some(prepared), Some(meshes)) = (prepared, &self.meshes) else { return };
-                let Some(viewport) = prepared.viewport(frame, *index) else { return };
+                let Some(viewport) = prepared.viewport(frame, *mesh) else { return };
                 let Some(scissor) = scissor_rect(viewport, target.size) else { return };
                 rp.set_scissor_rect(scissor[0], scissor[1], scissor[2], scissor[3]);
-                meshes.draw(rp, frame, prepared, *index, target.format);
+                let fragment = fragment_group(bind_groups, *fragment);
+                meshes.draw(rp, frame, prepared, (*mesh, fragment), target.format);
             }
         }
     }
+}
+
+/// The bind group of a fragment state; the last one is the one without fragment operations.
+fn fragment_group(bind_groups: &[wgpu::BindGroup], fragment: Option<u32>) -> &wgpu::BindGroup {
+    &bind_groups[fragment.map_or(bind_groups.len() - 1, |f| f as usize)]
 }
 
 /// The frame rasteriser's pipeline for a batch drawn into `target`.

@@ -20,32 +20,66 @@ pub type Vec4<S> = [S; MAX_DIM];
 ///
 /// An order of 0 or a slice too short for `order * dim` gives the zero vector.
 #[must_use]
+#[inline]
 pub fn horner<S: Scalar>(points: &[S], dim: usize, order: usize, t: S) -> Vec4<S> {
-    let mut out = [S::ZERO; MAX_DIM];
-    if order == 0 || dim > MAX_DIM || points.len() < order * dim {
-        return out;
+    if order == 0 || points.len() < order * dim {
+        return [S::ZERO; MAX_DIM];
     }
+    // One loop per dimension, so that the component loops unroll.
+    match dim {
+        1 => horner_dim::<S, 1>(points, order, t),
+        2 => horner_dim::<S, 2>(points, order, t),
+        3 => horner_dim::<S, 3>(points, order, t),
+        4 => horner_dim::<S, 4>(points, order, t),
+        _ => [S::ZERO; MAX_DIM],
+    }
+}
+
+/// [`horner`] for `D` components, `points` holding at least `order · D` values. The binomial
+/// coefficient advances as Mesa's `_math_horner_bezier_curve` advances it, C(n, i) =
+/// C(n, i−1) · (n − i + 1) · (1/i) with 1/i from a table, so that the values agree with Mesa's
+/// bit for bit and no division is left in the loop.
+#[inline]
+fn horner_dim<S: Scalar, const D: usize>(points: &[S], order: usize, t: S) -> Vec4<S> {
+    let mut out = [S::ZERO; MAX_DIM];
     if order == 1 {
-        out[..dim].copy_from_slice(&points[..dim]);
+        out[..D].copy_from_slice(&points[..D]);
         return out;
     }
     let s = S::ONE - t;
     let n = order - 1;
     let mut binom = S::from_usize(n);
     let mut power = t;
-    for c in 0..dim {
-        out[c] = s * points[c] + binom * power * points[dim + c];
+    for c in 0..D {
+        out[c] = s * points[c] + binom * power * points[D + c];
     }
     for i in 2..order {
-        // C(n, i) = C(n, i-1) * (n - i + 1) / i
-        binom = binom * S::from_usize(n - i + 1) / S::from_usize(i);
+        binom = binom * S::from_usize(n - i + 1) * reciprocal::<S>(i);
         power *= t;
-        let p = &points[i * dim..(i + 1) * dim];
-        for c in 0..dim {
+        let p = &points[i * D..(i + 1) * D];
+        for c in 0..D {
             out[c] = s * out[c] + binom * power * p[c];
         }
     }
     out
+}
+
+/// 1/i rounded to `S` (Mesa's `inv_tab`), from a table for the orders GL allows.
+#[inline]
+fn reciprocal<S: Scalar>(i: usize) -> S {
+    const TABLE: [f64; 41] = {
+        let mut t = [0.0; 41];
+        let mut i = 1;
+        while i < 41 {
+            t[i] = 1.0 / i as f64;
+            i += 1;
+        }
+        t
+    };
+    match TABLE.get(i) {
+        Some(&r) => S::from_f64(r),
+        None => S::ONE / S::from_usize(i),
+    }
 }
 
 /// Evaluates a Bezier curve by de Casteljau's algorithm (repeated linear interpolation):

@@ -106,8 +106,13 @@ pub enum Op {
     },
     /// Draw a batch.
     Draw(Batch),
-    /// Draw mesh `n` of the frame, whose vertices the GPU tessellator evaluates.
-    GpuMesh(usize),
+    /// Draw a mesh of the frame whose vertices the GPU tessellator evaluates.
+    GpuMesh {
+        /// The mesh's index in the frame.
+        mesh: usize,
+        /// Its texture, fog and alpha test, as for [`Batch::fragment`].
+        fragment: Option<u32>,
+    },
 }
 
 /// Everything to rasterise for one frame, in order.
@@ -151,7 +156,9 @@ pub fn assemble_frame(frame: &Frame, gpu_meshes: &[usize]) -> DrawList {
                 let Some(mesh) = frame.meshes.get(index) else { continue };
                 let Some(state) = frame.states.get(mesh.state) else { continue };
                 if gpu_meshes.binary_search(&index).is_ok() && matches!(mesh.vertices, MeshVertices::Deferred(_)) {
-                    out.list.ops.push(Op::GpuMesh(index));
+                    // A mesh with smoothing or a polygon stipple is never left to the GPU.
+                    let fragment = out.fragment_index(state, (Smooth::None, None));
+                    out.list.ops.push(Op::GpuMesh { mesh: index, fragment });
                     continue;
                 }
                 let grid = mesh.evaluated();

@@ -28,6 +28,9 @@ pub fn write_png(path: impl AsRef<std::path::Path>, image: &Image) -> std::io::R
     let mut encoder = png::Encoder::new(file, image.width, image.height);
     encoder.set_color(png::ColorType::Rgb);
     encoder.set_depth(png::BitDepth::Eight);
+    // fdeflate's PNG-tuned mode: a whole-process render spent more time compressing at the
+    // default level than drawing (4.7 ms of a 500 × 500 frame, measured with --profile).
+    encoder.set_compression(png::Compression::Fast);
     let mut writer = encoder.write_header().map_err(std::io::Error::other)?;
     let rgb: Vec<u8> = image.pixels.chunks_exact(4).flat_map(|p| [p[0], p[1], p[2]]).collect();
     writer.write_image_data(&rgb).map_err(std::io::Error::other)?;

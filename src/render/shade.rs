@@ -37,7 +37,12 @@ impl<'a> Shader<'a> {
         let eye = self.state.modelview * Vec4::from_array(v.position);
         let clip = self.state.projection * eye;
         let color = Vec4::from_array(v.color);
-        let tex = self.state.texture.as_ref().map_or(Vec4::ZERO, |t| t.matrix * Vec4::from_array(v.tex_coord));
+        let tex = self.state.texture.as_ref().map_or(Vec4::ZERO, |t| {
+            let given = Vec4::from_array(v.tex_coord);
+            let generated =
+                t.generate.map_or(given, |g| g.apply(given, Vec4::from_array(v.position), eye, self.eye_normal(v)));
+            t.matrix * generated
+        });
         let fog = eye.z.abs();
         let Some(lighting) = &self.state.lighting else {
             let c = color.clamp(Vec4::ZERO, Vec4::ONE);
@@ -51,6 +56,17 @@ impl<'a> Shader<'a> {
         let front = self.light(lighting, 0, n, position, color);
         let back = if lighting.two_side { self.light(lighting, 1, -n, position, color) } else { front };
         ShadedVertex { clip, eye, front, back, tex, fog }
+    }
+
+    /// The vertex's normal in eye coordinates, normalised when `GL_NORMALIZE` or
+    /// `GL_RESCALE_NORMAL` asks for it (what sphere and normal maps read).
+    fn eye_normal(&self, v: &Vertex) -> Vec3 {
+        let n = self.normal_matrix * Vec3::from_array(v.normal);
+        if self.state.normalize || self.state.rescale_normal {
+            n.normalize_or_zero()
+        } else {
+            n
+        }
     }
 
     /// The material of `face` with `GL_COLOR_MATERIAL` applied.

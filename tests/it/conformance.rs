@@ -4,7 +4,7 @@
 //! metric of `gleval::testing::compare`.
 
 use gleval::app::App;
-use gleval::gl::{MeshVertices, Tessellator};
+use gleval::gl::{DrawState, MeshVertices, Tessellator};
 use gleval::testing::compare::{assert_matches, compare, RgbImage};
 use std::path::Path;
 
@@ -48,12 +48,18 @@ mod outline;
 mod rational;
 #[path = "../../examples/rationalmap.rs"]
 mod rationalmap;
+#[path = "../../examples/shapes.rs"]
+mod shapes;
 #[path = "../../examples/specular.rs"]
 mod specular;
 #[path = "../../examples/stipple.rs"]
 mod stipple;
+#[path = "../../examples/strokes.rs"]
+mod strokes;
 #[path = "../../examples/teapot.rs"]
 mod teapot;
+#[path = "../../examples/texgen.rs"]
+mod texgen;
 #[path = "../../examples/texsurf.rs"]
 mod texsurf;
 #[path = "../../examples/texteapot.rs"]
@@ -261,6 +267,26 @@ fn glut_teapots_match_mesa() {
     check("texteapot", texteapot::app, 0.0);
 }
 
+/// Generated texture coordinates: object-linear contours, eye-linear stripes and a
+/// sphere-mapped teapot (`TexGen.c`).
+#[test]
+fn texgen_matches_mesa() {
+    check("texgen", texgen::app, 0.0);
+}
+
+/// GLUT's sphere, cube, cone and torus, solid (lit, back faces culled) and wire (`Shapes.c`):
+/// the stand-in's shapes were checked against real freeglut (`glut_shapes.h`).
+#[test]
+fn glut_shapes_match_mesa() {
+    check("shapes", shapes::app, 0.0);
+}
+
+/// GLUT's stroke fonts, scaled, turned, centred and on two lines (`Strokes.c`).
+#[test]
+fn glut_stroke_fonts_match_mesa() {
+    check("strokes", strokes::app, 0.0);
+}
+
 /// Programs with no C original: the GPU tessellator must still draw what the CPU draws.
 #[test]
 fn programs_without_a_reference_draw_the_same_on_the_gpu() {
@@ -270,5 +296,32 @@ fn programs_without_a_reference_draw_the_same_on_the_gpu() {
         let between = compare(&cpu, &gpu).expect("same size").fraction;
         println!("{name}: GPU vs CPU {:.3}% ({} meshes on the GPU)", between * 100.0, gpu_meshes(app));
         assert!(between <= GPU_VS_CPU, "{name}: GPU and CPU tessellators differ in {:.3}% of pixels", between * 100.0);
+    }
+}
+
+/// The GPU tessellator evaluates and draws textured (every env mode, mipmaps), fogged, blended
+/// and listed meshes itself: none of them falls back to the CPU (the pictures above then show
+/// they match the CPU path and Mesa).
+#[test]
+fn fragment_operations_and_lists_stay_on_the_gpu_tessellator() {
+    for (name, app) in [
+        ("texsurf", texsurf::app as fn() -> App),
+        ("mipnurbs", mipnurbs::app),
+        ("fogblend", fogblend::app),
+        ("lists", lists::app),
+        ("texteapot", texteapot::app),
+    ] {
+        let mut gl = app().with_tessellator(Tessellator::Gpu).record_frame();
+        let frame = gl.frame();
+        // Wide lines and points are the CPU assembler's; every other mesh is the GPU's.
+        let fragment_ops = |s: &DrawState| s.texture.is_some() || s.fog.is_some() || s.blend.is_some();
+        let wide = |s: &DrawState| s.line_width.round() > 1.0 || s.point_size.round() > 1.0;
+        let meshes: Vec<_> = frame.meshes.iter().filter(|m| !wide(&frame.states[m.state])).collect();
+        let listed = name == "lists";
+        assert!(listed || meshes.iter().any(|m| fragment_ops(&frame.states[m.state])), "{name} has a textured mesh");
+        assert!(!meshes.is_empty(), "{name} draws meshes");
+        for mesh in meshes {
+            assert!(matches!(mesh.vertices, MeshVertices::Deferred(_)), "{name}: a mesh left to the CPU");
+        }
     }
 }

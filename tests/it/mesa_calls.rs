@@ -76,6 +76,42 @@ fn enum_value(token: &str) -> u32 {
         ("GL_EXP", GL_EXP),
         ("GL_EXP2", GL_EXP2),
         ("GL_ALPHA_TEST", GL_ALPHA_TEST),
+        ("GL_CURRENT_COLOR", GL_CURRENT_COLOR),
+        ("GL_CURRENT_NORMAL", GL_CURRENT_NORMAL),
+        ("GL_CURRENT_TEXTURE_COORDS", GL_CURRENT_TEXTURE_COORDS),
+        ("GL_CURRENT_RASTER_POSITION", GL_CURRENT_RASTER_POSITION),
+        ("GL_CURRENT_RASTER_POSITION_VALID", GL_CURRENT_RASTER_POSITION_VALID),
+        ("GL_CURRENT_RASTER_COLOR", GL_CURRENT_RASTER_COLOR),
+        ("GL_CURRENT_RASTER_TEXTURE_COORDS", GL_CURRENT_RASTER_TEXTURE_COORDS),
+        ("GL_CURRENT_RASTER_DISTANCE", GL_CURRENT_RASTER_DISTANCE),
+        ("GL_COLOR_INDEX", GL_COLOR_INDEX),
+        ("GL_STENCIL_INDEX", GL_STENCIL_INDEX),
+        ("GL_DEPTH_COMPONENT", GL_DEPTH_COMPONENT),
+        ("GL_RED", GL_RED),
+        ("GL_GREEN", GL_GREEN),
+        ("GL_BLUE", GL_BLUE),
+        ("GL_BGR", GL_BGR),
+        ("GL_BGRA", GL_BGRA),
+        ("GL_BITMAP", GL_BITMAP),
+        ("GL_UNSIGNED_SHORT_5_6_5", GL_UNSIGNED_SHORT_5_6_5),
+        ("GL_UNSIGNED_SHORT_4_4_4_4", GL_UNSIGNED_SHORT_4_4_4_4),
+        ("GL_UNSIGNED_BYTE_3_3_2", GL_UNSIGNED_BYTE_3_3_2),
+        ("GL_UNSIGNED_INT_8_8_8_8_REV", GL_UNSIGNED_INT_8_8_8_8_REV),
+        ("GL_S", GL_S),
+        ("GL_T", GL_T),
+        ("GL_R", GL_R),
+        ("GL_Q", GL_Q),
+        ("GL_TEXTURE_GEN_MODE", GL_TEXTURE_GEN_MODE),
+        ("GL_OBJECT_PLANE", GL_OBJECT_PLANE),
+        ("GL_EYE_PLANE", GL_EYE_PLANE),
+        ("GL_OBJECT_LINEAR", GL_OBJECT_LINEAR),
+        ("GL_EYE_LINEAR", GL_EYE_LINEAR),
+        ("GL_SPHERE_MAP", GL_SPHERE_MAP),
+        ("GL_NORMAL_MAP", GL_NORMAL_MAP),
+        ("GL_REFLECTION_MAP", GL_REFLECTION_MAP),
+        ("GL_TEXTURE_GEN_S", GL_TEXTURE_GEN_S),
+        ("GL_TEXTURE_GEN_T", GL_TEXTURE_GEN_T),
+        ("GL_TEXTURE_GEN_Q", GL_TEXTURE_GEN_Q),
         ("GL_ENABLE_BIT", GL_ENABLE_BIT),
         ("GL_EVAL_BIT", GL_EVAL_BIT),
         ("GL_CURRENT_BIT", GL_CURRENT_BIT),
@@ -268,6 +304,8 @@ impl Runner {
         }
         let mut a = Args { tokens, at: 1 };
         let mut values: Vec<String> = Vec::new();
+        // The feedback token a glBitmap or glDrawPixels writes if it succeeds.
+        let mut raster_token = None;
         let gl = &mut self.gl;
         match cmd {
             "map1f" => {
@@ -371,6 +409,39 @@ impl Runner {
             "alpha_func" => gl.alpha_func(a.e(), a.f()),
             "fogi" => gl.fogi(a.e(), a.e() as i32),
             "fogf" => gl.fogf(a.e(), a.f()),
+            "translatef" => gl.translatef(a.f(), a.f(), a.f()),
+            "scalef" => gl.scalef(a.f(), a.f(), a.f()),
+            "rotatef" => gl.rotatef(a.f(), a.f(), a.f(), a.f()),
+            "raster_pos2f" => gl.raster_pos2f(a.f(), a.f()),
+            "raster_pos3f" => gl.raster_pos3f(a.f(), a.f(), a.f()),
+            "raster_pos4f" => gl.raster_pos4f(a.f(), a.f(), a.f(), a.f()),
+            "bitmap" => {
+                let (w, h, xo, yo, xm, ym) = (a.int(), a.int(), a.f(), a.f(), a.f(), a.f());
+                let bytes: Vec<u8> = a.floats().iter().map(|&b| b as u8).collect();
+                raster_token = raster_feedback(gl, "bitmap");
+                gl.bitmap(w, h, xo, yo, xm, ym, &bytes);
+            }
+            "draw_pixels" => {
+                let (w, h, format, type_) = (a.int(), a.int(), a.e(), a.e());
+                let values = a.floats();
+                let bytes: Vec<u8> = if type_ == GL_FLOAT {
+                    bytemuck::cast_slice(&values).to_vec()
+                } else {
+                    values.iter().map(|&b| b as u8).collect()
+                };
+                raster_token = raster_feedback(gl, "draw_pixel");
+                gl.draw_pixels(w, h, format, type_, &bytes);
+            }
+            "typed" => typed_call(gl, &mut a),
+            "tex_geni" => gl.tex_geni(a.e(), a.e(), a.e() as i32),
+            "tex_genfv" => gl.tex_genfv(a.e(), a.e(), &a.floats()),
+            "get_tex_genfv" => {
+                let (coord, pname) = (a.e(), a.e());
+                let mut v = [0.0f32; 4];
+                gl.get_tex_genfv(coord, pname, &mut v);
+                let count = if pname == GL_TEXTURE_GEN_MODE { 1 } else { 4 };
+                values = v[..count].iter().map(|x| x.to_string()).collect();
+            }
             "line_stipple" => gl.line_stipple(a.int(), a.int() as u16),
             "polygon_offset" => gl.polygon_offset(a.f(), a.f()),
             "clip_plane" => gl.clip_plane(a.e(), &a.array()),
@@ -380,9 +451,6 @@ impl Runner {
                 gl.get_clip_plane(a.e(), &mut eq);
                 values.extend(eq.iter().map(|c| c.to_string()));
             }
-            "translatef" => gl.translatef(a.f(), a.f(), a.f()),
-            "rotatef" => gl.rotatef(a.f(), a.f(), a.f(), a.f()),
-            "scalef" => gl.scalef(a.f(), a.f(), a.f()),
             "load_identity" => gl.load_identity(),
             "materialf" => gl.material_f(a.e(), a.e(), a.f()),
             "push_attrib" => gl.push_attrib(a.e()),
@@ -406,7 +474,13 @@ impl Runner {
             line.push(' ');
             line.push_str(&v);
         }
+        let succeeded = err == "0x0000";
         self.out.push(line);
+        if let (Some(token), true) = (raster_token, succeeded) {
+            // Feedback mode reports the raster position instead of the pixels drawn.
+            self.out.push(token);
+            self.collected = self.gl.frame().expanded().primitives.len();
+        }
         if cmd == "new_list" || cmd == "end_list" {
             // Mesa buffers what GL_COMPILE_AND_EXECUTE draws until the list ends (its vertex
             // lists run when complete), so feedback shows it after `end_list`.
@@ -466,6 +540,67 @@ impl Runner {
     }
 }
 
+/// `typed NAME values`: a type variant of a per-vertex call through its v form, the values
+/// cast to the call's type as C casts them.
+fn typed_call(gl: &mut Gl, a: &mut Args) {
+    let name = a.next().to_owned();
+    let (base, ty) = name.trim_end_matches('v').split_at(name.trim_end_matches('v').len() - 1);
+    // Two-letter types (ub, us, ui) end in b, s or i too.
+    let (base, ty) = match base.strip_suffix('u') {
+        Some(b) => (b.to_owned(), format!("u{ty}")),
+        None => (base.to_owned(), ty.to_owned()),
+    };
+    let n = base.chars().last().and_then(|c| c.to_digit(10)).expect("a component count") as usize;
+    let values: Vec<f64> = (0..n).map(|_| a.d()).collect();
+    macro_rules! call {
+        ($t:ty, $($fn:literal => $method:ident),+) => {{
+            let v: Vec<$t> = values.iter().map(|&x| x as $t).collect();
+            match base.as_str() {
+                $($fn => gl.$method(&v),)+
+                other => panic!("typed {other}{ty}v not emulated"),
+            }
+        }};
+    }
+    match ty.as_str() {
+        "b" => call!(i8, "glColor3" => color3bv, "glColor4" => color4bv, "glNormal3" => normal3bv),
+        "ub" => call!(u8, "glColor3" => color3ubv, "glColor4" => color4ubv),
+        "s" => call!(i16, "glColor3" => color3sv, "glColor4" => color4sv, "glNormal3" => normal3sv,
+            "glVertex2" => vertex2sv, "glVertex3" => vertex3sv, "glVertex4" => vertex4sv,
+            "glTexCoord1" => tex_coord1sv, "glTexCoord2" => tex_coord2sv, "glTexCoord3" => tex_coord3sv,
+            "glTexCoord4" => tex_coord4sv, "glRasterPos2" => raster_pos2sv, "glRasterPos3" => raster_pos3sv,
+            "glRasterPos4" => raster_pos4sv),
+        "us" => call!(u16, "glColor3" => color3usv, "glColor4" => color4usv),
+        "i" => call!(i32, "glColor3" => color3iv, "glColor4" => color4iv, "glNormal3" => normal3iv,
+            "glVertex2" => vertex2iv, "glVertex3" => vertex3iv, "glVertex4" => vertex4iv,
+            "glTexCoord1" => tex_coord1iv, "glTexCoord2" => tex_coord2iv, "glTexCoord3" => tex_coord3iv,
+            "glTexCoord4" => tex_coord4iv, "glRasterPos3" => raster_pos3iv, "glRasterPos4" => raster_pos4iv),
+        "ui" => call!(u32, "glColor3" => color3uiv, "glColor4" => color4uiv),
+        "f" => call!(f32, "glTexCoord1" => tex_coord1fv, "glTexCoord2" => tex_coord2fv,
+            "glTexCoord3" => tex_coord3fv, "glTexCoord4" => tex_coord4fv),
+        _ => call!(f64, "glColor3" => color3dv, "glColor4" => color4dv, "glNormal3" => normal3dv,
+            "glVertex2" => vertex2dv, "glVertex3" => vertex3dv, "glVertex4" => vertex4dv,
+            "glTexCoord1" => tex_coord1dv, "glTexCoord2" => tex_coord2dv, "glTexCoord3" => tex_coord3dv,
+            "glTexCoord4" => tex_coord4dv, "glRasterPos4" => raster_pos4dv),
+    }
+}
+
+/// What feedback mode writes for a glBitmap or glDrawPixels at the current raster position
+/// (window coordinates, clip w, the raster colour and texture coordinates), if it is valid.
+fn raster_feedback(gl: &mut Gl, token: &str) -> Option<String> {
+    let mut valid = [0];
+    gl.get_integerv(GL_CURRENT_RASTER_POSITION_VALID, &mut valid);
+    if valid[0] == 0 {
+        return None;
+    }
+    let mut values = Vec::new();
+    for pname in [GL_CURRENT_RASTER_POSITION, GL_CURRENT_RASTER_COLOR, GL_CURRENT_RASTER_TEXTURE_COORDS] {
+        let mut v = [0.0f32; 4];
+        gl.get_floatv(pname, &mut v);
+        values.extend(v.map(|x| x.to_string()));
+    }
+    Some(format!("fb {token} {}", values.join(" ")))
+}
+
 fn fresh_gl() -> Gl {
     let mut gl = Gl::new(64, 64);
     gl.viewport(0, 0, 2, 2);
@@ -510,7 +645,9 @@ fn get_map(gl: &mut Gl, cmd: &str, target: u32, query: u32) -> Vec<String> {
 fn get_state(gl: &mut Gl, cmd: &str, pname: u32) -> Vec<String> {
     let count = match pname {
         GL_MAP1_GRID_DOMAIN | GL_MAP2_GRID_SEGMENTS => 2,
-        GL_MAP2_GRID_DOMAIN => 4,
+        GL_MAP2_GRID_DOMAIN | GL_CURRENT_RASTER_POSITION | GL_CURRENT_RASTER_COLOR => 4,
+        GL_CURRENT_RASTER_TEXTURE_COORDS | GL_CURRENT_COLOR | GL_CURRENT_TEXTURE_COORDS => 4,
+        GL_CURRENT_NORMAL => 3,
         _ => 1,
     };
     if cmd == "get_integerv" {

@@ -9,21 +9,41 @@ fn validate(source: &str) -> Result<(), String> {
     validator.validate(&module).map(|_| ()).map_err(|e| e.emit_to_string(source))
 }
 
+/// The sources the crate makes its shader modules from (some are two files joined).
+#[cfg(feature = "gpu")]
+fn embedded() -> [(&'static str, &'static str); 3] {
+    [
+        ("raster.wgsl + fragment.wgsl", gleval::testing::RASTER_WGSL),
+        ("mesh_raster.wgsl + fragment.wgsl", gleval::testing::MESH_RASTER_WGSL),
+        ("eval_mesh.wgsl", gleval::testing::EVAL_MESH_WGSL),
+    ]
+}
+
+#[cfg(feature = "gpu")]
 #[test]
 fn every_shader_validates_with_naga() {
+    for (name, source) in embedded() {
+        if let Err(e) = validate(source) {
+            panic!("{name} does not validate:\n{e}");
+        }
+    }
+}
+
+/// Every file under `shaders/` is part of a module the crate builds.
+#[cfg(feature = "gpu")]
+#[test]
+fn every_shader_file_is_used() {
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("shaders");
     let mut checked = 0;
     for entry in std::fs::read_dir(&dir).expect("shaders/ exists") {
         let path = entry.expect("entry").path();
         if path.extension().is_some_and(|e| e == "wgsl") {
             let source = std::fs::read_to_string(&path).expect("readable");
-            if let Err(e) = validate(&source) {
-                panic!("{} does not validate:\n{e}", path.display());
-            }
+            assert!(embedded().iter().any(|(_, s)| s.contains(&source)), "{} is not in any module", path.display());
             checked += 1;
         }
     }
-    assert!(checked > 0, "no shaders found in {}", dir.display());
+    assert!(checked >= 4, "only {checked} shaders found in {}", dir.display());
 }
 
 #[test]
@@ -38,15 +58,12 @@ fn naga_rejects_a_broken_shader() {
 /// the Rust twins: `src/gpu/layout.rs`.)
 #[cfg(feature = "gpu")]
 #[test]
-fn embedded_shader_is_the_file() {
-    let file = std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("shaders/raster.wgsl")).unwrap();
-    assert_eq!(gleval::testing::RASTER_WGSL, file);
-}
-
-#[cfg(feature = "gpu")]
-#[test]
-fn embedded_mesh_shaders_are_the_files() {
+fn embedded_shaders_are_the_files() {
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("shaders");
-    assert_eq!(gleval::testing::EVAL_MESH_WGSL, std::fs::read_to_string(dir.join("eval_mesh.wgsl")).unwrap());
-    assert_eq!(gleval::testing::MESH_RASTER_WGSL, std::fs::read_to_string(dir.join("mesh_raster.wgsl")).unwrap());
+    let read = |name: &str| std::fs::read_to_string(dir.join(name)).unwrap();
+    let fragment = read("fragment.wgsl");
+    assert_eq!(gleval::testing::FRAGMENT_WGSL, fragment);
+    assert_eq!(gleval::testing::RASTER_WGSL, read("raster.wgsl") + &fragment);
+    assert_eq!(gleval::testing::EVAL_MESH_WGSL, read("eval_mesh.wgsl"));
+    assert_eq!(gleval::testing::MESH_RASTER_WGSL, read("mesh_raster.wgsl") + &fragment);
 }

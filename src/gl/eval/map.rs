@@ -210,13 +210,15 @@ impl Gl {
             return self.set_error(GL_INVALID_VALUE);
         }
         let order = order as usize;
-        let packed = (0..order)
-            .flat_map(|i| (0..k).map(move |c| i * stride as usize + c))
-            .map(|idx| points[idx].to_gl_float())
-            .collect();
         let slot = MapTarget::from_enum(target).map_or(Slot::Vertex3, |t| t.slot);
-        self.eval.map1[slot as usize] =
-            Map { uorder: order, vorder: 1, u1, u2, v1: 0.0, v2: 1.0, du: 1.0 / (u2 - u1), dv: 1.0, points: packed };
+        let map = &mut self.eval.map1[slot as usize];
+        // The old map's storage is reused: programs drawing many curves redefine the map each time.
+        let mut packed = std::mem::take(&mut map.points);
+        packed.clear();
+        for i in 0..order {
+            packed.extend(points[i * stride as usize..][..k].iter().map(|p| p.to_gl_float()));
+        }
+        *map = Map { uorder: order, vorder: 1, u1, u2, v1: 0.0, v2: 1.0, du: 1.0 / (u2 - u1), dv: 1.0, points: packed };
     }
 
     /// Mesa's checks for `glMap1`, in order; returns k when all pass.
@@ -266,14 +268,17 @@ impl Gl {
         }
         let (uo, vo) = (a.uorder as usize, a.vorder as usize);
         let (us, vs) = (a.ustride as usize, a.vstride as usize);
-        let mut packed = Vec::with_capacity(uo * vo * k);
+        let slot = MapTarget::from_enum(target).map_or(Slot::Vertex3, |t| t.slot);
+        let map = &mut self.eval.map2[slot as usize];
+        // The old map's storage is reused: programs drawing many patches redefine the map each time.
+        let mut packed = std::mem::take(&mut map.points);
+        packed.clear();
         for i in 0..uo {
             for j in 0..vo {
                 packed.extend(points[i * us + j * vs..][..k].iter().map(|p| p.to_gl_float()));
             }
         }
-        let slot = MapTarget::from_enum(target).map_or(Slot::Vertex3, |t| t.slot);
-        self.eval.map2[slot as usize] = Map {
+        *map = Map {
             uorder: uo,
             vorder: vo,
             u1: a.u.0,

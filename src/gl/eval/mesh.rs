@@ -94,6 +94,11 @@ impl Gl {
         if !self.reserve_vertices(issued) {
             return;
         }
+        if nu == 0 || nv == 0 {
+            // GL issues only empty strips (j2 < j1 with a huge i range, say): nothing is drawn,
+            // and a mesh of 2³⁰ empty columns would cost gigabytes to assemble.
+            return;
+        }
         let (gu, gv) = self.eval.grid2;
         let us = grid_params(&gu, i1, i2);
         let vs = grid_params(&gv, j1, j2);
@@ -202,10 +207,10 @@ impl Gl {
     /// filled polygons (both faces `GL_FILL`), one-pixel lines and one-pixel points. GL's wide
     /// lines, large points and polygon-mode edges are built on the CPU, so such meshes are too.
     pub(crate) fn gpu_draws(&self, mode: MeshMode) -> bool {
-        // Textures, blending, fog and the alpha test are the frame rasteriser's, which draws
-        // the CPU's vertices.
-        let fragment_ops = [GL_TEXTURE_2D, GL_TEXTURE_1D, GL_BLEND, GL_FOG, GL_ALPHA_TEST];
-        if fragment_ops.iter().any(|&cap| self.capability(cap)) {
+        // Generated texture coordinates are computed with the CPU's vertex stage.
+        let texturing = self.capability(GL_TEXTURE_2D) || self.capability(GL_TEXTURE_1D);
+        let generating = [GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q];
+        if texturing && generating.iter().any(|&cap| self.capability(cap)) {
             return false;
         }
         // So are clip planes, polygon offset, stipple and smoothing, done by the CPU assembler.

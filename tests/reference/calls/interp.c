@@ -37,6 +37,15 @@ static const struct enum_name enums[] = {
     E(GL_SRC_ALPHA), E(GL_ONE_MINUS_SRC_ALPHA), E(GL_ONE), E(GL_ZERO), E(GL_SRC_ALPHA_SATURATE),
     E(GL_GREATER), E(GL_ALWAYS), E(GL_NEVER), E(GL_FOG_MODE), E(GL_FOG_DENSITY), E(GL_FOG_START),
     E(GL_FOG_END), E(GL_EXP), E(GL_EXP2), E(GL_ALPHA_TEST),
+    E(GL_CURRENT_COLOR), E(GL_CURRENT_NORMAL), E(GL_CURRENT_TEXTURE_COORDS),
+    E(GL_CURRENT_RASTER_POSITION), E(GL_CURRENT_RASTER_POSITION_VALID), E(GL_CURRENT_RASTER_COLOR),
+    E(GL_CURRENT_RASTER_TEXTURE_COORDS), E(GL_CURRENT_RASTER_DISTANCE), E(GL_COLOR_INDEX), E(GL_STENCIL_INDEX),
+    E(GL_DEPTH_COMPONENT), E(GL_RED), E(GL_GREEN), E(GL_BLUE), E(GL_BGR), E(GL_BGRA), E(GL_BITMAP),
+    E(GL_UNSIGNED_SHORT_5_6_5), E(GL_UNSIGNED_SHORT_4_4_4_4), E(GL_UNSIGNED_BYTE_3_3_2),
+    E(GL_UNSIGNED_INT_8_8_8_8_REV), E(GL_UNPACK_LSB_FIRST),
+    E(GL_S), E(GL_T), E(GL_R), E(GL_Q), E(GL_TEXTURE_GEN_MODE), E(GL_OBJECT_PLANE), E(GL_EYE_PLANE),
+    E(GL_OBJECT_LINEAR), E(GL_EYE_LINEAR), E(GL_SPHERE_MAP), E(GL_NORMAL_MAP), E(GL_REFLECTION_MAP),
+    E(GL_TEXTURE_GEN_S), E(GL_TEXTURE_GEN_T), E(GL_TEXTURE_GEN_Q),
     E(GL_ENABLE_BIT), E(GL_EVAL_BIT), E(GL_CURRENT_BIT), E(GL_LIGHTING_BIT), E(GL_TEXTURE_BIT),
     E(GL_ALL_ATTRIB_BITS), E(GL_CULL_FACE), E(GL_DEPTH_TEST), E(GL_BLEND), E(GL_FOG),
     E(GL_COMPILE), E(GL_COMPILE_AND_EXECUTE), E(GL_LIST_BASE), E(GL_LIST_INDEX), E(GL_LIST_MODE),
@@ -286,8 +295,90 @@ static int get_count(GLenum pname)
     case GL_MAP1_GRID_DOMAIN: return 2;
     case GL_MAP2_GRID_DOMAIN: return 4;
     case GL_MAP2_GRID_SEGMENTS: return 2;
+    case GL_CURRENT_RASTER_POSITION: case GL_CURRENT_RASTER_COLOR:
+    case GL_CURRENT_RASTER_TEXTURE_COORDS: return 4;
+    case GL_CURRENT_COLOR: case GL_CURRENT_TEXTURE_COORDS: return 4;
+    case GL_CURRENT_NORMAL: return 3;
     default: return 1;
     }
+}
+
+/* ---------------------------------------------------------------- typed calls */
+/* The type variants of the per-vertex calls, through their v forms: `typed NAME v...`. */
+struct typed_fn { const char *name; int n; const char *type; void (*fn)(const void *); };
+static const struct typed_fn typed_fns[] = {
+    { "glColor3bv", 3, "b", (void (*)(const void *))glColor3bv },
+    { "glColor3sv", 3, "s", (void (*)(const void *))glColor3sv },
+    { "glColor3iv", 3, "i", (void (*)(const void *))glColor3iv },
+    { "glColor3dv", 3, "d", (void (*)(const void *))glColor3dv },
+    { "glColor3ubv", 3, "ub", (void (*)(const void *))glColor3ubv },
+    { "glColor3usv", 3, "us", (void (*)(const void *))glColor3usv },
+    { "glColor3uiv", 3, "ui", (void (*)(const void *))glColor3uiv },
+    { "glColor4bv", 4, "b", (void (*)(const void *))glColor4bv },
+    { "glColor4sv", 4, "s", (void (*)(const void *))glColor4sv },
+    { "glColor4iv", 4, "i", (void (*)(const void *))glColor4iv },
+    { "glColor4dv", 4, "d", (void (*)(const void *))glColor4dv },
+    { "glColor4ubv", 4, "ub", (void (*)(const void *))glColor4ubv },
+    { "glColor4usv", 4, "us", (void (*)(const void *))glColor4usv },
+    { "glColor4uiv", 4, "ui", (void (*)(const void *))glColor4uiv },
+    { "glNormal3bv", 3, "b", (void (*)(const void *))glNormal3bv },
+    { "glNormal3sv", 3, "s", (void (*)(const void *))glNormal3sv },
+    { "glNormal3iv", 3, "i", (void (*)(const void *))glNormal3iv },
+    { "glNormal3dv", 3, "d", (void (*)(const void *))glNormal3dv },
+    { "glVertex2dv", 2, "d", (void (*)(const void *))glVertex2dv },
+    { "glVertex2iv", 2, "i", (void (*)(const void *))glVertex2iv },
+    { "glVertex2sv", 2, "s", (void (*)(const void *))glVertex2sv },
+    { "glVertex3dv", 3, "d", (void (*)(const void *))glVertex3dv },
+    { "glVertex3iv", 3, "i", (void (*)(const void *))glVertex3iv },
+    { "glVertex3sv", 3, "s", (void (*)(const void *))glVertex3sv },
+    { "glVertex4dv", 4, "d", (void (*)(const void *))glVertex4dv },
+    { "glVertex4iv", 4, "i", (void (*)(const void *))glVertex4iv },
+    { "glVertex4sv", 4, "s", (void (*)(const void *))glVertex4sv },
+    { "glTexCoord1fv", 1, "f", (void (*)(const void *))glTexCoord1fv },
+    { "glTexCoord1dv", 1, "d", (void (*)(const void *))glTexCoord1dv },
+    { "glTexCoord1iv", 1, "i", (void (*)(const void *))glTexCoord1iv },
+    { "glTexCoord1sv", 1, "s", (void (*)(const void *))glTexCoord1sv },
+    { "glTexCoord2fv", 2, "f", (void (*)(const void *))glTexCoord2fv },
+    { "glTexCoord2dv", 2, "d", (void (*)(const void *))glTexCoord2dv },
+    { "glTexCoord2iv", 2, "i", (void (*)(const void *))glTexCoord2iv },
+    { "glTexCoord2sv", 2, "s", (void (*)(const void *))glTexCoord2sv },
+    { "glTexCoord3fv", 3, "f", (void (*)(const void *))glTexCoord3fv },
+    { "glTexCoord3dv", 3, "d", (void (*)(const void *))glTexCoord3dv },
+    { "glTexCoord3iv", 3, "i", (void (*)(const void *))glTexCoord3iv },
+    { "glTexCoord3sv", 3, "s", (void (*)(const void *))glTexCoord3sv },
+    { "glTexCoord4fv", 4, "f", (void (*)(const void *))glTexCoord4fv },
+    { "glTexCoord4dv", 4, "d", (void (*)(const void *))glTexCoord4dv },
+    { "glTexCoord4iv", 4, "i", (void (*)(const void *))glTexCoord4iv },
+    { "glTexCoord4sv", 4, "s", (void (*)(const void *))glTexCoord4sv },
+    { "glRasterPos2sv", 2, "s", (void (*)(const void *))glRasterPos2sv },
+    { "glRasterPos3iv", 3, "i", (void (*)(const void *))glRasterPos3iv },
+    { "glRasterPos3sv", 3, "s", (void (*)(const void *))glRasterPos3sv },
+    { "glRasterPos4dv", 4, "d", (void (*)(const void *))glRasterPos4dv },
+    { "glRasterPos4iv", 4, "i", (void (*)(const void *))glRasterPos4iv },
+    { "glRasterPos4sv", 4, "s", (void (*)(const void *))glRasterPos4sv },
+    { NULL, 0, NULL, NULL }
+};
+
+static void run_typed(void)
+{
+    const char *name = next();
+    const struct typed_fn *t = typed_fns;
+    while (t->name && strcmp(t->name, name)) t++;
+    if (!t->name) die("unknown typed call", name);
+    union { GLbyte b[4]; GLubyte ub[4]; GLshort s[4]; GLushort us[4]; GLint i[4]; GLuint ui[4];
+            GLfloat f[4]; GLdouble d[4]; } v;
+    for (int k = 0; k < t->n; k++) {
+        double x = arg_double();
+        if (!strcmp(t->type, "b")) v.b[k] = (GLbyte)x;
+        else if (!strcmp(t->type, "ub")) v.ub[k] = (GLubyte)x;
+        else if (!strcmp(t->type, "s")) v.s[k] = (GLshort)x;
+        else if (!strcmp(t->type, "us")) v.us[k] = (GLushort)x;
+        else if (!strcmp(t->type, "i")) v.i[k] = (GLint)x;
+        else if (!strcmp(t->type, "ui")) v.ui[k] = (GLuint)x;
+        else if (!strcmp(t->type, "f")) v.f[k] = (GLfloat)x;
+        else v.d[k] = x;
+    }
+    t->fn(&v);
 }
 
 /* ---------------------------------------------------------------- calls */
@@ -474,6 +565,45 @@ static void run_call(const char *c)
     } else if (!strcmp(c, "fogi")) {
         GLenum pname = arg_enum();
         glFogi(pname, (GLint)arg_enum());
+    } else if (!strncmp(c, "raster_pos", 10) && strlen(c) == 12 && c[11] == 'f') {
+        GLfloat v[4] = { 0, 0, 0, 1 };
+        int n = c[10] - '0';
+        for (int i = 0; i < n; i++) v[i] = arg_float();
+        if (n == 2) glRasterPos2f(v[0], v[1]);
+        else if (n == 3) glRasterPos3f(v[0], v[1], v[2]);
+        else glRasterPos4f(v[0], v[1], v[2], v[3]);
+    } else if (!strcmp(c, "bitmap")) {
+        GLsizei w = arg_int(), h = arg_int();
+        GLfloat xo = arg_float(), yo = arg_float(), xm = arg_float(), ym = arg_float();
+        float *f = arg_array(0, 0, &given);
+        GLubyte bytes[MAX_TOK];
+        for (long i = 0; i < given; i++) bytes[i] = (GLubyte)f[i];
+        glBitmap(w, h, xo, yo, xm, ym, f ? bytes : NULL);
+        free(f);
+    } else if (!strcmp(c, "draw_pixels")) {
+        GLsizei w = arg_int(), h = arg_int();
+        GLenum format = arg_enum(), type = arg_enum();
+        float *f = arg_array(0, 0, &given);
+        GLubyte bytes[MAX_TOK];
+        for (long i = 0; i < given; i++) bytes[i] = (GLubyte)f[i];
+        glDrawPixels(w, h, format, type, f ? (type == GL_FLOAT ? (const GLvoid *)f : (const GLvoid *)bytes) : NULL);
+        free(f);
+    } else if (!strcmp(c, "typed")) {
+        run_typed();
+    } else if (!strcmp(c, "tex_geni")) {
+        GLenum coord = arg_enum(), pname = arg_enum();
+        glTexGeni(coord, pname, (GLint)arg_enum());
+    } else if (!strcmp(c, "tex_genfv")) {
+        GLenum coord = arg_enum(), pname = arg_enum();
+        long given;
+        float *f = arg_array(0, 0, &given);
+        glTexGenfv(coord, pname, f);
+        free(f);
+    } else if (!strcmp(c, "get_tex_genfv")) {
+        GLenum coord = arg_enum(), pname = arg_enum();
+        GLfloat fv[4] = { 0 };
+        glGetTexGenfv(coord, pname, fv);
+        for (int i = 0; i < (pname == GL_TEXTURE_GEN_MODE ? 1 : 4); i++) val(" %.9g", fv[i]);
     } else if (!strcmp(c, "fogf")) {
         GLenum pname = arg_enum();
         glFogf(pname, arg_float());
@@ -533,12 +663,14 @@ static void run_call(const char *c)
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
         glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, texel);
         glEnable(GL_TEXTURE_2D);
+#ifndef GLEVAL_GL_H /* gleval's C ABI (capi/) has no glTexGen: there these cases differ */
         glTexGeni(GL_S, GL_TEXTURE_GEN_MODE, GL_NORMAL_MAP);
         glTexGeni(GL_T, GL_TEXTURE_GEN_MODE, GL_NORMAL_MAP);
         glTexGeni(GL_R, GL_TEXTURE_GEN_MODE, GL_NORMAL_MAP);
         glEnable(GL_TEXTURE_GEN_S);
         glEnable(GL_TEXTURE_GEN_T);
         glEnable(GL_TEXTURE_GEN_R);
+#endif
     } else {
         die("unknown call", c);
     }

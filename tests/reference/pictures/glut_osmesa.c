@@ -9,7 +9,9 @@
 #include <zlib.h>
 #include "glut_osmesa.h"
 #include "glut_fonts.h"
+#include "glut_strokes.h"
 #include "glut_teapot.h"
+#include "glut_shapes.h"
 
 static int width = 300, height = 300, frames = 0;
 static const char *png_path = "out.png";
@@ -81,6 +83,68 @@ int glutBitmapLength(void *font, const unsigned char *string) {
         if (line > longest) longest = line;
     }
     return longest;
+}
+
+/* Stroke fonts, as freeglut draws them: a GL_LINE_STRIP of glVertex2f a pen stroke, then
+   glTranslatef by the advance; glyphs from glut_strokes.h (tools/fonts/gen_stroke.py). */
+static const GlutStrokeGlyph *stroke_glyph(void *font, int c, const GlutStrokeFont **f) {
+    *f = (size_t)font == 0 ? &ROMAN : &MONO_ROMAN;
+    return c >= 0 && c < 128 && (*f)->glyphs[c].present ? &(*f)->glyphs[c] : NULL;
+}
+
+void glutStrokeCharacter(void *font, int character) {
+    const GlutStrokeFont *f;
+    const GlutStrokeGlyph *g = stroke_glyph(font, character, &f);
+    if (!g) return;
+    for (int s = g->first; s < g->first + g->count; s++) {
+        glBegin(GL_LINE_STRIP);
+        for (int k = f->strips[s][0]; k < f->strips[s][0] + f->strips[s][1]; k++)
+            glVertex2f(f->points[k][0], f->points[k][1]);
+        glEnd();
+    }
+    glTranslatef(g->advance, 0.0f, 0.0f);
+}
+
+/* freeglut's glutStrokeString: a newline goes back to the line's start and down by the height. */
+void glutStrokeString(void *font, const unsigned char *string) {
+    const GlutStrokeFont *f;
+    float line = 0.0f;
+    stroke_glyph(font, 0, &f);
+    for (; string && *string; string++) {
+        if (*string == '\n') {
+            glTranslatef(-line, -f->height, 0.0f);
+            line = 0.0f;
+        } else if (stroke_glyph(font, *string, &f)) {
+            glutStrokeCharacter(font, *string);
+            line += f->glyphs[*string].advance;
+        }
+    }
+}
+
+float glutStrokeWidthf(void *font, int character) {
+    const GlutStrokeFont *f;
+    const GlutStrokeGlyph *g = stroke_glyph(font, character, &f);
+    return g ? g->advance : 0.0f;
+}
+
+int glutStrokeWidth(void *font, int character) { return (int)(glutStrokeWidthf(font, character) + 0.5f); }
+
+float glutStrokeLengthf(void *font, const unsigned char *string) {
+    float longest = 0.0f, line = 0.0f;
+    for (; *string; string++) {
+        if (*string == '\n') line = 0.0f;
+        else line += glutStrokeWidthf(font, *string);
+        if (line > longest) longest = line;
+    }
+    return longest;
+}
+
+int glutStrokeLength(void *font, const unsigned char *string) { return (int)(glutStrokeLengthf(font, string) + 0.5f); }
+
+float glutStrokeHeight(void *font) {
+    const GlutStrokeFont *f;
+    stroke_glyph(font, 0, &f);
+    return f->height;
 }
 
 int glutCreateWindow(const char *title) {

@@ -34,6 +34,25 @@ void glutMainLoop(void);
 void glutBitmapCharacter(void *font, int character);
 int glutBitmapWidth(void *font, int character);
 int glutBitmapLength(void *font, const unsigned char *string);
+/* Stroke fonts: freeglut's handle values; glyphs from glut_strokes.h (tools/fonts/gen_stroke.py). */
+#define GLUT_STROKE_ROMAN ((void *)0x0000)
+#define GLUT_STROKE_MONO_ROMAN ((void *)0x0001)
+void glutStrokeCharacter(void *font, int character);
+void glutStrokeString(void *font, const unsigned char *string);
+int glutStrokeWidth(void *font, int character);
+float glutStrokeWidthf(void *font, int character);
+int glutStrokeLength(void *font, const unsigned char *string);
+float glutStrokeLengthf(void *font, const unsigned char *string);
+float glutStrokeHeight(void *font);
 void glutSolidTeapot(double size);
 void glutWireTeapot(double size);
+/* The round solids and the cube, drawn as freeglut 3.4 draws them (glut_shapes.h). */
+void glutSolidSphere(double radius, int slices, int stacks);
+void glutWireSphere(double radius, int slices, int stacks);
+void glutSolidCube(double size);
+void glutWireCube(double size);
+void glutSolidCone(double base, double height, int slices, int stacks);
+void glutWireCone(double base, double height, int slices, int stacks);
+void glutSolidTorus(double inner, double outer, int sides, int rings);
+void glutWireTorus(double inner, double outer, int sides, int rings);
 #endif

@@ -1,0 +1,137 @@
+/* GL/glu.h for gleval: GLU's projections, mipmaps, error strings and NURBS interface.
+ *
+ * Written for gleval; the constants are GLU's (src/glu/consts.rs, checked against the
+ * system's GLU header by capi/tests/headers.sh) and the functions declared are exactly those
+ * libgleval_c implements. */
+#ifndef GLEVAL_GLU_H
+#define GLEVAL_GLU_H
+#define __glu_h__
+#include <GL/gl.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* A NURBS object (opaque) and GLU's callback type: each callback is cast to this and called
+   back with the arguments its `which` implies. */
+typedef struct GLUnurbs GLUnurbs;
+typedef GLUnurbs GLUnurbsObj;
+#ifdef __cplusplus
+typedef void (GLAPIENTRYP _GLUfuncptr)(void);
+#else
+typedef void (GLAPIENTRYP _GLUfuncptr)();
+#endif
+
+/* NURBS properties. */
+#define GLU_AUTO_LOAD_MATRIX 100200
+#define GLU_CULLING 100201
+#define GLU_PARAMETRIC_TOLERANCE 100202
+#define GLU_SAMPLING_TOLERANCE 100203
+#define GLU_DISPLAY_MODE 100204
+#define GLU_SAMPLING_METHOD 100205
+#define GLU_U_STEP 100206
+#define GLU_V_STEP 100207
+#define GLU_NURBS_MODE 100160
+/* Sampling methods. */
+#define GLU_OBJECT_PARAMETRIC_ERROR 100208
+#define GLU_OBJECT_PATH_LENGTH 100209
+#define GLU_PATH_LENGTH 100215
+#define GLU_PARAMETRIC_ERROR 100216
+#define GLU_DOMAIN_DISTANCE 100217
+/* Display modes. */
+#define GLU_FILL 100012
+#define GLU_OUTLINE_POLYGON 100240
+#define GLU_OUTLINE_PATCH 100241
+/* NURBS modes. */
+#define GLU_NURBS_TESSELLATOR 100161
+#define GLU_NURBS_RENDERER 100162
+/* Trim curve types. */
+#define GLU_MAP1_TRIM_2 100210
+#define GLU_MAP1_TRIM_3 100211
+/* Callbacks. */
+#define GLU_ERROR 100103
+#define GLU_NURBS_ERROR 100103
+#define GLU_NURBS_BEGIN 100164
+#define GLU_NURBS_VERTEX 100165
+#define GLU_NURBS_NORMAL 100166
+#define GLU_NURBS_COLOR 100167
+#define GLU_NURBS_TEXTURE_COORD 100168
+#define GLU_NURBS_END 100169
+#define GLU_NURBS_BEGIN_DATA 100170
+#define GLU_NURBS_VERTEX_DATA 100171
+#define GLU_NURBS_NORMAL_DATA 100172
+#define GLU_NURBS_COLOR_DATA 100173
+#define GLU_NURBS_TEXTURE_COORD_DATA 100174
+#define GLU_NURBS_END_DATA 100175
+/* Errors. */
+#define GLU_INVALID_ENUM 100900
+#define GLU_INVALID_VALUE 100901
+#define GLU_OUT_OF_MEMORY 100902
+#define GLU_INCOMPATIBLE_GL_VERSION 100903
+#define GLU_INVALID_OPERATION 100904
+#define GLU_NURBS_ERROR1 100251
+#define GLU_NURBS_ERROR2 100252
+#define GLU_NURBS_ERROR3 100253
+#define GLU_NURBS_ERROR4 100254
+#define GLU_NURBS_ERROR5 100255
+#define GLU_NURBS_ERROR6 100256
+#define GLU_NURBS_ERROR7 100257
+#define GLU_NURBS_ERROR8 100258
+#define GLU_NURBS_ERROR9 100259
+#define GLU_NURBS_ERROR10 100260
+#define GLU_NURBS_ERROR11 100261
+#define GLU_NURBS_ERROR12 100262
+#define GLU_NURBS_ERROR13 100263
+#define GLU_NURBS_ERROR14 100264
+#define GLU_NURBS_ERROR15 100265
+#define GLU_NURBS_ERROR16 100266
+#define GLU_NURBS_ERROR17 100267
+#define GLU_NURBS_ERROR18 100268
+#define GLU_NURBS_ERROR19 100269
+#define GLU_NURBS_ERROR20 100270
+#define GLU_NURBS_ERROR21 100271
+#define GLU_NURBS_ERROR22 100272
+#define GLU_NURBS_ERROR23 100273
+#define GLU_NURBS_ERROR24 100274
+#define GLU_NURBS_ERROR25 100275
+#define GLU_NURBS_ERROR26 100276
+#define GLU_NURBS_ERROR27 100277
+#define GLU_NURBS_ERROR28 100278
+#define GLU_NURBS_ERROR29 100279
+#define GLU_NURBS_ERROR30 100280
+#define GLU_NURBS_ERROR31 100281
+#define GLU_NURBS_ERROR32 100282
+#define GLU_NURBS_ERROR33 100283
+#define GLU_NURBS_ERROR34 100284
+#define GLU_NURBS_ERROR35 100285
+#define GLU_NURBS_ERROR36 100286
+#define GLU_NURBS_ERROR37 100287
+
+GLAPI void GLAPIENTRY gluOrtho2D(GLdouble left, GLdouble right, GLdouble bottom, GLdouble top);
+GLAPI void GLAPIENTRY gluPerspective(GLdouble fovy, GLdouble aspect, GLdouble zNear, GLdouble zFar);
+GLAPI void GLAPIENTRY gluLookAt(GLdouble eyeX, GLdouble eyeY, GLdouble eyeZ, GLdouble centerX, GLdouble centerY, GLdouble centerZ, GLdouble upX, GLdouble upY, GLdouble upZ);
+GLAPI GLint GLAPIENTRY gluBuild2DMipmaps(GLenum target, GLint internalFormat, GLsizei width, GLsizei height, GLenum format, GLenum type, const void *data);
+GLAPI const GLubyte *GLAPIENTRY gluErrorString(GLenum error);
+
+GLAPI GLUnurbs *GLAPIENTRY gluNewNurbsRenderer(void);
+GLAPI void GLAPIENTRY gluDeleteNurbsRenderer(GLUnurbs *nurb);
+GLAPI void GLAPIENTRY gluNurbsProperty(GLUnurbs *nurb, GLenum property, GLfloat value);
+GLAPI void GLAPIENTRY gluGetNurbsProperty(GLUnurbs *nurb, GLenum property, GLfloat *data);
+GLAPI void GLAPIENTRY gluLoadSamplingMatrices(GLUnurbs *nurb, const GLfloat *model, const GLfloat *perspective, const GLint *view);
+GLAPI void GLAPIENTRY gluNurbsCallback(GLUnurbs *nurb, GLenum which, _GLUfuncptr CallBackFunc);
+GLAPI void GLAPIENTRY gluNurbsCallbackData(GLUnurbs *nurb, GLvoid *userData);
+GLAPI void GLAPIENTRY gluNurbsCallbackDataEXT(GLUnurbs *nurb, GLvoid *userData);
+GLAPI void GLAPIENTRY gluBeginCurve(GLUnurbs *nurb);
+GLAPI void GLAPIENTRY gluEndCurve(GLUnurbs *nurb);
+GLAPI void GLAPIENTRY gluBeginSurface(GLUnurbs *nurb);
+GLAPI void GLAPIENTRY gluEndSurface(GLUnurbs *nurb);
+GLAPI void GLAPIENTRY gluBeginTrim(GLUnurbs *nurb);
+GLAPI void GLAPIENTRY gluEndTrim(GLUnurbs *nurb);
+GLAPI void GLAPIENTRY gluNurbsCurve(GLUnurbs *nurb, GLint knotCount, GLfloat *knots, GLint stride, GLfloat *control, GLint order, GLenum type);
+GLAPI void GLAPIENTRY gluNurbsSurface(GLUnurbs *nurb, GLint sKnotCount, GLfloat *sKnots, GLint tKnotCount, GLfloat *tKnots, GLint sStride, GLint tStride, GLfloat *control, GLint sOrder, GLint tOrder, GLenum type);
+GLAPI void GLAPIENTRY gluPwlCurve(GLUnurbs *nurb, GLint count, GLfloat *data, GLint stride, GLenum type);
+
+#ifdef __cplusplus
+}
+#endif
+#endif /* GLEVAL_GLU_H */

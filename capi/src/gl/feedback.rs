@@ -1,0 +1,48 @@
+//! Feedback mode: `glFeedbackBuffer` and `glRenderMode`.
+//!
+//! `Gl` keeps the values; the C buffer is this thread's (GL's context is too) and receives
+//! them when `glRenderMode` leaves feedback mode.
+
+use crate::context::with_gl;
+use gleval::gl::types::*;
+use std::cell::Cell;
+
+thread_local! {
+    /// The buffer `glFeedbackBuffer` gave, and its size in values.
+    static BUFFER: Cell<(*mut GLfloat, usize)> = const { Cell::new((std::ptr::null_mut(), 0)) };
+}
+
+entry! {
+    /// `glFeedbackBuffer`: `Gl::feedback_buffer`. C's NULL with a positive size is
+    /// `GL_INVALID_VALUE` in GL, as a negative size is: it is passed on as one.
+    unsafe fn glFeedbackBuffer(size: GLsizei, type_: GLenum, buffer: *mut GLfloat) {
+        let size = if buffer.is_null() && size > 0 { -1 } else { size };
+        with_gl(|gl| {
+            gl.feedback_buffer(size, type_);
+            let Ok(size) = usize::try_from(size) else { return };
+            if gl.feedback_buffer_spec() == (size, type_) {
+                BUFFER.with(|b| b.set((buffer, size)));
+            }
+        })
+    }
+}
+
+entry! {
+    /// `glRenderMode`: `Gl::render_mode`; leaving feedback mode writes the values into the
+    /// buffer given to `glFeedbackBuffer` (at most its size).
+    fn glRenderMode(mode: GLenum) -> GLint {
+        with_gl(|gl| {
+            let n = gl.render_mode(mode);
+            if n != 0 {
+                let (buffer, size) = BUFFER.with(Cell::get);
+                let values = gl.feedback_values();
+                let count = values.len().min(size);
+                if !buffer.is_null() {
+                    // SAFETY: glFeedbackBuffer's promise: `size` writable floats at `buffer`.
+                    unsafe { std::ptr::copy_nonoverlapping(values.as_ptr(), buffer, count) };
+                }
+            }
+            n
+        })
+    }
+}

@@ -1,0 +1,13 @@
+//! `GL/gl.h`: the GL 1.x entry points `Gl` implements, one file per area.
+
+mod eval;
+mod feedback;
+mod fragment;
+mod immediate;
+mod lighting;
+mod lists;
+mod matrix;
+mod pixels;
+mod read_pixels;
+mod state;
+mod texture;

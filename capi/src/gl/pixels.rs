@@ -1,0 +1,54 @@
+//! Pixel storage, the raster position, bitmaps and `glDrawPixels`.
+
+use crate::context::with_gl;
+use crate::memory::bytes;
+use gleval::gl::types::*;
+use std::ffi::c_void;
+
+forward! {
+    glPixelStorei(pname: GLenum, param: GLint) => pixel_storei;
+    glPixelStoref(pname: GLenum, param: GLfloat) => pixel_storef;
+    glPushClientAttrib(mask: GLbitfield) => push_client_attrib;
+    glPopClientAttrib() => pop_client_attrib;
+    glRasterPos2f(x: GLfloat, y: GLfloat) => raster_pos2f;
+    glRasterPos2i(x: GLint, y: GLint) => raster_pos2i;
+    glRasterPos2d(x: GLdouble, y: GLdouble) => raster_pos2d;
+    glRasterPos3f(x: GLfloat, y: GLfloat, z: GLfloat) => raster_pos3f;
+    glRasterPos3i(x: GLint, y: GLint, z: GLint) => raster_pos3i;
+    glRasterPos3d(x: GLdouble, y: GLdouble, z: GLdouble) => raster_pos3d;
+    glRasterPos4f(x: GLfloat, y: GLfloat, z: GLfloat, w: GLfloat) => raster_pos4f;
+    glRasterPos4d(x: GLdouble, y: GLdouble, z: GLdouble, w: GLdouble) => raster_pos4d;
+}
+
+vector! {
+    glRasterPos2fv(GLfloat; 2) => raster_pos2fv;
+    glRasterPos3fv(GLfloat; 3) => raster_pos3fv;
+    glRasterPos4fv(GLfloat; 4) => raster_pos4fv;
+    glRasterPos2iv(GLint; 2) => raster_pos2iv;
+    glRasterPos2dv(GLdouble; 2) => raster_pos2dv;
+    glRasterPos3dv(GLdouble; 3) => raster_pos3dv;
+}
+
+entry! {
+    /// `glBitmap`: reads `height` rows of `width` bits under the unpack modes.
+    #[allow(clippy::too_many_arguments)]
+    unsafe fn glBitmap(
+        width: GLsizei, height: GLsizei, xorig: GLfloat, yorig: GLfloat, xmove: GLfloat, ymove: GLfloat,
+        bitmap: *const GLubyte,
+    ) {
+        with_gl(|gl| {
+            let bits = unsafe { bytes(bitmap.cast(), gl.unpacked_bitmap_len(width, height)) };
+            gl.bitmap(width, height, xorig, yorig, xmove, ymove, bits)
+        })
+    }
+}
+
+entry! {
+    /// `glDrawPixels`: reads the image under the unpack modes.
+    unsafe fn glDrawPixels(width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum, pixels: *const c_void) {
+        with_gl(|gl| {
+            let pixels = unsafe { bytes(pixels, gl.unpacked_image_len(width, height, format, type_)) };
+            gl.draw_pixels(width, height, format, type_, pixels)
+        })
+    }
+}

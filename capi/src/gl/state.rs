@@ -1,0 +1,65 @@
+//! Enables, errors, queries, viewport, clearing and rasterisation state.
+
+use crate::context::with_gl;
+use crate::memory::array_mut;
+use crate::strings::static_c_string;
+use gleval::gl::consts::*;
+use gleval::gl::types::*;
+
+forward! {
+    glEnable(cap: GLenum) => enable;
+    glDisable(cap: GLenum) => disable;
+    glIsEnabled(cap: GLenum) -> GLboolean => is_enabled;
+    glGetError() -> GLenum => get_error;
+    glFlush() => flush;
+    glFinish() => finish;
+    glViewport(x: GLint, y: GLint, width: GLsizei, height: GLsizei) => viewport;
+    glDepthRange(near: GLclampd, far: GLclampd) => depth_range;
+    glClear(mask: GLbitfield) => clear;
+    glClearColor(r: GLclampf, g: GLclampf, b: GLclampf, a: GLclampf) => clear_color;
+    glClearDepth(depth: GLclampd) => clear_depth;
+    glDepthFunc(func: GLenum) => depth_func;
+    glCullFace(mode: GLenum) => cull_face;
+    glFrontFace(mode: GLenum) => front_face;
+    glPolygonMode(face: GLenum, mode: GLenum) => polygon_mode;
+    glPointSize(size: GLfloat) => point_size;
+    glLineWidth(width: GLfloat) => line_width;
+    glActiveTexture(texture: GLenum) => active_texture;
+    glPushAttrib(mask: GLbitfield) => push_attrib;
+    glPopAttrib() => pop_attrib;
+}
+
+/// Values `glGet` writes for `pname` (GL 1.1 tables 6.5-6.28) among the names `Gl` answers;
+/// one for the others (an unknown name writes nothing and sets `GL_INVALID_ENUM`).
+fn get_count(pname: GLenum) -> usize {
+    match pname {
+        GL_MAP2_GRID_DOMAIN
+        | GL_CURRENT_RASTER_POSITION
+        | GL_CURRENT_RASTER_COLOR
+        | GL_CURRENT_RASTER_TEXTURE_COORDS => 4,
+        GL_MAP1_GRID_DOMAIN | GL_MAP2_GRID_SEGMENTS => 2,
+        _ => 1,
+    }
+}
+
+entry! {
+    /// `glGetIntegerv`: `Gl::get_integerv`.
+    unsafe fn glGetIntegerv(pname: GLenum, params: *mut GLint) {
+        with_gl(|gl| gl.get_integerv(pname, unsafe { array_mut(params, get_count(pname)) }))
+    }
+}
+
+entry! {
+    /// `glGetFloatv`: `Gl::get_floatv`.
+    unsafe fn glGetFloatv(pname: GLenum, params: *mut GLfloat) {
+        with_gl(|gl| gl.get_floatv(pname, unsafe { array_mut(params, get_count(pname)) }))
+    }
+}
+
+entry! {
+    /// `glGetString`: `Gl::get_string`, as a NUL-terminated string that lives as long as the
+    /// program (NULL for an unknown name).
+    fn glGetString(name: GLenum) -> *const GLubyte {
+        with_gl(|gl| gl.get_string(name).map_or(std::ptr::null(), |s| static_c_string(s).cast()))
+    }
+}

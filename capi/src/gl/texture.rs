@@ -1,0 +1,84 @@
+//! Texture objects, images, parameters and the environment.
+
+use crate::context::with_gl;
+use crate::memory::{array, array_mut, bytes, count};
+use gleval::gl::consts::*;
+use gleval::gl::types::*;
+use std::ffi::c_void;
+
+forward! {
+    glBindTexture(target: GLenum, texture: GLuint) => bind_texture;
+    glIsTexture(texture: GLuint) -> GLboolean => is_texture;
+    glTexParameteri(target: GLenum, pname: GLenum, param: GLint) => tex_parameteri;
+    glTexParameterf(target: GLenum, pname: GLenum, param: GLfloat) => tex_parameterf;
+    glTexEnvi(target: GLenum, pname: GLenum, param: GLint) => tex_envi;
+    glTexEnvf(target: GLenum, pname: GLenum, param: GLfloat) => tex_envf;
+}
+
+entry! {
+    /// `glGenTextures`: writes `n` names.
+    unsafe fn glGenTextures(n: GLsizei, textures: *mut GLuint) {
+        let textures = unsafe { array_mut(textures, count(n).unwrap_or(0)) };
+        with_gl(|gl| gl.gen_textures(n, textures))
+    }
+}
+
+entry! {
+    /// `glDeleteTextures`: reads `n` names.
+    unsafe fn glDeleteTextures(n: GLsizei, textures: *const GLuint) {
+        let textures = unsafe { array(textures, count(n)) };
+        with_gl(|gl| gl.delete_textures(n, textures))
+    }
+}
+
+entry! {
+    /// `glTexEnvfv`: the colour reads 4 values, the other names 1.
+    unsafe fn glTexEnvfv(target: GLenum, pname: GLenum, params: *const GLfloat) {
+        let n = if pname == GL_TEXTURE_ENV_COLOR { 4 } else { 1 };
+        let params = unsafe { array(params, Some(n)) };
+        with_gl(|gl| gl.tex_envfv(target, pname, params))
+    }
+}
+
+entry! {
+    /// `glTexImage2D`: reads the image under the unpack modes; NULL defines the level without
+    /// texels, as in GL.
+    #[allow(clippy::too_many_arguments)]
+    unsafe fn glTexImage2D(
+        target: GLenum, level: GLint, internalformat: GLint, width: GLsizei, height: GLsizei,
+        border: GLint, format: GLenum, type_: GLenum, pixels: *const c_void,
+    ) {
+        with_gl(|gl| {
+            let pixels = unsafe { bytes(pixels, gl.unpacked_image_len(width, height, format, type_)) };
+            gl.tex_image_2d(target, level, internalformat, width, height, border, format, type_, pixels)
+        })
+    }
+}
+
+entry! {
+    /// `glTexImage1D`: as `glTexImage2D`, one row.
+    #[allow(clippy::too_many_arguments)]
+    unsafe fn glTexImage1D(
+        target: GLenum, level: GLint, internalformat: GLint, width: GLsizei,
+        border: GLint, format: GLenum, type_: GLenum, pixels: *const c_void,
+    ) {
+        with_gl(|gl| {
+            let pixels = unsafe { bytes(pixels, gl.unpacked_image_len(width, 1, format, type_)) };
+            gl.tex_image_1d(target, level, internalformat, width, border, format, type_, pixels)
+        })
+    }
+}
+
+entry! {
+    /// `glTexSubImage2D`: reads the rectangle under the unpack modes.
+    #[allow(clippy::too_many_arguments)]
+    unsafe fn glTexSubImage2D(
+        target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, width: GLsizei, height: GLsizei,
+        format: GLenum, type_: GLenum, pixels: *const c_void,
+    ) {
+        with_gl(|gl| {
+            let pixels = unsafe { bytes(pixels, gl.unpacked_image_len(width, height, format, type_)) };
+            gl.tex_sub_image_2d(target, level, xoffset, yoffset, width, height, format, type_, pixels)
+        })
+    }
+}

@@ -1,0 +1,116 @@
+//! What a binding from another language needs of the context (the C ABI, crate `gleval-c`).
+//!
+//! How many bytes of client memory a call reads (GL 1.1 spec §3.6.3 "Unpacking", §3.6.4
+//! bitmaps, §5.4 `glCallLists`): what a C caller promises to have at the pointer it passes.
+//! The Rust façade takes slices and checks their length; a C binding has only a pointer and
+//! must know how far it may read before it makes the slice. The answer depends on the unpack
+//! modes (`glPixelStore`), which are GL state, so it lives here. And `GL_OUT_OF_MEMORY`, GL's
+//! answer when the implementation could not carry out a call.
+
+use super::consts::*;
+use super::types::*;
+use super::Gl;
+
+/// Components per pixel of a client image format (GL 1.1 table 3.5); `None` for one GL rejects.
+fn format_components(format: GLenum) -> Option<usize> {
+    match format {
+        GL_COLOR_INDEX | GL_STENCIL_INDEX | GL_DEPTH_COMPONENT | GL_RED | GL_GREEN | GL_BLUE | GL_ALPHA
+        | GL_LUMINANCE => Some(1),
+        GL_LUMINANCE_ALPHA => Some(2),
+        GL_RGB => Some(3),
+        GL_RGBA => Some(4),
+        _ => None,
+    }
+}
+
+/// Bytes per component of a client data type (GL 1.1 table 3.4), `GL_BITMAP` excepted.
+fn type_size(type_: GLenum) -> Option<usize> {
+    match type_ {
+        GL_BYTE | GL_UNSIGNED_BYTE => Some(1),
+        GL_SHORT | GL_UNSIGNED_SHORT => Some(2),
+        GL_INT | GL_UNSIGNED_INT | GL_FLOAT => Some(4),
+        _ => None,
+    }
+}
+
+/// Bytes per name of a `glCallLists` type (`GL_2_BYTES` .. `GL_4_BYTES` included).
+fn list_name_size(type_: GLenum) -> Option<usize> {
+    match type_ {
+        GL_2_BYTES => Some(2),
+        GL_3_BYTES => Some(3),
+        GL_4_BYTES => Some(4),
+        _ => type_size(type_),
+    }
+}
+
+impl Gl {
+    /// Bytes GL reads for a `width` × `height` image of `format` and `type_` (`glTexImage2D`,
+    /// `glTexSubImage2D`, `glDrawPixels`, `gluBuild2DMipmaps`) with the current unpack modes:
+    /// the skipped rows and pixels, the padded rows, and the last row up to its last pixel.
+    /// `None` when GL reads nothing because it rejects the call (a negative size, an unknown
+    /// format or type); `Some(0)` for an empty image.
+    #[must_use]
+    pub fn unpacked_image_len(&self, width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum) -> Option<usize> {
+        let (w, h) = (usize::try_from(width).ok()?, usize::try_from(height).ok()?);
+        let (components, size) = (format_components(format)?, type_size(type_)?);
+        if w == 0 || h == 0 {
+            return Some(0);
+        }
+        let store = self.unpack_store();
+        let stride = store.row_stride(w, components, size);
+        let first = store.first_byte(stride, components * size);
+        first.checked_add((h - 1).checked_mul(stride)?)?.checked_add(w * components * size)
+    }
+
+    /// Bytes GL reads for a `glBitmap` of `width` × `height` bits with the current unpack modes;
+    /// `None` for a negative size.
+    #[must_use]
+    pub fn unpacked_bitmap_len(&self, width: GLsizei, height: GLsizei) -> Option<usize> {
+        let (w, h) = (usize::try_from(width).ok()?, usize::try_from(height).ok()?);
+        if w == 0 || h == 0 {
+            return Some(0);
+        }
+        let store = self.unpack_store();
+        let stride = store.bitmap_row_stride(w);
+        let first = store.skip_rows.checked_mul(stride)?;
+        first.checked_add((h - 1).checked_mul(stride)?)?.checked_add((store.skip_pixels + w).div_ceil(8))
+    }
+
+    /// Records `GL_OUT_OF_MEMORY` (unless an earlier error is pending): a binding's answer when
+    /// a call could not be carried out, e.g. the C ABI after catching a panic.
+    pub fn set_out_of_memory(&mut self) {
+        self.set_error(GL_OUT_OF_MEMORY);
+    }
+
+    /// Bytes `glCallLists(n, type_, lists)` reads; `None` for a negative `n` or an unknown type.
+    #[must_use]
+    pub fn call_lists_len(n: GLsizei, type_: GLenum) -> Option<usize> {
+        usize::try_from(n).ok()?.checked_mul(list_name_size(type_)?)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn images_count_padding_and_skips() {
+        let mut gl = Gl::new(4, 4);
+        // 3 RGB bytes a pixel, rows padded to 4: 12 + 12 + 9.
+        assert_eq!(gl.unpacked_image_len(3, 3, GL_RGB, GL_UNSIGNED_BYTE), Some(33));
+        gl.pixel_storei(GL_UNPACK_ALIGNMENT, 1);
+        assert_eq!(gl.unpacked_image_len(3, 3, GL_RGB, GL_UNSIGNED_BYTE), Some(27));
+        assert_eq!(gl.unpacked_image_len(2, 2, GL_RGBA, GL_FLOAT), Some(64)); // 2 × 2 pixels of 4 floats
+        assert_eq!(gl.unpacked_image_len(-1, 2, GL_RGBA, GL_FLOAT), None);
+        assert_eq!(gl.unpacked_image_len(2, 2, 0x1234, GL_FLOAT), None);
+        assert_eq!(gl.unpacked_image_len(0, 2, GL_RGB, GL_FLOAT), Some(0));
+    }
+
+    #[test]
+    fn bitmaps_and_lists() {
+        let gl = Gl::new(4, 4);
+        assert_eq!(gl.unpacked_bitmap_len(9, 2), Some(4 + 2));
+        assert_eq!(Gl::call_lists_len(3, GL_3_BYTES), Some(9));
+        assert_eq!(Gl::call_lists_len(-1, GL_BYTE), None);
+    }
+}

@@ -1,0 +1,318 @@
+//! Feedback mode (GL 1.1 spec §5.3; Mesa `main/feedback.c`): `glRenderMode(GL_FEEDBACK)` with
+//! `glFeedbackBuffer`, how a program reads back the primitives it drew instead of pixels.
+//!
+//! In feedback mode nothing is drawn: when the program leaves it (`render_mode`), the
+//! primitives recorded since it entered are taken out of the frame and written as GL's tokens
+//! (`GL_POINT_TOKEN`, `GL_LINE_TOKEN`, `GL_POLYGON_TOKEN` with its vertex count), each vertex
+//! as the buffer type asks: window coordinates (through the viewport and depth range the
+//! primitive was drawn with), then the colour and the texture coordinate. Strips, loops, fans,
+//! quads and polygons are broken into the lines and triangles GL's feedback reports, in Mesa's
+//! order (checked against Mesa 22 in `tests/reference/calls/cases/feedback.calls`).
+//!
+//! Not modelled: clipping (vertices outside the view volume are reported, not clipped),
+//! lighting (the colour is the current or evaluated one), the texture matrix, polygon mode
+//! and culling, `glPassThrough`, and selection mode (`GL_SELECT` is `GL_INVALID_ENUM` here).
+
+use super::consts::*;
+use super::frame::{Command, DrawState};
+use super::types::*;
+use super::vertex::Vertex;
+use super::Gl;
+use glam::Vec4;
+
+/// `GL_FEEDBACK` (GL 1.1 table 5.3).
+pub const GL_FEEDBACK: GLenum = 0x1C01;
+/// `GL_RENDER`.
+pub const GL_RENDER: GLenum = 0x1C00;
+/// Feedback buffer types.
+pub const GL_2D: GLenum = 0x0600;
+/// x, y, z.
+pub const GL_3D: GLenum = 0x0601;
+/// x, y, z and RGBA.
+pub const GL_3D_COLOR: GLenum = 0x0602;
+/// x, y, z, RGBA and (s, t, r, q).
+pub const GL_3D_COLOR_TEXTURE: GLenum = 0x0603;
+/// x, y, z, w, RGBA and (s, t, r, q).
+pub const GL_4D_COLOR_TEXTURE: GLenum = 0x0604;
+/// Tokens.
+pub const GL_PASS_THROUGH_TOKEN: GLenum = 0x0700;
+/// A point: one vertex.
+pub const GL_POINT_TOKEN: GLenum = 0x0701;
+/// A line segment: two vertices.
+pub const GL_LINE_TOKEN: GLenum = 0x0702;
+/// A polygon: its vertex count, then the vertices.
+pub const GL_POLYGON_TOKEN: GLenum = 0x0703;
+/// A bitmap.
+pub const GL_BITMAP_TOKEN: GLenum = 0x0704;
+/// `glDrawPixels`.
+pub const GL_DRAW_PIXEL_TOKEN: GLenum = 0x0705;
+/// `glCopyPixels`.
+pub const GL_COPY_PIXEL_TOKEN: GLenum = 0x0706;
+/// A line segment that starts a new line (resets the stipple).
+pub const GL_LINE_RESET_TOKEN: GLenum = 0x0707;
+
+/// The feedback state of a context.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct Feedback {
+    /// `GL_RENDER` or `GL_FEEDBACK`.
+    mode: GLenum,
+    /// `glFeedbackBuffer`'s size (values) and type; size 0 until a buffer is given.
+    size: usize,
+    kind: GLenum,
+    /// Frame commands recorded before feedback mode began (they are drawn).
+    start: usize,
+    /// What the last feedback pass wrote, at most `size` values.
+    values: Vec<GLfloat>,
+    /// Primitives drawn while a list compiles wait for the next pass after it ends.
+    held: bool,
+}
+
+impl Default for Feedback {
+    fn default() -> Self {
+        Self { mode: GL_RENDER, size: 0, kind: GL_2D, start: 0, values: Vec::new(), held: false }
+    }
+}
+
+/// Which parts a buffer type writes: (4D position, colour, texture coordinate); `None` for a
+/// type GL does not know.
+fn layout(kind: GLenum) -> Option<(bool, bool, bool)> {
+    match kind {
+        GL_2D | GL_3D => Some((false, false, false)),
+        GL_3D_COLOR => Some((false, true, false)),
+        GL_3D_COLOR_TEXTURE => Some((false, true, true)),
+        GL_4D_COLOR_TEXTURE => Some((true, true, true)),
+        _ => None,
+    }
+}
+
+/// The vertex indices of the tokens GL reports for a primitive of `count` vertices:
+/// (token, indices) in Mesa's order and winding.
+fn tokens(mode: GLenum, count: usize) -> Vec<(GLenum, Vec<usize>)> {
+    let n = count;
+    let tri = |a: usize, b: usize, c: usize| (GL_POLYGON_TOKEN, vec![a, b, c]);
+    match mode {
+        GL_POINTS => (0..n).map(|i| (GL_POINT_TOKEN, vec![i])).collect(),
+        GL_LINES => (0..n / 2).map(|i| (GL_LINE_TOKEN, vec![2 * i, 2 * i + 1])).collect(),
+        GL_LINE_STRIP => (1..n).map(|i| (GL_LINE_TOKEN, vec![i - 1, i])).collect(),
+        GL_LINE_LOOP if n >= 2 => {
+            let mut lines: Vec<_> = (1..n).map(|i| (GL_LINE_TOKEN, vec![i - 1, i])).collect();
+            lines.push((GL_LINE_TOKEN, vec![n - 1, 0]));
+            lines
+        }
+        GL_TRIANGLES => (0..n / 3).map(|i| tri(3 * i, 3 * i + 1, 3 * i + 2)).collect(),
+        GL_TRIANGLE_STRIP => {
+            (2..n).map(|i| if i % 2 == 0 { tri(i - 2, i - 1, i) } else { tri(i - 1, i - 2, i) }).collect()
+        }
+        GL_TRIANGLE_FAN | GL_POLYGON => (2..n).map(|i| tri(0, i - 1, i)).collect(),
+        GL_QUADS => {
+            (0..n / 4).flat_map(|q| [tri(4 * q, 4 * q + 1, 4 * q + 3), tri(4 * q + 1, 4 * q + 2, 4 * q + 3)]).collect()
+        }
+        // Mesa splits each quad of a strip as (v2, v0, v3), (v0, v1, v3).
+        GL_QUAD_STRIP => (1..n / 2)
+            .flat_map(|q| {
+                let b = 2 * (q - 1);
+                [tri(b + 2, b, b + 3), tri(b, b + 1, b + 3)]
+            })
+            .collect(),
+        _ => Vec::new(),
+    }
+}
+
+impl Gl {
+    /// `glFeedbackBuffer(size, type, buffer)`: feedback mode writes up to `size` values of
+    /// vertices laid out as `type_` says (`GL_2D` .. `GL_4D_COLOR_TEXTURE`); read them with
+    /// [`Gl::feedback_values`] after `render_mode` leaves feedback mode. Errors, in Mesa's
+    /// order: inside `begin`/`end` or in feedback mode (`GL_INVALID_OPERATION`), a negative size
+    /// (`GL_INVALID_VALUE`), an unknown type (`GL_INVALID_ENUM`). Not compiled into lists.
+    pub fn feedback_buffer(&mut self, size: GLsizei, type_: GLenum) {
+        if self.reject_inside_begin_end() {
+            return;
+        }
+        if self.feedback.mode == GL_FEEDBACK {
+            return self.set_error(GL_INVALID_OPERATION);
+        }
+        let Ok(size) = usize::try_from(size) else { return self.set_error(GL_INVALID_VALUE) };
+        if layout(type_).is_none() {
+            return self.set_error(GL_INVALID_ENUM);
+        }
+        (self.feedback.size, self.feedback.kind) = (size, type_);
+    }
+
+    /// `glRenderMode(mode)`: `GL_RENDER` or `GL_FEEDBACK`. Leaving feedback mode returns the
+    /// number of values written, or −1 if the buffer was too small; leaving render mode returns
+    /// 0. Entering feedback mode without a buffer is `GL_INVALID_OPERATION` (the mode changes
+    /// anyway, as in Mesa); another mode is `GL_INVALID_ENUM`, as inside `begin`/`end` is
+    /// `GL_INVALID_OPERATION`. Not compiled into lists.
+    pub fn render_mode(&mut self, mode: GLenum) -> GLint {
+        if self.reject_inside_begin_end() {
+            return 0;
+        }
+        // Mesa buffers what a GL_COMPILE_AND_EXECUTE list draws and runs it when the list
+        // ends: its primitives reach the feedback buffer after glEndList, so they are held.
+        let compiling = self.list_query(GL_LIST_INDEX).is_some_and(|i| i != 0.0);
+        let result = match self.feedback.mode {
+            GL_FEEDBACK if compiling => {
+                self.feedback.held = true;
+                self.feedback.values.clear();
+                0
+            }
+            GL_FEEDBACK => {
+                self.feedback.held = false;
+                self.finish_feedback()
+            }
+            _ => 0,
+        };
+        match mode {
+            GL_RENDER => {}
+            GL_FEEDBACK => {
+                if self.feedback.size == 0 {
+                    self.set_error(GL_INVALID_OPERATION);
+                }
+                if !self.feedback.held {
+                    self.evaluate_pending_meshes();
+                    self.feedback.start = self.frame.commands.len();
+                }
+            }
+            _ => {
+                self.set_error(GL_INVALID_ENUM);
+                return 0;
+            }
+        }
+        self.feedback.mode = mode;
+        result
+    }
+
+    /// The size and type the last successful `feedback_buffer` set (0 and `GL_2D` initially):
+    /// a binding that keeps the caller's buffer knows from it whether the call took.
+    #[must_use]
+    pub fn feedback_buffer_spec(&self) -> (usize, GLenum) {
+        (self.feedback.size, self.feedback.kind)
+    }
+
+    /// The values the last feedback pass wrote (at most the buffer's size).
+    #[must_use]
+    pub fn feedback_values(&self) -> &[GLfloat] {
+        &self.feedback.values
+    }
+
+    /// Takes what was drawn in feedback mode out of the frame and writes its tokens; the count
+    /// `glRenderMode` returns.
+    fn finish_feedback(&mut self) -> GLint {
+        self.evaluate_pending_meshes();
+        let start = self.feedback.start.min(self.frame.commands.len());
+        let commands: Vec<Command> = self.frame.commands.drain(start..).collect();
+        let mut values = Vec::new();
+        for command in commands {
+            match command {
+                Command::Draw(i) => {
+                    let p = self.frame.primitives[i];
+                    let vertices = self.frame.vertices_of(&p).to_vec();
+                    self.feedback_primitive(&mut values, p.mode, p.state, &vertices);
+                }
+                Command::Mesh(i) => {
+                    let mesh = &self.frame.meshes[i];
+                    let (grid, state) = (mesh.evaluated().into_owned(), mesh.state);
+                    for (mode, indices) in mesh.primitives() {
+                        let vertices: Vec<Vertex> = indices.iter().map(|&k| grid[k]).collect();
+                        self.feedback_primitive(&mut values, mode, state, &vertices);
+                    }
+                }
+                // GL clears only in render mode.
+                Command::Clear { .. } => {}
+            }
+        }
+        let overflow = values.len() > self.feedback.size;
+        values.truncate(self.feedback.size);
+        let count = values.len();
+        self.feedback.values = values;
+        if overflow {
+            -1
+        } else {
+            GLint::try_from(count).unwrap_or(GLint::MAX)
+        }
+    }
+
+    fn feedback_primitive(&self, out: &mut Vec<GLfloat>, mode: GLenum, state: usize, vertices: &[Vertex]) {
+        let Some(state) = self.frame.states.get(state) else { return };
+        for (token, indices) in tokens(mode, vertices.len()) {
+            out.push(token as GLfloat);
+            if token == GL_POLYGON_TOKEN {
+                out.push(indices.len() as GLfloat);
+            }
+            for i in indices {
+                self.feedback_vertex(out, state, &vertices[i]);
+            }
+        }
+    }
+
+    /// One vertex as the buffer type lays it out: window x, y (z, w), colour, texcoord.
+    fn feedback_vertex(&self, out: &mut Vec<GLfloat>, state: &DrawState, v: &Vertex) {
+        let clip = state.projection * state.modelview * Vec4::from_array(v.position);
+        let [vx, vy, vw, vh] = state.viewport.map(|c| c as f32);
+        let [near, far] = state.depth_range;
+        let ndc = clip / clip.w;
+        let window = [
+            vx + (ndc.x + 1.0) * vw / 2.0,
+            vy + (ndc.y + 1.0) * vh / 2.0,
+            near + (far - near) * (ndc.z + 1.0) / 2.0,
+            clip.w,
+        ];
+        let (four, color, texture) = layout(self.feedback.kind).unwrap_or_default();
+        let position = match self.feedback.kind {
+            GL_2D => 2,
+            _ if four => 4,
+            _ => 3,
+        };
+        out.extend_from_slice(&window[..position]);
+        if color {
+            out.extend_from_slice(&v.color);
+        }
+        if texture {
+            out.extend_from_slice(&v.tex_coord);
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn strips_break_into_mesas_triangles() {
+        let t = tokens(GL_TRIANGLE_STRIP, 4);
+        assert_eq!(t, vec![(GL_POLYGON_TOKEN, vec![0, 1, 2]), (GL_POLYGON_TOKEN, vec![2, 1, 3])]);
+        assert_eq!(tokens(GL_LINE_STRIP, 3).len(), 2);
+        assert!(tokens(GL_LINES, 1).is_empty());
+    }
+
+    #[test]
+    fn feedback_reports_points_in_window_coordinates() {
+        let mut gl = Gl::new(4, 4);
+        gl.viewport(0, 0, 2, 2);
+        gl.feedback_buffer(100, GL_3D);
+        assert_eq!(gl.render_mode(GL_FEEDBACK), 0);
+        gl.begin(GL_POINTS);
+        gl.vertex3f(0.5, -0.5, 0.0);
+        gl.end();
+        assert_eq!(gl.render_mode(GL_RENDER), 4);
+        assert_eq!(gl.feedback_values(), &[GL_POINT_TOKEN as f32, 1.5, 0.5, 0.5]);
+        assert_eq!(gl.get_error(), GL_NO_ERROR);
+        assert!(gl.frame().commands.is_empty(), "feedback draws nothing");
+    }
+
+    #[test]
+    fn errors_follow_mesa() {
+        let mut gl = Gl::new(4, 4);
+        gl.render_mode(GL_FEEDBACK);
+        assert_eq!(gl.get_error(), GL_INVALID_OPERATION);
+        gl.feedback_buffer(10, GL_2D);
+        assert_eq!(gl.get_error(), GL_INVALID_OPERATION);
+        gl.render_mode(GL_RENDER);
+        gl.feedback_buffer(-1, GL_2D);
+        assert_eq!(gl.get_error(), GL_INVALID_VALUE);
+        gl.feedback_buffer(1, 0x1234);
+        assert_eq!(gl.get_error(), GL_INVALID_ENUM);
+        assert_eq!(gl.render_mode(0x1234), 0);
+        assert_eq!(gl.get_error(), GL_INVALID_ENUM);
+    }
+}

@@ -1,0 +1,221 @@
+//! `glReadPixels` (GL 1.1 spec §4.3.2; Mesa `main/readpix.c`): a rectangle of the window's
+//! colours, converted to the caller's format and type and laid out with the pack modes.
+//!
+//! The `gl` layer has no framebuffer: the caller that owns a renderer hands in a closure that
+//! draws the frame recorded so far and returns the window's RGBA8 pixels (rows top to bottom,
+//! as `Renderer::render_frame` gives them). It runs only when the call is valid. GL's rules
+//! live here: the errors in Mesa's order, the rectangle (pixels outside the window are left
+//! as they were, as Mesa leaves them), the conversion of each colour component (GL 1.1 table
+//! 2.9 inverted: unsigned types scale by 2ᵇ − 1, signed ones map [−1, 1] onto the range),
+//! luminance as R + G + B clamped (§4.3.2), the pack modes.
+//!
+//! gleval's window has no readable depth, stencil or colour-index buffer: reading
+//! `GL_DEPTH_COMPONENT`, `GL_STENCIL_INDEX` or `GL_COLOR_INDEX` is `GL_INVALID_OPERATION`
+//! (Mesa reads its depth and stencil buffers).
+
+use super::consts::*;
+use super::frame::Frame;
+use super::types::*;
+use super::Gl;
+
+/// The components of one window pixel (floats in [0, 1]) that `format` returns; `None` for a
+/// format that is not a colour format.
+fn components(format: GLenum, [r, g, b, a]: [f32; 4]) -> Option<Vec<f32>> {
+    Some(match format {
+        GL_RED => vec![r],
+        GL_GREEN => vec![g],
+        GL_BLUE => vec![b],
+        GL_ALPHA => vec![a],
+        GL_RGB => vec![r, g, b],
+        GL_RGBA => vec![r, g, b, a],
+        GL_LUMINANCE => vec![(r + g + b).min(1.0)],
+        GL_LUMINANCE_ALPHA => vec![(r + g + b).min(1.0), a],
+        _ => return None,
+    })
+}
+
+/// Components per pixel of a format glReadPixels takes, the colour ones and those gleval
+/// cannot read.
+fn format_size(format: GLenum) -> Option<usize> {
+    match format {
+        GL_LUMINANCE_ALPHA => Some(2),
+        GL_RGB => Some(3),
+        GL_RGBA => Some(4),
+        GL_RED | GL_GREEN | GL_BLUE | GL_ALPHA | GL_LUMINANCE | GL_COLOR_INDEX | GL_STENCIL_INDEX
+        | GL_DEPTH_COMPONENT => Some(1),
+        _ => None,
+    }
+}
+
+/// Bytes per component of a data type glReadPixels takes (`GL_BITMAP` aside).
+fn type_size(type_: GLenum) -> Option<usize> {
+    match type_ {
+        GL_BYTE | GL_UNSIGNED_BYTE => Some(1),
+        GL_SHORT | GL_UNSIGNED_SHORT => Some(2),
+        GL_INT | GL_UNSIGNED_INT | GL_FLOAT => Some(4),
+        _ => None,
+    }
+}
+
+/// One component `c` ∈ [0, 1] as `type_` stores it, native byte order.
+fn encode(c: f32, type_: GLenum) -> Vec<u8> {
+    let c = f64::from(c.clamp(0.0, 1.0));
+    let unsigned = |max: f64| (c * max).round();
+    let signed = |max: f64| ((c * (2.0 * max + 1.0) - 1.0) / 2.0).round();
+    match type_ {
+        GL_UNSIGNED_BYTE => vec![unsigned(255.0) as u8],
+        GL_BYTE => (signed(127.0) as i8).to_ne_bytes().to_vec(),
+        GL_UNSIGNED_SHORT => (unsigned(65535.0) as u16).to_ne_bytes().to_vec(),
+        GL_SHORT => (signed(32767.0) as i16).to_ne_bytes().to_vec(),
+        GL_UNSIGNED_INT => (unsigned(4294967295.0) as u32).to_ne_bytes().to_vec(),
+        GL_INT => (signed(2147483647.0) as i32).to_ne_bytes().to_vec(),
+        _ => (c as f32).to_ne_bytes().to_vec(),
+    }
+}
+
+impl Gl {
+    /// Bytes `glReadPixels` writes for a `width` × `height` rectangle of `format` and `type_`
+    /// under the current pack modes (skips, padded rows, the last row up to its last pixel);
+    /// `None` when GL writes nothing because it rejects the format, type or a negative size.
+    #[must_use]
+    pub fn packed_image_len(&self, width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum) -> Option<usize> {
+        let (w, h) = (usize::try_from(width).ok()?, usize::try_from(height).ok()?);
+        let (n, size) = (format_size(format)?, type_size(type_)?);
+        if w == 0 || h == 0 {
+            return Some(0);
+        }
+        let store = self.pixel_stores.pack;
+        let stride = store.row_stride(w, n, size);
+        let first = store.first_byte(stride, n * size);
+        first.checked_add((h - 1).checked_mul(stride)?)?.checked_add(w * n * size)
+    }
+
+    /// `glReadPixels(x, y, width, height, format, type, pixels)` into `out`: `window` draws what
+    /// was recorded and returns the window's RGBA8 pixels, rows top to bottom. Errors, in
+    /// Mesa's order: inside `begin`/`end` (`GL_INVALID_OPERATION`), a negative size
+    /// (`GL_INVALID_VALUE`), an unknown type or `GL_BITMAP` (`GL_INVALID_ENUM`), an unknown
+    /// format (`GL_INVALID_OPERATION`, Mesa's answer), a buffer gleval cannot read (depth,
+    /// stencil, colour index: `GL_INVALID_OPERATION`), a non-empty `out` shorter than
+    /// [`Gl::packed_image_len`] (`GL_INVALID_VALUE`); an empty `out` (C's NULL) writes nothing
+    /// and is no error, as in Mesa. Not compiled into lists.
+    pub fn read_pixels(
+        &mut self,
+        (x, y): (GLint, GLint),
+        (width, height): (GLsizei, GLsizei),
+        format: GLenum,
+        type_: GLenum,
+        window: impl FnOnce(&Frame) -> Option<Vec<u8>>,
+        out: &mut [u8],
+    ) {
+        if self.reject_inside_begin_end() {
+            return;
+        }
+        if width < 0 || height < 0 {
+            return self.set_error(GL_INVALID_VALUE);
+        }
+        // Measured on Mesa 22 (capi/tests/readpixels.c): an unknown format is
+        // GL_INVALID_OPERATION (an invalid combination) whatever the type, then an unknown
+        // type GL_INVALID_ENUM.
+        if format_size(format).is_none() {
+            return self.set_error(GL_INVALID_OPERATION);
+        }
+        let Some(size) = type_size(type_) else { return self.set_error(GL_INVALID_ENUM) };
+        if components(format, [0.0; 4]).is_none() {
+            return self.set_error(GL_INVALID_OPERATION);
+        }
+        let needed = self.packed_image_len(width, height, format, type_).unwrap_or(usize::MAX);
+        if needed == 0 || out.is_empty() {
+            // C's NULL destination: Mesa writes nothing and reports nothing.
+            return;
+        }
+        if out.len() < needed {
+            return self.set_error(GL_INVALID_VALUE);
+        }
+        let (ww, wh) = (self.width(), self.height());
+        let Some(pixels) = window(self.frame()) else { return self.set_error(GL_OUT_OF_MEMORY) };
+        let at = |wx: i32, wy: i32| -> Option<[f32; 4]> {
+            if !(0..ww).contains(&wx) || !(0..wh).contains(&wy) {
+                return None;
+            }
+            let k = 4 * ((wh - 1 - wy) as usize * ww as usize + wx as usize);
+            pixels.get(k..k + 4).map(|p| [0, 1, 2, 3].map(|c| f32::from(p[c]) / 255.0))
+        };
+        self.pack_rectangle((x, y), (width as usize, height as usize), (format, type_, size), at, out);
+    }
+
+    /// Writes the rectangle's pixels that lie in the window where the pack modes put them.
+    fn pack_rectangle(
+        &self,
+        (x, y): (GLint, GLint),
+        (w, h): (usize, usize),
+        (format, type_, size): (GLenum, GLenum, usize),
+        at: impl Fn(i32, i32) -> Option<[f32; 4]>,
+        out: &mut [u8],
+    ) {
+        let store = self.pixel_stores.pack;
+        let n = format_size(format).unwrap_or(1);
+        let stride = store.row_stride(w, n, size);
+        let first = store.first_byte(stride, n * size);
+        for j in 0..h {
+            for i in 0..w {
+                let (wx, wy) = (x.saturating_add(i as i32), y.saturating_add(j as i32));
+                let Some(rgba) = at(wx, wy) else { continue };
+                let mut offset = first + j * stride + i * n * size;
+                for c in components(format, rgba).unwrap_or_default() {
+                    let mut bytes = encode(c, type_);
+                    if store.swap_bytes {
+                        bytes.reverse();
+                    }
+                    out[offset..offset + size].copy_from_slice(&bytes);
+                    offset += size;
+                }
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A 2 × 2 window: bottom row red, green; top row blue, white (rows top first).
+    fn window() -> Vec<u8> {
+        [[0, 0, 255, 255], [255, 255, 255, 255], [255, 0, 0, 255], [0, 255, 0, 255]].concat()
+    }
+
+    #[test]
+    fn reads_bottom_up_with_the_pack_modes() {
+        let mut gl = Gl::new(2, 2);
+        let mut out = [7u8; 8];
+        gl.read_pixels((0, 0), (2, 2), GL_RGB, GL_UNSIGNED_BYTE, |_| Some(window()), &mut out[..]);
+        // Rows padded to 4 bytes: red, green, pad; blue, white would need 14 bytes.
+        assert_eq!(gl.get_error(), GL_INVALID_VALUE);
+        gl.pixel_storei(GL_PACK_ALIGNMENT, 1);
+        let mut out = [7u8; 12];
+        gl.read_pixels((0, 0), (2, 2), GL_RGB, GL_UNSIGNED_BYTE, |_| Some(window()), &mut out[..]);
+        assert_eq!(gl.get_error(), GL_NO_ERROR);
+        assert_eq!(out, [255, 0, 0, 0, 255, 0, 0, 0, 255, 255, 255, 255]);
+        let mut lum = [0u8; 1];
+        gl.read_pixels((1, 1), (1, 1), GL_LUMINANCE, GL_UNSIGNED_BYTE, |_| Some(window()), &mut lum[..]);
+        assert_eq!(lum, [255]);
+    }
+
+    #[test]
+    fn errors_and_the_outside_of_the_window() {
+        let mut gl = Gl::new(2, 2);
+        let mut out = [9u8; 64];
+        gl.read_pixels((0, 0), (-1, 1), GL_RGBA, GL_UNSIGNED_BYTE, |_| None, &mut out[..]);
+        assert_eq!(gl.get_error(), GL_INVALID_VALUE);
+        gl.read_pixels((0, 0), (1, 1), GL_RGBA, 0x1234, |_| None, &mut out[..]);
+        assert_eq!(gl.get_error(), GL_INVALID_ENUM);
+        gl.read_pixels((0, 0), (1, 1), 0x1234, 0x1234, |_| None, &mut out[..]);
+        assert_eq!(gl.get_error(), GL_INVALID_OPERATION);
+        gl.read_pixels((0, 0), (1, 1), GL_RGBA, GL_FLOAT, |_| None, &mut []);
+        assert_eq!(gl.get_error(), GL_NO_ERROR);
+        gl.read_pixels((0, 0), (1, 1), GL_DEPTH_COMPONENT, GL_FLOAT, |_| None, &mut out[..]);
+        assert_eq!(gl.get_error(), GL_INVALID_OPERATION);
+        gl.read_pixels((1, 1), (2, 1), GL_RGBA, GL_UNSIGNED_BYTE, |_| Some(window()), &mut out[..]);
+        assert_eq!(gl.get_error(), GL_NO_ERROR);
+        assert_eq!(out[..8], [255, 255, 255, 255, 9, 9, 9, 9], "outside the window: untouched");
+    }
+}
