@@ -126,6 +126,21 @@ typedef double GLclampd;
 #define GL_TEXTURE_1D 0x0DE0
 #define GL_TEXTURE_2D 0x0DE1
 #define GL_POLYGON_OFFSET_FILL 0x8037
+#define GL_POLYGON_OFFSET_LINE 0x2A02
+#define GL_POLYGON_OFFSET_POINT 0x2A01
+#define GL_POLYGON_STIPPLE 0x0B42
+#define GL_CLIP_PLANE0 0x3000
+#define GL_CLIP_PLANE1 0x3001
+#define GL_CLIP_PLANE2 0x3002
+#define GL_CLIP_PLANE3 0x3003
+#define GL_CLIP_PLANE4 0x3004
+#define GL_CLIP_PLANE5 0x3005
+#define GL_LINE_STIPPLE_PATTERN 0x0B25
+#define GL_LINE_STIPPLE_REPEAT 0x0B26
+#define GL_POLYGON_OFFSET_FACTOR 0x8038
+#define GL_POLYGON_OFFSET_UNITS 0x2A00
+#define GL_MAX_CLIP_PLANES 0x0D32
+#define GL_POLYGON_STIPPLE_BIT 0x00000010
 #define GL_RESCALE_NORMAL 0x803A
 #define GL_MULTISAMPLE 0x809D
 #define GL_LIGHT0 0x4000
@@ -449,6 +464,13 @@ GLAPI void GLAPIENTRY glAlphaFunc(GLenum func, GLclampf ref);
 GLAPI void GLAPIENTRY glFogf(GLenum pname, GLfloat param);
 GLAPI void GLAPIENTRY glFogi(GLenum pname, GLint param);
 GLAPI void GLAPIENTRY glFogfv(GLenum pname, const GLfloat *params);
+
+/* Line and polygon stipple, polygon offset, clip planes. */
+GLAPI void GLAPIENTRY glLineStipple(GLint factor, GLushort pattern);
+GLAPI void GLAPIENTRY glPolygonStipple(const GLubyte *mask);
+GLAPI void GLAPIENTRY glPolygonOffset(GLfloat factor, GLfloat units);
+GLAPI void GLAPIENTRY glClipPlane(GLenum plane, const GLdouble *equation);
+GLAPI void GLAPIENTRY glGetClipPlane(GLenum plane, GLdouble *equation);
 
 /* Feedback mode. */
 #define GL_RENDER 0x1C00
