@@ -4,8 +4,9 @@
 //! bar filled through a polygon stipple of diagonal hatching (its rows 20 to 31 empty, so that
 //! the pattern shows where the window's row 0 is). Top right: smooth points and lines,
 //! blended. Bottom left: a lit surface cut by a clip plane (given under a rotation, kept in eye
-//! space), in fog. Bottom right: a filled surface pushed back by polygon offset under its own
-//! wire outline.
+//! space), in fog, under stippled quads, a triangle strip and a polygon drawn in `GL_LINE`
+//! mode. Bottom right: a filled surface pushed back by polygon offset under its own wire
+//! outline, under a smooth stippled line strip, and a smooth line and point without blending.
 //!
 //! `cargo run --release --example stipple -- --png stipple.png`
 
@@ -120,6 +121,13 @@ fn smooth(gl: &mut Gl, x: i32, y: i32, w: i32, h: i32) {
         gl.vertex2f(-1.25 + 0.5 * f + 0.013, 0.8);
         gl.end();
     }
+    gl.point_size(9.0);
+    gl.color4f(0.9, 0.2, 0.1, 0.4);
+    gl.begin(GL_POINTS);
+    for i in 0..3 {
+        gl.vertex2f(-0.9 + 0.9 * i as f32, -0.8);
+    }
+    gl.end();
     gl.point_size(1.0);
     gl.disable(GL_POINT_SMOOTH);
     gl.enable(GL_LINE_SMOOTH);
@@ -157,6 +165,36 @@ fn clipped(gl: &mut Gl, x: i32, y: i32, w: i32, h: i32) {
     gl.disable(GL_FOG);
     gl.disable(GL_LIGHTING);
     gl.disable(GL_CLIP_PLANE0);
+    flat_view(gl, x, y, w, h);
+    gl.enable(GL_LINE_STIPPLE);
+    gl.line_stipple(1, 0x0F0F);
+    gl.polygon_mode(GL_FRONT_AND_BACK, GL_LINE);
+    gl.color3f(0.3, 0.2, 0.6);
+    gl.begin(GL_QUADS);
+    gl.vertex2f(-1.39, 0.81);
+    gl.vertex2f(-0.89, 0.81);
+    gl.vertex2f(-0.89, 1.34);
+    gl.vertex2f(-1.39, 1.34);
+    gl.vertex2f(-0.79, 0.81);
+    gl.vertex2f(-0.29, 0.81);
+    gl.vertex2f(-0.29, 1.34);
+    gl.vertex2f(-0.79, 1.34);
+    gl.end();
+    gl.begin(GL_TRIANGLE_STRIP);
+    gl.vertex2f(-0.19, 0.81);
+    gl.vertex2f(-0.19, 1.34);
+    gl.vertex2f(0.31, 0.81);
+    gl.vertex2f(0.31, 1.34);
+    gl.end();
+    gl.begin(GL_POLYGON);
+    gl.vertex2f(0.91, 1.34);
+    gl.vertex2f(0.61, 1.16);
+    gl.vertex2f(0.71, 0.81);
+    gl.vertex2f(1.11, 0.81);
+    gl.vertex2f(1.21, 1.16);
+    gl.end();
+    gl.polygon_mode(GL_FRONT_AND_BACK, GL_FILL);
+    gl.disable(GL_LINE_STIPPLE);
 }
 
 fn outlined(gl: &mut Gl, x: i32, y: i32, w: i32, h: i32) {
@@ -170,6 +208,35 @@ fn outlined(gl: &mut Gl, x: i32, y: i32, w: i32, h: i32) {
     gl.disable(GL_LIGHTING);
     gl.color3f(0.0, 0.0, 0.0);
     gl.eval_mesh2(GL_LINE, 0, 12, 0, 12);
+    flat_view(gl, x, y, w, h);
+    gl.enable(GL_BLEND);
+    gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    gl.enable(GL_LINE_SMOOTH);
+    gl.enable(GL_LINE_STIPPLE);
+    gl.line_stipple(2, 0x0F0F);
+    gl.line_width(2.0);
+    gl.color3f(0.6, 0.1, 0.3);
+    gl.begin(GL_LINE_STRIP);
+    gl.vertex2f(-1.37, 0.79);
+    gl.vertex2f(-0.81, 1.35);
+    gl.vertex2f(0.93, 0.83);
+    gl.end();
+    gl.disable(GL_LINE_STIPPLE);
+    gl.disable(GL_BLEND);
+    gl.line_width(3.0);
+    gl.begin(GL_LINES);
+    gl.vertex2f(1.01, 0.83);
+    gl.vertex2f(1.43, 1.07);
+    gl.end();
+    gl.line_width(1.0);
+    gl.disable(GL_LINE_SMOOTH);
+    gl.enable(GL_POINT_SMOOTH);
+    gl.point_size(7.0);
+    gl.begin(GL_POINTS);
+    gl.vertex2f(1.23, 1.23);
+    gl.end();
+    gl.point_size(1.0);
+    gl.disable(GL_POINT_SMOOTH);
 }
 
 fn display(gl: &mut Gl) {

@@ -56,9 +56,8 @@ fn fs_main(in: VertexOut) -> @location(0) vec4<f32> {
     return color;
 }
 
-// A smooth point's coverage at d = u² + v² with k = 1/r: Mesa 22.3's NIR pass takes
-// (1 − d)/(1 − k) where k ≥ d and 1 elsewhere (k = 1 for r = 1: a huge factor, clamped with
-// the colour as Mesa's infinite one is).
+// A smooth point's coverage at d = u² + v² with k = (1 − 1/r)²: Mesa 22.3's NIR pass takes
+// (1 − d)/(1 − k) where k ≥ d and 1 elsewhere (k < 1 for every radius).
 fn point_coverage(d: f32, k: f32) -> f32 {
-    return select(1.0, (1.0 - d) / max(1.0 - k, 1e-20), k >= d);
+    return select(1.0, (1.0 - d) / max(1.0 - k, 1e-6), k >= d);
 }

@@ -271,6 +271,20 @@ mod tests {
         assert_eq!(gl.get_error(), GL_NO_ERROR);
     }
 
+    /// GL 1.1 table 6.13: the polygon stipple group holds the mask alone; its enable belongs
+    /// to the polygon and enable groups.
+    #[test]
+    fn the_polygon_stipple_group_holds_the_mask() {
+        let mut gl = Gl::new(10, 10);
+        gl.push_attrib(GL_POLYGON_STIPPLE_BIT);
+        gl.polygon_stipple(&[0x0F; 128]);
+        gl.enable(GL_POLYGON_STIPPLE);
+        gl.pop_attrib();
+        assert_eq!(gl.raster.polygon_stipple, [u32::MAX; 32]);
+        assert_eq!(gl.is_enabled(GL_POLYGON_STIPPLE), GL_TRUE);
+        assert_eq!(gl.get_error(), GL_NO_ERROR);
+    }
+
     #[test]
     fn the_enable_group_restores_map_enables_but_not_grids() {
         let mut gl = Gl::new(10, 10);

@@ -107,6 +107,9 @@ impl Gl {
         if Caps::known(cap) {
             self.caps.set(cap, on);
             self.touch_state();
+            if cap == GL_COLOR_MATERIAL && on {
+                self.track_color_material();
+            }
         } else {
             self.set_error(GL_INVALID_ENUM);
         }

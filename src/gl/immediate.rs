@@ -144,6 +144,7 @@ impl Gl {
         }
         self.current.color = [r, g, b, a];
         self.frame.calls.push(Call::Color(self.current.color));
+        self.track_color_material();
     }
 
     /// `glColor3fv`: `v` needs 3 values.

@@ -257,6 +257,36 @@ impl Gl {
         }
         self.lighting.color_material = (face, mode);
         self.touch_state();
+        self.track_color_material();
+    }
+
+    /// While `GL_COLOR_MATERIAL` is on, the tracked material follows the current colour
+    /// (GL 1.1 §2.13.3): glColor, glEnable(GL_COLOR_MATERIAL) and glColorMaterial update it,
+    /// and it keeps the last colour once tracking stops (Mesa `_mesa_update_color_material`;
+    /// measured in feedback: red, green, then blue with tracking on, yellow after it is off,
+    /// lights the next vertex with a blue diffuse).
+    pub(crate) fn track_color_material(&mut self) {
+        if !self.caps.is_on(GL_COLOR_MATERIAL) {
+            return;
+        }
+        let color = Vec4::from_array(self.current.color);
+        let (face, mode) = self.lighting.color_material;
+        let faces: &[usize] = match face {
+            GL_FRONT => &[0],
+            GL_BACK => &[1],
+            _ => &[0, 1],
+        };
+        for &f in faces {
+            let m = &mut self.lighting.materials[f];
+            match mode {
+                GL_AMBIENT => m.ambient = color,
+                GL_DIFFUSE => m.diffuse = color,
+                GL_SPECULAR => m.specular = color,
+                GL_EMISSION => m.emission = color,
+                _ => (m.ambient, m.diffuse) = (color, color),
+            }
+        }
+        self.touch_state();
     }
 
     /// `glShadeModel`: `GL_FLAT` or `GL_SMOOTH`.

@@ -204,7 +204,8 @@ impl Assembler {
         let shader_of = |i: usize| materials.iter().rposition(|&(first, _)| first <= i).map_or(0, |k| k + 1);
         let v: Vec<ShadedVertex> = vertices.iter().enumerate().map(|(i, v)| shaders[shader_of(i)].shade(v)).collect();
         let n = v.len();
-        let mut ctx = PrimitiveContext { out: self, state, v: &v, stipple: Stipple::default() };
+        let closing_edge_first = mode != GL_POLYGON;
+        let mut ctx = PrimitiveContext { out: self, state, v: &v, stipple: Stipple::default(), closing_edge_first };
         match mode {
             GL_POINTS => (0..n).for_each(|i| ctx.point(i)),
             GL_LINES => (0..n / 2).for_each(|i| {
@@ -318,6 +319,9 @@ struct PrimitiveContext<'a, 'b> {
     state: &'b DrawState,
     v: &'b [ShadedVertex],
     stipple: Stipple,
+    /// Polygon edges in line mode start with the closing edge (triangles and quads), not the
+    /// first (`GL_POLYGON`): see [`PrimitiveContext::edges`].
+    closing_edge_first: bool,
 }
 
 impl PrimitiveContext<'_, '_> {
@@ -416,6 +420,21 @@ impl PrimitiveContext<'_, '_> {
         self.out.push(self.state, Topology::Triangles, &[a0, a1, b1, a0, b1, b0]);
     }
 
+    /// A polygon's edges in line mode, in the order Mesa's draw module strokes them, which the
+    /// line stipple shows: it splits triangles and quads into triangles and strokes each
+    /// triangle's edges from its last vertex (v2 → v0, v0 → v1, v1 → v2), restarting the
+    /// stipple at each triangle and quad; `GL_POLYGON` is stroked v0 → v1 → … → v0 with one
+    /// restart (`draw_pipe_unfilled.c`, `draw_pt_decompose.h`; measured on llvmpipe).
+    fn edges(&mut self, corners: &[Corner]) {
+        let n = corners.len();
+        self.stipple.reset();
+        let first = if self.closing_edge_first { n - 1 } else { 0 };
+        for j in 0..n {
+            let k = (first + j) % n;
+            self.line(corners[k], corners[(k + 1) % n]);
+        }
+    }
+
     /// A polygon (triangle, quad or `GL_POLYGON`): orientation, culling, face colour, flat
     /// shading, then the polygon mode of its face. In line mode only the polygon's own edges
     /// are drawn, never the diagonals used to fill it.
@@ -442,11 +461,7 @@ impl PrimitiveContext<'_, '_> {
         }
         match mode {
             GL_POINT => corners.iter().for_each(|&c| self.point_at(c)),
-            GL_LINE => {
-                for k in 0..corners.len() {
-                    self.line(corners[k], corners[(k + 1) % corners.len()]);
-                }
-            }
+            GL_LINE => self.edges(&corners),
             _ => {
                 let tris: Vec<Corner> =
                     (1..corners.len() - 1).flat_map(|k| [corners[0], corners[k], corners[k + 1]]).collect();
@@ -580,6 +595,33 @@ mod tests {
         for (v, e) in list.vertices.iter().zip(expected) {
             assert!(v.color.iter().zip(e).all(|(a, b)| (a - b).abs() < 1e-6), "{:?} vs {e:?}", v.color);
         }
+    }
+
+    /// GL 1.1 §2.13.3: the tracked material keeps the last colour when tracking stops. Real
+    /// Mesa's feedback: red, green, then blue (diffuse 0, 0, 1 after glDisable).
+    #[test]
+    fn the_tracked_material_keeps_the_last_colour() {
+        let mut gl = Gl::new(16, 16);
+        gl.enable(GL_LIGHTING);
+        gl.enable(GL_LIGHT0);
+        gl.normal3f(0.0, 0.0, 1.0);
+        gl.enable(GL_COLOR_MATERIAL);
+        gl.begin(GL_POINTS);
+        gl.color3f(1.0, 0.0, 0.0);
+        gl.vertex2f(0.0, 0.0);
+        gl.color3f(0.0, 1.0, 0.0);
+        gl.vertex2f(0.1, 0.0);
+        gl.end();
+        gl.color3f(0.0, 0.0, 1.0);
+        gl.disable(GL_COLOR_MATERIAL);
+        gl.color3f(1.0, 1.0, 0.0);
+        gl.begin(GL_POINTS);
+        gl.vertex2f(0.2, 0.0);
+        gl.end();
+        let list = assemble(&gl.take_frame());
+        let colours: Vec<[f32; 4]> = list.vertices.iter().map(|v| v.color).collect();
+        // Ambient 0.2 · tracked colour + diffuse tracked colour, clamped to 1.
+        assert_eq!(colours, [[1.0, 0.0, 0.0, 1.0], [0.0, 1.0, 0.0, 1.0], [0.0, 0.0, 1.0, 1.0]]);
     }
 
     #[test]

@@ -5,9 +5,12 @@
 //! fade; without it the quad's covered pixels are drawn opaque.
 //!
 //! - A point of size s is a square of half-side r = s/2 (r = 1 for s ≤ 2) around its centre,
-//!   with (u, v) running over [−1, 1]² and k = 1/r: a fragment with d = u² + v² > 1 is
-//!   discarded, the others get coverage (1 − d)/(1 − k) where d ≤ k, else 1 (Mesa 22.3's
-//!   selection; with an opaque colour every kept fragment ends opaque, as measured).
+//!   with (u, v) running over [−1, 1]² and k = (1 − 1/r)², the squared distance one pixel in
+//!   from the edge: a fragment with d = u² + v² > 1 is discarded, the others get coverage
+//!   (1 − d)/(1 − k) where d ≤ k, else 1. That selection (Mesa 22.3's NIR pass) makes the
+//!   inner disc more than opaque and the outer ring 1: measured with alpha 0.2 at size 9,
+//!   coverage 2.47 one half pixel from the centre, 1.725 at d = 0.32, 1 at d = 0.62, as
+//!   (1 − d)/(1 − k) gives. With an opaque colour every kept fragment ends opaque.
 //! - A line of width w is a rectangle half as wide as h = 1 (w ≤ 1) or w/2 + 1/2, extended by
 //!   half a pixel past each end; across it x runs over [−h, h], along it z over [−l, l] with
 //!   l = L/2 + 1/2 for a length L ≥ 1 pixel (l = L below): coverage = sat(h − |x|)·sat(l − |z|).
@@ -22,10 +25,11 @@ pub(crate) fn point_quad(c: Corner, size: f32, [_, _, vw, vh]: [i32; 4]) -> Opti
     }
     let centre = c.clip / c.clip.w;
     let r = if size <= 2.0 { 1.0 } else { 0.5 * size };
+    let k = (1.0 - 1.0 / r) * (1.0 - 1.0 / r);
     let (sx, sy) = (2.0 * r / vw.max(1) as f32, 2.0 * r / vh.max(1) as f32);
     let corner = |u: f32, v: f32| Corner {
         clip: Vec4::new(centre.x + u * sx, centre.y + v * sy, centre.z, 1.0),
-        aa: Vec4::new(u, v, 1.0 / r, 1.0),
+        aa: Vec4::new(u, v, k, 1.0),
         ..c
     };
     let q = [corner(-1.0, -1.0), corner(1.0, -1.0), corner(1.0, 1.0), corner(-1.0, 1.0)];
@@ -89,8 +93,8 @@ mod tests {
     fn small_points_have_a_radius_of_one_pixel() {
         let q = point_quad(at(0.0, 0.0), 1.0, [0, 0, 20, 20]).unwrap();
         // r = 1 pixel = 0.1 in NDC at 20 pixels.
-        assert!(q.iter().all(|c| (c.clip.x.abs() - 0.1).abs() < 1e-6 && c.aa.z == 1.0));
+        assert!(q.iter().all(|c| (c.clip.x.abs() - 0.1).abs() < 1e-6 && c.aa.z == 0.0));
         let q = point_quad(at(0.0, 0.0), 8.0, [0, 0, 20, 20]).unwrap();
-        assert!(q.iter().all(|c| (c.clip.x.abs() - 0.4).abs() < 1e-6 && c.aa.z == 0.25));
+        assert!(q.iter().all(|c| (c.clip.x.abs() - 0.4).abs() < 1e-6 && c.aa.z == 0.5625));
     }
 }

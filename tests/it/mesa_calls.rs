@@ -176,6 +176,8 @@ fn enum_value(token: &str) -> u32 {
         ("GL_FRONT", GL_FRONT),
         ("GL_DIFFUSE", GL_DIFFUSE),
         ("GL_SHININESS", GL_SHININESS),
+        ("GL_POLYGON_STIPPLE", GL_POLYGON_STIPPLE),
+        ("GL_POLYGON_STIPPLE_BIT", GL_POLYGON_STIPPLE_BIT),
     ];
     if let Some((_, v)) = named.iter().find(|(n, _)| *n == token) {
         return *v;
@@ -443,6 +445,7 @@ impl Runner {
             "line_stipple" => gl.line_stipple(a.int(), a.int() as u16),
             "polygon_offset" => gl.polygon_offset(a.f(), a.f()),
             "clip_plane" => gl.clip_plane(a.e(), &a.array()),
+            "polygon_stipple" => gl.polygon_stipple(&a.floats().iter().map(|&b| b as u8).collect::<Vec<u8>>()),
             "get_clip_plane" => {
                 let mut eq = [0.0f64; 4];
                 gl.get_clip_plane(a.e(), &mut eq);

@@ -499,6 +499,13 @@ GLAPI void GLAPIENTRY glFogf(GLenum pname, GLfloat param);
 GLAPI void GLAPIENTRY glFogi(GLenum pname, GLint param);
 GLAPI void GLAPIENTRY glFogfv(GLenum pname, const GLfloat *params);
 
+/* Line and polygon stipple, polygon offset, clip planes. */
+GLAPI void GLAPIENTRY glLineStipple(GLint factor, GLushort pattern);
+GLAPI void GLAPIENTRY glPolygonStipple(const GLubyte *mask);
+GLAPI void GLAPIENTRY glPolygonOffset(GLfloat factor, GLfloat units);
+GLAPI void GLAPIENTRY glClipPlane(GLenum plane, const GLdouble *equation);
+GLAPI void GLAPIENTRY glGetClipPlane(GLenum plane, GLdouble *equation);
+
 /* Feedback mode. */
 #define GL_RENDER 0x1C00
 #define GL_FEEDBACK 0x1C01
@@ -646,12 +653,6 @@ GLAPI void GLAPIENTRY glTexGendv(GLenum coord, GLenum pname, const GLdouble *par
 GLAPI void GLAPIENTRY glGetTexGenfv(GLenum coord, GLenum pname, GLfloat *params);
 GLAPI void GLAPIENTRY glGetTexGeniv(GLenum coord, GLenum pname, GLint *params);
 
-/* Rasterisation modes. */
-GLAPI void GLAPIENTRY glLineStipple(GLint factor, GLushort pattern);
-GLAPI void GLAPIENTRY glPolygonStipple(const GLubyte *mask);
-GLAPI void GLAPIENTRY glPolygonOffset(GLfloat factor, GLfloat units);
-GLAPI void GLAPIENTRY glClipPlane(GLenum plane, const GLdouble *equation);
-GLAPI void GLAPIENTRY glGetClipPlane(GLenum plane, GLdouble *equation);
 
 #ifdef __cplusplus
 }

@@ -71,7 +71,8 @@ static const struct enum_name enums[] = {
     E(GL_CLIP_PLANE2), E(GL_CLIP_PLANE3), E(GL_CLIP_PLANE4), E(GL_CLIP_PLANE5),
     E(GL_LINE_STIPPLE_PATTERN), E(GL_LINE_STIPPLE_REPEAT), E(GL_POLYGON_OFFSET_FACTOR),
     E(GL_POLYGON_OFFSET_UNITS), E(GL_MAX_CLIP_PLANES), E(GL_LINE_BIT), E(GL_POLYGON_BIT),
-    E(GL_TRANSFORM_BIT), E(GL_FRONT), E(GL_DIFFUSE), E(GL_SHININESS),
+    E(GL_TRANSFORM_BIT), E(GL_FRONT), E(GL_DIFFUSE), E(GL_SHININESS), E(GL_POLYGON_STIPPLE),
+    E(GL_POLYGON_STIPPLE_BIT),
     { NULL, 0 }
 };
 
@@ -619,6 +620,14 @@ static void run_call(const char *c)
         if (given < 4) die("clip_plane needs 4 values", NULL);
         glClipPlane(plane, eq);
         free(eq);
+    } else if (!strcmp(c, "polygon_stipple")) {
+        long given;
+        float *f = arg_array(0, 128, &given);
+        GLubyte mask[128];
+        if (given < 128) die("polygon_stipple needs 128 bytes", NULL);
+        for (int i = 0; i < 128; i++) mask[i] = (GLubyte)f[i];
+        free(f);
+        glPolygonStipple(mask);
     } else if (!strcmp(c, "get_clip_plane")) {
         GLdouble eq[4] = { 0, 0, 0, 0 };
         glGetClipPlane(arg_enum(), eq);

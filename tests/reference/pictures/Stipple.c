@@ -2,9 +2,11 @@
 // curve drawn with four line stipples, separate stippled GL_LINES (each restarts the pattern)
 // and a wide stippled loop around a bar filled through a polygon stipple of diagonal hatching
 // (its rows 20 to 31 empty, so that the pattern shows where the window's row 0 is). Top right:
-// smooth points and lines, blended. Bottom left: a lit surface cut by a clip plane (given
-// under a rotation, kept in eye space), in fog. Bottom right: a filled surface pushed back by
-// polygon offset under its own wire outline.
+// smooth points (opaque and translucent) and lines, blended. Bottom left: a lit surface cut by
+// a clip plane (given under a rotation, kept in eye space), in fog, under stippled quads, a
+// triangle strip and a polygon drawn in GL_LINE mode. Bottom right: a filled surface pushed
+// back by polygon offset under its own wire outline, under a smooth stippled line strip, and a
+// smooth line and point without blending.
 #include "gl.h"
 
 static GLfloat curve[4][3] = {{-1.3, -0.2, 0.0}, {-0.5, 1.0, 0.0}, {0.5, -1.0, 0.0}, {1.3, 0.2, 0.0}};
@@ -111,6 +113,12 @@ static void smooth(int x, int y, int w, int h)
         glVertex2f(-1.25f + 0.5f * i + 0.013f, 0.8f);
         glEnd();
     }
+    glPointSize(9.0);
+    glColor4f(0.9, 0.2, 0.1, 0.4);
+    glBegin(GL_POINTS);
+    for (int i = 0; i < 3; i++)
+        glVertex2f(-0.9f + 0.9f * i, -0.8f);
+    glEnd();
     glPointSize(1.0);
     glDisable(GL_POINT_SMOOTH);
     glEnable(GL_LINE_SMOOTH);
@@ -148,6 +156,36 @@ static void clipped(int x, int y, int w, int h)
     glDisable(GL_FOG);
     glDisable(GL_LIGHTING);
     glDisable(GL_CLIP_PLANE0);
+    flat_view(x, y, w, h);
+    glEnable(GL_LINE_STIPPLE);
+    glLineStipple(1, 0x0F0F);
+    glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+    glColor3f(0.3, 0.2, 0.6);
+    glBegin(GL_QUADS);
+    glVertex2f(-1.39, 0.81);
+    glVertex2f(-0.89, 0.81);
+    glVertex2f(-0.89, 1.34);
+    glVertex2f(-1.39, 1.34);
+    glVertex2f(-0.79, 0.81);
+    glVertex2f(-0.29, 0.81);
+    glVertex2f(-0.29, 1.34);
+    glVertex2f(-0.79, 1.34);
+    glEnd();
+    glBegin(GL_TRIANGLE_STRIP);
+    glVertex2f(-0.19, 0.81);
+    glVertex2f(-0.19, 1.34);
+    glVertex2f(0.31, 0.81);
+    glVertex2f(0.31, 1.34);
+    glEnd();
+    glBegin(GL_POLYGON);
+    glVertex2f(0.91, 1.34);
+    glVertex2f(0.61, 1.16);
+    glVertex2f(0.71, 0.81);
+    glVertex2f(1.11, 0.81);
+    glVertex2f(1.21, 1.16);
+    glEnd();
+    glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+    glDisable(GL_LINE_STIPPLE);
 }
 
 static void outlined(int x, int y, int w, int h)
@@ -162,6 +200,35 @@ static void outlined(int x, int y, int w, int h)
     glDisable(GL_LIGHTING);
     glColor3f(0.0, 0.0, 0.0);
     glEvalMesh2(GL_LINE, 0, 12, 0, 12);
+    flat_view(x, y, w, h);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    glEnable(GL_LINE_SMOOTH);
+    glEnable(GL_LINE_STIPPLE);
+    glLineStipple(2, 0x0F0F);
+    glLineWidth(2.0);
+    glColor3f(0.6, 0.1, 0.3);
+    glBegin(GL_LINE_STRIP);
+    glVertex2f(-1.37, 0.79);
+    glVertex2f(-0.81, 1.35);
+    glVertex2f(0.93, 0.83);
+    glEnd();
+    glDisable(GL_LINE_STIPPLE);
+    glDisable(GL_BLEND);
+    glLineWidth(3.0);
+    glBegin(GL_LINES);
+    glVertex2f(1.01, 0.83);
+    glVertex2f(1.43, 1.07);
+    glEnd();
+    glLineWidth(1.0);
+    glDisable(GL_LINE_SMOOTH);
+    glEnable(GL_POINT_SMOOTH);
+    glPointSize(7.0);
+    glBegin(GL_POINTS);
+    glVertex2f(1.23, 1.23);
+    glEnd();
+    glPointSize(1.0);
+    glDisable(GL_POINT_SMOOTH);
 }
 
 void Reshape(int w, int h) {}
