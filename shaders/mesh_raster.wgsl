@@ -218,25 +218,22 @@ fn face_colour(front: vec4<f32>, back: vec4<f32>, facing: bool) -> vec4<f32> {
     return front;
 }
 
-// The face's colour through texturing and fog (the caller applies the alpha test).
+// The face's colour through texturing, fog and the alpha test (a failing fragment is
+// discarded here: WGSL allows it in a function the fragment stage calls).
 fn shade(front: vec4<f32>, back: vec4<f32>, facing: bool, tex: vec4<f32>, fog: f32) -> vec4<f32> {
-    return fragment_ops(face_colour(front, back, facing), tex, fog);
+    let color = fragment_ops(face_colour(front, back, facing), tex, fog);
+    if env.alpha_func != 0u && !alpha_passes(color.a) {
+        discard;
+    }
+    return color;
 }
 
 @fragment
 fn fs_smooth(in: Smooth, @builtin(front_facing) facing: bool) -> @location(0) vec4<f32> {
-    let color = shade(in.front, in.back, facing, in.tex, in.fog);
-    if env.alpha_func != 0u && !alpha_passes(color.a) {
-        discard;
-    }
-    return color;
+    return shade(in.front, in.back, facing, in.tex, in.fog);
 }
 
 @fragment
 fn fs_flat(in: Flat, @builtin(front_facing) facing: bool) -> @location(0) vec4<f32> {
-    let color = shade(in.front, in.back, facing, in.tex, in.fog);
-    if env.alpha_func != 0u && !alpha_passes(color.a) {
-        discard;
-    }
-    return color;
+    return shade(in.front, in.back, facing, in.tex, in.fog);
 }
