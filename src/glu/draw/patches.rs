@@ -12,9 +12,7 @@ use crate::glu::model::object::NurbsObject;
 
 /// Draws the patches through the GL evaluators, in the object's display mode.
 pub(crate) fn render_patches(gl: &mut Gl, obj: &NurbsObject, surface: &Surface, patches: &[PatchGrid]) {
-    gl.push_attrib(GL_EVAL_BIT);
-    let saved_mode = gl.polygon_modes();
-    gl.polygon_mode(GL_FRONT_AND_BACK, GL_FILL);
+    let saved_mode = save_polygon_mode(gl);
     for patch in patches {
         match obj.props.display_mode {
             GLU_OUTLINE_PATCH => outline_patch(gl, surface, patch),
@@ -23,13 +21,27 @@ pub(crate) fn render_patches(gl: &mut Gl, obj: &NurbsObject, surface: &Surface, 
             _ => render_patch(gl, surface, patch, GL_FILL),
         }
     }
+    restore_polygon_mode(gl, saved_mode);
+}
+
+/// GLU's `bgnmap2f` in renderer mode: `glPushAttrib(GL_EVAL_BIT)` and the polygon mode saved,
+/// then filled polygons (`polymode(N_MESHFILL)` from `Backend::bgnsurf`).
+pub(crate) fn save_polygon_mode(gl: &mut Gl) -> [GLenum; 2] {
+    gl.push_attrib(GL_EVAL_BIT);
+    let saved = gl.polygon_modes();
+    gl.polygon_mode(GL_FRONT_AND_BACK, GL_FILL);
+    saved
+}
+
+/// GLU's `endmap2f`: the attributes popped and the polygon mode put back.
+pub(crate) fn restore_polygon_mode(gl: &mut Gl, saved: [GLenum; 2]) {
     gl.pop_attrib();
-    gl.polygon_mode(GL_FRONT, saved_mode[0]);
-    gl.polygon_mode(GL_BACK, saved_mode[1]);
+    gl.polygon_mode(GL_FRONT, saved[0]);
+    gl.polygon_mode(GL_BACK, saved[1]);
 }
 
 /// `glMap2f` and `glEnable` for every map, restricted to the patch.
-fn load_patch(gl: &mut Gl, surface: &Surface, patch: &PatchGrid) {
+pub(crate) fn load_patch(gl: &mut Gl, surface: &Surface, patch: &PatchGrid) {
     let (u, v) = (patch.u, patch.v);
     for map in surface.attributes.iter().chain([&surface.pos]) {
         let Some(points) = map.on(u, v) else { continue };

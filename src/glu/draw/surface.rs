@@ -1,7 +1,7 @@
 //! Surfaces (`gluEndSurface`): culling, the patches and their grids, then the trimmed or the
 //! untrimmed way, through GL calls or the callbacks.
 
-use super::{patches, tessellate, trimmed};
+use super::{patches, sliced, tessellate, trimmed};
 use crate::gl::Gl;
 use crate::glu::consts::*;
 use crate::glu::evaluation::culling::culled;
@@ -27,6 +27,15 @@ pub(crate) fn draw_surface(gl: &mut Gl, obj: &mut NurbsObject, def: &SurfaceDef)
     let tessellate = obj.props.nurbs_mode == GLU_NURBS_TESSELLATOR;
     if !def.loops.is_empty() {
         return trimmed::draw_trimmed(gl, obj, &surface, &def.loops, &sampler, tessellate);
+    }
+    if obj.props.sampling_method != GLU_DOMAIN_DISTANCE && obj.props.display_mode != GLU_OUTLINE_PATCH {
+        if let Some(sliced) = sliced::slice_surface(obj, &surface) {
+            return if tessellate {
+                sliced::tessellate_sliced(gl, obj, &surface, &sliced)
+            } else {
+                sliced::render_sliced(gl, &surface, &sliced)
+            };
+        }
     }
     let patches = drawable_patches(obj, &surface, &sampler);
     if tessellate {

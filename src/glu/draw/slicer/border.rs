@@ -1,0 +1,119 @@
+//! The border of an untrimmed patch as GLU samples it: a counter-clockwise loop of four sides
+//! (`Subdivider::makeBorderTrim`), each cut into 1 + ⌊length/rate⌋ equal steps at its own
+//! rate (`ArcTessellator::pwl_bottom`, `pwl_right`, `pwl_top`, `pwl_left` in
+//! `internals/arctess.cc`). The points are accumulated step by step in `f32` from the side's
+//! start, and the last is the side's end exactly, as GLU does.
+
+use crate::glu::evaluation::sampling::MAX_SEGMENTS;
+
+/// A rectangle of the domain as a loop of four sampled sides, each from its first corner to
+/// the next: bottom (u increasing at v0), right (v increasing at u1), top (u decreasing at v1)
+/// and left (v decreasing at u0).
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct RectLoop {
+    pub bottom: Vec<[f32; 2]>,
+    pub right: Vec<[f32; 2]>,
+    pub top: Vec<[f32; 2]>,
+    pub left: Vec<[f32; 2]>,
+}
+
+/// The sampling rates of the four sides (GLU `Subdivider::tessellate`'s arguments).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct SideRates {
+    pub bottom: f32,
+    pub right: f32,
+    pub top: f32,
+    pub left: f32,
+}
+
+impl RectLoop {
+    /// The border of [u0, u1] × [v0, v1] sampled at `rates`.
+    pub fn new((u0, u1): (f32, f32), (v0, v1): (f32, f32), rates: SideRates) -> Self {
+        let bottom = side(u0, u1, rates.bottom).into_iter().map(|u| [u, v0]).collect();
+        let right = side(v0, v1, rates.right).into_iter().map(|v| [u1, v]).collect();
+        let top = side_down(u1, u0, rates.top).into_iter().map(|u| [u, v1]).collect();
+        let left = side_down(v1, v0, rates.left).into_iter().map(|v| [u0, v]).collect();
+        Self { bottom, right, top, left }
+    }
+
+    /// The lower-left corner.
+    pub fn min(&self) -> [f32; 2] {
+        [self.left[0][0], self.bottom[0][1]]
+    }
+
+    /// The upper-right corner.
+    pub fn max(&self) -> [f32; 2] {
+        [self.right[0][0], self.top[0][1]]
+    }
+}
+
+/// GLU's `steps_function`: max(1, 1 + ⌊(large − small)/rate⌋), kept within what can be drawn.
+fn steps(large: f32, small: f32, rate: f32) -> usize {
+    let n = ((large - small) / rate).trunc();
+    if n.is_finite() && n >= 0.0 {
+        (1 + n as usize).min(MAX_SEGMENTS)
+    } else if n.is_nan() || n < 0.0 {
+        1
+    } else {
+        MAX_SEGMENTS
+    }
+}
+
+/// An increasing side from `a` to `b` (`pwl_bottom`, `pwl_right`): a + i·step accumulated,
+/// then `b` itself.
+fn side(a: f32, b: f32, rate: f32) -> Vec<f32> {
+    let n = steps(b, a, rate);
+    let step = (b - a) / n as f32;
+    let mut out = Vec::with_capacity(n + 1);
+    let mut x = a;
+    for _ in 0..n {
+        out.push(x);
+        x += step;
+    }
+    out.push(b);
+    out
+}
+
+/// A decreasing side from `a` down to `b` (`pwl_top`, `pwl_left`): GLU fills it from the end,
+/// accumulating from `b` upwards, and puts `a` itself first.
+fn side_down(a: f32, b: f32, rate: f32) -> Vec<f32> {
+    let n = steps(a, b, rate);
+    let step = (a - b) / n as f32;
+    let mut out = vec![0.0; n + 1];
+    let mut x = b;
+    for slot in out[1..].iter_mut().rev() {
+        *slot = x;
+        x += step;
+    }
+    out[0] = a;
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn sides_run_corner_to_corner_with_exact_ends() {
+        let rates = SideRates { bottom: 0.3, right: 0.5, top: 1.0, left: 0.26 };
+        let r = RectLoop::new((0.0, 1.0), (0.0, 2.0), rates);
+        assert_eq!(r.bottom.len(), 5); // 1 + ⌊1/0.3⌋ = 4 steps
+        assert_eq!(r.bottom[0], [0.0, 0.0]);
+        assert_eq!(r.bottom[4], [1.0, 0.0]);
+        assert_eq!(r.right.len(), 6);
+        assert_eq!(r.top.len(), 3);
+        assert_eq!(r.top[0], [1.0, 2.0]);
+        assert_eq!(r.top[2], [0.0, 2.0]);
+        assert_eq!(r.left[0], [0.0, 2.0]);
+        assert_eq!(*r.left.last().unwrap(), [0.0, 0.0]);
+        assert_eq!((r.min(), r.max()), ([0.0, 0.0], [1.0, 2.0]));
+    }
+
+    #[test]
+    fn a_zero_or_absurd_rate_does_not_panic() {
+        let rates = SideRates { bottom: 0.0, right: f32::NAN, top: -1.0, left: f32::INFINITY };
+        let r = RectLoop::new((0.0, 1.0), (0.0, 1.0), rates);
+        assert_eq!(r.bottom.len(), MAX_SEGMENTS + 1);
+        assert_eq!((r.right.len(), r.top.len(), r.left.len()), (2, 2, 2));
+    }
+}
