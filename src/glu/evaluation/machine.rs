@@ -110,6 +110,39 @@ impl PatchMachine {
     }
 }
 
+/// One map's Bezier piece over [u1, u2] as GLU's curve evaluator holds it
+/// (`curveEvalMachine`, `interface/incurveeval.cc`).
+#[derive(Clone, Debug)]
+pub(crate) struct CurveMachine {
+    k: usize,
+    u: (f32, f32),
+    order: usize,
+    points: Vec<f32>,
+}
+
+impl CurveMachine {
+    /// The machine for control points `points`, or `None` for orders GLU refuses.
+    pub fn new(points: &[f64], k: usize, order: usize, u: (f32, f32)) -> Option<Self> {
+        let fits = (1..=MAX_ORDER).contains(&order) && (1..=4).contains(&k) && points.len() >= order * k;
+        fits.then(|| Self { k, u, order, points: points[..order * k].iter().map(|&c| c as f32).collect() })
+    }
+
+    /// The raw k values at u (GLU `inDoDomain1`); `None` on an empty piece.
+    pub fn values(&self, u: f32) -> Option<[f32; 4]> {
+        if self.u.1 == self.u.0 {
+            return None;
+        }
+        let (c, _) = coefficients(self.order, (u - self.u.0) / (self.u.1 - self.u.0));
+        let mut out = [0.0f32; 4];
+        for (j, slot) in out.iter_mut().enumerate().take(self.k) {
+            for row in 0..self.order {
+                *slot += c[row] * self.points[row * self.k + j];
+            }
+        }
+        Some(out)
+    }
+}
+
 /// (x, y, z), divided by w when the map is rational.
 fn project(p: &[f32; 4], k: usize) -> [f32; 3] {
     if k == 4 {
