@@ -6,11 +6,13 @@
 //! the head of its list); in renderer mode each patch is drawn as it comes.
 
 use super::patches::{load_patch, restore_polygon_mode, save_polygon_mode};
-use super::slicer::border::{RectLoop, SideRates};
 use super::slicer::output::{render_pieces, tessellate_pieces};
+use super::slicer::split::{leaves, Part};
 use super::slicer::vertex::PatchVertices;
-use super::slicer::{slice_rect, Interior, Piece};
+use super::slicer::{slice_rect, Grid, Piece};
+use crate::gl::consts::*;
 use crate::gl::Gl;
+use crate::glu::consts::*;
 use crate::glu::evaluation::patch_steps::{patch_steps, Net};
 use crate::glu::evaluation::surface::{PatchGrid, Surface};
 use crate::glu::model::object::NurbsObject;
@@ -22,50 +24,69 @@ pub(crate) struct SlicedPatch {
     pub pieces: Vec<Piece>,
 }
 
-/// Every patch of the surface, u outer, sliced as GLU slices it; `None` when some patch is
-/// sampled so finely that GLU would bisect it first (`Subdivider::samplingSplit`), which this
-/// path does not reproduce.
+/// Every patch of the surface, u outer, sliced as GLU slices it (bisected first where GLU's
+/// sampling subdivision would, [`leaves`]).
 pub(crate) fn slice_surface(obj: &NurbsObject, surface: &Surface) -> Option<Vec<SlicedPatch>> {
     let matrix = if obj.props.object_space() { Mat4::IDENTITY } else { obj.matrices.sampling() };
     let p = &surface.pos.patches;
     let mut out = Vec::new();
-    for (a, &u) in p.uintervals.iter().enumerate() {
-        for (b, &v) in p.vintervals.iter().enumerate() {
-            let points = p.patch(a, b)?;
-            let net = Net { points, k: surface.k, orders: (p.uorder, p.vorder) };
+    for &u in &p.uintervals {
+        for &v in &p.vintervals {
+            let steps = |su: (f32, f32), sv: (f32, f32)| {
+                let range = |r: (f32, f32)| (f64::from(r.0), f64::from(r.1));
+                let points = surface.pos.on(range(su), range(sv)).unwrap_or_default();
+                let net = Net { points: &points, k: surface.k, orders: (p.uorder, p.vorder) };
+                patch_steps(&obj.props, &matrix, &net, (su.1 - su.0, sv.1 - sv.0))
+            };
             let (u32_, v32) = ((u.0 as f32, u.1 as f32), (v.0 as f32, v.1 as f32));
-            let [s, t] = patch_steps(&obj.props, &matrix, &net, (u32_.1 - u32_.0, v32.1 - v32.0));
-            if s.needs_split || t.needs_split {
-                return None;
-            }
-            // GLU `Subdivider::tessellation`: right and left sides at the v sidesteps, top and
-            // bottom at the u sidesteps (index 1 where the other parameter is largest).
-            let rates = SideRates { bottom: s.side[0], right: t.side[1], top: s.side[1], left: t.side[0] };
-            let rect = RectLoop::new(u32_, v32, rates);
-            let interior = Interior { du: s.step, dv: t.step, ulinear: p.uorder == 2, vlinear: p.vorder == 2 };
-            let pieces = slice_rect(&rect, interior);
+            let linear = (p.uorder == 2, p.vorder == 2);
+            let pieces = leaves(u32_, v32, linear, &steps)
+                .into_iter()
+                .flat_map(|part| match part {
+                    Part::Degenerate(t) => vec![Piece::Fan(t.to_vec())],
+                    Part::Leaf(rect, interior) => slice_rect(&rect, interior),
+                })
+                .collect();
             out.push(SlicedPatch { grid: PatchGrid { u, v, nu: 0, nv: 0 }, pieces });
         }
     }
     Some(out)
 }
 
+/// The patch's grid block on GLU's domain-distance fast path: `surfgrid(u0, u1, nu, v1, v0,
+/// nv)`, v from the top line down.
+pub(crate) fn glu_grid(patch: &PatchGrid) -> Grid {
+    let (u, v) = ((patch.u.0 as f32, patch.u.1 as f32), (patch.v.1 as f32, patch.v.0 as f32));
+    Grid { u, nu: patch.nu, v, nv: patch.nv }
+}
+
+/// The fast path's patches, each one grid block.
+pub(crate) fn grid_patches(patches: &[PatchGrid]) -> Vec<SlicedPatch> {
+    patches.iter().map(|p| SlicedPatch { grid: *p, pieces: vec![Piece::Grid(glu_grid(p))] }).collect()
+}
+
 /// The patches through the callbacks, last patch first.
 pub(crate) fn tessellate_sliced(gl: &mut Gl, obj: &mut NurbsObject, surface: &Surface, patches: &[SlicedPatch]) {
+    let wire = obj.props.display_mode == GLU_OUTLINE_POLYGON;
     for patch in patches.iter().rev() {
         if let Some(maps) = PatchVertices::new(obj, surface, patch.grid.u, patch.grid.v) {
-            tessellate_pieces(gl, obj, &maps, &patch.pieces);
+            tessellate_pieces(gl, obj, &maps, &patch.pieces, wire);
         }
     }
 }
 
 /// The patches through the GL evaluators, each after its maps, in a `GL_EVAL_BIT` push with
-/// the polygon mode saved (GLU `bgnmap2f`/`endmap2f`).
-pub(crate) fn render_sliced(gl: &mut Gl, surface: &Surface, patches: &[SlicedPatch]) {
+/// the polygon mode saved (GLU `bgnmap2f`/`endmap2f`). `GLU_OUTLINE_POLYGON` draws in
+/// `GL_LINE` polygon mode (`Backend::bgnsurf`) with grid blocks as line strips.
+pub(crate) fn render_sliced(gl: &mut Gl, obj: &NurbsObject, surface: &Surface, patches: &[SlicedPatch]) {
     let saved = save_polygon_mode(gl);
+    let wire = obj.props.display_mode == GLU_OUTLINE_POLYGON;
+    if wire {
+        gl.polygon_mode(GL_FRONT_AND_BACK, GL_LINE);
+    }
     for patch in patches {
         load_patch(gl, surface, &patch.grid);
-        render_pieces(gl, &patch.pieces);
+        render_pieces(gl, &patch.pieces, wire);
     }
     restore_polygon_mode(gl, saved);
 }

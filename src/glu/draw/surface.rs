@@ -33,13 +33,15 @@ pub(crate) fn draw_surface(gl: &mut Gl, obj: &mut NurbsObject, def: &SurfaceDef)
             return if tessellate {
                 sliced::tessellate_sliced(gl, obj, &surface, &sliced)
             } else {
-                sliced::render_sliced(gl, &surface, &sliced)
+                sliced::render_sliced(gl, obj, &surface, &sliced)
             };
         }
     }
     let patches = drawable_patches(obj, &surface, &sampler);
     if tessellate {
         tessellate::tessellate_patches(gl, obj, &surface, &patches);
+    } else if obj.props.display_mode != GLU_OUTLINE_PATCH {
+        sliced::render_sliced(gl, obj, &surface, &sliced::grid_patches(&patches));
     } else {
         patches::render_patches(gl, obj, &surface, &patches);
     }

@@ -6,11 +6,13 @@
 //! begin, vertex and end callbacks the grids are evaluated on rayon's workers, a batch ahead of
 //! the strips issued on this thread; this is the path benchmarked as `nurbs_untrimmed`.
 
+use super::sliced::glu_grid;
 use super::slicer::output::tessellate_pieces;
 use super::slicer::vertex::PatchVertices;
-use super::slicer::{Grid, Piece};
+use super::slicer::Piece;
 use crate::gl::consts::*;
 use crate::gl::Gl;
+use crate::glu::consts::*;
 use crate::glu::evaluation::machine::PatchMachine;
 use crate::glu::evaluation::surface::{PatchGrid, Surface};
 use crate::glu::model::callbacks::StripSink;
@@ -19,21 +21,11 @@ use crate::glu::model::object::NurbsObject;
 /// Issues every patch, last first.
 pub(crate) fn tessellate_patches(gl: &mut Gl, obj: &mut NurbsObject, surface: &Surface, patches: &[PatchGrid]) {
     let patches: Vec<PatchGrid> = patches.iter().rev().copied().collect();
-    if obj.callbacks.sinks().is_some() {
+    if obj.callbacks.sinks().is_some() && obj.props.display_mode != GLU_OUTLINE_POLYGON {
         return tessellate_patches_in_parallel(gl, obj, surface, &patches);
     }
     for patch in &patches {
         tessellate_patch(gl, obj, surface, patch);
-    }
-}
-
-/// The patch's grid block as GLU draws it: `surfgrid(u0, u1, nu, v1, v0, nv)`.
-fn glu_grid(patch: &PatchGrid) -> Grid {
-    Grid {
-        u: (patch.u.0 as f32, patch.u.1 as f32),
-        nu: patch.nu,
-        v: (patch.v.1 as f32, patch.v.0 as f32),
-        nv: patch.nv,
     }
 }
 
@@ -154,7 +146,8 @@ fn issue_batch(
 /// The grid block of one patch through the callbacks, vertex by vertex.
 fn tessellate_patch(gl: &mut Gl, obj: &mut NurbsObject, surface: &Surface, patch: &PatchGrid) {
     if let Some(maps) = PatchVertices::new(obj, surface, patch.u, patch.v) {
-        tessellate_pieces(gl, obj, &maps, &[Piece::Grid(glu_grid(patch))]);
+        let wire = obj.props.display_mode == GLU_OUTLINE_POLYGON;
+        tessellate_pieces(gl, obj, &maps, &[Piece::Grid(glu_grid(patch))], wire);
     }
 }
 

@@ -17,25 +17,7 @@ pub(crate) struct RectLoop {
     pub left: Vec<[f32; 2]>,
 }
 
-/// The sampling rates of the four sides (GLU `Subdivider::tessellate`'s arguments).
-#[derive(Clone, Copy, Debug)]
-pub(crate) struct SideRates {
-    pub bottom: f32,
-    pub right: f32,
-    pub top: f32,
-    pub left: f32,
-}
-
 impl RectLoop {
-    /// The border of [u0, u1] × [v0, v1] sampled at `rates`.
-    pub fn new((u0, u1): (f32, f32), (v0, v1): (f32, f32), rates: SideRates) -> Self {
-        let bottom = side(u0, u1, rates.bottom).into_iter().map(|u| [u, v0]).collect();
-        let right = side(v0, v1, rates.right).into_iter().map(|v| [u1, v]).collect();
-        let top = side_down(u1, u0, rates.top).into_iter().map(|u| [u, v1]).collect();
-        let left = side_down(v1, v0, rates.left).into_iter().map(|v| [u0, v]).collect();
-        Self { bottom, right, top, left }
-    }
-
     /// The lower-left corner.
     pub fn min(&self) -> [f32; 2] {
         [self.left[0][0], self.bottom[0][1]]
@@ -61,7 +43,7 @@ fn steps(large: f32, small: f32, rate: f32) -> usize {
 
 /// An increasing side from `a` to `b` (`pwl_bottom`, `pwl_right`): a + i·step accumulated,
 /// then `b` itself.
-fn side(a: f32, b: f32, rate: f32) -> Vec<f32> {
+pub(super) fn side_up(a: f32, b: f32, rate: f32) -> Vec<f32> {
     let n = steps(b, a, rate);
     let step = (b - a) / n as f32;
     let mut out = Vec::with_capacity(n + 1);
@@ -76,7 +58,7 @@ fn side(a: f32, b: f32, rate: f32) -> Vec<f32> {
 
 /// A decreasing side from `a` down to `b` (`pwl_top`, `pwl_left`): GLU fills it from the end,
 /// accumulating from `b` upwards, and puts `a` itself first.
-fn side_down(a: f32, b: f32, rate: f32) -> Vec<f32> {
+pub(super) fn side_down(a: f32, b: f32, rate: f32) -> Vec<f32> {
     let n = steps(a, b, rate);
     let step = (a - b) / n as f32;
     let mut out = vec![0.0; n + 1];
@@ -94,26 +76,19 @@ mod tests {
     use super::*;
 
     #[test]
-    fn sides_run_corner_to_corner_with_exact_ends() {
-        let rates = SideRates { bottom: 0.3, right: 0.5, top: 1.0, left: 0.26 };
-        let r = RectLoop::new((0.0, 1.0), (0.0, 2.0), rates);
-        assert_eq!(r.bottom.len(), 5); // 1 + ⌊1/0.3⌋ = 4 steps
-        assert_eq!(r.bottom[0], [0.0, 0.0]);
-        assert_eq!(r.bottom[4], [1.0, 0.0]);
-        assert_eq!(r.right.len(), 6);
-        assert_eq!(r.top.len(), 3);
-        assert_eq!(r.top[0], [1.0, 2.0]);
-        assert_eq!(r.top[2], [0.0, 2.0]);
-        assert_eq!(r.left[0], [0.0, 2.0]);
-        assert_eq!(*r.left.last().unwrap(), [0.0, 0.0]);
-        assert_eq!((r.min(), r.max()), ([0.0, 0.0], [1.0, 2.0]));
+    fn sides_run_end_to_end_with_exact_ends() {
+        let up = side_up(0.0, 1.0, 0.3);
+        assert_eq!(up.len(), 5); // 1 + ⌊1/0.3⌋ = 4 steps
+        assert_eq!((up[0], up[4]), (0.0, 1.0));
+        let down = side_down(2.0, 0.0, 1.0);
+        assert_eq!(down, vec![2.0, 1.0, 0.0]);
     }
 
     #[test]
     fn a_zero_or_absurd_rate_does_not_panic() {
-        let rates = SideRates { bottom: 0.0, right: f32::NAN, top: -1.0, left: f32::INFINITY };
-        let r = RectLoop::new((0.0, 1.0), (0.0, 1.0), rates);
-        assert_eq!(r.bottom.len(), MAX_SEGMENTS + 1);
-        assert_eq!((r.right.len(), r.top.len(), r.left.len()), (2, 2, 2));
+        assert_eq!(side_up(0.0, 1.0, 0.0).len(), MAX_SEGMENTS + 1);
+        assert_eq!(side_up(0.0, 1.0, f32::NAN).len(), 2);
+        assert_eq!(side_down(1.0, 0.0, -1.0).len(), 2);
+        assert_eq!(side_down(1.0, 0.0, f32::INFINITY).len(), 2);
     }
 }

@@ -11,6 +11,7 @@
 
 pub(crate) mod border;
 pub(crate) mod output;
+pub(crate) mod split;
 mod strip;
 mod thin;
 pub(crate) mod vertex;
