@@ -1,7 +1,6 @@
 //! GLU's sampling subdivision of a rectangle (`Subdivider::samplingSplit`,
-//! `internals/subdivider.cc`): when a patch's steps are finer than its parameter length over
-//! GLU_U_STEP/GLU_V_STEP allow, GLU bisects it (in the direction that needs it, alternating when
-//! both do, at most 6 times) and samples each half on its own. Each level first samples the
+//! `internals/subdivider.cc`): when a patch's u step is finer than its parameter length over
+//! GLU_U_STEP allows, GLU bisects it (alternately in v and u, v first, at most 6 times) and samples each half on its own. Each level first samples the
 //! sides it has not sampled yet at its own sidesteps (`Subdivider::tessellation`); the sides
 //! already sampled are cut where the bisector crosses them (`Subdivider::split`, `arc_split` in
 //! `intersect.cc`: at a sample lying on the line, or at a new point on it), and the bisector
@@ -70,14 +69,11 @@ fn subdivide(
 ) {
     let [s, t] = steps(region.u, region.v);
     region.sample_sides(s, t);
-    if (s.needs_split || t.needs_split) && depth > 0 {
-        let param = if !s.needs_split {
-            1
-        } else if !t.needs_split {
-            0
-        } else {
-            1 - param
-        };
+    // GLU's `Patchlist::needsSamplingSubdivision` copies the u flag into both directions
+    // (`pspec[1].needsSubdivision |= p->pspec[0].needsSubdivision`): only u's need splits, and
+    // the halving then alternates v, u, v, ... whatever v needs.
+    if s.needs_split && depth > 0 {
+        let param = 1 - param;
         let (low, high) = region.split(param, out);
         subdivide(low, depth - 1, param, linear, steps, out);
         subdivide(high, depth - 1, param, linear, steps, out);
@@ -182,9 +178,9 @@ mod tests {
 
     #[test]
     fn halves_are_sampled_on_their_own_and_share_the_bisector() {
-        // Steps too fine at the top level only: one split in u, then two leaves.
-        let steps = |u: (f32, f32), _v: (f32, f32)| {
-            let whole = u.1 - u.0 > 0.75;
+        // Steps too fine at the top level only: one split (in v, GLU's first), two leaves.
+        let steps = |_u: (f32, f32), v: (f32, f32)| {
+            let whole = v.1 - v.0 > 0.75;
             [fixed(0.3, whole), fixed(0.5, false)]
         };
         let out = leaves((0.0, 1.0), (0.0, 1.0), (false, false), &steps);
@@ -197,9 +193,9 @@ mod tests {
             .collect();
         assert_eq!(rects.len(), 2);
         let (low, high) = (rects[0], rects[1]);
-        assert_eq!((low.min(), low.max()), ([0.0, 0.0], [0.5, 1.0]));
-        assert_eq!((high.min(), high.max()), ([0.5, 0.0], [1.0, 1.0]));
-        assert_eq!(low.right.first(), Some(&[0.5, 0.0]));
-        assert_eq!(high.left.last(), Some(&[0.5, 0.0]));
+        assert_eq!((low.min(), low.max()), ([0.0, 0.0], [1.0, 0.5]));
+        assert_eq!((high.min(), high.max()), ([0.0, 0.5], [1.0, 1.0]));
+        assert_eq!(low.top.last(), Some(&[0.0, 0.5]));
+        assert_eq!(high.bottom.first(), Some(&[0.0, 0.5]));
     }
 }
