@@ -2,7 +2,8 @@
 //! `tests/reference/glu/surfpoints.c`, which prints what real GLU hands to the
 //! `GLU_NURBS_TESSELLATOR` callbacks (`glBegin(...)`, `glNormal3f`, `glVertex3f`, `glEnd()`, 3
 //! decimals, as the Red Book's surfpoints.c), run through gleval and printed the same way. The
-//! text must be identical, case by case.
+//! text must be identical, case by case (curves up to the sign of zero, see
+//! [`without_negative_zero`]).
 
 use gleval::prelude::*;
 use std::cell::RefCell;
@@ -201,12 +202,24 @@ fn summary(text: &str) -> String {
     format!("{kinds:?} {vertices} vertices")
 }
 
+/// The one known difference: at the joints of a B-spline curve's Bezier spans GLU's own
+/// `float` knot insertion (`tobezier.cc`) leaves coordinates of −1e-8 or so where gleval's
+/// (in `f64`) gives 0, printed "-0.000" against "0.000". Curves are compared with the sign of
+/// zero ignored; everything else (spans, step counts, parameters, every other digit) must match.
+fn without_negative_zero(text: &str) -> String {
+    text.replace("-0.000", "0.000")
+}
+
 /// The cases whose output differs, each with its summaries and first differing line.
 fn differences() -> Vec<String> {
     let mut out = Vec::new();
     for (case, glu) in reference() {
         let (kind, name) = case.split_once(' ').expect("kind name");
-        let ours = if kind == "surface" { run_surface(name) } else { run_curve(name) };
+        let (ours, glu) = if kind == "surface" {
+            (run_surface(name), glu)
+        } else {
+            (without_negative_zero(&run_curve(name)), without_negative_zero(&glu))
+        };
         if ours == glu {
             continue;
         }

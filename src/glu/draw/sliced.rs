@@ -67,10 +67,9 @@ pub(crate) fn grid_patches(patches: &[PatchGrid]) -> Vec<SlicedPatch> {
 
 /// The patches through the callbacks, last patch first.
 pub(crate) fn tessellate_sliced(gl: &mut Gl, obj: &mut NurbsObject, surface: &Surface, patches: &[SlicedPatch]) {
-    let wire = obj.props.display_mode == GLU_OUTLINE_POLYGON;
     for patch in patches.iter().rev() {
         if let Some(maps) = PatchVertices::new(obj, surface, patch.grid.u, patch.grid.v) {
-            tessellate_pieces(gl, obj, &maps, &patch.pieces, wire);
+            tessellate_pieces(gl, obj, &maps, &patch.pieces);
         }
     }
 }

@@ -12,7 +12,6 @@ use super::slicer::vertex::PatchVertices;
 use super::slicer::Piece;
 use crate::gl::consts::*;
 use crate::gl::Gl;
-use crate::glu::consts::*;
 use crate::glu::evaluation::machine::PatchMachine;
 use crate::glu::evaluation::surface::{PatchGrid, Surface};
 use crate::glu::model::callbacks::StripSink;
@@ -21,7 +20,7 @@ use crate::glu::model::object::NurbsObject;
 /// Issues every patch, last first.
 pub(crate) fn tessellate_patches(gl: &mut Gl, obj: &mut NurbsObject, surface: &Surface, patches: &[PatchGrid]) {
     let patches: Vec<PatchGrid> = patches.iter().rev().copied().collect();
-    if obj.callbacks.sinks().is_some() && obj.props.display_mode != GLU_OUTLINE_POLYGON {
+    if obj.callbacks.sinks().is_some() {
         return tessellate_patches_in_parallel(gl, obj, surface, &patches);
     }
     for patch in &patches {
@@ -146,8 +145,7 @@ fn issue_batch(
 /// The grid block of one patch through the callbacks, vertex by vertex.
 fn tessellate_patch(gl: &mut Gl, obj: &mut NurbsObject, surface: &Surface, patch: &PatchGrid) {
     if let Some(maps) = PatchVertices::new(obj, surface, patch.u, patch.v) {
-        let wire = obj.props.display_mode == GLU_OUTLINE_POLYGON;
-        tessellate_pieces(gl, obj, &maps, &[Piece::Grid(glu_grid(patch))], wire);
+        tessellate_pieces(gl, obj, &maps, &[Piece::Grid(glu_grid(patch))]);
     }
 }
 
