@@ -7,9 +7,9 @@
 
 use super::patches::{load_patch, restore_polygon_mode, save_polygon_mode};
 use super::slicer::output::{render_pieces, tessellate_pieces};
-use super::slicer::split::{leaves, Part};
+use super::slicer::split::{leaves, Part, MAX_SUBDIVISIONS};
 use super::slicer::vertex::PatchVertices;
-use super::slicer::{slice_rect, Grid, Piece};
+use super::slicer::{outline_rect, slice_rect, Grid, Piece};
 use crate::gl::consts::*;
 use crate::gl::Gl;
 use crate::glu::consts::*;
@@ -40,10 +40,13 @@ pub(crate) fn slice_surface(obj: &NurbsObject, surface: &Surface) -> Option<Vec<
             };
             let (u32_, v32) = ((u.0 as f32, u.1 as f32), (v.0 as f32, v.1 as f32));
             let linear = (p.uorder == 2, p.vorder == 2);
-            let pieces = leaves(u32_, v32, linear, &steps)
+            let outline = obj.props.display_mode == GLU_OUTLINE_PATCH;
+            let levels = if outline { 0 } else { MAX_SUBDIVISIONS };
+            let pieces = leaves(u32_, v32, linear, &steps, levels)
                 .into_iter()
                 .flat_map(|part| match part {
                     Part::Degenerate(t) => vec![Piece::Fan(t.to_vec())],
+                    Part::Leaf(rect, _) if outline => outline_rect(&rect),
                     Part::Leaf(rect, interior) => slice_rect(&rect, interior),
                 })
                 .collect();

@@ -28,7 +28,8 @@ pub(crate) fn draw_surface(gl: &mut Gl, obj: &mut NurbsObject, def: &SurfaceDef)
     if !def.loops.is_empty() {
         return trimmed::draw_trimmed(gl, obj, &surface, &def.loops, &sampler, tessellate);
     }
-    if obj.props.sampling_method != GLU_DOMAIN_DISTANCE && obj.props.display_mode != GLU_OUTLINE_PATCH {
+    // GLU's fast path is taken for domain-distance sampling unless outlining patches.
+    if obj.props.sampling_method != GLU_DOMAIN_DISTANCE || obj.props.display_mode == GLU_OUTLINE_PATCH {
         if let Some(sliced) = sliced::slice_surface(obj, &surface) {
             return if tessellate {
                 sliced::tessellate_sliced(gl, obj, &surface, &sliced)

@@ -1,7 +1,7 @@
 /* Prints what GLU hands to the GLU_NURBS_TESSELLATOR callbacks, as the Red Book's surfpoints.c
    prints it (glBegin, glNormal3f, glVertex3f, glEnd, 3 decimals), for untrimmed surfaces under
    several sampling methods and tolerances, a multi-span B-spline sheet, rational and bilinear
-   patches, and curves. tests/it/glu_surfpoints.rs runs the same cases through gleval and
+   patches, outlines (GLU_OUTLINE_PATCH) and curves. tests/it/glu_surfpoints.rs runs the same cases through gleval and
    compares the text. Build: cc surfpoints.c -lOSMesa -lGLU -lGL */
 #include <GL/osmesa.h>
 #include <GL/glu.h>
@@ -66,9 +66,12 @@ static void view(void) {
 
 enum shape { HILL, SHEET, CYLINDER, TWIST };
 
+static GLfloat display_mode = GLU_FILL;
+
 static void surface(const char *name, enum shape s, GLfloat method, GLfloat tolerance, GLfloat step, int normals) {
     GLUnurbs *n = nurbs(method, tolerance, step, normals);
-    printf("# surface %s\n", name);
+    gluNurbsProperty(n, GLU_DISPLAY_MODE, display_mode);
+    printf("# %s %s\n", display_mode == GLU_OUTLINE_PATCH ? "outline" : "surface", name);
     view();
     gluBeginSurface(n);
     switch (s) {
@@ -125,6 +128,11 @@ int main(void) {
     surface("cylinder_parametric_error_0.01", CYLINDER, GLU_PARAMETRIC_ERROR, 0.01f, 100, 1);
     surface("cylinder_path_length_20", CYLINDER, GLU_PATH_LENGTH, 20, 100, 1);
     surface("twist_path_length_30", TWIST, GLU_PATH_LENGTH, 30, 100, 1);
+    display_mode = GLU_OUTLINE_PATCH;
+    surface("hill_path_length_25", HILL, GLU_PATH_LENGTH, 25, 100, 0);
+    surface("hill_domain_distance_6", HILL, GLU_DOMAIN_DISTANCE, 50, 6, 0);
+    surface("sheet_path_length_60", SHEET, GLU_PATH_LENGTH, 60, 100, 0);
+    display_mode = GLU_FILL;
     curve_case("bspline_path_length_20", 0, GLU_PATH_LENGTH, 20, 100);
     curve_case("bspline_parametric_error_2", 0, GLU_PARAMETRIC_ERROR, 2, 100);
     curve_case("bspline_domain_distance_4", 0, GLU_DOMAIN_DISTANCE, 50, 4);

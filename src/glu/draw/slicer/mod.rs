@@ -27,6 +27,8 @@ pub(crate) enum Piece {
     QuadStrip(Vec<[f32; 2]>),
     /// A block of the uniform grid (GLU `surfgrid` + `surfmesh`).
     Grid(Grid),
+    /// `GL_LINE_STRIP` through these (u, v): an outline (`GLU_OUTLINE_PATCH`).
+    Line(Vec<[f32; 2]>),
 }
 
 /// `glMapGrid2(nu, u0, u1, nv, v0, v1)` and `glEvalMesh2(0, nu, 0, nv)`: GLU passes v from
@@ -90,6 +92,18 @@ pub(crate) fn slice_rect(rect: &RectLoop, interior: Interior) -> Vec<Piece> {
         return thin::triangulate(rect, across);
     }
     strip::triangulate_with_grid(rect, ulines - 2, vlines - 2)
+}
+
+/// `GLU_OUTLINE_PATCH`: the sampled border, each side as a line strip run backwards, from
+/// the left side round to the bottom (GLU `Subdivider::outline` walks its bin's loop through
+/// `prev` from the left side, the bin's first arc; `Slicer::outline` lists each arc's points
+/// from the last).
+pub(crate) fn outline_rect(rect: &RectLoop) -> Vec<Piece> {
+    [&rect.left, &rect.top, &rect.right, &rect.bottom]
+        .into_iter()
+        .filter(|side| side.len() >= 2)
+        .map(|side| Piece::Line(side.iter().rev().copied().collect()))
+        .collect()
 }
 
 /// ⌊extent/step⌋ as GLU's `(Int)` conversion, kept within what can be drawn.

@@ -17,7 +17,7 @@ pub(crate) fn tessellate_pieces(gl: &mut Gl, obj: &mut NurbsObject, maps: &Patch
     let emit = |gl: &mut Gl, obj: &mut NurbsObject, [u, v]: [f32; 2]| maps.emit(gl, obj, u, v);
     for piece in pieces {
         match piece {
-            Piece::Fan(points) | Piece::QuadStrip(points) => {
+            Piece::Fan(points) | Piece::QuadStrip(points) | Piece::Line(points) => {
                 obj.callbacks.begin(gl, kind(piece));
                 for &p in points {
                     emit(gl, obj, p);
@@ -43,7 +43,7 @@ pub(crate) fn tessellate_pieces(gl: &mut Gl, obj: &mut NurbsObject, maps: &Patch
 pub(crate) fn render_pieces(gl: &mut Gl, pieces: &[Piece], wire: bool) {
     for piece in pieces {
         match piece {
-            Piece::Fan(points) | Piece::QuadStrip(points) => {
+            Piece::Fan(points) | Piece::QuadStrip(points) | Piece::Line(points) => {
                 gl.begin(kind(piece));
                 for &[u, v] in points {
                     gl.eval_coord2f(u, v);
@@ -62,6 +62,7 @@ pub(crate) fn render_pieces(gl: &mut Gl, pieces: &[Piece], wire: bool) {
 fn kind(piece: &Piece) -> u32 {
     match piece {
         Piece::Fan(_) => GL_TRIANGLE_FAN,
+        Piece::Line(_) => GL_LINE_STRIP,
         _ => GL_QUAD_STRIP,
     }
 }

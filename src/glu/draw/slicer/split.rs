@@ -17,7 +17,7 @@ use super::Interior;
 use crate::glu::evaluation::patch_steps::DirectionSteps;
 
 /// GLU's `renderhints.cc` subdivisions.
-const MAX_SUBDIVISIONS: u32 = 6;
+pub(crate) const MAX_SUBDIVISIONS: u32 = 6;
 
 /// A rectangle being subdivided: its ranges, its sides (bottom, right, top, left, each in
 /// loop order; `None` for a side not sampled yet) and the order of its sides in GLU's bin.
@@ -45,17 +45,19 @@ pub(crate) enum Part {
 
 /// The parts of the subdivision of [u0, u1] × [v0, v1], in GLU's order (lower half first),
 /// each leaf with the interior steps it is sliced at. `steps` gives the steps of a
-/// sub-rectangle; `linear` says whether u and v are linear (order 2).
+/// sub-rectangle; `linear` says whether u and v are linear (order 2); at most `subdivisions`
+/// levels (0 for `GLU_OUTLINE_PATCH`, which GLU outlines before subdividing).
 pub(crate) fn leaves(
     u: (f32, f32),
     v: (f32, f32),
     linear: (bool, bool),
     steps: &dyn Fn((f32, f32), (f32, f32)) -> [DirectionSteps; 2],
+    subdivisions: u32,
 ) -> Vec<Part> {
     let mut out = Vec::new();
     // `makeBorderTrim` adds bottom, right, top, left, each at the bin's head.
     let region = Region { u, v, sides: [None, None, None, None], bin: [LEFT, TOP, RIGHT, BOTTOM] };
-    subdivide(region, MAX_SUBDIVISIONS, 0, linear, steps, &mut out);
+    subdivide(region, subdivisions.min(MAX_SUBDIVISIONS), 0, linear, steps, &mut out);
     out
 }
 
@@ -183,7 +185,7 @@ mod tests {
             let whole = v.1 - v.0 > 0.75;
             [fixed(0.3, whole), fixed(0.5, false)]
         };
-        let out = leaves((0.0, 1.0), (0.0, 1.0), (false, false), &steps);
+        let out = leaves((0.0, 1.0), (0.0, 1.0), (false, false), &steps, MAX_SUBDIVISIONS);
         let rects: Vec<&RectLoop> = out
             .iter()
             .filter_map(|p| match p {
