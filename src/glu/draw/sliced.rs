@@ -25,8 +25,8 @@ pub(crate) struct SlicedPatch {
 }
 
 /// Every patch of the surface, u outer, sliced as GLU slices it (bisected first where GLU's
-/// sampling subdivision would, [`leaves`]).
-pub(crate) fn slice_surface(obj: &NurbsObject, surface: &Surface) -> Option<Vec<SlicedPatch>> {
+/// sampling subdivision would, [`leaves`]), or outlined for `GLU_OUTLINE_PATCH`.
+pub(crate) fn slice_surface(obj: &NurbsObject, surface: &Surface) -> Vec<SlicedPatch> {
     let matrix = if obj.props.object_space() { Mat4::IDENTITY } else { obj.matrices.sampling() };
     let p = &surface.pos.patches;
     let mut out = Vec::new();
@@ -53,7 +53,30 @@ pub(crate) fn slice_surface(obj: &NurbsObject, surface: &Surface) -> Option<Vec<
             out.push(SlicedPatch { grid: PatchGrid { u, v, nu: 0, nv: 0 }, pieces });
         }
     }
-    Some(out)
+    out
+}
+
+/// The patches that can be drawn, less those sampled beyond the façade's mesh limit (a weight
+/// near zero under path-length sampling asks for 2^14 segments a side): GLU's convention is
+/// `GLU_OUT_OF_MEMORY` through the error callback, once, and the other patches drawn.
+pub(crate) fn drawable(obj: &mut NurbsObject, mut patches: Vec<SlicedPatch>) -> Vec<SlicedPatch> {
+    let before = patches.len();
+    patches.retain(|p| points(&p.pieces) <= crate::tess::MAX_MESH_VERTICES);
+    if patches.len() < before {
+        obj.callbacks.error(crate::glu::consts::GLU_OUT_OF_MEMORY);
+    }
+    patches
+}
+
+/// The vertices the pieces hand out, saturating.
+fn points(pieces: &[Piece]) -> usize {
+    pieces.iter().fold(0usize, |sum, piece| {
+        let n = match piece {
+            Piece::Fan(p) | Piece::QuadStrip(p) | Piece::Line(p) => p.len(),
+            Piece::Grid(g) => 2usize.saturating_mul(g.nu.saturating_add(1)).saturating_mul(g.nv.saturating_add(1)),
+        };
+        sum.saturating_add(n)
+    })
 }
 
 /// The patch's grid block on GLU's domain-distance fast path: `surfgrid(u0, u1, nu, v1, v0,

@@ -28,15 +28,6 @@ impl PatchGrid {
     }
 }
 
-/// Line `i` of `n` segments over `r`, exactly `r.1` at `i == n`.
-pub(crate) fn grid_line(r: (f64, f64), i: usize, n: usize) -> f64 {
-    if i == n {
-        r.1
-    } else {
-        r.0 + (r.1 - r.0) * i as f64 / n as f64
-    }
-}
-
 /// Everything needed to draw a surface: the position map's patches and the other maps'.
 pub(crate) struct Surface {
     pub pos: SurfacePatches,

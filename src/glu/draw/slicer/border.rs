@@ -4,6 +4,7 @@
 //! `internals/arctess.cc`). The points are accumulated step by step in `f32` from the side's
 //! start, and the last is the side's end exactly, as GLU does.
 
+use super::c_int;
 use crate::glu::evaluation::sampling::MAX_SEGMENTS;
 
 /// A rectangle of the domain as a loop of four sampled sides, each from its first corner to
@@ -29,16 +30,10 @@ impl RectLoop {
     }
 }
 
-/// GLU's `steps_function`: max(1, 1 + ⌊(large − small)/rate⌋), kept within what can be drawn.
+/// GLU's `steps_function`: max(1, 1 + (int)((large − small)/rate)), with C's conversion
+/// ([`c_int`]: a zero rate gives one step), kept within what can be drawn.
 fn steps(large: f32, small: f32, rate: f32) -> usize {
-    let n = ((large - small) / rate).trunc();
-    if n.is_finite() && n >= 0.0 {
-        (1 + n as usize).min(MAX_SEGMENTS)
-    } else if n.is_nan() || n < 0.0 {
-        1
-    } else {
-        MAX_SEGMENTS
-    }
+    (1 + c_int((large - small) / rate)).clamp(1, MAX_SEGMENTS as i64) as usize
 }
 
 /// An increasing side from `a` to `b` (`pwl_bottom`, `pwl_right`): a + i·step accumulated,
@@ -86,7 +81,8 @@ mod tests {
 
     #[test]
     fn a_zero_or_absurd_rate_does_not_panic() {
-        assert_eq!(side_up(0.0, 1.0, 0.0).len(), MAX_SEGMENTS + 1);
+        assert_eq!(side_up(0.0, 1.0, 0.0).len(), 2);
+        assert_eq!(side_up(0.0, 1.0, 1e-9).len(), MAX_SEGMENTS + 1);
         assert_eq!(side_up(0.0, 1.0, f32::NAN).len(), 2);
         assert_eq!(side_down(1.0, 0.0, -1.0).len(), 2);
         assert_eq!(side_down(1.0, 0.0, f32::INFINITY).len(), 2);

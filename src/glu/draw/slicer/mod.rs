@@ -16,6 +16,7 @@ mod strip;
 mod thin;
 pub(crate) mod vertex;
 
+use crate::glu::evaluation::sampling::MAX_SEGMENTS;
 use border::RectLoop;
 
 /// One primitive of the tessellation, in parameter space.
@@ -81,8 +82,8 @@ pub(crate) fn slice_rect(rect: &RectLoop, interior: Interior) -> Vec<Piece> {
         return Vec::new(); // GLU returns here to avoid a division by zero.
     }
     let (du, dv) = (interior.du.abs(), interior.dv.abs());
-    let ulines = if du > u1 - u0 { 2 } else { 3 + lines_in(u1 - u0, du) };
-    let vlines = if dv >= v1 - v0 { 2 } else { 2 + lines_in(v1 - v0, dv) };
+    let ulines = if du > u1 - u0 { 2 } else { 3 + c_int((u1 - u0) / du) };
+    let vlines = if dv >= v1 - v0 { 2 } else { 2 + c_int((v1 - v0) / dv) };
     if ulines <= 2 || vlines <= 2 {
         let across = match (interior.vlinear, interior.ulinear) {
             (true, _) => thin::Across::TopBottom,
@@ -91,7 +92,8 @@ pub(crate) fn slice_rect(rect: &RectLoop, interior: Interior) -> Vec<Piece> {
         };
         return thin::triangulate(rect, across);
     }
-    strip::triangulate_with_grid(rect, ulines - 2, vlines - 2)
+    let cap = |n: i64| (n as usize).min(MAX_SEGMENTS);
+    strip::triangulate_with_grid(rect, cap(ulines - 2), cap(vlines - 2))
 }
 
 /// `GLU_OUTLINE_PATCH`: the sampled border, each side as a line strip run backwards, from
@@ -106,12 +108,13 @@ pub(crate) fn outline_rect(rect: &RectLoop) -> Vec<Piece> {
         .collect()
 }
 
-/// ⌊extent/step⌋ as GLU's `(Int)` conversion, kept within what can be drawn.
-fn lines_in(extent: f32, step: f32) -> usize {
-    let n = (extent / step).floor();
-    if n.is_finite() && n >= 0.0 {
-        (n as usize).min(crate::glu::evaluation::sampling::MAX_SEGMENTS)
+/// C's `(int)x` as GLU's x86 build computes it: the integer part, or `INT_MIN` (the "integer
+/// indefinite" of `cvttss2si`) when x is not finite or out of range. A zero step thus gives
+/// GLU a negative line count, and the thin covering, rather than endless lines.
+pub(crate) fn c_int(x: f32) -> i64 {
+    if x.is_finite() && x > -2_147_483_649.0 && x < 2_147_483_648.0 {
+        x.trunc() as i64
     } else {
-        crate::glu::evaluation::sampling::MAX_SEGMENTS
+        i64::from(i32::MIN)
     }
 }
