@@ -117,10 +117,10 @@ int main(void) {
     surface("hill_path_length_50", HILL, GLU_PATH_LENGTH, 50, 100, 1);
     surface("hill_path_length_120", HILL, GLU_PATH_LENGTH, 120, 100, 1);
     surface("hill_path_length_400", HILL, GLU_PATH_LENGTH, 400, 100, 1);
-    surface("hill_path_length_6", HILL, GLU_PATH_LENGTH, 6, 100, 0);
+    surface("hill_path_length_12", HILL, GLU_PATH_LENGTH, 12, 100, 0);
     surface("hill_parametric_error_0.5", HILL, GLU_PARAMETRIC_ERROR, 0.5f, 100, 1);
     surface("hill_parametric_error_4", HILL, GLU_PARAMETRIC_ERROR, 4, 100, 0);
-    surface("hill_object_path_length_0.5", HILL, GLU_OBJECT_PATH_LENGTH, 0.5f, 100, 1);
+    surface("hill_object_path_length_1", HILL, GLU_OBJECT_PATH_LENGTH, 1, 100, 1);
     surface("hill_object_parametric_error_0.1", HILL, GLU_OBJECT_PARAMETRIC_ERROR, 0.1f, 100, 0);
     surface("hill_domain_distance_6", HILL, GLU_DOMAIN_DISTANCE, 50, 6, 1);
     surface("sheet_path_length_60", SHEET, GLU_PATH_LENGTH, 60, 100, 1);
