@@ -107,6 +107,8 @@ fn sheet() -> (Vec<f32>, Vec<f32>) {
     (knots, out)
 }
 
+// The C program's literals (0.7071f, 1.4142f), not 1/√2 and √2: the same floats as GLU got.
+#[allow(clippy::approx_constant)]
 const CYL: [f32; 24] = [
     1.0, 0.0, -1.0, 1.0, 1.0, 0.0, 1.0, 1.0, 0.7071, 0.7071, -0.7071, 0.7071, 0.7071, 0.7071, 0.7071, 0.7071, 0.0, 1.0,
     -1.0, 1.0, 0.0, 1.0, 1.0, 1.0,
@@ -117,6 +119,7 @@ const CURVE: [f32; 24] = [
     -3.0, 0.0, 0.0, -2.0, 2.0, 0.0, -1.0, -2.0, 0.0, 0.0, 2.0, 0.0, 1.0, -2.0, 0.0, 2.0, 2.0, 0.0, 3.0, 0.0, 0.0, 3.6,
     1.0, 0.0,
 ];
+#[allow(clippy::approx_constant)]
 const ARC: [f32; 12] = [2.0, 0.0, 0.0, 1.0, 1.4142, 1.4142, 0.0, 0.7071, 0.0, 2.0, 0.0, 1.0];
 
 /// (shape, method, tolerance, step, normals) of a surface case from its name.

@@ -108,7 +108,7 @@ impl Region {
         let crossing = if param == 0 { [BOTTOM, TOP] } else { [RIGHT, LEFT] };
         let (lo, hi) = if param == 0 { self.u } else { self.v };
         let mid = (lo + hi) * 0.5;
-        let mut cuts: [(Vec<[f32; 2]>, Vec<[f32; 2]>); 4] = Default::default();
+        let mut cuts: [(Side, Side); 4] = Default::default();
         let mut sides = self.sides.map(Option::unwrap_or_default);
         for &side in self.bin.iter().filter(|s| crossing.contains(s)) {
             let (first, second, degenerate) = cut(&sides[side], param, mid);
@@ -136,8 +136,11 @@ impl Region {
     }
 }
 
+/// A sampled side, (u, v) points in loop order.
+type Side = Vec<[f32; 2]>;
+
 /// The two parts of a cut side and the degenerate triangle of the cut, if any.
-type Cut = (Vec<[f32; 2]>, Vec<[f32; 2]>, Option<[[f32; 2]; 3]>);
+type Cut = (Side, Side, Option<[[f32; 2]; 3]>);
 
 /// A sampled side cut where coordinate `c` crosses `value`: at a sample lying on it, or at a
 /// new sample there (the side is straight, so the other coordinate is the side's own), with
