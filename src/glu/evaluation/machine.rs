@@ -227,10 +227,11 @@ mod tests {
             let dsum: f32 = d[..order].iter().sum();
             assert!((sum - 1.0).abs() < 1e-6 && dsum.abs() < 1e-6, "order {order}");
         }
-        // Cubic at t: (1−t)³, 3t(1−t)², 3t²(1−t), t³; derivatives over 3.
+        // Cubic at t: (1−t)³, 3t(1−t)², 3t²(1−t), t³; GLU's derivatives are the quadratic's
+        // differences, the true derivatives over 3: −(1−t)², (1−t)² − 2t(1−t), ...
         let (c, d) = coefficients(4, 0.5);
         assert_eq!(&c[..4], &[0.125, 0.375, 0.375, 0.125]);
-        assert_eq!(&d[..4], &[-0.25, -0.5, 0.5, 0.25]);
+        assert_eq!(&d[..4], &[-0.25, -0.25, 0.25, 0.25]);
     }
 
     #[test]

@@ -75,8 +75,10 @@ mod tests {
         let up = side_up(0.0, 1.0, 0.3);
         assert_eq!(up.len(), 5); // 1 + ⌊1/0.3⌋ = 4 steps
         assert_eq!((up[0], up[4]), (0.0, 1.0));
+        // 1 + ⌊2/1⌋ = 3 steps (GLU's count takes one more than the length needs), filled
+        // upwards from the end.
         let down = side_down(2.0, 0.0, 1.0);
-        assert_eq!(down, vec![2.0, 1.0, 0.0]);
+        assert_eq!(down, vec![2.0, 1.3333334, 0.6666667, 0.0]);
     }
 
     #[test]

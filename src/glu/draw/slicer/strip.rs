@@ -112,8 +112,10 @@ mod tests {
         // second point, then the corner, then the inner points below it.
         let out = fans(&[0.0, 0.5, 1.0], &[0.2, 0.4, 0.6, 0.8]);
         assert_eq!(out[0], Piece::Fan(vec![[0.5, 1.0], [0.0, 1.0], [0.2, 0.0], [0.4, 0.0]]));
-        assert_eq!(out[1], Piece::Fan(vec![[1.0, 1.0], [0.5, 1.0], [0.4, 0.0], [0.6, 0.0], [0.8, 0.0]]));
-        assert_eq!(out.len(), 2);
+        // 0.5 lies below 0.6: a fan round the lower point, back over the upper run.
+        assert_eq!(out[1], Piece::Fan(vec![[0.6, 0.0], [0.5, 1.0], [0.4, 0.0]]));
+        assert_eq!(out[2], Piece::Fan(vec![[1.0, 1.0], [0.5, 1.0], [0.6, 0.0], [0.8, 0.0]]));
+        assert_eq!(out.len(), 3);
     }
 
     #[test]
