@@ -129,7 +129,15 @@ fn surface_case(name: &str) -> (&str, u32, f32, f32, bool) {
     let value: f32 = value.parse().expect("value");
     let m = method_enum(method);
     let (tolerance, step) = if m == GLU_DOMAIN_DISTANCE { (50.0, value) } else { (value, 100.0) };
-    let without = ["hill_parametric_error_4", "hill_object_parametric_error_0.1", "hill_path_length_12"];
+    // Without a normal callback (GLU's plain vertex path; for domain distance, gleval's
+    // parallel grid path).
+    let without = [
+        "hill_parametric_error_4",
+        "hill_object_parametric_error_0.1",
+        "hill_path_length_12",
+        "hill_domain_distance_9",
+        "sheet_domain_distance_3",
+    ];
     let normals = !without.contains(&name) && name != "sheet_path_length_12";
     (shape, m, tolerance, step, normals)
 }

@@ -36,13 +36,10 @@ fn grid_into(surface: &Surface, patch: &PatchGrid, out: &mut [[f32; 5]]) -> Opti
     let (u, v) = ((patch.u.0 as f32, patch.u.1 as f32), (patch.v.0 as f32, patch.v.1 as f32));
     let machine = PatchMachine::new(&points, surface.k, (p.uorder, p.vorder), u, v)?;
     let g = glu_grid(patch);
+    let us: Vec<f32> = (0..=g.nu).map(|i| g.u_at(i)).collect();
+    let ucoeffs = machine.u_coefficients(&us);
     for (j, row) in out.chunks_exact_mut(g.nu + 1).enumerate() {
-        let v = g.v_at(j);
-        for (i, slot) in row.iter_mut().enumerate() {
-            let u = g.u_at(i);
-            let q = machine.position(u, v)?;
-            *slot = [q[0], q[1], q[2], u, v];
-        }
+        machine.position_row(g.v_at(j), &us, &ucoeffs, row)?;
     }
     Some(())
 }

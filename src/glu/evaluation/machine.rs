@@ -8,7 +8,7 @@
 //! printed vertices and normals GLU's to the last digit.
 
 /// GLU's `MAXORDER`; larger orders are refused before they get here.
-const MAX_ORDER: usize = 24;
+pub(crate) const MAX_ORDER: usize = 24;
 /// `MYZERO`: a partial no larger than this in every component counts as vanishing.
 const ZERO: f32 = 0.000001;
 /// `MYDELTA`: how far (as a fraction of the patch) GLU moves to re-take a vanishing partial.
@@ -97,6 +97,42 @@ impl PatchMachine {
             }
         }
         Some((project(&p, self.k), normal(&du, &dv)))
+    }
+
+    /// [`Self::position`] at (us[i], v) for every i, into `out` as [x, y, z, u, v]: the same
+    /// arithmetic, with the sums along v (which depend on v only) and the u coefficients
+    /// (given per column in `ucoeffs`, from [`Self::u_coefficients`]) taken once per row.
+    pub fn position_row(&self, v: f32, us: &[f32], ucoeffs: &[[f32; MAX_ORDER]], out: &mut [[f32; 5]]) -> Option<()> {
+        if self.u.1 == self.u.0 || self.v.1 == self.v.0 {
+            return None;
+        }
+        let (vc, _) = coefficients(self.vorder, (v - self.v.0) / (self.v.1 - self.v.0));
+        let mut p = [[0.0f32; 4]; MAX_ORDER];
+        for (row, sums) in p.iter_mut().enumerate().take(self.uorder) {
+            for (j, sum) in sums.iter_mut().enumerate().take(self.k) {
+                let at = |col: usize| self.points[(row * self.vorder + col) * self.k + j];
+                *sum = vc[0] * at(0);
+                for col in 1..self.vorder {
+                    *sum += vc[col] * at(col);
+                }
+            }
+        }
+        for ((slot, &u), uc) in out.iter_mut().zip(us).zip(ucoeffs) {
+            let mut point = [0.0f32; 4];
+            for (j, c) in point.iter_mut().enumerate().take(self.k) {
+                for row in 0..self.uorder {
+                    *c += uc[row] * p[row][j];
+                }
+            }
+            let q = project(&point, self.k);
+            *slot = [q[0], q[1], q[2], u, v];
+        }
+        Some(())
+    }
+
+    /// The u coefficients of every value of `us`, for [`Self::position_row`].
+    pub fn u_coefficients(&self, us: &[f32]) -> Vec<[f32; MAX_ORDER]> {
+        us.iter().map(|&u| coefficients(self.uorder, (u - self.u.0) / (self.u.1 - self.u.0)).0).collect()
     }
 
     /// The raw k values at (u, v) (GLU's `inDoDomain2EM`, as attribute maps are handed out).

@@ -123,6 +123,8 @@ int main(void) {
     surface("hill_object_path_length_1", HILL, GLU_OBJECT_PATH_LENGTH, 1, 100, 1);
     surface("hill_object_parametric_error_0.1", HILL, GLU_OBJECT_PARAMETRIC_ERROR, 0.1f, 100, 0);
     surface("hill_domain_distance_6", HILL, GLU_DOMAIN_DISTANCE, 50, 6, 1);
+    surface("hill_domain_distance_9", HILL, GLU_DOMAIN_DISTANCE, 50, 9, 0);
+    surface("sheet_domain_distance_3", SHEET, GLU_DOMAIN_DISTANCE, 50, 3, 0);
     surface("sheet_path_length_60", SHEET, GLU_PATH_LENGTH, 60, 100, 1);
     surface("sheet_path_length_12", SHEET, GLU_PATH_LENGTH, 12, 100, 0);
     surface("cylinder_parametric_error_0.01", CYLINDER, GLU_PARAMETRIC_ERROR, 0.01f, 100, 1);
