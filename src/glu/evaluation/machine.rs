@@ -118,10 +118,12 @@ impl PatchMachine {
             }
         }
         for ((slot, &u), uc) in out.iter_mut().zip(us).zip(ucoeffs) {
+            // Each component's sum runs over the rows in GLU's order; the four components side
+            // by side (unused ones stay zero) so that they share one vector register.
             let mut point = [0.0f32; 4];
-            for (j, c) in point.iter_mut().enumerate().take(self.k) {
-                for row in 0..self.uorder {
-                    *c += uc[row] * p[row][j];
+            for (w, sums) in uc.iter().zip(&p).take(self.uorder) {
+                for (c, s) in point.iter_mut().zip(sums) {
+                    *c += w * s;
                 }
             }
             let q = project(&point, self.k);
