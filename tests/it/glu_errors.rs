@@ -230,17 +230,18 @@ fn short_slices_are_reported_not_read() {
     assert_eq!(*seen.borrow(), ["10", "8"]);
 }
 
-/// A rational bilinear patch with a weight of 1e-30 at one corner: projected, that corner is at
-/// 1e30, so path-length sampling asks for GLU's cap of 2^14 segments a side, beyond the
+/// A bilinear patch sampled to a path-length tolerance of 1e-6 pixel: after GLU's six
+/// bisections every leaf still asks for millions of lines a side (capped at 2^14), beyond the
 /// façade's 2^27 vertices per mesh. GLU's convention: `GLU_OUT_OF_MEMORY` (0x18a26) through
-/// the error callback, no GL error, nothing allocated for the patch, in both modes.
+/// the error callback, no GL error, nothing drawn for the patch, in both modes.
 #[test]
 fn oversampled_patches_report_glu_out_of_memory() {
     let knots = [0.0f32, 0.0, 1.0, 1.0];
-    let ctl = [0.0f32, 0.0, 0.0, 1.0, 0.0, 1.0, 0.0, 1.0, 1.0, 0.0, 0.0, 1.0, 1.0, 1.0, 0.0, 1e-30];
+    let ctl = [0.0f32, 0.0, 0.0, 1.0, 0.0, 1.0, 0.0, 1.0, 1.0, 0.0, 0.0, 1.0, 1.0, 1.0, 0.0, 1.0];
     for mode in [GLU_NURBS_RENDERER, GLU_NURBS_TESSELLATOR] {
         let (mut gl, n, seen) = fresh();
         gl.glu_nurbs_property(n, GLU_NURBS_MODE, mode as f32);
+        gl.glu_nurbs_property(n, GLU_SAMPLING_TOLERANCE, 1e-6);
         let vertices = Rc::new(RefCell::new(0usize));
         let count = Rc::clone(&vertices);
         gl.glu_nurbs_callback(n, GLU_NURBS_VERTEX, Some(NurbsCallback::vertex(move |_, _| *count.borrow_mut() += 1)));

@@ -6,6 +6,7 @@ use crate::gl::consts::*;
 use crate::gl::Gl;
 use crate::glu::consts::*;
 use crate::glu::evaluation::culling::culled;
+use crate::glu::evaluation::machine::CurveMachine;
 use crate::glu::evaluation::pieces::CurvePieces;
 use crate::glu::evaluation::sampling::Sampler;
 use crate::glu::model::maps::CurveMap;
@@ -68,8 +69,9 @@ fn render_curve_span(gl: &mut Gl, attributes: &[CurvePieces], pos: &CurvePieces,
     gl.eval_mesh1(GL_LINE, 0, nu as i32);
 }
 
-/// One `GL_LINE_STRIP` of nu + 1 vertices through the callbacks; the vertex is the raw
-/// k-vector (not divided by w, as GLU does for curves).
+/// One `GL_LINE_STRIP` of nu + 1 vertices through the callbacks (GLU `inMapMesh1f`): u on
+/// GLU's `f32` grid, every map evaluated by GLU's curve evaluator ([`CurveMachine`]); the
+/// vertex is the raw k-vector (not divided by w, as GLU does for curves).
 fn tessellate_curve_span(
     gl: &mut Gl,
     obj: &mut NurbsObject,
@@ -78,13 +80,22 @@ fn tessellate_curve_span(
     span: CurveSpan,
 ) {
     let ((r0, r1), nu) = span;
+    let (u0, u1) = (r0 as f32, r1 as f32);
+    let machines: Vec<(CurveMachine, u32, usize)> = attributes
+        .iter()
+        .chain([pos])
+        .filter_map(|map| {
+            let p = &map.pieces;
+            Some((CurveMachine::new(&map.on(r0, r1)?, p.dim, p.order, (u0, u1))?, callback_kind(map.target)?, p.dim))
+        })
+        .collect();
+    let du = (u1 - u0) / nu as f32;
     obj.callbacks.begin(gl, GL_LINE_STRIP);
     for i in 0..=nu {
-        let u = if i == nu { r1 } else { r0 + i as f64 * (r1 - r0) / nu as f64 };
-        for map in attributes.iter().chain([pos]) {
-            let (Some(value), Some(kind)) = (map.eval(u), callback_kind(map.target)) else { continue };
-            let v: Vec<f32> = value[..map.pieces.dim].iter().map(|&c| c as f32).collect();
-            obj.callbacks.attribute(gl, kind, &v);
+        let u = if i == nu { u1 } else { u0 + i as f32 * du };
+        for (machine, kind, dim) in &machines {
+            let Some(value) = machine.values(u) else { continue };
+            obj.callbacks.attribute(gl, *kind, &value[..*dim]);
         }
     }
     obj.callbacks.end(gl);

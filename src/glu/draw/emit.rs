@@ -34,11 +34,3 @@ pub(crate) fn emit_attributes(
         obj.callbacks.attribute(gl, GLU_NURBS_NORMAL, &surface_normal(pos, k, u, v, domain));
     }
 }
-
-/// The vertex callback at (u, v): (x, y, z) divided by w, then u, v.
-pub(crate) fn emit_position(gl: &mut Gl, obj: &mut NurbsObject, pos: &SurfacePatches, k: usize, u: f64, v: f64) {
-    let Some(s) = pos.eval(u, v) else { return };
-    let w = if k == 4 { s.point[3] } else { 1.0 };
-    let vertex = [(s.point[0] / w) as f32, (s.point[1] / w) as f32, (s.point[2] / w) as f32, u as f32, v as f32];
-    obj.callbacks.attribute(gl, GLU_NURBS_VERTEX, &vertex);
-}

@@ -5,6 +5,8 @@
 pub(crate) mod curve;
 mod emit;
 mod patches;
+mod sliced;
+pub(crate) mod slicer;
 pub(crate) mod surface;
 mod tessellate;
 mod trimmed;

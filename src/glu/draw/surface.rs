@@ -1,7 +1,7 @@
 //! Surfaces (`gluEndSurface`): culling, the patches and their grids, then the trimmed or the
 //! untrimmed way, through GL calls or the callbacks.
 
-use super::{patches, tessellate, trimmed};
+use super::{sliced, tessellate, trimmed};
 use crate::gl::Gl;
 use crate::glu::consts::*;
 use crate::glu::evaluation::culling::culled;
@@ -28,11 +28,20 @@ pub(crate) fn draw_surface(gl: &mut Gl, obj: &mut NurbsObject, def: &SurfaceDef)
     if !def.loops.is_empty() {
         return trimmed::draw_trimmed(gl, obj, &surface, &def.loops, &sampler, tessellate);
     }
+    // GLU's fast path is taken for domain-distance sampling unless outlining patches.
+    if obj.props.sampling_method != GLU_DOMAIN_DISTANCE || obj.props.display_mode == GLU_OUTLINE_PATCH {
+        let sliced = sliced::drawable(obj, sliced::slice_surface(obj, &surface));
+        return if tessellate {
+            sliced::tessellate_sliced(gl, obj, &surface, &sliced)
+        } else {
+            sliced::render_sliced(gl, obj, &surface, &sliced)
+        };
+    }
     let patches = drawable_patches(obj, &surface, &sampler);
     if tessellate {
         tessellate::tessellate_patches(gl, obj, &surface, &patches);
     } else {
-        patches::render_patches(gl, obj, &surface, &patches);
+        sliced::render_sliced(gl, obj, &surface, &sliced::grid_patches(&patches));
     }
 }
 

@@ -1,25 +1,47 @@
-//! Untrimmed surfaces in tessellator mode: each patch's grid blocks as `GL_QUAD_STRIP`s through
-//! the callbacks (GLU `mapmesh2f` with `output_triangles`). With only begin, vertex and end
-//! callbacks the grids are evaluated by the row kernel on rayon's workers, a batch ahead of the
-//! strips issued on this thread; this is the path benchmarked as `nurbs_untrimmed`.
+//! Untrimmed surfaces under `GLU_DOMAIN_DISTANCE` in tessellator mode, GLU's fast path
+//! (`OPTIMIZE_UNTRIMED_CASE` in `Subdivider::drawSurfaces`): each patch one grid block of
+//! max(1, ⌊rate·R⌋) steps a side, v from the top line down, as `GL_QUAD_STRIP`s through the
+//! callbacks (`mapmesh2f` with `output_triangles`), the last patch first as GLU evaluates its
+//! list of patches. Vertices come from GLU's `f32` evaluator ([`PatchMachine`]). With only
+//! begin, vertex and end callbacks the grids are evaluated on rayon's workers, a batch ahead of
+//! the strips issued on this thread; this is the path benchmarked as `nurbs_untrimmed`.
 
-use super::emit::{emit_attributes, emit_position};
+use super::sliced::glu_grid;
+use super::slicer::output::tessellate_pieces;
+use super::slicer::vertex::PatchVertices;
+use super::slicer::Piece;
 use crate::gl::consts::*;
 use crate::gl::Gl;
-use crate::glu::consts::*;
-use crate::glu::evaluation::kernel::{grid_vertices, grid_vertices_into};
+use crate::glu::evaluation::machine::PatchMachine;
 use crate::glu::evaluation::surface::{PatchGrid, Surface};
 use crate::glu::model::callbacks::StripSink;
 use crate::glu::model::object::NurbsObject;
 
-/// Issues every patch, in order.
+/// Issues every patch, last first.
 pub(crate) fn tessellate_patches(gl: &mut Gl, obj: &mut NurbsObject, surface: &Surface, patches: &[PatchGrid]) {
+    let patches: Vec<PatchGrid> = patches.iter().rev().copied().collect();
     if obj.callbacks.sinks().is_some() {
-        return tessellate_patches_in_parallel(gl, obj, surface, patches);
+        return tessellate_patches_in_parallel(gl, obj, surface, &patches);
     }
-    for patch in patches {
+    for patch in &patches {
         tessellate_patch(gl, obj, surface, patch);
     }
+}
+
+/// The patch's grid points, row j (v from the top) after row j − 1, as [x, y, z, u, v];
+/// `None` if the patch has no evaluator.
+fn grid_into(surface: &Surface, patch: &PatchGrid, out: &mut [[f32; 5]]) -> Option<()> {
+    let p = &surface.pos.patches;
+    let points = surface.pos.on(patch.u, patch.v)?;
+    let (u, v) = ((patch.u.0 as f32, patch.u.1 as f32), (patch.v.0 as f32, patch.v.1 as f32));
+    let machine = PatchMachine::new(&points, surface.k, (p.uorder, p.vorder), u, v)?;
+    let g = glu_grid(patch);
+    let us: Vec<f32> = (0..=g.nu).map(|i| g.u_at(i)).collect();
+    let ucoeffs = machine.u_coefficients(&us);
+    for (j, row) in out.chunks_exact_mut(g.nu + 1).enumerate() {
+        machine.position_row(g.v_at(j), &us, &ucoeffs, row)?;
+    }
+    Some(())
 }
 
 /// Grid points per batch of patches: small enough that evaluating the next batch overlaps
@@ -60,13 +82,7 @@ fn evaluate_batch(surface: &Surface, batch: &[PatchGrid], out: &mut Vec<[f32; 5]
         chunks.push((patch, chunk));
         free = after;
     }
-    chunks
-        .into_par_iter()
-        .map(|(patch, chunk)| {
-            let (us, vs) = patch.lines();
-            grid_vertices_into(&surface.pos, surface.k, &us, &vs, chunk).is_some()
-        })
-        .collect()
+    chunks.into_par_iter().map(|(patch, chunk)| grid_into(surface, patch, chunk).is_some()).collect()
 }
 
 /// [`tessellate_patch`] for every patch when only begin, vertex and end callbacks are set. The
@@ -123,41 +139,10 @@ fn issue_batch(
     }
 }
 
-/// The grid blocks of one patch as `GL_QUAD_STRIP`s through the callbacks (GLU `mapmesh2f`).
-/// Positions come from one grid evaluation of the patch's Bezier piece (each point once, though
-/// the strips issue interior points twice); other maps and normals are evaluated per vertex.
+/// The grid block of one patch through the callbacks, vertex by vertex.
 fn tessellate_patch(gl: &mut Gl, obj: &mut NurbsObject, surface: &Surface, patch: &PatchGrid) {
-    let (nu, nv) = (patch.nu, patch.nv);
-    let (us, vs) = patch.lines();
-    let grid = grid_vertices(&surface.pos, surface.k, &us, &vs);
-    let per_vertex = !surface.attributes.is_empty() || obj.callbacks.wants_normals();
-    let emit = |gl: &mut Gl, obj: &mut NurbsObject, i: usize, j: usize| {
-        if per_vertex {
-            emit_attributes(gl, obj, surface.view_ref(), us[i], vs[j]);
-        }
-        match &grid {
-            Some(g) => obj.callbacks.attribute(gl, GLU_NURBS_VERTEX, &g[j * (nu + 1) + i]),
-            None => emit_position(gl, obj, &surface.pos, surface.k, us[i], vs[j]),
-        }
-    };
-    if nu >= nv {
-        for i in 0..nu {
-            obj.callbacks.begin(gl, GL_QUAD_STRIP);
-            for j in (0..=nv).rev() {
-                emit(gl, obj, i, j);
-                emit(gl, obj, i + 1, j);
-            }
-            obj.callbacks.end(gl);
-        }
-    } else {
-        for j in 0..nv {
-            obj.callbacks.begin(gl, GL_QUAD_STRIP);
-            for i in (0..=nu).rev() {
-                emit(gl, obj, i, j + 1);
-                emit(gl, obj, i, j);
-            }
-            obj.callbacks.end(gl);
-        }
+    if let Some(maps) = PatchVertices::new(obj, surface, patch.u, patch.v) {
+        tessellate_pieces(gl, obj, &maps, &[Piece::Grid(glu_grid(patch))]);
     }
 }
 

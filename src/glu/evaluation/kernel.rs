@@ -2,49 +2,8 @@
 //! piece (its basis tables computed once), rows of points turned into the vertex-callback data
 //! GLU hands out ((x, y, z) divided by w, then u, v).
 
-use super::pieces::{locate, SurfacePatches};
 use crate::math::{BezierPatches, Scalar};
 use crate::tess::{MapView, Row, RowKernel};
-
-/// The vertex-callback data (x, y, z divided by w, then u, v) of every point of the grid
-/// `us` × `vs` (v outer), all inside one Bezier piece of `pos`, evaluated on the grid path.
-pub(crate) fn grid_vertices(pos: &SurfacePatches, k: usize, us: &[f64], vs: &[f64]) -> Option<Vec<[f32; 5]>> {
-    let mut out = vec![[0.0; 5]; us.len() * vs.len()];
-    grid_vertices_into(pos, k, us, vs, &mut out)?;
-    Some(out)
-}
-
-/// [`grid_vertices`] into `out` (`us.len() * vs.len()` entries, v outer).
-///
-/// Evaluated in f32, as GLU's own evaluator does (libnurbs `REAL` is `float`) and as the
-/// callbacks receive it: four points per SSE register instead of two. The vertices stay within
-/// an f32 ulp of the f64 evaluation (`tessellator_vertices_lie_on_the_surface...` in the tests:
-/// worst 4.4e-7 on a net ten units across), and the untrimmed case runs about 10% faster, its
-/// evaluation sharing two cores with the callbacks.
-pub(crate) fn grid_vertices_into(
-    pos: &SurfacePatches,
-    k: usize,
-    us: &[f64],
-    vs: &[f64],
-    out: &mut [[f32; 5]],
-) -> Option<()> {
-    let p = &pos.patches;
-    let mid = |r: &[f64]| 0.5 * (r[0] + r[r.len() - 1]);
-    let a = locate(&p.uintervals, mid(us))?;
-    let b = locate(&p.vintervals, mid(vs))?;
-    let net: Vec<f32> = p.patch(a, b)?.iter().map(|&c| c as f32).collect();
-    let kernel = piece_kernel(p, (a, b), &net, us, vs)?;
-    let mut row = Row::default();
-    let n = us.len();
-    if out.len() != n * vs.len() {
-        return None;
-    }
-    for ((j, &v), line) in vs.iter().enumerate().zip(out.chunks_exact_mut(n)) {
-        kernel.eval_row(j, &mut row);
-        vertex_row(&row, k, us, v, line, |data| data);
-    }
-    Some(())
-}
 
 /// The row kernel of Bezier piece (a, b) of `p` (its control points `net`, in the kernel's
 /// precision) over the lines `us` × `vs`, given in the surface's parameters.

@@ -4,7 +4,9 @@
 
 pub(crate) mod culling;
 pub(crate) mod kernel;
+pub(crate) mod machine;
 pub(crate) mod normals;
+pub(crate) mod patch_steps;
 pub(crate) mod pieces;
 pub(crate) mod sampling;
 pub(crate) mod surface;

@@ -26,21 +26,6 @@ impl PatchGrid {
     pub fn points(&self) -> usize {
         (self.nu + 1).saturating_mul(self.nv + 1)
     }
-
-    /// The grid lines: nu + 1 values across u, nv + 1 across v, the last exactly the end.
-    pub fn lines(&self) -> (Vec<f64>, Vec<f64>) {
-        let (u, v, nu, nv) = (self.u, self.v, self.nu, self.nv);
-        ((0..=nu).map(|i| grid_line(u, i, nu)).collect(), (0..=nv).map(|j| grid_line(v, j, nv)).collect())
-    }
-}
-
-/// Line `i` of `n` segments over `r`, exactly `r.1` at `i == n`.
-pub(crate) fn grid_line(r: (f64, f64), i: usize, n: usize) -> f64 {
-    if i == n {
-        r.1
-    } else {
-        r.0 + (r.1 - r.0) * i as f64 / n as f64
-    }
 }
 
 /// Everything needed to draw a surface: the position map's patches and the other maps'.

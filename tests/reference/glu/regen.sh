@@ -13,3 +13,5 @@ cc -std=c99 -O1 -o "$build/nurbs_errors" "$here/nurbs_errors.c" -lOSMesa -lGLU -
 GALLIUM_DRIVER=llvmpipe "$build/nurbs_errors" > "$out/nurbs_errors.txt"
 cc -std=c99 -O1 -o "$build/tess_counts" "$here/tess_counts.c" -lOSMesa -lGLU -lGL
 GALLIUM_DRIVER=llvmpipe "$build/tess_counts" > "$out/tess_counts.txt"
+cc -std=c99 -O1 -o "$build/surfpoints" "$here/surfpoints.c" -lOSMesa -lGLU -lGL
+GALLIUM_DRIVER=llvmpipe "$build/surfpoints" > "$out/surfpoints.txt"

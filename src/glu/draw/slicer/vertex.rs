@@ -1,0 +1,58 @@
+//! One surface vertex through the callbacks as GLU's tessellator mode hands it out
+//! (`inDoEvalCoord2EM`, `interface/insurfeval.cc`): the texture coordinate, colour and normal
+//! maps' values in that order, else the automatic normal when a normal callback is set, then the
+//! position (x, y, z divided by w) with (u, v). Every map is evaluated on the current patch by
+//! GLU's `f32` evaluator ([`PatchMachine`]).
+
+use crate::gl::Gl;
+use crate::glu::consts::*;
+use crate::glu::evaluation::machine::PatchMachine;
+use crate::glu::evaluation::surface::Surface;
+use crate::glu::model::object::NurbsObject;
+use crate::glu::model::targets::callback_kind;
+
+/// The maps of one patch, ready to evaluate.
+pub(crate) struct PatchVertices {
+    position: PatchMachine,
+    /// Attribute maps with their callback and component count, in callback order.
+    attributes: Vec<(PatchMachine, u32, usize)>,
+    has_normal_map: bool,
+    auto_normal: bool,
+}
+
+impl PatchVertices {
+    /// The machines of the patch [u0, u1] × [v0, v1]; `None` if the position map has none.
+    pub fn new(obj: &NurbsObject, surface: &Surface, u: (f64, f64), v: (f64, f64)) -> Option<Self> {
+        let machine = |map: &crate::glu::evaluation::pieces::SurfacePatches| {
+            let p = &map.patches;
+            let points = map.on(u, v)?;
+            PatchMachine::new(&points, p.dim, (p.uorder, p.vorder), (u.0 as f32, u.1 as f32), (v.0 as f32, v.1 as f32))
+        };
+        let position = machine(&surface.pos)?;
+        let attributes: Vec<(PatchMachine, u32, usize)> = surface
+            .attributes
+            .iter()
+            .filter_map(|map| Some((machine(map)?, callback_kind(map.target)?, map.patches.dim)))
+            .collect();
+        let has_normal_map = attributes.iter().any(|a| a.1 == GLU_NURBS_NORMAL);
+        Some(Self { position, attributes, has_normal_map, auto_normal: obj.callbacks.wants_normals() })
+    }
+
+    /// The callbacks of the vertex at (u, v).
+    pub fn emit(&self, gl: &mut Gl, obj: &mut NurbsObject, u: f32, v: f32) {
+        for (machine, kind, dim) in &self.attributes {
+            if let Some(values) = machine.values(u, v) {
+                obj.callbacks.attribute(gl, *kind, &values[..*dim]);
+            }
+        }
+        let point = if !self.has_normal_map && self.auto_normal {
+            let Some((point, normal)) = self.position.point_and_normal(u, v) else { return };
+            obj.callbacks.attribute(gl, GLU_NURBS_NORMAL, &normal);
+            point
+        } else {
+            let Some(point) = self.position.position(u, v) else { return };
+            point
+        };
+        obj.callbacks.attribute(gl, GLU_NURBS_VERTEX, &[point[0], point[1], point[2], u, v]);
+    }
+}

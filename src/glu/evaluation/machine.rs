@@ -1,0 +1,287 @@
+//! GLU's own evaluator for tessellator mode, in `f32` as GLU computes it: a Bezier patch held
+//! as GLU's `surfEvalMachine` (`interface/insurfeval.cc`), evaluated by Bernstein coefficients
+//! built up order by order (`inPreEvaluateWithDeriv`), summed row by row
+//! (`inDoDomain2WithDerivsEM`), with the analytic normal of `inDoEvalCoord2EM`: the partials
+//! w-corrected for rational maps (`inComputeFirstPartials`), crossed and normalised
+//! (`inComputeNormal2`), a vanishing partial re-taken a little inside the patch
+//! (`AVOID_ZERO_NORMAL`). Reproducing the arithmetic rather than only the mathematics keeps the
+//! printed vertices and normals GLU's to the last digit.
+
+/// GLU's `MAXORDER`; larger orders are refused before they get here.
+pub(crate) const MAX_ORDER: usize = 24;
+/// `MYZERO`: a partial no larger than this in every component counts as vanishing.
+const ZERO: f32 = 0.000001;
+/// `MYDELTA`: how far (as a fraction of the patch) GLU moves to re-take a vanishing partial.
+const DELTA: f32 = 0.001;
+
+/// One map's Bezier patch over [u1, u2] × [v1, v2]: `k` floats a point, v fastest.
+#[derive(Clone, Debug)]
+pub(crate) struct PatchMachine {
+    k: usize,
+    u: (f32, f32),
+    v: (f32, f32),
+    uorder: usize,
+    vorder: usize,
+    points: Vec<f32>,
+}
+
+/// A point (k values) and its partials in the patch's normalised parameters.
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct MachineSample {
+    pub point: [f32; 4],
+    pub du: [f32; 4],
+    pub dv: [f32; 4],
+}
+
+impl PatchMachine {
+    /// The machine for control points `points` (u-major), or `None` for orders GLU refuses.
+    pub fn new(points: &[f64], k: usize, orders: (usize, usize), u: (f32, f32), v: (f32, f32)) -> Option<Self> {
+        let (uorder, vorder) = orders;
+        let fits = (1..=MAX_ORDER).contains(&uorder) && (1..=MAX_ORDER).contains(&vorder) && (1..=4).contains(&k);
+        if !fits || points.len() < uorder * vorder * k {
+            return None;
+        }
+        let points = points[..uorder * vorder * k].iter().map(|&c| c as f32).collect();
+        Some(Self { k, u, v, uorder, vorder, points })
+    }
+
+    /// The value and partials at (u, v); `None` on an empty patch (GLU evaluates nothing).
+    pub fn sample(&self, u: f32, v: f32) -> Option<MachineSample> {
+        if self.u.1 == self.u.0 || self.v.1 == self.v.0 {
+            return None;
+        }
+        let s = (u - self.u.0) / (self.u.1 - self.u.0);
+        let t = (v - self.v.0) / (self.v.1 - self.v.0);
+        let (uc, ud) = coefficients(self.uorder, s);
+        let (vc, vd) = coefficients(self.vorder, t);
+        let mut out = MachineSample::default();
+        for j in 0..self.k {
+            for row in 0..self.uorder {
+                let at = |col: usize| self.points[(row * self.vorder + col) * self.k + j];
+                let mut p = vc[0] * at(0);
+                let mut pdv = vd[0] * at(0);
+                for col in 1..self.vorder {
+                    p += vc[col] * at(col);
+                    pdv += vd[col] * at(col);
+                }
+                out.point[j] += uc[row] * p;
+                out.du[j] += ud[row] * p;
+                out.dv[j] += uc[row] * pdv;
+            }
+        }
+        Some(out)
+    }
+
+    /// The position (divided by w for k = 4) and the unit normal at (u, v), as GLU's
+    /// automatic normal computes them.
+    pub fn point_and_normal(&self, u: f32, v: f32) -> Option<([f32; 3], [f32; 3])> {
+        let s = self.sample(u, v)?;
+        let (p, mut du, mut dv) = (s.point, s.du, s.dv);
+        if self.k == 4 {
+            first_partials(&p, &mut du, &mut dv);
+        }
+        let vanishing = |d: &[f32; 4]| d[..3].iter().all(|c| c.abs() <= ZERO);
+        if vanishing(&dv) {
+            let (lo, hi) = self.u;
+            let u = if u - DELTA * (hi - lo) < lo { u + DELTA * (hi - lo) } else { u - DELTA * (hi - lo) };
+            dv = self.sample(u, v)?.dv;
+            if self.k == 4 {
+                first_partials(&p, &mut du, &mut dv);
+            }
+        } else if vanishing(&du) {
+            let (lo, hi) = self.v;
+            let v = if v - DELTA * (hi - lo) < lo { v + DELTA * (hi - lo) } else { v - DELTA * (hi - lo) };
+            du = self.sample(u, v)?.du;
+            if self.k == 4 {
+                first_partials(&p, &mut du, &mut dv);
+            }
+        }
+        Some((project(&p, self.k), normal(&du, &dv)))
+    }
+
+    /// [`Self::position`] at (us[i], v) for every i, into `out` as [x, y, z, u, v]: the same
+    /// arithmetic, with the sums along v (which depend on v only) and the u coefficients
+    /// (given per column in `ucoeffs`, from [`Self::u_coefficients`]) taken once per row.
+    pub fn position_row(&self, v: f32, us: &[f32], ucoeffs: &[[f32; MAX_ORDER]], out: &mut [[f32; 5]]) -> Option<()> {
+        if self.u.1 == self.u.0 || self.v.1 == self.v.0 {
+            return None;
+        }
+        let (vc, _) = coefficients(self.vorder, (v - self.v.0) / (self.v.1 - self.v.0));
+        let mut p = [[0.0f32; 4]; MAX_ORDER];
+        for (row, sums) in p.iter_mut().enumerate().take(self.uorder) {
+            for (j, sum) in sums.iter_mut().enumerate().take(self.k) {
+                let at = |col: usize| self.points[(row * self.vorder + col) * self.k + j];
+                *sum = vc[0] * at(0);
+                for col in 1..self.vorder {
+                    *sum += vc[col] * at(col);
+                }
+            }
+        }
+        for ((slot, &u), uc) in out.iter_mut().zip(us).zip(ucoeffs) {
+            // Each component's sum runs over the rows in GLU's order; the four components side
+            // by side (unused ones stay zero) so that they share one vector register.
+            let mut point = [0.0f32; 4];
+            for (w, sums) in uc.iter().zip(&p).take(self.uorder) {
+                for (c, s) in point.iter_mut().zip(sums) {
+                    *c += w * s;
+                }
+            }
+            let q = project(&point, self.k);
+            *slot = [q[0], q[1], q[2], u, v];
+        }
+        Some(())
+    }
+
+    /// The u coefficients of every value of `us`, for [`Self::position_row`].
+    pub fn u_coefficients(&self, us: &[f32]) -> Vec<[f32; MAX_ORDER]> {
+        us.iter().map(|&u| coefficients(self.uorder, (u - self.u.0) / (self.u.1 - self.u.0)).0).collect()
+    }
+
+    /// The raw k values at (u, v) (GLU's `inDoDomain2EM`, as attribute maps are handed out).
+    pub fn values(&self, u: f32, v: f32) -> Option<[f32; 4]> {
+        Some(self.sample(u, v)?.point)
+    }
+
+    /// The position only (divided by w for k = 4): GLU's `inDoDomain2EM`.
+    pub fn position(&self, u: f32, v: f32) -> Option<[f32; 3]> {
+        Some(project(&self.sample(u, v)?.point, self.k))
+    }
+}
+
+/// One map's Bezier piece over [u1, u2] as GLU's curve evaluator holds it
+/// (`curveEvalMachine`, `interface/incurveeval.cc`).
+#[derive(Clone, Debug)]
+pub(crate) struct CurveMachine {
+    k: usize,
+    u: (f32, f32),
+    order: usize,
+    points: Vec<f32>,
+}
+
+impl CurveMachine {
+    /// The machine for control points `points`, or `None` for orders GLU refuses.
+    pub fn new(points: &[f64], k: usize, order: usize, u: (f32, f32)) -> Option<Self> {
+        let fits = (1..=MAX_ORDER).contains(&order) && (1..=4).contains(&k) && points.len() >= order * k;
+        fits.then(|| Self { k, u, order, points: points[..order * k].iter().map(|&c| c as f32).collect() })
+    }
+
+    /// The raw k values at u (GLU `inDoDomain1`); `None` on an empty piece.
+    pub fn values(&self, u: f32) -> Option<[f32; 4]> {
+        if self.u.1 == self.u.0 {
+            return None;
+        }
+        let (c, _) = coefficients(self.order, (u - self.u.0) / (self.u.1 - self.u.0));
+        let mut out = [0.0f32; 4];
+        for (j, slot) in out.iter_mut().enumerate().take(self.k) {
+            for row in 0..self.order {
+                *slot += c[row] * self.points[row * self.k + j];
+            }
+        }
+        Some(out)
+    }
+}
+
+/// (x, y, z), divided by w when the map is rational.
+fn project(p: &[f32; 4], k: usize) -> [f32; 3] {
+    if k == 4 {
+        [p[0] / p[3], p[1] / p[3], p[2] / p[3]]
+    } else {
+        [p[0], p[1], p[2]]
+    }
+}
+
+/// GLU `inComputeFirstPartials`: the partials of the projected point, scaled by w².
+fn first_partials(p: &[f32; 4], du: &mut [f32; 4], dv: &mut [f32; 4]) {
+    for d in [du, dv] {
+        for c in 0..3 {
+            d[c] = d[c] * p[3] - d[3] * p[c];
+        }
+    }
+}
+
+/// GLU `inComputeNormal2`: du × dv over its length (taken in double), left alone if zero.
+fn normal(du: &[f32; 4], dv: &[f32; 4]) -> [f32; 3] {
+    let mut n = [du[1] * dv[2] - du[2] * dv[1], du[2] * dv[0] - du[0] * dv[2], du[0] * dv[1] - du[1] * dv[0]];
+    let mag = f64::from(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt() as f32;
+    if mag > 0.0 {
+        for c in &mut n {
+            *c /= mag;
+        }
+    }
+    n
+}
+
+/// The Bernstein polynomials of `order` at t and their derivatives (GLU
+/// `inPreEvaluateWithDeriv`): each order's coefficients from the previous one's, the
+/// derivatives taken from the next-to-last order.
+fn coefficients(order: usize, t: f32) -> ([f32; MAX_ORDER], [f32; MAX_ORDER]) {
+    let (mut c, mut d) = ([0.0f32; MAX_ORDER], [0.0f32; MAX_ORDER]);
+    let one_minus = 1.0 - t;
+    match order {
+        1 => {
+            c[0] = 1.0;
+            return (c, d);
+        }
+        2 => {
+            (c[0], c[1], d[0], d[1]) = (one_minus, t, -1.0, 1.0);
+            return (c, d);
+        }
+        _ => {}
+    }
+    (c[0], c[1]) = (one_minus, t);
+    for i in 2..order - 1 {
+        raise(&mut c, i, t, one_minus);
+    }
+    d[0] = -c[0];
+    for j in 1..order - 1 {
+        d[j] = c[j - 1] - c[j];
+    }
+    d[order - 1] = c[order - 2];
+    raise(&mut c, order - 1, t, one_minus);
+    (c, d)
+}
+
+/// One order up: the `i` coefficients of order i become the i + 1 of order i + 1.
+fn raise(c: &mut [f32; MAX_ORDER], i: usize, t: f32, one_minus: f32) {
+    let mut old = c[0] * t;
+    c[0] *= one_minus;
+    for j in 1..i {
+        let temp = old;
+        old = c[j] * t;
+        c[j] = temp + one_minus * c[j];
+    }
+    c[i] = old;
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn bernstein_coefficients_sum_to_one_and_derivatives_to_zero() {
+        for order in 1..=6 {
+            let (c, d) = coefficients(order, 0.3);
+            let sum: f32 = c[..order].iter().sum();
+            let dsum: f32 = d[..order].iter().sum();
+            assert!((sum - 1.0).abs() < 1e-6 && dsum.abs() < 1e-6, "order {order}");
+        }
+        // Cubic at t: (1−t)³, 3t(1−t)², 3t²(1−t), t³; GLU's derivatives are the quadratic's
+        // differences, the true derivatives over 3: −(1−t)², (1−t)² − 2t(1−t), ...
+        let (c, d) = coefficients(4, 0.5);
+        assert_eq!(&c[..4], &[0.125, 0.375, 0.375, 0.125]);
+        assert_eq!(&d[..4], &[-0.25, -0.25, 0.25, 0.25]);
+    }
+
+    #[test]
+    fn flat_bilinear_patch_has_the_z_normal() {
+        let pts = [0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 1.0, 0.0, 0.0, 1.0, 1.0, 0.0];
+        let m = PatchMachine::new(&pts, 3, (2, 2), (0.0, 1.0), (0.0, 1.0)).unwrap();
+        assert_eq!(m.point_and_normal(0.25, 0.5), Some(([0.25, 0.5, 0.0], [0.0, 0.0, 1.0])));
+    }
+
+    #[test]
+    fn refused_orders_and_short_nets_give_no_machine() {
+        assert!(PatchMachine::new(&[0.0; 3], 3, (2, 2), (0.0, 1.0), (0.0, 1.0)).is_none());
+        assert!(PatchMachine::new(&[0.0; 300], 3, (25, 1), (0.0, 1.0), (0.0, 1.0)).is_none());
+    }
+}
