@@ -90,6 +90,7 @@ struct Saved {
     eval: Option<EvalAttrib>,
     list_base: GLuint,
     texture: super::texture::TextureAttrib,
+    hints: super::hint::Hints,
     /// (capability, on) for every enable a group of the mask files.
     enables: Vec<(GLenum, bool)>,
 }
@@ -161,6 +162,7 @@ impl Gl {
             eval: (mask & (GL_EVAL_BIT | GL_ENABLE_BIT) != 0).then(|| self.eval.attrib()),
             list_base: self.list_base_value(),
             texture: self.texture_attrib(),
+            hints: self.hints,
             enables,
         };
         self.attrib_stack.entries.push(saved);
@@ -224,6 +226,9 @@ impl Gl {
         }
         if has(GL_LIST_BIT) {
             self.set_list_base_value(saved.list_base);
+        }
+        if has(GL_HINT_BIT) {
+            self.hints = saved.hints;
         }
         if has(GL_TEXTURE_BIT) {
             self.restore_texture_attrib(saved.texture);

@@ -293,6 +293,16 @@ pub const GL_ALPHA8: GLenum = 0x803C;
 pub const GL_LUMINANCE8: GLenum = 0x8040;
 pub const GL_LUMINANCE8_ALPHA8: GLenum = 0x8045;
 
+// glHint (GL 1.1 spec §5.6).
+pub const GL_PERSPECTIVE_CORRECTION_HINT: GLenum = 0x0C50;
+pub const GL_POINT_SMOOTH_HINT: GLenum = 0x0C51;
+pub const GL_LINE_SMOOTH_HINT: GLenum = 0x0C52;
+pub const GL_POLYGON_SMOOTH_HINT: GLenum = 0x0C53;
+pub const GL_FOG_HINT: GLenum = 0x0C54;
+pub const GL_DONT_CARE: GLenum = 0x1100;
+pub const GL_FASTEST: GLenum = 0x1101;
+pub const GL_NICEST: GLenum = 0x1102;
+
 // Blending, the alpha test and fog (GL 1.1 spec §4.1.3, §4.1.6, §3.9).
 pub const GL_ZERO: GLenum = 0;
 pub const GL_ONE: GLenum = 1;
@@ -333,6 +343,7 @@ pub const GL_FOG_BIT: GLenum = 0x0000_0080;
 pub const GL_VIEWPORT_BIT: GLenum = 0x0000_0800;
 pub const GL_TRANSFORM_BIT: GLenum = 0x0000_1000;
 pub const GL_ENABLE_BIT: GLenum = 0x0000_2000;
+pub const GL_HINT_BIT: GLenum = 0x0000_8000;
 pub const GL_TEXTURE_BIT: GLenum = 0x0004_0000;
 pub const GL_ALL_ATTRIB_BITS: GLenum = 0xFFFF_FFFF;
 

@@ -121,6 +121,8 @@ pub(crate) enum ListCommand {
     TexEnv(GLenum, GLenum, Vec<f32>),
     /// `glTexGen*`: coordinate, name and values (the eye plane is transformed when called).
     TexGen(GLenum, GLenum, Vec<f32>),
+    /// `glHint`.
+    Hint(GLenum, GLenum),
     BlendFunc(GLenum, GLenum),
     AlphaFunc(GLenum, f32),
     Fog(GLenum, Vec<f32>),
@@ -454,6 +456,7 @@ impl Gl {
             C::TexParameter(target, pname, param) => self.tex_parameteri(*target, *pname, *param),
             C::TexEnv(target, pname, params) => self.tex_envfv(*target, *pname, params),
             C::TexGen(coord, pname, params) => self.tex_genfv(*coord, *pname, params),
+            C::Hint(target, mode) => self.hint(*target, *mode),
             C::BlendFunc(s, d) => self.blend_func(*s, *d),
             C::AlphaFunc(func, reference) => self.alpha_func(*func, *reference),
             C::Fog(pname, params) => self.fogfv(*pname, params),

@@ -141,6 +141,18 @@ impl Gl {
         }
     }
 
+    /// `glLoadMatrixd`: as [`Gl::load_matrixf`], the values cast to float (Mesa keeps floats).
+    pub fn load_matrixd(&mut self, m: &[GLdouble]) {
+        let m: Vec<GLfloat> = m.iter().take(16).map(|&v| v as GLfloat).collect();
+        self.load_matrixf(&m);
+    }
+
+    /// `glMultMatrixd`: as [`Gl::mult_matrixf`], the values cast to float.
+    pub fn mult_matrixd(&mut self, m: &[GLdouble]) {
+        let m: Vec<GLfloat> = m.iter().take(16).map(|&v| v as GLfloat).collect();
+        self.mult_matrixf(&m);
+    }
+
     /// `glGetFloatv(GL_MODELVIEW_MATRIX)` for GLU, which loads its sampling matrices so
     /// (`glrenderer.cc`). Unlike `glGet`, it records no error inside `begin`/`end`.
     pub(crate) fn modelview_matrix(&self) -> Mat4 {

@@ -16,6 +16,7 @@ mod eval;
 pub mod feedback;
 mod fragment;
 mod frame;
+mod hint;
 mod immediate;
 mod lighting;
 pub(crate) mod lists;
@@ -146,6 +147,8 @@ pub struct Gl {
     textures: texture::Textures,
     /// `glTexGen`'s modes and planes.
     tex_gen: texgen::TexGen,
+    /// `glHint`'s requests.
+    hints: hint::Hints,
     /// Blending, the alpha test and fog.
     fragment_ops: fragment::FragmentOps,
     /// How client memory is laid out for images and bitmaps (`glPixelStore`).
@@ -196,6 +199,7 @@ impl Gl {
             pixel_stores: pixels::PixelStores::default(),
             textures: texture::Textures::default(),
             tex_gen: texgen::TexGen::default(),
+            hints: hint::Hints::default(),
             fragment_ops: fragment::FragmentOps::default(),
             nurbs: Vec::new(),
         }
@@ -392,6 +396,17 @@ impl Gl {
         self.get_converted(pname, params, |v| v as GLfloat);
     }
 
+    /// `glGetDoublev` for the queries of [`Gl::get_integerv`].
+    pub fn get_doublev(&mut self, pname: GLenum, params: &mut [GLdouble]) {
+        self.get_converted(pname, params, |v| v);
+    }
+
+    /// `glGetBooleanv` for the queries of [`Gl::get_integerv`]: `GL_TRUE` for a value other
+    /// than 0 (GL 1.1 §6.1.2).
+    pub fn get_booleanv(&mut self, pname: GLenum, params: &mut [GLboolean]) {
+        self.get_converted(pname, params, |v| if v != 0.0 { GL_TRUE } else { GL_FALSE });
+    }
+
     /// Answers a `glGet` into `params`; a slice shorter than the answer is `GL_INVALID_VALUE`.
     fn get_converted<T>(&mut self, pname: GLenum, params: &mut [T], convert: impl Fn(f64) -> T) {
         let mut values = [0.0f64; 4];
@@ -413,7 +428,7 @@ impl Gl {
             out[0] = f64::from(MAX_EVAL_ORDER);
             return Some(1);
         }
-        let value = self.list_query(pname).or_else(|| self.texture_query(pname));
+        let value = self.list_query(pname).or_else(|| self.texture_query(pname)).or_else(|| self.hint_query(pname));
         if let Some(value) = value.or_else(|| self.primitive_mode_query(pname)) {
             out[0] = value;
             return Some(1);

@@ -97,6 +97,15 @@ fn enum_value(token: &str) -> u32 {
         ("GL_UNSIGNED_SHORT_4_4_4_4", GL_UNSIGNED_SHORT_4_4_4_4),
         ("GL_UNSIGNED_BYTE_3_3_2", GL_UNSIGNED_BYTE_3_3_2),
         ("GL_UNSIGNED_INT_8_8_8_8_REV", GL_UNSIGNED_INT_8_8_8_8_REV),
+        ("GL_PERSPECTIVE_CORRECTION_HINT", GL_PERSPECTIVE_CORRECTION_HINT),
+        ("GL_POINT_SMOOTH_HINT", GL_POINT_SMOOTH_HINT),
+        ("GL_LINE_SMOOTH_HINT", GL_LINE_SMOOTH_HINT),
+        ("GL_POLYGON_SMOOTH_HINT", GL_POLYGON_SMOOTH_HINT),
+        ("GL_FOG_HINT", GL_FOG_HINT),
+        ("GL_DONT_CARE", GL_DONT_CARE),
+        ("GL_FASTEST", GL_FASTEST),
+        ("GL_NICEST", GL_NICEST),
+        ("GL_HINT_BIT", GL_HINT_BIT),
         ("GL_S", GL_S),
         ("GL_T", GL_T),
         ("GL_R", GL_R),
@@ -433,6 +442,7 @@ impl Runner {
                 gl.draw_pixels(w, h, format, type_, &bytes);
             }
             "typed" => typed_call(gl, &mut a),
+            "hint" => gl.hint(a.e(), a.e()),
             "tex_geni" => gl.tex_geni(a.e(), a.e(), a.e() as i32),
             "tex_genfv" => gl.tex_genfv(a.e(), a.e(), &a.floats()),
             "get_tex_genfv" => {

@@ -318,6 +318,15 @@ typedef double GLclampd;
 #define GL_ALPHA8 0x803C
 #define GL_LUMINANCE8 0x8040
 #define GL_LUMINANCE8_ALPHA8 0x8045
+/* glHint (GL 1.1 spec §5.6). */
+#define GL_PERSPECTIVE_CORRECTION_HINT 0x0C50
+#define GL_POINT_SMOOTH_HINT 0x0C51
+#define GL_LINE_SMOOTH_HINT 0x0C52
+#define GL_POLYGON_SMOOTH_HINT 0x0C53
+#define GL_FOG_HINT 0x0C54
+#define GL_DONT_CARE 0x1100
+#define GL_FASTEST 0x1101
+#define GL_NICEST 0x1102
 /* Blending, the alpha test and fog (GL 1.1 spec §4.1.3, §4.1.6, §3.9). */
 #define GL_ZERO 0
 #define GL_ONE 1
@@ -356,6 +365,7 @@ typedef double GLclampd;
 #define GL_VIEWPORT_BIT 0x00000800
 #define GL_TRANSFORM_BIT 0x00001000
 #define GL_ENABLE_BIT 0x00002000
+#define GL_HINT_BIT 0x00008000
 #define GL_TEXTURE_BIT 0x00040000
 #define GL_ALL_ATTRIB_BITS 0xFFFFFFFF
 /* Line stipple, polygon offset and clip-plane queries. */
@@ -642,6 +652,13 @@ GLAPI void GLAPIENTRY glRectfv(const GLfloat *v1, const GLfloat *v2);
 GLAPI void GLAPIENTRY glRectdv(const GLdouble *v1, const GLdouble *v2);
 GLAPI void GLAPIENTRY glRectiv(const GLint *v1, const GLint *v2);
 GLAPI void GLAPIENTRY glRectsv(const GLshort *v1, const GLshort *v2);
+
+/* Hints, the double matrices and the other glGet forms. */
+GLAPI void GLAPIENTRY glHint(GLenum target, GLenum mode);
+GLAPI void GLAPIENTRY glLoadMatrixd(const GLdouble *m);
+GLAPI void GLAPIENTRY glMultMatrixd(const GLdouble *m);
+GLAPI void GLAPIENTRY glGetDoublev(GLenum pname, GLdouble *params);
+GLAPI void GLAPIENTRY glGetBooleanv(GLenum pname, GLboolean *params);
 
 /* Texture coordinate generation. */
 GLAPI void GLAPIENTRY glTexGeni(GLenum coord, GLenum pname, GLint param);

@@ -20,4 +20,6 @@ forward! {
 vector! {
     glLoadMatrixf(GLfloat; 16) => load_matrixf;
     glMultMatrixf(GLfloat; 16) => mult_matrixf;
+    glLoadMatrixd(GLdouble; 16) => load_matrixd;
+    glMultMatrixd(GLdouble; 16) => mult_matrixd;
 }

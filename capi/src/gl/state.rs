@@ -46,6 +46,24 @@ fn get_count(pname: GLenum) -> usize {
 }
 
 entry! {
+    /// `glGetDoublev`: `Gl::get_doublev`.
+    unsafe fn glGetDoublev(pname: GLenum, params: *mut GLdouble) {
+        with_gl(|gl| gl.get_doublev(pname, unsafe { array_mut(params, get_count(pname)) }))
+    }
+}
+
+entry! {
+    /// `glGetBooleanv`: `Gl::get_booleanv`.
+    unsafe fn glGetBooleanv(pname: GLenum, params: *mut GLboolean) {
+        with_gl(|gl| gl.get_booleanv(pname, unsafe { array_mut(params, get_count(pname)) }))
+    }
+}
+
+forward! {
+    glHint(target: GLenum, mode: GLenum) => hint;
+}
+
+entry! {
     /// `glGetIntegerv`: `Gl::get_integerv`.
     unsafe fn glGetIntegerv(pname: GLenum, params: *mut GLint) {
         with_gl(|gl| gl.get_integerv(pname, unsafe { array_mut(params, get_count(pname)) }))

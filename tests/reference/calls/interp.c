@@ -43,6 +43,8 @@ static const struct enum_name enums[] = {
     E(GL_DEPTH_COMPONENT), E(GL_RED), E(GL_GREEN), E(GL_BLUE), E(GL_BGR), E(GL_BGRA), E(GL_BITMAP),
     E(GL_UNSIGNED_SHORT_5_6_5), E(GL_UNSIGNED_SHORT_4_4_4_4), E(GL_UNSIGNED_BYTE_3_3_2),
     E(GL_UNSIGNED_INT_8_8_8_8_REV), E(GL_UNPACK_LSB_FIRST),
+    E(GL_PERSPECTIVE_CORRECTION_HINT), E(GL_POINT_SMOOTH_HINT), E(GL_LINE_SMOOTH_HINT),
+    E(GL_POLYGON_SMOOTH_HINT), E(GL_FOG_HINT), E(GL_DONT_CARE), E(GL_FASTEST), E(GL_NICEST), E(GL_HINT_BIT),
     E(GL_S), E(GL_T), E(GL_R), E(GL_Q), E(GL_TEXTURE_GEN_MODE), E(GL_OBJECT_PLANE), E(GL_EYE_PLANE),
     E(GL_OBJECT_LINEAR), E(GL_EYE_LINEAR), E(GL_SPHERE_MAP), E(GL_NORMAL_MAP), E(GL_REFLECTION_MAP),
     E(GL_TEXTURE_GEN_S), E(GL_TEXTURE_GEN_T), E(GL_TEXTURE_GEN_Q),
@@ -588,6 +590,9 @@ static void run_call(const char *c)
         for (long i = 0; i < given; i++) bytes[i] = (GLubyte)f[i];
         glDrawPixels(w, h, format, type, f ? (type == GL_FLOAT ? (const GLvoid *)f : (const GLvoid *)bytes) : NULL);
         free(f);
+    } else if (!strcmp(c, "hint")) {
+        GLenum target = arg_enum();
+        glHint(target, arg_enum());
     } else if (!strcmp(c, "typed")) {
         run_typed();
     } else if (!strcmp(c, "tex_geni")) {
