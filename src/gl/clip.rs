@@ -31,8 +31,7 @@ impl Gl {
         let Some(eq) = equation.get(..4) else { return self.set_error(GL_INVALID_VALUE) };
         let eq = [eq[0], eq[1], eq[2], eq[3]];
         let object = Vec4::from_array(eq.map(|c| c as f32));
-        // A row vector times M⁻¹ is (M⁻¹)ᵀ times the column vector.
-        let eye = self.matrices.modelview().inverse().transpose() * object;
+        let eye = self.plane_to_eye(object);
         self.raster.clip_planes[i] = eye.to_array();
         self.touch_state();
     }

@@ -17,7 +17,7 @@ use super::frame::{Command, DrawState};
 use super::types::*;
 use super::vertex::Vertex;
 use super::Gl;
-use glam::{Mat3, Vec3, Vec4};
+use glam::Vec4;
 
 /// `GL_FEEDBACK` (GL 1.1 table 5.3).
 pub const GL_FEEDBACK: GLenum = 0x1C01;
@@ -331,12 +331,7 @@ fn feedback_tex_coord(state: &DrawState, v: &Vertex) -> [GLfloat; 4] {
     let generated = texture.generate.map_or(given, |g| {
         let object = Vec4::from_array(v.position);
         let eye = state.modelview * object;
-        let normal_matrix = Mat3::from_mat4(state.modelview).inverse().transpose();
-        let mut normal = normal_matrix * Vec3::from_array(v.normal);
-        if state.normalize || state.rescale_normal {
-            normal = normal.normalize_or_zero();
-        }
-        g.apply(given, object, eye, normal)
+        g.apply(given, object, eye, state.eye_normal(state.normal_matrix(), v.normal))
     });
     (texture.matrix * generated).to_array()
 }

@@ -8,7 +8,7 @@ use super::offset::PolygonOffset;
 use super::texture::BoundTexture;
 use super::types::{GLbitfield, GLenum};
 use super::vertex::Vertex;
-use glam::Mat4;
+use glam::{Mat3, Mat4, Vec3};
 
 /// A `begin`/`end` pair: its mode and its vertices `first..first + count` of [`Frame::vertices`].
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -89,6 +89,28 @@ pub struct DrawState {
     /// `glPolygonStipple`'s mask when `GL_POLYGON_STIPPLE` is enabled: row y, bit x for window
     /// pixel (x, y) modulo 32.
     pub polygon_stipple: Option<[u32; 32]>,
+}
+
+impl DrawState {
+    /// What normals are transformed by into eye coordinates: the inverse transpose of the
+    /// modelview's upper 3×3 (GL 1.1 §2.10.3).
+    #[must_use]
+    pub fn normal_matrix(&self) -> Mat3 {
+        Mat3::from_mat4(self.modelview).inverse().transpose()
+    }
+
+    /// A normal in eye coordinates through `normal_matrix` (this state's
+    /// [`DrawState::normal_matrix`], computed once per primitive by the caller), made unit length
+    /// when `GL_NORMALIZE` or `GL_RESCALE_NORMAL` asks for it.
+    #[must_use]
+    pub fn eye_normal(&self, normal_matrix: Mat3, normal: [f32; 3]) -> Vec3 {
+        let n = normal_matrix * Vec3::from_array(normal);
+        if self.normalize || self.rescale_normal {
+            n.normalize_or_zero()
+        } else {
+            n
+        }
+    }
 }
 
 /// Framebuffer operations and draws, in program order.

@@ -237,12 +237,16 @@ impl Gl {
 
     /// The first `N` values of a `*v` argument, or `GL_INVALID_VALUE` if the slice is shorter.
     pub(crate) fn needs<const N: usize>(&mut self, v: &[GLfloat]) -> Option<[GLfloat; N]> {
-        match v.get(..N) {
-            Some(head) => head.try_into().ok(),
-            None => {
-                self.set_error(GL_INVALID_VALUE);
-                None
-            }
+        self.first::<N, GLfloat>(v)
+    }
+
+    /// The first `N` values of a `*v` argument of any type, or `GL_INVALID_VALUE` if the slice
+    /// is shorter.
+    pub(crate) fn first<const N: usize, T: Copy>(&mut self, v: &[T]) -> Option<[T; N]> {
+        let head = v.get(..N).and_then(|h| <[T; N]>::try_from(h).ok());
+        if head.is_none() {
+            self.set_error(GL_INVALID_VALUE);
         }
+        head
     }
 }

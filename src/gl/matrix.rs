@@ -141,6 +141,13 @@ impl Gl {
         }
     }
 
+    /// A plane given in object coordinates, as the current modelview matrix M takes it to eye
+    /// coordinates (`glClipPlane`, `glTexGen`'s `GL_EYE_PLANE`; GL 1.1 §2.11): the row vector
+    /// (p₁ p₂ p₃ p₄) M⁻¹, which is (M⁻¹)ᵀ times the column.
+    pub(crate) fn plane_to_eye(&self, plane: glam::Vec4) -> glam::Vec4 {
+        self.matrices.modelview().inverse().transpose() * plane
+    }
+
     /// `glLoadMatrixd`: as [`Gl::load_matrixf`], the values cast to float (Mesa keeps floats).
     pub fn load_matrixd(&mut self, m: &[GLdouble]) {
         let m: Vec<GLfloat> = m.iter().take(16).map(|&v| v as GLfloat).collect();

@@ -424,6 +424,16 @@ impl Gl {
         if self.reject_inside_begin_end() {
             return None;
         }
+        let n = self.query(pname, out);
+        if n.is_none() {
+            self.set_error(GL_INVALID_ENUM);
+        }
+        n
+    }
+
+    /// A `glGet` answer: how many values `pname` has, written into `out`; `None` for a name
+    /// this façade does not answer.
+    fn query(&self, pname: GLenum, out: &mut [f64; 4]) -> Option<usize> {
         if pname == GL_MAX_EVAL_ORDER {
             out[0] = f64::from(MAX_EVAL_ORDER);
             return Some(1);
@@ -433,15 +443,18 @@ impl Gl {
             out[0] = value;
             return Some(1);
         }
-        let n = self
-            .eval
+        self.eval
             .grid_query(pname, out)
             .or_else(|| self.raster_pos_query(pname, out))
-            .or_else(|| self.current_query(pname, out));
-        if n.is_none() {
-            self.set_error(GL_INVALID_ENUM);
-        }
-        n
+            .or_else(|| self.current_query(pname, out))
+    }
+
+    /// How many values `glGet*v(pname)` writes (1 for a name it does not answer, where it
+    /// writes none and sets `GL_INVALID_ENUM`): what a binding that has only a pointer may
+    /// hand `get_*v` as the slice's length.
+    #[must_use]
+    pub fn get_len(&self, pname: GLenum) -> usize {
+        self.query(pname, &mut [0.0; 4]).unwrap_or(1)
     }
 
     /// The current attributes' `glGet` answers (GL 1.1 table 6.5).

@@ -127,11 +127,7 @@ impl Gl {
                 self.tex_gen.coords[index].mode = mode;
             }
             GL_OBJECT_PLANE => self.tex_gen.coords[index].object_plane = Vec4::from_slice(values),
-            GL_EYE_PLANE => {
-                // (p1 p2 p3 p4) M⁻¹ as a row vector: the transpose of M⁻¹ times the column.
-                let inverse = self.matrices.modelview().inverse();
-                self.tex_gen.coords[index].eye_plane = inverse.transpose() * Vec4::from_slice(values);
-            }
+            GL_EYE_PLANE => self.tex_gen.coords[index].eye_plane = self.plane_to_eye(Vec4::from_slice(values)),
             _ => return self.set_error(GL_INVALID_ENUM),
         }
         self.touch_state();

@@ -10,7 +10,6 @@
 //! coordinates and raster positions convert integers as they are. A `*v` slice shorter than the
 //! call reads is `GL_INVALID_VALUE`, as everywhere in this façade.
 
-use super::consts::*;
 use super::types::*;
 use super::Gl;
 
@@ -96,15 +95,6 @@ impl GlComponent for GLfloat {
 }
 
 impl Gl {
-    /// The first `N` values of a `*v` argument, or `GL_INVALID_VALUE` if the slice is shorter.
-    fn first<const N: usize, T: Copy>(&mut self, v: &[T]) -> Option<[T; N]> {
-        let head = v.get(..N).and_then(|h| <[T; N]>::try_from(h).ok());
-        if head.is_none() {
-            self.set_error(GL_INVALID_VALUE);
-        }
-        head
-    }
-
     /// `glColor3*` of any component type: alpha 1.
     fn color3<T: GlComponent>(&mut self, [r, g, b]: [T; 3]) {
         self.color4f(r.normalized(), g.normalized(), b.normalized(), 1.0);
@@ -260,6 +250,7 @@ impl Gl {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::gl::consts::*;
 
     #[test]
     fn short_slices_are_invalid_values_and_change_nothing() {

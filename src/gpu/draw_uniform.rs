@@ -6,7 +6,7 @@ use super::layout::{GpuDraw, GpuLight, GpuMaterial};
 use crate::gl::consts::*;
 use crate::gl::types::GLenum;
 use crate::gl::{DrawState, Light, Lighting, Material};
-use glam::{Mat3, Mat4};
+use glam::Mat4;
 
 fn light_uniform(l: &Light) -> GpuLight {
     let spot = l.spot_cutoff != 180.0;
@@ -38,7 +38,7 @@ fn flag(b: bool) -> f32 {
 /// The draw uniform of a mesh drawn with `state` into a `width` × `height` target.
 #[must_use]
 pub(crate) fn draw_uniform(state: &DrawState, polygon: bool, (width, height): (u32, u32)) -> GpuDraw {
-    let normal_matrix = Mat4::from_mat3(Mat3::from_mat4(state.modelview).inverse().transpose());
+    let normal_matrix = Mat4::from_mat3(state.normal_matrix());
     let [vx, vy, vw, vh] = state.viewport.map(|c| c as f32);
     let (fw, fh) = (width as f32, height as f32);
     let viewport = [vw / fw, (2.0 * vx + vw) / fw - 1.0, vh / fh, (2.0 * vy + vh) / fh - 1.0];

@@ -27,9 +27,7 @@ pub(crate) struct ShadedVertex {
 
 impl<'a> Shader<'a> {
     pub fn new(state: &'a DrawState) -> Self {
-        // Normals transform by the inverse transpose of the modelview's upper 3x3.
-        let normal_matrix = Mat3::from_mat4(state.modelview).inverse().transpose();
-        Self { state, normal_matrix }
+        Self { state, normal_matrix: state.normal_matrix() }
     }
 
     /// Transforms one vertex and lights it (or passes its colour through, clamped).
@@ -48,10 +46,7 @@ impl<'a> Shader<'a> {
             let c = color.clamp(Vec4::ZERO, Vec4::ONE);
             return ShadedVertex { clip, eye, front: c, back: c, tex, fog };
         };
-        let mut n = self.normal_matrix * Vec3::from_array(v.normal);
-        if self.state.normalize || self.state.rescale_normal {
-            n = n.normalize_or_zero();
-        }
+        let n = self.eye_normal(v);
         let position = if eye.w != 0.0 { eye.xyz() / eye.w } else { eye.xyz() };
         let front = self.light(lighting, 0, n, position, color);
         let back = if lighting.two_side { self.light(lighting, 1, -n, position, color) } else { front };
@@ -59,14 +54,9 @@ impl<'a> Shader<'a> {
     }
 
     /// The vertex's normal in eye coordinates, normalised when `GL_NORMALIZE` or
-    /// `GL_RESCALE_NORMAL` asks for it (what sphere and normal maps read).
+    /// `GL_RESCALE_NORMAL` asks for it (what lighting and the sphere and normal maps read).
     fn eye_normal(&self, v: &Vertex) -> Vec3 {
-        let n = self.normal_matrix * Vec3::from_array(v.normal);
-        if self.state.normalize || self.state.rescale_normal {
-            n.normalize_or_zero()
-        } else {
-            n
-        }
+        self.state.eye_normal(self.normal_matrix, v.normal)
     }
 
     /// The material of `face` with `GL_COLOR_MATERIAL` applied.

@@ -3,7 +3,6 @@
 use crate::context::with_gl;
 use crate::memory::array_mut;
 use crate::strings::static_c_string;
-use gleval::gl::consts::*;
 use gleval::gl::types::*;
 
 forward! {
@@ -29,33 +28,17 @@ forward! {
     glPopAttrib() => pop_attrib;
 }
 
-/// Values `glGet` writes for `pname` (GL 1.1 tables 6.5-6.28) among the names `Gl` answers;
-/// one for the others (an unknown name writes nothing and sets `GL_INVALID_ENUM`).
-fn get_count(pname: GLenum) -> usize {
-    match pname {
-        GL_MAP2_GRID_DOMAIN
-        | GL_CURRENT_RASTER_POSITION
-        | GL_CURRENT_RASTER_COLOR
-        | GL_CURRENT_RASTER_TEXTURE_COORDS
-        | GL_CURRENT_COLOR
-        | GL_CURRENT_TEXTURE_COORDS => 4,
-        GL_CURRENT_NORMAL => 3,
-        GL_MAP1_GRID_DOMAIN | GL_MAP2_GRID_SEGMENTS => 2,
-        _ => 1,
-    }
-}
-
 entry! {
     /// `glGetDoublev`: `Gl::get_doublev`.
     unsafe fn glGetDoublev(pname: GLenum, params: *mut GLdouble) {
-        with_gl(|gl| gl.get_doublev(pname, unsafe { array_mut(params, get_count(pname)) }))
+        with_gl(|gl| gl.get_doublev(pname, unsafe { array_mut(params, gl.get_len(pname)) }))
     }
 }
 
 entry! {
     /// `glGetBooleanv`: `Gl::get_booleanv`.
     unsafe fn glGetBooleanv(pname: GLenum, params: *mut GLboolean) {
-        with_gl(|gl| gl.get_booleanv(pname, unsafe { array_mut(params, get_count(pname)) }))
+        with_gl(|gl| gl.get_booleanv(pname, unsafe { array_mut(params, gl.get_len(pname)) }))
     }
 }
 
@@ -66,14 +49,14 @@ forward! {
 entry! {
     /// `glGetIntegerv`: `Gl::get_integerv`.
     unsafe fn glGetIntegerv(pname: GLenum, params: *mut GLint) {
-        with_gl(|gl| gl.get_integerv(pname, unsafe { array_mut(params, get_count(pname)) }))
+        with_gl(|gl| gl.get_integerv(pname, unsafe { array_mut(params, gl.get_len(pname)) }))
     }
 }
 
 entry! {
     /// `glGetFloatv`: `Gl::get_floatv`.
     unsafe fn glGetFloatv(pname: GLenum, params: *mut GLfloat) {
-        with_gl(|gl| gl.get_floatv(pname, unsafe { array_mut(params, get_count(pname)) }))
+        with_gl(|gl| gl.get_floatv(pname, unsafe { array_mut(params, gl.get_len(pname)) }))
     }
 }
 

@@ -32,7 +32,7 @@ fn font(handle: *const c_void) -> Option<GlutBitmapFont> {
 ///
 /// # Safety
 /// `s` is NULL or a NUL-terminated string.
-unsafe fn c_bytes<'a>(s: *const c_uchar) -> &'a [u8] {
+pub(super) unsafe fn c_bytes<'a>(s: *const c_uchar) -> &'a [u8] {
     if s.is_null() {
         return &[];
     }

@@ -2,9 +2,10 @@
 //! and `(void *)1` for `GLUT_STROKE_MONO_ROMAN`; another pointer is no font, and the calls
 //! draw nothing and measure 0.
 
+use super::fonts::c_bytes;
 use crate::context::with_gl;
 use gleval::glut::fonts::{GlutStrokeFont, GLUT_STROKE_MONO_ROMAN, GLUT_STROKE_ROMAN};
-use std::ffi::{c_char, c_float, c_int, c_uchar, c_void, CStr};
+use std::ffi::{c_float, c_int, c_uchar, c_void};
 
 /// The font a C handle names.
 fn font(handle: *const c_void) -> Option<GlutStrokeFont> {
@@ -13,17 +14,6 @@ fn font(handle: *const c_void) -> Option<GlutStrokeFont> {
         1 => Some(GLUT_STROKE_MONO_ROMAN),
         _ => None,
     }
-}
-
-/// The bytes of a C string up to its NUL; empty for NULL.
-///
-/// # Safety
-/// `s` is NULL or a NUL-terminated string.
-unsafe fn c_bytes<'a>(s: *const c_uchar) -> &'a [u8] {
-    if s.is_null() {
-        return &[];
-    }
-    unsafe { CStr::from_ptr(s.cast::<c_char>()) }.to_bytes()
 }
 
 entry! {
