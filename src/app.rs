@@ -10,7 +10,7 @@ use crate::glut::consts::{GLUT_DOWN, GLUT_UP};
 use crate::glut::popup::{Popup, PopupEvent};
 use crate::glut::state::TimerRequest;
 use crate::glut::{IdleFn, Schedule};
-use crate::render::{Image, RenderError, Renderer};
+use crate::render::{soft, Image, Rasterizer, RenderError, Renderer};
 
 type DisplayFn = Box<dyn FnMut(&mut Gl)>;
 type ReshapeFn = Box<dyn FnMut(&mut Gl, i32, i32)>;
@@ -56,11 +56,13 @@ pub struct Options {
     pub frames: Option<usize>,
     /// `--profile`: with `--png`, print to stderr where the run's time went.
     pub profile: bool,
+    /// `--wgpu`: draw headless frames through wgpu rather than the CPU rasteriser.
+    pub wgpu: bool,
 }
 
 impl Options {
     /// Parses the options [`App::run`] takes out of the program's arguments: `--png PATH` (or
-    /// `--png=PATH`), `--time N`, `--frames N`, `--gpu` and `--profile`; anything else is left
+    /// `--png=PATH`), `--time N`, `--frames N`, `--gpu`, `--wgpu` and `--profile`; anything else is left
     /// for the program.
     #[must_use]
     pub fn from_args(args: impl IntoIterator<Item = String>) -> Self {
@@ -79,6 +81,8 @@ impl Options {
                 out.frames = args.next().and_then(|n| n.parse().ok());
             } else if a == "--profile" {
                 out.profile = true;
+            } else if a == "--wgpu" {
+                out.wgpu = true;
             }
         }
         out
@@ -107,6 +111,7 @@ pub struct App {
     /// `--frames N`: how many frames a run draws before it stops (headless: renders the last).
     frames: Option<usize>,
     tessellator: Tessellator,
+    rasterizer: Rasterizer,
     /// The GLUT menu open in the window, if any.
     popup: Option<Popup>,
 }
@@ -135,6 +140,7 @@ impl App {
             display_mode: 0,
             frames: None,
             tessellator: Tessellator::from_env(),
+            rasterizer: Rasterizer::from_env(),
             popup: None,
         }
     }
@@ -393,6 +399,25 @@ impl App {
         self.tessellator
     }
 
+    /// Which rasteriser draws headless frames (`--png`, `--time`, [`App::render_image`]).
+    /// Initially from the environment (`GLEVAL_RASTERIZER`, see [`Rasterizer::from_env`]);
+    /// `--wgpu` on the command line picks wgpu. The GPU tessellator always draws through
+    /// wgpu, where its meshes are.
+    #[must_use]
+    pub fn with_rasterizer(mut self, rasterizer: Rasterizer) -> Self {
+        self.rasterizer = rasterizer;
+        self
+    }
+
+    /// The rasteriser headless frames are drawn with.
+    #[must_use]
+    pub fn rasterizer(&self) -> Rasterizer {
+        match self.tessellator {
+            Tessellator::Gpu => Rasterizer::Wgpu,
+            Tessellator::Cpu => self.rasterizer,
+        }
+    }
+
     /// A fresh context of the window's size on this program's tessellator.
     pub(crate) fn new_gl(&self) -> Gl {
         let mut gl = Gl::new(self.width, self.height);
@@ -414,6 +439,9 @@ impl App {
     pub fn run_with(mut self, options: Options) {
         if options.gpu {
             self.tessellator = Tessellator::Gpu;
+        }
+        if options.wgpu {
+            self.rasterizer = Rasterizer::Wgpu;
         }
         self.frames = options.frames;
         let result = match (options.time, options.png) {
@@ -483,18 +511,18 @@ impl App {
         }
     }
 
-    /// Renders one frame headless (the last of `--frames N`).
+    /// Renders one frame headless (the last of `--frames N`) with [`App::rasterizer`].
     pub fn render_image(&mut self) -> Result<Image, RenderError> {
         let mut gl = self.record_frames(self.frames.unwrap_or(1));
-        let mut renderer = Renderer::new()?;
+        let mut renderer = Headless::new(self.rasterizer())?;
         renderer.render_frame(&gl.take_frame(), self.width as u32, self.height as u32)
     }
 
     /// Renders `frames` headless frames with one renderer (display callback, assembly,
-    /// rasterisation and read-back each time), after one untimed frame that compiles the
-    /// pipelines, and returns the median frame time.
+    /// rasterisation and read-back each time), after one untimed frame (which compiles wgpu's
+    /// pipelines), and returns the median frame time.
     pub fn median_frame_time(&mut self, frames: usize) -> Result<std::time::Duration, RenderError> {
-        let mut renderer = Renderer::new()?;
+        let mut renderer = Headless::new(self.rasterizer())?;
         let mut gl = self.new_gl();
         self.run_init(&mut gl);
         let mut times = Vec::with_capacity(frames.max(1));
@@ -540,12 +568,21 @@ impl App {
         };
         let mut gl = self.record_frames(self.frames.unwrap_or(1));
         phase("program (init, reshape, display)");
+        let (w, h) = (self.width as u32, self.height as u32);
+        if self.rasterizer() == Rasterizer::Cpu {
+            let frame = gl.take_frame();
+            let image = soft::render_frame(&frame, w, h);
+            phase("CPU rasteriser (assembly, drawing)");
+            crate::render::write_png(path, &image)?;
+            phase("PNG encoding and write");
+            eprintln!("profile: {:<34} {:8.2} ms", "total", start.elapsed().as_secs_f64() * 1e3);
+            return Ok(());
+        }
         let (instance, adapter) = crate::gpu::first_adapter()?;
         phase("wgpu instance and adapter");
         let mut renderer = Renderer::with_adapter(instance, adapter)?;
         phase("device and shader");
         let frame = gl.take_frame();
-        let (w, h) = (self.width as u32, self.height as u32);
         let image = renderer.render_frame(&frame, w, h)?;
         phase("first frame (with pipelines)");
         renderer.render_frame(&frame, w, h)?;
@@ -568,6 +605,28 @@ impl App {
     #[cfg(not(feature = "window"))]
     fn run_window(self) -> Result<(), Box<dyn std::error::Error>> {
         Err("this build has no window support (feature `window`); run with --png PATH".into())
+    }
+}
+
+/// A headless frame's rasteriser.
+enum Headless {
+    Cpu,
+    Wgpu(Box<Renderer>),
+}
+
+impl Headless {
+    fn new(rasterizer: Rasterizer) -> Result<Self, RenderError> {
+        Ok(match rasterizer {
+            Rasterizer::Cpu => Self::Cpu,
+            Rasterizer::Wgpu => Self::Wgpu(Box::new(Renderer::new()?)),
+        })
+    }
+
+    fn render_frame(&mut self, frame: &Frame, width: u32, height: u32) -> Result<Image, RenderError> {
+        match self {
+            Self::Cpu => Ok(soft::render_frame(frame, width, height)),
+            Self::Wgpu(renderer) => renderer.render_frame(frame, width, height),
+        }
     }
 }
 

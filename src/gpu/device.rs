@@ -32,17 +32,6 @@ impl std::fmt::Display for RenderError {
 
 impl std::error::Error for RenderError {}
 
-/// An RGBA8 picture, rows top to bottom (PNG order).
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct Image {
-    /// Width in pixels.
-    pub width: u32,
-    /// Height in pixels.
-    pub height: u32,
-    /// `width * height * 4` bytes.
-    pub pixels: Vec<u8>,
-}
-
 /// The backends to try, in order: `WGPU_BACKEND` if set, else Vulkan (lavapipe on machines
 /// without a GPU) and then GL.
 pub(crate) fn backend_order() -> Vec<wgpu::Backends> {

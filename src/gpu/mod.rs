@@ -4,7 +4,7 @@
 //!
 //! | file | holds | imports |
 //! |---|---|---|
-//! | `device.rs` | adapter and device set-up, the device's error slot, the one read-back, [`RenderError`], [`Image`] | - |
+//! | `device.rs` | adapter and device set-up, the device's error slot, the one read-back, [`RenderError`] | - |
 //! | `layout.rs` | the WGSL sources and the `#[repr(C)]` twins of their structs, with layout tests against naga | - |
 //! | `pack.rs` | jobs, control points and Bernstein tables packed for one dispatch (CPU only) | `layout` |
 //! | `evaluate.rs` | the compute pipeline of `shaders/eval_mesh.wgsl`; read-backs for the typed API and the tests | `device`, `layout`, `pack` |
@@ -34,7 +34,7 @@ mod renderer;
 mod target;
 mod textures;
 
-pub use device::{Gpu, Image, RenderError};
+pub use device::{Gpu, RenderError};
 pub use evaluate::{evaluate_job_indices, evaluate_jobs, EvaluatedMeshes, Evaluator};
 pub use layout::{GpuMapDesc, GpuMeshJob, EVAL_MESH_WGSL, FRAGMENT_WGSL, MESH_RASTER_WGSL, RASTER_WGSL, VERTEX_BYTES};
 pub use pack::PackedJobs;

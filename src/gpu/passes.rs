@@ -1,7 +1,7 @@
 //! A frame's render passes: GL clears split the frame's draws into passes (a clear is a pass's
 //! load operation in wgpu), and GL's viewports become scissor rectangles.
 
-use crate::render::assemble::{Batch, Op};
+use crate::render::assemble::{viewport_in_target, Batch, Op};
 
 /// What a render pass draws: a batch of assembled vertices or a GPU-tessellated mesh.
 pub(crate) enum PassItem {
@@ -78,12 +78,7 @@ pub(crate) fn begin_pass<'e>(
 }
 
 /// The GL viewport (origin bottom-left) intersected with the target, in wgpu's top-left
-/// coordinates; `None` when empty.
-pub(crate) fn scissor_rect([x, y, w, h]: [i32; 4], (width, height): (u32, u32)) -> Option<[u32; 4]> {
-    let (fw, fh) = (i64::from(width), i64::from(height));
-    let x0 = i64::from(x).clamp(0, fw);
-    let x1 = (i64::from(x) + i64::from(w)).clamp(0, fw);
-    let top = (fh - i64::from(y) - i64::from(h)).clamp(0, fh);
-    let bottom = (fh - i64::from(y)).clamp(0, fh);
-    (x1 > x0 && bottom > top).then(|| [x0 as u32, top as u32, (x1 - x0) as u32, (bottom - top) as u32])
+/// coordinates as `[x, y, width, height]`; `None` when empty.
+pub(crate) fn scissor_rect(viewport: [i32; 4], size: (u32, u32)) -> Option<[u32; 4]> {
+    viewport_in_target(viewport, size).map(|[x0, top, x1, bottom]| [x0, top, x1 - x0, bottom - top])
 }

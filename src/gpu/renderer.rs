@@ -8,7 +8,7 @@
 //! which is what clipping to GL's view volume amounts to; depth was already mapped to [0, 1]
 //! during assembly; the depth test and depth writes exist only while `GL_DEPTH_TEST` is on.
 
-use super::device::{first_adapter, request_device, ErrorSlot, Gpu, Image, RenderError};
+use super::device::{first_adapter, request_device, ErrorSlot, Gpu, RenderError};
 use super::evaluate;
 use super::frame_raster::{vertex_buffer, FrameRaster, PipelineKey};
 use super::mesh_raster::{gpu_mesh_indices, MeshRaster, PreparedMeshes};
@@ -17,6 +17,7 @@ use super::target::Target;
 use crate::gl::Frame;
 use crate::math::BezierPatch;
 use crate::render::assemble::{assemble_frame, Batch, DrawList};
+use crate::render::Image;
 use crate::tess::Mesh;
 
 const COLOR_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8Unorm;

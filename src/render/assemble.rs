@@ -79,6 +79,20 @@ pub struct Batch {
     pub blend: Option<[GLenum; 2]>,
 }
 
+/// The GL viewport `[x, y, width, height]` (origin bottom-left) within a `width` × `height`
+/// target, as target columns and rows (rows top to bottom), ends exclusive:
+/// `[x0, top, x1, bottom]`; `None` when nothing of it is inside. Both rasterisers draw a batch
+/// inside this rectangle only (GL's viewport clips; wgpu's scissor).
+#[must_use]
+pub(crate) fn viewport_in_target([x, y, w, h]: [i32; 4], (width, height): (u32, u32)) -> Option<[u32; 4]> {
+    let (fw, fh) = (i64::from(width), i64::from(height));
+    let x0 = i64::from(x).clamp(0, fw);
+    let x1 = (i64::from(x) + i64::from(w)).clamp(0, fw);
+    let top = (fh - i64::from(y) - i64::from(h)).clamp(0, fh);
+    let bottom = (fh - i64::from(y)).clamp(0, fh);
+    (x1 > x0 && bottom > top).then_some([x0 as u32, top as u32, x1 as u32, bottom as u32])
+}
+
 /// What a batch's fragments go through before blending: texturing, fog, the alpha test.
 #[derive(Clone, Debug, PartialEq)]
 pub struct FragmentState {

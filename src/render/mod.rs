@@ -10,19 +10,48 @@ mod clip;
 #[cfg(all(feature = "gpu", feature = "png"))]
 pub(crate) mod compare;
 mod corner;
+mod image;
 mod offset;
 mod shade;
 mod smooth;
+pub mod soft;
 mod stipple;
 
 pub use assemble::{assemble, assemble_frame, Batch, DrawList, Op, RasterVertex, Smooth, Topology};
+pub use image::Image;
+
+/// Which rasteriser draws a headless picture (a window always draws through wgpu).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Rasterizer {
+    /// [`soft`], on the CPU: no device, no driver, no start-up cost; the default.
+    #[default]
+    Cpu,
+    /// wgpu's (feature `gpu`): the same pipeline a window draws with, and the only one the
+    /// GPU tessellator's meshes can be drawn by.
+    Wgpu,
+}
+
+impl Rasterizer {
+    /// The environment variable [`crate::app::App`] reads for the headless rasteriser: `cpu`
+    /// or `wgpu`.
+    pub const ENV: &'static str = "GLEVAL_RASTERIZER";
+
+    /// `Wgpu` when `GLEVAL_RASTERIZER=wgpu`, else `Cpu`.
+    #[must_use]
+    pub fn from_env() -> Self {
+        match std::env::var(Self::ENV) {
+            Ok(v) if v.eq_ignore_ascii_case("wgpu") => Self::Wgpu,
+            _ => Self::Cpu,
+        }
+    }
+}
 
 #[cfg(feature = "gpu")]
-pub use crate::gpu::{tessellate_patches, Image, RenderError, Renderer};
+pub use crate::gpu::{tessellate_patches, RenderError, Renderer};
 
 /// Writes an image as an 8-bit RGB PNG: what a window shows (GL's framebuffer alpha, often 0
 /// after `glClearColor(r, g, b, 0)`, is not part of the picture).
-#[cfg(all(feature = "gpu", feature = "png"))]
+#[cfg(feature = "png")]
 pub fn write_png(path: impl AsRef<std::path::Path>, image: &Image) -> std::io::Result<()> {
     let file = std::io::BufWriter::new(std::fs::File::create(path)?);
     let mut encoder = png::Encoder::new(file, image.width, image.height);

@@ -1,10 +1,12 @@
-//! Conformance: the Rust ports render headless (wgpu on lavapipe, or the GL backend with
-//! `WGPU_BACKEND=gl`) and are compared with the pictures real Mesa renders from the C
+//! Conformance: the Rust ports render headless (on the CPU rasteriser, and through wgpu on
+//! lavapipe, or on the GL backend with `WGPU_BACKEND=gl`) and are compared with the pictures
+//! real Mesa renders from the C
 //! originals (`tests/reference/pictures/*.c`, PNGs from `regen.sh`), with the shift-tolerant
 //! metric of `gleval::testing::compare`.
 
 use gleval::app::App;
 use gleval::gl::{DrawState, MeshVertices, Tessellator};
+use gleval::render::Rasterizer;
 use gleval::testing::compare::{assert_matches, compare, RgbImage};
 use std::path::Path;
 
@@ -107,22 +109,29 @@ fn check(name: &str, app: fn() -> App, extra_pixels: f64) {
     check_with(name, app, |pixels| THRESHOLD + extra_pixels / pixels);
 }
 
-/// Renders the program on the CPU and on the GPU tessellator; both must match Mesa's picture,
-/// and each other.
+/// Renders the program three ways: the CPU tessellator through the CPU rasteriser and through
+/// wgpu, and the GPU tessellator (through wgpu); each must match Mesa's picture, and the two
+/// tessellators each other.
 fn check_with(name: &str, app: fn() -> App, threshold: impl Fn(f64) -> f64) {
-    let Some(cpu) = render(app().with_tessellator(Tessellator::Cpu)) else { return };
-    let Some(gpu) = render(app().with_tessellator(Tessellator::Gpu)) else { return };
     let reference =
         Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/reference/pictures/png").join(format!("{name}.png"));
-    let pixels = f64::from(cpu.width * cpu.height);
+    let soft = render(app().with_tessellator(Tessellator::Cpu).with_rasterizer(Rasterizer::Cpu)).expect("no device");
+    let pixels = f64::from(soft.width * soft.height);
+    let soft_score = assert_matches(&reference, &soft, threshold(pixels));
+    let Some(cpu) = render(app().with_tessellator(Tessellator::Cpu).with_rasterizer(Rasterizer::Wgpu)) else {
+        println!("{name}: {:.3}% of pixels differ from Mesa (CPU rasteriser)", soft_score * 100.0);
+        return;
+    };
+    let Some(gpu) = render(app().with_tessellator(Tessellator::Gpu)) else { return };
     let score = assert_matches(&reference, &cpu, threshold(pixels));
     let gpu_score = assert_matches(&reference, &gpu, threshold(pixels));
     let between = compare(&cpu, &gpu).expect("same size").fraction;
     let deferred = gpu_meshes(app);
     println!(
-        "{name}: {:.3}% of pixels differ from Mesa (GPU tessellator: {:.3}%, {deferred} meshes on the GPU; \
-         GPU vs CPU {:.3}%)",
+        "{name}: {:.3}% of pixels differ from Mesa (CPU rasteriser: {:.3}%; GPU tessellator: {:.3}%, {deferred} \
+         meshes on the GPU; GPU vs CPU {:.3}%)",
         score * 100.0,
+        soft_score * 100.0,
         gpu_score * 100.0,
         between * 100.0
     );
@@ -290,7 +299,9 @@ fn glut_stroke_fonts_match_mesa() {
 #[test]
 fn programs_without_a_reference_draw_the_same_on_the_gpu() {
     for (name, app) in [("demo", crate::interactive_demo::demo::app as fn() -> App), ("operations", operations::app)] {
-        let Some(cpu) = render(app().with_tessellator(Tessellator::Cpu)) else { return };
+        let Some(cpu) = render(app().with_tessellator(Tessellator::Cpu).with_rasterizer(Rasterizer::Wgpu)) else {
+            return;
+        };
         let Some(gpu) = render(app().with_tessellator(Tessellator::Gpu)) else { return };
         let between = compare(&cpu, &gpu).expect("same size").fraction;
         println!("{name}: GPU vs CPU {:.3}% ({} meshes on the GPU)", between * 100.0, gpu_meshes(app));

@@ -1,8 +1,9 @@
 //! `bitmap` and `draw_pixels` land exactly on their pixels when rendered: their fragments are
-//! one-pixel points at pixel centres, and the rasteriser (lavapipe in CI) must put each on the
-//! intended pixel, no more, no fewer.
+//! one-pixel points at pixel centres, and each rasteriser (the CPU's, and wgpu's: lavapipe in CI)
+//! must put each on the intended pixel, no more, no fewer.
 
 use gleval::prelude::*;
+use gleval::render::Rasterizer;
 
 const W: i32 = 40;
 const H: i32 = 30;
@@ -42,7 +43,12 @@ fn display(gl: &mut Gl) {
 
 #[test]
 fn every_fragment_lands_on_its_own_pixel() {
-    let mut app = App::new("raster images", W, H).display(display);
+    lands_on_its_own_pixel(Rasterizer::Cpu);
+    lands_on_its_own_pixel(Rasterizer::Wgpu);
+}
+
+fn lands_on_its_own_pixel(rasterizer: Rasterizer) {
+    let mut app = App::new("raster images", W, H).display(display).with_rasterizer(rasterizer);
     let image = match app.render_image() {
         Ok(image) => image,
         Err(e) if std::env::var("GLEVAL_REQUIRE_ADAPTER").is_ok_and(|v| v == "1") => panic!("{e}"),
@@ -67,5 +73,10 @@ fn every_fragment_lands_on_its_own_pixel() {
             }
         }
     }
-    assert!(wrong.is_empty(), "{} pixels differ, first: {:?}", wrong.len(), &wrong[..wrong.len().min(5)]);
+    assert!(
+        wrong.is_empty(),
+        "{rasterizer:?}: {} pixels differ, first: {:?}",
+        wrong.len(),
+        &wrong[..wrong.len().min(5)]
+    );
 }

@@ -1,11 +1,12 @@
 //! `glReadPixels`: `Gl` checks the call and packs the pixels; the frame recorded so far is
-//! drawn for it by a renderer this thread keeps (made at the first read: a wgpu device).
+//! drawn for it by the CPU rasteriser, or with `GLEVAL_RASTERIZER=wgpu` by a wgpu renderer
+//! this thread keeps (made at the first read).
 
 use crate::context::with_gl;
 use crate::memory::array_mut;
 use gleval::gl::types::*;
 use gleval::gl::Frame;
-use gleval::render::Renderer;
+use gleval::render::{soft, Rasterizer, Renderer};
 use std::cell::{Cell, RefCell};
 use std::ffi::c_void;
 
@@ -29,6 +30,9 @@ fn renderer() -> Option<&'static RefCell<Renderer>> {
 /// The window's RGBA8 pixels (rows top to bottom) with `frame` drawn; `None` if it cannot be
 /// drawn (the message is printed).
 fn draw(frame: &Frame, width: i32, height: i32) -> Option<Vec<u8>> {
+    if Rasterizer::from_env() == Rasterizer::Cpu {
+        return Some(soft::render_frame(frame, width.max(1) as u32, height.max(1) as u32).pixels);
+    }
     let mut renderer = renderer()?.try_borrow_mut().ok()?;
     let image = renderer.render_frame(frame, width.max(1) as u32, height.max(1) as u32);
     image.map_err(|e| eprintln!("gleval: glReadPixels: {e}")).ok().map(|i| i.pixels)

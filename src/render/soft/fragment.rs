@@ -1,0 +1,211 @@
+//! GL's per-fragment operations before the depth test, for the CPU rasteriser: unit 0's
+//! texture with the texture environment (GL 1.1 spec §3.8.9, tables 3.17 and 3.18; `GL_ADD`
+//! from GL 1.3), fog (§3.9), the polygon stipple (§3.5.6), the coverage of smooth points and
+//! lines (Mesa's, `render/smooth.rs`) and the alpha test (§4.1.3). The same operations in the
+//! same order as `shaders/fragment.wgsl` and `shaders/raster.wgsl` on the GPU.
+
+use super::sampler::Sampler;
+use crate::gl::consts::*;
+use crate::gl::types::GLenum;
+use crate::gl::{BoundTexture, Fog};
+use crate::render::assemble::{FragmentState, Smooth};
+
+/// A fragment's interpolated values (see [`crate::render::RasterVertex`]).
+#[derive(Clone, Copy, Debug, Default)]
+pub(super) struct Fragment {
+    pub color: [f32; 4],
+    pub tex: [f32; 4],
+    pub fog: f32,
+    pub aa: [f32; 4],
+}
+
+/// How `tex` changes one pixel right and one pixel down (for the texture's level of detail).
+#[derive(Clone, Copy, Debug, Default)]
+pub(super) struct TexSlope {
+    pub dx: [f32; 4],
+    pub dy: [f32; 4],
+}
+
+/// A batch's fragment state, ready to shade fragments.
+pub(super) struct Program<'a> {
+    state: &'a FragmentState,
+    sampler: Option<Sampler<'a>>,
+}
+
+impl<'a> Program<'a> {
+    pub fn new(state: &'a FragmentState) -> Self {
+        Self { state, sampler: state.texture.as_ref().map(Sampler::new) }
+    }
+
+    /// Whether fragments read a texture (and so need [`TexSlope`]).
+    pub fn textured(&self) -> bool {
+        self.sampler.is_some()
+    }
+
+    /// The fragment's colour before blending, or `None` where GL discards it; `(x, row)` is
+    /// its window column and its GL row (counted from the bottom).
+    pub fn shade(&self, f: &Fragment, slope: &TexSlope, (x, row): (u32, u32)) -> Option<[f32; 4]> {
+        let mut color = f.color;
+        if let (Some(sampler), Some(texture)) = (&self.sampler, &self.state.texture) {
+            color = apply_env(texture, color, texel(texture, sampler, f.tex, slope));
+        }
+        if let Some(fog) = &self.state.fog {
+            let k = fog_factor(fog, f.fog);
+            for c in 0..3 {
+                color[c] = fog.color[c] + (color[c] - fog.color[c]) * k;
+            }
+        }
+        if let Some(rows) = &self.state.polygon_stipple {
+            if (rows[(row % 32) as usize] >> (x % 32)) & 1 == 0 {
+                return None;
+            }
+        }
+        color[3] *= coverage(self.state.smooth, f.aa)?;
+        if let Some((func, reference)) = self.state.alpha_test {
+            if !alpha_passes(func, color[3], reference) {
+                return None;
+            }
+        }
+        Some(color)
+    }
+}
+
+/// The texel for (s, t, r, q): s/q and t/q, clamped to [0, 1] under `GL_CLAMP`, filtered, and
+/// with a linear filter at a `GL_CLAMP` edge the share falling on the border (transparent
+/// black) taken out, as `inside_border` does in `fragment.wgsl`.
+fn texel(texture: &BoundTexture, sampler: &Sampler<'_>, tex: [f32; 4], slope: &TexSlope) -> [f32; 4] {
+    let project = |t: [f32; 4]| {
+        let q = if t[3] != 0.0 { t[3] } else { 1.0 };
+        [t[0] / q, t[1] / q]
+    };
+    let st = project(tex);
+    let at = |d: [f32; 4]| {
+        let moved = project(std::array::from_fn(|k| tex[k] + d[k]));
+        [moved[0] - st[0], moved[1] - st[1]]
+    };
+    let (dx, dy) = (at(slope.dx), at(slope.dy));
+    let params = &texture.params;
+    let clamp_s = params.wrap_s == GL_CLAMP;
+    let clamp_t = params.wrap_t == GL_CLAMP && !texture.one_d;
+    let coord =
+        [if clamp_s { st[0].clamp(0.0, 1.0) } else { st[0] }, if clamp_t { st[1].clamp(0.0, 1.0) } else { st[1] }];
+    let sample = sampler.sample(coord, dx, dy);
+    let linear = params.mag_filter == GL_LINEAR
+        && matches!(params.min_filter, GL_LINEAR | GL_LINEAR_MIPMAP_NEAREST | GL_LINEAR_MIPMAP_LINEAR);
+    if !linear || !(clamp_s || clamp_t) {
+        return sample;
+    }
+    let base = &texture.levels[0];
+    let inside = |c: f32, size: u32, clamped: bool| {
+        let u = c * size as f32 - 0.5;
+        if clamped {
+            (u + 1.0).min(size as f32 - u).clamp(0.0, 1.0)
+        } else {
+            1.0
+        }
+    };
+    let share = inside(coord[0], base.width, clamp_s) * inside(coord[1], base.height, clamp_t);
+    sample.map(|c| c * share)
+}
+
+/// GL's texture functions: `cf` the fragment's colour, `texel` the texture's, by base format.
+fn apply_env(texture: &BoundTexture, cf: [f32; 4], texel: [f32; 4]) -> [f32; 4] {
+    let format = texture.base_format;
+    let has_rgb = format != GL_ALPHA;
+    let has_alpha = matches!(format, GL_ALPHA | GL_LUMINANCE_ALPHA | GL_RGBA);
+    let luminance = matches!(format, GL_LUMINANCE | GL_LUMINANCE_ALPHA);
+    let ct = if luminance { [texel[0]; 3] } else { [texel[0], texel[1], texel[2]] };
+    let at = texel[3];
+    let mut c = [cf[0], cf[1], cf[2]];
+    let mut a = cf[3];
+    let env = texture.env_color;
+    match texture.env_mode {
+        GL_MODULATE => {
+            if has_rgb {
+                c = std::array::from_fn(|k| cf[k] * ct[k]);
+            }
+            if has_alpha {
+                a = cf[3] * at;
+            }
+        }
+        GL_DECAL => {
+            if format == GL_RGB {
+                c = ct;
+            }
+            if format == GL_RGBA {
+                c = std::array::from_fn(|k| cf[k] + (ct[k] - cf[k]) * at);
+            }
+        }
+        GL_BLEND => {
+            if has_rgb {
+                c = std::array::from_fn(|k| cf[k] + (env[k] - cf[k]) * ct[k]);
+            }
+            if has_alpha {
+                a = cf[3] * at;
+            }
+        }
+        GL_REPLACE => {
+            if has_rgb {
+                c = ct;
+            }
+            if has_alpha {
+                a = at;
+            }
+        }
+        _ => {
+            if has_rgb {
+                c = std::array::from_fn(|k| (cf[k] + ct[k]).min(1.0));
+            }
+            if has_alpha {
+                a = cf[3] * at;
+            }
+        }
+    }
+    [c[0], c[1], c[2], a]
+}
+
+/// GL's fog factor f (the fragment's share), clamped to [0, 1]: C = f·Cf + (1 − f)·Cfog.
+fn fog_factor(fog: &Fog, z: f32) -> f32 {
+    let f = match fog.mode {
+        GL_LINEAR => (fog.end - z) / (fog.end - fog.start),
+        GL_EXP => (-fog.density * z).exp(),
+        _ => {
+            let dz = fog.density * z;
+            (-dz * dz).exp()
+        }
+    };
+    f.clamp(0.0, 1.0)
+}
+
+/// A smooth point's or line's coverage (the factor on alpha), or `None` outside a smooth
+/// point's disc. A point's k = (1 − 1/r)²: Mesa 22.3 takes (1 − d)/(1 − k) where k ≥ d.
+fn coverage(smooth: Smooth, aa: [f32; 4]) -> Option<f32> {
+    match smooth {
+        Smooth::None => Some(1.0),
+        Smooth::Point => {
+            let d = aa[0] * aa[0] + aa[1] * aa[1];
+            if d > aa[3] {
+                return None;
+            }
+            Some(if aa[2] >= d { (1.0 - d) / (1.0 - aa[2]).max(1e-6) } else { 1.0 })
+        }
+        Smooth::Line => {
+            let saturate = |x: f32| x.clamp(0.0, 1.0);
+            Some(saturate(aa[1] - aa[0].abs()) * saturate(aa[3] - aa[2].abs()))
+        }
+    }
+}
+
+/// The alpha test's comparison of the fragment's alpha with the reference.
+fn alpha_passes(func: GLenum, a: f32, r: f32) -> bool {
+    match func {
+        GL_NEVER => false,
+        GL_LESS => a < r,
+        GL_EQUAL => a == r,
+        GL_LEQUAL => a <= r,
+        GL_GREATER => a > r,
+        GL_NOTEQUAL => a != r,
+        GL_GEQUAL => a >= r,
+        _ => true,
+    }
+}

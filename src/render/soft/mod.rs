@@ -1,0 +1,134 @@
+//! The CPU rasteriser: draws an assembled [`DrawList`] into an [`Image`] with GL's rules
+//! (triangles by their edge functions at pixel centres with the top-left rule, one-pixel lines
+//! by GL's diamond-exit rule, points as their pixel; §3.3–3.5 of the GL 1.1 spec), GL's
+//! per-fragment operations (`fragment.rs`, the same as `shaders/fragment.wgsl`), the depth test
+//! and blending (`framebuffer.rs`). It needs no device and no driver: a headless picture costs
+//! its drawing only, where a first wgpu render on a software Vulkan driver pays about 45 ms of
+//! instance, adapter and pipeline compilation before drawing anything (README, Benchmarks).
+//!
+//! | file | what |
+//! |---|---|
+//! | `clip.rs` | the view volume: triangles to polygons, lines to segments |
+//! | `primitives.rs` | triangles, lines and points to fragments, attributes interpolated perspective-correctly |
+//! | `fragment.rs` | texture environment, fog, stipple, smooth coverage, alpha test |
+//! | `sampler.rs` | texture filters, wrap modes, mipmap levels |
+//! | `framebuffer.rs` | colour and depth buffers, the depth test, blending |
+
+mod clip;
+mod fragment;
+mod framebuffer;
+mod primitives;
+mod sampler;
+#[cfg(test)]
+mod tests;
+
+use super::assemble::{assemble, viewport_in_target, Batch, DrawList, Op, Topology};
+use super::Image;
+use crate::gl::Frame;
+use fragment::{Fragment, Program, TexSlope};
+use framebuffer::Framebuffer;
+
+/// Renders a recorded frame on the CPU: every mesh evaluated by the CPU tessellator, the
+/// frame assembled ([`assemble`]) and rasterised ([`rasterize`]).
+#[must_use]
+pub fn render_frame(frame: &Frame, width: u32, height: u32) -> Image {
+    rasterize(&assemble(frame), width, height)
+}
+
+/// Rasterises an assembled list into a `width` × `height` picture that starts as a new
+/// OSMesa buffer does (transparent black, depth 1). Ops the CPU cannot draw
+/// ([`Op::GpuMesh`], the GPU tessellator's) are skipped: assemble with [`assemble`].
+#[must_use]
+pub fn rasterize(list: &DrawList, width: u32, height: u32) -> Image {
+    let mut fb = Framebuffer::new(width.max(1), height.max(1));
+    for op in &list.ops {
+        match op {
+            Op::Clear { color, depth } => fb.clear(*color, *depth),
+            Op::Draw(batch) => draw_batch(&mut fb, list, batch),
+            Op::GpuMesh { .. } => {}
+        }
+    }
+    fb.into_image()
+}
+
+fn draw_batch(fb: &mut Framebuffer, list: &DrawList, batch: &Batch) {
+    let Some(scissor) = viewport_in_target(batch.viewport, (fb.width, fb.height)) else { return };
+    let program = batch.fragment.and_then(|f| list.fragments.get(f as usize)).map(Program::new);
+    let first = batch.first as usize;
+    let Some(vertices) = list.vertices.get(first..first + batch.count as usize) else { return };
+    let mut target = Target {
+        map: WindowMap::new(batch.viewport, fb.height),
+        fb,
+        scissor,
+        depth_test: batch.depth_test,
+        blend: batch.blend,
+        program,
+    };
+    match batch.topology {
+        Topology::Triangles => {
+            vertices.chunks_exact(3).for_each(|t| primitives::triangle(&mut target, [t[0], t[1], t[2]]))
+        }
+        Topology::Lines => vertices.chunks_exact(2).for_each(|l| primitives::line(&mut target, &l[0], &l[1])),
+        Topology::Points => vertices.iter().for_each(|p| primitives::point(&mut target, p)),
+    }
+}
+
+/// GL's viewport transform (§2.10.1) into framebuffer coordinates, y down.
+#[derive(Clone, Copy, Debug)]
+struct WindowMap {
+    centre: [f32; 2],
+    half: [f32; 2],
+}
+
+impl WindowMap {
+    fn new([x, y, w, h]: [i32; 4], height: u32) -> Self {
+        let (x, y, w, h) = (x as f32, y as f32, w as f32, h as f32);
+        Self { centre: [x + w / 2.0, height as f32 - (y + h / 2.0)], half: [w / 2.0, h / 2.0] }
+    }
+
+    /// Framebuffer x and y, the depth z/w, and 1/w.
+    fn project(&self, clip: [f32; 4]) -> [f32; 4] {
+        let inv_w = 1.0 / clip[3];
+        [
+            self.centre[0] + clip[0] * inv_w * self.half[0],
+            self.centre[1] - clip[1] * inv_w * self.half[1],
+            clip[2] * inv_w,
+            inv_w,
+        ]
+    }
+}
+
+/// Where a batch's fragments go: the buffers, the batch's viewport and scissor, its depth test,
+/// blending and fragment operations.
+struct Target<'a> {
+    fb: &'a mut Framebuffer,
+    map: WindowMap,
+    scissor: [u32; 4],
+    depth_test: Option<crate::gl::types::GLenum>,
+    blend: Option<[crate::gl::types::GLenum; 2]>,
+    program: Option<Program<'a>>,
+}
+
+impl Target<'_> {
+    /// Whether fragments need their texture coordinates' change per pixel.
+    fn textured(&self) -> bool {
+        self.program.as_ref().is_some_and(Program::textured)
+    }
+
+    /// One fragment at framebuffer column `x`, row `y` (inside the scissor), depth `z`.
+    fn fragment(&mut self, (x, y): (u32, u32), z: f32, f: &Fragment, slope: &TexSlope) {
+        let index = y as usize * self.fb.width as usize + x as usize;
+        if !self.fb.depth_passes(index, z, self.depth_test) {
+            return;
+        }
+        let row = self.fb.height - 1 - y;
+        let color = match &self.program {
+            Some(program) => match program.shade(f, slope, (x, row)) {
+                Some(c) => c,
+                None => return,
+            },
+            None => f.color,
+        };
+        self.fb.write(index, z, color, self.depth_test, self.blend);
+    }
+}

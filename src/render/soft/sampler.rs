@@ -1,0 +1,101 @@
+//! Texture sampling for the CPU rasteriser: GL's filters, wrap modes and mipmap selection
+//! (GL 1.1 spec §3.8.5–3.8.8) as the wgpu sampler of `gpu/textures.rs` does them, so both
+//! rasterisers read the same texels. `GL_CLAMP` clamps to the edge here; the fragment stage
+//! clamps the coordinate and weighs in the border (`fragment.rs`), as `fragment.wgsl` does.
+
+use crate::gl::consts::*;
+use crate::gl::types::GLenum;
+use crate::gl::{BoundTexture, TexLevel};
+
+/// Samples a bound texture.
+pub(super) struct Sampler<'a> {
+    texture: &'a BoundTexture,
+}
+
+impl<'a> Sampler<'a> {
+    pub fn new(texture: &'a BoundTexture) -> Self {
+        Self { texture }
+    }
+
+    /// The filtered texel at `st` (normalised), given the change of `st` one pixel right
+    /// (`dx`) and one pixel down (`dy`), which choose between magnification and minification
+    /// and the mipmap level (the scale factor ρ of §3.8.5).
+    pub fn sample(&self, st: [f32; 2], dx: [f32; 2], dy: [f32; 2]) -> [f32; 4] {
+        let params = &self.texture.params;
+        let levels = &self.texture.levels;
+        let base = &levels[0];
+        let (w, h) = (base.width as f32, base.height as f32);
+        let rho = (dx[0] * w).hypot(dx[1] * h).max((dy[0] * w).hypot(dy[1] * h));
+        let lambda = rho.log2();
+        // Magnification, also where ρ is 0 or not a number (λ is −∞ or NaN).
+        if lambda.is_nan() || lambda <= 0.0 {
+            return self.filter(base, params.mag_filter, st);
+        }
+        let last = (levels.len() - 1) as f32;
+        let lambda = lambda.min(last);
+        match params.min_filter {
+            GL_NEAREST | GL_LINEAR => self.filter(base, params.min_filter, st),
+            GL_NEAREST_MIPMAP_NEAREST | GL_LINEAR_MIPMAP_NEAREST => {
+                // The nearest level, halves rounding down (Vulkan's ⌈λ + ½⌉ − 1).
+                let d = ((lambda + 0.5).ceil() - 1.0).max(0.0) as usize;
+                self.filter(&levels[d], level_filter(params.min_filter), st)
+            }
+            _ => {
+                let d = lambda.floor();
+                let lower = d as usize;
+                let upper = (lower + 1).min(levels.len() - 1);
+                let f = lambda - d;
+                let filter = level_filter(params.min_filter);
+                let (a, b) = (self.filter(&levels[lower], filter, st), self.filter(&levels[upper], filter, st));
+                std::array::from_fn(|k| a[k] + (b[k] - a[k]) * f)
+            }
+        }
+    }
+
+    /// Nearest or linear filtering within one level.
+    fn filter(&self, level: &TexLevel, filter: GLenum, [s, t]: [f32; 2]) -> [f32; 4] {
+        let (w, h) = (level.width as i64, level.height as i64);
+        let wrap_t = if self.texture.one_d { GL_REPEAT } else { self.texture.params.wrap_t };
+        let (wrap_s, wrap_t) = (self.texture.params.wrap_s, wrap_t);
+        let texel = |i: i64, j: i64| {
+            let (i, j) = (wrap(i, w, wrap_s), wrap(j, h, wrap_t));
+            level.texels[(j * w + i) as usize].map(|c| f32::from(c) / 255.0)
+        };
+        let (u, v) = (s * w as f32, t * h as f32);
+        if filter == GL_NEAREST {
+            return texel(floor(u), floor(v));
+        }
+        let (u, v) = (u - 0.5, v - 0.5);
+        let (i, j) = (floor(u), floor(v));
+        let (a, b) = (u - u.floor(), v - v.floor());
+        let (t00, t10, t01, t11) = (texel(i, j), texel(i + 1, j), texel(i, j + 1), texel(i + 1, j + 1));
+        std::array::from_fn(|k| {
+            let top = t00[k] + (t10[k] - t00[k]) * a;
+            let bottom = t01[k] + (t11[k] - t01[k]) * a;
+            top + (bottom - top) * b
+        })
+    }
+}
+
+/// The filter within a level of a mipmapping minification filter.
+fn level_filter(min_filter: GLenum) -> GLenum {
+    match min_filter {
+        GL_NEAREST_MIPMAP_NEAREST | GL_NEAREST_MIPMAP_LINEAR => GL_NEAREST,
+        _ => GL_LINEAR,
+    }
+}
+
+/// ⌊x⌋ as an integer, saturating far outside any texture (NaN gives 0).
+fn floor(x: f32) -> i64 {
+    x.floor().clamp(-1e15, 1e15) as i64
+}
+
+/// A texel index wrapped into `0..size`: `GL_REPEAT` repeats, every other mode clamps to
+/// the edge.
+fn wrap(i: i64, size: i64, mode: GLenum) -> i64 {
+    if mode == GL_REPEAT {
+        i.rem_euclid(size)
+    } else {
+        i.clamp(0, size - 1)
+    }
+}
