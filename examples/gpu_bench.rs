@@ -10,12 +10,15 @@
 //!   row bands, one dispatch each.
 //!
 //! `cargo run --release --example gpu_bench` (needs a wgpu adapter: lavapipe on machines
-//! without a GPU). Prints `<case> cpu=<M points/s> gpu=<M points/s> ratio=<gpu/cpu>`.
+//! without a GPU). Prints `<case> cpu=<M points/s> gpu=<M points/s> ratio=<gpu/cpu>`, and
+//! where the adapter has timestamp queries `gpu_pass=<M points/s>`: the same points over the
+//! compute passes' own GPU time (median of the runs), without the recording, packing,
+//! submission and wait that the wall-time `gpu` column includes.
 
 use gleval::gl::{Gl, MeshVertices, Tessellator};
 use gleval::prelude::*;
 use gleval::render::Renderer;
-use gleval::testing::{Evaluator, PackedJobs};
+use gleval::testing::{Evaluator, PackedJobs, PassTimer};
 use std::time::Instant;
 
 fn median(mut t: Vec<f64>) -> f64 {
@@ -71,41 +74,65 @@ fn cpu_rate(patches: usize, n: i32, band: i32, runs: usize) -> f64 {
     (patches as f64) * f64::from((n + 1) * (n + 1)) / t
 }
 
-/// Evaluates the deferred jobs of a frame, one dispatch per batch that fits the device.
-fn gpu_evaluate(r: &Renderer, evaluator: &Evaluator, frame: &gleval::gl::Frame) {
+/// Evaluates the deferred jobs of a frame, one dispatch per batch that fits the device, and
+/// returns the dispatches' GPU time in seconds when `timer` can measure it.
+fn gpu_evaluate(
+    r: &Renderer,
+    evaluator: &Evaluator,
+    frame: &gleval::gl::Frame,
+    timer: Option<&PassTimer>,
+) -> Option<f64> {
     let mut encoder = r.device.create_command_encoder(&Default::default());
     let mut packed = PackedJobs::default();
     let mut keep = Vec::new();
+    let mut passes = 0;
+    let mut dispatch = |encoder: &mut wgpu::CommandEncoder, packed: &PackedJobs| {
+        let writes = timer.map(|t| t.writes(passes));
+        passes += 1;
+        keep.push(evaluator.evaluate_timed(&r.device, &r.queue, encoder, packed, writes));
+    };
     for mesh in &frame.meshes {
         let MeshVertices::Deferred(_) = &mesh.vertices else { continue };
         let extra = (mesh.nu * mesh.nv) as u64;
         if !packed.jobs.is_empty() && !Evaluator::fits(&r.device, u64::from(packed.vertices) + extra, 0) {
-            keep.push(evaluator.evaluate(&r.device, &r.queue, &mut encoder, &packed));
+            dispatch(&mut encoder, &packed);
             packed = PackedJobs::default();
         }
         packed.push_mesh(mesh).expect("valid mesh");
     }
-    keep.push(evaluator.evaluate(&r.device, &r.queue, &mut encoder, &packed));
-    let submission = r.queue.submit([encoder.finish()]);
-    let waited = r.device.poll(wgpu::PollType::Wait { submission_index: Some(submission), timeout: None });
+    dispatch(&mut encoder, &packed);
+    let gpu_time = match timer {
+        Some(timer) => Some(timer.read(&r.device, &r.queue, encoder, passes).expect("timestamps read back")),
+        None => {
+            let submission = r.queue.submit([encoder.finish()]);
+            r.device
+                .poll(wgpu::PollType::Wait { submission_index: Some(submission), timeout: None })
+                .expect("GPU finishes");
+            None
+        }
+    };
     if let Err(e) = r.take_error() {
         panic!("{e}");
     }
-    waited.expect("GPU finishes");
     drop(keep);
+    gpu_time
 }
 
-fn gpu_rate(r: &Renderer, evaluator: &Evaluator, patches: usize, n: i32, band: i32, runs: usize) -> f64 {
+/// Points per second by wall time, and by the compute passes' GPU time where measured.
+fn gpu_rate(r: &Renderer, evaluator: &Evaluator, patches: usize, n: i32, band: i32, runs: usize) -> (f64, Option<f64>) {
     let mut gl = Gl::new(64, 64);
     gl.set_tessellator(Tessellator::Gpu);
+    let timer = PassTimer::new(&r.device, &r.queue, 64);
     // One untimed run compiles the pipeline.
     record(&mut gl, 1, 2, 2);
-    gpu_evaluate(r, evaluator, &gl.take_frame());
+    gpu_evaluate(r, evaluator, &gl.take_frame(), timer.as_ref());
+    let mut gpu_times = Vec::new();
     let t = time(runs, || {
         record(&mut gl, patches, n, band);
-        gpu_evaluate(r, evaluator, &gl.take_frame());
+        gpu_times.extend(gpu_evaluate(r, evaluator, &gl.take_frame(), timer.as_ref()));
     });
-    (patches as f64) * f64::from((n + 1) * (n + 1)) / t
+    let points = (patches as f64) * f64::from((n + 1) * (n + 1));
+    (points / t, (!gpu_times.is_empty()).then(|| points / median(gpu_times)))
 }
 
 fn main() {
@@ -122,7 +149,7 @@ fn main() {
     // Rows per band so that one band's vertices (64 bytes each) fit one binding.
     let band_for = |n: i32| ((limit / 64) / (n as u64 + 1) - 1).clamp(1, n as u64) as i32;
     if std::env::args().any(|a| a == "--overhead") {
-        let gpu = gpu_rate(&renderer, &evaluator, 1, 1, 1, 30);
+        let (gpu, _) = gpu_rate(&renderer, &evaluator, 1, 1, 1, 30);
         println!("4-point frame: {:.3} ms", 4.0 / gpu * 1e3);
         return;
     }
@@ -135,7 +162,9 @@ fn main() {
     for (name, patches, n, runs) in cases {
         let band = band_for(n);
         let cpu = cpu_rate(patches, n, band, runs);
-        let gpu = gpu_rate(&renderer, &evaluator, patches, n, band, runs);
-        println!("{name} cpu={:.2} gpu={:.2} ratio={:.2}", cpu / 1e6, gpu / 1e6, gpu / cpu);
+        let (gpu, pass) = gpu_rate(&renderer, &evaluator, patches, n, band, runs);
+        let pass =
+            pass.map_or_else(|| "gpu_pass=- (no timestamp queries)".to_owned(), |p| format!("gpu_pass={:.2}", p / 1e6));
+        println!("{name} cpu={:.2} gpu={:.2} ratio={:.2} {pass}", cpu / 1e6, gpu / 1e6, gpu / cpu);
     }
 }

@@ -5,7 +5,7 @@
 #[cfg(feature = "gpu")]
 pub use crate::gpu::{
     evaluate_job_indices, evaluate_jobs, EvaluatedMeshes, Evaluator, Gpu, GpuMapDesc, GpuMeshJob, PackedJobs,
-    EVAL_MESH_WGSL, FRAGMENT_WGSL, MESH_RASTER_WGSL, RASTER_WGSL, VERTEX_BYTES,
+    PassTimer, EVAL_MESH_WGSL, FRAGMENT_WGSL, MESH_RASTER_WGSL, RASTER_WGSL, VERTEX_BYTES,
 };
 
 // --- tessellation internals: the f64 grid evaluator, the oracle of the GPU parity tests ---

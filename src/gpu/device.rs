@@ -65,7 +65,10 @@ pub(crate) fn request_device(adapter: &wgpu::Adapter) -> Result<(wgpu::Device, w
         max_buffer_size: available.max_buffer_size,
         ..wgpu::Limits::downlevel_defaults().using_resolution(available)
     };
-    let desc = wgpu::DeviceDescriptor { label: Some("gleval"), required_limits, ..Default::default() };
+    // Timestamp queries where the adapter has them: benchmarks time compute passes on the GPU.
+    let required_features = adapter.features() & wgpu::Features::TIMESTAMP_QUERY;
+    let desc =
+        wgpu::DeviceDescriptor { label: Some("gleval"), required_limits, required_features, ..Default::default() };
     pollster::block_on(adapter.request_device(&desc)).map_err(|e| RenderError::Device(e.to_string()))
 }
 

@@ -78,6 +78,19 @@ impl Evaluator {
         encoder: &mut wgpu::CommandEncoder,
         packed: &PackedJobs,
     ) -> EvaluatedMeshes {
+        self.evaluate_timed(device, queue, encoder, packed, None)
+    }
+
+    /// [`Evaluator::evaluate`] with the compute pass's timestamps written where `timestamps`
+    /// says (see [`super::PassTimer`]).
+    pub fn evaluate_timed(
+        &self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        encoder: &mut wgpu::CommandEncoder,
+        packed: &PackedJobs,
+        timestamps: Option<wgpu::ComputePassTimestampWrites<'_>>,
+    ) -> EvaluatedMeshes {
         let [jobs, data, meta] = input_buffers(device, packed);
         let out = output_buffers(device, queue, packed);
         let bind = device.create_bind_group(&wgpu::BindGroupDescriptor {
@@ -94,8 +107,10 @@ impl Evaluator {
         let groups = packed.vertices.div_ceil(WORKGROUP);
         if groups > 0 {
             let (x, y) = (groups.min(MAX_GROUPS_X), groups.div_ceil(MAX_GROUPS_X));
-            let mut pass = encoder
-                .begin_compute_pass(&wgpu::ComputePassDescriptor { label: Some("eval_mesh"), timestamp_writes: None });
+            let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
+                label: Some("eval_mesh"),
+                timestamp_writes: timestamps,
+            });
             pass.set_pipeline(&self.compute);
             pass.set_bind_group(0, &bind, &[]);
             pass.dispatch_workgroups(x, y, 1);

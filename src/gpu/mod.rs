@@ -14,6 +14,7 @@
 //! | `mesh_raster.rs` | a frame's deferred meshes: one evaluator dispatch, drawn by `shaders/mesh_raster.wgsl` | `device`, `draw_uniform`, `evaluate`, `layout`, `pack`, `raster` |
 //! | `passes.rs` | render passes split at GL's clears, scissors from GL's viewports | - |
 //! | `target.rs` | the headless colour and depth target, read back | `device`, `raster` |
+//! | `timer.rs` | compute passes' GPU time from timestamp queries, for benchmarks | `device` |
 //! | `renderer.rs` | [`Renderer`], and [`tessellate_patches`] on it | `device`, `evaluate`, `frame_raster`, `mesh_raster`, `passes`, `target` |
 //!
 //! Below the module: `gl` (the recorded frame), `math`, `tess` (the mesh type) and the CPU
@@ -33,12 +34,14 @@ mod raster;
 mod renderer;
 mod target;
 mod textures;
+mod timer;
 
 pub use device::{Gpu, RenderError};
 pub use evaluate::{evaluate_job_indices, evaluate_jobs, EvaluatedMeshes, Evaluator};
 pub use layout::{GpuMapDesc, GpuMeshJob, EVAL_MESH_WGSL, FRAGMENT_WGSL, MESH_RASTER_WGSL, RASTER_WGSL, VERTEX_BYTES};
 pub use pack::PackedJobs;
 pub use renderer::{tessellate_patches, Renderer};
+pub use timer::PassTimer;
 
 #[cfg(feature = "window")]
 pub(crate) use device::{backend_order, first_adapter};
