@@ -6,6 +6,7 @@
 #include <GL/glu.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #include <time.h>
 
 static double now(void) { struct timespec t; clock_gettime(CLOCK_MONOTONIC, &t); return t.tv_sec + t.tv_nsec * 1e-9; }
@@ -71,7 +72,7 @@ static void mesh1(int runs) {
 
 /* The first glEvalMesh2 of a fresh context: 1000^2, GL_AUTO_NORMAL, nothing warm (a new OSMesa
    context each run; the context's creation is not timed). */
-static void first_mesh2(int runs) {
+static void first_mesh2(const char *name, int runs) {
     static unsigned char buf[64 * 64 * 4];
     double t[16];
     int n = 1000;
@@ -92,7 +93,7 @@ static void first_mesh2(int runs) {
         OSMesaMakeCurrent(previous, buf, GL_UNSIGNED_BYTE, 64, 64);
         OSMesaDestroyContext(c);
     }
-    printf("first_eval_mesh2_1000 %.0f\n", (double)(n + 1) * (n + 1) / median(t, runs));
+    printf("%s %.0f\n", name, (double)(n + 1) * (n + 1) / median(t, runs));
 }
 
 /* 10,000 curves drawn as the textbook's B-spline programs draw their Bezier pieces: a glMap1f
@@ -189,7 +190,9 @@ static void nurbs_trimmed(int runs) {
     gluDeleteNurbsRenderer(nb);
 }
 
-int main(void) {
+/* With the argument "cold": only the first glEvalMesh2 of the process's first fresh context
+   (bench/compare.sh runs it in new processes, as the Rust side's BENCH_COLD=1). */
+int main(int argc, char **argv) {
     static unsigned char buf[64 * 64 * 4];
     OSMesaContext c = OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 0, NULL);
     OSMesaMakeCurrent(c, buf, GL_UNSIGNED_BYTE, 64, 64);
@@ -197,13 +200,17 @@ int main(void) {
     glCullFace(GL_FRONT_AND_BACK);
     for (int i = 0; i < 4; i++)
         for (int j = 0; j < 4; j++) { patch[i][j][0] = i / 3.0f - 0.5f; patch[i][j][1] = j / 3.0f - 0.5f; patch[i][j][2] = ((i + j) % 3) * 0.2f; }
+    if (argc > 1 && strcmp(argv[1], "cold") == 0) {
+        first_mesh2("cold_first_eval_mesh2_1000", 1);
+        return 0;
+    }
     mesh2(100, 9);
     mesh2(1000, 5);
     mesh2(4000, 3);
     patches(5);
     mesh1(5);
     eval_coord_curves(5);
-    first_mesh2(5);
+    first_mesh2("first_eval_mesh2_1000", 5);
     nurbs(5);
     nurbs_trimmed(5);
     return 0;

@@ -10,6 +10,8 @@
 # The typed-API grid cases (grid_N, grid_fresh_N, grid_normals_N) are compared with Mesa's eval_mesh2_N.
 # The whole_* cases are whole processes (bench/whole_process.sh): each textbook program's headless
 # PNG render, the C original on OSMesa against the Rust port, in renders per second.
+# cold_first_eval_mesh2_1000 is the first eval_mesh2 of a process (memory fresh from the kernel),
+# the median of 5 new processes a side; first_eval_mesh2_1000 repeats it in one process.
 # Peak memory of the 4000^2 typed case goes to stderr.
 set -eu
 rounds=${1:-1}
@@ -27,6 +29,15 @@ while [ "$r" -le "$rounds" ]; do
   "$here/../target/release/examples/bench" > "$build/ours.txt"
   sh "$here/whole_process.sh" anchor 5 >> "$build/anchor.txt"
   sh "$here/whole_process.sh" ours 5 >> "$build/ours.txt"
+  # The first eval_mesh2 of a process: 5 new processes a side, their median.
+  for side in anchor ours; do
+    k=0
+    while [ "$k" -lt 5 ]; do
+      if [ "$side" = anchor ]; then GALLIUM_DRIVER=llvmpipe "$build/anchor" cold
+      else BENCH_COLD=1 "$here/../target/release/examples/bench" first_eval_mesh2_1000; fi
+      k=$((k + 1))
+    done | sort -k2 -n | awk '{ v[NR] = $0 } END { print v[int((NR + 1) / 2)] }' >> "$build/$side.txt"
+  done
   # One line per case and round: case ours anchor (anchor "-" where it has no such case).
   awk 'NR == FNR { anchor[$1] = $2; next }
        { key = $1; sub(/^grid_(fresh_|normals_)?/, "eval_mesh2_", key)

@@ -3,6 +3,9 @@
 //! "<case> <rate per second>".
 //!
 //! `cargo run --release --example bench [case ...]` (`name*`: the cases starting with `name`).
+//! With `BENCH_COLD=1` each case runs once, untimed warm-up skipped, and prints as
+//! `cold_<case>`: the first run of a process, its memory fresh from the kernel (what
+//! `bench/compare.sh` runs in new processes for the first `eval_mesh2`).
 
 #[path = "../bench/workloads.rs"]
 mod workloads;
@@ -44,6 +47,12 @@ fn main() {
         }
         let before = peak_mib();
         let mut w = setup();
+        if std::env::var_os("BENCH_COLD").is_some() {
+            let start = Instant::now();
+            (w.run)();
+            println!("cold_{name} {:.0}", w.items / start.elapsed().as_secs_f64());
+            continue;
+        }
         let override_runs = std::env::var("BENCH_RUNS").ok().and_then(|r| r.parse().ok());
         let runs = if let Some(runs) = override_runs {
             runs

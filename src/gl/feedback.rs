@@ -229,7 +229,7 @@ impl Gl {
                     let mesh = &self.frame.meshes[i];
                     let (grid, state) = (mesh.evaluated().into_owned(), mesh.state);
                     for (mode, indices) in mesh.primitives() {
-                        let vertices: Vec<Vertex> = indices.iter().map(|&k| grid[k]).collect();
+                        let vertices: Vec<Vertex> = indices.iter().map(|&k| grid.vertex(k)).collect();
                         self.feedback_primitive(&mut values, mode, state, &vertices);
                     }
                 }

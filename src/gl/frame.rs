@@ -188,7 +188,7 @@ pub enum MeshMode {
 #[derive(Clone, Debug, PartialEq)]
 pub enum MeshVertices {
     /// `nu · nv` vertices, v outer.
-    Evaluated(Vec<Vertex>),
+    Evaluated(super::GridVertices),
     /// The maps and parameters, evaluated by the GPU tessellator when the frame is drawn: one
     /// job for a grid, one per Bezier piece for scattered points (outputs concatenated).
     Deferred(Vec<super::MeshJob>),
@@ -214,10 +214,17 @@ pub struct GridMesh {
 impl GridMesh {
     /// The grid's vertices, evaluating a deferred job on the CPU.
     #[must_use]
-    pub fn evaluated(&self) -> std::borrow::Cow<'_, [Vertex]> {
+    pub fn evaluated(&self) -> std::borrow::Cow<'_, super::GridVertices> {
         match &self.vertices {
             MeshVertices::Evaluated(v) => std::borrow::Cow::Borrowed(v),
-            MeshVertices::Deferred(jobs) => std::borrow::Cow::Owned(jobs.iter().flat_map(|j| j.evaluate()).collect()),
+            MeshVertices::Deferred(jobs) => match jobs.as_slice() {
+                [job] => std::borrow::Cow::Owned(job.evaluate()),
+                // Scattered points, one job per Bezier piece: outputs concatenated.
+                _ => {
+                    let all: Vec<Vertex> = jobs.iter().flat_map(|j| j.evaluate().to_vertices()).collect();
+                    std::borrow::Cow::Owned(super::GridVertices::from_vertices(&all))
+                }
+            },
         }
     }
 
@@ -291,7 +298,7 @@ impl Frame {
                     let mesh = &self.meshes[i];
                     let grid = mesh.evaluated();
                     for (mode, indices) in mesh.primitives() {
-                        out.push_primitive(mode, mesh.state, indices.iter().map(|&k| grid[k]));
+                        out.push_primitive(mode, mesh.state, indices.iter().map(|&k| grid.vertex(k)));
                     }
                 }
             }

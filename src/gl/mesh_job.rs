@@ -7,8 +7,9 @@
 
 use super::eval::Slot;
 use super::vertex::Vertex;
+use super::GridVertices;
 use crate::math::rational::normalize;
-use crate::tess::{for_row_bands, MapView, Row, RowKernel};
+use crate::tess::{rows_per_band, run_bands, MapView, Row, RowKernel};
 use std::cell::RefCell;
 use std::ops::Range;
 
@@ -21,27 +22,104 @@ thread_local! {
     static SCRATCH_ROWS: RefCell<Vec<Row<f32>>> = const { RefCell::new(Vec::new()) };
 }
 
-/// Writes the evaluated `slot` of a row into its vertices (as `Vertex::set_attribute` does, with the
-/// choice of field made once per row rather than per vertex).
-fn write_attribute(vertices: &mut [Vertex], slot: Slot, row: &Row<f32>) {
-    let p = &row.point;
-    match slot {
-        Slot::Vertex3 => {
-            for (v, ((x, y), z)) in vertices.iter_mut().zip(p[0].iter().zip(&p[1]).zip(&p[2])) {
-                v.position = [*x, *y, *z, 1.0];
-            }
-        }
-        Slot::Vertex4 => {
-            for (v, (((x, y), z), w)) in vertices.iter_mut().zip(p[0].iter().zip(&p[1]).zip(&p[2]).zip(&p[3])) {
-                v.position = [*x, *y, *z, *w];
-            }
-        }
-        _ => {
-            for (i, v) in vertices.iter_mut().enumerate() {
-                v.set_attribute(slot, row.point_at(i, slot.components()));
-            }
+/// A band of a grid's attribute arrays (whole rows), to be filled by one thread. An array the
+/// grid does not keep is empty here too.
+struct Columns<'a> {
+    positions: &'a mut [[f32; 4]],
+    normals: &'a mut [[f32; 3]],
+    colors: &'a mut [[f32; 4]],
+    tex_coords: &'a mut [[f32; 4]],
+}
+
+impl<'a> Columns<'a> {
+    fn of(grid: &'a mut GridVertices) -> Self {
+        Self {
+            positions: &mut grid.positions,
+            normals: &mut grid.normals,
+            colors: &mut grid.colors,
+            tex_coords: &mut grid.tex_coords,
         }
     }
+
+    fn len(&self) -> usize {
+        self.positions.len()
+    }
+
+    /// The first `n` points and the rest.
+    fn split_at(self, n: usize) -> (Self, Self) {
+        fn cut<T>(column: &mut [T], n: usize) -> (&mut [T], &mut [T]) {
+            let n = if column.is_empty() { 0 } else { n.min(column.len()) };
+            column.split_at_mut(n)
+        }
+        let (p0, p1) = cut(self.positions, n);
+        let (n0, n1) = cut(self.normals, n);
+        let (c0, c1) = cut(self.colors, n);
+        let (t0, t1) = cut(self.tex_coords, n);
+        (
+            Self { positions: p0, normals: n0, colors: c0, tex_coords: t0 },
+            Self { positions: p1, normals: n1, colors: c1, tex_coords: t1 },
+        )
+    }
+
+    /// Consecutive pieces of `n` points each (the last may be shorter).
+    fn chunks(self, n: usize) -> Vec<Self> {
+        let mut out = Vec::with_capacity(self.len().div_ceil(n.max(1)));
+        let mut rest = self;
+        while rest.len() > 0 {
+            let (piece, tail) = rest.split_at(n.max(1));
+            out.push(piece);
+            rest = tail;
+        }
+        out
+    }
+
+    /// Writes `slot`'s value at each point of `row` (widened as GL widens), or `value` at every
+    /// point when `row` is `None`.
+    fn write(&mut self, slot: Slot, row: Option<&Row<f32>>, value: [f32; 4]) {
+        let k = slot.components();
+        let at = |i: usize| row.map_or(value, |r| r.point_at(i, k));
+        match slot {
+            Slot::Vertex3 if row.is_some() => {
+                let p = &row.expect("checked").point;
+                for (v, ((x, y), z)) in self.positions.iter_mut().zip(p[0].iter().zip(&p[1]).zip(&p[2])) {
+                    *v = [*x, *y, *z, 1.0];
+                }
+            }
+            Slot::Vertex3 | Slot::Vertex4 => self.positions.iter_mut().enumerate().for_each(|(i, v)| *v = at(i)),
+            Slot::Normal => self.normals.iter_mut().enumerate().for_each(|(i, n)| {
+                let p = at(i);
+                *n = [p[0], p[1], p[2]];
+            }),
+            Slot::Color4 => self.colors.iter_mut().enumerate().for_each(|(i, c)| *c = at(i)),
+            _ => self.tex_coords.iter_mut().enumerate().for_each(|(i, t)| *t = at(i)),
+        }
+    }
+}
+
+/// Makes `column` hold `len` values (to be overwritten), reusing its memory, or empties it when
+/// the grid does not keep this attribute.
+fn fit<T: bytemuck::Zeroable + Clone>(column: &mut Vec<T>, len: usize, kept: bool) {
+    let len = if kept { len } else { 0 };
+    if column.len() >= len {
+        column.truncate(len);
+    } else if column.capacity() >= len {
+        column.resize(len, T::zeroed());
+    } else {
+        // Fresh zeroed memory comes from calloc: its pages are faulted in by the threads that
+        // fill them rather than all by this one.
+        *column = bytemuck::zeroed_vec(len);
+    }
+}
+
+/// Runs `work(first_row, band)` over the rows of `grid` (`row_len` points each), split into
+/// bands of whole rows, one band per core when the grid is large enough.
+fn for_column_bands(grid: &mut GridVertices, row_len: usize, work: impl Fn(usize, Columns<'_>) + Sync) {
+    let columns = Columns::of(grid);
+    if row_len == 0 || columns.len() == 0 {
+        return;
+    }
+    let band = rows_per_band(columns.len().div_ceil(row_len), row_len);
+    run_bands(columns.chunks(band * row_len).into_iter(), |k, band_columns| work(k * band, band_columns));
 }
 
 /// Runs `f` with `n` scratch rows of this thread.
@@ -108,46 +186,50 @@ impl MeshJob {
     }
 
     /// The vertices of the grid on the CPU, v outer: each map evaluated a row at a time
-    /// (`RowKernel`), rows shared out between the cores, every vertex written once.
+    /// (`RowKernel`), rows shared out between the cores, every value written once.
     #[must_use]
-    pub fn evaluate(&self) -> Vec<Vertex> {
-        let mut out = Vec::new();
+    pub fn evaluate(&self) -> GridVertices {
+        let mut out = GridVertices::default();
         self.evaluate_into(&mut out);
         out
     }
 
-    /// [`MeshJob::evaluate`] into `out`, reusing its memory (every vertex is overwritten).
-    pub fn evaluate_into(&self, out: &mut Vec<Vertex>) {
+    /// [`MeshJob::evaluate`] into `out`, reusing its memory (every value is overwritten).
+    pub fn evaluate_into(&self, out: &mut GridVertices) {
         if self.scattered {
-            *out = self.evaluate_scattered();
+            *out = GridVertices::from_vertices(&self.evaluate_scattered());
             return;
         }
-        if out.capacity() >= self.len() {
-            out.resize(self.len(), self.template);
-        } else {
-            // Fresh zeroed memory comes from calloc: its pages are faulted in by the threads
-            // below rather than all by this one.
-            *out = bytemuck::zeroed_vec(self.len());
+        out.template = self.template;
+        let has = |wanted: &[Slot]| self.maps.iter().any(|m| wanted.contains(&m.slot));
+        let vertex_map = has(&[Slot::Vertex3, Slot::Vertex4]);
+        let len = self.len();
+        fit(&mut out.positions, len, true);
+        fit(&mut out.normals, len, has(&[Slot::Normal]) || (self.auto_normal && vertex_map));
+        fit(&mut out.colors, len, has(&[Slot::Color4]));
+        fit(&mut out.tex_coords, len, has(&[Slot::TexCoord1, Slot::TexCoord2, Slot::TexCoord3, Slot::TexCoord4]));
+        if !vertex_map {
+            out.positions.fill(self.template.position);
         }
         if self.nv == 1 && self.nu > CURVE_TILE {
             // A long curve: tiles of columns, so that each tile's basis table stays in cache
             // and the tiles can be shared out between the cores.
-            for_row_bands(out, CURVE_TILE, |first_tile, band| {
+            for_column_bands(out, CURVE_TILE, |first_tile, band| {
                 with_scratch_rows(self.maps.len(), |rows| {
-                    for (t, vertices) in band.chunks_mut(CURVE_TILE).enumerate() {
+                    for (t, tile) in band.chunks(CURVE_TILE).into_iter().enumerate() {
                         let start = (first_tile + t) * CURVE_TILE;
-                        let kernels = self.kernels(start..start + vertices.len());
-                        self.fill_row(&kernels, 0, rows, vertices);
+                        let kernels = self.kernels(start..start + tile.len());
+                        self.fill_row(&kernels, 0, rows, tile);
                     }
                 });
             });
             return;
         }
         let kernels = self.kernels(0..self.nu);
-        for_row_bands(out, self.nu, |first_row, band| {
+        for_column_bands(out, self.nu, |first_row, band| {
             with_scratch_rows(self.maps.len(), |rows| {
-                for (r, vertices) in band.chunks_mut(self.nu).enumerate() {
-                    self.fill_row(&kernels, first_row + r, rows, vertices);
+                for (r, row) in band.chunks(self.nu).into_iter().enumerate() {
+                    self.fill_row(&kernels, first_row + r, rows, row);
                 }
             });
         });
@@ -165,34 +247,35 @@ impl MeshJob {
             .collect()
     }
 
-    /// Writes row `j` of every map into `vertices`: the template, then each map's attribute in
-    /// Mesa's order (the vertex map last), and the normal where `GL_AUTO_NORMAL` asks for it.
+    /// Writes row `j` of every map into `out`: each map's attribute in Mesa's order (the
+    /// vertex map last), and the normal where `GL_AUTO_NORMAL` asks for it.
     fn fill_row(
         &self,
         kernels: &[(Slot, bool, Option<RowKernel<'_, f32>>)],
         j: usize,
         rows: &mut [Row<f32>],
-        vertices: &mut [Vertex],
+        mut out: Columns<'_>,
     ) {
         for ((_, _, kernel), row) in kernels.iter().zip(rows.iter_mut()) {
             if let Some(kernel) = kernel {
                 kernel.eval_row(j, row);
             }
         }
-        vertices.fill(self.template);
         for ((slot, normals, kernel), row) in kernels.iter().zip(rows.iter()) {
-            // A malformed map (never made by the façade) evaluates to zeros.
+            // A malformed map (never made by the façade) evaluates to zeros (widened as GL does).
             let Some(_) = kernel else {
-                vertices.iter_mut().for_each(|v| v.set_attribute(*slot, [0.0; 4]));
+                let mut zero = [0.0, 0.0, 0.0, 1.0];
+                zero[..slot.components().min(4)].fill(0.0);
+                out.write(*slot, None, zero);
                 if *normals {
-                    vertices.iter_mut().for_each(|v| v.normal = [0.0; 3]);
+                    out.normals.fill([0.0; 3]);
                 }
                 continue;
             };
-            write_attribute(vertices, *slot, row);
+            out.write(*slot, Some(row), [0.0; 4]);
             if *normals {
-                for (i, v) in vertices.iter_mut().enumerate() {
-                    v.normal = normalize(row.cross_at(i));
+                for (i, n) in out.normals.iter_mut().enumerate() {
+                    *n = normalize(row.cross_at(i));
                 }
             }
         }
@@ -213,8 +296,36 @@ impl MeshJob {
                     scattered: false,
                     ..self.clone()
                 };
-                point.evaluate()[0]
+                point.evaluate().vertex(0)
             })
             .collect()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The bands cover every point of every kept array once, in row order, and leave the
+    /// arrays the grid does not keep empty.
+    #[test]
+    fn bands_cover_every_row_once() {
+        for (len, row_len) in [(0, 3), (7, 7), (100_000, 10), (100_001, 1000), (1 << 17, 3)] {
+            let mut grid = GridVertices {
+                positions: vec![[f32::NAN; 4]; len],
+                colors: vec![[f32::NAN; 4]; len],
+                ..GridVertices::default()
+            };
+            for_column_bands(&mut grid, row_len, |first, band| {
+                assert!(band.normals.is_empty() && band.tex_coords.is_empty());
+                assert_eq!(band.positions.len(), band.colors.len());
+                for (k, (p, c)) in band.positions.iter_mut().zip(band.colors.iter_mut()).enumerate() {
+                    let index = (first * row_len + k) as f32;
+                    (*p, *c) = ([index; 4], [-index; 4]);
+                }
+            });
+            let covered = |k: usize| grid.positions[k][0] == k as f32 && grid.colors[k][0] == -(k as f32);
+            assert!((0..len).all(covered), "{len} {row_len}");
+        }
     }
 }

@@ -16,6 +16,7 @@ mod eval;
 pub mod feedback;
 mod fragment;
 mod frame;
+mod grid_vertices;
 mod hint;
 mod immediate;
 mod lighting;
@@ -37,6 +38,7 @@ mod vertex;
 pub use eval::{MapTarget, Slot};
 pub use fragment::Fog;
 pub use frame::{Call, Command, DrawState, Frame, GridMesh, MaterialChange, MeshMode, MeshVertices, Primitive};
+pub use grid_vertices::GridVertices;
 pub use lighting::{Light, Lighting, Material};
 pub use lists::MAX_LIST_NESTING;
 pub use mesh_job::{MapSample, MeshJob};
@@ -132,7 +134,7 @@ pub struct Gl {
     state_index: Option<usize>,
     frame: Frame,
     /// Vertex buffers of a recycled frame's meshes, reused by the next meshes (no page faults).
-    vertex_pool: Vec<Vec<Vertex>>,
+    vertex_pool: Vec<GridVertices>,
     /// Small CPU meshes recorded but not yet evaluated (see `Gl::record_mesh`), with their
     /// index in `frame.meshes` and their total grid points.
     pub(crate) pending_meshes: (Vec<(usize, MeshJob)>, usize),
@@ -271,7 +273,7 @@ impl Gl {
     }
 
     /// A vertex buffer from the recycled pool (empty if none is left).
-    pub(crate) fn pooled_vertices(&mut self) -> Vec<Vertex> {
+    pub(crate) fn pooled_vertices(&mut self) -> GridVertices {
         self.vertex_pool.pop().unwrap_or_default()
     }
 

@@ -177,7 +177,7 @@ pub fn assemble_frame(frame: &Frame, gpu_meshes: &[usize]) -> DrawList {
                 }
                 let grid = mesh.evaluated();
                 for (mode, indices) in mesh.primitives() {
-                    let vertices: Vec<Vertex> = indices.iter().map(|&k| grid[k]).collect();
+                    let vertices: Vec<Vertex> = indices.iter().map(|&k| grid.vertex(k)).collect();
                     out.primitive(mode, &vertices, state);
                 }
             }

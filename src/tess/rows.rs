@@ -269,16 +269,6 @@ pub fn run_bands<B: Send>(bands: impl Iterator<Item = B>, work: impl Fn(usize, B
     });
 }
 
-/// Runs `work(first_row, rows)` over `out`, a grid of `row_len` items per row, split into
-/// bands of whole rows, one band per core when the grid is large enough.
-pub fn for_row_bands<T: Send>(out: &mut [T], row_len: usize, work: impl Fn(usize, &mut [T]) + Sync) {
-    if row_len == 0 || out.is_empty() {
-        return;
-    }
-    let band = rows_per_band(out.len().div_ceil(row_len), row_len);
-    run_bands(out.chunks_mut(band * row_len), |k, chunk| work(k * band, chunk));
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -356,19 +346,6 @@ mod tests {
                 let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
                 assert_eq!(bits(&fast), bits(&plain), "order {k}, {n} points");
             }
-        }
-    }
-
-    #[test]
-    fn bands_cover_every_row_once() {
-        for (len, row_len) in [(0, 3), (7, 7), (100_000, 10), (100_001, 1000), (1 << 17, 3)] {
-            let mut out = vec![usize::MAX; len];
-            for_row_bands(&mut out, row_len, |first, band| {
-                for (k, x) in band.iter_mut().enumerate() {
-                    *x = first * row_len + k;
-                }
-            });
-            assert!(out.iter().enumerate().all(|(k, &x)| k == x), "{len} {row_len}");
         }
     }
 

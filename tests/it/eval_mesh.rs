@@ -358,8 +358,8 @@ fn small_meshes_evaluated_in_batches_keep_their_own_maps_and_state() {
         assert_eq!(got, &job[0].evaluate(), "mesh {k}");
         // Corners: P00 = (k, 0, z), P33 = (k + 3, 3, z').
         let corner = |p: usize| [(p / 4) as f32 + k as f32, (p % 4) as f32, ((p * 7 + k) % 5) as f32 * 0.3, 1.0];
-        assert_eq!(got[0].position, corner(0), "mesh {k}");
-        assert_eq!(got[80].position, corner(15), "mesh {k}");
-        assert_eq!(got[40].color, [k as f32 / count as f32, 0.5, 1.0, 1.0], "mesh {k}");
+        assert_eq!(got.vertex(0).position, corner(0), "mesh {k}");
+        assert_eq!(got.vertex(80).position, corner(15), "mesh {k}");
+        assert_eq!(got.vertex(40).color, [k as f32 / count as f32, 0.5, 1.0, 1.0], "mesh {k}");
     }
 }

@@ -344,7 +344,7 @@ fn facade_gpu_indices_are_gls_primitives() {
             nu: job.nu,
             nv: job.nv,
             state: 0,
-            vertices: MeshVertices::Evaluated(Vec::new()),
+            vertices: MeshVertices::Evaluated(Default::default()),
             triangles: Vec::new(),
         };
         // Expected primitives from the CPU path's GL order (checked against Mesa elsewhere).
