@@ -17,6 +17,10 @@ use std::ops::Range;
 /// 88 KiB of f32.
 const CURVE_TILE: usize = 2048;
 
+/// Rows up to this many points are evaluated point by point (`RowKernel::eval_row_points`):
+/// the row kernel's per-component passes cost more than they save on short rows.
+const POINT_BY_POINT_ROW: usize = 64;
+
 thread_local! {
     /// Row scratch of this thread, kept between meshes so that small meshes allocate nothing.
     static SCRATCH_ROWS: RefCell<Vec<Row<f32>>> = const { RefCell::new(Vec::new()) };
@@ -256,14 +260,9 @@ impl MeshJob {
         rows: &mut [Row<f32>],
         mut out: Columns<'_>,
     ) {
-        for ((_, _, kernel), row) in kernels.iter().zip(rows.iter_mut()) {
-            if let Some(kernel) = kernel {
-                kernel.eval_row(j, row);
-            }
-        }
-        for ((slot, normals, kernel), row) in kernels.iter().zip(rows.iter()) {
+        for ((slot, normals, kernel), row) in kernels.iter().zip(rows.iter_mut()) {
             // A malformed map (never made by the façade) evaluates to zeros (widened as GL does).
-            let Some(_) = kernel else {
+            let Some(kernel) = kernel else {
                 let mut zero = [0.0, 0.0, 0.0, 1.0];
                 zero[..slot.components().min(4)].fill(0.0);
                 out.write(*slot, None, zero);
@@ -272,6 +271,19 @@ impl MeshJob {
                 }
                 continue;
             };
+            if *slot == Slot::Vertex3 && out.len() <= POINT_BY_POINT_ROW {
+                let (positions, normal_out) = (&mut *out.positions, &mut *out.normals);
+                let by_points = kernel.eval_row_points(j, row, |i, p, n| {
+                    positions[i] = [p[0], p[1], p[2], 1.0];
+                    if *normals {
+                        normal_out[i] = normalize(n);
+                    }
+                });
+                if by_points {
+                    continue;
+                }
+            }
+            kernel.eval_row(j, row);
             out.write(*slot, Some(row), [0.0; 4]);
             if *normals {
                 for (i, n) in out.normals.iter_mut().enumerate() {

@@ -206,6 +206,89 @@ impl<'a, S: Scalar> RowKernel<'a, S> {
     }
 }
 
+impl<S: Scalar> RowKernel<'_, S> {
+    /// Row `j` of a three-component map of u order up to 8, point by point: `emit(i, p, n)`
+    /// with the point and, when the kernel makes normals, the normal direction ∂p/∂u × ∂p/∂v
+    /// (zero otherwise). The same operations in the same order as [`RowKernel::eval_row`]
+    /// (each sum from zero up, Mesa's `CROSS3`), so the same bits, without its per-component
+    /// passes: what a short row (a small patch's 9 points) spends most of its time on.
+    /// Returns false, emitting nothing, for other maps.
+    pub fn eval_row_points(&self, j: usize, row: &mut Row<S>, emit: impl FnMut(usize, [S; 3], [S; 3])) -> bool {
+        if self.map.dim != 3 {
+            return false;
+        }
+        match self.map.uorder {
+            1 => self.points_fixed::<1>(j, row, emit),
+            2 => self.points_fixed::<2>(j, row, emit),
+            3 => self.points_fixed::<3>(j, row, emit),
+            4 => self.points_fixed::<4>(j, row, emit),
+            5 => self.points_fixed::<5>(j, row, emit),
+            6 => self.points_fixed::<6>(j, row, emit),
+            7 => self.points_fixed::<7>(j, row, emit),
+            8 => self.points_fixed::<8>(j, row, emit),
+            _ => return false,
+        }
+        true
+    }
+
+    fn points_fixed<const K: usize>(&self, j: usize, row: &mut Row<S>, mut emit: impl FnMut(usize, [S; 3], [S; 3])) {
+        let nu = self.nu;
+        row.reduced.resize(K, [S::ZERO; MAX_DIM]);
+        row.reduced_dv.resize(K, [S::ZERO; MAX_DIM]);
+        reduce_rows(
+            &self.map,
+            self.basis_v.at(j),
+            self.basis_v.lower_at(j),
+            self.normals,
+            &mut row.reduced,
+            &mut row.reduced_dv,
+        );
+        let r: [[S; 3]; K] = std::array::from_fn(|a| [row.reduced[a][0], row.reduced[a][1], row.reduced[a][2]]);
+        let basis: [&[S]; K] = std::array::from_fn(|a| &self.basis_u[a * nu..(a + 1) * nu]);
+        if !self.normals {
+            for i in 0..nu {
+                let mut p = [S::ZERO; 3];
+                for a in 0..K {
+                    for c in 0..3 {
+                        p[c] += basis[a][i] * r[a][c];
+                    }
+                }
+                emit(i, p, [S::ZERO; 3]);
+            }
+            return;
+        }
+        let rv: [[S; 3]; K] =
+            std::array::from_fn(|a| [row.reduced_dv[a][0], row.reduced_dv[a][1], row.reduced_dv[a][2]]);
+        // Control-point differences along u, as `eval_row` takes them (K − 1 of them).
+        let diff: [[S; 3]; K] =
+            std::array::from_fn(
+                |a| if a + 1 < K { std::array::from_fn(|c| r[a + 1][c] - r[a][c]) } else { [S::ZERO; 3] },
+            );
+        let lower: [&[S]; K] =
+            std::array::from_fn(|a| if a + 1 < K { &self.lower_u[a * nu..(a + 1) * nu] } else { &[][..] });
+        let n = S::from_usize(K - 1);
+        for i in 0..nu {
+            let (mut p, mut du, mut dv) = ([S::ZERO; 3], [S::ZERO; 3], [S::ZERO; 3]);
+            for a in 0..K {
+                let b = basis[a][i];
+                for c in 0..3 {
+                    p[c] += b * r[a][c];
+                    dv[c] += b * rv[a][c];
+                }
+                if a + 1 < K {
+                    let l = lower[a][i];
+                    for c in 0..3 {
+                        du[c] += l * diff[a][c];
+                    }
+                }
+            }
+            let du = du.map(|d| d * n);
+            let cross = [du[1] * dv[2] - du[2] * dv[1], du[2] * dv[0] - du[0] * dv[2], du[0] * dv[1] - du[1] * dv[0]];
+            emit(i, p, cross);
+        }
+    }
+}
+
 /// `d ← d·w − p·d_w` per point (the direction of the projected derivative, times w²).
 fn rational_correction<S: Scalar>(d: &mut [Vec<S>; MAX_DIM], p: &[Vec<S>; MAX_DIM]) {
     let (xyz, w) = d.split_at_mut(3);
@@ -330,6 +413,49 @@ mod tests {
                 }
             }
         }
+    }
+
+    /// Point by point gives the row kernel's bits (points and normal directions), in f32 and
+    /// f64, for every u order it takes, with and without normals, also at parameters off the
+    /// unit interval; other maps are refused.
+    #[test]
+    fn point_by_point_rows_match_the_row_kernel() {
+        fn check<S: Scalar + std::fmt::Debug>(from: fn(f64) -> S) {
+            for normals in [false, true] {
+                for uo in 1..=8 {
+                    for vo in [1, 2, 4, 7] {
+                        let pts: Vec<S> = net(uo, vo, 3).into_iter().map(from).collect();
+                        let map = MapView { dim: 3, uorder: uo, vorder: vo, points: &pts };
+                        let us: Vec<S> = [0.0, 0.1, 0.25, 0.6, 0.99, 1.0, -0.3, 1.7, 0.5].map(from).to_vec();
+                        let vs: Vec<S> = [0.0, 0.5, 1.0, 1.2].map(from).to_vec();
+                        let kernel = RowKernel::new(map, &us, &vs, normals).expect("valid");
+                        let (mut row, mut points) = (Row::default(), Row::default());
+                        for j in 0..vs.len() {
+                            kernel.eval_row(j, &mut row);
+                            let mut got = Vec::new();
+                            assert!(kernel.eval_row_points(j, &mut points, |i, p, n| got.push((i, p, n))));
+                            assert_eq!(got.len(), us.len());
+                            // Bits, zero signs included.
+                            let bits = |v: [S; 3]| v.map(|x| x.to_f64().to_bits());
+                            for (i, p, n) in got {
+                                let want = [row.point[0][i], row.point[1][i], row.point[2][i]];
+                                assert_eq!(bits(p), bits(want), "{uo}x{vo} point {i}");
+                                let want = if normals { row.cross_at(i) } else { [S::ZERO; 3] };
+                                assert_eq!(bits(n), bits(want), "{uo}x{vo} normal {i}");
+                            }
+                        }
+                    }
+                }
+            }
+            for (dim, uo) in [(4, 4), (2, 3), (3, 9)] {
+                let pts: Vec<S> = net(uo, 2, dim).into_iter().map(from).collect();
+                let map = MapView { dim, uorder: uo, vorder: 2, points: &pts };
+                let kernel = RowKernel::new(map, &[S::ZERO], &[S::ZERO], true).expect("valid");
+                assert!(!kernel.eval_row_points(0, &mut Row::default(), |_, _, _| panic!("emitted")));
+            }
+        }
+        check::<f32>(|x| x as f32);
+        check::<f64>(|x| x);
     }
 
     /// The fixed-order kernels give the bits of the one-pass-per-term sum, for every order and
