@@ -8,13 +8,12 @@
 use super::eval::Slot;
 use super::vertex::Vertex;
 use super::GridVertices;
+use crate::math::bezier::{horner_many, Vec4};
 use crate::math::rational::normalize;
 use crate::tess::{rows_per_band, run_bands, MapView, Row, RowKernel};
 use std::cell::RefCell;
-use std::ops::Range;
 
-/// Columns per tile of a long curve (`glEvalMesh1`): a degree-10 basis table of one tile is
-/// 88 KiB of f32.
+/// Points per tile of a curve (`glEvalMesh1`): the unit of work shared out between the cores.
 const CURVE_TILE: usize = 2048;
 
 /// Rows up to this many points are evaluated point by point (`RowKernel::eval_row_points`):
@@ -24,6 +23,8 @@ const POINT_BY_POINT_ROW: usize = 64;
 thread_local! {
     /// Row scratch of this thread, kept between meshes so that small meshes allocate nothing.
     static SCRATCH_ROWS: RefCell<Vec<Row<f32>>> = const { RefCell::new(Vec::new()) };
+    /// A curve tile's values, likewise.
+    static SCRATCH_VALUES: RefCell<Vec<Vec4<f32>>> = const { RefCell::new(Vec::new()) };
 }
 
 /// A band of a grid's attribute arrays (whole rows), to be filled by one thread. An array the
@@ -75,6 +76,21 @@ impl<'a> Columns<'a> {
             rest = tail;
         }
         out
+    }
+
+    /// Writes `slot`'s values, one a point from the first, widened as GL widens
+    /// (`Vertex::set_attribute`): missing components are 0, and w or q 1.
+    fn write_values(&mut self, slot: Slot, values: &[Vec4<f32>]) {
+        let k = slot.components();
+        // Component c is the value's below k, else (0, 0, 0, 1)'s: a select per component, not
+        // a copy of a run-time length.
+        let widen = |p: &Vec4<f32>| std::array::from_fn(|c| if c < k { p[c] } else if c == 3 { 1.0 } else { 0.0 });
+        match slot {
+            Slot::Vertex3 | Slot::Vertex4 => self.positions.iter_mut().zip(values).for_each(|(o, p)| *o = widen(p)),
+            Slot::Normal => self.normals.iter_mut().zip(values).for_each(|(o, p)| *o = [p[0], p[1], p[2]]),
+            Slot::Color4 => self.colors.iter_mut().zip(values).for_each(|(o, p)| *o = widen(p)),
+            _ => self.tex_coords.iter_mut().zip(values).for_each(|(o, p)| *o = widen(p)),
+        }
     }
 
     /// Writes `slot`'s value at each point of `row` (widened as GL widens), or `value` at every
@@ -215,21 +231,18 @@ impl MeshJob {
         if !vertex_map {
             out.positions.fill(self.template.position);
         }
-        if self.nv == 1 && self.nu > CURVE_TILE {
-            // A long curve: tiles of columns, so that each tile's basis table stays in cache
-            // and the tiles can be shared out between the cores.
+        if self.is_curve() {
+            // Tiles of points, shared out between the cores.
             for_column_bands(out, CURVE_TILE, |first_tile, band| {
-                with_scratch_rows(self.maps.len(), |rows| {
+                SCRATCH_VALUES.with_borrow_mut(|values| {
                     for (t, tile) in band.chunks(CURVE_TILE).into_iter().enumerate() {
-                        let start = (first_tile + t) * CURVE_TILE;
-                        let kernels = self.kernels(start..start + tile.len());
-                        self.fill_row(&kernels, 0, rows, tile);
+                        self.fill_curve((first_tile + t) * CURVE_TILE, tile, values);
                     }
                 });
             });
             return;
         }
-        let kernels = self.kernels(0..self.nu);
+        let kernels = self.kernels();
         for_column_bands(out, self.nu, |first_row, band| {
             with_scratch_rows(self.maps.len(), |rows| {
                 for (r, row) in band.chunks(self.nu).into_iter().enumerate() {
@@ -239,14 +252,31 @@ impl MeshJob {
         });
     }
 
-    /// A row kernel per map over the grid columns `columns` (`None` for a malformed map).
-    fn kernels(&self, columns: Range<usize>) -> Vec<(Slot, bool, Option<RowKernel<'_, f32>>)> {
+    /// A `glEvalMesh1` job: one row of `GL_MAP1_*` maps (order 1 along v, at v = 0), no normals.
+    fn is_curve(&self) -> bool {
+        self.nv == 1 && !self.auto_normal && self.maps.iter().all(|m| m.vorder == 1 && m.vs.len() == 1)
+    }
+
+    /// Writes the curve points `start..start + out.len()` of every map: Horner's rule as
+    /// `glEvalCoord1` evaluates it (GL 1.1 §5.1 defines `glEvalMesh1` as that loop over the grid,
+    /// and Mesa runs it so), many points side by side: the same bits as `Gl::eval_coord1f`.
+    fn fill_curve(&self, start: usize, mut out: Columns<'_>, values: &mut Vec<Vec4<f32>>) {
+        let len = out.len();
+        values.resize(len, [0.0; 4]);
+        for map in &self.maps {
+            let us = map.us.get(start..start + len).unwrap_or_default();
+            horner_many(&map.points, map.slot.components(), map.uorder, us, values);
+            out.write_values(map.slot, &values[..us.len()]);
+        }
+    }
+
+    /// A row kernel per map over the whole grid (`None` for a malformed map).
+    fn kernels(&self) -> Vec<(Slot, bool, Option<RowKernel<'_, f32>>)> {
         self.maps
             .iter()
             .map(|map| {
                 let normals = self.auto_normal && matches!(map.slot, Slot::Vertex3 | Slot::Vertex4);
-                let us = map.us.get(columns.clone()).unwrap_or_default();
-                (map.slot, normals, RowKernel::new(map.view(), us, &map.vs, normals))
+                (map.slot, normals, RowKernel::new(map.view(), &map.us, &map.vs, normals))
             })
             .collect()
     }

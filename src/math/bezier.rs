@@ -64,6 +64,73 @@ fn horner_dim<S: Scalar, const D: usize>(points: &[S], order: usize, t: S) -> Ve
     out
 }
 
+/// [`horner`] at every parameter of `ts` into `out` (one value per parameter, `out` at least as
+/// long as `ts`): the same operations on each point as [`horner`], so the same bits, run over
+/// blocks of parameters side by side so that they vectorise. The binomial coefficients,
+/// the same for every point, are worked out once. What `glEvalMesh1` evaluates (the GL spec
+/// defines it as the `glEvalCoord1` loop, and Mesa runs that loop).
+pub fn horner_many<S: Scalar>(points: &[S], dim: usize, order: usize, ts: &[S], out: &mut [Vec4<S>]) {
+    let out = &mut out[..ts.len()];
+    if order == 0 || points.len() < order * dim || !(1..=MAX_DIM).contains(&dim) {
+        out.fill([S::ZERO; MAX_DIM]);
+        return;
+    }
+    match dim {
+        1 => horner_many_dim::<S, 1>(points, order, ts, out),
+        2 => horner_many_dim::<S, 2>(points, order, ts, out),
+        3 => horner_many_dim::<S, 3>(points, order, ts, out),
+        _ => horner_many_dim::<S, 4>(points, order, ts, out),
+    }
+}
+
+/// [`horner_many`] for `D` components.
+fn horner_many_dim<S: Scalar, const D: usize>(points: &[S], order: usize, ts: &[S], out: &mut [Vec4<S>]) {
+    const W: usize = 8;
+    if order == 1 {
+        let mut p = [S::ZERO; MAX_DIM];
+        p[..D].copy_from_slice(&points[..D]);
+        out.fill(p);
+        return;
+    }
+    // The running coefficient of `horner_dim`, step by step: C(n, 1), then C(n, i).
+    let n = order - 1;
+    let mut binoms = Vec::with_capacity(order);
+    let mut binom = S::from_usize(n);
+    binoms.extend([S::ZERO, binom]);
+    for i in 2..order {
+        binom = binom * S::from_usize(n - i + 1) * reciprocal::<S>(i);
+        binoms.push(binom);
+    }
+    let point = |i: usize| -> [S; D] { std::array::from_fn(|c| points[i * D + c]) };
+    for (block_ts, block_out) in ts.chunks(W).zip(out.chunks_mut(W)) {
+        let m = block_ts.len();
+        let mut t = [S::ZERO; W];
+        t[..m].copy_from_slice(block_ts);
+        let s: [S; W] = std::array::from_fn(|k| S::ONE - t[k]);
+        let mut power = t;
+        let (p0, p1) = (point(0), point(1));
+        let mut acc: [[S; W]; D] =
+            std::array::from_fn(|c| std::array::from_fn(|k| s[k] * p0[c] + binoms[1] * power[k] * p1[c]));
+        for (i, &b) in binoms.iter().enumerate().skip(2) {
+            let p = point(i);
+            for k in 0..W {
+                power[k] *= t[k];
+            }
+            for c in 0..D {
+                for k in 0..W {
+                    acc[c][k] = s[k] * acc[c][k] + b * power[k] * p[c];
+                }
+            }
+        }
+        for (k, o) in block_out.iter_mut().enumerate() {
+            *o = [S::ZERO; MAX_DIM];
+            for c in 0..D {
+                o[c] = acc[c][k];
+            }
+        }
+    }
+}
+
 /// 1/i rounded to `S` (Mesa's `inv_tab`), from a table for the orders GL allows.
 #[inline]
 fn reciprocal<S: Scalar>(i: usize) -> S {
@@ -286,6 +353,31 @@ mod tests {
 
     fn cubic() -> Vec<f64> {
         vec![0.0, 0.0, 1.0, 1.0, 2.0, -1.0, 3.0, 0.0]
+    }
+
+    /// Many parameters at once give `horner`'s bits at each, zero signs included: every
+    /// order to 14, every dimension (and invalid ones), short point slices, block tails, and
+    /// parameters outside [0, 1].
+    #[test]
+    fn horner_many_matches_horner_point_by_point() {
+        let ts: Vec<f32> = (0..37).map(|k| -0.4 + k as f32 * 0.05).chain([0.0, 1.0, -0.0, 2.5]).collect();
+        for dim in 0..=5 {
+            for order in 0..=14 {
+                let points: Vec<f32> = (0..order * dim.max(1)).map(|k| ((k * 37 % 23) as f32) * 0.3 - 2.5).collect();
+                for len in [0, 1, 7, 8, 9, ts.len()] {
+                    for cut in [0, 1] {
+                        let p = &points[..points.len().saturating_sub(cut)];
+                        let mut out = vec![[f32::NAN; 4]; len + 2];
+                        horner_many(p, dim, order, &ts[..len], &mut out);
+                        for (k, &t) in ts[..len].iter().enumerate() {
+                            let want = horner(p, dim, order, t).map(f32::to_bits);
+                            assert_eq!(out[k].map(f32::to_bits), want, "dim {dim} order {order} t {t}");
+                        }
+                        assert!(out[len].iter().all(|x| x.is_nan()), "wrote past the parameters");
+                    }
+                }
+            }
+        }
     }
 
     #[test]

@@ -36,6 +36,56 @@ fn seed_004_cubic_through_eval_mesh1() {
     }
 }
 
+/// GL 1.1 §5.1 defines `glEvalMesh1(GL_LINE, i1, i2)` as `glBegin(GL_LINE_STRIP)`, then
+/// `glEvalPoint1(i)` for i = i1..=i2, then `glEnd`: the two record the same vertices bit for
+/// bit, for a degree-10 vertex map with colour, normal and texture maps, on grids long enough
+/// to be split between the cores and short ones, and over a reversed domain (a range with
+/// i2 < i1 records nothing either way).
+#[test]
+fn eval_mesh1_is_the_eval_point1_loop_bit_for_bit() {
+    let curve: Vec<f32> =
+        (0..11).flat_map(|i| [i as f32 * 0.1 - 0.5, (i % 3) as f32 * 0.2, 0.3, 1.0 + i as f32 * 0.05]).collect();
+    let colors: Vec<f32> = (0..3).flat_map(|i| [0.1 * i as f32, 0.9, 0.5, 1.0]).collect();
+    let normals: Vec<f32> = (0..2).flat_map(|i| [i as f32, 1.0, 0.5]).collect();
+    let tex: Vec<f32> = (0..5).flat_map(|i| [i as f32 * 0.25, 1.0 - i as f32 * 0.2]).collect();
+    for (n, i1, i2, domain) in [(30, 0, 30, (0.0, 1.0)), (100_000, 0, 100_000, (-0.5, 2.0)), (40, 35, 3, (1.0, 0.0))] {
+        let record = |mesh: bool| {
+            let mut gl = Gl::new(8, 8);
+            gl.map1f(GL_MAP1_VERTEX_4, domain.0, domain.1, 4, 11, &curve);
+            gl.map1f(GL_MAP1_COLOR_4, 0.0, 1.0, 4, 3, &colors);
+            gl.map1f(GL_MAP1_NORMAL, 0.0, 1.0, 3, 2, &normals);
+            gl.map1f(GL_MAP1_TEXTURE_COORD_2, -1.0, 1.0, 2, 5, &tex);
+            for cap in [GL_MAP1_VERTEX_4, GL_MAP1_COLOR_4, GL_MAP1_NORMAL, GL_MAP1_TEXTURE_COORD_2] {
+                gl.enable(cap);
+            }
+            gl.map_grid1f(n, 0.0, 1.0);
+            if mesh {
+                gl.eval_mesh1(GL_LINE, i1, i2);
+            } else {
+                gl.begin(GL_LINE_STRIP);
+                for i in i1..=i2 {
+                    gl.eval_point1(i);
+                }
+                gl.end();
+            }
+            gl.frame().expanded().vertices
+        };
+        let (mesh, points) = (record(true), record(false));
+        let bits = |v: &Vertex| {
+            [v.position, v.color, v.tex_coord]
+                .concat()
+                .into_iter()
+                .chain(v.normal)
+                .map(f32::to_bits)
+                .collect::<Vec<_>>()
+        };
+        assert_eq!(mesh.len(), points.len(), "{n}");
+        for (k, (a, b)) in mesh.iter().zip(&points).enumerate() {
+            assert_eq!(bits(a), bits(b), "{n} points, vertex {k}");
+        }
+    }
+}
+
 #[test]
 fn eval_mesh1_partial_and_reversed_ranges() {
     let mut gl = Gl::new(1, 1);
