@@ -84,7 +84,17 @@ impl<'a> Columns<'a> {
         let k = slot.components();
         // Component c is the value's below k, else (0, 0, 0, 1)'s: a select per component, not
         // a copy of a run-time length.
-        let widen = |p: &Vec4<f32>| std::array::from_fn(|c| if c < k { p[c] } else if c == 3 { 1.0 } else { 0.0 });
+        let widen = |p: &Vec4<f32>| {
+            std::array::from_fn(|c| {
+                if c < k {
+                    p[c]
+                } else if c == 3 {
+                    1.0
+                } else {
+                    0.0
+                }
+            })
+        };
         match slot {
             Slot::Vertex3 | Slot::Vertex4 => self.positions.iter_mut().zip(values).for_each(|(o, p)| *o = widen(p)),
             Slot::Normal => self.normals.iter_mut().zip(values).for_each(|(o, p)| *o = [p[0], p[1], p[2]]),

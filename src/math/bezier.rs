@@ -39,29 +39,33 @@ pub fn horner<S: Scalar>(points: &[S], dim: usize, order: usize, t: S) -> Vec4<S
 /// coefficient advances as Mesa's `_math_horner_bezier_curve` advances it, C(n, i) =
 /// C(n, i−1) · (n − i + 1) · (1/i) with 1/i from a table, so that the values agree with Mesa's
 /// bit for bit and no division is left in the loop.
+///
+/// All four lanes are computed (a point's components past `D` read as zero) and the unused
+/// ones set to zero at the end: the result is built whole rather than component by component,
+/// which the caller would read back through memory at a store-forwarding stall (measured:
+/// a quarter of a `glEvalCoord1f`).
 #[inline]
 fn horner_dim<S: Scalar, const D: usize>(points: &[S], order: usize, t: S) -> Vec4<S> {
-    let mut out = [S::ZERO; MAX_DIM];
+    let point = |i: usize| -> Vec4<S> { std::array::from_fn(|c| if c < D { points[i * D + c] } else { S::ZERO }) };
     if order == 1 {
-        out[..D].copy_from_slice(&points[..D]);
-        return out;
+        return point(0);
     }
     let s = S::ONE - t;
     let n = order - 1;
     let mut binom = S::from_usize(n);
     let mut power = t;
-    for c in 0..D {
-        out[c] = s * points[c] + binom * power * points[D + c];
-    }
+    let (p0, p1) = (point(0), point(1));
+    let mut out: Vec4<S> = std::array::from_fn(|c| s * p0[c] + binom * power * p1[c]);
+    // n − i + 1 as a float counting down from n − 1 (small integers: exact).
+    let mut factor = binom;
     for i in 2..order {
-        binom = binom * S::from_usize(n - i + 1) * reciprocal::<S>(i);
+        factor -= S::ONE;
+        binom = binom * factor * reciprocal::<S>(i);
         power *= t;
-        let p = &points[i * D..(i + 1) * D];
-        for c in 0..D {
-            out[c] = s * out[c] + binom * power * p[c];
-        }
+        let p = point(i);
+        out = std::array::from_fn(|c| s * out[c] + binom * power * p[c]);
     }
-    out
+    std::array::from_fn(|c| if c < D { out[c] } else { S::ZERO })
 }
 
 /// [`horner`] at every parameter of `ts` into `out` (one value per parameter, `out` at least as
@@ -134,17 +138,8 @@ fn horner_many_dim<S: Scalar, const D: usize>(points: &[S], order: usize, ts: &[
 /// 1/i rounded to `S` (Mesa's `inv_tab`), from a table for the orders GL allows.
 #[inline]
 fn reciprocal<S: Scalar>(i: usize) -> S {
-    const TABLE: [f64; 41] = {
-        let mut t = [0.0; 41];
-        let mut i = 1;
-        while i < 41 {
-            t[i] = 1.0 / i as f64;
-            i += 1;
-        }
-        t
-    };
-    match TABLE.get(i) {
-        Some(&r) => S::from_f64(r),
+    match S::RECIPROCALS.get(i) {
+        Some(&r) => r,
         None => S::ONE / S::from_usize(i),
     }
 }

@@ -38,6 +38,9 @@ pub trait Scalar:
     fn abs(self) -> Self;
     /// Neither NaN nor infinite.
     fn is_finite(self) -> bool;
+    /// 1/i for i in 1..=40 (index 0 unused), each the correctly rounded quotient: Mesa's
+    /// `inv_tab` of its Horner evaluator (`1.0F / i`), in this type (no conversion in a loop).
+    const RECIPROCALS: [Self; 41];
     /// Converts a count or index.
     fn from_usize(v: usize) -> Self {
         Self::from_f64(v as f64)
@@ -49,6 +52,15 @@ macro_rules! impl_scalar {
         impl Scalar for $t {
             const ZERO: Self = 0.0;
             const ONE: Self = 1.0;
+            const RECIPROCALS: [Self; 41] = {
+                let mut t = [0.0; 41];
+                let mut i = 1;
+                while i < 41 {
+                    t[i] = 1.0 / i as $t;
+                    i += 1;
+                }
+                t
+            };
             #[inline]
             fn from_f64(v: f64) -> Self {
                 v as $t

@@ -54,6 +54,19 @@ pub(crate) struct ActiveMaps {
     pub tex: Option<Slot>,
 }
 
+/// GL's precedence over the enabled maps `on` (Mesa `vbo_exec_eval_update`): VERTEX_4 over
+/// VERTEX_3, the texture map with most coordinates wins, COLOR_4 and NORMAL independent; INDEX
+/// never active.
+fn active_maps(on: &[bool; Slot::COUNT]) -> ActiveMaps {
+    let pick = |slots: &[Slot]| slots.iter().copied().find(|s| on[*s as usize]);
+    ActiveMaps {
+        vertex: pick(&[Slot::Vertex4, Slot::Vertex3]),
+        color: pick(&[Slot::Color4]),
+        normal: pick(&[Slot::Normal]),
+        tex: pick(&[Slot::TexCoord4, Slot::TexCoord3, Slot::TexCoord2, Slot::TexCoord1]),
+    }
+}
+
 /// The evaluator part of a GL context.
 #[derive(Clone, Debug)]
 pub(crate) struct EvalState {
@@ -61,6 +74,9 @@ pub(crate) struct EvalState {
     pub map2: [Map; Slot::COUNT],
     enabled1: [bool; Slot::COUNT],
     enabled2: [bool; Slot::COUNT],
+    /// [`EvalState::active`] of each dimension, worked out when an enable changes (every
+    /// `glEvalCoord` asks for it).
+    active: [ActiveMaps; 2],
     pub auto_normal: bool,
     pub grid1: Grid,
     pub grid2: (Grid, Grid),
@@ -73,6 +89,7 @@ impl Default for EvalState {
             map2: Slot::ALL.map(|s| Map::initial(s, 2)),
             enabled1: [false; Slot::COUNT],
             enabled2: [false; Slot::COUNT],
+            active: [ActiveMaps::default(); 2],
             auto_normal: false,
             grid1: Grid::initial(),
             grid2: (Grid::initial(), Grid::initial()),
@@ -115,6 +132,7 @@ impl EvalState {
     pub fn restore(&mut self, a: EvalAttrib) {
         self.enabled1 = a.enabled1;
         self.enabled2 = a.enabled2;
+        self.update_active();
         self.auto_normal = a.auto_normal;
         self.grid1 = a.grid1;
         self.grid2 = a.grid2;
@@ -140,20 +158,17 @@ impl EvalState {
             Some(t) => self.enabled2[t.slot as usize] = on,
             None => return false,
         }
+        self.update_active();
         true
     }
 
-    /// GL's precedence (Mesa `vbo_exec_eval_update`): VERTEX_4 over VERTEX_3, the texture
-    /// map with most coordinates wins, COLOR_4 and NORMAL independent; INDEX never active.
+    /// The maps that feed each attribute now (see [`EvalState::active`]).
     pub fn active(&self, dims: u8) -> ActiveMaps {
-        let on = if dims == 1 { &self.enabled1 } else { &self.enabled2 };
-        let pick = |slots: &[Slot]| slots.iter().copied().find(|s| on[*s as usize]);
-        ActiveMaps {
-            vertex: pick(&[Slot::Vertex4, Slot::Vertex3]),
-            color: pick(&[Slot::Color4]),
-            normal: pick(&[Slot::Normal]),
-            tex: pick(&[Slot::TexCoord4, Slot::TexCoord3, Slot::TexCoord2, Slot::TexCoord1]),
-        }
+        self.active[usize::from(dims != 1)]
+    }
+
+    fn update_active(&mut self) {
+        self.active = [active_maps(&self.enabled1), active_maps(&self.enabled2)];
     }
 
     /// The map of a given dimension and slot.

@@ -76,9 +76,11 @@ fn tiled_triangles_cover_every_pixel_once() {
 
 proptest! {
     /// Shared edges through pixel centres or anywhere else: still exactly once (the top-left
-    /// rule), whatever the jitter of the inner grid points.
+    /// rule), whatever the jitter of the inner grid points. (Jitter up to 0.45 pixel keeps the
+    /// 4 × 3-pixel cells convex, so that their two triangles tile them: a corner is 2.4 pixels
+    /// from the opposite diagonal, and two corners close in by at most 2 · 0.45 · √2.)
     #[test]
-    fn jittered_tilings_cover_every_pixel_once(jitter in prop::collection::vec(-0.9f32..0.9, 1..9)) {
+    fn jittered_tilings_cover_every_pixel_once(jitter in prop::collection::vec(-0.45f32..0.45, 1..9)) {
         let snapped: Vec<f32> = jitter.iter().map(|j| (j * 2.0).round() / 2.0).collect();
         for offsets in [&jitter, &snapped] {
             let drawn = counts(Topology::Triangles, tiled(4, offsets));
