@@ -68,6 +68,11 @@ pub fn take_owned() -> Option<Box<Gl>> {
     OWNED.with(|o| o.borrow_mut().take())
 }
 
+/// Whether `gl` is the current context.
+pub fn is_current(gl: &Gl) -> bool {
+    std::ptr::eq(CURRENT.with(Cell::get), gl)
+}
+
 /// Whether a context is current.
 pub fn has_current() -> bool {
     !CURRENT.with(Cell::get).is_null()

@@ -3,7 +3,12 @@
 # capi/glevalcc, each rendered with --png and compared with the picture real Mesa rendered from
 # the same source (tests/reference/pictures/png/), with the project's image metric.
 #
-#   capi/tests/pictures.sh [OUT_DIR]     (default target/capi/pictures)
+#   capi/tests/pictures.sh [--osmesa] [OUT_DIR]     (default target/capi/pictures[-osmesa])
+#
+# With --osmesa each program is built with the reference's own GLUT stand-in over OSMesa
+# (tests/reference/pictures/glut_osmesa.c, the harness Mesa's pictures come from: an OSMesa
+# buffer, glFinish, its own PNG writer) instead of gleval's GLUT: the whole harness unchanged
+# on gleval's OSMesa.
 #
 # Builds libgleval_c and gleval-compare with the test profile (what `cargo test` builds its
 # dependencies with, so CI compiles no dependency twice; set CAPI_PROFILE=release for a release
@@ -12,7 +17,14 @@
 set -eu
 root=$(cd "$(dirname "$0")/../.." && pwd)
 pictures="$root/tests/reference/pictures"
-out=${1:-$root/target/capi/pictures}
+harness=""
+suffix=""
+if [ "${1:-}" = --osmesa ]; then
+  harness="$pictures/glut_osmesa.c -lz"
+  suffix=-osmesa
+  shift
+fi
+out=${1:-$root/target/capi/pictures$suffix}
 profile=${CAPI_PROFILE:-test}
 dir=debug
 [ "$profile" = release ] && dir=release
@@ -27,13 +39,14 @@ for src in "$pictures"/*.c; do
   lower=$(echo "$name" | tr 'A-Z' 'a-z')
   # -I the program's folder: its "gl.h" includes <GL/gl.h> and <GL/glu.h> (gleval's, first on
   # the path) and "glut_osmesa.h", whose GLUT declarations libgleval_c implements.
-  if ! "$root/capi/glevalcc" -std=gnu99 -O1 -w -I"$pictures" -o "$out/$lower" "$src" -lm; then
+  # shellcheck disable=SC2086 # $harness is two words or none
+  if ! "$root/capi/glevalcc" -std=gnu99 -O1 -w -I"$pictures" -o "$out/$lower" "$src" $harness -lm; then
     echo "$lower: does not build"; failed=1; continue
   fi
   if ! "$out/$lower" --png "$out/$lower.png" 2>"$out/$lower.log"; then
     echo "$lower: failed to run (see $out/$lower.log)"; failed=1; continue
   fi
-  printf '%s: ' "$lower"
+  printf '%s%s: ' "$lower" "$suffix"
   "$GLEVAL_LIB_DIR/gleval-compare" "$pictures/png/$lower.png" "$out/$lower.png" 0.01 || failed=1
 done
 exit $failed

@@ -480,7 +480,9 @@ impl Gl {
         }
     }
 
-    pub(crate) fn inside_begin_end(&self) -> bool {
+    /// Whether a `begin` is open (no `end` yet): where GL forbids most calls.
+    #[must_use]
+    pub fn inside_begin_end(&self) -> bool {
         self.open_primitive.is_some()
     }
 

@@ -1,7 +1,8 @@
 /* GL/osmesa.h for gleval: OSMesa's context calls, so that programs written for off-screen
  * Mesa run on gleval. A context is a gleval GL context made current on the calling thread;
- * gleval does not rasterise into the caller's buffer (read back with feedback mode). Written
- * for gleval; the format values are OSMesa's. */
+ * what it draws lands in the caller's buffer at glFinish, glFlush and glReadPixels (drawn by
+ * gleval's CPU rasteriser; GL_UNSIGNED_BYTE buffers in the RGBA, BGRA, ARGB, RGB and BGR
+ * formats, first row at the bottom). Written for gleval; the format values are OSMesa's. */
 #ifndef GLEVAL_OSMESA_H
 #define GLEVAL_OSMESA_H
 #include <GL/gl.h>

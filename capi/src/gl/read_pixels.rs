@@ -43,11 +43,19 @@ entry! {
     unsafe fn glReadPixels(
         x: GLint, y: GLint, width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum, pixels: *mut c_void,
     ) {
+        // An OSMesa context reads its buffer, brought up to date first (outside `with_gl`: the
+        // flush takes the context's frame).
+        let open: GLboolean = with_gl(|gl| gl.inside_begin_end().into());
+        let osmesa = if open != 0 { None } else { crate::osmesa::flush_current() };
         with_gl(|gl| {
             let len = gl.packed_image_len(width, height, format, type_).unwrap_or(0);
             let out = unsafe { array_mut(pixels.cast::<u8>(), len) };
             let (w, h) = (gl.width(), gl.height());
-            gl.read_pixels((x, y), (width, height), format, type_, |frame| draw(frame, w, h), out)
+            let draw = |frame: &Frame| match &osmesa {
+                Some(image) => Some(image.pixels.clone()),
+                None => draw(frame, w, h),
+            };
+            gl.read_pixels((x, y), (width, height), format, type_, draw, out)
         })
     }
 }

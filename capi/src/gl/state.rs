@@ -5,13 +5,41 @@ use crate::memory::array_mut;
 use crate::strings::static_c_string;
 use gleval::gl::types::*;
 
+/// `glFlush`/`glFinish`: `Gl`'s checks, then, with an OSMesa context current, what was drawn
+/// lands in its buffer (not between `glBegin` and `glEnd`, where the call is an error).
+fn flush(finish: bool) {
+    let open: GLboolean = with_gl(|gl| {
+        if finish {
+            gl.finish();
+        } else {
+            gl.flush();
+        }
+        gl.inside_begin_end().into()
+    });
+    if open == 0 {
+        crate::osmesa::flush_current();
+    }
+}
+
+entry! {
+    /// `glFlush`: `Gl::flush`, and an OSMesa context's buffer brought up to date.
+    fn glFlush() {
+        flush(false)
+    }
+}
+
+entry! {
+    /// `glFinish`: `Gl::finish`, and an OSMesa context's buffer brought up to date.
+    fn glFinish() {
+        flush(true)
+    }
+}
+
 forward! {
     glEnable(cap: GLenum) => enable;
     glDisable(cap: GLenum) => disable;
     glIsEnabled(cap: GLenum) -> GLboolean => is_enabled;
     glGetError() -> GLenum => get_error;
-    glFlush() => flush;
-    glFinish() => finish;
     glViewport(x: GLint, y: GLint, width: GLsizei, height: GLsizei) => viewport;
     glDepthRange(near: GLclampd, far: GLclampd) => depth_range;
     glClear(mask: GLbitfield) => clear;

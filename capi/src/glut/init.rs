@@ -25,8 +25,8 @@ thread_local! {
 }
 
 /// gleval's options and whether each takes a value (`App` parses them: `Options::from_args`).
-const OPTIONS: [(&str, bool); 5] =
-    [("--png", true), ("--time", true), ("--frames", true), ("--gpu", false), ("--profile", false)];
+const OPTIONS: [(&str, bool); 6] =
+    [("--png", true), ("--time", true), ("--frames", true), ("--gpu", false), ("--wgpu", false), ("--profile", false)];
 
 /// How many of `args` (from the first) are one gleval option with its value; 0 if the first
 /// is not one.
@@ -61,8 +61,8 @@ fn split_options(args: Vec<String>) -> (Vec<String>, Vec<bool>) {
 }
 
 entry! {
-    /// `glutInit(&argc, argv)`: takes `--png PATH`, `--time N`, `--frames N`, `--gpu` and
-    /// `--profile` out of `argv` (as GLUT takes its own options) and keeps them for the main
+    /// `glutInit(&argc, argv)`: takes `--png PATH`, `--time N`, `--frames N`, `--gpu`, `--wgpu`
+    /// and `--profile` out of `argv` (as GLUT takes its own options) and keeps them for the main
     /// loop.
     unsafe fn glutInit(argcp: *mut c_int, argv: *mut *mut c_char) {
         let (Some(argc), false) = (unsafe { argcp.as_mut() }, argv.is_null()) else { return };

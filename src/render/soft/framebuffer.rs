@@ -60,6 +60,11 @@ impl Framebuffer {
         let pixels = self.color.into_iter().flatten().collect();
         Image { width: self.width, height: self.height, pixels }
     }
+
+    /// A copy of the colour buffer as an [`Image`].
+    pub fn image(&self) -> Image {
+        Image { width: self.width, height: self.height, pixels: self.color.iter().flatten().copied().collect() }
+    }
 }
 
 /// A float colour component in an 8-bit normalised buffer: clamped, rounded to nearest.

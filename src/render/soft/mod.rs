@@ -40,15 +40,45 @@ pub fn render_frame(frame: &Frame, width: u32, height: u32) -> Image {
 /// ([`Op::GpuMesh`], the GPU tessellator's) are skipped: assemble with [`assemble`].
 #[must_use]
 pub fn rasterize(list: &DrawList, width: u32, height: u32) -> Image {
-    let mut fb = Framebuffer::new(width.max(1), height.max(1));
-    for op in &list.ops {
-        match op {
-            Op::Clear { color, depth } => fb.clear(*color, *depth),
-            Op::Draw(batch) => draw_batch(&mut fb, list, batch),
-            Op::GpuMesh { .. } => {}
+    let mut canvas = Canvas::new(width, height);
+    canvas.draw(list);
+    canvas.fb.into_image()
+}
+
+/// A colour and depth buffer that keeps what was drawn: frames drawn one after another land on
+/// top of each other, as they do in a GL context's framebuffer (an OSMesa buffer, say).
+pub struct Canvas {
+    fb: Framebuffer,
+}
+
+impl Canvas {
+    /// A `width` × `height` canvas (at least 1 × 1), transparent black, depth 1.
+    #[must_use]
+    pub fn new(width: u32, height: u32) -> Self {
+        Self { fb: Framebuffer::new(width.max(1), height.max(1)) }
+    }
+
+    /// Draws an assembled list over what the canvas holds (see [`rasterize`]).
+    pub fn draw(&mut self, list: &DrawList) {
+        for op in &list.ops {
+            match op {
+                Op::Clear { color, depth } => self.fb.clear(*color, *depth),
+                Op::Draw(batch) => draw_batch(&mut self.fb, list, batch),
+                Op::GpuMesh { .. } => {}
+            }
         }
     }
-    fb.into_image()
+
+    /// Draws a recorded frame over what the canvas holds, its meshes evaluated on the CPU.
+    pub fn draw_frame(&mut self, frame: &Frame) {
+        self.draw(&assemble(frame));
+    }
+
+    /// What the canvas holds.
+    #[must_use]
+    pub fn image(&self) -> Image {
+        self.fb.image()
+    }
 }
 
 fn draw_batch(fb: &mut Framebuffer, list: &DrawList, batch: &Batch) {
