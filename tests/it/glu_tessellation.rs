@@ -280,8 +280,9 @@ fn trimmed_primitives(step: f32, hole: &[[f32; 2]], unused_color: bool) -> Vec<(
     out
 }
 
-/// Trimmed tessellation, checked against independent truths: every vertex on the rational
-/// surface (f64 oracle), every triangle counter-clockwise in (u, v) and outside the hole, and
+/// Trimmed tessellation (GLU's fans and quad strips), checked against independent truths:
+/// every vertex on the rational surface (f64 oracle), every triangle counter-clockwise in
+/// (u, v) and outside the hole, and
 /// the triangles' (u, v) area equal to the domain's minus the hole's (shoelace). The fast and
 /// the general callback paths issue the same primitives.
 #[test]
@@ -327,6 +328,10 @@ fn trimmed_tessellation_covers_the_retained_region_on_the_surface() {
                 GL_TRIANGLES => {
                     assert_eq!(v.len() % 3, 0);
                     triangles.extend(v.chunks_exact(3).map(|t| [t[0], t[1], t[2]]));
+                }
+                GL_TRIANGLE_FAN => {
+                    assert!(v.len() >= 3);
+                    triangles.extend(v[1..].windows(2).map(|w| [v[0], w[0], w[1]]));
                 }
                 GL_QUAD_STRIP => {
                     assert!(v.len() >= 4 && v.len() % 2 == 0);

@@ -92,6 +92,10 @@ fn points(pieces: &[Piece]) -> usize {
     pieces.iter().fold(0usize, |sum, piece| {
         let n = match piece {
             Piece::Fan(p) | Piece::QuadStrip(p) | Piece::Line(p) => p.len(),
+            Piece::Block { u, v, .. } => {
+                let cells = (u.1 - u.0 + 1).max(0).saturating_mul((v.1 - v.0 + 1).max(0));
+                2usize.saturating_mul(usize::try_from(cells).unwrap_or(usize::MAX))
+            }
             Piece::Grid(g) => 2usize.saturating_mul(g.nu.saturating_add(1)).saturating_mul(g.nv.saturating_add(1)),
         };
         sum.saturating_add(n)

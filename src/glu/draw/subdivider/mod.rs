@@ -15,6 +15,7 @@ mod arcs;
 mod mono;
 mod monotone;
 mod region;
+mod sample;
 mod sorter;
 mod split;
 mod turns;

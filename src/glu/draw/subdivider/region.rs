@@ -1,12 +1,16 @@
 //! One loop left by the subdivision, sliced (`Slicer::slice_new`, `internals/slicer.cc`): a
 //! rectangle goes the way of an untrimmed patch ([`slice_rect`]), a loop with no inner grid
-//! line across it by GLU's monotone triangulation ([`mono`]); the rest are not written yet
-//! (GLU's `sampleMonoPoly`), and give `None`.
+//! line across it by GLU's monotone triangulation ([`mono`]), the rest by GLU's
+//! `sampleMonoPoly` ([`super::sample`]); `None` where that takes a way not written here.
 
 use super::arcs::{ArcId, Arcs};
 use super::mono;
+use super::monotone::area;
+use super::sample::{sample_mono_poly, Poly};
 use crate::glu::draw::slicer::border::RectLoop;
+use crate::glu::draw::slicer::Grid;
 use crate::glu::draw::slicer::{c_int, slice_rect, Interior, Piece};
+use crate::glu::evaluation::sampling::MAX_SEGMENTS;
 
 /// GLU's `ZERO` (`slicer.cc`): how far a rectangle's sides may be from straight.
 const ZERO: f64 = 0.00001;
@@ -30,7 +34,38 @@ pub(super) fn slice(arcs: &Arcs, lp: &[ArcId], interior: Interior) -> Option<Vec
     } else if (thin && ulinear) || (!ulinear && !vlinear && ulines == 2 && vlines > 2) {
         Some(mono::triangulate_loop(arcs, lp))
     } else {
-        None // GLU's sampleMonoPoly
+        sampled(arcs, lp, (ulines, vlines), [umin, umax, vmin, vmax], (ulinear, vlinear))
+    }
+}
+
+/// GLU's `sampleMonoPoly` on the loop, then its stream of fans (`Slicer::evalStream`) and its
+/// blocks of quads (`Slicer::evalRBArray`), or `None` where the sampling takes a way not
+/// written here.
+fn sampled(arcs: &Arcs, lp: &[ArcId], lines: (i64, i64), bbox: [f32; 4], linear: (bool, bool)) -> Option<Vec<Piece>> {
+    let n = |x: i64| usize::try_from(x).ok().filter(|&x| (2..=MAX_SEGMENTS).contains(&x));
+    let (nu, nv) = (n(lines.0)?, n(lines.1)?);
+    let poly = Poly { lines: lp.iter().flat_map(|&a| dlines(&arcs[a].pts)).collect() };
+    let out = sample_mono_poly(&poly, (nu, nv), bbox, linear)?;
+    let grid = Grid { u: (bbox[0], bbox[1]), nu: nu - 1, v: (bbox[3], bbox[2]), nv: nv - 1 };
+    let mut pieces = out.pieces;
+    let top = nv as i64 - 1;
+    for b in &out.blocks {
+        for (k, i) in (b.low + 1..=b.up).rev().enumerate() {
+            let (l, r) = (b.left[k + 1], b.right[k + 1]);
+            pieces.push(Piece::Block { grid, u: (l, r), v: (top - i, top - i + 1) });
+        }
+    }
+    Some(pieces)
+}
+
+/// GLU `arcToMultDLines` (`slicer.cc`): a straight arc as one line, any other as one line
+/// per segment.
+fn dlines(pts: &[[f32; 2]]) -> Vec<Vec<[f32; 2]>> {
+    let straight = pts.len() <= 2 || area(pts[0], pts[1], pts[pts.len() - 1]) == 0.0;
+    if straight {
+        vec![pts.to_vec()]
+    } else {
+        pts.windows(2).map(|w| w.to_vec()).collect()
     }
 }
 
