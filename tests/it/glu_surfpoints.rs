@@ -341,17 +341,8 @@ fn differences() -> Vec<String> {
     out
 }
 
-/// Trimmed cases with a NURBS trim curve: GLU samples those on their Bezier arcs
-/// (`ArcTessellator::tessellateNonlinear`, `internals/arctess.cc`), which gleval does not
-/// reproduce yet; it falls back to its own triangulation for them. The test fails when one of
-/// them starts to match (take it off the list) or another case differs.
-const NOT_YET_GLUS: [&str; 2] = ["surface hillredbook_domain_distance_6", "surface hillredbook_path_length_25"];
-
 #[test]
 fn tessellator_output_is_glus_line_for_line() {
     let diffs = differences();
-    let (known, unexpected): (Vec<&String>, Vec<&String>) =
-        diffs.iter().partition(|d| NOT_YET_GLUS.iter().any(|k| d.starts_with(&format!("{k}:"))));
-    assert!(unexpected.is_empty(), "{}", unexpected.iter().map(|s| s.as_str()).collect::<Vec<_>>().join("\n"));
-    assert_eq!(known.len(), NOT_YET_GLUS.len(), "a case of NOT_YET_GLUS now matches GLU: take it off the list");
+    assert!(diffs.is_empty(), "{}", diffs.join("\n"));
 }

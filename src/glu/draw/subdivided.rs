@@ -3,14 +3,18 @@
 //! patch by patch as untrimmed ones are ([`super::sliced`]).
 
 use super::sliced::{rect_steps, sampling_matrix, SlicedPatch};
-use super::subdivider::{subdivide, Failure, Setup};
+use super::subdivider::arctess::{BezierArc, MAX_ORDER};
+use super::subdivider::{subdivide, Failure, Setup, TrimArc};
 use crate::glu::consts::*;
+use crate::glu::evaluation::patch_steps::DirectionSteps;
+use crate::glu::evaluation::pieces::CurvePieces;
 use crate::glu::evaluation::surface::{PatchGrid, Surface};
+use crate::glu::model::maps::CurveMap;
 use crate::glu::model::maps::TrimPiece;
 use crate::glu::model::object::NurbsObject;
 
 /// GLU's pieces for the surface trimmed by `loops`, or why not: `Failure::Unsupported` for
-/// NURBS trim curves, `GLU_OUTLINE_PATCH` and regions this port does not slice as GLU yet.
+/// `GLU_OUTLINE_PATCH` and regions this port does not slice as GLU yet.
 pub(crate) fn slice_trimmed(
     obj: &NurbsObject,
     surface: &Surface,
@@ -19,17 +23,14 @@ pub(crate) fn slice_trimmed(
     if obj.props.display_mode == GLU_OUTLINE_PATCH {
         return Err(Failure::Unsupported);
     }
-    let pwl = pwl_loops(loops).ok_or(Failure::Unsupported)?;
+    let arcs = trim_arcs(loops).ok_or(Failure::Unsupported)?;
     let matrix = sampling_matrix(obj);
     let steps = |su: (f32, f32), sv: (f32, f32)| rect_steps(obj, &matrix, surface, su, sv);
     let p = &surface.pos.patches;
-    let setup = Setup {
-        ubreaks: breaks(&p.uintervals),
-        vbreaks: breaks(&p.vintervals),
-        steps: &steps,
-        linear: (p.uorder == 2, p.vorder == 2),
-    };
-    let patches = subdivide(&pwl, &setup)?;
+    let (ubreaks, vbreaks) = (breaks(&p.uintervals), breaks(&p.vintervals));
+    let geo_step = find_rate(&ubreaks, &vbreaks, &steps);
+    let setup = Setup { geo_step, ubreaks, vbreaks, steps: &steps, linear: (p.uorder == 2, p.vorder == 2) };
+    let patches = subdivide(&arcs, &setup)?;
     let wide = |r: (f32, f32)| (f64::from(r.0), f64::from(r.1));
     Ok(patches
         .into_iter()
@@ -44,19 +45,61 @@ fn breaks(intervals: &[(f64, f64)]) -> Vec<f32> {
     out
 }
 
-/// The loops' pwl curves in `f32`, with GLU's `ELIMINATE_REDUNDANT_POINTS` (`reader.cc`): a
-/// point within 1e-5 in u and v of the one kept before it is dropped. `None` if a loop has a
-/// NURBS trim curve.
-fn pwl_loops(loops: &[Vec<TrimPiece>]) -> Option<Vec<Vec<Vec<[f32; 2]>>>> {
-    loops
-        .iter()
-        .map(|lp| {
-            lp.iter()
-                .map(|piece| match piece {
-                    TrimPiece::Pwl(points) => Some(without_repeats(points)),
-                    TrimPiece::Curve(_) => None,
-                })
-                .collect()
+/// GLU `Quilt::findRates` (with `findSampleRates`): in each direction the smallest of 0.4 ×
+/// the domain's length and every patch's interior step over its length (at most 1); the
+/// smaller of the two is the rate NURBS trim curves are sampled at.
+fn find_rate(ub: &[f32], vb: &[f32], steps: &dyn Fn((f32, f32), (f32, f32)) -> [DirectionSteps; 2]) -> f32 {
+    let whole = |b: &[f32]| 0.4 * (b[b.len() - 1] - b[0]);
+    let (mut r0, mut r1) = (whole(ub), whole(vb));
+    for u in ub.windows(2) {
+        for v in vb.windows(2) {
+            let [s, t] = steps((u[0], u[1]), (v[0], v[1]));
+            let edge = |a: f32, b: f32| f64::from(b - a).abs().min(1.0) as f32;
+            let (es, et) = (edge(u[0], u[1]), edge(v[0], v[1]));
+            if s.step / es < r0 {
+                r0 = s.step / es;
+            }
+            if t.step / et < r1 {
+                r1 = t.step / et;
+            }
+        }
+    }
+    if r0 < r1 {
+        r0
+    } else {
+        r1
+    }
+}
+
+/// The loops' curves in `f32`: pwl curves with GLU's `ELIMINATE_REDUNDANT_POINTS`
+/// (`reader.cc`: a point within 1e-5 in u and v of the one kept before it is dropped), NURBS
+/// trim curves as their Bezier arcs. `None` for an arc of more than GLU's 8 points.
+fn trim_arcs(loops: &[Vec<TrimPiece>]) -> Option<Vec<Vec<TrimArc>>> {
+    let mut out = Vec::with_capacity(loops.len());
+    for lp in loops {
+        let mut arcs = Vec::new();
+        for piece in lp {
+            match piece {
+                TrimPiece::Pwl(points) => arcs.push(TrimArc::Pwl(without_repeats(points))),
+                TrimPiece::Curve(map) => arcs.extend(bezier_arcs(map)?),
+            }
+        }
+        out.push(arcs);
+    }
+    Some(out)
+}
+
+/// A NURBS trim curve's Bezier arcs (GLU `Quilt::toBezier`; gleval inserts knots in `f64`).
+fn bezier_arcs(map: &CurveMap) -> Option<Vec<TrimArc>> {
+    let c = CurvePieces::new(map)?;
+    let (dim, order) = (c.pieces.dim, c.pieces.order);
+    if order > MAX_ORDER || !(2..=3).contains(&dim) {
+        return None;
+    }
+    (0..c.pieces.intervals.len())
+        .map(|i| {
+            let cpts = c.pieces.piece(i)?.iter().map(|&x| x as f32).collect();
+            Some(TrimArc::Bezier(BezierArc { cpts, dim, order }))
         })
         .collect()
 }

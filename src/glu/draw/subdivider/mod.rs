@@ -12,6 +12,7 @@
 //! reports [`Failure::Unsupported`] and the caller falls back to gleval's own triangulation.
 
 mod arcs;
+pub(crate) mod arctess;
 mod mono;
 mod monotone;
 mod region;
@@ -22,7 +23,7 @@ mod turns;
 
 use crate::glu::draw::slicer::{Interior, Piece};
 use crate::glu::evaluation::patch_steps::DirectionSteps;
-use arcs::{Arcs, Bin, Side};
+use arcs::{ArcId, Arcs, Bin, Side};
 
 /// GLU's `mylongjmp(jumpbuffer, n)`: the subdivision stops with NURBS error `n`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -43,8 +44,17 @@ impl From<Jump> for Failure {
     }
 }
 
+/// One curve of a trim loop: a `gluPwlCurve` polyline or a Bezier arc of a NURBS trim curve.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) enum TrimArc {
+    Pwl(Vec<[f32; 2]>),
+    Bezier(arctess::BezierArc),
+}
+
 /// What the subdivision needs of the surface.
 pub(crate) struct Setup<'a> {
+    /// The rate NURBS trim curves are sampled at (GLU's `Quilt::findRates`, the smaller).
+    pub geo_step: f32,
     /// The distinct knots in u and v, increasing (GLU `Quilt::getRange`'s breakpoint lists).
     pub ubreaks: Vec<f32>,
     pub vbreaks: Vec<f32>,
@@ -77,9 +87,9 @@ pub(crate) struct Subdivider<'a> {
     unsupported: bool,
 }
 
-/// GLU's tessellation of the domain trimmed by `loops` (each a list of pwl polylines in
-/// (u, v), joined end to end), patch by patch.
-pub(crate) fn subdivide(loops: &[Vec<Vec<[f32; 2]>>], setup: &Setup) -> Result<Vec<PatchPieces>, Failure> {
+/// GLU's tessellation of the domain trimmed by `loops` (each a list of curves in (u, v),
+/// joined end to end), patch by patch.
+pub(crate) fn subdivide(loops: &[Vec<TrimArc>], setup: &Setup) -> Result<Vec<PatchPieces>, Failure> {
     let interior = Interior { du: 0.0, dv: 0.0, ulinear: setup.linear.0, vlinear: setup.linear.1 };
     let mut s = Subdivider {
         arcs: Arcs::default(),
@@ -92,7 +102,7 @@ pub(crate) fn subdivide(loops: &[Vec<Vec<[f32; 2]>>], setup: &Setup) -> Result<V
         patches: Vec::new(),
         unsupported: false,
     };
-    let mut bin = s.initial_bin(loops);
+    let mut bin = s.initial_bin(loops)?;
     s.split_in_s(&mut bin, 0, setup.ubreaks.len())?;
     if s.unsupported {
         return Err(Failure::Unsupported);
@@ -101,22 +111,59 @@ pub(crate) fn subdivide(loops: &[Vec<Vec<[f32; 2]>>], setup: &Setup) -> Result<V
 }
 
 impl Subdivider<'_> {
-    /// The user's loops as arcs (GLU `addArc` per pwl curve, each at the bin's head and after
-    /// the last in its loop), made monotone (`Subdivider::decompose`).
-    fn initial_bin(&mut self, loops: &[Vec<Vec<[f32; 2]>>]) -> Bin {
+    /// The user's loops as arcs (GLU `addArc` per pwl curve and per Bezier arc of a NURBS
+    /// curve, each at the bin's head and after the last in its loop), the Bezier arcs sampled
+    /// and joined to their neighbours, then all made monotone (`Subdivider::decompose`).
+    fn initial_bin(&mut self, loops: &[Vec<TrimArc>]) -> Result<Bin, Jump> {
         let mut bin = Bin::default();
+        let mut curves = Vec::new();
         for lp in loops {
             let mut last = None;
-            for pts in lp.iter().filter(|p| !p.is_empty()) {
-                let id = self.arcs.add(pts.clone(), Side::None, false);
+            for arc in lp {
+                let pts = match arc {
+                    TrimArc::Pwl(p) if p.is_empty() => continue,
+                    TrimArc::Pwl(p) => p.clone(),
+                    TrimArc::Bezier(_) => Vec::new(),
+                };
+                let id = self.arcs.add(pts, Side::None, false);
+                if let TrimArc::Bezier(b) = arc {
+                    curves.push((id, b));
+                }
                 bin.add(id);
                 last = Some(self.arcs.append(id, last));
             }
         }
         for j in bin.arcs() {
+            if let Some((_, b)) = curves.iter().find(|(id, _)| *id == j) {
+                self.arcs[j].pts = arctess::tessellate(b, self.setup.geo_step);
+                let next = self.arcs[j].next;
+                if self.disconnected(j) || self.disconnected(next) {
+                    return Err(Jump(31));
+                }
+            }
+        }
+        for j in bin.arcs() {
             self.monotonize(j, &mut bin);
         }
-        bin
+        Ok(bin)
+    }
+
+    /// GLU `Arc::isDisconnected`: the arc's start more than 1e-5 from the previous arc's end
+    /// (both sampled); otherwise both are moved to their average.
+    fn disconnected(&mut self, j: ArcId) -> bool {
+        let prev = self.arcs[j].prev;
+        if self.arcs[j].pts.is_empty() || self.arcs[prev].pts.is_empty() {
+            return false;
+        }
+        let (p0, p1) = (self.arcs.tail(j), self.arcs.rhead(prev));
+        let far = |a: f32, b: f32| f64::from(a - b) > 0.00001 || f64::from(b - a) > 0.00001;
+        if far(p0[0], p1[0]) || far(p0[1], p1[1]) {
+            return true;
+        }
+        let mid = [(p1[0] + p0[0]) * 0.5, (p1[1] + p0[1]) * 0.5];
+        self.arcs[j].pts[0] = mid;
+        *self.arcs[prev].pts.last_mut().expect("points") = mid;
+        false
     }
 
     /// GLU `Subdivider::splitInS`: the bin cut along the u knots `breaks[start..end]`, the
