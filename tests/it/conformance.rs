@@ -82,13 +82,6 @@ const THRESHOLD: f64 = 0.002;
 /// points of 3 × 3 pixels are allowed on top of the threshold.
 const LEAKED_NORMAL_POINTS: f64 = 2.0 * 16.0 * 9.0;
 
-/// Trimmed NURBS are tessellated by our own constrained Delaunay triangulation and grid, not
-/// by GLU's slicer (spec 2.7; untrimmed surfaces follow GLU's slicer exactly): the same
-/// surface, sampled to the same tolerance, but with other triangles in the band along the trim
-/// curves and grid lines placed slightly differently. Gouraud shading across those triangles
-/// then differs by a few pixels along edges and highlights: measured 0.71%, allowed up to 1%.
-const OWN_TESSELLATION: f64 = 0.01;
-
 /// The GPU tessellator's picture may differ from the CPU tessellator's only where f32 rounding
 /// on another processor moves an edge pixel or a lighting value across the metric's tolerance.
 const GPU_VS_CPU: f64 = 0.0005;
@@ -166,7 +159,8 @@ fn bsurf_matches_mesa() {
 
 #[test]
 fn trimmed_matches_glu() {
-    check_with("trimmed", trimmed::app, |_| OWN_TESSELLATION);
+    // GLU's own tessellation of the trimmed surface (subdivision, trim curves, slicer).
+    check("trimmed", trimmed::app, 0.0);
 }
 
 #[test]

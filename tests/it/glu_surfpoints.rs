@@ -1,7 +1,8 @@
 //! GLU's tessellation, primitive for primitive: the cases of
 //! `tests/reference/glu/surfpoints.c`, which prints what real GLU hands to the
 //! `GLU_NURBS_TESSELLATOR` callbacks (`glBegin(...)`, `glNormal3f`, `glVertex3f`, `glEnd()`, 3
-//! decimals, as the Red Book's surfpoints.c), run through gleval and printed the same way. The
+//! decimals, as the Red Book's surfpoints.c), run through gleval and printed the same way:
+//! untrimmed and trimmed surfaces, outlines and curves. The
 //! text must be identical, case by case (curves up to the sign of zero, see
 //! [`without_negative_zero`]; many-patch outlines up to the order of each patch's sides, see
 //! [`sorted_strips`]).
@@ -137,6 +138,10 @@ fn surface_case(name: &str) -> (&str, u32, f32, f32, bool) {
         "hill_path_length_12",
         "hill_domain_distance_9",
         "sheet_domain_distance_3",
+        "hillhole_path_length_120",
+        "hillhole_domain_distance_3",
+        "hillredbook_domain_distance_6",
+        "sheethole_domain_distance_3",
     ];
     let normals = !without.contains(&name) && name != "sheet_path_length_12";
     (shape, m, tolerance, step, normals)
@@ -162,6 +167,7 @@ fn run_surface(name: &str, display_mode: u32) -> String {
     gl.glu_nurbs_property(n, GLU_DISPLAY_MODE, display_mode as f32);
     view(&mut gl);
     gl.glu_begin_surface(n);
+    let (shape, trim) = split_trim(shape);
     match shape {
         "hill" => gl.glu_nurbs_surface(n, 8, &BEZIER_KNOTS, 8, &BEZIER_KNOTS, 12, 3, &hill(), 4, 4, GL_MAP2_VERTEX_3),
         "sheet" => {
@@ -178,10 +184,83 @@ fn run_surface(name: &str, display_mode: u32) -> String {
         }
         other => panic!("unknown shape {other}"),
     }
+    trims(&mut gl, n, shape, trim);
     gl.glu_end_surface(n);
     gl.glu_delete_nurbs_renderer(n);
     let text = out.borrow().clone();
     text
+}
+
+/// "hillhole" -> ("hill", "hole"): the surface and its trim loops.
+fn split_trim(shape: &str) -> (&str, &str) {
+    ["hill", "sheet", "cylinder", "twist"]
+        .into_iter()
+        .find_map(|s| shape.strip_prefix(s).map(|trim| (s, trim)))
+        .expect("known shape")
+}
+
+fn pwl_loop(gl: &mut Gl, n: GLUnurbs, pts: &[[f32; 2]]) {
+    gl.glu_begin_trim(n);
+    gl.glu_pwl_curve(n, pts.len() as i32, pts.as_flattened(), 2, GLU_MAP1_TRIM_2);
+    gl.glu_end_trim(n);
+}
+
+/// The domain's border, counter-clockwise, from (a, a) to (b, b).
+fn border(gl: &mut Gl, n: GLUnurbs, a: f32, b: f32) {
+    pwl_loop(gl, n, &[[a, a], [b, a], [b, b], [a, b], [a, a]]);
+}
+
+/// A clockwise square hole [a, b] × [c, d].
+fn hole(gl: &mut Gl, n: GLUnurbs, (a, b): (f32, f32), (c, d): (f32, f32)) {
+    pwl_loop(gl, n, &[[a, c], [a, d], [b, d], [b, c], [a, c]]);
+}
+
+/// The trim loops of surfpoints.c's `trims` (and the sheet's hole).
+fn trims(gl: &mut Gl, n: GLUnurbs, shape: &str, trim: &str) {
+    match (shape, trim) {
+        (_, "") => {}
+        ("sheet", "hole") => {
+            border(gl, n, 3.0, 10.0);
+            hole(gl, n, (4.5, 8.2), (5.3, 7.5));
+        }
+        (_, "hole") => {
+            border(gl, n, 0.0, 1.0);
+            hole(gl, n, (0.25, 0.75), (0.25, 0.75));
+        }
+        (_, "island") => {
+            border(gl, n, 0.0, 1.0);
+            hole(gl, n, (0.2, 0.8), (0.2, 0.8));
+            border(gl, n, 0.4, 0.6);
+        }
+        (_, "notch") => {
+            let notch = [
+                [0.0, 0.0],
+                [0.3, 0.0],
+                [0.3, 0.4],
+                [0.7, 0.4],
+                [0.7, 0.0],
+                [1.0, 0.0],
+                [1.0, 1.0],
+                [0.0, 1.0],
+                [0.0, 0.0],
+            ];
+            pwl_loop(gl, n, &notch);
+        }
+        (_, "diamond") => {
+            border(gl, n, 0.0, 1.0);
+            pwl_loop(gl, n, &[[0.5, 0.2], [0.2, 0.5], [0.5, 0.8], [0.8, 0.5], [0.5, 0.2]]);
+        }
+        (_, "redbook") => {
+            // The Red Book's trim.c: a hole of a cubic NURBS arc and a pwl arc.
+            border(gl, n, 0.0, 1.0);
+            let curve = [0.25, 0.5, 0.25, 0.75, 0.75, 0.75, 0.75, 0.5];
+            gl.glu_begin_trim(n);
+            gl.glu_nurbs_curve(n, 8, &BEZIER_KNOTS, 2, &curve, 4, GLU_MAP1_TRIM_2);
+            gl.glu_pwl_curve(n, 3, &[0.75, 0.5, 0.5, 0.25, 0.25, 0.5], 2, GLU_MAP1_TRIM_2);
+            gl.glu_end_trim(n);
+        }
+        other => panic!("unknown trim {other:?}"),
+    }
 }
 
 fn run_curve(name: &str) -> String {

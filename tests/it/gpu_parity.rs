@@ -441,42 +441,46 @@ fn trimmed_nurbs(tessellator: Tessellator) -> Gl {
     gl
 }
 
-/// GLU's trimmed surfaces on the GPU tessellator: the triangulation's (u, v) points are
-/// evaluated per Bezier piece on the GPU, and the triangles drawn are the CPU tessellator's
-/// triangles, vertex for vertex (positions within 2e-5 of the net's size, normals within 2e-3).
+/// GLU's trimmed surfaces on the GPU tessellator: GLU draws the blocks of its grid inside the
+/// trimmed regions with `glEvalMesh2` (and the fans along the trims with `glEvalCoord2f`), so
+/// the blocks become GPU jobs; every vertex the GPU evaluates is one of the CPU tessellator's
+/// mesh-strip vertices and every one of those is evaluated (positions within 2e-5 of the net's
+/// size, normals within 2e-3).
 #[test]
-fn trimmed_surface_points_on_the_gpu_match_the_cpu_triangles() {
+fn trimmed_surface_grid_blocks_on_the_gpu_match_the_cpu() {
     let Some(r) = device() else { return };
     let cpu = trimmed_nurbs(Tessellator::Cpu).frame().expanded();
+    let cpu_mesh: Vec<gleval::gl::Vertex> =
+        cpu.iter().filter(|(p, _)| p.mode == GL_TRIANGLE_STRIP).flat_map(|(_, v)| v.iter().copied()).collect();
+    assert!(!cpu_mesh.is_empty(), "GLU's grid blocks inside the trimmed regions");
     let mut gpu_gl = trimmed_nurbs(Tessellator::Gpu);
-    let mesh =
-        gpu_gl.frame().meshes.iter().find(|m| m.mode == MeshMode::Triangles).expect("a trimmed GPU mesh").clone();
-    let MeshVertices::Deferred(jobs) = &mesh.vertices else { panic!("deferred") };
-    assert_eq!(jobs.len(), 9, "the surface spans 3 x 3 Bezier pieces");
-    let pairs: Vec<(MeshJob, MeshMode)> = jobs.iter().map(|j| (j.clone(), MeshMode::Triangles)).collect();
+    let pairs: Vec<(MeshJob, MeshMode)> = gpu_gl
+        .frame()
+        .meshes
+        .iter()
+        .filter_map(|m| match &m.vertices {
+            MeshVertices::Deferred(jobs) => Some(jobs.iter().map(|j| (j.clone(), m.mode)).collect::<Vec<_>>()),
+            _ => None,
+        })
+        .flatten()
+        .collect();
+    assert!(!pairs.is_empty(), "the grid blocks go to the GPU");
     let got = evaluate_jobs(r.gpu(), &pairs).expect("GPU evaluation");
-    let triangles: Vec<&[gleval::gl::Vertex]> =
-        cpu.iter().filter(|(p, _)| p.mode == GL_TRIANGLES).map(|(_, v)| v).collect();
-    let cpu_vertices: Vec<gleval::gl::Vertex> = triangles.concat();
-    assert_eq!(cpu_vertices.len(), mesh.triangles.len(), "same triangles");
-    let scale = jobs.iter().flat_map(|j| &j.maps).flat_map(|m| &m.points).fold(1.0f32, |m, &x| m.max(x.abs()));
-    let (mut worst_p, mut worst_n) = (0.0f32, 0.0f32);
-    for (c, &index) in cpu_vertices.iter().zip(&mesh.triangles) {
-        let g = got[index as usize];
-        for k in 0..4 {
-            let e = (g[0][k] - c.position[k]).abs() / scale;
-            worst_p = worst_p.max(e);
-            assert!(e < 2e-5, "position {index}: gpu {:?} cpu {:?}", g[0], c.position);
-        }
+    let scale = pairs.iter().flat_map(|(j, _)| &j.maps).flat_map(|m| &m.points).fold(1.0f32, |m, &x| m.max(x.abs()));
+    let distance = |g: &[f32; 4], c: &[f32; 4]| (0..4).map(|k| (g[k] - c[k]).abs()).fold(0.0, f32::max) / scale;
+    let mut worst_n = 0.0f32;
+    for g in &got {
+        let c = cpu_mesh.iter().min_by(|a, b| distance(&g[0], &a.position).total_cmp(&distance(&g[0], &b.position)));
+        let c = c.expect("CPU vertices");
+        assert!(distance(&g[0], &c.position) < 2e-5, "gpu {:?} has no CPU twin", g[0]);
         let e = (0..3).map(|k| (g[1][k] - c.normal[k]).abs()).fold(0.0, f32::max);
         worst_n = worst_n.max(e);
-        assert!(e < 2e-3, "normal {index}: gpu {:?} cpu {:?}", g[1], c.normal);
+        assert!(e < 2e-3, "normal: gpu {:?} cpu {:?}", g[1], c.normal);
     }
-    println!(
-        "trimmed on the GPU: {} pieces, {} triangles, worst position {worst_p:.2e}, normal {worst_n:.2e}",
-        jobs.len(),
-        mesh.triangles.len() / 3
-    );
+    for c in &cpu_mesh {
+        assert!(got.iter().any(|g| distance(&g[0], &c.position) < 2e-5), "cpu {:?} not on the GPU", c.position);
+    }
+    println!("trimmed on the GPU: {} jobs, {} vertices, worst normal {worst_n:.2e}", pairs.len(), got.len());
 }
 
 /// The typed API's two back ends agree: `BezierPatch::tessellate` (CPU, f64) and

@@ -7,6 +7,8 @@ mod emit;
 mod patches;
 mod sliced;
 pub(crate) mod slicer;
+mod subdivided;
+mod subdivider;
 pub(crate) mod surface;
 mod tessellate;
 mod trimmed;

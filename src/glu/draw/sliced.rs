@@ -13,7 +13,7 @@ use super::slicer::{outline_rect, slice_rect, Grid, Piece};
 use crate::gl::consts::*;
 use crate::gl::Gl;
 use crate::glu::consts::*;
-use crate::glu::evaluation::patch_steps::{patch_steps, Net};
+use crate::glu::evaluation::patch_steps::{patch_steps, DirectionSteps, Net};
 use crate::glu::evaluation::surface::{PatchGrid, Surface};
 use crate::glu::model::object::NurbsObject;
 use glam::Mat4;
@@ -27,17 +27,12 @@ pub(crate) struct SlicedPatch {
 /// Every patch of the surface, u outer, sliced as GLU slices it (bisected first where GLU's
 /// sampling subdivision would, [`leaves`]), or outlined for `GLU_OUTLINE_PATCH`.
 pub(crate) fn slice_surface(obj: &NurbsObject, surface: &Surface) -> Vec<SlicedPatch> {
-    let matrix = if obj.props.object_space() { Mat4::IDENTITY } else { obj.matrices.sampling() };
+    let matrix = sampling_matrix(obj);
+    let steps = |su: (f32, f32), sv: (f32, f32)| rect_steps(obj, &matrix, surface, su, sv);
     let p = &surface.pos.patches;
     let mut out = Vec::new();
     for &u in &p.uintervals {
         for &v in &p.vintervals {
-            let steps = |su: (f32, f32), sv: (f32, f32)| {
-                let range = |r: (f32, f32)| (f64::from(r.0), f64::from(r.1));
-                let points = surface.pos.on(range(su), range(sv)).unwrap_or_default();
-                let net = Net { points: &points, k: surface.k, orders: (p.uorder, p.vorder) };
-                patch_steps(&obj.props, &matrix, &net, (su.1 - su.0, sv.1 - sv.0))
-            };
             let (u32_, v32) = ((u.0 as f32, u.1 as f32), (v.0 as f32, v.1 as f32));
             let linear = (p.uorder == 2, p.vorder == 2);
             let outline = obj.props.display_mode == GLU_OUTLINE_PATCH;
@@ -54,6 +49,30 @@ pub(crate) fn slice_surface(obj: &NurbsObject, surface: &Surface) -> Vec<SlicedP
         }
     }
     out
+}
+
+/// The matrix GLU samples with: none for the object-space methods.
+pub(crate) fn sampling_matrix(obj: &NurbsObject) -> Mat4 {
+    if obj.props.object_space() {
+        Mat4::IDENTITY
+    } else {
+        obj.matrices.sampling()
+    }
+}
+
+/// GLU's steps for the part [su] × [sv] of the surface's patch there (`Patch::getstepsize`).
+pub(crate) fn rect_steps(
+    obj: &NurbsObject,
+    matrix: &Mat4,
+    surface: &Surface,
+    su: (f32, f32),
+    sv: (f32, f32),
+) -> [DirectionSteps; 2] {
+    let p = &surface.pos.patches;
+    let range = |r: (f32, f32)| (f64::from(r.0), f64::from(r.1));
+    let points = surface.pos.on(range(su), range(sv)).unwrap_or_default();
+    let net = Net { points: &points, k: surface.k, orders: (p.uorder, p.vorder) };
+    patch_steps(&obj.props, matrix, &net, (su.1 - su.0, sv.1 - sv.0))
 }
 
 /// The patches that can be drawn, less those sampled beyond the façade's mesh limit (a weight
@@ -73,6 +92,10 @@ fn points(pieces: &[Piece]) -> usize {
     pieces.iter().fold(0usize, |sum, piece| {
         let n = match piece {
             Piece::Fan(p) | Piece::QuadStrip(p) | Piece::Line(p) => p.len(),
+            Piece::Block { u, v, .. } => {
+                let cells = (u.1 - u.0 + 1).max(0).saturating_mul((v.1 - v.0 + 1).max(0));
+                2usize.saturating_mul(usize::try_from(cells).unwrap_or(usize::MAX))
+            }
             Piece::Grid(g) => 2usize.saturating_mul(g.nu.saturating_add(1)).saturating_mul(g.nv.saturating_add(1)),
         };
         sum.saturating_add(n)

@@ -162,7 +162,8 @@ fn snap(lines: &[f64], x: f64) -> f64 {
 /// The smaller of the spacings on either side of line i.
 fn spacing(lines: &[f64], i: usize) -> Option<f64> {
     let below = i.checked_sub(1).and_then(|h| Some(lines.get(i)? - lines.get(h)?));
-    let above = lines.get(i + 1).and_then(|&next| Some(next - lines.get(i)?));
+    // i is usize::MAX for "below the first line" (snap's k - 1 at k = 0).
+    let above = i.checked_add(1).and_then(|j| lines.get(j)).and_then(|&next| Some(next - lines.get(i)?));
     match (below, above) {
         (Some(a), Some(b)) => Some(a.min(b)),
         (a, b) => a.or(b),

@@ -1,7 +1,8 @@
 /* Prints what GLU hands to the GLU_NURBS_TESSELLATOR callbacks, as the Red Book's surfpoints.c
    prints it (glBegin, glNormal3f, glVertex3f, glEnd, 3 decimals), for untrimmed surfaces under
    several sampling methods and tolerances, a multi-span B-spline sheet, rational and bilinear
-   patches, outlines (GLU_OUTLINE_PATCH) and curves. tests/it/glu_surfpoints.rs runs the same cases through gleval and
+   patches, trimmed surfaces (pwl and NURBS trim loops: holes, an island, a notch from the
+   border), outlines (GLU_OUTLINE_PATCH) and curves. tests/it/glu_surfpoints.rs runs the same cases through gleval and
    compares the text. Build: cc surfpoints.c -lOSMesa -lGLU -lGL */
 #include <GL/osmesa.h>
 #include <GL/glu.h>
@@ -66,9 +67,52 @@ static void view(void) {
 
 enum shape { HILL, SHEET, CYLINDER, TWIST };
 
+/* Trim loops. Each case's name starts with the shape, then the trim: hillhole, sheethole... */
+enum trim { NONE, HOLE, ISLAND, NOTCH, DIAMOND, REDBOOK };
+
+static void pwl_loop(GLUnurbs *n, int count, GLfloat *pts) {
+    gluBeginTrim(n);
+    gluPwlCurve(n, count, pts, 2, GLU_MAP1_TRIM_2);
+    gluEndTrim(n);
+}
+
+/* The domain's border, counter-clockwise, from (a, a) to (b, b). */
+static void border(GLUnurbs *n, GLfloat a, GLfloat b) {
+    GLfloat pts[5][2] = {{a, a}, {b, a}, {b, b}, {a, b}, {a, a}};
+    pwl_loop(n, 5, &pts[0][0]);
+}
+
+/* A clockwise square hole [a, b] x [c, d]. */
+static void hole(GLUnurbs *n, GLfloat a, GLfloat b, GLfloat c, GLfloat d) {
+    GLfloat pts[5][2] = {{a, c}, {a, d}, {b, d}, {b, c}, {a, c}};
+    pwl_loop(n, 5, &pts[0][0]);
+}
+
+static void trims(GLUnurbs *n, enum trim t) {
+    /* The Red Book's trim.c: a pwl border, then a hole of a cubic NURBS arc and a pwl arc. */
+    static GLfloat curve_pt[4][2] = {{0.25f, 0.5f}, {0.25f, 0.75f}, {0.75f, 0.75f}, {0.75f, 0.5f}};
+    static GLfloat pwl_pt[3][2] = {{0.75f, 0.5f}, {0.5f, 0.25f}, {0.25f, 0.5f}};
+    static GLfloat notch[9][2] = {{0, 0}, {0.3f, 0}, {0.3f, 0.4f}, {0.7f, 0.4f}, {0.7f, 0}, {1, 0}, {1, 1}, {0, 1}, {0, 0}};
+    static GLfloat diamond[5][2] = {{0.5f, 0.2f}, {0.2f, 0.5f}, {0.5f, 0.8f}, {0.8f, 0.5f}, {0.5f, 0.2f}};
+    switch (t) {
+    case NONE: break;
+    case HOLE: border(n, 0, 1); hole(n, 0.25f, 0.75f, 0.25f, 0.75f); break;
+    case ISLAND: border(n, 0, 1); hole(n, 0.2f, 0.8f, 0.2f, 0.8f); border(n, 0.4f, 0.6f); break;
+    case NOTCH: pwl_loop(n, 9, &notch[0][0]); break;
+    case DIAMOND: border(n, 0, 1); pwl_loop(n, 5, &diamond[0][0]); break;
+    case REDBOOK:
+        border(n, 0, 1);
+        gluBeginTrim(n);
+        gluNurbsCurve(n, 8, bezier_knots, 2, &curve_pt[0][0], 4, GLU_MAP1_TRIM_2);
+        gluPwlCurve(n, 3, &pwl_pt[0][0], 2, GLU_MAP1_TRIM_2);
+        gluEndTrim(n);
+        break;
+    }
+}
+
 static GLfloat display_mode = GLU_FILL;
 
-static void surface(const char *name, enum shape s, GLfloat method, GLfloat tolerance, GLfloat step, int normals) {
+static void trimmed(const char *name, enum shape s, enum trim t, GLfloat method, GLfloat tolerance, GLfloat step, int normals) {
     GLUnurbs *n = nurbs(method, tolerance, step, normals);
     gluNurbsProperty(n, GLU_DISPLAY_MODE, display_mode);
     printf("# %s %s\n", display_mode == GLU_OUTLINE_PATCH ? "outline" : "surface", name);
@@ -80,8 +124,18 @@ static void surface(const char *name, enum shape s, GLfloat method, GLfloat tole
     case CYLINDER: gluNurbsSurface(n, 6, cyl_uknots, 4, cyl_vknots, 8, 4, &cyl[0][0][0], 3, 2, GL_MAP2_VERTEX_4); break;
     case TWIST: gluNurbsSurface(n, 4, lin_knots, 4, lin_knots, 6, 3, &twist[0][0][0], 2, 2, GL_MAP2_VERTEX_3); break;
     }
+    if (s == SHEET && t == HOLE) {
+        border(n, 3, 10);
+        hole(n, 4.5f, 8.2f, 5.3f, 7.5f);
+    } else {
+        trims(n, t);
+    }
     gluEndSurface(n);
     gluDeleteNurbsRenderer(n);
+}
+
+static void surface(const char *name, enum shape s, GLfloat method, GLfloat tolerance, GLfloat step, int normals) {
+    trimmed(name, s, NONE, method, tolerance, step, normals);
 }
 
 static void curve_case(const char *name, int rational, GLfloat method, GLfloat tolerance, GLfloat step) {
@@ -130,6 +184,18 @@ int main(void) {
     surface("cylinder_parametric_error_0.01", CYLINDER, GLU_PARAMETRIC_ERROR, 0.01f, 100, 1);
     surface("cylinder_path_length_20", CYLINDER, GLU_PATH_LENGTH, 20, 100, 1);
     surface("twist_path_length_30", TWIST, GLU_PATH_LENGTH, 30, 100, 1);
+    trimmed("hillhole_path_length_25", HILL, HOLE, GLU_PATH_LENGTH, 25, 100, 1);
+    trimmed("hillhole_path_length_120", HILL, HOLE, GLU_PATH_LENGTH, 120, 100, 0);
+    trimmed("hillhole_parametric_error_0.5", HILL, HOLE, GLU_PARAMETRIC_ERROR, 0.5f, 100, 1);
+    trimmed("hillhole_domain_distance_6", HILL, HOLE, GLU_DOMAIN_DISTANCE, 50, 6, 1);
+    trimmed("hillhole_domain_distance_3", HILL, HOLE, GLU_DOMAIN_DISTANCE, 50, 3, 0);
+    trimmed("hillisland_path_length_25", HILL, ISLAND, GLU_PATH_LENGTH, 25, 100, 1);
+    trimmed("hillnotch_path_length_25", HILL, NOTCH, GLU_PATH_LENGTH, 25, 100, 1);
+    trimmed("hilldiamond_path_length_25", HILL, DIAMOND, GLU_PATH_LENGTH, 25, 100, 1);
+    trimmed("hillredbook_path_length_25", HILL, REDBOOK, GLU_PATH_LENGTH, 25, 100, 1);
+    trimmed("hillredbook_domain_distance_6", HILL, REDBOOK, GLU_DOMAIN_DISTANCE, 50, 6, 0);
+    trimmed("sheethole_path_length_60", SHEET, HOLE, GLU_PATH_LENGTH, 60, 100, 1);
+    trimmed("sheethole_domain_distance_3", SHEET, HOLE, GLU_DOMAIN_DISTANCE, 50, 3, 0);
     display_mode = GLU_OUTLINE_PATCH;
     surface("hill_path_length_25", HILL, GLU_PATH_LENGTH, 25, 100, 0);
     surface("hill_domain_distance_6", HILL, GLU_DOMAIN_DISTANCE, 50, 6, 0);

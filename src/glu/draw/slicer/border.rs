@@ -38,7 +38,7 @@ fn steps(large: f32, small: f32, rate: f32) -> usize {
 
 /// An increasing side from `a` to `b` (`pwl_bottom`, `pwl_right`): a + i·step accumulated,
 /// then `b` itself.
-pub(super) fn side_up(a: f32, b: f32, rate: f32) -> Vec<f32> {
+pub(crate) fn side_up(a: f32, b: f32, rate: f32) -> Vec<f32> {
     let n = steps(b, a, rate);
     let step = (b - a) / n as f32;
     let mut out = Vec::with_capacity(n + 1);
@@ -53,7 +53,7 @@ pub(super) fn side_up(a: f32, b: f32, rate: f32) -> Vec<f32> {
 
 /// A decreasing side from `a` down to `b` (`pwl_top`, `pwl_left`): GLU fills it from the end,
 /// accumulating from `b` upwards, and puts `a` itself first.
-pub(super) fn side_down(a: f32, b: f32, rate: f32) -> Vec<f32> {
+pub(crate) fn side_down(a: f32, b: f32, rate: f32) -> Vec<f32> {
     let n = steps(a, b, rate);
     let step = (a - b) / n as f32;
     let mut out = vec![0.0; n + 1];

@@ -28,6 +28,9 @@ pub(crate) enum Piece {
     QuadStrip(Vec<[f32; 2]>),
     /// A block of the uniform grid (GLU `surfgrid` + `surfmesh`).
     Grid(Grid),
+    /// Part of a grid: lines `u.0..=u.1` by `v.0..=v.1` of it (GLU `surfgrid` then
+    /// `surfmesh(u.0, v.0, u.1 - u.0, v.1 - v.0)`, as `Slicer::evalRBArray` draws its blocks).
+    Block { grid: Grid, u: (i64, i64), v: (i64, i64) },
     /// `GL_LINE_STRIP` through these (u, v): an outline (`GLU_OUTLINE_PATCH`).
     Line(Vec<[f32; 2]>),
 }
@@ -54,7 +57,7 @@ impl Grid {
     }
 }
 
-fn line((a, b): (f32, f32), n: usize, i: usize) -> f32 {
+pub(super) fn line((a, b): (f32, f32), n: usize, i: usize) -> f32 {
     if i == n {
         b
     } else {

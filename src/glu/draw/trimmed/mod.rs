@@ -1,4 +1,5 @@
-//! Trimmed NURBS surfaces: the trim loops become (u, v) polylines, the retained region is
+//! Trimmed NURBS surfaces: GLU's own tessellation where [`super::subdivided`] reproduces it;
+//! otherwise the trim loops become (u, v) polylines, the retained region is
 //! triangulated with the surface's sampling grid inside ([`crate::tess::trim`]), and every
 //! vertex is evaluated on the exact surface. Loop errors are GLU's numbers 28, 29, 31 and 18.
 
@@ -8,6 +9,9 @@ mod render;
 mod tessellate;
 mod values;
 
+use super::sliced;
+use super::subdivided::slice_trimmed;
+use super::subdivider::Failure;
 use crate::gl::Gl;
 use crate::glu::evaluation::sampling::Sampler;
 use crate::glu::evaluation::surface::Surface;
@@ -26,6 +30,18 @@ pub(super) fn draw_trimmed(
     let steps = surface.patches(sampler);
     let (us, vs) = domain::grid_lines(&steps);
     let Some(trim_loops) = domain::trim_loops(obj, loops, &steps) else { return };
+    match slice_trimmed(obj, surface, loops) {
+        Ok(patches) => {
+            let patches = sliced::drawable(obj, patches);
+            return if tessellate {
+                sliced::tessellate_sliced(gl, obj, surface, &patches)
+            } else {
+                sliced::render_sliced(gl, obj, surface, &patches)
+            };
+        }
+        Err(Failure::Error(n)) => return obj.nurbs_error(n),
+        Err(Failure::Unsupported) => {} // gleval's own triangulation below
+    }
     let bounds = surface.domain();
     if tessellate {
         tessellate::tessellate_trimmed(gl, obj, surface, &trim_loops, bounds, (&us, &vs));
