@@ -7,6 +7,8 @@
 //! (`AVOID_ZERO_NORMAL`). Reproducing the arithmetic rather than only the mathematics keeps the
 //! printed vertices and normals GLU's to the last digit.
 
+use std::cell::RefCell;
+
 /// GLU's `MAXORDER`; larger orders are refused before they get here.
 pub(crate) const MAX_ORDER: usize = 24;
 /// `MYZERO`: a partial no larger than this in every component counts as vanishing.
@@ -23,6 +25,35 @@ pub(crate) struct PatchMachine {
     uorder: usize,
     vorder: usize,
     points: Vec<f32>,
+    /// What the last samples worked out, by parameter (see [`Recent`]).
+    recent: RefCell<Recent>,
+}
+
+/// The sums along v of each row of control points (and of their v derivative) at one v: all
+/// of a sample's work that does not depend on u.
+#[derive(Clone, Debug)]
+struct RowSums {
+    t: u32,
+    p: [[f32; 4]; MAX_ORDER],
+    pdv: [[f32; 4]; MAX_ORDER],
+}
+
+/// The u coefficients and their derivatives at one u.
+#[derive(Clone, Copy, Debug)]
+struct UCoefficients {
+    s: u32,
+    c: [f32; MAX_ORDER],
+    d: [f32; MAX_ORDER],
+}
+
+/// The two latest v rows and u coefficients a machine worked out, keyed by the normalised
+/// parameter's bits: GLU's strips alternate between two v values and step u every other vertex,
+/// so most samples find both here (GLU's `surfEvalMachine` keeps the last u and v likewise,
+/// `uprime`/`vprime`). The values are the ones a fresh evaluation gives, bit for bit.
+#[derive(Clone, Debug, Default)]
+struct Recent {
+    rows: [Option<Box<RowSums>>; 2],
+    coefficients: [Option<UCoefficients>; 2],
 }
 
 /// A point (k values) and its partials in the patch's normalised parameters.
@@ -42,7 +73,7 @@ impl PatchMachine {
             return None;
         }
         let points = points[..uorder * vorder * k].iter().map(|&c| c as f32).collect();
-        Some(Self { k, u, v, uorder, vorder, points })
+        Some(Self { k, u, v, uorder, vorder, points, recent: RefCell::default() })
     }
 
     /// The value and partials at (u, v); `None` on an empty patch (GLU evaluates nothing).
@@ -52,11 +83,72 @@ impl PatchMachine {
         }
         let s = (u - self.u.0) / (self.u.1 - self.u.0);
         let t = (v - self.v.0) / (self.v.1 - self.v.0);
-        let (uc, ud) = coefficients(self.uorder, s);
-        let (vc, vd) = coefficients(self.vorder, t);
+        let mut recent = self.recent.borrow_mut();
+        let (r, c) = (self.row_sums(&mut recent, t), self.u_coefficients_at(&mut recent, s));
+        let (Some(rows), Some(uc)) = (recent.rows[r].as_deref(), recent.coefficients[c].as_ref()) else {
+            return None;
+        };
+        Some(self.combine(rows, uc))
+    }
+
+    /// [`Self::sample`] at every (us[i], vs[j]), j outer: the sums along v once per v and the
+    /// u coefficients once per u, so every point costs its sum along u alone (what a grid
+    /// block's strips, which meet each point twice and each line many times, would otherwise
+    /// work out again and again). The same bits as [`Self::sample`] point by point. `None` on
+    /// an empty patch.
+    pub fn sample_grid(&self, us: &[f32], vs: &[f32]) -> Option<Vec<MachineSample>> {
+        if self.u.1 == self.u.0 || self.v.1 == self.v.0 {
+            return None;
+        }
+        let coefficients: Vec<UCoefficients> = us
+            .iter()
+            .map(|&u| {
+                let s = (u - self.u.0) / (self.u.1 - self.u.0);
+                let (c, d) = coefficients(self.uorder, s);
+                UCoefficients { s: s.to_bits(), c, d }
+            })
+            .collect();
+        let mut out = Vec::with_capacity(us.len() * vs.len());
+        for &v in vs {
+            let rows = self.sums_at((v - self.v.0) / (self.v.1 - self.v.0));
+            out.extend(coefficients.iter().map(|uc| self.combine(&rows, uc)));
+        }
+        Some(out)
+    }
+
+    /// A sample from its row sums and u coefficients: each component summed over the rows in
+    /// GLU's order (`inDoDomain2WithDerivsEM`).
+    fn combine(&self, rows: &RowSums, uc: &UCoefficients) -> MachineSample {
         let mut out = MachineSample::default();
         for j in 0..self.k {
             for row in 0..self.uorder {
+                let (p, pdv) = (rows.p[row][j], rows.pdv[row][j]);
+                out.point[j] += uc.c[row] * p;
+                out.du[j] += uc.d[row] * p;
+                out.dv[j] += uc.c[row] * pdv;
+            }
+        }
+        out
+    }
+
+    /// Where in `recent` the row sums at normalised v = `t` are (worked out if missing).
+    fn row_sums(&self, recent: &mut Recent, t: f32) -> usize {
+        if let Some(k) = recent.rows.iter().position(|r| r.as_ref().is_some_and(|r| r.t == t.to_bits())) {
+            return k;
+        }
+        let sums = self.sums_at(t);
+        // The older entry makes way.
+        recent.rows.swap(0, 1);
+        recent.rows[0] = Some(Box::new(sums));
+        0
+    }
+
+    /// The row sums at normalised v = `t`.
+    fn sums_at(&self, t: f32) -> RowSums {
+        let (vc, vd) = coefficients(self.vorder, t);
+        let mut sums = RowSums { t: t.to_bits(), p: [[0.0; 4]; MAX_ORDER], pdv: [[0.0; 4]; MAX_ORDER] };
+        for row in 0..self.uorder {
+            for j in 0..self.k {
                 let at = |col: usize| self.points[(row * self.vorder + col) * self.k + j];
                 let mut p = vc[0] * at(0);
                 let mut pdv = vd[0] * at(0);
@@ -64,18 +156,27 @@ impl PatchMachine {
                     p += vc[col] * at(col);
                     pdv += vd[col] * at(col);
                 }
-                out.point[j] += uc[row] * p;
-                out.du[j] += ud[row] * p;
-                out.dv[j] += uc[row] * pdv;
+                (sums.p[row][j], sums.pdv[row][j]) = (p, pdv);
             }
         }
-        Some(out)
+        sums
     }
 
-    /// The position (divided by w for k = 4) and the unit normal at (u, v), as GLU's
-    /// automatic normal computes them.
-    pub fn point_and_normal(&self, u: f32, v: f32) -> Option<([f32; 3], [f32; 3])> {
-        let s = self.sample(u, v)?;
+    /// Where in `recent` the u coefficients at normalised u = `s` are (worked out if missing).
+    fn u_coefficients_at(&self, recent: &mut Recent, s: f32) -> usize {
+        if let Some(k) = recent.coefficients.iter().position(|c| c.is_some_and(|c| c.s == s.to_bits())) {
+            return k;
+        }
+        let (c, d) = coefficients(self.uorder, s);
+        recent.coefficients.swap(0, 1);
+        recent.coefficients[0] = Some(UCoefficients { s: s.to_bits(), c, d });
+        0
+    }
+
+    /// The position (divided by w for k = 4) and the unit normal at (u, v) from the sample
+    /// there, as GLU's automatic normal computes them (the sample taken again near by where a
+    /// partial vanishes).
+    pub fn point_and_normal_of(&self, s: MachineSample, u: f32, v: f32) -> Option<([f32; 3], [f32; 3])> {
         let (p, mut du, mut dv) = (s.point, s.du, s.dv);
         if self.k == 4 {
             first_partials(&p, &mut du, &mut dv);
@@ -99,7 +200,7 @@ impl PatchMachine {
         Some((project(&p, self.k), normal(&du, &dv)))
     }
 
-    /// [`Self::position`] at (us[i], v) for every i, into `out` as [x, y, z, u, v]: the same
+    /// [`Self::position_of`] the sample at (us[i], v) for every i, into `out` as [x, y, z, u, v]: the same
     /// arithmetic, with the sums along v (which depend on v only) and the u coefficients
     /// (given per column in `ucoeffs`, from [`Self::u_coefficients`]) taken once per row.
     pub fn position_row(&self, v: f32, us: &[f32], ucoeffs: &[[f32; MAX_ORDER]], out: &mut [[f32; 5]]) -> Option<()> {
@@ -137,14 +238,9 @@ impl PatchMachine {
         us.iter().map(|&u| coefficients(self.uorder, (u - self.u.0) / (self.u.1 - self.u.0)).0).collect()
     }
 
-    /// The raw k values at (u, v) (GLU's `inDoDomain2EM`, as attribute maps are handed out).
-    pub fn values(&self, u: f32, v: f32) -> Option<[f32; 4]> {
-        Some(self.sample(u, v)?.point)
-    }
-
-    /// The position only (divided by w for k = 4): GLU's `inDoDomain2EM`.
-    pub fn position(&self, u: f32, v: f32) -> Option<[f32; 3]> {
-        Some(project(&self.sample(u, v)?.point, self.k))
+    /// The position (divided by w for k = 4) of a sample: GLU's `inDoDomain2EM`.
+    pub fn position_of(&self, s: &MachineSample) -> [f32; 3] {
+        project(&s.point, self.k)
     }
 }
 
@@ -276,7 +372,31 @@ mod tests {
     fn flat_bilinear_patch_has_the_z_normal() {
         let pts = [0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 1.0, 0.0, 0.0, 1.0, 1.0, 0.0];
         let m = PatchMachine::new(&pts, 3, (2, 2), (0.0, 1.0), (0.0, 1.0)).unwrap();
-        assert_eq!(m.point_and_normal(0.25, 0.5), Some(([0.25, 0.5, 0.0], [0.0, 0.0, 1.0])));
+        let at = m.sample(0.25, 0.5).unwrap();
+        assert_eq!(m.point_and_normal_of(at, 0.25, 0.5), Some(([0.25, 0.5, 0.0], [0.0, 0.0, 1.0])));
+    }
+
+    /// A grid of samples, and samples one by one in any order (whatever the machine kept from
+    /// the samples before), give the bits of a fresh machine's first sample: rational and
+    /// not, orders 1 to 7, parameters on and off the patch.
+    #[test]
+    fn grid_and_repeated_samples_match_fresh_ones() {
+        let bits = |s: &MachineSample| [s.point, s.du, s.dv].concat().iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+        for (k, uo, vo) in [(3, 4, 4), (4, 3, 5), (3, 1, 7), (2, 7, 2), (4, 4, 1)] {
+            let pts: Vec<f64> = (0..uo * vo * k)
+                .map(|x| ((x * 37 % 23) as f64) * 0.3 - 2.5 + if x % k == 3 { 4.0 } else { 0.0 })
+                .collect();
+            let machine = || PatchMachine::new(&pts, k, (uo, vo), (0.5, 2.0), (-1.0, 1.0)).unwrap();
+            let us = [0.5, 0.75, 1.1, 2.0, 0.3, 1.1];
+            let vs = [-1.0, 0.2, 1.0, 0.2, 1.7];
+            let grid = machine().sample_grid(&us, &vs).unwrap();
+            let shared = machine();
+            for (n, (j, i)) in (0..vs.len()).flat_map(|j| (0..us.len()).map(move |i| (j, i))).rev().enumerate() {
+                let fresh = machine().sample(us[i], vs[j]).unwrap();
+                assert_eq!(bits(&grid[j * us.len() + i]), bits(&fresh), "{k} {uo}x{vo} grid ({i}, {j})");
+                assert_eq!(bits(&shared.sample(us[i], vs[j]).unwrap()), bits(&fresh), "{k} {uo}x{vo} sample {n}");
+            }
+        }
     }
 
     #[test]

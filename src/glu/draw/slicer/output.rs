@@ -24,24 +24,50 @@ pub(crate) fn tessellate_pieces(gl: &mut Gl, obj: &mut NurbsObject, maps: &Patch
                 }
                 obj.callbacks.end(gl);
             }
-            Piece::Block { grid, u, v } => {
-                for strip in block_strips(grid, *u, *v) {
-                    obj.callbacks.begin(gl, GL_QUAD_STRIP);
-                    for p in strip {
-                        emit(gl, obj, p);
-                    }
-                    obj.callbacks.end(gl);
-                }
+            Piece::Block { grid, u, v } => tessellate_block(gl, obj, maps, grid, *u, *v),
+            Piece::Grid(grid) => tessellate_block(gl, obj, maps, grid, (0, grid.nu as i64), (0, grid.nv as i64)),
+        }
+    }
+}
+
+/// Grid lines `u.0..=u.1` × `v.0..=v.1` of `g` as GLU's callback-mode `mapmesh2f` emits
+/// them: quad strips by columns when the whole grid has at least as many columns as rows (v
+/// running down), else by rows (u running down; a row of no width still begins and ends a
+/// strip, as GLU's does). Every grid point is evaluated once ([`PatchVertices::sample_grid`])
+/// and handed out as often as the strips meet it.
+fn tessellate_block(
+    gl: &mut Gl,
+    obj: &mut NurbsObject,
+    maps: &PatchVertices,
+    g: &Grid,
+    (u0, u1): (i64, i64),
+    (v0, v1): (i64, i64),
+) {
+    let at = |x: i64, n: usize, r: (f32, f32)| super::line(r, n, x.max(0) as usize);
+    let us: Vec<f32> = (u0..=u1).map(|i| at(i, g.nu, g.u)).collect();
+    let vs: Vec<f32> = (v0..=v1).map(|j| at(j, g.nv, g.v)).collect();
+    let samples = maps.sample_grid(&us, &vs);
+    let emit = |gl: &mut Gl, obj: &mut NurbsObject, i: i64, j: i64| {
+        let (a, b) = ((i - u0) as usize, (j - v0) as usize);
+        maps.emit_sampled(gl, obj, &samples, b * us.len() + a, us[a], vs[b]);
+    };
+    if g.nu >= g.nv {
+        for i in u0..u1 {
+            obj.callbacks.begin(gl, GL_QUAD_STRIP);
+            for j in (v0..=v1).rev() {
+                emit(gl, obj, i, j);
+                emit(gl, obj, i + 1, j);
             }
-            Piece::Grid(grid) => {
-                for strip in grid_strips(grid) {
-                    obj.callbacks.begin(gl, GL_QUAD_STRIP);
-                    for p in strip {
-                        emit(gl, obj, p);
-                    }
-                    obj.callbacks.end(gl);
-                }
+            obj.callbacks.end(gl);
+        }
+    } else {
+        for j in v0..v1 {
+            obj.callbacks.begin(gl, GL_QUAD_STRIP);
+            for i in (u0..=u1).rev() {
+                emit(gl, obj, i, j + 1);
+                emit(gl, obj, i, j);
             }
+            obj.callbacks.end(gl);
         }
     }
 }
@@ -80,43 +106,4 @@ fn kind(piece: &Piece) -> u32 {
         Piece::Line(_) => GL_LINE_STRIP,
         _ => GL_QUAD_STRIP,
     }
-}
-
-/// A grid block as GLU's callback-mode `mapmesh2f` emits it: one quad strip per column when
-/// the grid is at least as wide as high (v running down), otherwise one per row (u running
-/// down).
-/// The strips of part of a grid, as GLU's callback-mode `mapmesh2f` makes them: by columns
-/// when the whole grid has at least as many columns as rows, else by rows (an empty strip
-/// for a row of no width, as GLU begins and ends it).
-fn block_strips(g: &Grid, (u0, u1): (i64, i64), (v0, v1): (i64, i64)) -> Vec<Vec<[f32; 2]>> {
-    let at = |x: i64, n: usize, r: (f32, f32)| super::line(r, n, x.max(0) as usize);
-    if g.nu >= g.nv {
-        (u0..u1)
-            .map(|i| {
-                let (a, b) = (at(i, g.nu, g.u), at(i + 1, g.nu, g.u));
-                (v0..=v1).rev().flat_map(|j| [[a, at(j, g.nv, g.v)], [b, at(j, g.nv, g.v)]]).collect()
-            })
-            .collect()
-    } else {
-        (v0..v1)
-            .map(|i| {
-                let (a, b) = (at(i, g.nv, g.v), at(i + 1, g.nv, g.v));
-                (u0..=u1).rev().flat_map(|j| [[at(j, g.nu, g.u), b], [at(j, g.nu, g.u), a]]).collect()
-            })
-            .collect()
-    }
-}
-
-pub(crate) fn grid_strips(g: &Grid) -> impl Iterator<Item = Vec<[f32; 2]>> + '_ {
-    let columns = g.nu >= g.nv;
-    let count = if columns { g.nu } else { g.nv };
-    (0..count).map(move |i| {
-        if columns {
-            let (a, b) = (g.u_at(i), g.u_at(i + 1));
-            (0..=g.nv).rev().flat_map(|j| [[a, g.v_at(j)], [b, g.v_at(j)]]).collect()
-        } else {
-            let (a, b) = (g.v_at(i), g.v_at(i + 1));
-            (0..=g.nu).rev().flat_map(|j| [[g.u_at(j), b], [g.u_at(j), a]]).collect()
-        }
-    })
 }

@@ -6,7 +6,7 @@
 
 use crate::gl::Gl;
 use crate::glu::consts::*;
-use crate::glu::evaluation::machine::PatchMachine;
+use crate::glu::evaluation::machine::{MachineSample, PatchMachine};
 use crate::glu::evaluation::surface::Surface;
 use crate::glu::model::object::NurbsObject;
 use crate::glu::model::targets::callback_kind;
@@ -40,19 +40,57 @@ impl PatchVertices {
 
     /// The callbacks of the vertex at (u, v).
     pub fn emit(&self, gl: &mut Gl, obj: &mut NurbsObject, u: f32, v: f32) {
+        self.emit_with(gl, obj, (u, v), |machine| machine.sample(u, v));
+    }
+
+    /// Every map sampled over the grid `us` × `vs` (v outer), for [`Self::emit_sampled`]; a map
+    /// on an empty patch has no samples.
+    pub fn sample_grid(&self, us: &[f32], vs: &[f32]) -> GridSamples {
+        let maps = self.attributes.iter().map(|a| &a.0).chain([&self.position]);
+        GridSamples { maps: maps.map(|m| m.sample_grid(us, vs)).collect() }
+    }
+
+    /// [`Self::emit`] for sample `index` of `samples` (at (u, v)): the same callbacks.
+    pub fn emit_sampled(
+        &self,
+        gl: &mut Gl,
+        obj: &mut NurbsObject,
+        samples: &GridSamples,
+        index: usize,
+        u: f32,
+        v: f32,
+    ) {
+        let mut maps = samples.maps.iter();
+        self.emit_with(gl, obj, (u, v), |_| maps.next()?.as_ref()?.get(index).copied());
+    }
+
+    /// The callbacks of the vertex at (u, v), `sample` giving each map's sample there in turn
+    /// (the attribute maps in callback order, then the position map).
+    fn emit_with(
+        &self,
+        gl: &mut Gl,
+        obj: &mut NurbsObject,
+        (u, v): (f32, f32),
+        mut sample: impl FnMut(&PatchMachine) -> Option<MachineSample>,
+    ) {
         for (machine, kind, dim) in &self.attributes {
-            if let Some(values) = machine.values(u, v) {
-                obj.callbacks.attribute(gl, *kind, &values[..*dim]);
+            if let Some(values) = sample(machine) {
+                obj.callbacks.attribute(gl, *kind, &values.point[..*dim]);
             }
         }
+        let Some(at) = sample(&self.position) else { return };
         let point = if !self.has_normal_map && self.auto_normal {
-            let Some((point, normal)) = self.position.point_and_normal(u, v) else { return };
+            let Some((point, normal)) = self.position.point_and_normal_of(at, u, v) else { return };
             obj.callbacks.attribute(gl, GLU_NURBS_NORMAL, &normal);
             point
         } else {
-            let Some(point) = self.position.position(u, v) else { return };
-            point
+            self.position.position_of(&at)
         };
         obj.callbacks.attribute(gl, GLU_NURBS_VERTEX, &[point[0], point[1], point[2], u, v]);
     }
+}
+
+/// Every map's samples over a grid (see [`PatchVertices::sample_grid`]).
+pub(crate) struct GridSamples {
+    maps: Vec<Option<Vec<MachineSample>>>,
 }
