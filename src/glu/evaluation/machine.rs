@@ -25,6 +25,9 @@ pub(crate) struct PatchMachine {
     uorder: usize,
     vorder: usize,
     points: Vec<f32>,
+    /// Whether samples carry the partials (else they are left zero: a map whose values are
+    /// all that is handed out, with no automatic normal, needs a third of the work).
+    partials: bool,
     /// What the last samples worked out, by parameter (see [`Recent`]).
     recent: RefCell<Recent>,
 }
@@ -73,7 +76,13 @@ impl PatchMachine {
             return None;
         }
         let points = points[..uorder * vorder * k].iter().map(|&c| c as f32).collect();
-        Some(Self { k, u, v, uorder, vorder, points, recent: RefCell::default() })
+        Some(Self { k, u, v, uorder, vorder, points, partials: true, recent: RefCell::default() })
+    }
+
+    /// The machine, its samples without partials (the values are the same bits).
+    #[must_use]
+    pub fn without_partials(self) -> Self {
+        Self { partials: false, ..self }
     }
 
     /// The value and partials at (u, v); `None` on an empty patch (GLU evaluates nothing).
@@ -120,6 +129,14 @@ impl PatchMachine {
     /// GLU's order (`inDoDomain2WithDerivsEM`).
     fn combine(&self, rows: &RowSums, uc: &UCoefficients) -> MachineSample {
         let mut out = MachineSample::default();
+        if !self.partials {
+            for j in 0..self.k {
+                for row in 0..self.uorder {
+                    out.point[j] += uc.c[row] * rows.p[row][j];
+                }
+            }
+            return out;
+        }
         for j in 0..self.k {
             for row in 0..self.uorder {
                 let (p, pdv) = (rows.p[row][j], rows.pdv[row][j]);
@@ -151,12 +168,17 @@ impl PatchMachine {
             for j in 0..self.k {
                 let at = |col: usize| self.points[(row * self.vorder + col) * self.k + j];
                 let mut p = vc[0] * at(0);
-                let mut pdv = vd[0] * at(0);
                 for col in 1..self.vorder {
                     p += vc[col] * at(col);
-                    pdv += vd[col] * at(col);
                 }
-                (sums.p[row][j], sums.pdv[row][j]) = (p, pdv);
+                sums.p[row][j] = p;
+                if self.partials {
+                    let mut pdv = vd[0] * at(0);
+                    for col in 1..self.vorder {
+                        pdv += vd[col] * at(col);
+                    }
+                    sums.pdv[row][j] = pdv;
+                }
             }
         }
         sums

@@ -28,14 +28,17 @@ impl PatchVertices {
             let points = map.on(u, v)?;
             PatchMachine::new(&points, p.dim, (p.uorder, p.vorder), (u.0 as f32, u.1 as f32), (v.0 as f32, v.1 as f32))
         };
-        let position = machine(&surface.pos)?;
+        // Only the automatic normal reads a map's partials.
         let attributes: Vec<(PatchMachine, u32, usize)> = surface
             .attributes
             .iter()
-            .filter_map(|map| Some((machine(map)?, callback_kind(map.target)?, map.patches.dim)))
+            .filter_map(|map| Some((machine(map)?.without_partials(), callback_kind(map.target)?, map.patches.dim)))
             .collect();
         let has_normal_map = attributes.iter().any(|a| a.1 == GLU_NURBS_NORMAL);
-        Some(Self { position, attributes, has_normal_map, auto_normal: obj.callbacks.wants_normals() })
+        let auto_normal = obj.callbacks.wants_normals();
+        let position = machine(&surface.pos)?;
+        let position = if auto_normal && !has_normal_map { position } else { position.without_partials() };
+        Some(Self { position, attributes, has_normal_map, auto_normal })
     }
 
     /// The callbacks of the vertex at (u, v).
