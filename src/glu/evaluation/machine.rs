@@ -399,8 +399,9 @@ mod tests {
     }
 
     /// A grid of samples, and samples one by one in any order (whatever the machine kept from
-    /// the samples before), give the bits of a fresh machine's first sample: rational and
-    /// not, orders 1 to 7, parameters on and off the patch.
+    /// the samples before), give the bits of a fresh machine's first sample, and a machine
+    /// without partials the same values: rational and not, orders 1 to 7, parameters on and
+    /// off the patch.
     #[test]
     fn grid_and_repeated_samples_match_fresh_ones() {
         let bits = |s: &MachineSample| [s.point, s.du, s.dv].concat().iter().map(|x| x.to_bits()).collect::<Vec<_>>();
@@ -412,10 +413,13 @@ mod tests {
             let us = [0.5, 0.75, 1.1, 2.0, 0.3, 1.1];
             let vs = [-1.0, 0.2, 1.0, 0.2, 1.7];
             let grid = machine().sample_grid(&us, &vs).unwrap();
+            let lean = machine().without_partials().sample_grid(&us, &vs).unwrap();
             let shared = machine();
             for (n, (j, i)) in (0..vs.len()).flat_map(|j| (0..us.len()).map(move |i| (j, i))).rev().enumerate() {
                 let fresh = machine().sample(us[i], vs[j]).unwrap();
                 assert_eq!(bits(&grid[j * us.len() + i]), bits(&fresh), "{k} {uo}x{vo} grid ({i}, {j})");
+                let point_bits = |p: [f32; 4]| p.map(f32::to_bits);
+                assert_eq!(point_bits(lean[j * us.len() + i].point), point_bits(fresh.point), "{k} {uo}x{vo} lean");
                 assert_eq!(bits(&shared.sample(us[i], vs[j]).unwrap()), bits(&fresh), "{k} {uo}x{vo} sample {n}");
             }
         }
