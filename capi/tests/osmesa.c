@@ -1,4 +1,4 @@
-/* OSMesa's buffer semantics, printed for a diff against real Mesa (capi/tests/osmesa.sh): what
+/* OSMesa's buffer semantics, printed for a diff against real Mesa (capi/tests/against_mesa.sh osmesa): what
    a buffer held before is not the framebuffer's start (Mesa starts transparent black and copies
    the whole framebuffer in), frames drawn after a glFinish land on top of the earlier ones,
    other pixel formats (BGRA, RGB), glReadPixels, and more contexts drawing into their own

@@ -2,7 +2,7 @@
  * header, the OSMesa GLUT stand-in of tests/reference/pictures) and on gleval (glevalcc); it
  * draws rectangles of known colours, reads pixels inside them (where rasterisation rules do not
  * matter) in several formats, types and pack modes, and calls glReadPixels wrongly; both
- * outputs must be identical (capi/tests/readpixels.sh).
+ * outputs must be identical (capi/tests/against_mesa.sh readpixels).
  *   readpixels --png OUT.png */
 #include <GL/glut.h>
 #include <stdio.h>

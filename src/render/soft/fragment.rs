@@ -4,9 +4,9 @@
 //! lines (Mesa's, `render/smooth.rs`) and the alpha test (§4.1.3). The same operations in the
 //! same order as `shaders/fragment.wgsl` and `shaders/raster.wgsl` on the GPU.
 
+use super::framebuffer::compare;
 use super::sampler::Sampler;
 use crate::gl::consts::*;
-use crate::gl::types::GLenum;
 use crate::gl::{BoundTexture, Fog};
 use crate::render::assemble::{FragmentState, Smooth};
 
@@ -62,7 +62,7 @@ impl<'a> Program<'a> {
         }
         color[3] *= coverage(self.state.smooth, f.aa)?;
         if let Some((func, reference)) = self.state.alpha_test {
-            if !alpha_passes(func, color[3], reference) {
+            if !compare(func, color[3], reference) {
                 return None;
             }
         }
@@ -193,19 +193,5 @@ fn coverage(smooth: Smooth, aa: [f32; 4]) -> Option<f32> {
             let saturate = |x: f32| x.clamp(0.0, 1.0);
             Some(saturate(aa[1] - aa[0].abs()) * saturate(aa[3] - aa[2].abs()))
         }
-    }
-}
-
-/// The alpha test's comparison of the fragment's alpha with the reference.
-fn alpha_passes(func: GLenum, a: f32, r: f32) -> bool {
-    match func {
-        GL_NEVER => false,
-        GL_LESS => a < r,
-        GL_EQUAL => a == r,
-        GL_LEQUAL => a <= r,
-        GL_GREATER => a > r,
-        GL_NOTEQUAL => a != r,
-        GL_GEQUAL => a >= r,
-        _ => true,
     }
 }

@@ -72,17 +72,18 @@ fn to_unorm8(c: f32) -> u8 {
     (c.clamp(0.0, 1.0) * 255.0 + 0.5) as u8
 }
 
-/// GL's depth comparison of the fragment's depth with the stored one.
-fn compare(func: GLenum, z: f32, stored: f32) -> bool {
+/// GL's comparison functions (the depth test's, §4.1.5, and the alpha test's, §4.1.3):
+/// whether `value` passes against `reference` under `func` (`GL_ALWAYS` for anything else).
+pub(super) fn compare(func: GLenum, value: f32, reference: f32) -> bool {
     match func {
         GL_NEVER => false,
-        GL_EQUAL => z == stored,
-        GL_LEQUAL => z <= stored,
-        GL_GREATER => z > stored,
-        GL_NOTEQUAL => z != stored,
-        GL_GEQUAL => z >= stored,
-        GL_ALWAYS => true,
-        _ => z < stored,
+        GL_LESS => value < reference,
+        GL_EQUAL => value == reference,
+        GL_LEQUAL => value <= reference,
+        GL_GREATER => value > reference,
+        GL_NOTEQUAL => value != reference,
+        GL_GEQUAL => value >= reference,
+        _ => true,
     }
 }
 
