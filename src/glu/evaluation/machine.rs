@@ -8,6 +8,8 @@
 //! printed vertices and normals GLU's to the last digit.
 
 use std::cell::RefCell;
+use std::collections::HashMap;
+use std::hash::{BuildHasherDefault, Hasher};
 
 /// GLU's `MAXORDER`; larger orders are refused before they get here.
 pub(crate) const MAX_ORDER: usize = 24;
@@ -30,6 +32,39 @@ pub(crate) struct PatchMachine {
     partials: bool,
     /// What the last samples worked out, by parameter (see [`Recent`]).
     recent: RefCell<Recent>,
+    /// Every grid line's row sums and coefficients worked out so far (see [`Lines`]).
+    lines: RefCell<Lines>,
+}
+
+/// The row sums and u coefficients of the grid lines a machine's grid blocks have sampled, by
+/// the normalised parameter's bits: a patch's blocks (a trimmed region's rows and columns of
+/// quads) share its grid lines, so each line's work is done once per patch. Grid lines only:
+/// points along the trim curves, each on lines of its own, go through [`Recent`].
+#[derive(Clone, Debug, Default)]
+struct Lines {
+    rows: HashMap<u32, Box<RowSums>, BuildHasherDefault<BitsHasher>>,
+    coefficients: HashMap<u32, Box<UCoefficients>, BuildHasherDefault<BitsHasher>>,
+}
+
+/// A hasher for `f32` bits: one multiplication (Fibonacci hashing), the keys being few and
+/// never adversarial.
+#[derive(Default)]
+struct BitsHasher(u64);
+
+impl Hasher for BitsHasher {
+    fn finish(&self) -> u64 {
+        self.0
+    }
+
+    fn write(&mut self, bytes: &[u8]) {
+        for &b in bytes {
+            self.0 = (self.0.rotate_left(8) ^ u64::from(b)).wrapping_mul(0x9E37_79B9_7F4A_7C15);
+        }
+    }
+
+    fn write_u32(&mut self, v: u32) {
+        self.0 = u64::from(v).wrapping_mul(0x9E37_79B9_7F4A_7C15);
+    }
 }
 
 /// The sums along v of each row of control points (and of their v derivative) at one v: all
@@ -76,7 +111,17 @@ impl PatchMachine {
             return None;
         }
         let points = points[..uorder * vorder * k].iter().map(|&c| c as f32).collect();
-        Some(Self { k, u, v, uorder, vorder, points, partials: true, recent: RefCell::default() })
+        Some(Self {
+            k,
+            u,
+            v,
+            uorder,
+            vorder,
+            points,
+            partials: true,
+            recent: RefCell::default(),
+            lines: RefCell::default(),
+        })
     }
 
     /// The machine, its samples without partials (the values are the same bits).
@@ -109,18 +154,22 @@ impl PatchMachine {
         if self.u.1 == self.u.0 || self.v.1 == self.v.0 {
             return None;
         }
-        let coefficients: Vec<UCoefficients> = us
-            .iter()
-            .map(|&u| {
-                let s = (u - self.u.0) / (self.u.1 - self.u.0);
+        let mut lines = self.lines.borrow_mut();
+        let Lines { rows, coefficients: line_coefficients } = &mut *lines;
+        let normalised = |u: f32| (u - self.u.0) / (self.u.1 - self.u.0);
+        for &u in us {
+            let s = normalised(u);
+            line_coefficients.entry(s.to_bits()).or_insert_with(|| {
                 let (c, d) = coefficients(self.uorder, s);
-                UCoefficients { s: s.to_bits(), c, d }
-            })
-            .collect();
+                Box::new(UCoefficients { s: s.to_bits(), c, d })
+            });
+        }
+        let ucs: Vec<&UCoefficients> = us.iter().map(|&u| &*line_coefficients[&normalised(u).to_bits()]).collect();
         let mut out = Vec::with_capacity(us.len() * vs.len());
         for &v in vs {
-            let rows = self.sums_at((v - self.v.0) / (self.v.1 - self.v.0));
-            out.extend(coefficients.iter().map(|uc| self.combine(&rows, uc)));
+            let t = (v - self.v.0) / (self.v.1 - self.v.0);
+            let sums = rows.entry(t.to_bits()).or_insert_with(|| Box::new(self.sums_at(t)));
+            out.extend(ucs.iter().map(|uc| self.combine(sums, uc)));
         }
         Some(out)
     }
