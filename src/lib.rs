@@ -20,7 +20,7 @@
 //! | [`glu`] | GLU: projections and the NURBS object (sampling, trimming, display modes, callbacks) |
 //! | [`glut`] | GLUT's constants and the state behind its `Gl` methods |
 //! | [`gll`], [`data`] | the textbook's `gll.h` helpers (public API only); demo data (the teapot) |
-//! | [`render`] | drawing a frame: the CPU vertex stage and primitive assembly; PNG; the wgpu [`render::Renderer`] |
+//! | [`render`] | drawing a frame: the CPU vertex stage and primitive assembly; the CPU rasteriser ([`render::soft`], headless pictures with no device); PNG; the wgpu [`render::Renderer`] |
 //! | `gpu` (crate-private) | wgpu: the device and read-back, the one WGSL evaluator, the rasterisers behind `Renderer` |
 //! | `app` | the GLUT-like `App`: a window, or a headless PNG |
 //!
@@ -28,7 +28,8 @@
 //! (`gluNurbsSurface` is `gl.glu_nurbs_surface`), so `Gl` holds GLU's NURBS objects and GLUT's
 //! state and those modules add `impl Gl` blocks. GLU itself reaches GL state only through what
 //! GL offers (calls, queries, the attribute stack), as real GLU does. With
-//! `--no-default-features` the crate is pure CPU Rust with no GPU or windowing dependency.
+//! `--no-default-features` the crate is pure CPU Rust with no GPU or windowing dependency, and
+//! still draws pictures ([`render::soft::render_frame`]).
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 // Numeric kernels index several component arrays in lockstep; iterator chains would hide that.
