@@ -1,6 +1,7 @@
 //! The Bezier pieces of every map of a NURBS curve or surface, and the sub-pieces GLU hands to
 //! `glMap1`/`glMap2` when a map's breakpoints differ from the position map's.
 
+use super::to_bezier::curve_to_bezier;
 use crate::gl::types::GLenum;
 use crate::glu::model::maps::{CurveMap, SurfaceMap};
 use crate::math::bezier::{de_casteljau, split, Vec4};
@@ -15,9 +16,19 @@ pub(crate) struct CurvePieces {
 }
 
 impl CurvePieces {
+    /// The map's pieces as GLU's `Quilt::toBezier` computes them, in `f32` (see
+    /// [`curve_to_bezier`]); the exact decomposition only where GLU's indices would not fit.
     pub fn new(map: &CurveMap) -> Option<Self> {
-        let pieces = decompose_curve(&map.knots, &map.points, map.k, map.order).ok()?;
+        let pieces = glu_pieces(map).or_else(|| decompose_curve(&map.knots, &map.points, map.k, map.order).ok())?;
         (!pieces.is_empty()).then_some(Self { target: map.target, pieces })
+    }
+
+    /// The piece GLU downloads for the span [r0, r1] (`Quilt::select`: the last piece whose
+    /// breakpoints enclose it), its points and its interval.
+    pub fn containing(&self, r0: f64, r1: f64) -> Option<(&[f64], (f64, f64))> {
+        let p = &self.pieces;
+        let k = p.intervals.iter().rposition(|&(a, b)| a <= r0 && r1 <= b)?;
+        Some((p.piece(k)?, p.intervals[k]))
     }
 
     /// The Bezier control points of this map restricted to [r0, r1] (inside one piece).
@@ -36,6 +47,19 @@ impl CurvePieces {
         let (c, d) = p.intervals[k];
         Some(de_casteljau(p.piece(k)?, p.dim, p.order, (u - c) / (d - c)))
     }
+}
+
+/// A curve map's pieces from GLU's `f32` decomposition, widened exactly to `f64`.
+fn glu_pieces(map: &CurveMap) -> Option<BezierPieces<f64>> {
+    let knots: Vec<f32> = map.knots.iter().map(|&k| k as f32).collect();
+    let points: Vec<f32> = map.points.iter().map(|&c| c as f32).collect();
+    let glu = curve_to_bezier(&knots, &points, map.k, map.order)?;
+    Some(BezierPieces {
+        dim: map.k,
+        order: map.order,
+        intervals: glu.breakpoints.windows(2).map(|w| (f64::from(w[0]), f64::from(w[1]))).collect(),
+        points: glu.points.iter().map(|&c| f64::from(c)).collect(),
+    })
 }
 
 /// A surface map decomposed into Bezier patches.
