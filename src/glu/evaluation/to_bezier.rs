@@ -1,5 +1,5 @@
-//! GLU's own conversion of a B-spline into Bezier pieces (libnurbs `tobezier.cc`,
-//! `Quilt::toBezier`), in `f32` and in GLU's order of operations, so that the pieces carry
+//! GLU's own conversion of a B-spline curve or surface into Bezier pieces (libnurbs
+//! `tobezier.cc`, `Quilt::toBezier`, shared by curves, trim curves and surfaces), in `f32` and in GLU's order of operations, so that the pieces carry
 //! GLU's rounding: at the joints of a curve's spans GLU's knot insertion leaves values such as
 //! −1e-8 where an exact (or `f64`) decomposition gives 0, and GLU prints them as "-0.000".
 //!
@@ -213,6 +213,52 @@ pub(crate) fn curve_to_bezier(knots: &[f32], points: &[f32], dim: usize, order: 
     })
 }
 
+/// A surface's Bezier patches as GLU's `Quilt` holds them after `Quilt::toBezier`.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct GluSurfacePatches {
+    /// The breakpoints along u (s) and along v (t).
+    pub breakpoints: (Vec<f32>, Vec<f32>),
+    /// Patch (a, b)'s `uorder × vorder` points of `dim` values at `(a · vpatches + b)`, point
+    /// (i, j) of a patch at `i · vorder + j`.
+    pub points: Vec<f32>,
+}
+
+/// GLU `Quilt::toBezier` for a surface (`Splinespec::transform`): every column of the net
+/// converted along u first, then every row of the result along v; control point (i, j) of the
+/// `nu × nv` net at `(i · nv + j) · dim`.
+pub(crate) fn surface_to_bezier(
+    (uknots, vknots): (&[f32], &[f32]),
+    points: &[f32],
+    dim: usize,
+    (uorder, vorder): (usize, usize),
+) -> Option<GluSurfacePatches> {
+    let (s, t) = (Knotspec::new(uknots, uorder)?, Knotspec::new(vknots, vorder)?);
+    let nv = vknots.len().checked_sub(vorder)?;
+    // Splinespec::layout: a row of the buffer holds every output point along v.
+    let (srows, tcols) = (s.output_points().max(s.inputs), t.output_points().max(t.inputs));
+    let w = tcols * dim;
+    let mut buf = vec![0.0f32; srows * w];
+    for i in 0..s.inputs {
+        let from = ((s.first + i) * nv + t.first) * dim;
+        buf[i * w..i * w + t.inputs * dim].copy_from_slice(points.get(from..from + t.inputs * dim)?);
+    }
+    s.insert(&mut buf, w)?;
+    for row in s.offset..s.output_points() {
+        t.insert(&mut buf[row * w..(row + 1) * w], dim)?;
+    }
+    let mut out = Vec::with_capacity(s.width() * uorder * t.width() * vorder * dim);
+    for a in 0..s.width() {
+        for b in 0..t.width() {
+            for i in 0..uorder {
+                let at = (s.offset + a * uorder + i) * w + (t.offset + b * vorder) * dim;
+                out.extend_from_slice(buf.get(at..at + vorder * dim)?);
+            }
+        }
+    }
+    let values = |k: &Knotspec| k.breakpoints.iter().map(|b| b.value).collect();
+    Some(GluSurfacePatches { breakpoints: (values(&s), values(&t)), points: out })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -248,6 +294,27 @@ mod tests {
         let knots = [0.0, 0.0, 0.0, 1.0, 1.0, 2.5, 3.0, 3.0, 3.0];
         let points: Vec<f32> = (0..6).flat_map(|i| [i as f32, (i * i) as f32, 1.0, 2.0]).collect();
         compare(&knots, &points, 4, 3);
+    }
+
+    #[test]
+    fn a_surface_matches_the_exact_decomposition() {
+        use crate::math::insertion::decompose_surface;
+        use crate::math::{BSplineSurface, KnotVector};
+        let uk = [0.0f32, 0.0, 0.0, 0.0, 1.0, 2.5, 3.0, 3.0, 3.0, 3.0];
+        let vk: Vec<f32> = (0..9).map(|i| i as f32).collect();
+        let (nu, nv, dim) = (6, 6, 3);
+        let points: Vec<f32> = (0..nu * nv * dim).map(|i| ((i * 7) % 11) as f32 - 5.0).collect();
+        let glu = surface_to_bezier((&uk, &vk), &points, dim, (4, 3)).expect("patches");
+        let wide = |v: &[f32]| -> Vec<f64> { v.iter().map(|&x| f64::from(x)).collect() };
+        let (u, v) = (KnotVector::new(wide(&uk)), KnotVector::new(wide(&vk)));
+        let s = BSplineSurface::try_new(dim, 4, 3, u, v, wide(&points)).expect("surface");
+        let exact = decompose_surface(&s).expect("decomposition");
+        assert_eq!(glu.breakpoints.0, [0.0, 1.0, 2.5, 3.0]);
+        assert_eq!(glu.breakpoints.1, [2.0, 3.0, 4.0, 5.0, 6.0]);
+        assert_eq!(glu.points.len(), exact.points.len());
+        for (a, b) in glu.points.iter().zip(&exact.points) {
+            assert!((f64::from(*a) - b).abs() < 1e-4, "{a} vs {b}");
+        }
     }
 
     #[test]
