@@ -3,9 +3,8 @@
 //! `GLU_NURBS_TESSELLATOR` callbacks (`glBegin(...)`, `glNormal3f`, `glVertex3f`, `glEnd()`, 3
 //! decimals, as the Red Book's surfpoints.c), run through gleval and printed the same way:
 //! untrimmed and trimmed surfaces, outlines and curves. The
-//! text must be identical, case by case (curves up to the sign of zero, see
-//! [`without_negative_zero`]; many-patch outlines up to the order of each patch's sides, see
-//! [`sorted_strips`]).
+//! text must be identical, case by case, the sign of zero included (many-patch outlines up to
+//! the order of each patch's sides, see [`sorted_strips`]).
 
 use gleval::prelude::*;
 use std::cell::RefCell;
@@ -295,14 +294,6 @@ fn summary(text: &str) -> String {
     format!("{kinds:?} {vertices} vertices")
 }
 
-/// The one known difference: at the joints of a B-spline curve's Bezier spans GLU's own
-/// `float` knot insertion (`tobezier.cc`) leaves coordinates of −1e-8 or so where gleval's
-/// (in `f64`) gives 0, printed "-0.000" against "0.000". Curves are compared with the sign of
-/// zero ignored; everything else (spans, step counts, parameters, every other digit) must match.
-fn without_negative_zero(text: &str) -> String {
-    text.replace("-0.000", "0.000")
-}
-
 /// The line strips of a printout, sorted: for the outline of a many-patch surface, whose four
 /// sides per patch GLU starts from a side that depends on how its knot splits reordered its list
 /// of arcs (`Subdivider::splitInT`), which gleval does not reproduce (it always starts at the
@@ -325,7 +316,7 @@ fn differences() -> Vec<String> {
         } else if kind == "outline" {
             (run_surface(name, GLU_OUTLINE_PATCH), glu)
         } else {
-            (without_negative_zero(&run_curve(name)), without_negative_zero(&glu))
+            (run_curve(name), glu)
         };
         if ours == glu {
             continue;

@@ -70,8 +70,10 @@ fn render_curve_span(gl: &mut Gl, attributes: &[CurvePieces], pos: &CurvePieces,
 }
 
 /// One `GL_LINE_STRIP` of nu + 1 vertices through the callbacks (GLU `inMapMesh1f`): u on
-/// GLU's `f32` grid, every map evaluated by GLU's curve evaluator ([`CurveMachine`]); the
-/// vertex is the raw k-vector (not divided by w, as GLU does for curves).
+/// GLU's `f32` grid, every map evaluated by GLU's curve evaluator ([`CurveMachine`]) on the
+/// whole Bezier piece holding the span, over the piece's breakpoints (`Quilt::downloadAll`
+/// hands `curvpts` the piece, not a subdivision of it); the vertex is the raw k-vector (not
+/// divided by w, as GLU does for curves).
 fn tessellate_curve_span(
     gl: &mut Gl,
     obj: &mut NurbsObject,
@@ -86,7 +88,8 @@ fn tessellate_curve_span(
         .chain([pos])
         .filter_map(|map| {
             let p = &map.pieces;
-            Some((CurveMachine::new(&map.on(r0, r1)?, p.dim, p.order, (u0, u1))?, callback_kind(map.target)?, p.dim))
+            let (points, (a, b)) = piece_for(map, (r0, r1))?;
+            Some((CurveMachine::new(&points, p.dim, p.order, (a as f32, b as f32))?, callback_kind(map.target)?, p.dim))
         })
         .collect();
     let du = (u1 - u0) / nu as f32;
@@ -99,4 +102,15 @@ fn tessellate_curve_span(
         }
     }
     obj.callbacks.end(gl);
+}
+
+/// The points and interval a map is evaluated on for a span: the piece holding it, or, where
+/// the span crosses one of this map's breakpoints (GLU cuts the spans at every map's
+/// breakpoints, `Quilt::getRange`; gleval only at the position map's), the map restricted to
+/// the span.
+fn piece_for(map: &CurvePieces, (r0, r1): (f64, f64)) -> Option<(Vec<f64>, (f64, f64))> {
+    match map.containing(r0, r1) {
+        Some((points, interval)) => Some((points.to_vec(), interval)),
+        None => Some((map.on(r0, r1)?, (r0, r1))),
+    }
 }

@@ -89,7 +89,7 @@ fn trim_arcs(loops: &[Vec<TrimPiece>]) -> Option<Vec<Vec<TrimArc>>> {
     Some(out)
 }
 
-/// A NURBS trim curve's Bezier arcs (GLU `Quilt::toBezier`; gleval inserts knots in `f64`).
+/// A NURBS trim curve's Bezier arcs (GLU `Quilt::toBezier`, in `f32` as GLU: [`CurvePieces::new`]).
 fn bezier_arcs(map: &CurveMap) -> Option<Vec<TrimArc>> {
     let c = CurvePieces::new(map)?;
     let (dim, order) = (c.pieces.dim, c.pieces.order);

@@ -10,4 +10,5 @@ pub(crate) mod patch_steps;
 pub(crate) mod pieces;
 pub(crate) mod sampling;
 pub(crate) mod surface;
+pub(crate) mod to_bezier;
 pub(crate) mod trim_curves;

@@ -1,6 +1,7 @@
 //! The Bezier pieces of every map of a NURBS curve or surface, and the sub-pieces GLU hands to
 //! `glMap1`/`glMap2` when a map's breakpoints differ from the position map's.
 
+use super::to_bezier::{curve_to_bezier, surface_to_bezier};
 use crate::gl::types::GLenum;
 use crate::glu::model::maps::{CurveMap, SurfaceMap};
 use crate::math::bezier::{de_casteljau, split, Vec4};
@@ -15,9 +16,19 @@ pub(crate) struct CurvePieces {
 }
 
 impl CurvePieces {
+    /// The map's pieces as GLU's `Quilt::toBezier` computes them, in `f32` (see
+    /// [`curve_to_bezier`]); the exact decomposition only where GLU's indices would not fit.
     pub fn new(map: &CurveMap) -> Option<Self> {
-        let pieces = decompose_curve(&map.knots, &map.points, map.k, map.order).ok()?;
+        let pieces = glu_pieces(map).or_else(|| decompose_curve(&map.knots, &map.points, map.k, map.order).ok())?;
         (!pieces.is_empty()).then_some(Self { target: map.target, pieces })
+    }
+
+    /// The piece GLU downloads for the span [r0, r1] (`Quilt::select`: the last piece whose
+    /// breakpoints enclose it), its points and its interval.
+    pub fn containing(&self, r0: f64, r1: f64) -> Option<(&[f64], (f64, f64))> {
+        let p = &self.pieces;
+        let k = p.intervals.iter().rposition(|&(a, b)| a <= r0 && r1 <= b)?;
+        Some((p.piece(k)?, p.intervals[k]))
     }
 
     /// The Bezier control points of this map restricted to [r0, r1] (inside one piece).
@@ -38,6 +49,19 @@ impl CurvePieces {
     }
 }
 
+/// A curve map's pieces from GLU's `f32` decomposition, widened exactly to `f64`.
+fn glu_pieces(map: &CurveMap) -> Option<BezierPieces<f64>> {
+    let knots: Vec<f32> = map.knots.iter().map(|&k| k as f32).collect();
+    let points: Vec<f32> = map.points.iter().map(|&c| c as f32).collect();
+    let glu = curve_to_bezier(&knots, &points, map.k, map.order)?;
+    Some(BezierPieces {
+        dim: map.k,
+        order: map.order,
+        intervals: glu.breakpoints.windows(2).map(|w| (f64::from(w[0]), f64::from(w[1]))).collect(),
+        points: glu.points.iter().map(|&c| f64::from(c)).collect(),
+    })
+}
+
 /// A surface map decomposed into Bezier patches.
 pub(crate) struct SurfacePatches {
     pub target: GLenum,
@@ -45,20 +69,38 @@ pub(crate) struct SurfacePatches {
 }
 
 impl SurfacePatches {
+    /// The map's patches as GLU's `Quilt::toBezier` computes them, in `f32` (see
+    /// [`surface_to_bezier`]); the exact decomposition only where GLU's indices would not fit.
     pub fn new(map: &SurfaceMap) -> Option<Self> {
-        let s = BSplineSurface::try_new(
-            map.k,
-            map.orders.0,
-            map.orders.1,
-            KnotVector::new(map.uknots.clone()),
-            KnotVector::new(map.vknots.clone()),
-            map.points.clone(),
-        )
-        .ok()?;
-        let patches = decompose_surface(&s).ok()?;
+        let patches = glu_patches(map).or_else(|| exact_patches(map))?;
         (!patches.is_empty()).then_some(Self { target: map.target, patches })
     }
+}
 
+/// A surface map's patches from the exact (`f64`) decomposition.
+fn exact_patches(map: &SurfaceMap) -> Option<BezierPatches<f64>> {
+    let (uk, vk) = (KnotVector::new(map.uknots.clone()), KnotVector::new(map.vknots.clone()));
+    let s = BSplineSurface::try_new(map.k, map.orders.0, map.orders.1, uk, vk, map.points.clone()).ok()?;
+    decompose_surface(&s).ok()
+}
+
+/// A surface map's patches from GLU's `f32` decomposition, widened exactly to `f64`.
+fn glu_patches(map: &SurfaceMap) -> Option<BezierPatches<f64>> {
+    let narrow = |v: &[f64]| -> Vec<f32> { v.iter().map(|&x| x as f32).collect() };
+    let (uk, vk, points) = (narrow(&map.uknots), narrow(&map.vknots), narrow(&map.points));
+    let glu = surface_to_bezier((&uk, &vk), &points, map.k, map.orders)?;
+    let intervals = |b: &[f32]| b.windows(2).map(|w| (f64::from(w[0]), f64::from(w[1]))).collect();
+    Some(BezierPatches {
+        dim: map.k,
+        uorder: map.orders.0,
+        vorder: map.orders.1,
+        uintervals: intervals(&glu.breakpoints.0),
+        vintervals: intervals(&glu.breakpoints.1),
+        points: glu.points.iter().map(|&c| f64::from(c)).collect(),
+    })
+}
+
+impl SurfacePatches {
     /// The patch's control points restricted to [u0, u1] × [v0, v1] (inside one patch).
     pub fn on(&self, (u0, u1): (f64, f64), (v0, v1): (f64, f64)) -> Option<Vec<f64>> {
         let p = &self.patches;
