@@ -13,6 +13,7 @@ mod mesa_calls;
 mod properties;
 mod raster_images;
 mod raster_modes;
+mod rasterizers;
 mod robustness;
 mod shaders;
 mod spec_errors;
