@@ -27,6 +27,13 @@ pub(crate) struct SlicedPatch {
 /// Every patch of the surface, u outer, sliced as GLU slices it (bisected first where GLU's
 /// sampling subdivision would, [`leaves`]), or outlined for `GLU_OUTLINE_PATCH`.
 pub(crate) fn slice_surface(obj: &NurbsObject, surface: &Surface) -> Vec<SlicedPatch> {
+    if obj.props.display_mode == GLU_OUTLINE_PATCH {
+        // GLU outlines the patches of its border trim as cut along the knot lines: each
+        // patch's sides in the order the cuts left its arcs.
+        if let Ok(patches) = super::subdivided::slice_trimmed(obj, surface, &[]) {
+            return patches;
+        }
+    }
     let matrix = sampling_matrix(obj);
     let steps = |su: (f32, f32), sv: (f32, f32)| rect_steps(obj, &matrix, surface, su, sv);
     let p = &surface.pos.patches;

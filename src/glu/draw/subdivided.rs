@@ -13,23 +13,22 @@ use crate::glu::model::maps::CurveMap;
 use crate::glu::model::maps::TrimPiece;
 use crate::glu::model::object::NurbsObject;
 
-/// GLU's pieces for the surface trimmed by `loops`, or why not: `Failure::Unsupported` for
-/// `GLU_OUTLINE_PATCH` and regions this port does not slice as GLU yet.
+/// GLU's pieces for the surface trimmed by `loops` (none: the whole domain, GLU's border
+/// trim), sliced, or outlined under `GLU_OUTLINE_PATCH`; or why not: `Failure::Unsupported`
+/// for regions this port does not slice as GLU yet.
 pub(crate) fn slice_trimmed(
     obj: &NurbsObject,
     surface: &Surface,
     loops: &[Vec<TrimPiece>],
 ) -> Result<Vec<SlicedPatch>, Failure> {
-    if obj.props.display_mode == GLU_OUTLINE_PATCH {
-        return Err(Failure::Unsupported);
-    }
     let arcs = trim_arcs(loops).ok_or(Failure::Unsupported)?;
     let matrix = sampling_matrix(obj);
     let steps = |su: (f32, f32), sv: (f32, f32)| rect_steps(obj, &matrix, surface, su, sv);
     let p = &surface.pos.patches;
     let (ubreaks, vbreaks) = (breaks(&p.uintervals), breaks(&p.vintervals));
     let geo_step = find_rate(&ubreaks, &vbreaks, &steps);
-    let setup = Setup { geo_step, ubreaks, vbreaks, steps: &steps, linear: (p.uorder == 2, p.vorder == 2) };
+    let outline = obj.props.display_mode == GLU_OUTLINE_PATCH;
+    let setup = Setup { geo_step, ubreaks, vbreaks, steps: &steps, linear: (p.uorder == 2, p.vorder == 2), outline };
     let patches = subdivide(&arcs, &setup)?;
     let wide = |r: (f32, f32)| (f64::from(r.0), f64::from(r.1));
     Ok(patches

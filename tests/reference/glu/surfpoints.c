@@ -200,6 +200,8 @@ int main(void) {
     surface("hill_path_length_25", HILL, GLU_PATH_LENGTH, 25, 100, 0);
     surface("hill_domain_distance_6", HILL, GLU_DOMAIN_DISTANCE, 50, 6, 0);
     surface("sheet_path_length_60", SHEET, GLU_PATH_LENGTH, 60, 100, 0);
+    trimmed("hillredbook_path_length_25", HILL, REDBOOK, GLU_PATH_LENGTH, 25, 100, 0);
+    trimmed("sheethole_path_length_60", SHEET, HOLE, GLU_PATH_LENGTH, 60, 100, 0);
     display_mode = GLU_FILL;
     curve_case("bspline_path_length_20", 0, GLU_PATH_LENGTH, 20, 100);
     curve_case("bspline_parametric_error_2", 0, GLU_PARAMETRIC_ERROR, 2, 100);

@@ -62,6 +62,8 @@ pub(crate) struct Setup<'a> {
     pub steps: &'a dyn Fn((f32, f32), (f32, f32)) -> [DirectionSteps; 2],
     /// Whether u and v are of order 2.
     pub linear: (bool, bool),
+    /// `GLU_OUTLINE_PATCH`: each patch's loops outlined instead of sliced.
+    pub outline: bool,
 }
 
 /// One Bezier patch's range and the pieces GLU draws on it, in its order.
@@ -102,7 +104,7 @@ pub(crate) fn subdivide(loops: &[Vec<TrimArc>], setup: &Setup) -> Result<Vec<Pat
         patches: Vec::new(),
         unsupported: false,
     };
-    let mut bin = s.initial_bin(loops)?;
+    let mut bin = if loops.is_empty() { s.border_bin() } else { s.initial_bin(loops)? };
     s.split_in_s(&mut bin, 0, setup.ubreaks.len())?;
     if s.unsupported {
         return Err(Failure::Unsupported);
@@ -146,6 +148,48 @@ impl Subdivider<'_> {
             self.monotonize(j, &mut bin);
         }
         Ok(bin)
+    }
+
+    /// GLU `Subdivider::makeBorderTrim`: an untrimmed surface's domain as one loop, bottom,
+    /// right, top, left (counter-clockwise), each side an unsampled line sampled later at its
+    /// patch's steps like a cut (`tessellation`).
+    fn border_bin(&mut self) -> Bin {
+        let (ub, vb) = (&self.setup.ubreaks, &self.setup.vbreaks);
+        let (s0, s1, t0, t1) = (ub[0], ub[ub.len() - 1], vb[0], vb[vb.len() - 1]);
+        let sides = [
+            (Side::Bottom, [[s0, t0], [s1, t0]]),
+            (Side::Right, [[s1, t0], [s1, t1]]),
+            (Side::Top, [[s1, t1], [s0, t1]]),
+            (Side::Left, [[s0, t1], [s0, t0]]),
+        ];
+        let mut bin = Bin::default();
+        let mut last = None;
+        for (side, pts) in sides {
+            let id = self.arcs.add(pts.to_vec(), side, true);
+            bin.add(id);
+            last = Some(self.arcs.append(id, last));
+        }
+        bin
+    }
+
+    /// GLU `Subdivider::outline` with `Slicer::outline`: each loop of the bin from its first
+    /// arc in the bin, walked back through `prev`, every arc a line strip of its points from
+    /// the last.
+    fn outline(&mut self, bin: &Bin) {
+        let arcs = bin.arcs();
+        for &j in &arcs {
+            self.arcs[j].mark = true;
+        }
+        for &j in &arcs {
+            let mut a = j;
+            while self.arcs[a].mark {
+                self.arcs[a].mark = false;
+                if self.arcs[a].pts.len() >= 2 {
+                    self.pieces.push(Piece::Line(self.arcs[a].pts.iter().rev().copied().collect()));
+                }
+                a = self.arcs[a].prev;
+            }
+        }
     }
 
     /// GLU `Arc::isDisconnected`: the arc's start more than 1e-5 from the previous arc's end
@@ -227,6 +271,11 @@ impl Subdivider<'_> {
         }
         let [s, t] = (self.setup.steps)(range.0, range.1);
         self.tessellation(bin, s, t);
+        if self.setup.outline {
+            // GLU outlines a patch before any sampling subdivision.
+            self.outline(bin);
+            return Ok(());
+        }
         if s.needs_split && subdivisions > 0 {
             let param = 1 - param;
             let r = if param == 0 { range.0 } else { range.1 };
