@@ -2,9 +2,8 @@
 //! `tests/reference/glu/surfpoints.c`, which prints what real GLU hands to the
 //! `GLU_NURBS_TESSELLATOR` callbacks (`glBegin(...)`, `glNormal3f`, `glVertex3f`, `glEnd()`, 3
 //! decimals, as the Red Book's surfpoints.c), run through gleval and printed the same way:
-//! untrimmed and trimmed surfaces, outlines and curves. The
-//! text must be identical, case by case, the sign of zero included (many-patch outlines up to
-//! the order of each patch's sides, see [`sorted_strips`]).
+//! untrimmed and trimmed surfaces, outlines (of many patches, and trimmed) and curves. The
+//! text must be identical, case by case, the sign of zero included.
 
 use gleval::prelude::*;
 use std::cell::RefCell;
