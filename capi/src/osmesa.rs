@@ -54,10 +54,9 @@ fn layout(format: GLenum) -> Option<(usize, [Option<usize>; 4])> {
 }
 
 impl Target {
-    /// Copies the canvas into the buffer.
-    fn write_buffer(&self, format: GLenum) {
+    /// Copies `image` (the canvas's picture) into the buffer.
+    fn write_buffer(&self, format: GLenum, image: &Image) {
         let Some((size, places)) = layout(format) else { return };
-        let image = self.canvas.image();
         // SAFETY: as in `read_buffer`; no other reference to the buffer is alive during a GL
         // call (the caller waits for it).
         let buffer = unsafe { std::slice::from_raw_parts_mut(self.buffer, self.width * self.height * size) };
@@ -90,8 +89,9 @@ pub(crate) fn flush_current() -> Option<Image> {
     let frame = ctx.gl.take_frame();
     target.canvas.draw_frame(&frame);
     ctx.gl.recycle_frame(frame);
-    target.write_buffer(format);
-    Some(target.canvas.image())
+    let image = target.canvas.image();
+    target.write_buffer(format, &image);
+    Some(image)
 }
 
 entry! {

@@ -41,8 +41,9 @@ fn packed_pixel_size(type_: GLenum) -> Option<usize> {
     }
 }
 
-/// Bytes per component of a client data type (GL 1.1 table 3.4), `GL_BITMAP` excepted.
-fn type_size(type_: GLenum) -> Option<usize> {
+/// Bytes per component of a client data type (GL 1.1 table 3.4), `GL_BITMAP` excepted: what
+/// unpacking (`glTexImage2D`, `glDrawPixels`) and packing (`glReadPixels`) both read.
+pub(super) fn type_size(type_: GLenum) -> Option<usize> {
     match type_ {
         GL_BYTE | GL_UNSIGNED_BYTE => Some(1),
         GL_SHORT | GL_UNSIGNED_SHORT => Some(2),

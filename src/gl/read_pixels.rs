@@ -13,6 +13,7 @@
 //! `GL_DEPTH_COMPONENT`, `GL_STENCIL_INDEX` or `GL_COLOR_INDEX` is `GL_INVALID_OPERATION`
 //! (Mesa reads its depth and stencil buffers).
 
+use super::binding::type_size;
 use super::consts::*;
 use super::frame::Frame;
 use super::types::*;
@@ -43,16 +44,6 @@ fn format_size(format: GLenum) -> Option<usize> {
         GL_RGBA => Some(4),
         GL_RED | GL_GREEN | GL_BLUE | GL_ALPHA | GL_LUMINANCE | GL_COLOR_INDEX | GL_STENCIL_INDEX
         | GL_DEPTH_COMPONENT => Some(1),
-        _ => None,
-    }
-}
-
-/// Bytes per component of a data type glReadPixels takes (`GL_BITMAP` aside).
-fn type_size(type_: GLenum) -> Option<usize> {
-    match type_ {
-        GL_BYTE | GL_UNSIGNED_BYTE => Some(1),
-        GL_SHORT | GL_UNSIGNED_SHORT => Some(2),
-        GL_INT | GL_UNSIGNED_INT | GL_FLOAT => Some(4),
         _ => None,
     }
 }

@@ -20,6 +20,13 @@ pub(crate) struct Corner {
 }
 
 impl Corner {
+    /// A white corner at (x, y, 0, 1) in clip and eye space alike, for tests.
+    #[cfg(test)]
+    pub fn at(x: f32, y: f32) -> Corner {
+        let p = Vec4::new(x, y, 0.0, 1.0);
+        Corner { clip: p, eye: p, color: Vec4::ONE, tex: Vec4::ZERO, fog: 0.0, depth_offset: 0.0, aa: Vec4::ZERO }
+    }
+
     /// The point a fraction `t` of the way from `self` to `other`, every attribute linear in
     /// clip space (GL 1.1 §2.12: clipped attributes are interpolated so).
     pub fn lerp(self, other: Corner, t: f32) -> Corner {

@@ -70,8 +70,7 @@ mod tests {
     use super::*;
 
     fn at(x: f32, y: f32) -> Corner {
-        let p = Vec4::new(x, y, 0.0, 1.0);
-        Corner { clip: p, eye: p, color: Vec4::ONE, tex: Vec4::ZERO, fog: 0.0, depth_offset: 0.0, aa: Vec4::ZERO }
+        Corner::at(x, y)
     }
 
     #[test]
