@@ -4,7 +4,6 @@
 #[cfg(all(feature = "gpu", feature = "png"))]
 pub use crate::app::App;
 pub use crate::gl::consts::*;
-pub use crate::gl::feedback::*;
 pub use crate::gl::types::*;
 pub use crate::gl::{Frame, Gl, Primitive, Vertex};
 pub use crate::gll;

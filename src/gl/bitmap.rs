@@ -210,7 +210,7 @@ impl Gl {
         });
         let color = self.raster_pos.color.map(|c| c.clamp(0.0, 1.0));
         let fragments: Vec<_> = pixels.map(|p| (p, color)).collect();
-        if !self.feedback_raster_token(super::feedback::GL_BITMAP_TOKEN) {
+        if !self.feedback_raster_token(GL_BITMAP_TOKEN) {
             self.record_fragments(z, &fragments);
         }
         self.advance_raster_pos(call.step.0, call.step.1);
@@ -253,8 +253,7 @@ impl Gl {
             return self.set_error(code);
         }
         let Some(rgba) = rgba else { return self.set_error(GL_INVALID_VALUE) };
-        if !self.raster_pos.valid || self.feedback_raster_token(super::feedback::GL_DRAW_PIXEL_TOKEN) || rgba.is_empty()
-        {
+        if !self.raster_pos.valid || self.feedback_raster_token(GL_DRAW_PIXEL_TOKEN) || rgba.is_empty() {
             return;
         }
         let [xr, yr, z, _] = self.raster_pos.window;

@@ -353,3 +353,558 @@ pub const GL_LINE_STIPPLE_REPEAT: GLenum = 0x0B26;
 pub const GL_POLYGON_OFFSET_FACTOR: GLenum = 0x8038;
 pub const GL_POLYGON_OFFSET_UNITS: GLenum = 0x2A00;
 pub const GL_MAX_CLIP_PLANES: GLenum = 0x0D32;
+
+// GL/gl.h: Vertex Arrays.
+pub const GL_VERTEX_ARRAY: GLenum = 0x8074;
+pub const GL_NORMAL_ARRAY: GLenum = 0x8075;
+pub const GL_COLOR_ARRAY: GLenum = 0x8076;
+pub const GL_INDEX_ARRAY: GLenum = 0x8077;
+pub const GL_TEXTURE_COORD_ARRAY: GLenum = 0x8078;
+pub const GL_EDGE_FLAG_ARRAY: GLenum = 0x8079;
+pub const GL_VERTEX_ARRAY_SIZE: GLenum = 0x807A;
+pub const GL_VERTEX_ARRAY_TYPE: GLenum = 0x807B;
+pub const GL_VERTEX_ARRAY_STRIDE: GLenum = 0x807C;
+pub const GL_NORMAL_ARRAY_TYPE: GLenum = 0x807E;
+pub const GL_NORMAL_ARRAY_STRIDE: GLenum = 0x807F;
+pub const GL_COLOR_ARRAY_SIZE: GLenum = 0x8081;
+pub const GL_COLOR_ARRAY_TYPE: GLenum = 0x8082;
+pub const GL_COLOR_ARRAY_STRIDE: GLenum = 0x8083;
+pub const GL_INDEX_ARRAY_TYPE: GLenum = 0x8085;
+pub const GL_INDEX_ARRAY_STRIDE: GLenum = 0x8086;
+pub const GL_TEXTURE_COORD_ARRAY_SIZE: GLenum = 0x8088;
+pub const GL_TEXTURE_COORD_ARRAY_TYPE: GLenum = 0x8089;
+pub const GL_TEXTURE_COORD_ARRAY_STRIDE: GLenum = 0x808A;
+pub const GL_EDGE_FLAG_ARRAY_STRIDE: GLenum = 0x808C;
+pub const GL_VERTEX_ARRAY_POINTER: GLenum = 0x808E;
+pub const GL_NORMAL_ARRAY_POINTER: GLenum = 0x808F;
+pub const GL_COLOR_ARRAY_POINTER: GLenum = 0x8090;
+pub const GL_INDEX_ARRAY_POINTER: GLenum = 0x8091;
+pub const GL_TEXTURE_COORD_ARRAY_POINTER: GLenum = 0x8092;
+pub const GL_EDGE_FLAG_ARRAY_POINTER: GLenum = 0x8093;
+pub const GL_V2F: GLenum = 0x2A20;
+pub const GL_V3F: GLenum = 0x2A21;
+pub const GL_C4UB_V2F: GLenum = 0x2A22;
+pub const GL_C4UB_V3F: GLenum = 0x2A23;
+pub const GL_C3F_V3F: GLenum = 0x2A24;
+pub const GL_N3F_V3F: GLenum = 0x2A25;
+pub const GL_C4F_N3F_V3F: GLenum = 0x2A26;
+pub const GL_T2F_V3F: GLenum = 0x2A27;
+pub const GL_T4F_V4F: GLenum = 0x2A28;
+pub const GL_T2F_C4UB_V3F: GLenum = 0x2A29;
+pub const GL_T2F_C3F_V3F: GLenum = 0x2A2A;
+pub const GL_T2F_N3F_V3F: GLenum = 0x2A2B;
+pub const GL_T2F_C4F_N3F_V3F: GLenum = 0x2A2C;
+pub const GL_T4F_C4F_N3F_V4F: GLenum = 0x2A2D;
+
+// GL/gl.h: Points.
+pub const GL_POINT_SIZE: GLenum = 0x0B11;
+pub const GL_POINT_SIZE_GRANULARITY: GLenum = 0x0B13;
+pub const GL_POINT_SIZE_RANGE: GLenum = 0x0B12;
+
+// GL/gl.h: Lines.
+pub const GL_LINE_WIDTH: GLenum = 0x0B21;
+pub const GL_LINE_WIDTH_GRANULARITY: GLenum = 0x0B23;
+pub const GL_LINE_WIDTH_RANGE: GLenum = 0x0B22;
+
+// GL/gl.h: Polygons.
+pub const GL_POLYGON_MODE: GLenum = 0x0B40;
+pub const GL_EDGE_FLAG: GLenum = 0x0B43;
+pub const GL_CULL_FACE_MODE: GLenum = 0x0B45;
+pub const GL_FRONT_FACE: GLenum = 0x0B46;
+
+// GL/gl.h: Depth buffer.
+pub const GL_DEPTH_BITS: GLenum = 0x0D56;
+pub const GL_DEPTH_CLEAR_VALUE: GLenum = 0x0B73;
+pub const GL_DEPTH_FUNC: GLenum = 0x0B74;
+pub const GL_DEPTH_WRITEMASK: GLenum = 0x0B72;
+
+// GL/gl.h: Lighting.
+pub const GL_COLOR_INDEXES: GLenum = 0x1603;
+pub const GL_SHADE_MODEL: GLenum = 0x0B54;
+pub const GL_COLOR_MATERIAL_FACE: GLenum = 0x0B55;
+pub const GL_COLOR_MATERIAL_PARAMETER: GLenum = 0x0B56;
+
+// GL/gl.h: Accumulation buffer.
+pub const GL_ACCUM_RED_BITS: GLenum = 0x0D58;
+pub const GL_ACCUM_GREEN_BITS: GLenum = 0x0D59;
+pub const GL_ACCUM_BLUE_BITS: GLenum = 0x0D5A;
+pub const GL_ACCUM_ALPHA_BITS: GLenum = 0x0D5B;
+pub const GL_ACCUM_CLEAR_VALUE: GLenum = 0x0B80;
+pub const GL_ACCUM: GLenum = 0x0100;
+pub const GL_LOAD: GLenum = 0x0101;
+pub const GL_MULT: GLenum = 0x0103;
+pub const GL_RETURN: GLenum = 0x0102;
+
+// GL/gl.h: Alpha testing.
+pub const GL_ALPHA_TEST_REF: GLenum = 0x0BC2;
+pub const GL_ALPHA_TEST_FUNC: GLenum = 0x0BC1;
+
+// GL/gl.h: Blending.
+pub const GL_BLEND_SRC: GLenum = 0x0BE1;
+pub const GL_BLEND_DST: GLenum = 0x0BE0;
+
+// GL/gl.h: Render Mode.
+pub const GL_FEEDBACK: GLenum = 0x1C01;
+pub const GL_RENDER: GLenum = 0x1C00;
+pub const GL_SELECT: GLenum = 0x1C02;
+
+// GL/gl.h: Feedback.
+pub const GL_2D: GLenum = 0x0600;
+pub const GL_3D: GLenum = 0x0601;
+pub const GL_3D_COLOR: GLenum = 0x0602;
+pub const GL_3D_COLOR_TEXTURE: GLenum = 0x0603;
+pub const GL_4D_COLOR_TEXTURE: GLenum = 0x0604;
+pub const GL_POINT_TOKEN: GLenum = 0x0701;
+pub const GL_LINE_TOKEN: GLenum = 0x0702;
+pub const GL_LINE_RESET_TOKEN: GLenum = 0x0707;
+pub const GL_POLYGON_TOKEN: GLenum = 0x0703;
+pub const GL_BITMAP_TOKEN: GLenum = 0x0704;
+pub const GL_DRAW_PIXEL_TOKEN: GLenum = 0x0705;
+pub const GL_COPY_PIXEL_TOKEN: GLenum = 0x0706;
+pub const GL_PASS_THROUGH_TOKEN: GLenum = 0x0700;
+pub const GL_FEEDBACK_BUFFER_POINTER: GLenum = 0x0DF0;
+pub const GL_FEEDBACK_BUFFER_SIZE: GLenum = 0x0DF1;
+pub const GL_FEEDBACK_BUFFER_TYPE: GLenum = 0x0DF2;
+
+// GL/gl.h: Selection.
+pub const GL_SELECTION_BUFFER_POINTER: GLenum = 0x0DF3;
+pub const GL_SELECTION_BUFFER_SIZE: GLenum = 0x0DF4;
+
+// GL/gl.h: Logic Ops.
+pub const GL_LOGIC_OP: GLenum = 0x0BF1;
+pub const GL_INDEX_LOGIC_OP: GLenum = 0x0BF1;
+pub const GL_COLOR_LOGIC_OP: GLenum = 0x0BF2;
+pub const GL_LOGIC_OP_MODE: GLenum = 0x0BF0;
+pub const GL_CLEAR: GLenum = 0x1500;
+pub const GL_SET: GLenum = 0x150F;
+pub const GL_COPY: GLenum = 0x1503;
+pub const GL_COPY_INVERTED: GLenum = 0x150C;
+pub const GL_NOOP: GLenum = 0x1505;
+pub const GL_INVERT: GLenum = 0x150A;
+pub const GL_AND: GLenum = 0x1501;
+pub const GL_NAND: GLenum = 0x150E;
+pub const GL_OR: GLenum = 0x1507;
+pub const GL_NOR: GLenum = 0x1508;
+pub const GL_XOR: GLenum = 0x1506;
+pub const GL_EQUIV: GLenum = 0x1509;
+pub const GL_AND_REVERSE: GLenum = 0x1502;
+pub const GL_AND_INVERTED: GLenum = 0x1504;
+pub const GL_OR_REVERSE: GLenum = 0x150B;
+pub const GL_OR_INVERTED: GLenum = 0x150D;
+
+// GL/gl.h: Stencil.
+pub const GL_STENCIL_BITS: GLenum = 0x0D57;
+pub const GL_STENCIL_TEST: GLenum = 0x0B90;
+pub const GL_STENCIL_CLEAR_VALUE: GLenum = 0x0B91;
+pub const GL_STENCIL_FUNC: GLenum = 0x0B92;
+pub const GL_STENCIL_VALUE_MASK: GLenum = 0x0B93;
+pub const GL_STENCIL_FAIL: GLenum = 0x0B94;
+pub const GL_STENCIL_PASS_DEPTH_FAIL: GLenum = 0x0B95;
+pub const GL_STENCIL_PASS_DEPTH_PASS: GLenum = 0x0B96;
+pub const GL_STENCIL_REF: GLenum = 0x0B97;
+pub const GL_STENCIL_WRITEMASK: GLenum = 0x0B98;
+pub const GL_KEEP: GLenum = 0x1E00;
+pub const GL_INCR: GLenum = 0x1E02;
+pub const GL_DECR: GLenum = 0x1E03;
+
+// GL/gl.h: Buffers, Pixel Drawing/Reading.
+pub const GL_NONE: GLenum = 0;
+pub const GL_LEFT: GLenum = 0x0406;
+pub const GL_RIGHT: GLenum = 0x0407;
+pub const GL_FRONT_LEFT: GLenum = 0x0400;
+pub const GL_FRONT_RIGHT: GLenum = 0x0401;
+pub const GL_BACK_LEFT: GLenum = 0x0402;
+pub const GL_BACK_RIGHT: GLenum = 0x0403;
+pub const GL_AUX0: GLenum = 0x0409;
+pub const GL_AUX1: GLenum = 0x040A;
+pub const GL_AUX2: GLenum = 0x040B;
+pub const GL_AUX3: GLenum = 0x040C;
+pub const GL_ALPHA_BITS: GLenum = 0x0D55;
+pub const GL_RED_BITS: GLenum = 0x0D52;
+pub const GL_GREEN_BITS: GLenum = 0x0D53;
+pub const GL_BLUE_BITS: GLenum = 0x0D54;
+pub const GL_INDEX_BITS: GLenum = 0x0D51;
+pub const GL_SUBPIXEL_BITS: GLenum = 0x0D50;
+pub const GL_AUX_BUFFERS: GLenum = 0x0C00;
+pub const GL_READ_BUFFER: GLenum = 0x0C02;
+pub const GL_DRAW_BUFFER: GLenum = 0x0C01;
+pub const GL_DOUBLEBUFFER: GLenum = 0x0C32;
+pub const GL_STEREO: GLenum = 0x0C33;
+pub const GL_COLOR: GLenum = 0x1800;
+pub const GL_DEPTH: GLenum = 0x1801;
+pub const GL_STENCIL: GLenum = 0x1802;
+
+// GL/gl.h: Implementation limits.
+pub const GL_MAX_LIGHTS: GLenum = 0x0D31;
+pub const GL_MAX_PIXEL_MAP_TABLE: GLenum = 0x0D34;
+pub const GL_MAX_ATTRIB_STACK_DEPTH: GLenum = 0x0D35;
+pub const GL_MAX_MODELVIEW_STACK_DEPTH: GLenum = 0x0D36;
+pub const GL_MAX_NAME_STACK_DEPTH: GLenum = 0x0D37;
+pub const GL_MAX_PROJECTION_STACK_DEPTH: GLenum = 0x0D38;
+pub const GL_MAX_TEXTURE_STACK_DEPTH: GLenum = 0x0D39;
+pub const GL_MAX_VIEWPORT_DIMS: GLenum = 0x0D3A;
+
+// GL/gl.h: Gets.
+pub const GL_ATTRIB_STACK_DEPTH: GLenum = 0x0BB0;
+pub const GL_COLOR_CLEAR_VALUE: GLenum = 0x0C22;
+pub const GL_COLOR_WRITEMASK: GLenum = 0x0C23;
+pub const GL_CURRENT_INDEX: GLenum = 0x0B01;
+pub const GL_INDEX_CLEAR_VALUE: GLenum = 0x0C20;
+pub const GL_INDEX_MODE: GLenum = 0x0C30;
+pub const GL_INDEX_WRITEMASK: GLenum = 0x0C21;
+pub const GL_MODELVIEW_STACK_DEPTH: GLenum = 0x0BA3;
+pub const GL_NAME_STACK_DEPTH: GLenum = 0x0D70;
+pub const GL_PROJECTION_STACK_DEPTH: GLenum = 0x0BA4;
+pub const GL_RENDER_MODE: GLenum = 0x0C40;
+pub const GL_RGBA_MODE: GLenum = 0x0C31;
+pub const GL_TEXTURE_MATRIX: GLenum = 0x0BA8;
+pub const GL_TEXTURE_STACK_DEPTH: GLenum = 0x0BA5;
+
+// GL/gl.h: Scissor box.
+pub const GL_SCISSOR_BOX: GLenum = 0x0C10;
+
+// GL/gl.h: Pixel Mode / Transfer.
+pub const GL_MAP_COLOR: GLenum = 0x0D10;
+pub const GL_MAP_STENCIL: GLenum = 0x0D11;
+pub const GL_INDEX_SHIFT: GLenum = 0x0D12;
+pub const GL_INDEX_OFFSET: GLenum = 0x0D13;
+pub const GL_RED_SCALE: GLenum = 0x0D14;
+pub const GL_RED_BIAS: GLenum = 0x0D15;
+pub const GL_GREEN_SCALE: GLenum = 0x0D18;
+pub const GL_GREEN_BIAS: GLenum = 0x0D19;
+pub const GL_BLUE_SCALE: GLenum = 0x0D1A;
+pub const GL_BLUE_BIAS: GLenum = 0x0D1B;
+pub const GL_ALPHA_SCALE: GLenum = 0x0D1C;
+pub const GL_ALPHA_BIAS: GLenum = 0x0D1D;
+pub const GL_DEPTH_SCALE: GLenum = 0x0D1E;
+pub const GL_DEPTH_BIAS: GLenum = 0x0D1F;
+pub const GL_PIXEL_MAP_S_TO_S_SIZE: GLenum = 0x0CB1;
+pub const GL_PIXEL_MAP_I_TO_I_SIZE: GLenum = 0x0CB0;
+pub const GL_PIXEL_MAP_I_TO_R_SIZE: GLenum = 0x0CB2;
+pub const GL_PIXEL_MAP_I_TO_G_SIZE: GLenum = 0x0CB3;
+pub const GL_PIXEL_MAP_I_TO_B_SIZE: GLenum = 0x0CB4;
+pub const GL_PIXEL_MAP_I_TO_A_SIZE: GLenum = 0x0CB5;
+pub const GL_PIXEL_MAP_R_TO_R_SIZE: GLenum = 0x0CB6;
+pub const GL_PIXEL_MAP_G_TO_G_SIZE: GLenum = 0x0CB7;
+pub const GL_PIXEL_MAP_B_TO_B_SIZE: GLenum = 0x0CB8;
+pub const GL_PIXEL_MAP_A_TO_A_SIZE: GLenum = 0x0CB9;
+pub const GL_PIXEL_MAP_S_TO_S: GLenum = 0x0C71;
+pub const GL_PIXEL_MAP_I_TO_I: GLenum = 0x0C70;
+pub const GL_PIXEL_MAP_I_TO_R: GLenum = 0x0C72;
+pub const GL_PIXEL_MAP_I_TO_G: GLenum = 0x0C73;
+pub const GL_PIXEL_MAP_I_TO_B: GLenum = 0x0C74;
+pub const GL_PIXEL_MAP_I_TO_A: GLenum = 0x0C75;
+pub const GL_PIXEL_MAP_R_TO_R: GLenum = 0x0C76;
+pub const GL_PIXEL_MAP_G_TO_G: GLenum = 0x0C77;
+pub const GL_PIXEL_MAP_B_TO_B: GLenum = 0x0C78;
+pub const GL_PIXEL_MAP_A_TO_A: GLenum = 0x0C79;
+pub const GL_ZOOM_X: GLenum = 0x0D16;
+pub const GL_ZOOM_Y: GLenum = 0x0D17;
+
+// GL/gl.h: Texture mapping.
+pub const GL_TEXTURE_BORDER_COLOR: GLenum = 0x1004;
+pub const GL_TEXTURE_WIDTH: GLenum = 0x1000;
+pub const GL_TEXTURE_HEIGHT: GLenum = 0x1001;
+pub const GL_TEXTURE_BORDER: GLenum = 0x1005;
+pub const GL_TEXTURE_COMPONENTS: GLenum = 0x1003;
+pub const GL_TEXTURE_RED_SIZE: GLenum = 0x805C;
+pub const GL_TEXTURE_GREEN_SIZE: GLenum = 0x805D;
+pub const GL_TEXTURE_BLUE_SIZE: GLenum = 0x805E;
+pub const GL_TEXTURE_ALPHA_SIZE: GLenum = 0x805F;
+pub const GL_TEXTURE_LUMINANCE_SIZE: GLenum = 0x8060;
+pub const GL_TEXTURE_INTENSITY_SIZE: GLenum = 0x8061;
+
+// GL/gl.h: glPush/PopAttrib bits.
+pub const GL_PIXEL_MODE_BIT: GLenum = 0x00000020;
+pub const GL_SCISSOR_BIT: GLenum = 0x00080000;
+
+// GL/gl.h: OpenGL 1.1.
+pub const GL_PROXY_TEXTURE_1D: GLenum = 0x8063;
+pub const GL_PROXY_TEXTURE_2D: GLenum = 0x8064;
+pub const GL_TEXTURE_PRIORITY: GLenum = 0x8066;
+pub const GL_TEXTURE_RESIDENT: GLenum = 0x8067;
+pub const GL_TEXTURE_INTERNAL_FORMAT: GLenum = 0x1003;
+pub const GL_ALPHA4: GLenum = 0x803B;
+pub const GL_ALPHA12: GLenum = 0x803D;
+pub const GL_ALPHA16: GLenum = 0x803E;
+pub const GL_LUMINANCE4: GLenum = 0x803F;
+pub const GL_LUMINANCE12: GLenum = 0x8041;
+pub const GL_LUMINANCE16: GLenum = 0x8042;
+pub const GL_LUMINANCE4_ALPHA4: GLenum = 0x8043;
+pub const GL_LUMINANCE6_ALPHA2: GLenum = 0x8044;
+pub const GL_LUMINANCE12_ALPHA4: GLenum = 0x8046;
+pub const GL_LUMINANCE12_ALPHA12: GLenum = 0x8047;
+pub const GL_LUMINANCE16_ALPHA16: GLenum = 0x8048;
+pub const GL_INTENSITY: GLenum = 0x8049;
+pub const GL_INTENSITY4: GLenum = 0x804A;
+pub const GL_INTENSITY8: GLenum = 0x804B;
+pub const GL_INTENSITY12: GLenum = 0x804C;
+pub const GL_INTENSITY16: GLenum = 0x804D;
+pub const GL_R3_G3_B2: GLenum = 0x2A10;
+pub const GL_RGB4: GLenum = 0x804F;
+pub const GL_RGB5: GLenum = 0x8050;
+pub const GL_RGB10: GLenum = 0x8052;
+pub const GL_RGB12: GLenum = 0x8053;
+pub const GL_RGB16: GLenum = 0x8054;
+pub const GL_RGBA2: GLenum = 0x8055;
+pub const GL_RGBA4: GLenum = 0x8056;
+pub const GL_RGB5_A1: GLenum = 0x8057;
+pub const GL_RGB10_A2: GLenum = 0x8059;
+pub const GL_RGBA12: GLenum = 0x805A;
+pub const GL_RGBA16: GLenum = 0x805B;
+pub const GL_ALL_CLIENT_ATTRIB_BITS: GLenum = 0xFFFFFFFF;
+
+// GL/gl.h: OpenGL 1.2.
+pub const GL_MAX_ELEMENTS_VERTICES: GLenum = 0x80E8;
+pub const GL_MAX_ELEMENTS_INDICES: GLenum = 0x80E9;
+pub const GL_LIGHT_MODEL_COLOR_CONTROL: GLenum = 0x81F8;
+pub const GL_SINGLE_COLOR: GLenum = 0x81F9;
+pub const GL_SEPARATE_SPECULAR_COLOR: GLenum = 0x81FA;
+pub const GL_TEXTURE_MIN_LOD: GLenum = 0x813A;
+pub const GL_TEXTURE_MAX_LOD: GLenum = 0x813B;
+pub const GL_TEXTURE_BASE_LEVEL: GLenum = 0x813C;
+pub const GL_TEXTURE_MAX_LEVEL: GLenum = 0x813D;
+pub const GL_SMOOTH_POINT_SIZE_RANGE: GLenum = 0x0B12;
+pub const GL_SMOOTH_POINT_SIZE_GRANULARITY: GLenum = 0x0B13;
+pub const GL_SMOOTH_LINE_WIDTH_RANGE: GLenum = 0x0B22;
+pub const GL_SMOOTH_LINE_WIDTH_GRANULARITY: GLenum = 0x0B23;
+pub const GL_ALIASED_POINT_SIZE_RANGE: GLenum = 0x846D;
+pub const GL_ALIASED_LINE_WIDTH_RANGE: GLenum = 0x846E;
+pub const GL_PACK_SKIP_IMAGES: GLenum = 0x806B;
+pub const GL_PACK_IMAGE_HEIGHT: GLenum = 0x806C;
+pub const GL_UNPACK_SKIP_IMAGES: GLenum = 0x806D;
+pub const GL_UNPACK_IMAGE_HEIGHT: GLenum = 0x806E;
+pub const GL_TEXTURE_3D: GLenum = 0x806F;
+pub const GL_PROXY_TEXTURE_3D: GLenum = 0x8070;
+pub const GL_TEXTURE_DEPTH: GLenum = 0x8071;
+pub const GL_TEXTURE_WRAP_R: GLenum = 0x8072;
+pub const GL_MAX_3D_TEXTURE_SIZE: GLenum = 0x8073;
+pub const GL_TEXTURE_BINDING_3D: GLenum = 0x806A;
+
+// GL/gl.h: GL_ARB_imaging.
+pub const GL_CONSTANT_COLOR: GLenum = 0x8001;
+pub const GL_ONE_MINUS_CONSTANT_COLOR: GLenum = 0x8002;
+pub const GL_CONSTANT_ALPHA: GLenum = 0x8003;
+pub const GL_ONE_MINUS_CONSTANT_ALPHA: GLenum = 0x8004;
+pub const GL_COLOR_TABLE: GLenum = 0x80D0;
+pub const GL_POST_CONVOLUTION_COLOR_TABLE: GLenum = 0x80D1;
+pub const GL_POST_COLOR_MATRIX_COLOR_TABLE: GLenum = 0x80D2;
+pub const GL_PROXY_COLOR_TABLE: GLenum = 0x80D3;
+pub const GL_PROXY_POST_CONVOLUTION_COLOR_TABLE: GLenum = 0x80D4;
+pub const GL_PROXY_POST_COLOR_MATRIX_COLOR_TABLE: GLenum = 0x80D5;
+pub const GL_COLOR_TABLE_SCALE: GLenum = 0x80D6;
+pub const GL_COLOR_TABLE_BIAS: GLenum = 0x80D7;
+pub const GL_COLOR_TABLE_FORMAT: GLenum = 0x80D8;
+pub const GL_COLOR_TABLE_WIDTH: GLenum = 0x80D9;
+pub const GL_COLOR_TABLE_RED_SIZE: GLenum = 0x80DA;
+pub const GL_COLOR_TABLE_GREEN_SIZE: GLenum = 0x80DB;
+pub const GL_COLOR_TABLE_BLUE_SIZE: GLenum = 0x80DC;
+pub const GL_COLOR_TABLE_ALPHA_SIZE: GLenum = 0x80DD;
+pub const GL_COLOR_TABLE_LUMINANCE_SIZE: GLenum = 0x80DE;
+pub const GL_COLOR_TABLE_INTENSITY_SIZE: GLenum = 0x80DF;
+pub const GL_CONVOLUTION_1D: GLenum = 0x8010;
+pub const GL_CONVOLUTION_2D: GLenum = 0x8011;
+pub const GL_SEPARABLE_2D: GLenum = 0x8012;
+pub const GL_CONVOLUTION_BORDER_MODE: GLenum = 0x8013;
+pub const GL_CONVOLUTION_FILTER_SCALE: GLenum = 0x8014;
+pub const GL_CONVOLUTION_FILTER_BIAS: GLenum = 0x8015;
+pub const GL_REDUCE: GLenum = 0x8016;
+pub const GL_CONVOLUTION_FORMAT: GLenum = 0x8017;
+pub const GL_CONVOLUTION_WIDTH: GLenum = 0x8018;
+pub const GL_CONVOLUTION_HEIGHT: GLenum = 0x8019;
+pub const GL_MAX_CONVOLUTION_WIDTH: GLenum = 0x801A;
+pub const GL_MAX_CONVOLUTION_HEIGHT: GLenum = 0x801B;
+pub const GL_POST_CONVOLUTION_RED_SCALE: GLenum = 0x801C;
+pub const GL_POST_CONVOLUTION_GREEN_SCALE: GLenum = 0x801D;
+pub const GL_POST_CONVOLUTION_BLUE_SCALE: GLenum = 0x801E;
+pub const GL_POST_CONVOLUTION_ALPHA_SCALE: GLenum = 0x801F;
+pub const GL_POST_CONVOLUTION_RED_BIAS: GLenum = 0x8020;
+pub const GL_POST_CONVOLUTION_GREEN_BIAS: GLenum = 0x8021;
+pub const GL_POST_CONVOLUTION_BLUE_BIAS: GLenum = 0x8022;
+pub const GL_POST_CONVOLUTION_ALPHA_BIAS: GLenum = 0x8023;
+pub const GL_CONSTANT_BORDER: GLenum = 0x8151;
+pub const GL_REPLICATE_BORDER: GLenum = 0x8153;
+pub const GL_CONVOLUTION_BORDER_COLOR: GLenum = 0x8154;
+pub const GL_COLOR_MATRIX: GLenum = 0x80B1;
+pub const GL_COLOR_MATRIX_STACK_DEPTH: GLenum = 0x80B2;
+pub const GL_MAX_COLOR_MATRIX_STACK_DEPTH: GLenum = 0x80B3;
+pub const GL_POST_COLOR_MATRIX_RED_SCALE: GLenum = 0x80B4;
+pub const GL_POST_COLOR_MATRIX_GREEN_SCALE: GLenum = 0x80B5;
+pub const GL_POST_COLOR_MATRIX_BLUE_SCALE: GLenum = 0x80B6;
+pub const GL_POST_COLOR_MATRIX_ALPHA_SCALE: GLenum = 0x80B7;
+pub const GL_POST_COLOR_MATRIX_RED_BIAS: GLenum = 0x80B8;
+pub const GL_POST_COLOR_MATRIX_GREEN_BIAS: GLenum = 0x80B9;
+pub const GL_POST_COLOR_MATRIX_BLUE_BIAS: GLenum = 0x80BA;
+pub const GL_POST_COLOR_MATRIX_ALPHA_BIAS: GLenum = 0x80BB;
+pub const GL_HISTOGRAM: GLenum = 0x8024;
+pub const GL_PROXY_HISTOGRAM: GLenum = 0x8025;
+pub const GL_HISTOGRAM_WIDTH: GLenum = 0x8026;
+pub const GL_HISTOGRAM_FORMAT: GLenum = 0x8027;
+pub const GL_HISTOGRAM_RED_SIZE: GLenum = 0x8028;
+pub const GL_HISTOGRAM_GREEN_SIZE: GLenum = 0x8029;
+pub const GL_HISTOGRAM_BLUE_SIZE: GLenum = 0x802A;
+pub const GL_HISTOGRAM_ALPHA_SIZE: GLenum = 0x802B;
+pub const GL_HISTOGRAM_LUMINANCE_SIZE: GLenum = 0x802C;
+pub const GL_HISTOGRAM_SINK: GLenum = 0x802D;
+pub const GL_MINMAX: GLenum = 0x802E;
+pub const GL_MINMAX_FORMAT: GLenum = 0x802F;
+pub const GL_MINMAX_SINK: GLenum = 0x8030;
+pub const GL_TABLE_TOO_LARGE: GLenum = 0x8031;
+pub const GL_BLEND_EQUATION: GLenum = 0x8009;
+pub const GL_MIN: GLenum = 0x8007;
+pub const GL_MAX: GLenum = 0x8008;
+pub const GL_FUNC_ADD: GLenum = 0x8006;
+pub const GL_FUNC_SUBTRACT: GLenum = 0x800A;
+pub const GL_FUNC_REVERSE_SUBTRACT: GLenum = 0x800B;
+pub const GL_BLEND_COLOR: GLenum = 0x8005;
+
+// GL/gl.h: multitexture.
+pub const GL_TEXTURE2: GLenum = 0x84C2;
+pub const GL_TEXTURE3: GLenum = 0x84C3;
+pub const GL_TEXTURE4: GLenum = 0x84C4;
+pub const GL_TEXTURE5: GLenum = 0x84C5;
+pub const GL_TEXTURE6: GLenum = 0x84C6;
+pub const GL_TEXTURE7: GLenum = 0x84C7;
+pub const GL_TEXTURE8: GLenum = 0x84C8;
+pub const GL_TEXTURE9: GLenum = 0x84C9;
+pub const GL_TEXTURE10: GLenum = 0x84CA;
+pub const GL_TEXTURE11: GLenum = 0x84CB;
+pub const GL_TEXTURE12: GLenum = 0x84CC;
+pub const GL_TEXTURE13: GLenum = 0x84CD;
+pub const GL_TEXTURE14: GLenum = 0x84CE;
+pub const GL_TEXTURE15: GLenum = 0x84CF;
+pub const GL_TEXTURE16: GLenum = 0x84D0;
+pub const GL_TEXTURE17: GLenum = 0x84D1;
+pub const GL_TEXTURE18: GLenum = 0x84D2;
+pub const GL_TEXTURE19: GLenum = 0x84D3;
+pub const GL_TEXTURE20: GLenum = 0x84D4;
+pub const GL_TEXTURE21: GLenum = 0x84D5;
+pub const GL_TEXTURE22: GLenum = 0x84D6;
+pub const GL_TEXTURE23: GLenum = 0x84D7;
+pub const GL_TEXTURE24: GLenum = 0x84D8;
+pub const GL_TEXTURE25: GLenum = 0x84D9;
+pub const GL_TEXTURE26: GLenum = 0x84DA;
+pub const GL_TEXTURE27: GLenum = 0x84DB;
+pub const GL_TEXTURE28: GLenum = 0x84DC;
+pub const GL_TEXTURE29: GLenum = 0x84DD;
+pub const GL_TEXTURE30: GLenum = 0x84DE;
+pub const GL_ACTIVE_TEXTURE: GLenum = 0x84E0;
+pub const GL_CLIENT_ACTIVE_TEXTURE: GLenum = 0x84E1;
+pub const GL_MAX_TEXTURE_UNITS: GLenum = 0x84E2;
+
+// GL/gl.h: texture_cube_map.
+pub const GL_TEXTURE_CUBE_MAP: GLenum = 0x8513;
+pub const GL_TEXTURE_BINDING_CUBE_MAP: GLenum = 0x8514;
+pub const GL_TEXTURE_CUBE_MAP_POSITIVE_X: GLenum = 0x8515;
+pub const GL_TEXTURE_CUBE_MAP_NEGATIVE_X: GLenum = 0x8516;
+pub const GL_TEXTURE_CUBE_MAP_POSITIVE_Y: GLenum = 0x8517;
+pub const GL_TEXTURE_CUBE_MAP_NEGATIVE_Y: GLenum = 0x8518;
+pub const GL_TEXTURE_CUBE_MAP_POSITIVE_Z: GLenum = 0x8519;
+pub const GL_TEXTURE_CUBE_MAP_NEGATIVE_Z: GLenum = 0x851A;
+pub const GL_PROXY_TEXTURE_CUBE_MAP: GLenum = 0x851B;
+pub const GL_MAX_CUBE_MAP_TEXTURE_SIZE: GLenum = 0x851C;
+
+// GL/gl.h: texture_compression.
+pub const GL_COMPRESSED_ALPHA: GLenum = 0x84E9;
+pub const GL_COMPRESSED_LUMINANCE: GLenum = 0x84EA;
+pub const GL_COMPRESSED_LUMINANCE_ALPHA: GLenum = 0x84EB;
+pub const GL_COMPRESSED_INTENSITY: GLenum = 0x84EC;
+pub const GL_COMPRESSED_RGB: GLenum = 0x84ED;
+pub const GL_COMPRESSED_RGBA: GLenum = 0x84EE;
+pub const GL_TEXTURE_COMPRESSION_HINT: GLenum = 0x84EF;
+pub const GL_TEXTURE_COMPRESSED_IMAGE_SIZE: GLenum = 0x86A0;
+pub const GL_TEXTURE_COMPRESSED: GLenum = 0x86A1;
+pub const GL_NUM_COMPRESSED_TEXTURE_FORMATS: GLenum = 0x86A2;
+pub const GL_COMPRESSED_TEXTURE_FORMATS: GLenum = 0x86A3;
+
+// GL/gl.h: multisample.
+pub const GL_SAMPLE_ALPHA_TO_COVERAGE: GLenum = 0x809E;
+pub const GL_SAMPLE_ALPHA_TO_ONE: GLenum = 0x809F;
+pub const GL_SAMPLE_COVERAGE: GLenum = 0x80A0;
+pub const GL_SAMPLE_BUFFERS: GLenum = 0x80A8;
+pub const GL_SAMPLES: GLenum = 0x80A9;
+pub const GL_SAMPLE_COVERAGE_VALUE: GLenum = 0x80AA;
+pub const GL_SAMPLE_COVERAGE_INVERT: GLenum = 0x80AB;
+pub const GL_MULTISAMPLE_BIT: GLenum = 0x20000000;
+
+// GL/gl.h: transpose_matrix.
+pub const GL_TRANSPOSE_MODELVIEW_MATRIX: GLenum = 0x84E3;
+pub const GL_TRANSPOSE_PROJECTION_MATRIX: GLenum = 0x84E4;
+pub const GL_TRANSPOSE_TEXTURE_MATRIX: GLenum = 0x84E5;
+pub const GL_TRANSPOSE_COLOR_MATRIX: GLenum = 0x84E6;
+
+// GL/gl.h: texture_env_combine.
+pub const GL_COMBINE: GLenum = 0x8570;
+pub const GL_COMBINE_RGB: GLenum = 0x8571;
+pub const GL_COMBINE_ALPHA: GLenum = 0x8572;
+pub const GL_SOURCE0_RGB: GLenum = 0x8580;
+pub const GL_SOURCE1_RGB: GLenum = 0x8581;
+pub const GL_SOURCE2_RGB: GLenum = 0x8582;
+pub const GL_SOURCE0_ALPHA: GLenum = 0x8588;
+pub const GL_SOURCE1_ALPHA: GLenum = 0x8589;
+pub const GL_SOURCE2_ALPHA: GLenum = 0x858A;
+pub const GL_OPERAND0_RGB: GLenum = 0x8590;
+pub const GL_OPERAND1_RGB: GLenum = 0x8591;
+pub const GL_OPERAND2_RGB: GLenum = 0x8592;
+pub const GL_OPERAND0_ALPHA: GLenum = 0x8598;
+pub const GL_OPERAND1_ALPHA: GLenum = 0x8599;
+pub const GL_OPERAND2_ALPHA: GLenum = 0x859A;
+pub const GL_RGB_SCALE: GLenum = 0x8573;
+pub const GL_ADD_SIGNED: GLenum = 0x8574;
+pub const GL_INTERPOLATE: GLenum = 0x8575;
+pub const GL_SUBTRACT: GLenum = 0x84E7;
+pub const GL_CONSTANT: GLenum = 0x8576;
+pub const GL_PRIMARY_COLOR: GLenum = 0x8577;
+pub const GL_PREVIOUS: GLenum = 0x8578;
+
+// GL/gl.h: texture_env_dot3.
+pub const GL_DOT3_RGB: GLenum = 0x86AE;
+pub const GL_DOT3_RGBA: GLenum = 0x86AF;
+
+// GL/gl.h: texture_border_clamp.
+pub const GL_CLAMP_TO_BORDER: GLenum = 0x812D;
+
+// GL/gl.h: GL_ARB_multitexture (ARB extension 1 and OpenGL 1.2.1).
+pub const GL_TEXTURE0_ARB: GLenum = 0x84C0;
+pub const GL_TEXTURE1_ARB: GLenum = 0x84C1;
+pub const GL_TEXTURE2_ARB: GLenum = 0x84C2;
+pub const GL_TEXTURE3_ARB: GLenum = 0x84C3;
+pub const GL_TEXTURE4_ARB: GLenum = 0x84C4;
+pub const GL_TEXTURE5_ARB: GLenum = 0x84C5;
+pub const GL_TEXTURE6_ARB: GLenum = 0x84C6;
+pub const GL_TEXTURE7_ARB: GLenum = 0x84C7;
+pub const GL_TEXTURE8_ARB: GLenum = 0x84C8;
+pub const GL_TEXTURE9_ARB: GLenum = 0x84C9;
+pub const GL_TEXTURE10_ARB: GLenum = 0x84CA;
+pub const GL_TEXTURE11_ARB: GLenum = 0x84CB;
+pub const GL_TEXTURE12_ARB: GLenum = 0x84CC;
+pub const GL_TEXTURE13_ARB: GLenum = 0x84CD;
+pub const GL_TEXTURE14_ARB: GLenum = 0x84CE;
+pub const GL_TEXTURE15_ARB: GLenum = 0x84CF;
+pub const GL_TEXTURE16_ARB: GLenum = 0x84D0;
+pub const GL_TEXTURE17_ARB: GLenum = 0x84D1;
+pub const GL_TEXTURE18_ARB: GLenum = 0x84D2;
+pub const GL_TEXTURE19_ARB: GLenum = 0x84D3;
+pub const GL_TEXTURE20_ARB: GLenum = 0x84D4;
+pub const GL_TEXTURE21_ARB: GLenum = 0x84D5;
+pub const GL_TEXTURE22_ARB: GLenum = 0x84D6;
+pub const GL_TEXTURE23_ARB: GLenum = 0x84D7;
+pub const GL_TEXTURE24_ARB: GLenum = 0x84D8;
+pub const GL_TEXTURE25_ARB: GLenum = 0x84D9;
+pub const GL_TEXTURE26_ARB: GLenum = 0x84DA;
+pub const GL_TEXTURE27_ARB: GLenum = 0x84DB;
+pub const GL_TEXTURE28_ARB: GLenum = 0x84DC;
+pub const GL_TEXTURE29_ARB: GLenum = 0x84DD;
+pub const GL_TEXTURE30_ARB: GLenum = 0x84DE;
+pub const GL_TEXTURE31_ARB: GLenum = 0x84DF;
+pub const GL_ACTIVE_TEXTURE_ARB: GLenum = 0x84E0;
+pub const GL_CLIENT_ACTIVE_TEXTURE_ARB: GLenum = 0x84E1;
+pub const GL_MAX_TEXTURE_UNITS_ARB: GLenum = 0x84E2;
+
+// GL/gl.h: All extensions that used to be here are now found in glext.h.
+pub const GL_DEPTH_STENCIL_MESA: GLenum = 0x8750;
+pub const GL_UNSIGNED_INT_24_8_MESA: GLenum = 0x8751;
+pub const GL_UNSIGNED_INT_8_24_REV_MESA: GLenum = 0x8752;
+pub const GL_UNSIGNED_SHORT_15_1_MESA: GLenum = 0x8753;
+pub const GL_UNSIGNED_SHORT_1_15_REV_MESA: GLenum = 0x8754;
+pub const GL_ALPHA_BLEND_EQUATION_ATI: GLenum = 0x883D;

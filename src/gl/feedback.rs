@@ -19,37 +19,6 @@ use super::vertex::Vertex;
 use super::Gl;
 use glam::Vec4;
 
-/// `GL_FEEDBACK` (GL 1.1 table 5.3).
-pub const GL_FEEDBACK: GLenum = 0x1C01;
-/// `GL_RENDER`.
-pub const GL_RENDER: GLenum = 0x1C00;
-/// Feedback buffer types.
-pub const GL_2D: GLenum = 0x0600;
-/// x, y, z.
-pub const GL_3D: GLenum = 0x0601;
-/// x, y, z and RGBA.
-pub const GL_3D_COLOR: GLenum = 0x0602;
-/// x, y, z, RGBA and (s, t, r, q).
-pub const GL_3D_COLOR_TEXTURE: GLenum = 0x0603;
-/// x, y, z, w, RGBA and (s, t, r, q).
-pub const GL_4D_COLOR_TEXTURE: GLenum = 0x0604;
-/// Tokens.
-pub const GL_PASS_THROUGH_TOKEN: GLenum = 0x0700;
-/// A point: one vertex.
-pub const GL_POINT_TOKEN: GLenum = 0x0701;
-/// A line segment: two vertices.
-pub const GL_LINE_TOKEN: GLenum = 0x0702;
-/// A polygon: its vertex count, then the vertices.
-pub const GL_POLYGON_TOKEN: GLenum = 0x0703;
-/// A bitmap.
-pub const GL_BITMAP_TOKEN: GLenum = 0x0704;
-/// `glDrawPixels`.
-pub const GL_DRAW_PIXEL_TOKEN: GLenum = 0x0705;
-/// `glCopyPixels`.
-pub const GL_COPY_PIXEL_TOKEN: GLenum = 0x0706;
-/// A line segment that starts a new line (resets the stipple).
-pub const GL_LINE_RESET_TOKEN: GLenum = 0x0707;
-
 /// The feedback state of a context.
 #[derive(Clone, Debug, PartialEq)]
 pub(crate) struct Feedback {

@@ -93,3 +93,104 @@ pub const GLU_NURBS_ERROR34: GLenum = 100284;
 pub const GLU_NURBS_ERROR35: GLenum = 100285;
 pub const GLU_NURBS_ERROR36: GLenum = 100286;
 pub const GLU_NURBS_ERROR37: GLenum = 100287;
+
+// GL/glu.h: Boolean.
+pub const GLU_FALSE: GLenum = 0;
+pub const GLU_TRUE: GLenum = 1;
+
+// GL/glu.h: StringName.
+pub const GLU_VERSION: GLenum = 100800;
+pub const GLU_EXTENSIONS: GLenum = 100801;
+
+// GL/glu.h: NurbsCallback.
+pub const GLU_NURBS_BEGIN_EXT: GLenum = 100164;
+pub const GLU_NURBS_VERTEX_EXT: GLenum = 100165;
+pub const GLU_NURBS_NORMAL_EXT: GLenum = 100166;
+pub const GLU_NURBS_COLOR_EXT: GLenum = 100167;
+pub const GLU_NURBS_TEX_COORD_EXT: GLenum = 100168;
+pub const GLU_NURBS_END_EXT: GLenum = 100169;
+pub const GLU_NURBS_BEGIN_DATA_EXT: GLenum = 100170;
+pub const GLU_NURBS_VERTEX_DATA_EXT: GLenum = 100171;
+pub const GLU_NURBS_NORMAL_DATA_EXT: GLenum = 100172;
+pub const GLU_NURBS_COLOR_DATA_EXT: GLenum = 100173;
+pub const GLU_NURBS_TEX_COORD_DATA_EXT: GLenum = 100174;
+pub const GLU_NURBS_END_DATA_EXT: GLenum = 100175;
+
+// GL/glu.h: NurbsProperty.
+pub const GLU_NURBS_MODE_EXT: GLenum = 100160;
+pub const GLU_NURBS_TESSELLATOR_EXT: GLenum = 100161;
+pub const GLU_NURBS_RENDERER_EXT: GLenum = 100162;
+
+// GL/glu.h: NurbsSampling.
+pub const GLU_OBJECT_PARAMETRIC_ERROR_EXT: GLenum = 100208;
+pub const GLU_OBJECT_PATH_LENGTH_EXT: GLenum = 100209;
+
+// GL/glu.h: QuadricDrawStyle.
+pub const GLU_POINT: GLenum = 100010;
+pub const GLU_LINE: GLenum = 100011;
+pub const GLU_SILHOUETTE: GLenum = 100013;
+
+// GL/glu.h: QuadricNormal.
+pub const GLU_SMOOTH: GLenum = 100000;
+pub const GLU_FLAT: GLenum = 100001;
+pub const GLU_NONE: GLenum = 100002;
+
+// GL/glu.h: QuadricOrientation.
+pub const GLU_OUTSIDE: GLenum = 100020;
+pub const GLU_INSIDE: GLenum = 100021;
+
+// GL/glu.h: TessCallback.
+pub const GLU_TESS_BEGIN: GLenum = 100100;
+pub const GLU_BEGIN: GLenum = 100100;
+pub const GLU_TESS_VERTEX: GLenum = 100101;
+pub const GLU_VERTEX: GLenum = 100101;
+pub const GLU_TESS_END: GLenum = 100102;
+pub const GLU_END: GLenum = 100102;
+pub const GLU_TESS_ERROR: GLenum = 100103;
+pub const GLU_TESS_EDGE_FLAG: GLenum = 100104;
+pub const GLU_EDGE_FLAG: GLenum = 100104;
+pub const GLU_TESS_COMBINE: GLenum = 100105;
+pub const GLU_TESS_BEGIN_DATA: GLenum = 100106;
+pub const GLU_TESS_VERTEX_DATA: GLenum = 100107;
+pub const GLU_TESS_END_DATA: GLenum = 100108;
+pub const GLU_TESS_ERROR_DATA: GLenum = 100109;
+pub const GLU_TESS_EDGE_FLAG_DATA: GLenum = 100110;
+pub const GLU_TESS_COMBINE_DATA: GLenum = 100111;
+
+// GL/glu.h: TessContour.
+pub const GLU_CW: GLenum = 100120;
+pub const GLU_CCW: GLenum = 100121;
+pub const GLU_INTERIOR: GLenum = 100122;
+pub const GLU_EXTERIOR: GLenum = 100123;
+pub const GLU_UNKNOWN: GLenum = 100124;
+
+// GL/glu.h: TessProperty.
+pub const GLU_TESS_WINDING_RULE: GLenum = 100140;
+pub const GLU_TESS_BOUNDARY_ONLY: GLenum = 100141;
+pub const GLU_TESS_TOLERANCE: GLenum = 100142;
+
+// GL/glu.h: TessError.
+pub const GLU_TESS_ERROR1: GLenum = 100151;
+pub const GLU_TESS_ERROR2: GLenum = 100152;
+pub const GLU_TESS_ERROR3: GLenum = 100153;
+pub const GLU_TESS_ERROR4: GLenum = 100154;
+pub const GLU_TESS_ERROR5: GLenum = 100155;
+pub const GLU_TESS_ERROR6: GLenum = 100156;
+pub const GLU_TESS_ERROR7: GLenum = 100157;
+pub const GLU_TESS_ERROR8: GLenum = 100158;
+pub const GLU_TESS_MISSING_BEGIN_POLYGON: GLenum = 100151;
+pub const GLU_TESS_MISSING_BEGIN_CONTOUR: GLenum = 100152;
+pub const GLU_TESS_MISSING_END_POLYGON: GLenum = 100153;
+pub const GLU_TESS_MISSING_END_CONTOUR: GLenum = 100154;
+pub const GLU_TESS_COORD_TOO_LARGE: GLenum = 100155;
+pub const GLU_TESS_NEED_COMBINE_CALLBACK: GLenum = 100156;
+
+// GL/glu.h: TessWinding.
+pub const GLU_TESS_WINDING_ODD: GLenum = 100130;
+pub const GLU_TESS_WINDING_NONZERO: GLenum = 100131;
+pub const GLU_TESS_WINDING_POSITIVE: GLenum = 100132;
+pub const GLU_TESS_WINDING_NEGATIVE: GLenum = 100133;
+pub const GLU_TESS_WINDING_ABS_GEQ_TWO: GLenum = 100134;
+
+// GL/glu.h: the polygon tessellator's largest coordinate (a double, not an enum).
+pub const GLU_TESS_MAX_COORD: f64 = 1.0e150;
