@@ -17,6 +17,8 @@ use glam::Mat4;
 use std::collections::HashMap;
 use std::sync::Arc;
 
+mod query;
+
 /// The largest texture side accepted (Mesa's `MAX_TEXTURE_SIZE` for llvmpipe is 16384; GL's
 /// minimum is 64). Larger images are `GL_INVALID_VALUE`.
 pub const MAX_TEXTURE_SIZE: i32 = 8192;
@@ -130,6 +132,8 @@ struct TextureObject {
     key: u64,
     /// The complete chain, made when first drawn with (dropped when an image changes).
     complete: Option<Option<Arc<Vec<TexLevel>>>>,
+    /// Border colour, priority, internal formats.
+    extra: query::ObjectExtras,
 }
 
 /// Unit 0's texture state.
@@ -404,6 +408,7 @@ impl Gl {
         }
         object.levels[level] = Some(TexLevel { width: w as u32, height: h as u32, texels });
         object.formats[level] = base;
+        object.extra.set_internal(level, internalformat);
         self.image_changed(dims);
     }
 
@@ -464,6 +469,10 @@ impl Gl {
     /// `GL_TEXTURE_WRAP_S` and `GL_TEXTURE_WRAP_T` of the bound object. Another target or
     /// name, or a value the name does not take → `GL_INVALID_ENUM`.
     pub fn tex_parameteri(&mut self, target: GLenum, pname: GLenum, param: GLint) {
+        if pname == GL_TEXTURE_PRIORITY {
+            // A float parameter: Mesa converts the integer as it is.
+            return self.tex_parameterfv(target, pname, &[param as GLfloat]);
+        }
         if self.compiled(|| ListCommand::TexParameter(target, pname, param)) || self.reject_inside_begin_end() {
             return;
         }
@@ -492,9 +501,14 @@ impl Gl {
         self.touch_state();
     }
 
-    /// `glTexParameterf`: as [`Gl::tex_parameteri`] with the enum passed as a float.
+    /// `glTexParameterf`: as [`Gl::tex_parameterfv`] with one value (an enum passed as a float is
+    /// truncated); the border colour, a vector, is `GL_INVALID_ENUM` here, as in Mesa.
     pub fn tex_parameterf(&mut self, target: GLenum, pname: GLenum, param: GLfloat) {
-        self.tex_parameteri(target, pname, param as GLint);
+        if pname == GL_TEXTURE_BORDER_COLOR {
+            // Mesa: a vector name in a scalar call.
+            return self.tex_parameteri(target, pname, 0);
+        }
+        self.tex_parameterfv(target, pname, &[param]);
     }
 
     /// `glTexEnvi` for `GL_TEXTURE_ENV_MODE`: `GL_MODULATE` (initial), `GL_DECAL`, `GL_BLEND`,
