@@ -49,18 +49,15 @@ pub(crate) const KNOWN: &[GLenum] = &[
 /// The vertex arrays' client states: `glEnableClientState` sets them, and Mesa's compatibility
 /// profile takes them in `glEnable`, `glDisable` and `glIsEnabled` too (measured on Mesa 22.3).
 /// Client state: `GL_ENABLE_BIT` does not save them (`GL_CLIENT_VERTEX_ARRAY_BIT` does).
-pub(crate) const CLIENT_STATES: &[GLenum] = &[
-    GL_VERTEX_ARRAY,
-    GL_NORMAL_ARRAY,
-    GL_COLOR_ARRAY,
-    GL_INDEX_ARRAY,
-    GL_TEXTURE_COORD_ARRAY,
-    GL_EDGE_FLAG_ARRAY,
-];
+pub(crate) const CLIENT_STATES: &[GLenum] =
+    &[GL_VERTEX_ARRAY, GL_NORMAL_ARRAY, GL_COLOR_ARRAY, GL_INDEX_ARRAY, GL_TEXTURE_COORD_ARRAY, GL_EDGE_FLAG_ARRAY];
 
 impl Caps {
     fn known(cap: GLenum) -> bool {
-        KNOWN.contains(&cap) || CLIENT_STATES.contains(&cap) || (GL_LIGHT0..=GL_LIGHT7).contains(&cap) || super::clip::plane_index(cap).is_some()
+        KNOWN.contains(&cap)
+            || CLIENT_STATES.contains(&cap)
+            || (GL_LIGHT0..=GL_LIGHT7).contains(&cap)
+            || super::clip::plane_index(cap).is_some()
     }
 
     pub(crate) fn is_on(&self, cap: GLenum) -> bool {

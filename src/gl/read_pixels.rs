@@ -146,7 +146,13 @@ impl Gl {
 
     /// Packs a `w` × `h` image of RGBA floats (rows bottom first) as `glReadPixels` would
     /// (`glGetTexImage`); `out` holds at least [`Gl::packed_image_len`] bytes.
-    pub(crate) fn pack_rgba(&self, rgba: &[[f32; 4]], (w, h): (usize, usize), (format, type_): (GLenum, GLenum), out: &mut [u8]) {
+    pub(crate) fn pack_rgba(
+        &self,
+        rgba: &[[f32; 4]],
+        (w, h): (usize, usize),
+        (format, type_): (GLenum, GLenum),
+        out: &mut [u8],
+    ) {
         let size = type_size(type_).unwrap_or(1);
         let at = |x: i32, y: i32| rgba.get(y as usize * w + x as usize).copied();
         self.pack_rectangle((0, 0), (w, h), (format, type_, size), at, out);

@@ -81,9 +81,12 @@ fn get(gl: &mut Gl, pname: u32, values: &mut Vec<String>) {
     let i = measured(0xA5A5_A5A5u32 as i32, 0x5A5A_5A5A, |v| u64::from(v as u32), |o| gl.get_integerv(pname, o));
     values.extend(i.iter().map(i32::to_string));
     values.push("f".into());
-    let f = measured(f32::from_bits(0xA5A5_A5A5), f32::from_bits(0x5A5A_5A5A), |v| u64::from(v.to_bits()), |o| {
-        gl.get_floatv(pname, o)
-    });
+    let f = measured(
+        f32::from_bits(0xA5A5_A5A5),
+        f32::from_bits(0x5A5A_5A5A),
+        |v| u64::from(v.to_bits()),
+        |o| gl.get_floatv(pname, o),
+    );
     floats(values, f.iter().map(|&x| f64::from(x)));
     values.push("d".into());
     let d = measured(f64::from_bits(0xA5A5_A5A5_A5A5_A5A5), f64::from_bits(0x5A5A_5A5A_5A5A_5A5A), f64::to_bits, |o| {

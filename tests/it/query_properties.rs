@@ -9,7 +9,14 @@ use proptest::prelude::*;
 /// Names around GL 1.1's state variables (0x0B00..0x0DFF holds most), the later ones gleval
 /// answers, and anything.
 fn pname() -> impl Strategy<Value = u32> {
-    prop_oneof![0x0B00u32..0x0E00, 0x0C00u32..0x0C40, 0x3000u32..0x3010, 0x4000u32..0x4010, 0x8000u32..0x8100, any::<u32>()]
+    prop_oneof![
+        0x0B00u32..0x0E00,
+        0x0C00u32..0x0C40,
+        0x3000u32..0x3010,
+        0x4000u32..0x4010,
+        0x8000u32..0x8100,
+        any::<u32>()
+    ]
 }
 
 fn value() -> impl Strategy<Value = f32> {

@@ -125,9 +125,15 @@ pub(crate) static STATE: &[StateVar] = &[
     hook(GL_CURRENT_INDEX, 1, Float),
     row(GL_CURRENT_TEXTURE_COORDS, 4, Float, |gl, o| put(o, &gl.current.tex_coord)),
     row(GL_CURRENT_NORMAL, 3, Normalized, |gl, o| put(o, &gl.current.normal)),
-    row(GL_CURRENT_RASTER_POSITION, 4, Float, |gl, o| from_area(o, |f| gl.raster_pos_query(GL_CURRENT_RASTER_POSITION, f))),
-    row(GL_CURRENT_RASTER_DISTANCE, 1, Float, |gl, o| from_area(o, |f| gl.raster_pos_query(GL_CURRENT_RASTER_DISTANCE, f))),
-    row(GL_CURRENT_RASTER_COLOR, 4, Normalized, |gl, o| from_area(o, |f| gl.raster_pos_query(GL_CURRENT_RASTER_COLOR, f))),
+    row(GL_CURRENT_RASTER_POSITION, 4, Float, |gl, o| {
+        from_area(o, |f| gl.raster_pos_query(GL_CURRENT_RASTER_POSITION, f))
+    }),
+    row(GL_CURRENT_RASTER_DISTANCE, 1, Float, |gl, o| {
+        from_area(o, |f| gl.raster_pos_query(GL_CURRENT_RASTER_DISTANCE, f))
+    }),
+    row(GL_CURRENT_RASTER_COLOR, 4, Normalized, |gl, o| {
+        from_area(o, |f| gl.raster_pos_query(GL_CURRENT_RASTER_COLOR, f))
+    }),
     hook(GL_CURRENT_RASTER_INDEX, 1, Float),
     row(GL_CURRENT_RASTER_TEXTURE_COORDS, 4, Float, |gl, o| {
         from_area(o, |f| gl.raster_pos_query(GL_CURRENT_RASTER_TEXTURE_COORDS, f));
