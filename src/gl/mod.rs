@@ -375,10 +375,13 @@ impl Gl {
         }
     }
 
-    /// The areas' own `glGet` answers (`AREA_query` functions): for the names the state table
-    /// (`get/table.rs`) sends to a hook, or does not list. One `.or_else` line per area; how
-    /// many values it wrote (at most `get::MAX_VALUES`), `None` for a name that is not its.
-    fn area_query(&self, _pname: GLenum, _out: &mut [f64]) -> Option<usize> {
+    /// The areas' own `glGet` answers (`AREA_query(&self, pname, out: &mut [f64]) ->
+    /// Option<usize>` functions): for the names the state table (`get/table.rs`) sends to a hook,
+    /// or does not list. Each writes its values into `out` (16 long, `get::MAX_VALUES`) and says
+    /// how many, `None` for a name that is not its; chain them here as
+    /// `self.stencil_query(pname, out).or_else(|| self.arrays_query(pname, out))`.
+    fn query(&self, pname: GLenum, out: &mut [f64]) -> Option<usize> {
+        let _ = (pname, out);
         None
     }
 

@@ -61,8 +61,10 @@ impl TexParams {
     }
 }
 
-/// What `GL_TEXTURE_BIT` saves: the bindings, the environment mode and colour, `glTexGen`.
-pub(crate) type TextureAttrib = ([GLuint; 2], GLenum, [f32; 4], TexGen);
+/// What `GL_TEXTURE_BIT` saves: the bindings, the environment mode and colour, `glTexGen`,
+/// and the bound objects' parameters (filters, wraps, border colour, priority), which Mesa
+/// restores into those objects (measured on Mesa 22.3).
+pub(crate) type TextureAttrib = ([GLuint; 2], GLenum, [f32; 4], TexGen, [(TexParams, ([f32; 4], f32)); 2]);
 
 /// The texture a recorded primitive is drawn with: the complete mipmap chain of the enabled
 /// target's bound object, its parameters, unit 0's environment and the texture matrix.
@@ -584,15 +586,24 @@ impl Gl {
     /// What `GL_TEXTURE_BIT` saves of unit 0: the bindings, the environment and the
     /// coordinate generation (its enables are saved with the bit's other enables).
     pub(crate) fn texture_attrib(&self) -> TextureAttrib {
-        (self.textures.bound, self.textures.env_mode, self.textures.env_color, self.tex_gen)
+        let objects = [1, 2].map(|dims| {
+            let object = self.bound_object(dims);
+            (object.params, object.extra.sampling())
+        });
+        (self.textures.bound, self.textures.env_mode, self.textures.env_color, self.tex_gen, objects)
     }
 
     /// Restores what [`Gl::texture_attrib`] saved (a binding whose object was deleted since
     /// falls back to the default texture).
-    pub(crate) fn restore_texture_attrib(&mut self, (bound, env_mode, env_color, tex_gen): TextureAttrib) {
+    pub(crate) fn restore_texture_attrib(&mut self, (bound, env_mode, env_color, tex_gen, objects): TextureAttrib) {
         self.tex_gen = tex_gen;
         let exists = |name: GLuint| name == 0 || self.textures.objects.contains_key(&name);
         self.textures.bound = bound.map(|name| if exists(name) { name } else { 0 });
+        for (dims, (params, sampling)) in [1, 2].into_iter().zip(objects) {
+            let object = self.bound_object_mut(dims);
+            (object.params, object.complete) = (params, None);
+            object.extra.set_sampling(sampling);
+        }
         (self.textures.env_mode, self.textures.env_color) = (env_mode, env_color);
         self.touch_state();
     }

@@ -1,7 +1,7 @@
 //! `glGetBooleanv`, `glGetIntegerv`, `glGetFloatv`, `glGetDoublev` (GL 1.1 spec §6.1.2):
 //! every variant reads the one table of state variables in [`table`] (name, count, how Mesa
 //! stores it, where it lives), then the capabilities `glIsEnabled` knows, then the areas' own
-//! answers ([`Gl::area_query`](super::Gl)); each converts as Mesa 22.3's `main/get.c` does.
+//! answers ([`Gl::query`](super::Gl)); each converts as Mesa 22.3's `main/get.c` does.
 
 mod table;
 
@@ -31,7 +31,7 @@ pub(crate) fn float_to_int(v: f64) -> GLint {
 /// Mesa 22.3; measured). Beyond a `long`, x86 gives `LONG_MIN`, whose low half is 0.
 pub(crate) fn iround(v: f64) -> GLint {
     let r = v.round();
-    if r.abs() < 9.223_372_036_854_775_807e18 {
+    if r.abs() < 9.223_372_036_854_776e18 {
         r as i64 as GLint
     } else {
         0
@@ -136,7 +136,7 @@ impl Gl {
             values[0] = f64::from(u8::from(self.capability(pname)));
             return Some(Answer { values, count: 1, kind: Kind::Bool });
         }
-        let count = self.area_query(pname, &mut values)?;
+        let count = self.query(pname, &mut values)?;
         // A name the areas answer without a row converts as a float (integers are unchanged).
         let kind = row.map_or(Kind::Float, |r| r.kind);
         Some(Answer { values, count, kind })

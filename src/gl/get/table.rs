@@ -3,7 +3,7 @@
 //! (which decides every conversion) and where the value lives. A row whose state belongs to an
 //! area that keeps its own (stencil, accumulation, selection, vertex arrays, pixel transfer)
 //! says [`Source::Hook`]: that area answers it from its `AREA_query` function, called by
-//! `Gl::area_query`, and the row still gives its type. Enables are not rows: every capability
+//! `Gl::query`, and the row still gives its type. Enables are not rows: every capability
 //! `glIsEnabled` knows is a one-value boolean (`Gl::lookup`).
 //!
 //! The limits are llvmpipe's as Mesa 22.3 reports them through OSMesa (measured with
@@ -33,7 +33,7 @@ pub(crate) enum Kind {
 pub(crate) enum Source {
     /// Read from `Gl` into the first `count` values.
     Read(fn(&Gl, &mut [f64])),
-    /// Answered by the area that owns the state, through `Gl::area_query`.
+    /// Answered by the area that owns the state, through `Gl::query`.
     Hook,
 }
 

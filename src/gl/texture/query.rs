@@ -31,6 +31,16 @@ impl Default for ObjectExtras {
 }
 
 impl ObjectExtras {
+    /// The border colour and priority (`GL_TEXTURE_BIT` saves them).
+    pub(super) fn sampling(&self) -> ([f32; 4], f32) {
+        (self.border_color, self.priority)
+    }
+
+    /// Restores what [`ObjectExtras::sampling`] gave.
+    pub(super) fn set_sampling(&mut self, (border_color, priority): ([f32; 4], f32)) {
+        (self.border_color, self.priority) = (border_color, priority);
+    }
+
     /// Records the internal format a level was defined with.
     pub(super) fn set_internal(&mut self, level: usize, internal: GLint) {
         if self.internal_formats.len() <= level {
