@@ -183,8 +183,12 @@ impl Gl {
         let Some(saved) = self.attrib_stack.entries.pop() else {
             return self.set_error(GL_STACK_UNDERFLOW);
         };
-        let materials = self.lighting.materials;
+        let (materials, tracking) = (self.lighting.materials, self.caps.is_on(GL_COLOR_MATERIAL));
         self.restore_groups(saved);
+        if !tracking && self.caps.is_on(GL_COLOR_MATERIAL) {
+            // Mesa's pop enables it through glEnable, which copies the colour.
+            self.color_material_enabled();
+        }
         self.land_pending_materials(materials);
         self.touch_state();
     }
