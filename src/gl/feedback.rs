@@ -163,6 +163,11 @@ impl Gl {
         result
     }
 
+    /// `GL_RENDER_MODE`.
+    pub(crate) fn render_mode_value(&self) -> GLenum {
+        self.feedback.mode
+    }
+
     /// The size and type the last successful `feedback_buffer` set (0 and `GL_2D` initially):
     /// a binding that keeps the caller's buffer knows from it whether the call took.
     #[must_use]

@@ -20,6 +20,8 @@ mod bezsurf;
 mod bsurf;
 #[path = "../../examples/colormap.rs"]
 mod colormap;
+#[path = "../../examples/colormat.rs"]
+mod colormat;
 #[path = "../../examples/ex1_bezier.rs"]
 mod ex1_bezier;
 #[path = "../../examples/ex2_bspline.rs"]
@@ -186,6 +188,13 @@ fn rationalmap_matches_mesa() {
 #[test]
 fn linespoints_matches_mesa() {
     check("linespoints", linespoints::app, 0.0);
+}
+
+/// GL_COLOR_MATERIAL as Mesa 22.3 does it: the Red Book's set-up lights a sphere with the
+/// glMaterial's diffuse until a glColor changes the colour (`src/gl/color_material.rs`).
+#[test]
+fn color_material_matches_mesa() {
+    check("colormat", colormat::app, 0.0);
 }
 
 #[test]

@@ -11,6 +11,7 @@ mod gpu_parity;
 mod interactive_demo;
 mod mesa_calls;
 mod properties;
+mod query_properties;
 mod raster_images;
 mod raster_modes;
 mod rasterizers;
