@@ -158,6 +158,9 @@ pub struct Gl {
     /// GLU NURBS objects, indexed by their handles: the one import from `gl` into `glu`, since
     /// GLU's calls are methods of `Gl` (the porting rule).
     pub(crate) nurbs: Vec<Option<crate::glu::NurbsObject>>,
+    /// GLU tessellator objects, indexed by their handles (`None` once deleted, or while one
+    /// of its calls runs).
+    pub(crate) tessellators: Vec<Option<crate::glu::TessObject>>,
 }
 
 /// Mesa's `FLOAT_TO_INT` for colours and normals in `glGetIntegerv`: c · (2³¹ − 1) truncated. A
@@ -204,6 +207,7 @@ impl Gl {
             hints: hint::Hints::default(),
             fragment_ops: fragment::FragmentOps::default(),
             nurbs: Vec::new(),
+            tessellators: Vec::new(),
         }
     }
 

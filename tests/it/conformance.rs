@@ -44,6 +44,8 @@ mod lists;
 mod mipnurbs;
 #[path = "../../examples/operations.rs"]
 mod operations;
+#[path = "../../examples/tess.rs"]
+mod tess;
 #[path = "../../examples/outline.rs"]
 mod outline;
 #[path = "../../examples/rational.rs"]
@@ -166,6 +168,12 @@ fn trimmed_matches_glu() {
 #[test]
 fn rational_matches_glu() {
     check("rational", rational::app, 0.0);
+}
+
+#[test]
+fn tess_matches_glu() {
+    // GLU's polygon tessellator: the Red Book's tess.c and tesswind.c's winding rules.
+    check_with("tess", tess::app, |_| 0.001);
 }
 
 #[test]
