@@ -19,7 +19,7 @@ fn end_callback(gl: &mut Gl) {
 }
 
 fn error_callback(_gl: &mut Gl, error_code: GLenum) {
-    eprintln!("Tessellation Error: {}", glu_error_string(error_code));
+    eprintln!("Tessellation Error: {}", glu_error_string(error_code).unwrap_or(""));
 }
 
 fn vertex_callback(gl: &mut Gl, vertex: &[f64; 6]) {

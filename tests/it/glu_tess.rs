@@ -2,6 +2,7 @@
 //! gleval here and through the installed GLU by `tess_calls.c` (its output committed as
 //! `tess_calls.txt`); every callback, with every number bit for bit, must be the same.
 
+use gleval::glu::TessData;
 use gleval::prelude::*;
 use std::any::Any;
 use std::cell::RefCell;

@@ -237,29 +237,28 @@ impl EventQueue {
 /// (libtess's randomised quicksort: the same seed, the same pivots, insertion sort below 11
 /// entries, so that equal keys end in the same order).
 fn sort_descending(order: &mut [usize], lt: impl Fn(usize, usize) -> bool) {
-    if order.is_empty() {
-        return;
-    }
     let gt = |a: usize, b: usize| lt(b, a);
+    let at = |order: &[usize], k: isize| order[k as usize];
     let mut seed: u64 = 2_016_473_283;
-    let mut stack: Vec<(usize, usize)> = vec![(0, order.len() - 1)];
+    // Bounds as in libtess, inclusive and signed: `r` may end one below `p`.
+    let mut stack: Vec<(isize, isize)> = vec![(0, order.len() as isize - 1)];
     while let Some((mut p, mut r)) = stack.pop() {
         while r > p + 10 {
             seed = seed.wrapping_mul(1_539_415_821).wrapping_add(1);
-            let i = p + (seed % (r - p + 1) as u64) as usize;
-            order.swap(i, p);
-            let piv = order[p];
-            let (mut i, mut j) = (p as isize - 1, r as isize + 1);
+            let i = p + (seed % (r - p + 1) as u64) as isize;
+            order.swap(i as usize, p as usize);
+            let piv = at(order, p);
+            let (mut i, mut j) = (p - 1, r + 1);
             loop {
                 loop {
                     i += 1;
-                    if !gt(order[i as usize], piv) {
+                    if !gt(at(order, i), piv) {
                         break;
                     }
                 }
                 loop {
                     j -= 1;
-                    if !lt(order[j as usize], piv) {
+                    if !lt(at(order, j), piv) {
                         break;
                     }
                 }
@@ -269,7 +268,6 @@ fn sort_descending(order: &mut [usize], lt: impl Fn(usize, usize) -> bool) {
                 }
             }
             order.swap(i as usize, j as usize);
-            let (i, j) = (i as usize, j as usize);
             if i - p < r - j {
                 stack.push((j + 1, r));
                 r = i - 1;
@@ -278,14 +276,16 @@ fn sort_descending(order: &mut [usize], lt: impl Fn(usize, usize) -> bool) {
                 p = j + 1;
             }
         }
-        for i in p + 1..=r {
-            let piv = order[i];
+        let mut i = p + 1;
+        while i <= r {
+            let piv = at(order, i);
             let mut j = i;
-            while j > p && lt(order[j - 1], piv) {
-                order[j] = order[j - 1];
+            while j > p && lt(at(order, j - 1), piv) {
+                order[j as usize] = order[j as usize - 1];
                 j -= 1;
             }
-            order[j] = piv;
+            order[j as usize] = piv;
+            i += 1;
         }
     }
 }
