@@ -110,8 +110,10 @@ const RULES: [GLenum; 5] = [
 fn check_coverage(contours: &[Vec<P>], rule: GLenum, edge_flags: bool) -> Result<(), TestCaseError> {
     let tris = triangles(contours, rule, edge_flags);
     for t in &tris {
+        // Intersections' coordinates are GLU's weighted sums with `f32` weights, a few 1e-7
+        // off the exact crossing: a degenerate triangle may come out barely clockwise.
         let area = cross(t[0], t[1], [t[2][0], t[2][1]]);
-        prop_assert!(area >= -1e-9, "a clockwise triangle {t:?}");
+        prop_assert!(area >= -1e-4, "a clockwise triangle {t:?}");
     }
     let near_edge = |p: [f64; 2]| {
         let input = contours.iter().any(|c| (0..c.len()).any(|i| distance(c[i], c[(i + 1) % c.len()], p) < 1e-3));
@@ -232,4 +234,16 @@ fn no_callbacks_draw_nothing_and_record_no_gl_calls() {
     gl.glu_tess_end_polygon(t);
     assert!(gl.frame().meshes.is_empty() && gl.frame().calls.is_empty());
     assert_eq!(gl.get_error(), GL_NO_ERROR);
+}
+
+#[test]
+fn a_contour_winding_twice_around_its_first_vertex_is_swept_not_fanned() {
+    // Real GLU draws this one as a single fan of 3 overlapping triangles (tess_calls.c on it:
+    // `begin 6`, vertices 0..4): the twice-wound middle is covered twice, though the odd rule
+    // leaves it out. gleval sends it through the sweep instead.
+    let c = vec![[4.0, 11.0, 0.0], [5.0, 7.0, 0.0], [0.0, 9.0, 0.0], [4.0, 12.0, 0.0], [5.0, 0.0, 0.0]];
+    assert_eq!(winding(std::slice::from_ref(&c), [4.1661, 9.5477]), -2);
+    for rule in RULES {
+        check_coverage(std::slice::from_ref(&c), rule, false).unwrap();
+    }
 }

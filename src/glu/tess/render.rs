@@ -326,6 +326,26 @@ fn fan_walk(cache: &[CachedVertex], mut f: impl FnMut([f64; 3]) -> bool) -> bool
     true
 }
 
+/// Whether the fan's triangles, all facing one way, turn less than once around the first
+/// vertex. GLU does not ask: a contour that winds twice around its first vertex (a
+/// pentagram seen from a tip, say) comes out of GLU's quick path as overlapping triangles,
+/// covering the twice-wound region twice under every rule (or not at all with
+/// `GLU_TESS_WINDING_ABS_GEQ_TWO`). gleval sends such a contour through the sweep instead,
+/// the one place it departs from GLU's output on purpose.
+fn fan_winds_once(cache: &[CachedVertex]) -> bool {
+    let v0 = cache[0].coords;
+    let d = |c: [f64; 3]| [c[0] - v0[0], c[1] - v0[1], c[2] - v0[2]];
+    let mut total = 0.0;
+    for w in cache[1..].windows(2) {
+        let (p, c) = (d(w[0].coords), d(w[1].coords));
+        let n = [p[1] * c[2] - p[2] * c[1], p[2] * c[0] - p[0] * c[2], p[0] * c[1] - p[1] * c[0]];
+        let sin = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
+        total += sin.atan2(p[0] * c[0] + p[1] * c[1] + p[2] * c[2]);
+    }
+    // NaN (a NaN coordinate) compares false: such a contour keeps GLU's path.
+    !(total >= std::f64::consts::TAU * (1.0 - 1e-9))
+}
+
 /// Draws a single contour as one fan (or triangle, or line loop) from its first vertex when
 /// every fan triangle faces the same way; false when it cannot (`__gl_renderCache`).
 pub(crate) fn render_cache(cache: &[CachedVertex], normal: [f64; 3], rule: GLenum, boundary_only: bool, sink: &mut dyn Sink) -> bool {
@@ -339,6 +359,9 @@ pub(crate) fn render_cache(cache: &[CachedVertex], normal: [f64; 3], rule: GLenu
     }
     if sign == 0 {
         return true;
+    }
+    if !fan_winds_once(cache) {
+        return false;
     }
     match rule {
         GLU_TESS_WINDING_POSITIVE if sign < 0 => return true,
