@@ -31,5 +31,5 @@ pub use errors::glu_error_string;
 pub use model::callbacks::{NurbsCallback, UserData};
 pub use model::object::GLUnurbs;
 pub(crate) use model::object::NurbsObject;
-pub use tess::{GLUtesselator, TessCallback, TessData};
 pub(crate) use tess::TessObject;
+pub use tess::{GLUtesselator, TessCallback, TessData};

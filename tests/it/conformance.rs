@@ -44,8 +44,6 @@ mod lists;
 mod mipnurbs;
 #[path = "../../examples/operations.rs"]
 mod operations;
-#[path = "../../examples/tess.rs"]
-mod tess;
 #[path = "../../examples/outline.rs"]
 mod outline;
 #[path = "../../examples/rational.rs"]
@@ -62,6 +60,8 @@ mod stipple;
 mod strokes;
 #[path = "../../examples/teapot.rs"]
 mod teapot;
+#[path = "../../examples/tess.rs"]
+mod tess;
 #[path = "../../examples/texgen.rs"]
 mod texgen;
 #[path = "../../examples/texsurf.rs"]

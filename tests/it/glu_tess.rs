@@ -71,17 +71,21 @@ fn callback(name: &str, out: &Out, next: &Rc<RefCell<i32>>) -> Option<(GLenum, T
         "error" => (GLU_TESS_ERROR, TessCallback::error(move |_, e| say(&o, format!("error {e}")))),
         "edge" => (GLU_TESS_EDGE_FLAG, TessCallback::edge_flag(move |_, f| say(&o, format!("edge {f}")))),
         "combine" => (GLU_TESS_COMBINE, TessCallback::combine(move |_, c, d, w| Some(combine_line(&o, &n, c, d, w)))),
-        "begin_data" => {
-            (GLU_TESS_BEGIN_DATA, TessCallback::BeginData(Box::new(move |_, t, p| say(&o, format!("begin {t}{}", pid(p))))))
-        }
+        "begin_data" => (
+            GLU_TESS_BEGIN_DATA,
+            TessCallback::BeginData(Box::new(move |_, t, p| say(&o, format!("begin {t}{}", pid(p))))),
+        ),
         "vertex_data" => (
             GLU_TESS_VERTEX_DATA,
             TessCallback::VertexData(Box::new(move |_, d, p| say(&o, format!("vertex {}{}", vid(Some(d)), pid(p))))),
         ),
-        "end_data" => (GLU_TESS_END_DATA, TessCallback::EndData(Box::new(move |_, p| say(&o, format!("end{}", pid(p)))))),
-        "error_data" => {
-            (GLU_TESS_ERROR_DATA, TessCallback::ErrorData(Box::new(move |_, e, p| say(&o, format!("error {e}{}", pid(p))))))
+        "end_data" => {
+            (GLU_TESS_END_DATA, TessCallback::EndData(Box::new(move |_, p| say(&o, format!("end{}", pid(p))))))
         }
+        "error_data" => (
+            GLU_TESS_ERROR_DATA,
+            TessCallback::ErrorData(Box::new(move |_, e, p| say(&o, format!("error {e}{}", pid(p))))),
+        ),
         "edge_data" => (
             GLU_TESS_EDGE_FLAG_DATA,
             TessCallback::EdgeFlagData(Box::new(move |_, f, p| say(&o, format!("edge {f}{}", pid(p))))),
@@ -233,7 +237,11 @@ fn every_case_calls_back_as_real_glu_does() {
     let mut differ = Vec::new();
     for ((name, want), (_, got)) in expected.iter().zip(&actual) {
         if want != got {
-            let line = want.lines().zip(got.lines()).position(|(a, b)| a != b).unwrap_or(want.lines().count().min(got.lines().count()));
+            let line = want
+                .lines()
+                .zip(got.lines())
+                .position(|(a, b)| a != b)
+                .unwrap_or(want.lines().count().min(got.lines().count()));
             differ.push(format!("{name} (first difference at line {line})"));
             if std::env::var_os("GLEVAL_TESS_DUMP").is_some() {
                 eprintln!("--- {name}: GLU\n{want}--- gleval\n{got}");

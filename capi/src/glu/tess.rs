@@ -55,7 +55,9 @@ type CombineDataC = unsafe extern "C" fn(*mut GLdouble, *mut *mut c_void, *mut G
 /// Calls a C combine callback (`call` given the coordinates, data, weights and `outData`) and
 /// keeps what it wrote to `*outData`; NULL is no data.
 fn combine_c(
-    coords: &[f64; 3], data: [Option<&dyn Any>; 4], weight: &[GLfloat; 4],
+    coords: &[f64; 3],
+    data: [Option<&dyn Any>; 4],
+    weight: &[GLfloat; 4],
     call: impl FnOnce(*mut GLdouble, *mut *mut c_void, *mut GLfloat, *mut *mut c_void),
 ) -> Option<TessData> {
     // Copies: GLU hands the callback arrays it may write.
@@ -213,9 +215,9 @@ entry! {
 
 entry! {
     /// `gluTessNormal`.
-    unsafe fn gluTessNormal(tess: *mut GLUtesselator, valueX: GLdouble, valueY: GLdouble, valueZ: GLdouble) {
+    unsafe fn gluTessNormal(tess: *mut GLUtesselator, x: GLdouble, y: GLdouble, z: GLdouble) {
         if let Some(t) = unsafe { handle(tess) } {
-            with_gl(|gl| gl.glu_tess_normal(t, valueX, valueY, valueZ))
+            with_gl(|gl| gl.glu_tess_normal(t, x, y, z))
         }
     }
 }

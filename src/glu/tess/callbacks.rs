@@ -116,7 +116,9 @@ impl TessCallback {
         Self::Error(Box::new(f))
     }
     /// A combine callback on untyped data.
-    pub fn combine(f: impl FnMut(&mut Gl, &[f64; 3], [Option<&dyn Any>; 4], &[GLfloat; 4]) -> Option<TessData> + 'static) -> Self {
+    pub fn combine(
+        f: impl FnMut(&mut Gl, &[f64; 3], [Option<&dyn Any>; 4], &[GLfloat; 4]) -> Option<TessData> + 'static,
+    ) -> Self {
         Self::Combine(Box::new(f))
     }
     /// A combine callback for vertex data of type `T`: data of another type is passed as
@@ -167,7 +169,8 @@ impl TessCallbacks {
     /// Stores `cb` for `which` (or clears it); false for a `which` GLU does not know or a
     /// callback of another kind.
     pub fn set(&mut self, which: GLenum, cb: Option<TessCallback>) -> bool {
-        if !(GLU_TESS_BEGIN..=GLU_TESS_COMBINE_DATA).contains(&which) || cb.as_ref().is_some_and(|c| c.slot() != which) {
+        if !(GLU_TESS_BEGIN..=GLU_TESS_COMBINE_DATA).contains(&which) || cb.as_ref().is_some_and(|c| c.slot() != which)
+        {
             return false;
         }
         if matches!(which, GLU_TESS_EDGE_FLAG | GLU_TESS_EDGE_FLAG_DATA) {
@@ -240,7 +243,12 @@ impl TessCallbacks {
     }
 
     pub fn combine(
-        &mut self, gl: &mut Gl, coords: [f64; 3], v: [Option<TessData>; 4], weight: [GLfloat; 4], data: &mut Option<UserData>,
+        &mut self,
+        gl: &mut Gl,
+        coords: [f64; 3],
+        v: [Option<TessData>; 4],
+        weight: [GLfloat; 4],
+        data: &mut Option<UserData>,
     ) -> Option<TessData> {
         let refs: [Option<&dyn Any>; 4] = [0, 1, 2, 3].map(|i| v[i].as_deref());
         if let Some(TessCallback::CombineData(f)) = self.find(GLU_TESS_COMBINE_DATA) {

@@ -34,8 +34,13 @@ impl Gl {
     /// `gluDeleteTess`: a polygon still open is ended as GLU ends it (errors reported, the
     /// polygon discarded).
     pub fn glu_delete_tess(&mut self, t: GLUtesselator) {
-        self.with_tess(t, |obj, gl| obj.delete(gl));
-        if let Some(slot) = self.tessellators.get_mut(t.0) {
+        let mut ended = false;
+        self.with_tess(t, |obj, gl| {
+            obj.delete(gl);
+            ended = true;
+        });
+        // Not from inside the object's own callbacks: the object is busy then.
+        if let (true, Some(slot)) = (ended, self.tessellators.get_mut(t.0)) {
             *slot = None;
         }
     }

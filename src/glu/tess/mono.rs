@@ -46,7 +46,8 @@ impl Mesh {
                 // up.dst is on the left: form triangles from lo.org.
                 while self.lnext(lo) != up
                     && (self.goes_left(self.lnext(lo))
-                        || edge_sign(self.st(self.org(lo)), self.st(self.dst(lo)), self.st(self.dst(self.lnext(lo)))) <= 0.0)
+                        || edge_sign(self.st(self.org(lo)), self.st(self.dst(lo)), self.st(self.dst(self.lnext(lo))))
+                            <= 0.0)
                 {
                     lo = self.connect(self.lnext(lo), lo) ^ 1;
                 }
@@ -55,7 +56,8 @@ impl Mesh {
                 // lo.org is on the left: form triangles from up.dst.
                 while self.lnext(lo) != up
                     && (self.goes_right(self.lprev(up))
-                        || edge_sign(self.st(self.dst(up)), self.st(self.org(up)), self.st(self.org(self.lprev(up)))) >= 0.0)
+                        || edge_sign(self.st(self.dst(up)), self.st(self.org(up)), self.st(self.org(self.lprev(up))))
+                            >= 0.0)
                 {
                     up = self.connect(up, self.lprev(up)) ^ 1;
                 }

@@ -151,13 +151,25 @@ pub(crate) fn render_mesh(m: &mut Mesh, flag_boundary: bool, sink: &mut dyn Sink
 
 /// Draws the largest fan or strip through `f`, or queues `f` as a lone triangle
 /// (`RenderMaximumFaceGroup`).
-fn render_maximum_face_group(m: &mut Mesh, f: usize, flag_boundary: bool, lonely: &mut Vec<usize>, sink: &mut dyn Sink) {
+fn render_maximum_face_group(
+    m: &mut Mesh,
+    f: usize,
+    flag_boundary: bool,
+    lonely: &mut Vec<usize>,
+    sink: &mut dyn Sink,
+) {
     let e = m.f[f].an_edge;
     let mut best = Candidate { size: 1, start: e, kind: Group::Triangle };
     if !flag_boundary {
         let (lnext, lprev) = (m.lnext(e), m.lprev(e));
-        let tries: [(fn(&mut Mesh, usize) -> Candidate, usize); 6] =
-            [(maximum_fan, e), (maximum_fan, lnext), (maximum_fan, lprev), (maximum_strip, e), (maximum_strip, lnext), (maximum_strip, lprev)];
+        let tries: [(fn(&mut Mesh, usize) -> Candidate, usize); 6] = [
+            (maximum_fan, e),
+            (maximum_fan, lnext),
+            (maximum_fan, lprev),
+            (maximum_strip, e),
+            (maximum_strip, lnext),
+            (maximum_strip, lprev),
+        ];
         for (measure, start) in tries {
             let c = measure(m, start);
             if c.size > best.size {
@@ -348,7 +360,13 @@ fn fan_winds_once(cache: &[CachedVertex]) -> bool {
 
 /// Draws a single contour as one fan (or triangle, or line loop) from its first vertex when
 /// every fan triangle faces the same way; false when it cannot (`__gl_renderCache`).
-pub(crate) fn render_cache(cache: &[CachedVertex], normal: [f64; 3], rule: GLenum, boundary_only: bool, sink: &mut dyn Sink) -> bool {
+pub(crate) fn render_cache(
+    cache: &[CachedVertex],
+    normal: [f64; 3],
+    rule: GLenum,
+    boundary_only: bool,
+    sink: &mut dyn Sink,
+) -> bool {
     if cache.len() < 3 {
         return true;
     }

@@ -265,7 +265,14 @@ impl<'a> Sweep<'a> {
     /// Inserts the right-going edges from `e_first` counter-clockwise up to `e_last` below
     /// `reg_up`, computes their regions' windings and relinks the mesh to match; `e_top_left`
     /// is the edge above the vertex's left-going edges, or `NIL` (`AddRightEdges`).
-    pub(super) fn add_right_edges(&mut self, reg_up: usize, e_first: usize, e_last: usize, e_top_left: usize, clean_up: bool) {
+    pub(super) fn add_right_edges(
+        &mut self,
+        reg_up: usize,
+        e_first: usize,
+        e_last: usize,
+        e_top_left: usize,
+        clean_up: bool,
+    ) {
         let mut e = e_first;
         loop {
             self.add_region_below(reg_up, e ^ 1);
