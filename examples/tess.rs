@@ -5,6 +5,8 @@
 //! and overlapping contours, the last two as boundaries only.
 //!
 //! `cargo run --release --example tess -- --png tess.png`
+// The C program's index loops are kept as written.
+#![allow(clippy::needless_range_loop)]
 
 use gleval::prelude::*;
 use std::cell::Cell;

@@ -185,7 +185,7 @@ fn run_cases(text: &str) -> String {
                 let (count, cx, cy, r) = (nums[0] as usize, nums[1], nums[2], nums[3]);
                 gl.glu_tess_begin_contour(t);
                 for i in 0..count {
-                    let a = 6.283185307179586 * i as f64 / count as f64;
+                    let a = std::f64::consts::TAU * i as f64 / count as f64;
                     let (c, s) = ((a.cos() * 1024.0).trunc() / 1024.0, (a.sin() * 1024.0).trunc() / 1024.0);
                     vertex(&mut gl, t, &mut id, [cx + r * c, cy + r * s, 0.0]);
                 }

@@ -193,7 +193,7 @@ proptest! {
             match op {
                 0 => gl.glu_tess_begin_polygon(t, None),
                 1 => gl.glu_tess_begin_contour(t),
-                2 | 3 | 4 => gl.glu_tess_vertex(t, &[x, (x * 7.0) % 5.0, 0.0], k),
+                2..=4 => gl.glu_tess_vertex(t, &[x, (x * 7.0) % 5.0, 0.0], k),
                 5 => gl.glu_tess_end_contour(t),
                 6 => gl.glu_tess_end_polygon(t),
                 7 => gl.glu_next_contour(t, GLU_CW),

@@ -157,7 +157,7 @@ impl TessObject {
         match which {
             GLU_TESS_TOLERANCE => {
                 // GLU's test, which lets NaN through.
-                if !(value < 0.0 || value > 1.0) {
+                if value.is_nan() || (0.0..=1.0).contains(&value) {
                     self.rel_tolerance = value;
                     return;
                 }

@@ -67,6 +67,9 @@ fn marked(m: &Mesh, f: usize) -> bool {
     f == NIL || !m.f[f].inside || m.f[f].marked
 }
 
+/// A way of measuring a candidate primitive from an edge.
+type Measure = fn(&mut Mesh, usize) -> Candidate;
+
 /// The largest fan around `e_orig.org` through `e_orig`'s face (`MaximumFan`).
 fn maximum_fan(m: &mut Mesh, e_orig: usize) -> Candidate {
     let mut t = Trail { m, faces: Vec::new() };
@@ -162,7 +165,7 @@ fn render_maximum_face_group(
     let mut best = Candidate { size: 1, start: e, kind: Group::Triangle };
     if !flag_boundary {
         let (lnext, lprev) = (m.lnext(e), m.lprev(e));
-        let tries: [(fn(&mut Mesh, usize) -> Candidate, usize); 6] = [
+        let tries: [(Measure, usize); 6] = [
             (maximum_fan, e),
             (maximum_fan, lnext),
             (maximum_fan, lprev),
@@ -355,7 +358,7 @@ fn fan_winds_once(cache: &[CachedVertex]) -> bool {
         total += sin.atan2(p[0] * c[0] + p[1] * c[1] + p[2] * c[2]);
     }
     // NaN (a NaN coordinate) compares false: such a contour keeps GLU's path.
-    !(total >= std::f64::consts::TAU * (1.0 - 1e-9))
+    total.is_nan() || total < std::f64::consts::TAU * (1.0 - 1e-9)
 }
 
 /// Draws a single contour as one fan (or triangle, or line loop) from its first vertex when
