@@ -1,4 +1,4 @@
-//! GLU's tessellator against real GLU: `tests/reference/glu/tess_cases.txt` run through
+//! GLU's tessellator against real GLU: `tests/reference/glu/tess_cases.in` run through
 //! gleval here and through the installed GLU by `tess_calls.c` (its output committed as
 //! `tess_calls.txt`); every callback, with every number bit for bit, must be the same.
 
@@ -232,7 +232,7 @@ fn cases(text: &str) -> Vec<(String, String)> {
 #[test]
 fn every_case_calls_back_as_real_glu_does() {
     let expected = cases(&reference("tess_calls.txt"));
-    let actual = cases(&run_cases(&reference("tess_cases.txt")));
+    let actual = cases(&run_cases(&reference("tess_cases.in")));
     assert_eq!(expected.len(), actual.len(), "number of cases");
     let mut differ = Vec::new();
     for ((name, want), (_, got)) in expected.iter().zip(&actual) {

@@ -1,7 +1,7 @@
-/* Runs the polygons of tess_cases.txt through the installed GLU's tessellator and prints
+/* Runs the polygons of tess_cases.in through the installed GLU's tessellator and prints
  * every callback it makes, with exact numbers (IEEE bits in hex), so that gleval's
  * tessellator can be held to the same output (tests/it/glu_tess.rs).
- * Usage: tess_calls < tess_cases.txt > tess_calls.txt */
+ * Usage: tess_calls < tess_cases.in > tess_calls.txt */
 #include <GL/glu.h>
 #include <stdio.h>
 #include <stdlib.h>
