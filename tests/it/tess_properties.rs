@@ -247,3 +247,27 @@ fn a_contour_winding_twice_around_its_first_vertex_is_swept_not_fanned() {
         check_coverage(std::slice::from_ref(&c), rule, false).unwrap();
     }
 }
+
+#[test]
+fn a_nan_coordinate_in_a_swept_polygon_is_reported_and_nothing_is_drawn() {
+    // Real GLU's sweep crashes on it (a segmentation fault); gleval reports and skips it.
+    let mut gl = Gl::new(8, 8);
+    let t = gl.glu_new_tess();
+    let seen = Rc::new(RefCell::new(Vec::new()));
+    let (errors, drawn) = (seen.clone(), seen.clone());
+    gl.glu_tess_callback(t, GLU_TESS_ERROR, Some(TessCallback::error(move |_, e| errors.borrow_mut().push(e))));
+    gl.glu_tess_callback(t, GLU_TESS_BEGIN, Some(TessCallback::begin(move |_, m| drawn.borrow_mut().push(m))));
+    gl.glu_tess_begin_polygon(t, None);
+    for c in [
+        [[0.0, 0.0, 0.0], [f64::NAN, 0.0, 0.0], [4.0, 4.0, 0.0], [0.0, 4.0, 0.0]],
+        [[0.0, 0.0, 0.0], [2.0, 1.0, 0.0], [3.0, 3.0, 0.0], [1.0, 3.0, 0.0]],
+    ] {
+        gl.glu_tess_begin_contour(t);
+        for p in c {
+            gl.glu_tess_vertex(t, &p, p);
+        }
+        gl.glu_tess_end_contour(t);
+    }
+    gl.glu_tess_end_polygon(t);
+    assert_eq!(*seen.borrow(), vec![GLU_TESS_COORD_TOO_LARGE]);
+}

@@ -26,6 +26,31 @@ impl Gl {
     }
 
     /// `gluNewTess`: a tessellator with the odd winding rule, no normal, no callbacks.
+    ///
+    /// A square with a square hole, as GLU tessellates it: a strip of 7 triangles, then the
+    /// one left over alone.
+    /// ```
+    /// use gleval::prelude::*;
+    /// use std::{cell::RefCell, rc::Rc};
+    /// let mut gl = Gl::new(8, 8);
+    /// let tobj = gl.glu_new_tess();
+    /// let seen = Rc::new(RefCell::new(Vec::new()));
+    /// let (s1, s2) = (seen.clone(), seen.clone());
+    /// gl.glu_tess_callback(tobj, GLU_TESS_BEGIN, Some(TessCallback::begin(move |_, prim| s1.borrow_mut().push(prim))));
+    /// gl.glu_tess_callback(tobj, GLU_TESS_VERTEX, Some(TessCallback::vertex_of(move |_, _: &[f64; 3]| s2.borrow_mut().push(0))));
+    /// gl.glu_tess_begin_polygon(tobj, None);
+    /// for contour in [[[0.0, 0.0], [4.0, 0.0], [4.0, 4.0], [0.0, 4.0]], [[1.0, 1.0], [1.0, 3.0], [3.0, 3.0], [3.0, 1.0]]] {
+    ///     gl.glu_tess_begin_contour(tobj);
+    ///     for [x, y] in contour {
+    ///         gl.glu_tess_vertex(tobj, &[x, y, 0.0], [x, y, 0.0]);
+    ///     }
+    ///     gl.glu_tess_end_contour(tobj);
+    /// }
+    /// gl.glu_tess_end_polygon(tobj);
+    /// gl.glu_delete_tess(tobj);
+    /// // Each primitive, then a 0 per vertex.
+    /// assert_eq!(*seen.borrow(), [vec![GL_TRIANGLE_STRIP], vec![0; 9], vec![GL_TRIANGLES], vec![0; 3]].concat());
+    /// ```
     pub fn glu_new_tess(&mut self) -> GLUtesselator {
         self.tessellators.push(Some(TessObject::new()));
         GLUtesselator(self.tessellators.len() - 1)
