@@ -411,7 +411,8 @@ mod tests {
         assert_eq!(loop_len(&m, e), 4);
         assert_eq!(loop_len(&m, e ^ 1), 4);
         assert_ne!(m.lface(e), m.rface(e));
-        let c = m.connect(e, m.lnext(m.lnext(e)));
+        // The diagonal from the second vertex to the fourth.
+        let c = m.connect(e, m.lnext(m.lnext(m.lnext(e))));
         assert_eq!(loop_len(&m, c), 3);
         assert_eq!(loop_len(&m, c ^ 1), 3);
         m.delete(c);
