@@ -342,7 +342,7 @@ fn fan_walk(cache: &[CachedVertex], mut f: impl FnMut([f64; 3]) -> bool) -> bool
 }
 
 /// Whether the fan's triangles, all facing one way, turn less than once around the first
-/// vertex. GLU does not ask: a contour that winds twice around its first vertex (a
+/// vertex (and the contour does not come back to it). GLU does not ask: a contour that winds twice around its first vertex (a
 /// pentagram seen from a tip, say) comes out of GLU's quick path as overlapping triangles,
 /// covering the twice-wound region twice under every rule (or not at all with
 /// `GLU_TESS_WINDING_ABS_GEQ_TWO`). gleval sends such a contour through the sweep instead,
@@ -350,6 +350,12 @@ fn fan_walk(cache: &[CachedVertex], mut f: impl FnMut([f64; 3]) -> bool) -> bool
 fn fan_winds_once(cache: &[CachedVertex]) -> bool {
     let v0 = cache[0].coords;
     let d = |c: [f64; 3]| [c[0] - v0[0], c[1] - v0[1], c[2] - v0[2]];
+    // A contour that comes back to its first vertex is two loops around it, whose sectors
+    // may overlap however small their sum: the sweep decides.
+    let last = cache.len() - 1;
+    if cache[2..last].iter().any(|v| v.coords == v0) {
+        return false;
+    }
     let mut total = 0.0;
     for w in cache[1..].windows(2) {
         let (p, c) = (d(w[0].coords), d(w[1].coords));
