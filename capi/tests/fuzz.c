@@ -1,5 +1,5 @@
 /* fuzz.c: random GL, GLU and GLUT calls through gleval's C ABI: NULL pointers, negative and
- * huge orders, absurd grids, NaN and infinite values, unknown enums, calls inside glBegin/glEnd
+ * huge orders, absurd grids, NaN and infinite values, tessellator calls in any order, unknown enums, calls inside glBegin/glEnd
  * and inside display lists. The library must never crash, hang or unwind: every call returns,
  * glGetError only ever answers one of GL's codes, and the frame the calls drew renders.
  *
@@ -22,6 +22,7 @@ static float buf[16384];   /* big enough for any layout the pools below allow */
 static double dbuf[16384];
 static GLuint names[64];
 static GLUnurbs *nurbs[4];
+static GLUtesselator *tess[2];
 /* Between glNewList and glEndList no list is called: a list that calls itself n times runs
  * n^64 calls before GL's nesting limit stops it, in Mesa as here (a hang, not a fault). */
 static int compiling;
@@ -89,6 +90,43 @@ static void nurbs_call(void) {
     }
 }
 
+static void tess_vertex_cb(void *data) { if (data) glVertex3dv((const GLdouble *)data); }
+static void tess_error_cb(GLenum code) { (void)gluErrorString(code); }
+static void tess_edge_cb(GLboolean flag) { (void)flag; }
+static void tess_combine_cb(GLdouble c[3], void *d[4], GLfloat w[4], void **out) {
+    (void)c; (void)d; (void)w;
+    *out = pick(5) ? (void *)&dbuf[pick(1000) * 3] : NULL;
+}
+static const GLenum tess_props[] = {GLU_TESS_WINDING_RULE, GLU_TESS_BOUNDARY_ONLY, GLU_TESS_TOLERANCE, 0x1234};
+static const double tess_values[] = {GLU_TESS_WINDING_ODD, GLU_TESS_WINDING_NONZERO, GLU_TESS_WINDING_POSITIVE,
+    GLU_TESS_WINDING_NEGATIVE, GLU_TESS_WINDING_ABS_GEQ_TWO, 0, 1, 0.5, -1, 100135, NAN, 1e300};
+
+/* The polygon tessellator: calls in any order, vertices anywhere in dbuf (NaN every 17th
+ * value, so some polygons have NaN coordinates), combine callbacks that answer NULL. */
+static void tess_call(void) {
+    GLUtesselator *t = pick(8) ? tess[pick(2)] : NULL;
+    switch (pick(10)) {
+    case 0: gluTessBeginPolygon(t, pick(2) ? (void *)buf : NULL); break;
+    case 1: gluTessBeginContour(t); break;
+    case 2: case 3: case 4:
+        for (int k = pick(12); k > 0; k--) { GLdouble *v = &dbuf[pick(5000) * 3]; gluTessVertex(t, v, v); }
+        break;
+    case 5: gluTessEndContour(t); break;
+    case 6: gluTessEndPolygon(t); break;
+    case 7: gluTessProperty(t, ANY(tess_props), ANY(tess_values)); gluTessNormal(t, f(), f(), f()); break;
+    case 8: if (pick(2)) gluNextContour(t, GLU_CW); else if (pick(2)) gluBeginPolygon(t); else gluEndPolygon(t); break;
+    default:
+        switch (pick(6)) {
+        case 0: gluTessCallback(t, GLU_TESS_VERTEX, pick(4) ? (_GLUfuncptr)tess_vertex_cb : NULL); break;
+        case 1: gluTessCallback(t, GLU_TESS_BEGIN, (_GLUfuncptr)begin_cb); break;
+        case 2: gluTessCallback(t, GLU_TESS_END, (_GLUfuncptr)end_cb); break;
+        case 3: gluTessCallback(t, GLU_TESS_COMBINE, pick(3) ? (_GLUfuncptr)tess_combine_cb : NULL); break;
+        case 4: gluTessCallback(t, GLU_TESS_EDGE_FLAG, pick(2) ? (_GLUfuncptr)tess_edge_cb : NULL); break;
+        default: gluTessCallback(t, pick(2) ? GLU_TESS_ERROR : 0x1234, (_GLUfuncptr)tess_error_cb); break;
+        }
+    }
+}
+
 static void map_call(void) {
     switch (pick(10)) {
     case 0: glMap1f(ANY(targets), f(), f(), ANY(strides), ANY(orders), fp()); break;
@@ -151,14 +189,16 @@ static void state_call(void) {
 
 static void display(void) {
     for (int i = 0; i < 4; i++) nurbs[i] = gluNewNurbsRenderer();
+    for (int i = 0; i < 2; i++) tess[i] = gluNewTess();
     for (size_t i = 0; i < sizeof buf / sizeof buf[0]; i++) {
         buf[i] = (i % 17 == 5) ? NAN : (float)((int)(i % 11) - 5) * 0.4f;
         dbuf[i] = buf[i];
     }
     for (unsigned long c = 0; c < calls; c++) {
-        switch (pick(3)) {
+        switch (pick(4)) {
         case 0: map_call(); break;
         case 1: nurbs_call(); break;
+        case 2: tess_call(); break;
         default: state_call(); break;
         }
         GLenum e = glGetError();
@@ -173,6 +213,8 @@ static void display(void) {
     glEndList();
     for (int i = 0; i < 4; i++) gluDeleteNurbsRenderer(nurbs[i]);
     gluDeleteNurbsRenderer(NULL);
+    for (int i = 0; i < 2; i++) gluDeleteTess(tess[i]);
+    gluDeleteTess(NULL);
     printf("fuzz: %lu calls returned; errors: none %lu, enum %lu, value %lu, operation %lu, "
            "overflow %lu, underflow %lu, out of memory %lu\n", done_calls, errors[0], errors[1],
            errors[2], errors[3], errors[4], errors[5], errors[6]);

@@ -165,6 +165,9 @@ pub struct Gl {
     /// GLU NURBS objects, indexed by their handles: the one import from `gl` into `glu`, since
     /// GLU's calls are methods of `Gl` (the porting rule).
     pub(crate) nurbs: Vec<Option<crate::glu::NurbsObject>>,
+    /// GLU tessellator objects, indexed by their handles (`None` once deleted, or while one
+    /// of its calls runs).
+    pub(crate) tessellators: Vec<Option<crate::glu::TessObject>>,
 }
 
 impl Gl {
@@ -200,6 +203,7 @@ impl Gl {
             color_material_sync: color_material::ColorMaterialSync::default(),
             fragment_ops: fragment::FragmentOps::default(),
             nurbs: Vec::new(),
+            tessellators: Vec::new(),
         }
     }
 

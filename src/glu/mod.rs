@@ -25,8 +25,11 @@ mod errors;
 mod evaluation;
 mod mipmap;
 mod model;
+mod tess;
 
 pub use errors::glu_error_string;
 pub use model::callbacks::{NurbsCallback, UserData};
 pub use model::object::GLUnurbs;
 pub(crate) use model::object::NurbsObject;
+pub(crate) use tess::TessObject;
+pub use tess::{GLUtesselator, TessCallback, TessData};

@@ -62,6 +62,8 @@ mod stipple;
 mod strokes;
 #[path = "../../examples/teapot.rs"]
 mod teapot;
+#[path = "../../examples/tess.rs"]
+mod tess;
 #[path = "../../examples/texgen.rs"]
 mod texgen;
 #[path = "../../examples/texsurf.rs"]
@@ -168,6 +170,12 @@ fn trimmed_matches_glu() {
 #[test]
 fn rational_matches_glu() {
     check("rational", rational::app, 0.0);
+}
+
+#[test]
+fn tess_matches_glu() {
+    // GLU's polygon tessellator: the Red Book's tess.c and tesswind.c's winding rules.
+    check_with("tess", tess::app, |_| 0.001);
 }
 
 #[test]

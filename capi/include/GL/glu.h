@@ -1,4 +1,5 @@
-/* GL/glu.h for gleval: GLU's projections, mipmaps, error strings and NURBS interface.
+/* GL/glu.h for gleval: GLU's projections, mipmaps, error strings, NURBS interface and
+ * polygon tessellator.
  *
  * Written for gleval; the constants are GLU's (src/glu/consts.rs, checked against the
  * system's GLU header by capi/tests/headers.sh) and the functions declared are exactly those
@@ -23,6 +24,10 @@ extern "C" {
    back with the arguments its `which` implies. */
 typedef struct GLUnurbs GLUnurbs;
 typedef GLUnurbs GLUnurbsObj;
+/* A polygon tessellator (opaque), under its three historical names. */
+typedef struct GLUtesselator GLUtesselator;
+typedef GLUtesselator GLUtesselatorObj;
+typedef GLUtesselator GLUtriangulatorObj;
 #ifdef __cplusplus
 typedef void (GLAPIENTRYP _GLUfuncptr)(void);
 #else
@@ -223,6 +228,21 @@ GLAPI void GLAPIENTRY gluEndTrim(GLUnurbs *nurb);
 GLAPI void GLAPIENTRY gluNurbsCurve(GLUnurbs *nurb, GLint knotCount, GLfloat *knots, GLint stride, GLfloat *control, GLint order, GLenum type);
 GLAPI void GLAPIENTRY gluNurbsSurface(GLUnurbs *nurb, GLint sKnotCount, GLfloat *sKnots, GLint tKnotCount, GLfloat *tKnots, GLint sStride, GLint tStride, GLfloat *control, GLint sOrder, GLint tOrder, GLenum type);
 GLAPI void GLAPIENTRY gluPwlCurve(GLUnurbs *nurb, GLint count, GLfloat *data, GLint stride, GLenum type);
+
+GLAPI GLUtesselator *GLAPIENTRY gluNewTess(void);
+GLAPI void GLAPIENTRY gluDeleteTess(GLUtesselator *tess);
+GLAPI void GLAPIENTRY gluTessBeginPolygon(GLUtesselator *tess, GLvoid *data);
+GLAPI void GLAPIENTRY gluTessBeginContour(GLUtesselator *tess);
+GLAPI void GLAPIENTRY gluTessVertex(GLUtesselator *tess, GLdouble *location, GLvoid *data);
+GLAPI void GLAPIENTRY gluTessEndContour(GLUtesselator *tess);
+GLAPI void GLAPIENTRY gluTessEndPolygon(GLUtesselator *tess);
+GLAPI void GLAPIENTRY gluTessProperty(GLUtesselator *tess, GLenum which, GLdouble data);
+GLAPI void GLAPIENTRY gluGetTessProperty(GLUtesselator *tess, GLenum which, GLdouble *data);
+GLAPI void GLAPIENTRY gluTessNormal(GLUtesselator *tess, GLdouble valueX, GLdouble valueY, GLdouble valueZ);
+GLAPI void GLAPIENTRY gluTessCallback(GLUtesselator *tess, GLenum which, _GLUfuncptr CallBackFunc);
+GLAPI void GLAPIENTRY gluBeginPolygon(GLUtesselator *tess);
+GLAPI void GLAPIENTRY gluNextContour(GLUtesselator *tess, GLenum type);
+GLAPI void GLAPIENTRY gluEndPolygon(GLUtesselator *tess);
 
 #ifdef __cplusplus
 }

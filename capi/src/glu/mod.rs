@@ -1,5 +1,7 @@
-//! `GL/glu.h`: projections, mipmaps, error strings and the NURBS interface.
+//! `GL/glu.h`: projections, mipmaps, error strings, the NURBS interface and the polygon
+//! tessellator.
 
 mod callbacks;
 mod misc;
 mod nurbs;
+mod tess;

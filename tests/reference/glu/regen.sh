@@ -15,3 +15,5 @@ cc -std=c99 -O1 -o "$build/tess_counts" "$here/tess_counts.c" -lOSMesa -lGLU -lG
 GALLIUM_DRIVER=llvmpipe "$build/tess_counts" > "$out/tess_counts.txt"
 cc -std=c99 -O1 -o "$build/surfpoints" "$here/surfpoints.c" -lOSMesa -lGLU -lGL
 GALLIUM_DRIVER=llvmpipe "$build/surfpoints" > "$out/surfpoints.txt"
+cc -std=c99 -O1 -o "$build/tess_calls" "$here/tess_calls.c" -lGLU -lGL -lm
+"$build/tess_calls" < "$here/tess_cases.in" > "$out/tess_calls.txt"
