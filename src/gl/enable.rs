@@ -81,6 +81,8 @@ impl Gl {
         }
         let on = if let Some(on) = self.eval.is_enabled(cap) {
             on
+        } else if let Some(on) = self.arrays.is_enabled(cap) {
+            on
         } else if Caps::known(cap) {
             self.caps.is_on(cap)
         } else {
@@ -101,7 +103,7 @@ impl Gl {
         if self.reject_inside_begin_end() {
             return;
         }
-        if self.eval.set_enabled(cap, on) {
+        if self.eval.set_enabled(cap, on) || self.arrays.set_enabled(cap, on) {
             return;
         }
         if Caps::known(cap) {

@@ -6,14 +6,17 @@
 //! slices; a slice shorter than the call needs sets `GL_INVALID_VALUE` instead of reading out of
 //! bounds. Nothing here panics on bad input.
 
+mod arrays;
 mod attrib;
 mod binding;
 mod bitmap;
 mod clip;
+mod client_memory;
 pub mod consts;
 mod enable;
 mod eval;
 pub mod feedback;
+mod feedback_prims;
 mod fragment;
 mod frame;
 mod grid_vertices;
@@ -27,6 +30,7 @@ mod offset;
 mod pixels;
 mod raster;
 mod raster_pos;
+mod select;
 mod read_pixels;
 mod stipple;
 mod texgen;
@@ -35,6 +39,8 @@ pub mod types;
 mod variants;
 mod vertex;
 
+pub use arrays::PointerArg;
+pub use client_memory::{ArrayElement, ClientArray, ClientMemory, ClientPointer};
 pub use eval::{MapTarget, Slot};
 pub use fragment::Fog;
 pub use frame::{Call, Command, DrawState, Frame, GridMesh, MaterialChange, MeshMode, MeshVertices, Primitive};
@@ -158,6 +164,10 @@ pub struct Gl {
     /// GLU NURBS objects, indexed by their handles: the one import from `gl` into `glu`, since
     /// GLU's calls are methods of `Gl` (the porting rule).
     pub(crate) nurbs: Vec<Option<crate::glu::NurbsObject>>,
+    /// The client's vertex arrays and the current edge flag.
+    arrays: arrays::VertexArrays,
+    /// Selection mode: its buffer, the name stack and the hit being gathered.
+    select: select::Selection,
 }
 
 /// Mesa's `FLOAT_TO_INT` for colours and normals in `glGetIntegerv`: c · (2³¹ − 1) truncated. A
@@ -204,6 +214,8 @@ impl Gl {
             hints: hint::Hints::default(),
             fragment_ops: fragment::FragmentOps::default(),
             nurbs: Vec::new(),
+            arrays: arrays::VertexArrays::default(),
+            select: select::Selection::default(),
         }
     }
 
@@ -268,6 +280,7 @@ impl Gl {
             frame.states.clear();
             frame.commands.clear();
             frame.material_changes.clear();
+            frame.hidden_edges.clear();
             self.frame = frame;
         }
     }
@@ -449,6 +462,8 @@ impl Gl {
             .grid_query(pname, out)
             .or_else(|| self.raster_pos_query(pname, out))
             .or_else(|| self.current_query(pname, out))
+            .or_else(|| self.arrays_query(pname, out))
+            .or_else(|| self.select_query(pname, out))
     }
 
     /// How many values `glGet*v(pname)` writes (1 for a name it does not answer, where it

@@ -25,6 +25,7 @@ mod errors;
 mod evaluation;
 mod mipmap;
 mod model;
+mod project;
 
 pub use errors::glu_error_string;
 pub use model::callbacks::{NurbsCallback, UserData};

@@ -1,5 +1,6 @@
 //! `GL/gl.h`: the GL 1.x entry points `Gl` implements, one file per area.
 
+mod arrays;
 mod eval;
 mod feedback;
 mod fragment;
@@ -10,6 +11,7 @@ mod matrix;
 mod pixels;
 mod raster_modes;
 mod read_pixels;
+mod select;
 mod state;
 mod texgen;
 mod texture;

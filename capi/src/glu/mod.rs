@@ -3,3 +3,4 @@
 mod callbacks;
 mod misc;
 mod nurbs;
+mod project;
