@@ -75,8 +75,8 @@ fn init(gl: &mut Gl) -> Arrays {
     gl.pixel_storei(GL_UNPACK_ALIGNMENT, 1);
     let texels = checker.as_flattened().as_flattened();
     gl.tex_image_2d(GL_TEXTURE_2D, 0, GL_RGBA as GLint, 8, 8, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels);
-    gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST as GLint);
-    gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST as GLint);
+    gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR as GLint);
+    gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR as GLint);
     gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE as GLint);
     gl.enable(GL_LIGHT0);
     gl.light_fv(GL_LIGHT0, GL_POSITION, &[0.3, 0.5, 1.0, 0.0]);
@@ -89,7 +89,7 @@ fn init(gl: &mut Gl) -> Arrays {
             for i in 0..4 {
                 let (x, y) = grid(i, j);
                 let w = if format.vertex == 4 { 2.0 } else { 1.0 };
-                let tex = [i as f32 * 8.0 / 3.0 / 4.0 * w, j as f32 * 0.5 * w, 0.0, w];
+                let tex = [(0.05 + 0.3 * i as f32) * w, (0.05 + 0.45 * j as f32) * w, 0.0, w];
                 let rgba = [i as f32 / 3.0, j as f32 / 2.0, 0.3 + 0.1 * k as f32 / 2.0, 1.0];
                 let rgba8 = [(255.0 * rgba[0]) as u8, (255.0 * rgba[1]) as u8, (255.0 * rgba[2]) as u8, 255];
                 let n = [0.6 * (2.0 * i as f32).sin(), 0.6 * (3.0 * j as f32).cos(), 0.8];
@@ -196,14 +196,13 @@ fn display(gl: &mut Gl, a: &Arrays) {
 pub fn app() -> App {
     let arrays = std::rc::Rc::new(std::cell::RefCell::new(None));
     let at_display = arrays.clone();
-    App::new("Vertex arrays", 400, 400)
-        .init(move |gl| *arrays.borrow_mut() = Some(init(gl)))
-        .reshape(reshape)
-        .display(move |gl| {
+    App::new("Vertex arrays", 400, 400).init(move |gl| *arrays.borrow_mut() = Some(init(gl))).reshape(reshape).display(
+        move |gl| {
             if let Some(a) = at_display.borrow().as_ref() {
                 display(gl, a);
             }
-        })
+        },
+    )
 }
 
 #[allow(dead_code)]

@@ -46,7 +46,8 @@ pub(crate) enum Which {
 }
 
 impl Which {
-    const ALL: [Which; 6] = [Which::Vertex, Which::Normal, Which::Color, Which::Index, Which::TexCoord, Which::EdgeFlag];
+    const ALL: [Which; 6] =
+        [Which::Vertex, Which::Normal, Which::Color, Which::Index, Which::TexCoord, Which::EdgeFlag];
 
     fn of_capability(cap: GLenum) -> Option<Which> {
         Self::ALL.into_iter().find(|w| w.capability() == cap)
@@ -79,16 +80,9 @@ impl Which {
         let types: &[GLenum] = match self {
             Which::Vertex | Which::TexCoord => &[GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE],
             Which::Normal => &[GL_BYTE, GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE],
-            Which::Color => &[
-                GL_BYTE,
-                GL_UNSIGNED_BYTE,
-                GL_SHORT,
-                GL_UNSIGNED_SHORT,
-                GL_INT,
-                GL_UNSIGNED_INT,
-                GL_FLOAT,
-                GL_DOUBLE,
-            ],
+            Which::Color => {
+                &[GL_BYTE, GL_UNSIGNED_BYTE, GL_SHORT, GL_UNSIGNED_SHORT, GL_INT, GL_UNSIGNED_INT, GL_FLOAT, GL_DOUBLE]
+            }
             Which::Index => &[GL_UNSIGNED_BYTE, GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE],
             Which::EdgeFlag => &[GL_UNSIGNED_BYTE],
         };

@@ -87,7 +87,10 @@ fn triangles(mode: GLenum, n: usize) -> Vec<Triangle> {
         GL_QUADS => (0..n / 4)
             .flat_map(|q| {
                 let b = 4 * q;
-                [tri([b, b + 1, b + 3], [true, false, true], true), tri([b + 1, b + 2, b + 3], [true, true, false], false)]
+                [
+                    tri([b, b + 1, b + 3], [true, false, true], true),
+                    tri([b + 1, b + 2, b + 3], [true, true, false], false),
+                ]
             })
             .collect(),
         GL_QUAD_STRIP => (1..n / 2)

@@ -222,8 +222,16 @@ impl Assembler {
         let v: Vec<ShadedVertex> = vertices.iter().enumerate().map(|(i, v)| shaders[shader_of(i)].shade(v)).collect();
         let n = v.len();
         let closing_edge_first = mode != GL_POLYGON;
-        let mut ctx =
-            PrimitiveContext { out: self, state, v: &v, stipple: Stipple::default(), closing_edge_first, hidden };
+        let quads = mode == GL_QUADS;
+        let mut ctx = PrimitiveContext {
+            out: self,
+            state,
+            v: &v,
+            stipple: Stipple::default(),
+            closing_edge_first,
+            hidden,
+            quads,
+        };
         match mode {
             GL_POINTS => (0..n).for_each(|i| ctx.point(i)),
             GL_LINES => (0..n / 2).for_each(|i| {
@@ -342,6 +350,10 @@ struct PrimitiveContext<'a, 'b> {
     closing_edge_first: bool,
     /// Vertices whose edge flag is false (`glEdgeFlag`); empty when none is.
     hidden: &'b [bool],
+    /// `GL_QUADS`: a quad is filled as (v0, v1, v3), (v1, v2, v3), its diagonal v1–v3, as
+    /// Mesa's draw module splits it (`draw_pt_decompose.h`); the diagonal shows where
+    /// attributes are interpolated across a quad that is no parallelogram.
+    quads: bool,
 }
 
 impl PrimitiveContext<'_, '_> {
@@ -511,6 +523,9 @@ impl PrimitiveContext<'_, '_> {
             GL_POINT => corners.iter().for_each(|&c| self.point_at(c)),
             GL_LINE => self.edges(&corners),
             _ => {
+                if self.quads && corners.len() == 4 && idx.len() == 4 {
+                    corners.rotate_left(1);
+                }
                 let tris: Vec<Corner> =
                     (1..corners.len() - 1).flat_map(|k| [corners[0], corners[k], corners[k + 1]]).collect();
                 // The polygon stipple applies to filled polygons only (GL 1.1 §3.5.6).

@@ -20,6 +20,8 @@ mod bezsurf;
 mod bsurf;
 #[path = "../../examples/colormap.rs"]
 mod colormap;
+#[path = "../../examples/edgeflags.rs"]
+mod edgeflags;
 #[path = "../../examples/ex1_bezier.rs"]
 mod ex1_bezier;
 #[path = "../../examples/ex2_bspline.rs"]
@@ -46,6 +48,8 @@ mod mipnurbs;
 mod operations;
 #[path = "../../examples/outline.rs"]
 mod outline;
+#[path = "../../examples/picking.rs"]
+mod picking;
 #[path = "../../examples/rational.rs"]
 mod rational;
 #[path = "../../examples/rationalmap.rs"]
@@ -68,12 +72,8 @@ mod texsurf;
 mod texteapot;
 #[path = "../../examples/trimmed.rs"]
 mod trimmed;
-#[path = "../../examples/picking.rs"]
-mod picking;
 #[path = "../../examples/vertexarrays.rs"]
 mod vertexarrays;
-#[path = "../../examples/edgeflags.rs"]
-mod edgeflags;
 
 /// Mismatched pixels allowed: 0.2% of the picture. A missing curve, a wrong colour or a
 /// culled surface costs several percent; what remains at 0.2% is anti-diagonal staircase

@@ -66,9 +66,16 @@ fn projections_agree_with_glu_bit_for_bit() {
         };
         let bits: Vec<u64> = out.iter().map(|v| v.to_bits()).collect();
         // NaN payloads may differ; any NaN matches a NaN.
-        let same = bits.iter().zip(&expected).all(|(x, y)| x == y || (f64::from_bits(*x).is_nan() && f64::from_bits(*y).is_nan()));
+        let same = bits
+            .iter()
+            .zip(&expected)
+            .all(|(x, y)| x == y || (f64::from_bits(*x).is_nan() && f64::from_bits(*y).is_nan()));
         if ours != ret || !same {
-            failures.push(format!("line {}: {ours} {out:?} vs GLU {ret} {:?}", line_no + 1, expected.iter().map(|b| f64::from_bits(*b)).collect::<Vec<_>>()));
+            failures.push(format!(
+                "line {}: {ours} {out:?} vs GLU {ret} {:?}",
+                line_no + 1,
+                expected.iter().map(|b| f64::from_bits(*b)).collect::<Vec<_>>()
+            ));
         }
     }
     assert!(calls >= 600 && picks >= 100, "reference too short: {calls} calls, {picks} picks");

@@ -45,8 +45,8 @@ static void init(void)
         }
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 8, 8, 0, GL_RGBA, GL_UNSIGNED_BYTE, checker);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
     glEnable(GL_LIGHT0);
     glLightfv(GL_LIGHT0, GL_POSITION, (GLfloat[]){0.3f, 0.5f, 1.0f, 0.0f});
@@ -59,7 +59,7 @@ static void init(void)
                 float x, y;
                 grid(i, j, &x, &y);
                 float w = formats[f].vertex == 4 ? 2.0f : 1.0f;
-                GLfloat tex[4] = {i * 8.0f / 3.0f / 4.0f * w, j * 0.5f * w, 0.0f, w};
+                GLfloat tex[4] = {(0.05f + 0.3f * i) * w, (0.05f + 0.45f * j) * w, 0.0f, w};
                 GLfloat rgba[4] = {i / 3.0f, j / 2.0f, 0.3f + 0.1f * f / 2.0f, 1.0f};
                 GLubyte rgba8[4] = {(GLubyte)(255 * rgba[0]), (GLubyte)(255 * rgba[1]), (GLubyte)(255 * rgba[2]), 255};
                 GLfloat n[3] = {0.6f * sinf(2.0f * i), 0.6f * cosf(3.0f * j), 0.8f};
