@@ -1,6 +1,7 @@
 //! Integration tests: one binary to save link time (STYLE.md §9).
 #![allow(clippy::needless_range_loop)]
 
+mod arrays_properties;
 mod conformance;
 mod eval_mesh;
 mod glu_errors;
@@ -11,6 +12,7 @@ mod glut_loop;
 mod gpu_parity;
 mod interactive_demo;
 mod mesa_calls;
+mod picking_demo;
 mod properties;
 mod raster_images;
 mod raster_modes;
