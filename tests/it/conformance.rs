@@ -49,7 +49,7 @@ mod operations;
 #[path = "../../examples/outline.rs"]
 mod outline;
 #[path = "../../examples/picking.rs"]
-mod picking;
+pub(crate) mod picking;
 #[path = "../../examples/rational.rs"]
 mod rational;
 #[path = "../../examples/rationalmap.rs"]

@@ -4,8 +4,7 @@
 
 use gleval::prelude::*;
 
-#[path = "../../examples/picking.rs"]
-mod picking;
+use crate::conformance::picking;
 
 /// The highlighted point (the last single point drawn 14 pixels wide), if any.
 fn highlighted(gl: &mut Gl) -> Option<[f32; 2]> {
