@@ -1,6 +1,9 @@
 //! GPU vs CPU tessellation throughput, side by side in one run (medians of several runs):
 //! a bicubic patch with GL_AUTO_NORMAL over 100², 1000² and 4000² grid points, and 10,000
-//! small patches (4×4 control points, 9×9 grid each) in one frame.
+//! small patches (4×4 control points, 9×9 grid each) in one frame, and a GLU NURBS surface
+//! (bicubic, 10 × 10 control points: 49 Bezier patches) drawn with `GLU_PATH_LENGTH` at a fixed
+//! `GLU_SAMPLING_TOLERANCE` of 2 pixels, the whole surface in a 1000 × 1000 viewport, which GLU samples into one
+//! `glEvalMesh2` per patch.
 //!
 //! - `cpu`: the façade's CPU tessellator, `glEvalMesh2(GL_FILL)` recorded into a frame (grid
 //!   points with normals, evaluated once each).
@@ -9,11 +12,12 @@
 //!   pass reads the buffers on the GPU). Grids larger than one storage binding are split into
 //!   row bands, one dispatch each.
 //!
-//! `cargo run --release --example gpu_bench` (needs a wgpu adapter: lavapipe on machines
+//! `cargo run --release --example gpu_bench [CASE...]` (needs a wgpu adapter: lavapipe on machines
 //! without a GPU). Prints `<case> cpu=<M points/s> gpu=<M points/s> ratio=<gpu/cpu>`, and
 //! where the adapter has timestamp queries `gpu_pass=<M points/s>`: the same points over the
 //! compute passes' own GPU time (median of the runs), without the recording, packing,
-//! submission and wait that the wall-time `gpu` column includes.
+//! submission and wait that the wall-time `gpu` column includes. A second line per case gives
+//! the same three rates as patches and triangles per second (`patches/s`, `M triangles/s`).
 
 use gleval::gl::{Gl, MeshVertices, Tessellator};
 use gleval::prelude::*;
@@ -64,14 +68,62 @@ fn record(gl: &mut Gl, patches: usize, n: i32, band: i32) {
     }
 }
 
-fn cpu_rate(patches: usize, n: i32, band: i32, runs: usize) -> f64 {
-    let mut gl = Gl::new(64, 64);
+/// What one case records into a frame.
+#[derive(Clone, Copy)]
+enum Case {
+    /// `patches` bicubic patches over an `n` × `n` grid in bands of `band` rows.
+    Grid { patches: usize, n: i32, band: i32 },
+    /// The GLU NURBS surface at the fixed tolerance.
+    Nurbs,
+}
+
+/// The GLU case's surface: bicubic, 10 × 10 control points on uniform knots 0..13 (as
+/// `bench/anchor.c`'s), seen whole in a 1000 × 1000 viewport.
+fn record_nurbs(gl: &mut Gl) {
+    let knots: Vec<f32> = (0..14).map(|k| k as f32).collect();
+    let ctl: Vec<f32> = (0..10)
+        .flat_map(|i| (0..10).flat_map(move |j| [i as f32, j as f32, ((i * 3 + j * 5) % 7) as f32 * 0.3]))
+        .collect();
+    gl.matrix_mode(GL_PROJECTION);
+    gl.load_identity();
+    gl.ortho(-0.5, 9.5, -0.5, 9.5, -10.0, 10.0);
+    gl.matrix_mode(GL_MODELVIEW);
+    gl.load_identity();
+    gl.enable(GL_AUTO_NORMAL);
+    let nb = gl.glu_new_nurbs_renderer();
+    gl.glu_nurbs_property(nb, GLU_SAMPLING_METHOD, GLU_PATH_LENGTH as f32);
+    gl.glu_nurbs_property(nb, GLU_SAMPLING_TOLERANCE, 2.0);
+    gl.glu_begin_surface(nb);
+    gl.glu_nurbs_surface(nb, 14, &knots, 14, &knots, 30, 3, &ctl, 4, 4, GL_MAP2_VERTEX_3);
+    gl.glu_end_surface(nb);
+    gl.glu_delete_nurbs_renderer(nb);
+}
+
+impl Case {
+    fn record(self, gl: &mut Gl) {
+        match self {
+            Self::Grid { patches, n, band } => record(gl, patches, n, band),
+            Self::Nurbs => record_nurbs(gl),
+        }
+    }
+}
+
+/// Patches, grid points and triangles of a recorded frame's meshes.
+fn count(frame: &gleval::gl::Frame) -> [f64; 3] {
+    frame.meshes.iter().fold([0.0; 3], |[p, v, t], m| {
+        let (nu, nv) = (m.nu as f64, m.nv as f64);
+        [p + 1.0, v + nu * nv, t + 2.0 * (nu - 1.0) * (nv - 1.0)]
+    })
+}
+
+fn cpu_rate(case: Case, runs: usize) -> f64 {
+    let mut gl = Gl::new(1000, 1000);
     gl.set_tessellator(Tessellator::Cpu);
     let t = time(runs, || {
-        record(&mut gl, patches, n, band);
+        case.record(&mut gl);
         std::hint::black_box(gl.take_frame());
     });
-    (patches as f64) * f64::from((n + 1) * (n + 1)) / t
+    1.0 / t
 }
 
 /// Evaluates the deferred jobs of a frame, one dispatch per batch that fits the device, and
@@ -118,9 +170,9 @@ fn gpu_evaluate(
     gpu_time
 }
 
-/// Points per second by wall time, and by the compute passes' GPU time where measured.
-fn gpu_rate(r: &Renderer, evaluator: &Evaluator, patches: usize, n: i32, band: i32, runs: usize) -> (f64, Option<f64>) {
-    let mut gl = Gl::new(64, 64);
+/// Frames per second by wall time, and by the compute passes' GPU time where measured.
+fn gpu_rate(r: &Renderer, evaluator: &Evaluator, case: Case, runs: usize) -> (f64, Option<f64>) {
+    let mut gl = Gl::new(1000, 1000);
     gl.set_tessellator(Tessellator::Gpu);
     let timer = PassTimer::new(&r.device, &r.queue, 64);
     // One untimed run compiles the pipeline.
@@ -128,11 +180,23 @@ fn gpu_rate(r: &Renderer, evaluator: &Evaluator, patches: usize, n: i32, band: i
     gpu_evaluate(r, evaluator, &gl.take_frame(), timer.as_ref());
     let mut gpu_times = Vec::new();
     let t = time(runs, || {
-        record(&mut gl, patches, n, band);
+        case.record(&mut gl);
         gpu_times.extend(gpu_evaluate(r, evaluator, &gl.take_frame(), timer.as_ref()));
     });
-    let points = (patches as f64) * f64::from((n + 1) * (n + 1));
-    (points / t, (!gpu_times.is_empty()).then(|| points / median(gpu_times)))
+    (1.0 / t, (!gpu_times.is_empty()).then(|| 1.0 / median(gpu_times)))
+}
+
+/// What one frame of `case` holds: [patches, grid points, triangles] (a grid case's bands
+/// are meshes of one patch).
+fn frame_size(case: Case) -> [f64; 3] {
+    let mut gl = Gl::new(1000, 1000);
+    gl.set_tessellator(Tessellator::Gpu);
+    case.record(&mut gl);
+    let [meshes, points, triangles] = count(&gl.take_frame());
+    match case {
+        Case::Grid { patches, .. } => [patches as f64, points, triangles],
+        Case::Nurbs => [meshes, points, triangles],
+    }
 }
 
 fn main() {
@@ -149,22 +213,44 @@ fn main() {
     // Rows per band so that one band's vertices (64 bytes each) fit one binding.
     let band_for = |n: i32| ((limit / 64) / (n as u64 + 1) - 1).clamp(1, n as u64) as i32;
     if std::env::args().any(|a| a == "--overhead") {
-        let (gpu, _) = gpu_rate(&renderer, &evaluator, 1, 1, 1, 30);
-        println!("4-point frame: {:.3} ms", 4.0 / gpu * 1e3);
+        let (frames, _) = gpu_rate(&renderer, &evaluator, Case::Grid { patches: 1, n: 1, band: 1 }, 30);
+        println!("4-point frame: {:.3} ms", 1e3 / frames);
         return;
     }
-    let cases: [(&str, usize, i32, usize); 4] = [
-        ("grid_100x100", 1, 99, 30),
-        ("grid_1000x1000", 1, 999, 7),
-        ("grid_4000x4000", 1, 3999, 3),
-        ("patches_10000_9x9", 10_000, 8, 5),
+    let grid = |patches, n| Case::Grid { patches, n, band: band_for(n) };
+    let cases = [
+        ("grid_100x100", grid(1, 99), 30),
+        ("grid_1000x1000", grid(1, 999), 7),
+        ("grid_4000x4000", grid(1, 3999), 3),
+        ("patches_10000_9x9", grid(10_000, 8), 5),
+        ("glu_nurbs_path_length_2px", Case::Nurbs, 7),
     ];
-    for (name, patches, n, runs) in cases {
-        let band = band_for(n);
-        let cpu = cpu_rate(patches, n, band, runs);
-        let (gpu, pass) = gpu_rate(&renderer, &evaluator, patches, n, band, runs);
-        let pass =
-            pass.map_or_else(|| "gpu_pass=- (no timestamp queries)".to_owned(), |p| format!("gpu_pass={:.2}", p / 1e6));
-        println!("{name} cpu={:.2} gpu={:.2} ratio={:.2} {pass}", cpu / 1e6, gpu / 1e6, gpu / cpu);
+    // `gpu_bench [NAME...]`: only the cases whose names start with one of NAME.
+    let only: Vec<String> = std::env::args().skip(1).filter(|a| !a.starts_with("--")).collect();
+    for (name, case, runs) in cases {
+        if !only.is_empty() && !only.iter().any(|o| name.starts_with(o.as_str())) {
+            continue;
+        }
+        let [patches, points, triangles] = frame_size(case);
+        eprintln!("# {name}: {patches} patches, {points} grid points, {triangles} triangles a frame");
+        let cpu = cpu_rate(case, runs);
+        let (gpu, pass) = gpu_rate(&renderer, &evaluator, case, runs);
+        let rate = |per_frame: f64, f: f64, scale: f64| format!("{:.2}", per_frame * f / scale);
+        let pass_points = pass.map_or_else(|| "- (no timestamp queries)".to_owned(), |p| rate(points, p, 1e6));
+        println!(
+            "{name} cpu={} gpu={} ratio={:.2} gpu_pass={pass_points}",
+            rate(points, cpu, 1e6),
+            rate(points, gpu, 1e6),
+            gpu / cpu
+        );
+        let pass_tri = pass.map_or_else(|| "-".to_owned(), |p| rate(triangles, p, 1e6));
+        let pass_patch = pass.map_or_else(|| "-".to_owned(), |p| rate(patches, p, 1.0));
+        println!(
+            "  {patches} patches, {triangles} triangles a frame: patches/s cpu={} gpu={} gpu_pass={pass_patch}; M triangles/s cpu={} gpu={} gpu_pass={pass_tri}",
+            rate(patches, cpu, 1.0),
+            rate(patches, gpu, 1.0),
+            rate(triangles, cpu, 1e6),
+            rate(triangles, gpu, 1e6)
+        );
     }
 }

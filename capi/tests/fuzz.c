@@ -151,6 +151,30 @@ static void array_call(void) {
     }
 }
 
+/* The state queries and the integer and vector parameter forms (issue 26): names around the
+ * valid ones, NULL and real buffers (GL writes at most 16 values, an image or stipple into buf). */
+static const GLenum query_names[] = {GL_MODELVIEW_MATRIX, GL_VIEWPORT, GL_DEPTH_RANGE, GL_CURRENT_COLOR,
+    GL_LINE_WIDTH_RANGE, GL_POLYGON_MODE, GL_FOG_COLOR, GL_STENCIL_BITS, GL_VERTEX_ARRAY, GL_AMBIENT,
+    GL_POSITION, GL_SPOT_DIRECTION, GL_SHININESS, GL_TEXTURE_ENV_COLOR, GL_TEXTURE_BORDER_COLOR,
+    GL_TEXTURE_PRIORITY, GL_TEXTURE_WIDTH, GL_TEXTURE_INTERNAL_FORMAT, GL_FOG_MODE, 0x1234, 0};
+static void query_call(void) {
+    GLenum name = ANY(query_names);
+    void *out = pick(8) ? (void *)buf : NULL;
+    switch (pick(8)) {
+    case 0: glGetBooleanv(name, out); glGetDoublev(name, pick(8) ? dbuf : NULL); break;
+    case 1: glGetLightfv(GL_LIGHT0 + pick(9), name, out); glGetLightiv(GL_LIGHT0 + pick(9), name, out); break;
+    case 2: glGetMaterialfv(GL_FRONT + pick(3), name, out); glGetMaterialiv(GL_FRONT + pick(3), name, out); break;
+    case 3: glGetTexParameterfv(pick(2) ? GL_TEXTURE_2D : name, name, out); glGetTexEnviv(GL_TEXTURE_ENV, name, out); break;
+    case 4: glGetTexLevelParameteriv(GL_TEXTURE_2D, ANY(small), name, out);
+            glGetTexImage(GL_TEXTURE_2D, ANY(small), pick(2) ? GL_RGBA : name, pick(2) ? GL_FLOAT : name, out); break;
+    case 5: glGetPolygonStipple(out); glGetTexGendv(GL_S + pick(5), name, pick(8) ? dbuf : NULL); break;
+    case 6: glLightiv(GL_LIGHT0 + pick(9), name, out); glMaterialiv(GL_FRONT + pick(3), name, out);
+            glLightModeliv(name, out); glLighti(GL_LIGHT0 + pick(9), name, ANY(orders)); break;
+    default: glFogiv(name, out); glTexEnviv(GL_TEXTURE_ENV, name, out); glTexParameterfv(GL_TEXTURE_2D, name, out);
+             glTexParameteriv(GL_TEXTURE_2D, name, out); glMateriali(GL_BACK, name, ANY(orders)); break;
+    }
+}
+
 static void state_call(void) {
     switch (pick(14)) {
     case 0: glEnable(ANY(caps)); break;
@@ -158,7 +182,7 @@ static void state_call(void) {
     case 2: glBegin(ANY(modes)); break;
     case 3: glEnd(); break;
     case 4: glVertex3f(f(), f(), f()); glVertex3fv(fp()); glNormal3fv(fp()); glColor4fv(fp()); break;
-    case 5: glGetFloatv(ANY(pnames), pick(6) ? buf : NULL); glGetIntegerv(ANY(pnames), (GLint *)names); break;
+    case 5: glGetFloatv(ANY(pnames), pick(6) ? buf : NULL); glGetIntegerv(ANY(pnames), (GLint *)names); query_call(); break;
     case 6: glLightfv(GL_LIGHT0 + pick(9), GL_AMBIENT + pick(10), fp()); glMaterialfv(GL_FRONT + pick(3), GL_EMISSION + pick(4), fp()); break;
     case 7: glNewList(1 + pick(8), pick(2) ? GL_COMPILE : GL_COMPILE_AND_EXECUTE); compiling = 1; break;
     case 8: glEndList(); compiling = 0; glCallList(1 + pick(8)); break;

@@ -126,6 +126,11 @@ fn enables_of(mask: GLbitfield) -> Vec<GLenum> {
 }
 
 impl Gl {
+    /// `GL_ATTRIB_STACK_DEPTH`.
+    pub(crate) fn attrib_stack_depth(&self) -> usize {
+        self.attrib_stack.entries.len()
+    }
+
     /// `glPushAttrib(mask)`: saves the groups of `mask`. A full stack → `GL_STACK_OVERFLOW`
     /// (nothing is saved); inside `begin`/`end` → `GL_INVALID_OPERATION`.
     pub fn push_attrib(&mut self, mask: GLbitfield) {
@@ -135,6 +140,7 @@ impl Gl {
         if self.attrib_stack.entries.len() >= MAX_ATTRIB_STACK_DEPTH {
             return self.set_error(GL_STACK_OVERFLOW);
         }
+        self.flush_current();
         let r = &self.raster;
         let raster = RasterValues {
             point_size: r.point_size,
@@ -177,7 +183,13 @@ impl Gl {
         let Some(saved) = self.attrib_stack.entries.pop() else {
             return self.set_error(GL_STACK_UNDERFLOW);
         };
+        let (materials, tracking) = (self.lighting.materials, self.caps.is_on(GL_COLOR_MATERIAL));
         self.restore_groups(saved);
+        if !tracking && self.caps.is_on(GL_COLOR_MATERIAL) {
+            // Mesa's pop enables it through glEnable, which copies the colour.
+            self.color_material_enabled();
+        }
+        self.land_pending_materials(materials);
         self.touch_state();
     }
 

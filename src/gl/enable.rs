@@ -41,11 +41,23 @@ pub(crate) const KNOWN: &[GLenum] = &[
     GL_POLYGON_STIPPLE,
     GL_RESCALE_NORMAL,
     GL_MULTISAMPLE,
+    GL_STENCIL_TEST,
+    GL_COLOR_LOGIC_OP,
+    GL_INDEX_LOGIC_OP,
 ];
+
+/// The vertex arrays' client states: `glEnableClientState` sets them, and Mesa's compatibility
+/// profile takes them in `glEnable`, `glDisable` and `glIsEnabled` too (measured on Mesa 22.3).
+/// Client state: `GL_ENABLE_BIT` does not save them (`GL_CLIENT_VERTEX_ARRAY_BIT` does).
+pub(crate) const CLIENT_STATES: &[GLenum] =
+    &[GL_VERTEX_ARRAY, GL_NORMAL_ARRAY, GL_COLOR_ARRAY, GL_INDEX_ARRAY, GL_TEXTURE_COORD_ARRAY, GL_EDGE_FLAG_ARRAY];
 
 impl Caps {
     fn known(cap: GLenum) -> bool {
-        KNOWN.contains(&cap) || (GL_LIGHT0..=GL_LIGHT7).contains(&cap) || super::clip::plane_index(cap).is_some()
+        KNOWN.contains(&cap)
+            || CLIENT_STATES.contains(&cap)
+            || (GL_LIGHT0..=GL_LIGHT7).contains(&cap)
+            || super::clip::plane_index(cap).is_some()
     }
 
     pub(crate) fn is_on(&self, cap: GLenum) -> bool {
@@ -107,19 +119,25 @@ impl Gl {
             return;
         }
         if Caps::known(cap) {
+            let was_on = self.caps.is_on(cap);
             self.caps.set(cap, on);
             self.touch_state();
-            if cap == GL_COLOR_MATERIAL && on {
-                self.track_color_material();
+            if cap == GL_COLOR_MATERIAL && on && !was_on {
+                self.color_material_enabled();
             }
         } else {
             self.set_error(GL_INVALID_ENUM);
         }
     }
 
+    /// Whether `cap` is a capability `glIsEnabled` takes (evaluator maps included).
+    pub(crate) fn is_capability(&self, cap: GLenum) -> bool {
+        self.eval.is_enabled(cap).is_some() || Caps::known(cap)
+    }
+
     /// Whether a non-evaluator capability is on (for the renderer).
     #[must_use]
     pub fn capability(&self, cap: GLenum) -> bool {
-        self.eval.is_enabled(cap).unwrap_or_else(|| self.caps.is_on(cap))
+        self.eval.is_enabled(cap).or_else(|| self.arrays.is_enabled(cap)).unwrap_or_else(|| self.caps.is_on(cap))
     }
 }

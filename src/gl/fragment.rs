@@ -105,12 +105,12 @@ impl Gl {
 
     /// `glFogf`: as [`Gl::fogfv`] with one value.
     pub fn fogf(&mut self, pname: GLenum, param: GLfloat) {
-        self.fogfv(pname, &[param]);
+        self.fogfv(pname, &[param, 0.0, 0.0, 0.0]);
     }
 
     /// `glFogi`: as [`Gl::fogfv`] with one value (an enum for `GL_FOG_MODE`).
     pub fn fogi(&mut self, pname: GLenum, param: GLint) {
-        self.fogfv(pname, &[param as GLfloat]);
+        self.fogfv(pname, &[param as GLfloat, 0.0, 0.0, 0.0]);
     }
 
     /// The blend factors while `GL_BLEND` is on.

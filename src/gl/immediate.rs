@@ -37,10 +37,12 @@ impl Gl {
         }
         self.frame.calls.push(Call::End);
         self.open_primitive = None;
+        self.color_material_end();
     }
 
     /// Begins a primitive on behalf of the evaluators (not logged as a user call).
     pub(crate) fn open_primitive_raw(&mut self, mode: GLenum) {
+        self.color_material_begin();
         let first = self.frame.vertices.len();
         let state = self.current_state_index();
         self.frame.primitives.push(Primitive { mode, first, count: 0, state });
@@ -145,9 +147,9 @@ impl Gl {
         if self.compiled(|| ListCommand::Immediate(Call::Color([r, g, b, a]))) {
             return;
         }
-        self.current.color = [r, g, b, a];
+        let old = std::mem::replace(&mut self.current.color, [r, g, b, a]);
         self.frame.calls.push(Call::Color(self.current.color));
-        self.track_color_material();
+        self.color_set(old);
     }
 
     /// `glColor3fv`: `v` needs 3 values.

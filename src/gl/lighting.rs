@@ -105,6 +105,18 @@ impl Default for Lighting {
     }
 }
 
+/// The bits `GL_COLOR_MATERIAL` tracks of a material name (see `color_material.rs`).
+fn color_material_bits(pname: GLenum) -> u8 {
+    match pname {
+        GL_AMBIENT => 1,
+        GL_DIFFUSE => 2,
+        GL_AMBIENT_AND_DIFFUSE => 3,
+        GL_SPECULAR => 4,
+        GL_EMISSION => 8,
+        _ => 0,
+    }
+}
+
 fn vec4_from(p: &[f32]) -> Vec4 {
     Vec4::new(p[0], p[1], p[2], p[3])
 }
@@ -162,8 +174,9 @@ impl Gl {
     }
 
     /// `glLightf` for the single-valued names.
+    /// Like Mesa, a vector name gets (param, 0, 0, 0).
     pub fn light_f(&mut self, light: GLenum, pname: GLenum, param: GLfloat) {
-        self.light_fv(light, pname, &[param]);
+        self.light_fv(light, pname, &[param, 0.0, 0.0, 0.0]);
     }
 
     /// `glMaterialfv` (allowed between begin and end). Bad face or name → `GL_INVALID_ENUM`;
@@ -190,19 +203,22 @@ impl Gl {
             return self.set_error(GL_INVALID_VALUE);
         }
         for &f in faces {
+            // While tracking, Mesa drops a glMaterial of a tracked parameter (`vbo`'s material
+            // call masks them out).
+            let bits = color_material_bits(pname) & !self.tracked_bits(f);
             let m = &mut self.lighting.materials[f];
-            match pname {
-                GL_AMBIENT => m.ambient = vec4_from(params),
-                GL_DIFFUSE => m.diffuse = vec4_from(params),
-                GL_SPECULAR => m.specular = vec4_from(params),
-                GL_EMISSION => m.emission = vec4_from(params),
-                GL_AMBIENT_AND_DIFFUSE => {
-                    m.ambient = vec4_from(params);
-                    m.diffuse = m.ambient;
+            if pname == GL_SHININESS {
+                m.shininess = params[0];
+                continue;
+            }
+            let value = vec4_from(params);
+            for (bit, slot) in [(1, &mut m.ambient), (2, &mut m.diffuse), (4, &mut m.specular), (8, &mut m.emission)] {
+                if bits & bit != 0 {
+                    *slot = value;
                 }
-                _ => m.shininess = params[0],
             }
         }
+        self.note_pending_material(face, pname);
         self.touch_state();
         self.note_material_change();
     }
@@ -239,7 +255,7 @@ impl Gl {
 
     /// `glLightModeli`.
     pub fn light_model_i(&mut self, pname: GLenum, param: GLint) {
-        self.light_model_fv(pname, &[param as f32]);
+        self.light_model_fv(pname, &[param as f32, 0.0, 0.0, 0.0]);
     }
 
     /// `glColorMaterial(face, mode)`.
@@ -255,38 +271,13 @@ impl Gl {
         if !face_ok || !mode_ok {
             return self.set_error(GL_INVALID_ENUM);
         }
-        self.lighting.color_material = (face, mode);
-        self.touch_state();
-        self.track_color_material();
-    }
-
-    /// While `GL_COLOR_MATERIAL` is on, the tracked material follows the current colour
-    /// (GL 1.1 §2.13.3): glColor, glEnable(GL_COLOR_MATERIAL) and glColorMaterial update it,
-    /// and it keeps the last colour once tracking stops (Mesa `_mesa_update_color_material`;
-    /// measured in feedback: red, green, then blue with tracking on, yellow after it is off,
-    /// lights the next vertex with a blue diffuse).
-    pub(crate) fn track_color_material(&mut self) {
-        if !self.caps.is_on(GL_COLOR_MATERIAL) {
+        if self.lighting.color_material == (face, mode) {
+            // Mesa returns early: no flush, no copy (a waiting glMaterial still lands).
             return;
         }
-        let color = Vec4::from_array(self.current.color);
-        let (face, mode) = self.lighting.color_material;
-        let faces: &[usize] = match face {
-            GL_FRONT => &[0],
-            GL_BACK => &[1],
-            _ => &[0, 1],
-        };
-        for &f in faces {
-            let m = &mut self.lighting.materials[f];
-            match mode {
-                GL_AMBIENT => m.ambient = color,
-                GL_DIFFUSE => m.diffuse = color,
-                GL_SPECULAR => m.specular = color,
-                GL_EMISSION => m.emission = color,
-                _ => (m.ambient, m.diffuse) = (color, color),
-            }
-        }
+        self.lighting.color_material = (face, mode);
         self.touch_state();
+        self.color_material_changed();
     }
 
     /// `glShadeModel`: `GL_FLAT` or `GL_SMOOTH`.

@@ -118,6 +118,8 @@ pub(crate) enum ListCommand {
         image: (PixelStore, Vec<u8>),
     },
     TexParameter(GLenum, GLenum, GLint),
+    /// `glTexParameterfv` of `GL_TEXTURE_BORDER_COLOR` or `GL_TEXTURE_PRIORITY`.
+    TexParameterValues(GLenum, GLenum, Vec<GLfloat>),
     TexEnv(GLenum, GLenum, Vec<f32>),
     /// `glTexGen*`: coordinate, name and values (the eye plane is transformed when called).
     TexGen(GLenum, GLenum, Vec<f32>),
@@ -246,6 +248,7 @@ impl Gl {
         if self.reject_inside_begin_end() {
             return;
         }
+        self.flush_current();
         if list == 0 {
             return self.set_error(GL_INVALID_VALUE);
         }
@@ -269,6 +272,7 @@ impl Gl {
         if self.inside_begin_end() {
             self.end();
         }
+        self.flush_current();
         self.insert_list(list.name, list.commands);
     }
 
@@ -282,6 +286,7 @@ impl Gl {
         if list == 0 {
             return self.set_error(GL_INVALID_VALUE);
         }
+        self.flush_current();
         // In GL_COMPILE_AND_EXECUTE the call is recorded; what the list does is not again.
         let compiling = self.lists.compiling.take();
         self.execute_list(list);
@@ -463,6 +468,7 @@ impl Gl {
                 });
             }
             C::TexParameter(target, pname, param) => self.tex_parameteri(*target, *pname, *param),
+            C::TexParameterValues(target, pname, params) => self.tex_parameterfv(*target, *pname, params),
             C::TexEnv(target, pname, params) => self.tex_envfv(*target, *pname, params),
             C::TexGen(coord, pname, params) => self.tex_genfv(*coord, *pname, params),
             C::Hint(target, mode) => self.hint(*target, *mode),

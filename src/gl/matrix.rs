@@ -10,7 +10,7 @@ use super::Gl;
 use glam::{Mat4, Vec3, Vec4};
 
 /// Mesa's stack depths (`config.h`): MAX_MODELVIEW_STACK_DEPTH 32, projection 32, texture 10.
-const DEPTHS: [usize; 3] = [32, 32, 10];
+pub(crate) const DEPTHS: [usize; 3] = [32, 32, 10];
 
 /// The three matrix stacks; the top of each is its last element.
 #[derive(Clone, Debug)]
@@ -46,6 +46,12 @@ impl MatrixStacks {
 
     pub fn texture(&self) -> Mat4 {
         *self.stacks[2].last().unwrap_or(&Mat4::IDENTITY)
+    }
+
+    /// How many matrices a stack holds (`GL_MODELVIEW_STACK_DEPTH`, ...): 0 modelview,
+    /// 1 projection, 2 texture.
+    pub fn depth(&self, stack: usize) -> usize {
+        self.stacks[stack].len().max(1)
     }
 
     fn top(&mut self) -> &mut Mat4 {

@@ -12,6 +12,7 @@ mod binding;
 mod bitmap;
 mod client_memory;
 mod clip;
+mod color_material;
 pub mod consts;
 mod enable;
 mod eval;
@@ -19,20 +20,24 @@ pub mod feedback;
 mod feedback_prims;
 mod fragment;
 mod frame;
+mod get;
 mod grid_vertices;
 mod hint;
 mod immediate;
+mod light_query;
 mod lighting;
 pub(crate) mod lists;
 mod matrix;
 mod mesh_job;
 mod offset;
+mod param_variants;
 mod pixels;
 mod raster;
 mod raster_pos;
 mod read_pixels;
 mod select;
 mod stipple;
+mod stipple_query;
 mod texgen;
 mod texture;
 pub mod types;
@@ -155,6 +160,8 @@ pub struct Gl {
     textures: texture::Textures,
     /// `glTexGen`'s modes and planes.
     tex_gen: texgen::TexGen,
+    /// What Mesa's deferred `glMaterial` leaves of `GL_COLOR_MATERIAL`'s tracking.
+    color_material_sync: color_material::ColorMaterialSync,
     /// `glHint`'s requests.
     hints: hint::Hints,
     /// Blending, the alpha test and fog.
@@ -168,18 +175,6 @@ pub struct Gl {
     arrays: arrays::VertexArrays,
     /// Selection mode: its buffer, the name stack and the hit being gathered.
     select: select::Selection,
-}
-
-/// Mesa's `FLOAT_TO_INT` for colours and normals in `glGetIntegerv`: c · (2³¹ − 1) truncated. A
-/// value outside [−1, 1] overflows C's conversion, which gives `INT_MIN` on the machines Mesa
-/// runs on (x86's "integer indefinite"); so does this.
-fn float_to_int(v: f64) -> GLint {
-    let x = v * f64::from(GLint::MAX);
-    if !(-2_147_483_648.0..2_147_483_648.0).contains(&x) {
-        GLint::MIN
-    } else {
-        x as GLint
-    }
 }
 
 impl Gl {
@@ -212,6 +207,7 @@ impl Gl {
             textures: texture::Textures::default(),
             tex_gen: texgen::TexGen::default(),
             hints: hint::Hints::default(),
+            color_material_sync: color_material::ColorMaterialSync::default(),
             fragment_ops: fragment::FragmentOps::default(),
             nurbs: Vec::new(),
             arrays: arrays::VertexArrays::default(),
@@ -323,7 +319,7 @@ impl Gl {
             viewport: r.viewport,
             depth_range: r.depth_range,
             lighting,
-            color_material: self.caps.is_on(GL_COLOR_MATERIAL),
+            color_material: self.color_material_tracks(),
             normalize: self.caps.is_on(GL_NORMALIZE),
             rescale_normal: self.caps.is_on(GL_RESCALE_NORMAL),
             shade_model: r.shade_model,
@@ -392,100 +388,13 @@ impl Gl {
         }
     }
 
-    /// `glGetIntegerv` for the evaluator queries (`GL_MAX_EVAL_ORDER`, the grid domains and
-    /// segments), the display-list state, the current colour, normal and texture coordinates
-    /// (`GL_CURRENT_COLOR`, `_NORMAL`, `_TEXTURE_COORDS`) and the raster position
-    /// (`GL_CURRENT_RASTER_POSITION`, `_POSITION_VALID`, `_COLOR`, `_TEXTURE_COORDS`,
-    /// `_DISTANCE`). Floats are rounded to the nearest integer, as GL converts them, except
-    /// colours and normals, which map [−1, 1] linearly onto [−2³¹ + 1, 2³¹ − 1], truncated
-    /// (GL 1.1 §6.1.2; Mesa `FLOAT_TO_INT`).
-    pub fn get_integerv(&mut self, pname: GLenum, params: &mut [GLint]) {
-        if matches!(pname, GL_CURRENT_RASTER_COLOR | GL_CURRENT_COLOR | GL_CURRENT_NORMAL) {
-            return self.get_converted(pname, params, float_to_int);
-        }
-        self.get_converted(pname, params, |v| v.round() as GLint);
-    }
-
-    /// `glGetFloatv` for the queries of [`Gl::get_integerv`].
-    pub fn get_floatv(&mut self, pname: GLenum, params: &mut [GLfloat]) {
-        self.get_converted(pname, params, |v| v as GLfloat);
-    }
-
-    /// `glGetDoublev` for the queries of [`Gl::get_integerv`].
-    pub fn get_doublev(&mut self, pname: GLenum, params: &mut [GLdouble]) {
-        self.get_converted(pname, params, |v| v);
-    }
-
-    /// `glGetBooleanv` for the queries of [`Gl::get_integerv`]: `GL_TRUE` for a value other
-    /// than 0 (GL 1.1 §6.1.2).
-    pub fn get_booleanv(&mut self, pname: GLenum, params: &mut [GLboolean]) {
-        self.get_converted(pname, params, |v| if v != 0.0 { GL_TRUE } else { GL_FALSE });
-    }
-
-    /// Answers a `glGet` into `params`; a slice shorter than the answer is `GL_INVALID_VALUE`.
-    fn get_converted<T>(&mut self, pname: GLenum, params: &mut [T], convert: impl Fn(f64) -> T) {
-        let mut values = [0.0f64; 4];
-        if let Some(n) = self.get_values(pname, &mut values) {
-            if params.len() < n {
-                return self.set_error(GL_INVALID_VALUE);
-            }
-            for (out, v) in params.iter_mut().zip(&values[..n]) {
-                *out = convert(*v);
-            }
-        }
-    }
-
-    fn get_values(&mut self, pname: GLenum, out: &mut [f64; 4]) -> Option<usize> {
-        if self.reject_inside_begin_end() {
-            return None;
-        }
-        let n = self.query(pname, out);
-        if n.is_none() {
-            self.set_error(GL_INVALID_ENUM);
-        }
-        n
-    }
-
-    /// A `glGet` answer: how many values `pname` has, written into `out`; `None` for a name
-    /// this façade does not answer.
-    fn query(&self, pname: GLenum, out: &mut [f64; 4]) -> Option<usize> {
-        if pname == GL_MAX_EVAL_ORDER {
-            out[0] = f64::from(MAX_EVAL_ORDER);
-            return Some(1);
-        }
-        let value = self.list_query(pname).or_else(|| self.texture_query(pname)).or_else(|| self.hint_query(pname));
-        if let Some(value) = value.or_else(|| self.primitive_mode_query(pname)) {
-            out[0] = value;
-            return Some(1);
-        }
-        self.eval
-            .grid_query(pname, out)
-            .or_else(|| self.raster_pos_query(pname, out))
-            .or_else(|| self.current_query(pname, out))
-            .or_else(|| self.arrays_query(pname, out))
-            .or_else(|| self.select_query(pname, out))
-    }
-
-    /// How many values `glGet*v(pname)` writes (1 for a name it does not answer, where it
-    /// writes none and sets `GL_INVALID_ENUM`): what a binding that has only a pointer may
-    /// hand `get_*v` as the slice's length.
-    #[must_use]
-    pub fn get_len(&self, pname: GLenum) -> usize {
-        self.query(pname, &mut [0.0; 4]).unwrap_or(1)
-    }
-
-    /// The current attributes' `glGet` answers (GL 1.1 table 6.5).
-    fn current_query(&self, pname: GLenum, out: &mut [f64; 4]) -> Option<usize> {
-        let values: &[f32] = match pname {
-            GL_CURRENT_COLOR => &self.current.color,
-            GL_CURRENT_NORMAL => &self.current.normal,
-            GL_CURRENT_TEXTURE_COORDS => &self.current.tex_coord,
-            _ => return None,
-        };
-        for (o, v) in out.iter_mut().zip(values) {
-            *o = f64::from(*v);
-        }
-        Some(values.len())
+    /// The areas' own `glGet` answers (`AREA_query(&self, pname, out: &mut [f64]) ->
+    /// Option<usize>` functions): for the names the state table (`get/table.rs`) sends to a hook,
+    /// or does not list. Each writes its values into `out` (16 long, `get::MAX_VALUES`) and says
+    /// how many, `None` for a name that is not its; chain them here as
+    /// `self.stencil_query(pname, out).or_else(|| self.arrays_query(pname, out))`.
+    fn query(&self, pname: GLenum, out: &mut [f64]) -> Option<usize> {
+        self.arrays_query(pname, out).or_else(|| self.select_query(pname, out))
     }
 
     /// Records `code` unless an earlier error is still pending (GL's sticky flag; Mesa's `_mesa_error`).

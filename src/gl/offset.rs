@@ -42,20 +42,6 @@ impl Gl {
         self.touch_state();
     }
 
-    /// `glGet` of the one-valued primitive modes: the stipple's pattern and repeat, the polygon
-    /// offset's factor and units, the number of clip planes.
-    pub(crate) fn primitive_mode_query(&self, pname: GLenum) -> Option<f64> {
-        let r = &self.raster;
-        Some(match pname {
-            GL_LINE_STIPPLE_PATTERN => f64::from(r.line_stipple.1),
-            GL_LINE_STIPPLE_REPEAT => f64::from(r.line_stipple.0),
-            GL_POLYGON_OFFSET_FACTOR => f64::from(r.polygon_offset.0),
-            GL_POLYGON_OFFSET_UNITS => f64::from(r.polygon_offset.1),
-            GL_MAX_CLIP_PLANES => super::clip::MAX_CLIP_PLANES as f64,
-            _ => return None,
-        })
-    }
-
     /// Whether a clip plane, polygon offset or line stipple is on (the CPU assembler's work).
     pub(crate) fn raster_modes_on(&self) -> bool {
         self.enabled_polygon_offset().is_some()

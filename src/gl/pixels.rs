@@ -109,6 +109,11 @@ impl Gl {
         self.pixel_storei(pname, value);
     }
 
+    /// `GL_CLIENT_ATTRIB_STACK_DEPTH`.
+    pub(crate) fn client_attrib_stack_depth(&self) -> usize {
+        self.pixel_stores.saved.len()
+    }
+
     /// `glPushClientAttrib(mask)`: saves the pixel-store modes when `mask` has
     /// `GL_CLIENT_PIXEL_STORE_BIT` (other bits are accepted and save nothing). A full stack →
     /// `GL_STACK_OVERFLOW`. Not compiled into display lists.

@@ -7,6 +7,10 @@ use super::lists::ListCommand;
 use super::types::*;
 use super::Gl;
 
+/// The largest viewport side (`GL_MAX_VIEWPORT_DIMS`): llvmpipe's, as Mesa 22.3 reports it.
+/// `glViewport` clamps larger sizes to it, as Mesa's `_mesa_set_viewport` does.
+pub(crate) const MAX_VIEWPORT_DIMS: i32 = 16384;
+
 /// GL's rasterisation state with its initial values.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) struct RasterState {
@@ -66,6 +70,7 @@ impl Gl {
         if width < 0 || height < 0 {
             return self.set_error(GL_INVALID_VALUE);
         }
+        let (width, height) = (width.min(MAX_VIEWPORT_DIMS), height.min(MAX_VIEWPORT_DIMS));
         self.raster.viewport = [x, y, width, height];
         self.touch_state();
     }

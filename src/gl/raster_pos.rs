@@ -90,6 +90,7 @@ impl Gl {
         if self.compiled(|| ListCommand::RasterPos(p)) || self.reject_inside_begin_end() {
             return;
         }
+        self.flush_current();
         let Some((window, distance)) = self.raster_transform().project(p) else {
             self.raster_pos.valid = false;
             return;

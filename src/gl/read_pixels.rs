@@ -64,6 +64,16 @@ fn encode(c: f32, type_: GLenum) -> Vec<u8> {
     }
 }
 
+/// The error a colour read of `format` and `type_` gets (`glGetTexImage`'s checks, Mesa's
+/// `_mesa_error_check_format_and_type` order): an unknown format or type `GL_INVALID_ENUM`, a
+/// depth, stencil or colour-index format `GL_INVALID_OPERATION`.
+pub(crate) fn read_format_error(format: GLenum, type_: GLenum) -> Option<GLenum> {
+    if format_size(format).is_none() || type_size(type_).is_none() {
+        return Some(GL_INVALID_ENUM);
+    }
+    components(format, [0.0; 4]).is_none().then_some(GL_INVALID_OPERATION)
+}
+
 impl Gl {
     /// Bytes `glReadPixels` writes for a `width` × `height` rectangle of `format` and `type_`
     /// under the current pack modes (skips, padded rows, the last row up to its last pixel);
@@ -132,6 +142,20 @@ impl Gl {
             pixels.get(k..k + 4).map(|p| [0, 1, 2, 3].map(|c| f32::from(p[c]) / 255.0))
         };
         self.pack_rectangle((x, y), (width as usize, height as usize), (format, type_, size), at, out);
+    }
+
+    /// Packs a `w` × `h` image of RGBA floats (rows bottom first) as `glReadPixels` would
+    /// (`glGetTexImage`); `out` holds at least [`Gl::packed_image_len`] bytes.
+    pub(crate) fn pack_rgba(
+        &self,
+        rgba: &[[f32; 4]],
+        (w, h): (usize, usize),
+        (format, type_): (GLenum, GLenum),
+        out: &mut [u8],
+    ) {
+        let size = type_size(type_).unwrap_or(1);
+        let at = |x: i32, y: i32| rgba.get(y as usize * w + x as usize).copied();
+        self.pack_rectangle((0, 0), (w, h), (format, type_, size), at, out);
     }
 
     /// Writes the rectangle's pixels that lie in the window where the pack modes put them.

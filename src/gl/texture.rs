@@ -17,6 +17,8 @@ use glam::Mat4;
 use std::collections::HashMap;
 use std::sync::Arc;
 
+mod query;
+
 /// The largest texture side accepted (Mesa's `MAX_TEXTURE_SIZE` for llvmpipe is 16384; GL's
 /// minimum is 64). Larger images are `GL_INVALID_VALUE`.
 pub const MAX_TEXTURE_SIZE: i32 = 8192;
@@ -59,8 +61,10 @@ impl TexParams {
     }
 }
 
-/// What `GL_TEXTURE_BIT` saves: the bindings, the environment mode and colour, `glTexGen`.
-pub(crate) type TextureAttrib = ([GLuint; 2], GLenum, [f32; 4], TexGen);
+/// What `GL_TEXTURE_BIT` saves: the bindings, the environment mode and colour, `glTexGen`,
+/// and the bound objects' parameters (filters, wraps, border colour, priority), which Mesa
+/// restores into those objects (measured on Mesa 22.3).
+pub(crate) type TextureAttrib = ([GLuint; 2], GLenum, [f32; 4], TexGen, [(TexParams, ([f32; 4], f32)); 2]);
 
 /// The texture a recorded primitive is drawn with: the complete mipmap chain of the enabled
 /// target's bound object, its parameters, unit 0's environment and the texture matrix.
@@ -130,6 +134,8 @@ struct TextureObject {
     key: u64,
     /// The complete chain, made when first drawn with (dropped when an image changes).
     complete: Option<Option<Arc<Vec<TexLevel>>>>,
+    /// Border colour, priority, internal formats.
+    extra: query::ObjectExtras,
 }
 
 /// Unit 0's texture state.
@@ -404,6 +410,7 @@ impl Gl {
         }
         object.levels[level] = Some(TexLevel { width: w as u32, height: h as u32, texels });
         object.formats[level] = base;
+        object.extra.set_internal(level, internalformat);
         self.image_changed(dims);
     }
 
@@ -464,6 +471,10 @@ impl Gl {
     /// `GL_TEXTURE_WRAP_S` and `GL_TEXTURE_WRAP_T` of the bound object. Another target or
     /// name, or a value the name does not take → `GL_INVALID_ENUM`.
     pub fn tex_parameteri(&mut self, target: GLenum, pname: GLenum, param: GLint) {
+        if pname == GL_TEXTURE_PRIORITY {
+            // A float parameter: Mesa converts the integer as it is.
+            return self.tex_parameterfv(target, pname, &[param as GLfloat]);
+        }
         if self.compiled(|| ListCommand::TexParameter(target, pname, param)) || self.reject_inside_begin_end() {
             return;
         }
@@ -492,9 +503,14 @@ impl Gl {
         self.touch_state();
     }
 
-    /// `glTexParameterf`: as [`Gl::tex_parameteri`] with the enum passed as a float.
+    /// `glTexParameterf`: as [`Gl::tex_parameterfv`] with one value (an enum passed as a float is
+    /// truncated); the border colour, a vector, is `GL_INVALID_ENUM` here, as in Mesa.
     pub fn tex_parameterf(&mut self, target: GLenum, pname: GLenum, param: GLfloat) {
-        self.tex_parameteri(target, pname, param as GLint);
+        if pname == GL_TEXTURE_BORDER_COLOR {
+            // Mesa: a vector name in a scalar call.
+            return self.tex_parameteri(target, pname, 0);
+        }
+        self.tex_parameterfv(target, pname, &[param]);
     }
 
     /// `glTexEnvi` for `GL_TEXTURE_ENV_MODE`: `GL_MODULATE` (initial), `GL_DECAL`, `GL_BLEND`,
@@ -570,15 +586,24 @@ impl Gl {
     /// What `GL_TEXTURE_BIT` saves of unit 0: the bindings, the environment and the
     /// coordinate generation (its enables are saved with the bit's other enables).
     pub(crate) fn texture_attrib(&self) -> TextureAttrib {
-        (self.textures.bound, self.textures.env_mode, self.textures.env_color, self.tex_gen)
+        let objects = [1, 2].map(|dims| {
+            let object = self.bound_object(dims);
+            (object.params, object.extra.sampling())
+        });
+        (self.textures.bound, self.textures.env_mode, self.textures.env_color, self.tex_gen, objects)
     }
 
     /// Restores what [`Gl::texture_attrib`] saved (a binding whose object was deleted since
     /// falls back to the default texture).
-    pub(crate) fn restore_texture_attrib(&mut self, (bound, env_mode, env_color, tex_gen): TextureAttrib) {
+    pub(crate) fn restore_texture_attrib(&mut self, (bound, env_mode, env_color, tex_gen, objects): TextureAttrib) {
         self.tex_gen = tex_gen;
         let exists = |name: GLuint| name == 0 || self.textures.objects.contains_key(&name);
         self.textures.bound = bound.map(|name| if exists(name) { name } else { 0 });
+        for (dims, (params, sampling)) in [1, 2].into_iter().zip(objects) {
+            let object = self.bound_object_mut(dims);
+            (object.params, object.complete) = (params, None);
+            object.extra.set_sampling(sampling);
+        }
         (self.textures.env_mode, self.textures.env_color) = (env_mode, env_color);
         self.touch_state();
     }

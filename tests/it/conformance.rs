@@ -22,6 +22,8 @@ mod bsurf;
 mod colormap;
 #[path = "../../examples/edgeflags.rs"]
 mod edgeflags;
+#[path = "../../examples/colormat.rs"]
+mod colormat;
 #[path = "../../examples/ex1_bezier.rs"]
 mod ex1_bezier;
 #[path = "../../examples/ex2_bspline.rs"]
@@ -192,6 +194,13 @@ fn rationalmap_matches_mesa() {
 #[test]
 fn linespoints_matches_mesa() {
     check("linespoints", linespoints::app, 0.0);
+}
+
+/// GL_COLOR_MATERIAL as Mesa 22.3 does it: the Red Book's set-up lights a sphere with the
+/// glMaterial's diffuse until a glColor changes the colour (`src/gl/color_material.rs`).
+#[test]
+fn color_material_matches_mesa() {
+    check("colormat", colormat::app, 0.0);
 }
 
 #[test]

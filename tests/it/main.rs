@@ -14,6 +14,7 @@ mod interactive_demo;
 mod mesa_calls;
 mod picking_demo;
 mod properties;
+mod query_properties;
 mod raster_images;
 mod raster_modes;
 mod rasterizers;

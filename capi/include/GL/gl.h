@@ -999,6 +999,31 @@ GLAPI void GLAPIENTRY glLightModelfv(GLenum pname, const GLfloat *params);
 GLAPI void GLAPIENTRY glColorMaterial(GLenum face, GLenum mode);
 GLAPI void GLAPIENTRY glShadeModel(GLenum mode);
 
+/* The integer and vector forms of the parameter calls, and the state queries beside glGet. */
+GLAPI void GLAPIENTRY glFogiv(GLenum pname, const GLint *params);
+GLAPI void GLAPIENTRY glGetLightfv(GLenum light, GLenum pname, GLfloat *params);
+GLAPI void GLAPIENTRY glGetLightiv(GLenum light, GLenum pname, GLint *params);
+GLAPI void GLAPIENTRY glGetMaterialfv(GLenum face, GLenum pname, GLfloat *params);
+GLAPI void GLAPIENTRY glGetMaterialiv(GLenum face, GLenum pname, GLint *params);
+GLAPI void GLAPIENTRY glGetPolygonStipple(GLubyte *mask);
+GLAPI void GLAPIENTRY glGetTexEnvfv(GLenum target, GLenum pname, GLfloat *params);
+GLAPI void GLAPIENTRY glGetTexEnviv(GLenum target, GLenum pname, GLint *params);
+GLAPI void GLAPIENTRY glGetTexGendv(GLenum coord, GLenum pname, GLdouble *params);
+GLAPI void GLAPIENTRY glGetTexImage(GLenum target, GLint level, GLenum format, GLenum type, GLvoid *pixels);
+GLAPI void GLAPIENTRY glGetTexLevelParameterfv(GLenum target, GLint level, GLenum pname, GLfloat *params);
+GLAPI void GLAPIENTRY glGetTexLevelParameteriv(GLenum target, GLint level, GLenum pname, GLint *params);
+GLAPI void GLAPIENTRY glGetTexParameterfv(GLenum target, GLenum pname, GLfloat *params);
+GLAPI void GLAPIENTRY glGetTexParameteriv(GLenum target, GLenum pname, GLint *params);
+GLAPI void GLAPIENTRY glLightModelf(GLenum pname, GLfloat param);
+GLAPI void GLAPIENTRY glLightModeliv(GLenum pname, const GLint *params);
+GLAPI void GLAPIENTRY glLighti(GLenum light, GLenum pname, GLint param);
+GLAPI void GLAPIENTRY glLightiv(GLenum light, GLenum pname, const GLint *params);
+GLAPI void GLAPIENTRY glMateriali(GLenum face, GLenum pname, GLint param);
+GLAPI void GLAPIENTRY glMaterialiv(GLenum face, GLenum pname, const GLint *params);
+GLAPI void GLAPIENTRY glTexEnviv(GLenum target, GLenum pname, const GLint *params);
+GLAPI void GLAPIENTRY glTexParameterfv(GLenum target, GLenum pname, const GLfloat *params);
+GLAPI void GLAPIENTRY glTexParameteriv(GLenum target, GLenum pname, const GLint *params);
+
 /* Display lists. */
 GLAPI GLuint GLAPIENTRY glGenLists(GLsizei range);
 GLAPI void GLAPIENTRY glNewList(GLuint list, GLenum mode);

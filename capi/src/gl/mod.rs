@@ -9,6 +9,7 @@ mod lighting;
 mod lists;
 mod matrix;
 mod pixels;
+mod queries;
 mod raster_modes;
 mod read_pixels;
 mod select;

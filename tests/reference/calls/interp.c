@@ -119,11 +119,15 @@ static const char *next(void)
     return tok[pos++];
 }
 
+static int query_enum(const char *s, GLenum *v);
+
 static GLenum arg_enum(void)
 {
     const char *s = next();
     for (int i = 0; enums[i].name; i++)
         if (strcmp(enums[i].name, s) == 0) return enums[i].value;
+    GLenum q;
+    if (query_enum(s, &q)) return q;
     char *end;
     errno = 0;
     unsigned long v = strtoul(s, &end, 0);   /* raw numbers: 0x1234 or 4660 */
@@ -390,6 +394,8 @@ static void run_typed(void)
     }
     t->fn(&v);
 }
+
+#include "queries.inc.c"
 
 /* ---------------------------------------------------------------- calls */
 #include "interp_arrays.c"
@@ -684,7 +690,7 @@ static void run_call(const char *c)
         glEnable(GL_TEXTURE_GEN_S);
         glEnable(GL_TEXTURE_GEN_T);
         glEnable(GL_TEXTURE_GEN_R);
-    } else if (!run_arrays_call(c)) {
+    } else if (!run_arrays_call(c) && !run_queries_call(c)) {
         die("unknown call", c);
     }
 }

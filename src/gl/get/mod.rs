@@ -1,0 +1,144 @@
+//! `glGetBooleanv`, `glGetIntegerv`, `glGetFloatv`, `glGetDoublev` (GL 1.1 spec §6.1.2):
+//! every variant reads the one table of state variables in [`table`] (name, count, how Mesa
+//! stores it, where it lives), then the capabilities `glIsEnabled` knows, then the areas' own
+//! answers ([`Gl::query`](super::Gl)); each converts as Mesa 22.3's `main/get.c` does.
+
+mod table;
+
+use super::consts::*;
+use super::types::*;
+use super::Gl;
+pub(crate) use table::{Kind, Source, StateVar, STATE};
+
+/// The most values one `glGet` name has (a matrix).
+pub(crate) const MAX_VALUES: usize = 16;
+
+/// Mesa's `FLOAT_TO_INT` (`main/macros.h`) for normalised values (colours, normals, the depth
+/// range, and, as Mesa's `TYPE_MATRIX` does, matrices): v · (2³¹ − 1) truncated. A value outside
+/// [−1, 1] overflows C's conversion, which gives `INT_MIN` on the machines Mesa runs on (x86's
+/// "integer indefinite"); so does this.
+pub(crate) fn float_to_int(v: f64) -> GLint {
+    let x = v * f64::from(GLint::MAX);
+    if !(-2_147_483_648.0..2_147_483_648.0).contains(&x) {
+        GLint::MIN
+    } else {
+        x as GLint
+    }
+}
+
+/// Mesa's `IROUND` for floats in `glGetIntegerv`: `(int) lroundf(v)`, halves away from zero,
+/// the 64-bit `long` then cut to 32 bits (a line width of 3·10⁹ reads back as −1294967296 on
+/// Mesa 22.3; measured). Beyond a `long`, x86 gives `LONG_MIN`, whose low half is 0.
+pub(crate) fn iround(v: f64) -> GLint {
+    let r = v.round();
+    if r.abs() < 9.223_372_036_854_776e18 {
+        r as i64 as GLint
+    } else {
+        0
+    }
+}
+
+impl Kind {
+    /// `glGetIntegerv`'s value (Mesa `_mesa_GetIntegerv`).
+    fn to_int(self, v: f64) -> GLint {
+        match self {
+            Kind::Bool | Kind::Int => v as GLint,
+            Kind::Float => iround(v),
+            Kind::Normalized => float_to_int(v),
+        }
+    }
+}
+
+/// One state variable's answer: its values and how they convert.
+struct Answer {
+    values: [f64; MAX_VALUES],
+    count: usize,
+    kind: Kind,
+}
+
+impl Gl {
+    /// `glGetIntegerv`: the values of `pname` (GL 1.1 tables 6.3–6.20). Integers and enums as
+    /// they are; floats rounded to the nearest, halves away from zero; colours, normals, the
+    /// depth range and matrices map [−1, 1] linearly onto [−2³¹ + 1, 2³¹ − 1], truncated (GL 1.1
+    /// §6.1.2; Mesa `FLOAT_TO_INT`, which Mesa also applies to matrices). An unknown name →
+    /// `GL_INVALID_ENUM`, inside `begin`/`end` → `GL_INVALID_OPERATION`, a slice shorter than
+    /// the answer → `GL_INVALID_VALUE`: nothing written.
+    pub fn get_integerv(&mut self, pname: GLenum, params: &mut [GLint]) {
+        if let Some(a) = self.answer(pname, params.len()) {
+            for (out, v) in params.iter_mut().zip(&a.values[..a.count]) {
+                *out = a.kind.to_int(*v);
+            }
+        }
+    }
+
+    /// `glGetFloatv`: as [`Gl::get_integerv`], every value as a float.
+    pub fn get_floatv(&mut self, pname: GLenum, params: &mut [GLfloat]) {
+        if let Some(a) = self.answer(pname, params.len()) {
+            for (out, v) in params.iter_mut().zip(&a.values[..a.count]) {
+                *out = *v as GLfloat;
+            }
+        }
+    }
+
+    /// `glGetDoublev`: as [`Gl::get_integerv`], every value as a double.
+    pub fn get_doublev(&mut self, pname: GLenum, params: &mut [GLdouble]) {
+        if let Some(a) = self.answer(pname, params.len()) {
+            params[..a.count].copy_from_slice(&a.values[..a.count]);
+        }
+    }
+
+    /// `glGetBooleanv`: as [`Gl::get_integerv`], `GL_TRUE` for every value other than 0 (GL 1.1
+    /// §6.1.2; a NaN is true, as in Mesa).
+    pub fn get_booleanv(&mut self, pname: GLenum, params: &mut [GLboolean]) {
+        if let Some(a) = self.answer(pname, params.len()) {
+            for (out, v) in params.iter_mut().zip(&a.values[..a.count]) {
+                *out = if *v != 0.0 { GL_TRUE } else { GL_FALSE };
+            }
+        }
+    }
+
+    /// How many values `glGet*v(pname)` writes (1 for a name it does not answer, where it
+    /// writes none and sets `GL_INVALID_ENUM`): what a binding that has only a pointer may
+    /// hand `get_*v` as the slice's length.
+    #[must_use]
+    pub fn get_len(&self, pname: GLenum) -> usize {
+        self.lookup(pname).map_or(1, |a| a.count)
+    }
+
+    /// Mesa's checks in its order (inside `begin`/`end`, then the name), then the slice's room.
+    fn answer(&mut self, pname: GLenum, room: usize) -> Option<Answer> {
+        if self.reject_inside_begin_end() {
+            return None;
+        }
+        let Some(a) = self.lookup(pname) else {
+            self.set_error(GL_INVALID_ENUM);
+            return None;
+        };
+        if room < a.count {
+            self.set_error(GL_INVALID_VALUE);
+            return None;
+        }
+        if table::flushes_current(pname) {
+            self.flush_current();
+        }
+        Some(a)
+    }
+
+    /// The table's row, then a capability, then the areas' answers.
+    fn lookup(&self, pname: GLenum) -> Option<Answer> {
+        let mut values = [0.0; MAX_VALUES];
+        let row = STATE.iter().find(|v| v.name == pname);
+        if let Some(StateVar { count, kind, source: Source::Read(read), .. }) = row {
+            read(self, &mut values);
+            return Some(Answer { values, count: *count, kind: *kind });
+        }
+        if row.is_none() && self.is_capability(pname) {
+            values[0] = f64::from(u8::from(self.capability(pname)));
+            return Some(Answer { values, count: 1, kind: Kind::Bool });
+        }
+        let count = self.query(pname, &mut values)?;
+        // A name the areas answer without a row converts as a float (integers are unchanged).
+        let kind = row.map_or(Kind::Float, |r| r.kind);
+        Some(Answer { values, count, kind })
+    }
+}

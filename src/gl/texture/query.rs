@@ -1,0 +1,312 @@
+//! The texture parameters GL 1.1 has besides filters and wraps (`GL_TEXTURE_BORDER_COLOR`,
+//! `GL_TEXTURE_PRIORITY`), the vector forms `glTexParameterfv/iv`, and the texture queries:
+//! `glGetTexParameter*`, `glGetTexLevelParameter*`, `glGetTexEnv*`, `glGetTexImage` (GL 1.1
+//! spec §6.1.4; Mesa `main/texparam.c`, `texenv.c`, `texgetimage.c`), each with Mesa's checks
+//! in Mesa's order and its conversions.
+
+use super::super::consts::*;
+use super::super::get::float_to_int;
+use super::super::light_query::c_int;
+use super::super::types::*;
+use super::super::variants::GlComponent;
+use super::super::Gl;
+use super::{target_index, MAX_TEXTURE_SIZE};
+
+/// A texture object's parameters beyond [`super::TexParams`], and each level's internal format
+/// as the program gave it (what `GL_TEXTURE_INTERNAL_FORMAT` reports).
+#[derive(Clone, Debug, PartialEq)]
+pub(super) struct ObjectExtras {
+    /// `GL_TEXTURE_BORDER_COLOR`, as given (reported clamped to [0, 1], as Mesa does for an
+    /// 8-bit framebuffer).
+    border_color: [f32; 4],
+    /// `GL_TEXTURE_PRIORITY`, clamped to [0, 1]; `glPrioritizeTextures` sets it too.
+    pub(crate) priority: f32,
+    internal_formats: Vec<GLint>,
+}
+
+impl Default for ObjectExtras {
+    fn default() -> Self {
+        Self { border_color: [0.0; 4], priority: 1.0, internal_formats: Vec::new() }
+    }
+}
+
+impl ObjectExtras {
+    /// The border colour and priority (`GL_TEXTURE_BIT` saves them).
+    pub(super) fn sampling(&self) -> ([f32; 4], f32) {
+        (self.border_color, self.priority)
+    }
+
+    /// Restores what [`ObjectExtras::sampling`] gave.
+    pub(super) fn set_sampling(&mut self, (border_color, priority): ([f32; 4], f32)) {
+        (self.border_color, self.priority) = (border_color, priority);
+    }
+
+    /// Records the internal format a level was defined with.
+    pub(super) fn set_internal(&mut self, level: usize, internal: GLint) {
+        if self.internal_formats.len() <= level {
+            self.internal_formats.resize(level + 1, 1);
+        }
+        self.internal_formats[level] = internal;
+    }
+}
+
+/// The bits llvmpipe gives each component of a level of base format `base`, in the order red,
+/// green, blue, alpha, luminance, intensity (Mesa 22.3 through OSMesa: 8-bit formats, 0 for a
+/// component the base format lacks).
+fn component_sizes(base: GLenum) -> [GLint; 6] {
+    match base {
+        GL_RGBA => [8, 8, 8, 8, 0, 0],
+        GL_RGB => [8, 8, 8, 0, 0, 0],
+        GL_ALPHA => [0, 0, 0, 8, 0, 0],
+        GL_LUMINANCE => [0, 0, 0, 0, 8, 0],
+        GL_LUMINANCE_ALPHA => [0, 0, 0, 8, 8, 0],
+        _ => [0; 6],
+    }
+}
+
+/// A level texel (RGBA8 as stored) as the components `glGetTexImage` reads of base format
+/// `base` (GL 1.1 §6.1.4, table 6.1): luminance is R, a missing colour 0, a missing alpha 1.
+fn texel_rgba(base: GLenum, t: [u8; 4]) -> [f32; 4] {
+    // Mesa multiplies by 1/255 in float (50 → 0x3E48C8CA, where 50/255 rounds to ...C9).
+    let [r, g, b, a] = t.map(|c| f32::from(c) * (1.0 / 255.0));
+    match base {
+        GL_LUMINANCE => [r, 0.0, 0.0, 1.0],
+        GL_LUMINANCE_ALPHA => [r, 0.0, 0.0, a],
+        GL_ALPHA => [0.0, 0.0, 0.0, a],
+        GL_RGB => [r, g, b, 1.0],
+        _ => [r, g, b, a],
+    }
+}
+
+impl Gl {
+    /// `glTexParameterfv`: as [`Gl::tex_parameteri`] for the filters and wraps (the value
+    /// truncated to an enum), and `GL_TEXTURE_BORDER_COLOR` (4 values) and
+    /// `GL_TEXTURE_PRIORITY` (clamped to [0, 1]). A short slice → `GL_INVALID_VALUE`.
+    pub fn tex_parameterfv(&mut self, target: GLenum, pname: GLenum, params: &[GLfloat]) {
+        match pname {
+            GL_TEXTURE_BORDER_COLOR | GL_TEXTURE_PRIORITY => self.tex_parameter_values(target, pname, params),
+            _ => match params.first() {
+                Some(&p) => self.tex_parameteri(target, pname, p as GLint),
+                None => self.set_error(GL_INVALID_VALUE),
+            },
+        }
+    }
+
+    /// `glTexParameteriv`: the border colour normalised, the priority and enums as they are.
+    pub fn tex_parameteriv(&mut self, target: GLenum, pname: GLenum, params: &[GLint]) {
+        match pname {
+            GL_TEXTURE_BORDER_COLOR => {
+                let v: Vec<f32> = params.iter().take(4).map(|p| p.normalized()).collect();
+                self.tex_parameter_values(target, pname, &v);
+            }
+            GL_TEXTURE_PRIORITY => {
+                let v: Vec<f32> = params.iter().take(1).map(|&p| p as f32).collect();
+                self.tex_parameter_values(target, pname, &v);
+            }
+            _ => match params.first() {
+                Some(&p) => self.tex_parameteri(target, pname, p),
+                None => self.set_error(GL_INVALID_VALUE),
+            },
+        }
+    }
+
+    /// The float-valued parameters, compiled into lists as GL does.
+    fn tex_parameter_values(&mut self, target: GLenum, pname: GLenum, params: &[GLfloat]) {
+        let command = || super::super::lists::ListCommand::TexParameterValues(target, pname, params.to_vec());
+        if self.compiled(command) || self.reject_inside_begin_end() {
+            return;
+        }
+        let Some(t) = target_index(target) else { return self.set_error(GL_INVALID_ENUM) };
+        let needed = if pname == GL_TEXTURE_BORDER_COLOR { 4 } else { 1 };
+        let Some(values) = params.get(..needed) else { return self.set_error(GL_INVALID_VALUE) };
+        let extra = &mut self.bound_object_mut(t as u8 + 1).extra;
+        if pname == GL_TEXTURE_BORDER_COLOR {
+            extra.border_color.copy_from_slice(values);
+        } else {
+            extra.priority = values[0].clamp(0.0, 1.0);
+        }
+        self.touch_state();
+    }
+
+    /// `glGetTexParameterfv`: the filters and wraps (enums), `GL_TEXTURE_BORDER_COLOR` (4),
+    /// `GL_TEXTURE_PRIORITY`, `GL_TEXTURE_RESIDENT` (always true: gleval keeps every texture
+    /// resident, as llvmpipe answers). Another target or name → `GL_INVALID_ENUM`.
+    pub fn get_tex_parameterfv(&mut self, target: GLenum, pname: GLenum, params: &mut [GLfloat]) {
+        if let Some(v) = self.tex_parameter_answer(target, pname, params.len()) {
+            params[..v.len()].copy_from_slice(&v);
+        }
+    }
+
+    /// `glGetTexParameteriv`: the border colour scaled as `glGetIntegerv` scales colours, the
+    /// priority too (Mesa), the rest as they are.
+    pub fn get_tex_parameteriv(&mut self, target: GLenum, pname: GLenum, params: &mut [GLint]) {
+        if let Some(v) = self.tex_parameter_answer(target, pname, params.len()) {
+            let normalized = matches!(pname, GL_TEXTURE_BORDER_COLOR | GL_TEXTURE_PRIORITY);
+            for (out, x) in params.iter_mut().zip(v) {
+                *out = if normalized { float_to_int(x.into()) } else { c_int(x) };
+            }
+        }
+    }
+
+    fn tex_parameter_answer(&mut self, target: GLenum, pname: GLenum, room: usize) -> Option<Vec<f32>> {
+        if self.reject_inside_begin_end() {
+            return None;
+        }
+        let Some(t) = target_index(target) else {
+            self.set_error(GL_INVALID_ENUM);
+            return None;
+        };
+        let object = self.bound_object(t as u8 + 1);
+        let p = object.params;
+        let values = match pname {
+            GL_TEXTURE_MIN_FILTER => vec![p.min_filter as f32],
+            GL_TEXTURE_MAG_FILTER => vec![p.mag_filter as f32],
+            GL_TEXTURE_WRAP_S => vec![p.wrap_s as f32],
+            GL_TEXTURE_WRAP_T => vec![p.wrap_t as f32],
+            GL_TEXTURE_BORDER_COLOR => object.extra.border_color.map(|c| c.clamp(0.0, 1.0)).to_vec(),
+            GL_TEXTURE_PRIORITY => vec![object.extra.priority],
+            GL_TEXTURE_RESIDENT => vec![1.0],
+            _ => {
+                self.set_error(GL_INVALID_ENUM);
+                return None;
+            }
+        };
+        self.room_for(values, room)
+    }
+
+    /// `glGetTexLevelParameterfv`: `GL_TEXTURE_WIDTH`, `_HEIGHT`, `_BORDER`,
+    /// `_INTERNAL_FORMAT` (`GL_TEXTURE_COMPONENTS`), and the component sizes of `level` of the
+    /// bound 1D or 2D texture; a level never defined answers 0 (its internal format `GL_RGBA`,
+    /// as Mesa).
+    /// Errors in Mesa's order: target (`GL_INVALID_ENUM`), level outside 0..=log2 of the
+    /// largest size (`GL_INVALID_VALUE`), name (`GL_INVALID_ENUM`).
+    pub fn get_tex_level_parameterfv(&mut self, target: GLenum, level: GLint, pname: GLenum, params: &mut [GLfloat]) {
+        if let Some(v) = self.tex_level_answer(target, level, pname, params.len()) {
+            params[0] = v as GLfloat;
+        }
+    }
+
+    /// `glGetTexLevelParameteriv`: as [`Gl::get_tex_level_parameterfv`].
+    pub fn get_tex_level_parameteriv(&mut self, target: GLenum, level: GLint, pname: GLenum, params: &mut [GLint]) {
+        if let Some(v) = self.tex_level_answer(target, level, pname, params.len()) {
+            params[0] = v;
+        }
+    }
+
+    fn tex_level_answer(&mut self, target: GLenum, level: GLint, pname: GLenum, room: usize) -> Option<GLint> {
+        if self.reject_inside_begin_end() {
+            return None;
+        }
+        let Some(t) = target_index(target) else {
+            self.set_error(GL_INVALID_ENUM);
+            return None;
+        };
+        if !(0..=MAX_TEXTURE_SIZE.ilog2() as GLint).contains(&level) {
+            self.set_error(GL_INVALID_VALUE);
+            return None;
+        }
+        let object = self.bound_object(t as u8 + 1);
+        let l = level as usize;
+        let defined = object.levels.get(l).and_then(Option::as_ref);
+        let internal = defined.map_or(GL_RGBA as GLint, |_| object.extra.internal_formats.get(l).copied().unwrap_or(1));
+        let sizes = defined.map_or([0; 6], |_| component_sizes(object.formats[l]));
+        let value = match pname {
+            GL_TEXTURE_WIDTH => defined.map_or(0, |d| d.width as GLint),
+            GL_TEXTURE_HEIGHT => defined.map_or(0, |d| d.height as GLint),
+            GL_TEXTURE_BORDER => 0,
+            GL_TEXTURE_INTERNAL_FORMAT => internal,
+            GL_TEXTURE_RED_SIZE => sizes[0],
+            GL_TEXTURE_GREEN_SIZE => sizes[1],
+            GL_TEXTURE_BLUE_SIZE => sizes[2],
+            GL_TEXTURE_ALPHA_SIZE => sizes[3],
+            GL_TEXTURE_LUMINANCE_SIZE => sizes[4],
+            GL_TEXTURE_INTENSITY_SIZE => sizes[5],
+            _ => {
+                self.set_error(GL_INVALID_ENUM);
+                return None;
+            }
+        };
+        self.room_for(vec![value], room).map(|v| v[0])
+    }
+
+    /// `glGetTexEnvfv`: `GL_TEXTURE_ENV_MODE` (an enum) or `GL_TEXTURE_ENV_COLOR` (4 values) of
+    /// `GL_TEXTURE_ENV`; another target or name → `GL_INVALID_ENUM`.
+    pub fn get_tex_envfv(&mut self, target: GLenum, pname: GLenum, params: &mut [GLfloat]) {
+        if let Some(v) = self.tex_env_answer(target, pname, params.len()) {
+            params[..v.len()].copy_from_slice(&v);
+        }
+    }
+
+    /// `glGetTexEnviv`: the colour scaled as `glGetIntegerv` scales colours.
+    pub fn get_tex_enviv(&mut self, target: GLenum, pname: GLenum, params: &mut [GLint]) {
+        if let Some(v) = self.tex_env_answer(target, pname, params.len()) {
+            for (out, x) in params.iter_mut().zip(v) {
+                *out = if pname == GL_TEXTURE_ENV_COLOR { float_to_int(x.into()) } else { x as GLint };
+            }
+        }
+    }
+
+    fn tex_env_answer(&mut self, target: GLenum, pname: GLenum, room: usize) -> Option<Vec<f32>> {
+        if self.reject_inside_begin_end() {
+            return None;
+        }
+        let values = match (target, pname) {
+            (GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE) => vec![self.textures.env_mode as f32],
+            (GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR) => self.textures.env_color.to_vec(),
+            _ => {
+                self.set_error(GL_INVALID_ENUM);
+                return None;
+            }
+        };
+        self.room_for(values, room)
+    }
+
+    /// Bytes `glGetTexImage` writes for `level` of `target` in `format` and `type_` under the
+    /// pack modes; `None` where it writes nothing (a bad argument, an undefined level).
+    #[must_use]
+    pub fn tex_image_len(&self, target: GLenum, level: GLint, format: GLenum, type_: GLenum) -> Option<usize> {
+        let t = target_index(target)?;
+        let l = self.bound_object(t as u8 + 1).levels.get(usize::try_from(level).ok()?)?.as_ref()?;
+        self.packed_image_len(l.width as GLsizei, l.height as GLsizei, format, type_)
+    }
+
+    /// `glGetTexImage(target, level, format, type, pixels)`: the level's texels converted to
+    /// `format` and `type_` and packed with the pack modes, as `glReadPixels` packs (GL 1.1
+    /// §6.1.4). Errors in Mesa's order: target (`GL_INVALID_ENUM`), level (`GL_INVALID_VALUE`),
+    /// format and type (`GL_INVALID_ENUM`; depth, stencil and colour-index formats
+    /// `GL_INVALID_OPERATION`), a non-empty `pixels` shorter than [`Gl::tex_image_len`]
+    /// (`GL_INVALID_VALUE`). An undefined level, or an empty `pixels` (C's NULL), writes
+    /// nothing.
+    pub fn get_tex_image(&mut self, target: GLenum, level: GLint, format: GLenum, type_: GLenum, pixels: &mut [u8]) {
+        if self.reject_inside_begin_end() {
+            return;
+        }
+        let Some(t) = target_index(target) else { return self.set_error(GL_INVALID_ENUM) };
+        if !(0..=MAX_TEXTURE_SIZE.ilog2() as GLint).contains(&level) {
+            return self.set_error(GL_INVALID_VALUE);
+        }
+        if let Some(error) = super::super::read_pixels::read_format_error(format, type_) {
+            return self.set_error(error);
+        }
+        let Some(needed) = self.tex_image_len(target, level, format, type_) else { return };
+        if pixels.is_empty() || needed == 0 {
+            return;
+        }
+        if pixels.len() < needed {
+            return self.set_error(GL_INVALID_VALUE);
+        }
+        let object = self.bound_object(t as u8 + 1);
+        let l = object.levels[level as usize].as_ref().expect("tex_image_len checked it");
+        let base = object.formats[level as usize];
+        // Unlike glReadPixels, luminance is R alone (GL 1.1 §6.1.4; measured on Mesa).
+        let luminance = matches!(format, GL_LUMINANCE | GL_LUMINANCE_ALPHA);
+        let rgba: Vec<[f32; 4]> = l
+            .texels
+            .iter()
+            .map(|&t| texel_rgba(base, t))
+            .map(|[r, g, b, a]| if luminance { [r, 0.0, 0.0, a] } else { [r, g, b, a] })
+            .collect();
+        let (w, h) = (l.width as usize, l.height as usize);
+        self.pack_rgba(&rgba, (w, h), (format, type_), pixels);
+    }
+}
