@@ -20,10 +20,10 @@ mod bezsurf;
 mod bsurf;
 #[path = "../../examples/colormap.rs"]
 mod colormap;
-#[path = "../../examples/edgeflags.rs"]
-mod edgeflags;
 #[path = "../../examples/colormat.rs"]
 mod colormat;
+#[path = "../../examples/edgeflags.rs"]
+mod edgeflags;
 #[path = "../../examples/ex1_bezier.rs"]
 mod ex1_bezier;
 #[path = "../../examples/ex2_bspline.rs"]
