@@ -53,6 +53,21 @@ static const GLenum properties[] = {GLU_SAMPLING_TOLERANCE, GLU_DISPLAY_MODE, GL
 static const GLenum list_types[] = {GL_UNSIGNED_BYTE, GL_BYTE, GL_SHORT, GL_INT, GL_FLOAT,
     GL_2_BYTES, GL_3_BYTES, GL_4_BYTES, GL_DOUBLE, 0x1234};
 
+static const GLenum array_types[] = {GL_BYTE, GL_UNSIGNED_BYTE, GL_SHORT, GL_UNSIGNED_SHORT, GL_INT,
+    GL_UNSIGNED_INT, GL_FLOAT, GL_DOUBLE, 0x1234};
+static const GLint array_sizes[] = {-1, 0, 1, 2, 3, 4, 5};
+static const GLint array_strides[] = {-4, 0, 1, 3, 7, 13, 64, 100};
+static const GLint counts[] = {-1, 0, 1, 2, 3, 4, 7, 50, 500};
+static const GLenum array_caps[] = {GL_VERTEX_ARRAY, GL_NORMAL_ARRAY, GL_COLOR_ARRAY, GL_INDEX_ARRAY,
+    GL_TEXTURE_COORD_ARRAY, GL_EDGE_FLAG_ARRAY, GL_LIGHTING, 0x1234};
+static const GLenum formats[] = {GL_V2F, GL_V3F, GL_C4UB_V2F, GL_C4UB_V3F, GL_C3F_V3F, GL_N3F_V3F,
+    GL_C4F_N3F_V3F, GL_T2F_V3F, GL_T4F_V4F, GL_T2F_C4UB_V3F, GL_T2F_C3F_V3F, GL_T2F_N3F_V3F,
+    GL_T2F_C4F_N3F_V3F, GL_T4F_C4F_N3F_V4F, 0x1234};
+static const GLenum render_modes[] = {GL_RENDER, GL_SELECT, GL_FEEDBACK, 0x1234};
+static GLuint selection[64];
+static GLushort indices[600];
+static GLuint indices32[600];
+
 static float f(void) { return ANY(floats); }
 static const float *fp(void) { return pick(8) ? buf : NULL; }
 static const double *dp(void) { return pick(8) ? dbuf : NULL; }
@@ -142,6 +157,38 @@ static void map_call(void) {
     }
 }
 
+/* Vertex arrays into buf (64 KiB: 650 elements of the largest stride and size fit), draws with
+ * up to 563 elements, indices below 600; selection buffers too small; the GLU mappings. */
+static void array_call(void) {
+    void *p = pick(8) ? (void *)buf : NULL;
+    switch (pick(12)) {
+    case 0: glVertexPointer(ANY(array_sizes), ANY(array_types), ANY(array_strides), p); break;
+    case 1: glColorPointer(ANY(array_sizes), ANY(array_types), ANY(array_strides), p);
+            glNormalPointer(ANY(array_types), ANY(array_strides), p); break;
+    case 2: glTexCoordPointer(ANY(array_sizes), ANY(array_types), ANY(array_strides), p);
+            glEdgeFlagPointer(ANY(array_strides), p); glIndexPointer(ANY(array_types), ANY(array_strides), p); break;
+    case 3: if (pick(2)) glEnableClientState(ANY(array_caps)); else glDisableClientState(ANY(array_caps)); break;
+    case 4: glInterleavedArrays(ANY(formats), ANY(array_strides), p); break;
+    case 5: glDrawArrays(ANY(modes), ANY(small), ANY(counts)); break;
+    case 6: { GLenum t = pick(2) ? GL_UNSIGNED_SHORT : ANY(list_types);
+              const void *ix = t == GL_UNSIGNED_INT ? (const void *)indices32 : (const void *)indices;
+              glDrawElements(ANY(modes), ANY(counts), t, pick(8) ? ix : NULL); break; }
+    case 7: glArrayElement(pick(700) - 50); glEdgeFlag((GLboolean)pick(3)); break;
+    case 8: { void *q = NULL; glGetPointerv(GL_VERTEX_ARRAY_POINTER + pick(6), pick(4) ? &q : NULL);
+              if (pick(2)) glPushClientAttrib(pick(2) ? GL_CLIENT_ALL_ATTRIB_BITS : GL_CLIENT_VERTEX_ARRAY_BIT); else glPopClientAttrib(); break; }
+    case 9: if (pick(2)) glSelectBuffer(ANY(small), pick(6) ? selection : NULL);
+            else glFeedbackBuffer(ANY(small), GL_2D + pick(6), pick(6) ? buf : NULL);
+            glRenderMode(ANY(render_modes)); break;
+    case 10: switch (pick(5)) { case 0: glInitNames(); break; case 1: glPushName(pick(9)); break;
+             case 2: glPopName(); break; case 3: glLoadName(pick(9)); break; default: glPassThrough(f()); } break;
+    default: { GLdouble x, y, z, w; GLint view[4] = {ANY(small), ANY(small), ANY(grids), ANY(small)};
+               gluProject(f(), f(), f(), dp(), dp(), view, &x, &y, &z);
+               gluUnProject(f(), f(), f(), dp(), dp(), view, &x, &y, &z);
+               gluUnProject4(f(), f(), f(), f(), dp(), dp(), view, f(), f(), &x, &y, &z, &w);
+               gluPickMatrix(f(), f(), f(), f(), view); break; }
+    }
+}
+
 /* The state queries and the integer and vector parameter forms (issue 26): names around the
  * valid ones, NULL and real buffers (GL writes at most 16 values, an image or stipple into buf). */
 static const GLenum query_names[] = {GL_MODELVIEW_MATRIX, GL_VIEWPORT, GL_DEPTH_RANGE, GL_CURRENT_COLOR,
@@ -194,11 +241,13 @@ static void display(void) {
         buf[i] = (i % 17 == 5) ? NAN : (float)((int)(i % 11) - 5) * 0.4f;
         dbuf[i] = buf[i];
     }
+    for (int i = 0; i < 600; i++) indices32[i] = indices[i] = (GLushort)((i * 7919) % 600);
     for (unsigned long c = 0; c < calls; c++) {
-        switch (pick(4)) {
+        switch (pick(5)) {
         case 0: map_call(); break;
         case 1: nurbs_call(); break;
         case 2: tess_call(); break;
+        case 3: array_call(); break;
         default: state_call(); break;
         }
         GLenum e = glGetError();
@@ -211,6 +260,7 @@ static void display(void) {
     }
     glEnd();
     glEndList();
+    glRenderMode(GL_RENDER);
     for (int i = 0; i < 4; i++) gluDeleteNurbsRenderer(nurbs[i]);
     gluDeleteNurbsRenderer(NULL);
     for (int i = 0; i < 2; i++) gluDeleteTess(tess[i]);

@@ -93,6 +93,8 @@ impl Gl {
         }
         let on = if let Some(on) = self.eval.is_enabled(cap) {
             on
+        } else if let Some(on) = self.arrays.is_enabled(cap) {
+            on
         } else if Caps::known(cap) {
             self.caps.is_on(cap)
         } else {
@@ -113,7 +115,7 @@ impl Gl {
         if self.reject_inside_begin_end() {
             return;
         }
-        if self.eval.set_enabled(cap, on) {
+        if self.eval.set_enabled(cap, on) || self.arrays.set_enabled(cap, on) {
             return;
         }
         if Caps::known(cap) {
@@ -136,6 +138,6 @@ impl Gl {
     /// Whether a non-evaluator capability is on (for the renderer).
     #[must_use]
     pub fn capability(&self, cap: GLenum) -> bool {
-        self.eval.is_enabled(cap).unwrap_or_else(|| self.caps.is_on(cap))
+        self.eval.is_enabled(cap).or_else(|| self.arrays.is_enabled(cap)).unwrap_or_else(|| self.caps.is_on(cap))
     }
 }

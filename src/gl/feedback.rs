@@ -9,10 +9,12 @@
 //! quads and polygons are broken into the lines and triangles GL's feedback reports, in Mesa's
 //! order (checked against Mesa 22 in `tests/reference/calls/cases/feedback.calls`).
 //!
-//! Not modelled: clipping (vertices outside the view volume are reported, not clipped),
-//! lighting (the colour is the current or evaluated one), polygon mode and culling, `glPassThrough`, and selection mode (`GL_SELECT` is `GL_INVALID_ENUM` here).
+//! Vertices are lit, clipped, culled and drawn in their polygon mode as Mesa's draw module
+//! hands them to its feedback stage (`feedback_prims`); `glPassThrough` writes its token in
+//! program order. Selection mode (`select.rs`) shares the render mode and the primitives.
 
 use super::consts::*;
+use super::feedback_prims::{self, FeedbackPrimitive, FeedbackVertex};
 use super::frame::{Command, DrawState};
 use super::types::*;
 use super::vertex::Vertex;
@@ -66,7 +68,9 @@ fn layout(kind: GLenum) -> Option<(bool, bool, bool)> {
 }
 
 /// The vertex indices of the tokens GL reports for a primitive of `count` vertices:
-/// (token, indices) in Mesa's order and winding.
+/// (token, indices) in Mesa's order and winding, before clipping and culling (what the Mesa
+/// call-script tests' own feedback emulation reads).
+#[cfg(test)]
 fn tokens(mode: GLenum, count: usize) -> Vec<(GLenum, Vec<usize>)> {
     let n = count;
     let tri = |a: usize, b: usize, c: usize| (GL_POLYGON_TOKEN, vec![a, b, c]);
@@ -83,7 +87,8 @@ fn tokens(mode: GLenum, count: usize) -> Vec<(GLenum, Vec<usize>)> {
         GL_TRIANGLE_STRIP => {
             (2..n).map(|i| if i % 2 == 0 { tri(i - 2, i - 1, i) } else { tri(i - 1, i - 2, i) }).collect()
         }
-        GL_TRIANGLE_FAN | GL_POLYGON => (2..n).map(|i| tri(0, i - 1, i)).collect(),
+        GL_TRIANGLE_FAN => (2..n).map(|i| tri(0, i - 1, i)).collect(),
+        GL_POLYGON => (2..n).map(|i| tri(i - 1, i, 0)).collect(),
         GL_QUADS => {
             (0..n / 4).flat_map(|q| [tri(4 * q, 4 * q + 1, 4 * q + 3), tri(4 * q + 1, 4 * q + 2, 4 * q + 3)]).collect()
         }
@@ -131,6 +136,7 @@ impl Gl {
         // ends: its primitives reach the feedback buffer after glEndList, so they are held.
         let compiling = self.list_query(GL_LIST_INDEX).is_some_and(|i| i != 0.0);
         let result = match self.feedback.mode {
+            GL_SELECT => self.finish_select(),
             GL_FEEDBACK if compiling => {
                 self.feedback.held = true;
                 self.feedback.values.clear();
@@ -144,6 +150,7 @@ impl Gl {
         };
         match mode {
             GL_RENDER => {}
+            GL_SELECT => self.start_select(),
             GL_FEEDBACK => {
                 if self.feedback.size == 0 {
                     self.set_error(GL_INVALID_OPERATION);
@@ -163,9 +170,36 @@ impl Gl {
         result
     }
 
-    /// `GL_RENDER_MODE`.
-    pub(crate) fn render_mode_value(&self) -> GLenum {
+    /// The render mode: `GL_RENDER`, `GL_FEEDBACK` or `GL_SELECT` (what
+    /// `glGetIntegerv(GL_RENDER_MODE)` answers, without its begin/end check).
+    #[must_use]
+    pub fn render_mode_value(&self) -> GLenum {
         self.feedback.mode
+    }
+
+    /// `glPassThrough(token)`: in feedback mode, a `GL_PASS_THROUGH_TOKEN` and `token` among
+    /// the primitives, where the call was made; nothing in the other modes. Compiled into
+    /// lists; inside `begin`/`end` → `GL_INVALID_OPERATION`.
+    pub fn pass_through(&mut self, token: GLfloat) {
+        if self.compiled(|| super::lists::ListCommand::PassThrough(token)) || self.reject_inside_begin_end() {
+            return;
+        }
+        if self.feedback.mode == GL_FEEDBACK {
+            self.evaluate_pending_meshes();
+            let value = [[token, 0.0, 0.0, 0.0]; 3];
+            self.feedback.raster_tokens.push((self.frame.commands.len(), GL_PASS_THROUGH_TOKEN, value));
+        }
+    }
+
+    /// The feedback buffer's `glGet` answers: `GL_FEEDBACK_BUFFER_SIZE`, `_TYPE`, and
+    /// `GL_RENDER_MODE`.
+    pub(crate) fn feedback_query(&self, pname: GLenum) -> Option<f64> {
+        match pname {
+            GL_FEEDBACK_BUFFER_SIZE => Some(self.feedback.size as f64),
+            GL_FEEDBACK_BUFFER_TYPE => Some(f64::from(self.feedback.kind)),
+            GL_RENDER_MODE => Some(f64::from(self.feedback.mode)),
+            _ => None,
+        }
     }
 
     /// The size and type the last successful `feedback_buffer` set (0 and `GL_2D` initially):
@@ -193,22 +227,8 @@ impl Gl {
             while let Some((_, token, vertex)) = tokens.next_if(|t| t.0 <= start + k) {
                 self.feedback_raster(&mut values, token, vertex);
             }
-            match command {
-                Command::Draw(i) => {
-                    let p = self.frame.primitives[i];
-                    let vertices = self.frame.vertices_of(&p).to_vec();
-                    self.feedback_primitive(&mut values, p.mode, p.state, &vertices);
-                }
-                Command::Mesh(i) => {
-                    let mesh = &self.frame.meshes[i];
-                    let (grid, state) = (mesh.evaluated().into_owned(), mesh.state);
-                    for (mode, indices) in mesh.primitives() {
-                        let vertices: Vec<Vertex> = indices.iter().map(|&k| grid.vertex(k)).collect();
-                        self.feedback_primitive(&mut values, mode, state, &vertices);
-                    }
-                }
-                // GL clears only in render mode.
-                Command::Clear { .. } => {}
+            for prim in self.command_primitives(&command) {
+                self.feedback_primitive(&mut values, &prim);
             }
         }
         for (_, token, vertex) in tokens {
@@ -240,13 +260,16 @@ impl Gl {
 
     /// A raster token and its vertex, laid out as the buffer type says.
     fn feedback_raster(&self, out: &mut Vec<GLfloat>, token: GLenum, [window, color, tex]: [[GLfloat; 4]; 3]) {
+        out.push(token as GLfloat);
+        if token == GL_PASS_THROUGH_TOKEN {
+            return out.push(window[0]);
+        }
         let (four, with_color, with_texture) = layout(self.feedback.kind).unwrap_or_default();
         let position = match self.feedback.kind {
             GL_2D => 2,
             _ if four => 4,
             _ => 3,
         };
-        out.push(token as GLfloat);
         out.extend_from_slice(&window[..position]);
         if with_color {
             out.extend_from_slice(&color);
@@ -256,31 +279,53 @@ impl Gl {
         }
     }
 
-    fn feedback_primitive(&self, out: &mut Vec<GLfloat>, mode: GLenum, state: usize, vertices: &[Vertex]) {
-        let Some(state) = self.frame.states.get(state) else { return };
-        for (token, indices) in tokens(mode, vertices.len()) {
-            out.push(token as GLfloat);
-            if token == GL_POLYGON_TOKEN {
-                out.push(indices.len() as GLfloat);
+    /// The primitives a recorded draw or mesh reports (clipped, lit, culled, in polygon mode).
+    pub(crate) fn command_primitives(&self, command: &Command) -> Vec<FeedbackPrimitive> {
+        let mut out = Vec::new();
+        match *command {
+            Command::Draw(i) => {
+                let p = self.frame.primitives[i];
+                let Some(state) = self.frame.states.get(p.state) else { return out };
+                let hidden = self.frame.hidden_edges_of(&p);
+                out = feedback_prims::report(p.mode, state, self.frame.vertices_of(&p), &hidden);
             }
-            for i in indices {
-                self.feedback_vertex(out, state, &vertices[i]);
+            Command::Mesh(i) => {
+                let mesh = &self.frame.meshes[i];
+                let Some(state) = self.frame.states.get(mesh.state) else { return out };
+                let grid = mesh.evaluated();
+                for (mode, indices) in mesh.primitives() {
+                    let vertices: Vec<Vertex> = indices.iter().map(|&k| grid.vertex(k)).collect();
+                    out.extend(feedback_prims::report(mode, state, &vertices, &[]));
+                }
+            }
+            // GL clears only in render mode.
+            Command::Clear { .. } => {}
+        }
+        out
+    }
+
+    fn feedback_primitive(&self, out: &mut Vec<GLfloat>, prim: &FeedbackPrimitive) {
+        match prim {
+            FeedbackPrimitive::Point(v) => {
+                out.push(GL_POINT_TOKEN as GLfloat);
+                self.feedback_vertex(out, v);
+            }
+            FeedbackPrimitive::Line(a, b, reset) => {
+                out.push(if *reset { GL_LINE_RESET_TOKEN } else { GL_LINE_TOKEN } as GLfloat);
+                self.feedback_vertex(out, a);
+                self.feedback_vertex(out, b);
+            }
+            FeedbackPrimitive::Polygon(vs) => {
+                out.push(GL_POLYGON_TOKEN as GLfloat);
+                out.push(vs.len() as GLfloat);
+                vs.iter().for_each(|v| self.feedback_vertex(out, v));
             }
         }
     }
 
     /// One vertex as the buffer type lays it out: window x, y (z, w), colour, texcoord.
-    fn feedback_vertex(&self, out: &mut Vec<GLfloat>, state: &DrawState, v: &Vertex) {
-        let clip = state.projection * state.modelview * Vec4::from_array(v.position);
-        let [vx, vy, vw, vh] = state.viewport.map(|c| c as f32);
-        let [near, far] = state.depth_range;
-        let ndc = clip / clip.w;
-        let window = [
-            vx + (ndc.x + 1.0) * vw / 2.0,
-            vy + (ndc.y + 1.0) * vh / 2.0,
-            near + (far - near) * (ndc.z + 1.0) / 2.0,
-            clip.w,
-        ];
+    fn feedback_vertex(&self, out: &mut Vec<GLfloat>, v: &FeedbackVertex) {
+        let FeedbackVertex { window, .. } = *v;
         let (four, color, texture) = layout(self.feedback.kind).unwrap_or_default();
         let position = match self.feedback.kind {
             GL_2D => 2,
@@ -292,14 +337,14 @@ impl Gl {
             out.extend_from_slice(&v.color);
         }
         if texture {
-            out.extend_from_slice(&feedback_tex_coord(state, v));
+            out.extend_from_slice(&v.tex);
         }
     }
 }
 
 /// The texture coordinate GL reports for a vertex: with a texture enabled, generated where
 /// `glTexGen` is on (GL 1.1 §2.10.4) and through the texture matrix; as given without one.
-fn feedback_tex_coord(state: &DrawState, v: &Vertex) -> [GLfloat; 4] {
+pub(crate) fn feedback_tex_coord(state: &DrawState, v: &Vertex) -> [GLfloat; 4] {
     let Some(texture) = &state.texture else { return v.tex_coord };
     let given = Vec4::from_array(v.tex_coord);
     let generated = texture.generate.map_or(given, |g| {

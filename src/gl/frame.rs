@@ -167,6 +167,9 @@ pub struct Frame {
     pub meshes: Vec<GridMesh>,
     /// Materials changed between `begin` and `end`, in order.
     pub material_changes: Vec<MaterialChange>,
+    /// The vertices (indices in `vertices`, ascending) issued with the edge flag false
+    /// (`glEdgeFlag`): in line and point polygon modes their edges are not boundary edges.
+    pub hidden_edges: Vec<usize>,
 }
 
 /// What a `glEvalMesh` grid draws.
@@ -276,6 +279,22 @@ impl Frame {
         self.commands.clear();
         self.meshes.clear();
         self.material_changes.clear();
+        self.hidden_edges.clear();
+    }
+
+    /// For each vertex of `primitive`, whether its edge flag is false; empty when none is (the
+    /// common case).
+    #[must_use]
+    pub fn hidden_edges_of(&self, primitive: &Primitive) -> Vec<bool> {
+        let range = primitive.first..primitive.first + primitive.count;
+        let start = self.hidden_edges.partition_point(|&i| i < range.start);
+        let inside = self.hidden_edges[start..].iter().take_while(|&&i| i < range.end);
+        let mut flags = Vec::new();
+        for &i in inside {
+            flags.resize(primitive.count, false);
+            flags[i - range.start] = true;
+        }
+        flags
     }
 
     /// The frame with every mesh replaced by the primitives GL issues for it (deferred meshes
@@ -288,6 +307,9 @@ impl Frame {
                 Command::Clear { .. } => out.commands.push(*command),
                 Command::Draw(i) => {
                     let p = self.primitives[i];
+                    let first = out.vertices.len();
+                    let hidden = self.hidden_edges_of(&p);
+                    out.hidden_edges.extend(hidden.iter().enumerate().filter(|(_, h)| **h).map(|(k, _)| first + k));
                     out.push_primitive(p.mode, p.state, self.vertices_of(&p).iter().copied());
                     let primitive = out.primitives.len() - 1;
                     for (vertex, state) in self.material_changes_of(i) {

@@ -55,6 +55,9 @@ impl Gl {
     /// moves the current position, so nothing is recorded.
     pub(crate) fn emit_vertex(&mut self, v: Vertex) {
         if let Some(p) = self.open_primitive {
+            if !self.edge_flag_value() {
+                self.frame.hidden_edges.push(self.frame.vertices.len());
+            }
             self.frame.vertices.push(v);
             self.frame.primitives[p].count += 1;
         }

@@ -144,6 +144,15 @@ pub(crate) enum ListCommand {
     CallList(GLuint),
     CallLists(GLsizei, GLenum, Vec<u8>),
     ListBase(GLuint),
+    EdgeFlag(GLboolean),
+    /// An error a draw call raised while it compiled: raised again when the list runs (Mesa's
+    /// `_mesa_compile_error`).
+    Error(GLenum),
+    InitNames,
+    LoadName(GLuint),
+    PushName(GLuint),
+    PopName,
+    PassThrough(GLfloat),
 }
 
 /// A list being compiled.
@@ -476,6 +485,13 @@ impl Gl {
             C::CallList(list) => self.call_list(*list),
             C::CallLists(n, type_, names) => self.call_lists(*n, *type_, names),
             C::ListBase(base) => self.list_base(*base),
+            C::EdgeFlag(flag) => self.edge_flag(*flag),
+            C::Error(code) => self.set_error(*code),
+            C::InitNames => self.init_names(),
+            C::LoadName(name) => self.load_name(*name),
+            C::PushName(name) => self.push_name(*name),
+            C::PopName => self.pop_name(),
+            C::PassThrough(token) => self.pass_through(*token),
         }
     }
 }

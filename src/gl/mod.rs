@@ -6,15 +6,18 @@
 //! slices; a slice shorter than the call needs sets `GL_INVALID_VALUE` instead of reading out of
 //! bounds. Nothing here panics on bad input.
 
+mod arrays;
 mod attrib;
 mod binding;
 mod bitmap;
+mod client_memory;
 mod clip;
 mod color_material;
 pub mod consts;
 mod enable;
 mod eval;
 pub mod feedback;
+mod feedback_prims;
 mod fragment;
 mod frame;
 mod get;
@@ -32,6 +35,7 @@ mod pixels;
 mod raster;
 mod raster_pos;
 mod read_pixels;
+mod select;
 mod stipple;
 mod stipple_query;
 mod texgen;
@@ -40,6 +44,8 @@ pub mod types;
 mod variants;
 mod vertex;
 
+pub use arrays::PointerArg;
+pub use client_memory::{ArrayElement, ClientArray, ClientMemory, ClientPointer};
 pub use eval::{MapTarget, Slot};
 pub use fragment::Fog;
 pub use frame::{Call, Command, DrawState, Frame, GridMesh, MaterialChange, MeshMode, MeshVertices, Primitive};
@@ -168,6 +174,10 @@ pub struct Gl {
     /// GLU tessellator objects, indexed by their handles (`None` once deleted, or while one
     /// of its calls runs).
     pub(crate) tessellators: Vec<Option<crate::glu::TessObject>>,
+    /// The client's vertex arrays and the current edge flag.
+    arrays: arrays::VertexArrays,
+    /// Selection mode: its buffer, the name stack and the hit being gathered.
+    select: select::Selection,
 }
 
 impl Gl {
@@ -204,6 +214,8 @@ impl Gl {
             fragment_ops: fragment::FragmentOps::default(),
             nurbs: Vec::new(),
             tessellators: Vec::new(),
+            arrays: arrays::VertexArrays::default(),
+            select: select::Selection::default(),
         }
     }
 
@@ -268,6 +280,7 @@ impl Gl {
             frame.states.clear();
             frame.commands.clear();
             frame.material_changes.clear();
+            frame.hidden_edges.clear();
             self.frame = frame;
         }
     }
@@ -385,8 +398,7 @@ impl Gl {
     /// how many, `None` for a name that is not its; chain them here as
     /// `self.stencil_query(pname, out).or_else(|| self.arrays_query(pname, out))`.
     fn query(&self, pname: GLenum, out: &mut [f64]) -> Option<usize> {
-        let _ = (pname, out);
-        None
+        self.arrays_query(pname, out).or_else(|| self.select_query(pname, out))
     }
 
     /// Records `code` unless an earlier error is still pending (GL's sticky flag; Mesa's `_mesa_error`).

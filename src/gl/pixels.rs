@@ -127,6 +127,7 @@ impl Gl {
         }
         let entry = (mask & GL_CLIENT_PIXEL_STORE_BIT != 0).then_some((stores.unpack, stores.pack));
         stores.saved.push(entry);
+        self.push_client_arrays(mask);
     }
 
     /// `glPopClientAttrib`: restores what the matching push saved. An empty stack →
@@ -135,7 +136,11 @@ impl Gl {
         if self.reject_inside_begin_end() {
             return;
         }
-        match self.pixel_stores.saved.pop() {
+        let popped = self.pixel_stores.saved.pop();
+        if popped.is_some() {
+            self.pop_client_arrays();
+        }
+        match popped {
             None => self.set_error(GL_STACK_UNDERFLOW),
             Some(Some((unpack, pack))) => (self.pixel_stores.unpack, self.pixel_stores.pack) = (unpack, pack),
             Some(None) => {}

@@ -26,6 +26,7 @@ mod evaluation;
 mod mipmap;
 mod model;
 mod tess;
+mod project;
 
 pub use errors::glu_error_string;
 pub use model::callbacks::{NurbsCallback, UserData};

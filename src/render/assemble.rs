@@ -162,7 +162,8 @@ pub fn assemble_frame(frame: &Frame, gpu_meshes: &[usize]) -> DrawList {
                             .into_iter()
                             .filter_map(|(vertex, s)| Some((vertex, frame.states.get(s)?)))
                             .collect();
-                        out.lit_primitive(p.mode, frame.vertices_of(p), state, &materials);
+                        let hidden = frame.hidden_edges_of(p);
+                        out.lit_primitive(p.mode, frame.vertices_of(p), state, &materials, &hidden);
                     }
                 }
             }
@@ -201,17 +202,19 @@ impl Assembler {
     }
 
     fn primitive(&mut self, mode: GLenum, vertices: &[crate::gl::Vertex], state: &DrawState) {
-        self.lit_primitive(mode, vertices, state, &[]);
+        self.lit_primitive(mode, vertices, state, &[], &[]);
     }
 
     /// A primitive whose vertices from `materials[k].0` on are lit with the lighting of
     /// `materials[k].1` (`glMaterial` between `begin` and `end`); everything else is `state`'s.
+    /// `hidden[i]`: vertex `i`'s edge flag is false (empty: none is).
     fn lit_primitive(
         &mut self,
         mode: GLenum,
         vertices: &[crate::gl::Vertex],
         state: &DrawState,
         materials: &[(usize, &DrawState)],
+        hidden: &[bool],
     ) {
         let shaders: Vec<Shader> =
             std::iter::once(Shader::new(state)).chain(materials.iter().map(|(_, s)| Shader::new(s))).collect();
@@ -219,7 +222,16 @@ impl Assembler {
         let v: Vec<ShadedVertex> = vertices.iter().enumerate().map(|(i, v)| shaders[shader_of(i)].shade(v)).collect();
         let n = v.len();
         let closing_edge_first = mode != GL_POLYGON;
-        let mut ctx = PrimitiveContext { out: self, state, v: &v, stipple: Stipple::default(), closing_edge_first };
+        let quads = mode == GL_QUADS;
+        let mut ctx = PrimitiveContext {
+            out: self,
+            state,
+            v: &v,
+            stipple: Stipple::default(),
+            closing_edge_first,
+            hidden,
+            quads,
+        };
         match mode {
             GL_POINTS => (0..n).for_each(|i| ctx.point(i)),
             GL_LINES => (0..n / 2).for_each(|i| {
@@ -336,6 +348,12 @@ struct PrimitiveContext<'a, 'b> {
     /// Polygon edges in line mode start with the closing edge (triangles and quads), not the
     /// first (`GL_POLYGON`): see [`PrimitiveContext::edges`].
     closing_edge_first: bool,
+    /// Vertices whose edge flag is false (`glEdgeFlag`); empty when none is.
+    hidden: &'b [bool],
+    /// `GL_QUADS`: a quad is filled as (v0, v1, v3), (v1, v2, v3), its diagonal v1–v3, as
+    /// Mesa's draw module splits it (`draw_pt_decompose.h`); the diagonal shows where
+    /// attributes are interpolated across a quad that is no parallelogram.
+    quads: bool,
 }
 
 impl PrimitiveContext<'_, '_> {
@@ -449,6 +467,25 @@ impl PrimitiveContext<'_, '_> {
         }
     }
 
+    /// A polygon some of whose edge flags are false, in point or line mode: only the vertices
+    /// and edges that start at a flagged vertex (GL 1.1 §2.6.2, §3.5.4), each clipped on its
+    /// own by the clip planes.
+    fn flagged(&mut self, mode: GLenum, corners: &[Corner], flags: &[bool]) {
+        let n = corners.len();
+        if mode == GL_POINT {
+            (0..n).filter(|&k| flags[k]).for_each(|k| self.point_at(corners[k]));
+            return;
+        }
+        self.stipple.reset();
+        let first = if self.closing_edge_first { n - 1 } else { 0 };
+        for j in 0..n {
+            let k = (first + j) % n;
+            if flags[k] {
+                self.line(corners[k], corners[(k + 1) % n]);
+            }
+        }
+    }
+
     /// A polygon (triangle, quad or `GL_POLYGON`): orientation, culling, face colour, flat
     /// shading, then the polygon mode of its face. In line mode only the polygon's own edges
     /// are drawn, never the diagonals used to fill it.
@@ -469,14 +506,26 @@ impl PrimitiveContext<'_, '_> {
             return;
         }
         let mode = self.state.polygon_mode[usize::from(!front)];
-        if let Some(o) = self.state.polygon_offset.filter(|o| o.applies_to(mode)) {
+        let depth = self.state.polygon_offset.filter(|o| o.applies_to(mode)).map(|o| {
             let depth = offset::polygon_offset(&corners, self.state.viewport, self.state.depth_range, &o);
             corners.iter_mut().for_each(|c| c.depth_offset = depth);
+            depth
+        });
+        let is_hidden = |i: &usize| self.hidden.get(*i).copied().unwrap_or(false);
+        if mode != GL_FILL && idx.iter().any(is_hidden) {
+            let flags: Vec<bool> = idx.iter().map(|i| !is_hidden(i)).collect();
+            let mut whole: Vec<Corner> =
+                idx.iter().map(|&i| self.corner(i, colour_of(if self.flat() { provoking } else { i }))).collect();
+            whole.iter_mut().for_each(|c| c.depth_offset = depth.unwrap_or(0.0));
+            return self.flagged(mode, &whole, &flags);
         }
         match mode {
             GL_POINT => corners.iter().for_each(|&c| self.point_at(c)),
             GL_LINE => self.edges(&corners),
             _ => {
+                if self.quads && corners.len() == 4 && idx.len() == 4 {
+                    corners.rotate_left(1);
+                }
                 let tris: Vec<Corner> =
                     (1..corners.len() - 1).flat_map(|k| [corners[0], corners[k], corners[k + 1]]).collect();
                 // The polygon stipple applies to filled polygons only (GL 1.1 §3.5.6).

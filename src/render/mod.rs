@@ -12,7 +12,7 @@ pub(crate) mod compare;
 mod corner;
 mod image;
 mod offset;
-mod shade;
+pub(crate) mod shade;
 mod smooth;
 pub mod soft;
 mod stipple;

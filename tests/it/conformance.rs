@@ -22,6 +22,8 @@ mod bsurf;
 mod colormap;
 #[path = "../../examples/colormat.rs"]
 mod colormat;
+#[path = "../../examples/edgeflags.rs"]
+mod edgeflags;
 #[path = "../../examples/ex1_bezier.rs"]
 mod ex1_bezier;
 #[path = "../../examples/ex2_bspline.rs"]
@@ -48,6 +50,8 @@ mod mipnurbs;
 mod operations;
 #[path = "../../examples/outline.rs"]
 mod outline;
+#[path = "../../examples/picking.rs"]
+pub(crate) mod picking;
 #[path = "../../examples/rational.rs"]
 mod rational;
 #[path = "../../examples/rationalmap.rs"]
@@ -72,6 +76,8 @@ mod texsurf;
 mod texteapot;
 #[path = "../../examples/trimmed.rs"]
 mod trimmed;
+#[path = "../../examples/vertexarrays.rs"]
+mod vertexarrays;
 
 /// Mismatched pixels allowed: 0.2% of the picture. A missing curve, a wrong colour or a
 /// culled surface costs several percent; what remains at 0.2% is anti-diagonal staircase
@@ -236,6 +242,28 @@ fn textbook_exercises_match_mesa() {
 #[test]
 fn display_lists_match_mesa() {
     check("lists", lists::app, 0.0);
+}
+
+/// Issue 26 asks vertex arrays, selection and edge flags to match Mesa within 0.1% of pixels.
+const ARRAYS_THRESHOLD: f64 = 0.001;
+
+/// Control points picked with selection mode and `gluPickMatrix`, the picked one highlighted;
+/// the control polygon from a vertex array (`Picking.c`).
+#[test]
+fn picking_matches_mesa() {
+    check_with("picking", picking::app, |_| ARRAYS_THRESHOLD);
+}
+
+/// Meshes from every interleaved format and through `glDrawElements` (`VertexArrays.c`).
+#[test]
+fn vertex_arrays_match_mesa() {
+    check_with("vertexarrays", vertexarrays::app, |_| ARRAYS_THRESHOLD);
+}
+
+/// Edge flags hiding polygon edges in line and point mode (`EdgeFlags.c`).
+#[test]
+fn edge_flags_match_mesa() {
+    check_with("edgeflags", edgeflags::app, |_| ARRAYS_THRESHOLD);
 }
 
 /// A Bezier surface with `GL_MAP2_TEXTURE_COORD_2`, two texture objects (RGB and

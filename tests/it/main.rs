@@ -1,9 +1,11 @@
 //! Integration tests: one binary to save link time (STYLE.md §9).
 #![allow(clippy::needless_range_loop)]
 
+mod arrays_properties;
 mod conformance;
 mod eval_mesh;
 mod glu_errors;
+mod glu_project;
 mod glu_surfpoints;
 mod glu_tess;
 mod glu_tessellation;
@@ -11,6 +13,7 @@ mod glut_loop;
 mod gpu_parity;
 mod interactive_demo;
 mod mesa_calls;
+mod picking_demo;
 mod properties;
 mod query_properties;
 mod raster_images;

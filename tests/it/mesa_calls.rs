@@ -3,6 +3,8 @@
 //! (`expected/*.out`, regenerated from real Mesa by `regen.sh`; CI checks they still match).
 //! The format and the feedback conventions are in `tests/reference/calls/FORMAT.md`.
 
+mod arrays;
+
 use gleval::gl::MapTarget;
 use gleval::prelude::*;
 use std::path::{Path, PathBuf};
@@ -216,6 +218,9 @@ fn enum_value(token: &str) -> u32 {
             }
         }
     }
+    if let Some(v) = arrays::enum_value(token) {
+        return v;
+    }
     if let Some(v) = queries::named_enum(token) {
         return v;
     }
@@ -286,6 +291,8 @@ struct Runner {
     texgen_normal: bool,
     /// A list is being compiled (see `run_line`).
     compiling: bool,
+    /// The vertex-array, selection and feedback commands' buffers.
+    arrays: arrays::Harness,
     collected: usize,
     out: Vec<String>,
 }
@@ -298,6 +305,7 @@ impl Runner {
             deferred: false,
             texgen_normal: false,
             compiling: false,
+            arrays: arrays::Harness::default(),
             collected: 0,
             out: Vec::new(),
         }
@@ -309,6 +317,7 @@ impl Runner {
         self.deferred = false;
         self.texgen_normal = false;
         self.compiling = false;
+        self.arrays = arrays::Harness::default();
         self.collected = 0;
         self.out.push(format!("case {name}"));
     }
@@ -480,8 +489,8 @@ impl Runner {
                 return;
             }
             other => {
-                if !queries::run(gl, other, &mut a, &mut values) {
-                    panic!("unknown command {other}")
+                if !self.arrays.run(gl, other, &mut a, &mut values) && !queries::run(gl, other, &mut a, &mut values) {
+                    panic!("unknown command {other}");
                 }
             }
         }
@@ -516,7 +525,15 @@ impl Runner {
 
     /// Emits `fb` lines for the primitives drawn since the last collection (FORMAT.md §3).
     fn collect_feedback(&mut self) {
+        if self.arrays.real_feedback {
+            let lines = self.arrays.collect(&mut self.gl);
+            return self.out.extend(lines);
+        }
+        if self.gl.render_mode_value() == GL_SELECT {
+            return;
+        }
         let frame = self.gl.frame().expanded();
+        self.collected = self.collected.min(frame.primitives.len());
         for p in &frame.primitives[self.collected..] {
             let v: Vec<String> = frame.vertices_of(p).iter().map(|v| self.feedback_vertex(v)).collect();
             let n = v.len();

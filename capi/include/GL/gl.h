@@ -1066,6 +1066,31 @@ GLAPI void GLAPIENTRY glGetClipPlane(GLenum plane, GLdouble *equation);
 GLAPI void GLAPIENTRY glFeedbackBuffer(GLsizei size, GLenum type, GLfloat *buffer);
 GLAPI GLint GLAPIENTRY glRenderMode(GLenum mode);
 
+/* Selection mode and glPassThrough. */
+GLAPI void GLAPIENTRY glSelectBuffer(GLsizei size, GLuint *buffer);
+GLAPI void GLAPIENTRY glInitNames(void);
+GLAPI void GLAPIENTRY glLoadName(GLuint name);
+GLAPI void GLAPIENTRY glPushName(GLuint name);
+GLAPI void GLAPIENTRY glPopName(void);
+GLAPI void GLAPIENTRY glPassThrough(GLfloat token);
+
+/* Vertex arrays and edge flags. */
+GLAPI void GLAPIENTRY glVertexPointer(GLint size, GLenum type, GLsizei stride, const GLvoid *ptr);
+GLAPI void GLAPIENTRY glNormalPointer(GLenum type, GLsizei stride, const GLvoid *ptr);
+GLAPI void GLAPIENTRY glColorPointer(GLint size, GLenum type, GLsizei stride, const GLvoid *ptr);
+GLAPI void GLAPIENTRY glIndexPointer(GLenum type, GLsizei stride, const GLvoid *ptr);
+GLAPI void GLAPIENTRY glTexCoordPointer(GLint size, GLenum type, GLsizei stride, const GLvoid *ptr);
+GLAPI void GLAPIENTRY glEdgeFlagPointer(GLsizei stride, const GLvoid *ptr);
+GLAPI void GLAPIENTRY glGetPointerv(GLenum pname, GLvoid **params);
+GLAPI void GLAPIENTRY glArrayElement(GLint i);
+GLAPI void GLAPIENTRY glDrawArrays(GLenum mode, GLint first, GLsizei count);
+GLAPI void GLAPIENTRY glDrawElements(GLenum mode, GLsizei count, GLenum type, const GLvoid *indices);
+GLAPI void GLAPIENTRY glInterleavedArrays(GLenum format, GLsizei stride, const GLvoid *pointer);
+GLAPI void GLAPIENTRY glEnableClientState(GLenum cap);
+GLAPI void GLAPIENTRY glDisableClientState(GLenum cap);
+GLAPI void GLAPIENTRY glEdgeFlag(GLboolean flag);
+GLAPI void GLAPIENTRY glEdgeFlagv(const GLboolean *flag);
+
 /* Pixels, the raster position and bitmaps. */
 GLAPI void GLAPIENTRY glPixelStorei(GLenum pname, GLint param);
 GLAPI void GLAPIENTRY glPixelStoref(GLenum pname, GLfloat param);

@@ -4,12 +4,18 @@
 //! them when `glRenderMode` leaves feedback mode.
 
 use crate::context::with_gl;
+use gleval::gl::consts::GL_SELECT;
 use gleval::gl::types::*;
 use std::cell::Cell;
 
 thread_local! {
     /// The buffer `glFeedbackBuffer` gave, and its size in values.
     static BUFFER: Cell<(*mut GLfloat, usize)> = const { Cell::new((std::ptr::null_mut(), 0)) };
+}
+
+/// The buffer `glFeedbackBuffer` last gave (`glGetPointerv(GL_FEEDBACK_BUFFER_POINTER)`).
+pub(crate) fn feedback_pointer() -> *mut GLfloat {
+    BUFFER.with(Cell::get).0
 }
 
 entry! {
@@ -29,11 +35,15 @@ entry! {
 
 entry! {
     /// `glRenderMode`: `Gl::render_mode`; leaving feedback mode writes the values into the
-    /// buffer given to `glFeedbackBuffer` (at most its size).
+    /// buffer given to `glFeedbackBuffer` (at most its size), leaving selection mode into
+    /// `glSelectBuffer`'s.
     fn glRenderMode(mode: GLenum) -> GLint {
         with_gl(|gl| {
+            let leaving_select = gl.render_mode_value() == GL_SELECT && !gl.inside_begin_end();
             let n = gl.render_mode(mode);
-            if n != 0 {
+            if leaving_select {
+                super::select::write_back(gl.select_values());
+            } else if n != 0 {
                 let (buffer, size) = BUFFER.with(Cell::get);
                 let values = gl.feedback_values();
                 let count = values.len().min(size);

@@ -1,5 +1,6 @@
 //! `GL/gl.h`: the GL 1.x entry points `Gl` implements, one file per area.
 
+mod arrays;
 mod eval;
 mod feedback;
 mod fragment;
@@ -11,6 +12,7 @@ mod pixels;
 mod queries;
 mod raster_modes;
 mod read_pixels;
+mod select;
 mod state;
 mod texgen;
 mod texture;

@@ -5,3 +5,4 @@ mod callbacks;
 mod misc;
 mod nurbs;
 mod tess;
+mod project;

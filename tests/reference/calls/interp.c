@@ -15,6 +15,7 @@
 #include <string.h>
 #include <errno.h>
 #include <stdarg.h>
+#include "interp_arrays.h"
 
 #define W 64
 #define H 64
@@ -75,6 +76,7 @@ static const struct enum_name enums[] = {
     E(GL_POLYGON_OFFSET_UNITS), E(GL_MAX_CLIP_PLANES), E(GL_LINE_BIT), E(GL_POLYGON_BIT),
     E(GL_TRANSFORM_BIT), E(GL_FRONT), E(GL_DIFFUSE), E(GL_SHININESS), E(GL_POLYGON_STIPPLE),
     E(GL_POLYGON_STIPPLE_BIT),
+    ARRAYS_ENUMS
     { NULL, 0 }
 };
 
@@ -234,6 +236,12 @@ static void print_vertex(const GLfloat *v)
 /* Leave feedback mode, print the tokens, enter feedback mode again. */
 static void collect_feedback(void)
 {
+    /* After a script's own glRenderMode: nothing to collect in selection mode; back to
+     * feedback from render mode. */
+    GLint mode = GL_FEEDBACK;
+    glGetIntegerv(GL_RENDER_MODE, &mode);
+    if (mode == GL_SELECT) return;
+    if (mode == GL_RENDER) { start_feedback(); return; }
     GLint n = glRenderMode(GL_RENDER);
     if (n < 0) { printf("fb overflow\n"); n = 0; }
     for (GLint i = 0; i < n;) {
@@ -390,6 +398,8 @@ static void run_typed(void)
 #include "queries.inc.c"
 
 /* ---------------------------------------------------------------- calls */
+#include "interp_arrays.c"
+
 /* Executes one call; query values (if any) go into `vals`. */
 static void run_call(const char *c)
 {
@@ -680,7 +690,7 @@ static void run_call(const char *c)
         glEnable(GL_TEXTURE_GEN_S);
         glEnable(GL_TEXTURE_GEN_T);
         glEnable(GL_TEXTURE_GEN_R);
-    } else if (!run_queries_call(c)) {
+    } else if (!run_arrays_call(c) && !run_queries_call(c)) {
         die("unknown call", c);
     }
 }

@@ -17,3 +17,5 @@ cc -std=c99 -O1 -o "$build/surfpoints" "$here/surfpoints.c" -lOSMesa -lGLU -lGL
 GALLIUM_DRIVER=llvmpipe "$build/surfpoints" > "$out/surfpoints.txt"
 cc -std=c99 -O1 -o "$build/tess_calls" "$here/tess_calls.c" -lGLU -lGL -lm
 "$build/tess_calls" < "$here/tess_cases.in" > "$out/tess_calls.txt"
+cc -std=c99 -O1 -o "$build/project" "$here/project.c" -lOSMesa -lGLU -lGL
+GALLIUM_DRIVER=llvmpipe "$build/project" > "$out/project.txt"

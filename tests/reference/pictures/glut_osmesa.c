@@ -31,6 +31,8 @@ void glutInitDisplayMode(unsigned int mode) { (void)mode; }
 void glutDisplayFunc(void (*f)(void)) { display = f; }
 void glutReshapeFunc(void (*f)(int, int)) { reshape = f; }
 void glutKeyboardFunc(void (*f)(unsigned char, int, int)) { (void)f; }
+void glutMouseFunc(void (*f)(int, int, int, int)) { (void)f; }
+void glutMotionFunc(void (*f)(int, int)) { (void)f; }
 void glutPostRedisplay(void) {}
 void glutSwapBuffers(void) { glFinish(); }
 int glutGet(unsigned int what) {

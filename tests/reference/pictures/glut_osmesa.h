@@ -19,6 +19,12 @@ int glutCreateWindow(const char *title);
 void glutDisplayFunc(void (*f)(void));
 void glutReshapeFunc(void (*f)(int, int));
 void glutKeyboardFunc(void (*f)(unsigned char, int, int));
+/* Mouse callbacks: accepted, never called (the picture is the first frame). */
+#define GLUT_LEFT_BUTTON 0
+#define GLUT_DOWN 0
+#define GLUT_UP 1
+void glutMouseFunc(void (*f)(int, int, int, int));
+void glutMotionFunc(void (*f)(int, int));
 int glutGet(unsigned int what);
 void glutPostRedisplay(void);
 void glutSwapBuffers(void);

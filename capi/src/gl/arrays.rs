@@ -1,0 +1,154 @@
+//! Vertex arrays: `gl*Pointer`, `glInterleavedArrays`, client state, `glArrayElement`,
+//! `glDrawArrays`, `glDrawElements`, `glGetPointerv`, edge flags.
+//!
+//! GL keeps the caller's pointers and reads through them when it draws (GL 1.1 §2.8): each
+//! pointer becomes a [`RawMemory`] that `Gl` reads, at draw time, exactly the elements the draw
+//! call's arguments name (the caller's promise, as in GL).
+
+use crate::context::with_gl;
+use crate::memory::bytes;
+use gleval::gl::consts::*;
+use gleval::gl::types::*;
+use gleval::gl::{ClientMemory, ClientPointer};
+use std::any::Any;
+use std::ffi::c_void;
+use std::rc::Rc;
+
+/// The caller's memory at a C pointer.
+#[derive(Debug)]
+pub struct RawMemory(*const u8);
+
+impl ClientMemory for RawMemory {
+    fn read(&self, offset: usize, out: &mut [u8]) -> bool {
+        let in_range = (self.0 as usize).checked_add(offset).and_then(|a| a.checked_add(out.len()));
+        if self.0.is_null() || in_range.is_none_or(|end| end > isize::MAX as usize) {
+            return false;
+        }
+        // SAFETY: the pointer call's contract: the caller's array holds every element that the
+        // draw calls made while it is set read (GL 1.1 §2.8), which is what `Gl` asks for.
+        unsafe { std::ptr::copy_nonoverlapping(self.0.wrapping_add(offset), out.as_mut_ptr(), out.len()) };
+        true
+    }
+
+    fn as_any(&self) -> &dyn Any {
+        self
+    }
+}
+
+/// A C pointer as the client pointer `Gl` keeps (`None` for NULL).
+fn pointer(p: *const c_void) -> Option<ClientPointer> {
+    (!p.is_null()).then(|| ClientPointer::new(Rc::new(RawMemory(p.cast())), 0))
+}
+
+/// The C address a client pointer was made from.
+fn address(p: &ClientPointer) -> *mut c_void {
+    p.memory()
+        .as_any()
+        .downcast_ref::<RawMemory>()
+        .map_or(std::ptr::null_mut(), |m| m.0.wrapping_add(p.offset()).cast_mut().cast())
+}
+
+entry! {
+    /// `glVertexPointer`: `Gl::vertex_pointer`, keeping the pointer.
+    unsafe fn glVertexPointer(size: GLint, type_: GLenum, stride: GLsizei, ptr: *const c_void) {
+        with_gl(|gl| gl.vertex_pointer(size, type_, stride, pointer(ptr)))
+    }
+}
+
+entry! {
+    /// `glNormalPointer`: `Gl::normal_pointer`.
+    unsafe fn glNormalPointer(type_: GLenum, stride: GLsizei, ptr: *const c_void) {
+        with_gl(|gl| gl.normal_pointer(type_, stride, pointer(ptr)))
+    }
+}
+
+entry! {
+    /// `glColorPointer`: `Gl::color_pointer`.
+    unsafe fn glColorPointer(size: GLint, type_: GLenum, stride: GLsizei, ptr: *const c_void) {
+        with_gl(|gl| gl.color_pointer(size, type_, stride, pointer(ptr)))
+    }
+}
+
+entry! {
+    /// `glIndexPointer`: `Gl::index_pointer`.
+    unsafe fn glIndexPointer(type_: GLenum, stride: GLsizei, ptr: *const c_void) {
+        with_gl(|gl| gl.index_pointer(type_, stride, pointer(ptr)))
+    }
+}
+
+entry! {
+    /// `glTexCoordPointer`: `Gl::tex_coord_pointer`.
+    unsafe fn glTexCoordPointer(size: GLint, type_: GLenum, stride: GLsizei, ptr: *const c_void) {
+        with_gl(|gl| gl.tex_coord_pointer(size, type_, stride, pointer(ptr)))
+    }
+}
+
+entry! {
+    /// `glEdgeFlagPointer`: `Gl::edge_flag_pointer`.
+    unsafe fn glEdgeFlagPointer(stride: GLsizei, ptr: *const c_void) {
+        with_gl(|gl| gl.edge_flag_pointer(stride, pointer(ptr)))
+    }
+}
+
+entry! {
+    /// `glInterleavedArrays`: `Gl::interleaved_arrays`.
+    unsafe fn glInterleavedArrays(format: GLenum, stride: GLsizei, ptr: *const c_void) {
+        with_gl(|gl| gl.interleaved_arrays(format, stride, pointer(ptr)))
+    }
+}
+
+forward! {
+    glEnableClientState(array: GLenum) => enable_client_state;
+    glDisableClientState(array: GLenum) => disable_client_state;
+    glArrayElement(i: GLint) => array_element;
+    glDrawArrays(mode: GLenum, first: GLint, count: GLsizei) => draw_arrays;
+    glEdgeFlag(flag: GLboolean) => edge_flag;
+}
+
+vector! {
+    glEdgeFlagv(GLboolean; 1) => edge_flagv;
+}
+
+entry! {
+    /// `glDrawElements`: `Gl::draw_elements` over the `count` indices at `indices` (read now).
+    unsafe fn glDrawElements(mode: GLenum, count: GLsizei, type_: GLenum, indices: *const c_void) {
+        let size = match type_ {
+            GL_UNSIGNED_BYTE => Some(1usize),
+            GL_UNSIGNED_SHORT => Some(2),
+            GL_UNSIGNED_INT => Some(4),
+            _ => None,
+        };
+        let len = size.zip(usize::try_from(count).ok()).and_then(|(s, n)| s.checked_mul(n));
+        with_gl(|gl| gl.draw_elements(mode, count, type_, unsafe { bytes(indices, len) }))
+    }
+}
+
+entry! {
+    /// `glGetPointerv`: an array's pointer as it was given, or the feedback or selection
+    /// buffer's; nothing is written when GL raises an error.
+    unsafe fn glGetPointerv(pname: GLenum, params: *mut *mut c_void) {
+        with_gl(|gl| {
+            let known = matches!(
+                pname,
+                GL_VERTEX_ARRAY_POINTER
+                    | GL_NORMAL_ARRAY_POINTER
+                    | GL_COLOR_ARRAY_POINTER
+                    | GL_INDEX_ARRAY_POINTER
+                    | GL_TEXTURE_COORD_ARRAY_POINTER
+                    | GL_EDGE_FLAG_ARRAY_POINTER
+                    | GL_FEEDBACK_BUFFER_POINTER
+                    | GL_SELECTION_BUFFER_POINTER
+            ) && !gl.inside_begin_end();
+            let p = gl.get_pointerv(pname);
+            let value = match pname {
+                GL_FEEDBACK_BUFFER_POINTER => super::feedback::feedback_pointer().cast(),
+                GL_SELECTION_BUFFER_POINTER => super::select::select_pointer().cast(),
+                _ => p.as_ref().map_or(std::ptr::null_mut(), address),
+            };
+            if known && !params.is_null() {
+                // SAFETY: glGetPointerv's contract: `params` addresses one pointer.
+                unsafe { params.write(value) };
+            }
+        })
+    }
+}

@@ -1,0 +1,713 @@
+//! Vertex arrays (GL 1.1 §2.8; Mesa 22.3 `main/varray.c`, `vbo/vbo_save_api.c`): the six
+//! pointers, `glEnableClientState`, `glArrayElement`, `glDrawArrays`, `glDrawElements`,
+//! `glInterleavedArrays`, `glGetPointerv`, and the vertex-array group of the client attribute
+//! stack.
+//!
+//! GL reads the arrays when it draws: the pointers keep a [`ClientPointer`] (shared client
+//! memory, see [`super::client_memory`]), and each draw call copies the elements it needs.
+//! `glArrayElement(i)` is the immediate-mode calls of element `i` (edge flag, texture
+//! coordinate, colour, normal, vertex, in the spec's order); `glDrawArrays` and
+//! `glDrawElements` are `glBegin`, those elements and `glEnd`. So a display list compiles them
+//! as the vertices they read (§5.4), through the gates of the calls they make; the pointer,
+//! client-state and `glInterleavedArrays` calls are not compiled, they run at once.
+//!
+//! Mesa's rules, measured (`tests/reference/calls/cases/arrays.calls`):
+//! - a pointer call checks the stride (negative: `GL_INVALID_VALUE`, but the call goes on and
+//!   stores it), then the type (`GL_INVALID_ENUM`), then the size (`GL_INVALID_VALUE`);
+//! - `glDrawArrays` checks the count, then the mode; `glDrawElements` the count, the mode, the
+//!   type. In a list these errors are compiled and raised when the list runs;
+//! - `glDrawArrays` leaves the current colour, normal, texture coordinate and edge flag as
+//!   they were (Mesa's vbo draws without touching them); `glArrayElement` sets them;
+//! - without the vertex array, `glDrawArrays` and `glDrawElements` draw each element at
+//!   (0, 0, 0, 1) (Mesa's current position), while `glArrayElement` issues no vertex;
+//! - colour components of a signed type become c / (2ᵇ⁻¹ − 1) (Mesa's vertex fetch), normal
+//!   components (2c + 1) / (2ᵇ − 1), as the immediate calls convert them.
+//!
+//! One difference: where an element lies outside the memory the array was given (a Rust
+//! array too short, a negative first index or stride, a NULL pointer), gleval sets
+//! `GL_INVALID_VALUE` and draws nothing, where Mesa reads whatever lies there.
+
+use super::client_memory::{to_bytes, ArrayElement, ClientPointer};
+use super::consts::*;
+use super::lists::ListCommand;
+use super::types::*;
+use super::variants::GlComponent;
+use super::Gl;
+
+/// Which array, as an index into [`VertexArrays::arrays`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Which {
+    Vertex,
+    Normal,
+    Color,
+    Index,
+    TexCoord,
+    EdgeFlag,
+}
+
+impl Which {
+    const ALL: [Which; 6] =
+        [Which::Vertex, Which::Normal, Which::Color, Which::Index, Which::TexCoord, Which::EdgeFlag];
+
+    fn of_capability(cap: GLenum) -> Option<Which> {
+        Self::ALL.into_iter().find(|w| w.capability() == cap)
+    }
+
+    fn capability(self) -> GLenum {
+        match self {
+            Which::Vertex => GL_VERTEX_ARRAY,
+            Which::Normal => GL_NORMAL_ARRAY,
+            Which::Color => GL_COLOR_ARRAY,
+            Which::Index => GL_INDEX_ARRAY,
+            Which::TexCoord => GL_TEXTURE_COORD_ARRAY,
+            Which::EdgeFlag => GL_EDGE_FLAG_ARRAY,
+        }
+    }
+
+    fn pointer_name(self) -> GLenum {
+        match self {
+            Which::Vertex => GL_VERTEX_ARRAY_POINTER,
+            Which::Normal => GL_NORMAL_ARRAY_POINTER,
+            Which::Color => GL_COLOR_ARRAY_POINTER,
+            Which::Index => GL_INDEX_ARRAY_POINTER,
+            Which::TexCoord => GL_TEXTURE_COORD_ARRAY_POINTER,
+            Which::EdgeFlag => GL_EDGE_FLAG_ARRAY_POINTER,
+        }
+    }
+
+    /// The types GL 1.1 (and Mesa's compatibility profile) accepts for the array.
+    fn accepts_type(self, type_: GLenum) -> bool {
+        let types: &[GLenum] = match self {
+            Which::Vertex | Which::TexCoord => &[GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE],
+            Which::Normal => &[GL_BYTE, GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE],
+            Which::Color => {
+                &[GL_BYTE, GL_UNSIGNED_BYTE, GL_SHORT, GL_UNSIGNED_SHORT, GL_INT, GL_UNSIGNED_INT, GL_FLOAT, GL_DOUBLE]
+            }
+            Which::Index => &[GL_UNSIGNED_BYTE, GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE],
+            Which::EdgeFlag => &[GL_UNSIGNED_BYTE],
+        };
+        types.contains(&type_)
+    }
+
+    /// The component counts the array accepts.
+    fn accepts_size(self, size: GLint) -> bool {
+        match self {
+            Which::Vertex => (2..=4).contains(&size),
+            Which::TexCoord => (1..=4).contains(&size),
+            Which::Color => (3..=4).contains(&size),
+            Which::Normal => size == 3,
+            Which::Index | Which::EdgeFlag => size == 1,
+        }
+    }
+}
+
+/// One array's state (GL 1.1 table 6.6).
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct ArrayState {
+    enabled: bool,
+    size: GLint,
+    type_: GLenum,
+    stride: GLsizei,
+    pointer: Option<ClientPointer>,
+}
+
+impl ArrayState {
+    fn new(size: GLint, type_: GLenum) -> Self {
+        Self { enabled: false, size, type_, stride: 0, pointer: None }
+    }
+
+    /// Bytes of one element.
+    fn element_size(&self) -> usize {
+        type_size(self.type_) * self.size.max(0) as usize
+    }
+
+    /// Bytes from one element to the next (the element size for stride 0).
+    fn step(&self) -> isize {
+        if self.stride == 0 {
+            self.element_size() as isize
+        } else {
+            self.stride as isize
+        }
+    }
+
+    /// The components of element `i`, converted by `convert`; `None` when they cannot be read.
+    fn fetch(&self, i: i64, convert: fn(GLenum, &[u8]) -> f32) -> Option<[f32; 4]> {
+        let pointer = self.pointer.as_ref()?;
+        let size = type_size(self.type_);
+        let mut bytes = [0u8; 32];
+        let element = &mut bytes[..self.element_size()];
+        let offset = isize::try_from(i).ok()?.checked_mul(self.step())?;
+        if !pointer.read(offset, element) {
+            return None;
+        }
+        let mut out = [0.0, 0.0, 0.0, 1.0];
+        for (o, chunk) in out.iter_mut().zip(element.chunks_exact(size)) {
+            *o = convert(self.type_, chunk);
+        }
+        Some(out)
+    }
+}
+
+/// `sizeof` a GL data type (1 for a type GL does not know, which no array holds).
+fn type_size(type_: GLenum) -> usize {
+    match type_ {
+        GL_SHORT | GL_UNSIGNED_SHORT => 2,
+        GL_INT | GL_UNSIGNED_INT | GL_FLOAT => 4,
+        GL_DOUBLE => 8,
+        _ => 1,
+    }
+}
+
+/// A component read as it is (positions, texture coordinates, indices).
+fn plain(type_: GLenum, b: &[u8]) -> f32 {
+    match type_ {
+        GL_BYTE => f32::from(i8::take(b)),
+        GL_UNSIGNED_BYTE => f32::from(u8::take(b)),
+        GL_SHORT => f32::from(i16::take(b)),
+        GL_UNSIGNED_SHORT => f32::from(u16::take(b)),
+        GL_INT => i32::take(b) as f32,
+        GL_UNSIGNED_INT => u32::take(b) as f32,
+        GL_DOUBLE => f64::take(b) as f32,
+        _ => f32::take(b),
+    }
+}
+
+/// A normal component: integers as the immediate `glNormal3*` forms convert them.
+fn normal(type_: GLenum, b: &[u8]) -> f32 {
+    match type_ {
+        GL_BYTE => i8::take(b).normalized(),
+        GL_SHORT => i16::take(b).normalized(),
+        GL_INT => i32::take(b).normalized(),
+        _ => plain(type_, b),
+    }
+}
+
+/// A colour component: unsigned integers to c / (2ᵇ − 1), signed ones to c / (2ᵇ⁻¹ − 1)
+/// (at least −1), as Mesa's vertex fetch converts them.
+fn color(type_: GLenum, b: &[u8]) -> f32 {
+    match type_ {
+        GL_BYTE => (f32::from(i8::take(b)) / 127.0).max(-1.0),
+        GL_SHORT => (f32::from(i16::take(b)) / 32767.0).max(-1.0),
+        GL_INT => (i32::take(b) as f32 / 2_147_483_647.0).max(-1.0),
+        GL_UNSIGNED_BYTE => u8::take(b).normalized(),
+        GL_UNSIGNED_SHORT => u16::take(b).normalized(),
+        GL_UNSIGNED_INT => u32::take(b).normalized(),
+        _ => plain(type_, b),
+    }
+}
+
+/// What one array element issues.
+#[derive(Clone, Copy, Debug, Default)]
+struct Element {
+    edge_flag: Option<bool>,
+    tex_coord: Option<[f32; 4]>,
+    color: Option<[f32; 4]>,
+    normal: Option<[f32; 4]>,
+    vertex: Option<[f32; 4]>,
+}
+
+/// The client's vertex arrays, the current edge flag, and what `glPushClientAttrib` saved of
+/// them.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct VertexArrays {
+    arrays: [ArrayState; 6],
+    /// `glEdgeFlag`'s current value (Mesa keeps it as a float and reports `== 1.0`).
+    pub edge_flag: bool,
+    /// One entry per `glPushClientAttrib`: the arrays when `GL_CLIENT_VERTEX_ARRAY_BIT` was set.
+    saved: Vec<Option<Box<[ArrayState; 6]>>>,
+}
+
+impl Default for VertexArrays {
+    fn default() -> Self {
+        Self {
+            arrays: [
+                ArrayState::new(4, GL_FLOAT),
+                ArrayState::new(3, GL_FLOAT),
+                ArrayState::new(4, GL_FLOAT),
+                ArrayState::new(1, GL_FLOAT),
+                ArrayState::new(4, GL_FLOAT),
+                ArrayState::new(1, GL_UNSIGNED_BYTE),
+            ],
+            edge_flag: true,
+            saved: Vec::new(),
+        }
+    }
+}
+
+impl VertexArrays {
+    fn get(&self, which: Which) -> &ArrayState {
+        &self.arrays[which as usize]
+    }
+
+    /// Whether `cap` is an array and enabled; `None` when it is no array.
+    pub(crate) fn is_enabled(&self, cap: GLenum) -> Option<bool> {
+        Which::of_capability(cap).map(|w| self.get(w).enabled)
+    }
+
+    /// Enables or disables an array; false when `cap` is no array.
+    pub(crate) fn set_enabled(&mut self, cap: GLenum, on: bool) -> bool {
+        let Some(w) = Which::of_capability(cap) else { return false };
+        self.arrays[w as usize].enabled = on;
+        true
+    }
+
+    /// Element `i` of the enabled arrays; `None` when an enabled array cannot be read there.
+    fn element(&self, i: i64) -> Option<Element> {
+        let on = |w: Which| self.get(w).enabled.then_some(self.get(w));
+        let mut e = Element::default();
+        if let Some(a) = on(Which::EdgeFlag) {
+            e.edge_flag = Some(a.fetch(i, plain)?[0] == 1.0);
+        }
+        if let Some(a) = on(Which::TexCoord) {
+            e.tex_coord = Some(a.fetch(i, plain)?);
+        }
+        if let Some(a) = on(Which::Color) {
+            e.color = Some(a.fetch(i, color)?);
+        }
+        if let Some(a) = on(Which::Index) {
+            a.fetch(i, plain)?; // read (as GL does); colour index has no effect in RGBA
+        }
+        if let Some(a) = on(Which::Normal) {
+            e.normal = Some(a.fetch(i, normal)?);
+        }
+        if let Some(a) = on(Which::Vertex) {
+            e.vertex = Some(a.fetch(i, plain)?);
+        }
+        Some(e)
+    }
+}
+
+/// What a pointer call accepts for its memory: a [`ClientArray`](super::ClientArray) (`&v`), a
+/// [`ClientPointer`] (`&v[3]` is `v.at(3)`), or `None` (C's NULL).
+pub trait PointerArg {
+    /// The pointer, `None` for NULL.
+    fn into_pointer(self) -> Option<ClientPointer>;
+}
+
+impl PointerArg for &super::ClientArray {
+    fn into_pointer(self) -> Option<ClientPointer> {
+        Some(self.into())
+    }
+}
+
+impl PointerArg for ClientPointer {
+    fn into_pointer(self) -> Option<ClientPointer> {
+        Some(self)
+    }
+}
+
+impl PointerArg for &ClientPointer {
+    fn into_pointer(self) -> Option<ClientPointer> {
+        Some(self.clone())
+    }
+}
+
+impl PointerArg for Option<ClientPointer> {
+    fn into_pointer(self) -> Option<ClientPointer> {
+        self
+    }
+}
+
+/// `glInterleavedArrays`' formats (GL 1.1 table 2.5): texture coordinate size, colour (size,
+/// type), normal, vertex size, and the default stride in bytes.
+struct Layout {
+    tex: GLint,
+    color: Option<(GLint, GLenum)>,
+    normal: bool,
+    vertex: GLint,
+}
+
+fn interleaved_layout(format: GLenum) -> Option<Layout> {
+    let l = |tex, color, normal, vertex| Some(Layout { tex, color, normal, vertex });
+    let (ub, f) = (GL_UNSIGNED_BYTE, GL_FLOAT);
+    match format {
+        GL_V2F => l(0, None, false, 2),
+        GL_V3F => l(0, None, false, 3),
+        GL_C4UB_V2F => l(0, Some((4, ub)), false, 2),
+        GL_C4UB_V3F => l(0, Some((4, ub)), false, 3),
+        GL_C3F_V3F => l(0, Some((3, f)), false, 3),
+        GL_N3F_V3F => l(0, None, true, 3),
+        GL_C4F_N3F_V3F => l(0, Some((4, f)), true, 3),
+        GL_T2F_V3F => l(2, None, false, 3),
+        GL_T4F_V4F => l(4, None, false, 4),
+        GL_T2F_C4UB_V3F => l(2, Some((4, ub)), false, 3),
+        GL_T2F_C3F_V3F => l(2, Some((3, f)), false, 3),
+        GL_T2F_N3F_V3F => l(2, None, true, 3),
+        GL_T2F_C4F_N3F_V3F => l(2, Some((4, f)), true, 3),
+        GL_T4F_C4F_N3F_V4F => l(4, Some((4, f)), true, 4),
+        _ => None,
+    }
+}
+
+impl Gl {
+    /// `glVertexPointer(size, type, stride, pointer)`: sizes 2–4 of `GL_SHORT`, `GL_INT`,
+    /// `GL_FLOAT` or `GL_DOUBLE`. Errors in Mesa's order (module docs). Not compiled.
+    pub fn vertex_pointer(&mut self, size: GLint, type_: GLenum, stride: GLsizei, pointer: impl PointerArg) {
+        self.array_pointer(Which::Vertex, size, type_, stride, pointer.into_pointer());
+    }
+
+    /// `glNormalPointer(type, stride, pointer)`: three of `GL_BYTE`, `GL_SHORT`, `GL_INT`,
+    /// `GL_FLOAT` or `GL_DOUBLE`.
+    pub fn normal_pointer(&mut self, type_: GLenum, stride: GLsizei, pointer: impl PointerArg) {
+        self.array_pointer(Which::Normal, 3, type_, stride, pointer.into_pointer());
+    }
+
+    /// `glColorPointer(size, type, stride, pointer)`: 3 or 4 of any integer type, `GL_FLOAT`
+    /// or `GL_DOUBLE`.
+    pub fn color_pointer(&mut self, size: GLint, type_: GLenum, stride: GLsizei, pointer: impl PointerArg) {
+        self.array_pointer(Which::Color, size, type_, stride, pointer.into_pointer());
+    }
+
+    /// `glIndexPointer(type, stride, pointer)`: `GL_UNSIGNED_BYTE`, `GL_SHORT`, `GL_INT`,
+    /// `GL_FLOAT` or `GL_DOUBLE` (kept as state: colour indices do not draw in RGBA).
+    pub fn index_pointer(&mut self, type_: GLenum, stride: GLsizei, pointer: impl PointerArg) {
+        self.array_pointer(Which::Index, 1, type_, stride, pointer.into_pointer());
+    }
+
+    /// `glTexCoordPointer(size, type, stride, pointer)`: sizes 1–4 of `GL_SHORT`, `GL_INT`,
+    /// `GL_FLOAT` or `GL_DOUBLE`.
+    pub fn tex_coord_pointer(&mut self, size: GLint, type_: GLenum, stride: GLsizei, pointer: impl PointerArg) {
+        self.array_pointer(Which::TexCoord, size, type_, stride, pointer.into_pointer());
+    }
+
+    /// `glEdgeFlagPointer(stride, pointer)`: one `GLboolean` per element.
+    pub fn edge_flag_pointer(&mut self, stride: GLsizei, pointer: impl PointerArg) {
+        self.array_pointer(Which::EdgeFlag, 1, GL_UNSIGNED_BYTE, stride, pointer.into_pointer());
+    }
+
+    fn array_pointer(
+        &mut self,
+        which: Which,
+        size: GLint,
+        type_: GLenum,
+        stride: GLsizei,
+        pointer: Option<ClientPointer>,
+    ) {
+        if self.reject_inside_begin_end() {
+            return;
+        }
+        // Mesa's validate_array reports a negative stride and goes on.
+        if stride < 0 {
+            self.set_error(GL_INVALID_VALUE);
+        }
+        if !which.accepts_type(type_) {
+            return self.set_error(GL_INVALID_ENUM);
+        }
+        if !which.accepts_size(size) {
+            return self.set_error(GL_INVALID_VALUE);
+        }
+        let array = &mut self.arrays.arrays[which as usize];
+        (array.size, array.type_, array.stride, array.pointer) = (size, type_, stride, pointer);
+    }
+
+    /// `glEnableClientState(array)`: `GL_VERTEX_ARRAY` … `GL_EDGE_FLAG_ARRAY`; another name →
+    /// `GL_INVALID_ENUM`. Not compiled. (`glEnable` takes the same names, as in Mesa.)
+    pub fn enable_client_state(&mut self, array: GLenum) {
+        self.client_state(array, true);
+    }
+
+    /// `glDisableClientState(array)`.
+    pub fn disable_client_state(&mut self, array: GLenum) {
+        self.client_state(array, false);
+    }
+
+    fn client_state(&mut self, array: GLenum, on: bool) {
+        if self.reject_inside_begin_end() {
+            return;
+        }
+        if !self.arrays.set_enabled(array, on) {
+            self.set_error(GL_INVALID_ENUM);
+        }
+    }
+
+    /// `glEdgeFlag(flag)`: whether the following polygon vertices start boundary edges (GL 1.1
+    /// §2.6.2); only 1 (`GL_TRUE`) counts as true, as in Mesa, which keeps the flag as a float.
+    pub fn edge_flag(&mut self, flag: GLboolean) {
+        if self.compiled(|| ListCommand::EdgeFlag(flag)) {
+            return;
+        }
+        self.arrays.edge_flag = flag == GL_TRUE;
+    }
+
+    /// The current edge flag, which each vertex issued takes.
+    pub(crate) fn edge_flag_value(&self) -> bool {
+        self.arrays.edge_flag
+    }
+
+    /// `glEdgeFlagv(flag)`: `flag` needs one value.
+    pub fn edge_flagv(&mut self, flag: &[GLboolean]) {
+        if let Some([f]) = self.first::<1, GLboolean>(flag) {
+            self.edge_flag(f);
+        }
+    }
+
+    /// `glArrayElement(i)`: element `i` of every enabled array, as the immediate calls (allowed
+    /// inside `begin`/`end`; compiled into lists as those calls).
+    pub fn array_element(&mut self, i: GLint) {
+        match self.arrays.element(i64::from(i)) {
+            Some(e) => self.issue(&e, false),
+            None => self.set_error(GL_INVALID_VALUE),
+        }
+    }
+
+    /// The immediate calls of one element; `position_fallback`: without the vertex array, a
+    /// vertex at (0, 0, 0, 1) (what Mesa's draws do).
+    fn issue(&mut self, e: &Element, position_fallback: bool) {
+        if let Some(flag) = e.edge_flag {
+            self.edge_flag(GLboolean::from(flag));
+        }
+        if let Some([s, t, r, q]) = e.tex_coord {
+            self.tex_coord4f(s, t, r, q);
+        }
+        if let Some([r, g, b, a]) = e.color {
+            self.color4f(r, g, b, a);
+        }
+        if let Some([x, y, z, _]) = e.normal {
+            self.normal3f(x, y, z);
+        }
+        match e.vertex {
+            Some([x, y, z, w]) => self.vertex4f(x, y, z, w),
+            None if position_fallback => self.vertex4f(0.0, 0.0, 0.0, 1.0),
+            None => {}
+        }
+    }
+
+    /// A draw call's error: raised now, and compiled into the list being made so that it is
+    /// raised again when the list runs (Mesa's `_mesa_compile_error`).
+    fn draw_error(&mut self, code: GLenum) {
+        if !self.compiled(|| ListCommand::Error(code)) {
+            self.set_error(code);
+        }
+    }
+
+    /// `glDrawArrays(mode, first, count)`: `glBegin(mode)`, elements `first .. first + count`,
+    /// `glEnd`, leaving the current values as they were. Errors: inside `begin`/`end`
+    /// (`GL_INVALID_OPERATION`), `count` < 0 (`GL_INVALID_VALUE`), an unknown mode
+    /// (`GL_INVALID_ENUM`); an element outside the arrays' memory (`GL_INVALID_VALUE`).
+    pub fn draw_arrays(&mut self, mode: GLenum, first: GLint, count: GLsizei) {
+        if self.reject_inside_begin_end() {
+            return;
+        }
+        if count < 0 {
+            return self.draw_error(GL_INVALID_VALUE);
+        }
+        if mode > GL_POLYGON {
+            return self.draw_error(GL_INVALID_ENUM);
+        }
+        let first = i64::from(first);
+        self.draw_indexed(mode, (first..first + i64::from(count)).collect());
+    }
+
+    /// `glDrawElements(mode, count, type, indices)`: as [`Gl::draw_arrays`] over the `count`
+    /// indices read from `indices` as `type` says (`GL_UNSIGNED_BYTE`, `GL_UNSIGNED_SHORT` or
+    /// `GL_UNSIGNED_INT`, in native byte order: any slice type holds them as C's array does).
+    /// Errors: `count` < 0 (`GL_INVALID_VALUE`), then the mode and the type
+    /// (`GL_INVALID_ENUM`), then `indices` shorter than `count` indices (`GL_INVALID_VALUE`).
+    pub fn draw_elements<T: ArrayElement>(&mut self, mode: GLenum, count: GLsizei, type_: GLenum, indices: &[T]) {
+        if self.reject_inside_begin_end() {
+            return;
+        }
+        if count < 0 {
+            return self.draw_error(GL_INVALID_VALUE);
+        }
+        if mode > GL_POLYGON || !matches!(type_, GL_UNSIGNED_BYTE | GL_UNSIGNED_SHORT | GL_UNSIGNED_INT) {
+            return self.draw_error(GL_INVALID_ENUM);
+        }
+        let size = type_size(type_);
+        let bytes = to_bytes(indices);
+        let Some(bytes) = bytes.get(..count as usize * size) else { return self.set_error(GL_INVALID_VALUE) };
+        let index = |b: &[u8]| match type_ {
+            GL_UNSIGNED_BYTE => i64::from(b[0]),
+            GL_UNSIGNED_SHORT => i64::from(u16::take(b)),
+            _ => i64::from(u32::take(b)),
+        };
+        self.draw_indexed(mode, bytes.chunks_exact(size).map(index).collect());
+    }
+
+    /// Begin, the elements, end; the current values are restored after.
+    fn draw_indexed(&mut self, mode: GLenum, indices: Vec<i64>) {
+        let elements: Option<Vec<Element>> = indices.into_iter().map(|i| self.arrays.element(i)).collect();
+        let Some(elements) = elements else { return self.set_error(GL_INVALID_VALUE) };
+        let (current, edge_flag) = (self.current, self.arrays.edge_flag);
+        self.begin(mode);
+        for e in &elements {
+            self.issue(e, true);
+        }
+        self.end();
+        (self.current, self.arrays.edge_flag) = (current, edge_flag);
+    }
+
+    /// `glInterleavedArrays(format, stride, pointer)`: sets the vertex, and as the format says
+    /// the colour, normal and texture-coordinate arrays into one block of memory, enables them,
+    /// disables the others (GL 1.1 §2.8). Errors: a negative stride (`GL_INVALID_VALUE`), then
+    /// an unknown format (`GL_INVALID_ENUM`). Not compiled.
+    pub fn interleaved_arrays(&mut self, format: GLenum, stride: GLsizei, pointer: impl PointerArg) {
+        if self.reject_inside_begin_end() {
+            return;
+        }
+        if stride < 0 {
+            return self.set_error(GL_INVALID_VALUE);
+        }
+        let Some(layout) = interleaved_layout(format) else { return self.set_error(GL_INVALID_ENUM) };
+        let pointer = pointer.into_pointer();
+        let color_bytes = layout.color.map_or(0, |(n, t)| n as usize * type_size(t));
+        let (pc, pn) = (layout.tex as usize * 4, layout.tex as usize * 4 + color_bytes);
+        let pv = pn + if layout.normal { 12 } else { 0 };
+        let default_stride = pv + layout.vertex as usize * 4;
+        let stride = if stride == 0 { default_stride as GLsizei } else { stride };
+        let at = |offset: usize| pointer.as_ref().map(|p| ClientPointer::new(p.memory().clone(), p.offset() + offset));
+        let set = |a: &mut ArrayState, on: bool, size: GLint, type_: GLenum, offset: usize| {
+            a.enabled = on;
+            if on {
+                (a.size, a.type_, a.stride, a.pointer) = (size, type_, stride, at(offset));
+            }
+        };
+        let [vertex, normal, color, index, tex, edge] = &mut self.arrays.arrays;
+        edge.enabled = false;
+        index.enabled = false;
+        set(tex, layout.tex > 0, layout.tex, GL_FLOAT, 0);
+        let (csize, ctype) = layout.color.unwrap_or((4, GL_FLOAT));
+        set(color, layout.color.is_some(), csize, ctype, pc);
+        set(normal, layout.normal, 3, GL_FLOAT, pn);
+        set(vertex, true, layout.vertex, GL_FLOAT, pv);
+    }
+
+    /// `glGetPointerv(pname)`: an array's pointer (`None` for NULL). `GL_FEEDBACK_BUFFER_POINTER`
+    /// and `GL_SELECTION_BUFFER_POINTER` are known names with `None` here (the buffers are the
+    /// context's; the C ABI answers them with the caller's). Another name → `GL_INVALID_ENUM`;
+    /// inside `begin`/`end` → `GL_INVALID_OPERATION`.
+    pub fn get_pointerv(&mut self, pname: GLenum) -> Option<ClientPointer> {
+        if self.reject_inside_begin_end() {
+            return None;
+        }
+        if let Some(w) = Which::ALL.into_iter().find(|w| w.pointer_name() == pname) {
+            return self.arrays.get(w).pointer.clone();
+        }
+        if !matches!(pname, GL_FEEDBACK_BUFFER_POINTER | GL_SELECTION_BUFFER_POINTER) {
+            self.set_error(GL_INVALID_ENUM);
+        }
+        None
+    }
+
+    /// `glPushClientAttrib`'s vertex-array half: saves the arrays when `mask` asks.
+    pub(crate) fn push_client_arrays(&mut self, mask: GLbitfield) {
+        let saved = (mask & GL_CLIENT_VERTEX_ARRAY_BIT != 0).then(|| Box::new(self.arrays.arrays.clone()));
+        self.arrays.saved.push(saved);
+    }
+
+    /// `glPopClientAttrib`'s vertex-array half.
+    pub(crate) fn pop_client_arrays(&mut self) {
+        if let Some(Some(arrays)) = self.arrays.saved.pop() {
+            self.arrays.arrays = *arrays;
+        }
+    }
+
+    /// The arrays' `glGet` answers (GL 1.1 table 6.6), the edge flag and the client stack.
+    pub(crate) fn arrays_query(&self, pname: GLenum, out: &mut [f64]) -> Option<usize> {
+        let a = &self.arrays;
+        let value = match pname {
+            GL_EDGE_FLAG => f64::from(u8::from(a.edge_flag)),
+            GL_CLIENT_ATTRIB_STACK_DEPTH => a.saved.len() as f64,
+            GL_MAX_CLIENT_ATTRIB_STACK_DEPTH => super::pixels::MAX_CLIENT_ATTRIB_STACK_DEPTH as f64,
+            _ => {
+                let (which, field) = array_field(pname)?;
+                let s = a.get(which);
+                match field {
+                    Field::Enabled => f64::from(u8::from(s.enabled)),
+                    Field::Size => f64::from(s.size),
+                    Field::Type => f64::from(s.type_),
+                    Field::Stride => f64::from(s.stride),
+                }
+            }
+        };
+        *out.first_mut()? = value;
+        Some(1)
+    }
+}
+
+enum Field {
+    Enabled,
+    Size,
+    Type,
+    Stride,
+}
+
+/// The array and field a `glGet` name of table 6.6 asks for.
+fn array_field(pname: GLenum) -> Option<(Which, Field)> {
+    use Field::*;
+    use Which::*;
+    Some(match pname {
+        GL_VERTEX_ARRAY => (Vertex, Enabled),
+        GL_VERTEX_ARRAY_SIZE => (Vertex, Size),
+        GL_VERTEX_ARRAY_TYPE => (Vertex, Type),
+        GL_VERTEX_ARRAY_STRIDE => (Vertex, Stride),
+        GL_NORMAL_ARRAY => (Normal, Enabled),
+        GL_NORMAL_ARRAY_TYPE => (Normal, Type),
+        GL_NORMAL_ARRAY_STRIDE => (Normal, Stride),
+        GL_COLOR_ARRAY => (Color, Enabled),
+        GL_COLOR_ARRAY_SIZE => (Color, Size),
+        GL_COLOR_ARRAY_TYPE => (Color, Type),
+        GL_COLOR_ARRAY_STRIDE => (Color, Stride),
+        GL_INDEX_ARRAY => (Index, Enabled),
+        GL_INDEX_ARRAY_TYPE => (Index, Type),
+        GL_INDEX_ARRAY_STRIDE => (Index, Stride),
+        GL_TEXTURE_COORD_ARRAY => (TexCoord, Enabled),
+        GL_TEXTURE_COORD_ARRAY_SIZE => (TexCoord, Size),
+        GL_TEXTURE_COORD_ARRAY_TYPE => (TexCoord, Type),
+        GL_TEXTURE_COORD_ARRAY_STRIDE => (TexCoord, Stride),
+        GL_EDGE_FLAG_ARRAY => (EdgeFlag, Enabled),
+        GL_EDGE_FLAG_ARRAY_STRIDE => (EdgeFlag, Stride),
+        _ => return None,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::ClientArray;
+    use super::*;
+
+    #[test]
+    fn draw_arrays_reads_the_array_when_it_draws() {
+        let mut gl = Gl::new(4, 4);
+        let v = ClientArray::new(&[0.0f32, 0.0, 1.0, 1.0]);
+        gl.vertex_pointer(2, GL_FLOAT, 0, &v);
+        gl.enable_client_state(GL_VERTEX_ARRAY);
+        v.write(2, &[0.5f32, 0.25]);
+        gl.draw_arrays(GL_LINES, 0, 2);
+        let frame = gl.frame();
+        assert_eq!(frame.primitives[0].mode, GL_LINES);
+        assert_eq!(frame.vertices[1].position, [0.5, 0.25, 0.0, 1.0]);
+        assert_eq!(gl.get_error(), GL_NO_ERROR);
+    }
+
+    #[test]
+    fn reading_past_the_array_is_an_error_not_a_panic() {
+        let mut gl = Gl::new(4, 4);
+        let v = ClientArray::new(&[0.0f32; 5]);
+        gl.vertex_pointer(3, GL_FLOAT, 0, &v);
+        gl.enable_client_state(GL_VERTEX_ARRAY);
+        gl.draw_arrays(GL_POINTS, 0, 2);
+        assert_eq!(gl.get_error(), GL_INVALID_VALUE);
+        gl.draw_elements(GL_POINTS, 3, GL_UNSIGNED_BYTE, &[0u8, 0]);
+        assert_eq!(gl.get_error(), GL_INVALID_VALUE);
+        gl.draw_arrays(GL_POINTS, -1, 1);
+        assert_eq!(gl.get_error(), GL_INVALID_VALUE);
+        assert!(gl.frame().vertices.is_empty());
+    }
+
+    #[test]
+    fn interleaved_sets_every_array_into_one_block() {
+        let mut gl = Gl::new(4, 4);
+        let mut block = vec![255u8, 0, 0, 255];
+        block.extend(to_bytes(&[0.5f32, 0.25, 0.0]));
+        let data = ClientArray::from_bytes(block);
+        gl.interleaved_arrays(GL_C4UB_V3F, 0, &data);
+        gl.draw_arrays(GL_POINTS, 0, 1);
+        let v = gl.frame().vertices[0];
+        assert_eq!((v.position, v.color), ([0.5, 0.25, 0.0, 1.0], [1.0, 0.0, 0.0, 1.0]));
+        let mut stride = [0];
+        gl.get_integerv(GL_VERTEX_ARRAY_STRIDE, &mut stride);
+        assert_eq!(stride[0], 16);
+        assert!(gl.get_pointerv(GL_COLOR_ARRAY_POINTER).is_some_and(|p| p.points_into(&data)));
+    }
+}
