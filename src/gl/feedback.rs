@@ -202,8 +202,8 @@ impl Gl {
                         self.feedback_primitive(&mut values, mode, state, &vertices);
                     }
                 }
-                // GL clears only in render mode.
-                Command::Clear { .. } => {}
+                // GL clears and copies only in render mode (a copy gives its token instead).
+                Command::Clear { .. } | Command::CopyPixels(_) => {}
             }
         }
         for (_, token, vertex) in tokens {

@@ -129,6 +129,8 @@ pub enum Command {
     Draw(usize),
     /// Draw mesh number `n` of [`Frame::meshes`].
     Mesh(usize),
+    /// Execute copy number `n` of [`Frame::pixel_copies`] (`glCopyPixels`).
+    CopyPixels(usize),
 }
 
 /// An immediate-mode call, in the order the program made it.
@@ -167,6 +169,8 @@ pub struct Frame {
     pub meshes: Vec<GridMesh>,
     /// Materials changed between `begin` and `end`, in order.
     pub material_changes: Vec<MaterialChange>,
+    /// The `glCopyPixels` calls, executed by the rasterisers where [`Command::CopyPixels`] says.
+    pub pixel_copies: Vec<super::PixelCopy>,
 }
 
 /// What a `glEvalMesh` grid draws.
@@ -276,16 +280,22 @@ impl Frame {
         self.commands.clear();
         self.meshes.clear();
         self.material_changes.clear();
+        self.pixel_copies.clear();
     }
 
     /// The frame with every mesh replaced by the primitives GL issues for it (deferred meshes
     /// evaluated on the CPU): what a test comparing against GL's primitive stream reads.
     #[must_use]
     pub fn expanded(&self) -> Frame {
-        let mut out = Frame { calls: self.calls.clone(), states: self.states.clone(), ..Frame::default() };
+        let mut out = Frame {
+            calls: self.calls.clone(),
+            states: self.states.clone(),
+            pixel_copies: self.pixel_copies.clone(),
+            ..Frame::default()
+        };
         for command in &self.commands {
             match *command {
-                Command::Clear { .. } => out.commands.push(*command),
+                Command::Clear { .. } | Command::CopyPixels(_) => out.commands.push(*command),
                 Command::Draw(i) => {
                     let p = self.primitives[i];
                     out.push_primitive(p.mode, p.state, self.vertices_of(&p).iter().copied());

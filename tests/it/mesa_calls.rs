@@ -7,6 +7,9 @@ use gleval::gl::MapTarget;
 use gleval::prelude::*;
 use std::path::{Path, PathBuf};
 
+#[path = "mesa_calls_pixels.rs"]
+mod pixels;
+
 fn calls_dir() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/reference/calls")
 }
@@ -315,6 +318,8 @@ impl Runner {
         let mut values: Vec<String> = Vec::new();
         // The feedback token a glBitmap or glDrawPixels writes if it succeeds.
         let mut raster_token = None;
+        // glCopyPixels calls executed by this line (directly or from a list) each write one.
+        let copies = self.gl.frame().pixel_copies.len();
         let gl = &mut self.gl;
         match cmd {
             "map1f" => {
@@ -472,6 +477,7 @@ impl Runner {
                 self.out.push(format!("{number} get_error err=0x{e:04x}"));
                 return;
             }
+            other if pixels::pixel_call(gl, other, &mut a, &mut values) => {}
             other => panic!("unknown command {other}"),
         }
         let err = if self.inside || self.deferred || cmd == "defer_errors" {
@@ -490,6 +496,9 @@ impl Runner {
             // Feedback mode reports the raster position instead of the pixels drawn.
             self.out.push(token);
             self.collected = self.gl.frame().expanded().primitives.len();
+        }
+        for _ in copies..self.gl.frame().pixel_copies.len() {
+            self.out.extend(raster_feedback(&mut self.gl, "copy_pixel"));
         }
         if cmd == "new_list" || cmd == "end_list" {
             // Mesa buffers what GL_COMPILE_AND_EXECUTE draws until the list ends (its vertex

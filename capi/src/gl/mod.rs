@@ -7,6 +7,7 @@ mod immediate;
 mod lighting;
 mod lists;
 mod matrix;
+mod pixel_transfer;
 mod pixels;
 mod raster_modes;
 mod read_pixels;

@@ -383,6 +383,8 @@ static void run_typed(void)
     t->fn(&v);
 }
 
+#include "interp_pixels.h"
+
 /* ---------------------------------------------------------------- calls */
 /* Executes one call; query values (if any) go into `vals`. */
 static void run_call(const char *c)
@@ -674,6 +676,8 @@ static void run_call(const char *c)
         glEnable(GL_TEXTURE_GEN_S);
         glEnable(GL_TEXTURE_GEN_T);
         glEnable(GL_TEXTURE_GEN_R);
+    } else if (run_pixel_call(c)) {
+        /* the pixel path's calls (interp_pixels.h) */
     } else {
         die("unknown call", c);
     }
