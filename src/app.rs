@@ -438,6 +438,8 @@ impl App {
     /// [`App::run`] with options parsed elsewhere (C's `glutInit` takes them out of the
     /// program's `argv`, which then no longer holds them).
     pub fn run_with(mut self, options: Options) {
+        // A colour-index window cannot be had on Mesa: freeglut's fatal error (`glut::display_mode`).
+        crate::glut::display_mode::exit_unless_possible(self.display_mode);
         if options.gpu {
             self.tessellator = Tessellator::Gpu;
         }

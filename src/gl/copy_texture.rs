@@ -331,7 +331,7 @@ mod tests {
         assert_eq!(gl.get_error(), GL_NO_ERROR);
         let level = level0(&mut gl, 2);
         assert_eq!(level.texels, [[255, 0, 0, 255], [0, 255, 0, 255], [0, 0, 255, 255], [255, 255, 255, 255]]);
-        gl.copy_tex_sub_image_2d(GL_TEXTURE_2D, 0, 1, 0, 1, 1, 2, 1);
+        gl.copy_tex_sub_image_2d(GL_TEXTURE_2D, 0, 1, 0, 1, 1, 1, 1);
         let level = level0(&mut gl, 2);
         assert_eq!(level.texels[1], [255, 255, 255, 255]);
         gl.copy_tex_image_1d(GL_TEXTURE_1D, 0, GL_RGBA, 1, 0, 3, 0);

@@ -10,6 +10,7 @@ mod glut_loop;
 mod gpu_parity;
 mod interactive_demo;
 mod mesa_calls;
+mod pixel_properties;
 mod properties;
 mod raster_images;
 mod raster_modes;

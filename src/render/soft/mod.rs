@@ -55,6 +55,7 @@ pub fn rasterize(list: &DrawList, width: u32, height: u32) -> Image {
 
 /// A colour and depth buffer that keeps what was drawn: frames drawn one after another land on
 /// top of each other, as they do in a GL context's framebuffer (an OSMesa buffer, say).
+#[derive(Clone)]
 pub struct Canvas {
     fb: Framebuffer,
 }
