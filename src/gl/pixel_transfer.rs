@@ -31,7 +31,7 @@ pub struct ColorTransfer {
     /// `GL_RED_BIAS` ... `GL_ALPHA_BIAS`.
     pub bias: [f32; 4],
     /// The R, G, B and A maps when `GL_MAP_COLOR` is on (an empty map leaves its component
-    /// as it is: see [`Gl::draw_color_transfer`]).
+    /// as it is: Mesa's draws map red and green only).
     pub maps: Option<[Vec<f32>; 4]>,
     /// How a component picks its map entry: `false`, the entry nearest c·(n − 1) (reads,
     /// Mesa `_mesa_map_rgba`); `true`, as Mesa's drawing fragment program samples its

@@ -2,8 +2,8 @@
 //! had. Mesa has no colour-index visuals (Mesa 22 under Xvfb offers RGBA GLX configs only), so
 //! freeglut's `glutCreateWindow` finds no config, prints its fatal error and exits with status
 //! 1, before any callback runs (measured: freeglut 3.4 on Mesa 22.3, `GLUT_INDEX | GLUT_SINGLE`
-//! and `GLUT_INDEX | GLUT_DOUBLE | GLUT_DEPTH`: "freeglut (./prog):  ERROR:  Internal error
-//! <FBConfig with necessary capabilities not found> in function fgOpenWindow", status 1). A
+//! and `GLUT_INDEX | GLUT_DOUBLE | GLUT_DEPTH`: `freeglut (./prog):  ERROR:  Internal error
+//! <FBConfig with necessary capabilities not found> in function fgOpenWindow`, status 1). A
 //! program asking for it gets the same here, from `App` and from the C ABI's
 //! `glutCreateWindow`.
 

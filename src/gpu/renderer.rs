@@ -109,24 +109,38 @@ impl Renderer {
             size: (target.width, target.height),
             format: COLOR_FORMAT,
         };
+        let (list, prepared, mut encoder, start, keep) = self.draw_copies(frame, &target, &attachments)?;
+        self.encode_list(&list, &list.ops[start..], frame, prepared.as_ref(), &mut encoder, &attachments, keep);
+        self.read_target(&target, encoder, depth)
+    }
+
+    /// Draws `frame` into the headless `target` up to its last `glCopyPixels`, each copy
+    /// reading the target as drawn so far and becoming a batch of points: the assembled list
+    /// with every copy so replaced, its prepared GPU meshes, the encoder for what follows, the
+    /// index of the first op not drawn yet, and whether the target already holds a picture.
+    #[allow(clippy::type_complexity)]
+    fn draw_copies(
+        &mut self,
+        frame: &Frame,
+        target: &Target,
+        attachments: &Attachments<'_>,
+    ) -> Result<(DrawList, Option<PreparedMeshes>, wgpu::CommandEncoder, usize, bool), RenderError> {
         let mut encoder = self.device.create_command_encoder(&Default::default());
-        let (mut list, prepared) = self.prepare(frame, &mut encoder, &attachments);
-        let mut keep = false;
-        while let Some(at) = list.ops.iter().position(|op| matches!(op, Op::CopyPixels { .. })) {
-            let rest = list.ops.split_off(at);
-            self.encode_list(&list, frame, prepared.as_ref(), &mut encoder, &attachments, keep);
-            let window = self.read_target(&target, encoder, true)?;
-            list.ops = rest;
-            let Op::CopyPixels { copy, batch } = list.ops[0] else { unreachable!("found above") };
+        let (mut list, prepared) = self.prepare(frame, &mut encoder, attachments);
+        let (mut start, mut keep) = (0, false);
+        let is_copy = |op: &Op| matches!(op, Op::CopyPixels { .. });
+        while let Some(at) = list.ops[start..].iter().position(is_copy).map(|k| start + k) {
+            self.encode_list(&list, &list.ops[start..at], frame, prepared.as_ref(), &mut encoder, attachments, keep);
+            let window = self.read_target(target, encoder, true)?;
+            let Op::CopyPixels { copy, batch } = list.ops[at] else { unreachable!("found above") };
             let points = list.pixel_copies.get(copy).map(|c| copy_vertices(c, &window)).unwrap_or_default();
             let first = list.vertices.len() as u32;
             list.vertices.extend(points);
-            list.ops[0] = Op::Draw(copy_batch(&batch, &window, first, list.vertices.len() as u32 - first));
+            list.ops[at] = Op::Draw(copy_batch(&batch, &window, first, list.vertices.len() as u32 - first));
             encoder = self.device.create_command_encoder(&Default::default());
-            keep = true;
+            (start, keep) = (at, true);
         }
-        self.encode_list(&list, frame, prepared.as_ref(), &mut encoder, &attachments, keep);
-        self.read_target(&target, encoder, depth)
+        Ok((list, prepared, encoder, start, keep))
     }
 
     /// Submits `encoder` and reads `target` back (its depth too with `depth`).
@@ -186,8 +200,23 @@ impl Renderer {
     }
 
     fn encode_onto(&mut self, frame: &Frame, encoder: &mut wgpu::CommandEncoder, target: &Attachments<'_>, keep: bool) {
-        let (list, prepared) = self.prepare(frame, encoder, target);
-        self.encode_list(&list, frame, prepared.as_ref(), encoder, target, keep);
+        let (mut list, prepared) = self.prepare(frame, encoder, target);
+        if !frame.pixel_copies.is_empty() {
+            // A window's surface cannot be read back: the copies read a headless target of the
+            // same size drawn the same way, and the window draws their points.
+            let headless = Target::new(&self.device, target.size.0, target.size.1, COLOR_FORMAT);
+            let attachments = Attachments {
+                color: &headless.color_view,
+                depth: &headless.depth_view,
+                size: target.size,
+                format: COLOR_FORMAT,
+            };
+            match self.draw_copies(frame, &headless, &attachments) {
+                Ok((resolved, ..)) => list = resolved,
+                Err(e) => eprintln!("gleval: glCopyPixels in a window: {e}"),
+            }
+        }
+        self.encode_list(&list, &list.ops, frame, prepared.as_ref(), encoder, target, keep);
     }
 
     /// Assembles a frame, and records the evaluation of the meshes left to the GPU.
@@ -212,10 +241,12 @@ impl Renderer {
         (list, prepared)
     }
 
-    /// Records an assembled list (with its frame's GPU meshes already prepared).
+    /// Records `ops` of an assembled list (with its frame's GPU meshes already prepared).
+    #[allow(clippy::too_many_arguments)]
     fn encode_list(
         &mut self,
         list: &DrawList,
+        ops: &[Op],
         frame: &Frame,
         prepared: Option<&PreparedMeshes>,
         encoder: &mut wgpu::CommandEncoder,
@@ -224,7 +255,7 @@ impl Renderer {
     ) {
         let buffer = vertex_buffer(&self.device, list, target.size);
         let bind_groups = self.frames.texture_bind_groups(&self.device, &self.queue, list, target.size.1);
-        let passes = split_passes(&list.ops, keep);
+        let passes = split_passes(ops, keep);
         let batches = passes.iter().flat_map(|p| &p.draws).filter_map(|item| match item {
             PassItem::Batch(batch) => Some(pipeline_key(batch, target)),
             PassItem::Mesh { .. } => None,
