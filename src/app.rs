@@ -424,6 +424,7 @@ impl App {
         gl.set_tessellator(self.tessellator);
         gl.glut.display_mode = self.display_mode;
         gl.glut.init_size = (self.width, self.height);
+        gl.set_window_reader(window_reader(self.rasterizer()));
         gl
     }
 
@@ -437,6 +438,8 @@ impl App {
     /// [`App::run`] with options parsed elsewhere (C's `glutInit` takes them out of the
     /// program's `argv`, which then no longer holds them).
     pub fn run_with(mut self, options: Options) {
+        // A colour-index window cannot be had on Mesa: freeglut's fatal error (`glut::display_mode`).
+        crate::glut::display_mode::exit_unless_possible(self.display_mode);
         if options.gpu {
             self.tessellator = Tessellator::Gpu;
         }
@@ -626,6 +629,22 @@ impl Headless {
         match self {
             Self::Cpu => Ok(soft::render_frame(frame, width, height)),
             Self::Wgpu(renderer) => renderer.render_frame(frame, width, height),
+        }
+    }
+}
+
+/// What a context of this program reads the window with mid-frame (`glCopyTexImage`): its
+/// frame so far drawn by the program's headless rasteriser (a wgpu renderer made at the first
+/// read and kept).
+fn window_reader(rasterizer: Rasterizer) -> impl FnMut(&Frame, u32, u32) -> Option<crate::gl::WindowImage> {
+    let mut renderer: Option<Renderer> = None;
+    move |frame, width, height| match rasterizer {
+        Rasterizer::Cpu => Some(soft::render_window(frame, width, height)),
+        Rasterizer::Wgpu => {
+            if renderer.is_none() {
+                renderer = Renderer::new().map_err(|e| eprintln!("gleval: reading the window: {e}")).ok();
+            }
+            renderer.as_mut()?.render_window(frame, width, height, true).ok()
         }
     }
 }

@@ -9,7 +9,7 @@
 use crate::context::{is_current, make_current, release_if_current};
 use gleval::gl::consts::*;
 use gleval::gl::types::*;
-use gleval::gl::Gl;
+use gleval::gl::{Frame, Gl, WindowImage};
 use gleval::render::soft::Canvas;
 use gleval::render::Image;
 use std::cell::Cell;
@@ -74,8 +74,9 @@ impl Target {
 }
 
 /// Draws what the current OSMesa context recorded since its last flush into its buffer, and
-/// returns the buffer's picture; `None` when no OSMesa context with a buffer is current.
-pub(crate) fn flush_current() -> Option<Image> {
+/// returns the buffer's picture and depth; `None` when no OSMesa context with a buffer is
+/// current.
+pub(crate) fn flush_current() -> Option<WindowImage> {
     let ctx = CURRENT.with(Cell::get);
     // SAFETY: set by OSMesaMakeCurrent from a live context and cleared when it is destroyed;
     // no `&mut Gl` of the context is alive between GL calls, and this runs between them.
@@ -89,9 +90,25 @@ pub(crate) fn flush_current() -> Option<Image> {
     let frame = ctx.gl.take_frame();
     target.canvas.draw_frame(&frame);
     ctx.gl.recycle_frame(frame);
-    let image = target.canvas.image();
+    let window = target.canvas.window_image();
+    let image = Image { width: window.width, height: window.height, pixels: window.color.clone() };
     target.write_buffer(format, &image);
-    Some(image)
+    Some(window)
+}
+
+/// The reader of an OSMesa context's window mid-frame (`glCopyTexImage`): the current context's
+/// canvas with `frame` (recorded since the last flush) drawn over a copy of it.
+fn read_canvas(frame: &Frame, _width: u32, _height: u32) -> Option<WindowImage> {
+    let ctx = CURRENT.with(Cell::get);
+    if ctx.is_null() {
+        return None;
+    }
+    // SAFETY: as in `flush_current`; only the `target` field is touched, while the context's
+    // `Gl` (another field) is the one calling.
+    let target = unsafe { &*std::ptr::addr_of!((*ctx).target) }.as_ref()?;
+    let mut canvas = target.canvas.clone();
+    canvas.draw_frame(frame);
+    Some(canvas.window_image())
 }
 
 entry! {
@@ -100,7 +117,9 @@ entry! {
     fn OSMesaCreateContextExt(
         format: GLenum, _depth_bits: GLint, _stencil_bits: GLint, _accum_bits: GLint, _sharelist: *mut OSMesaContext,
     ) -> *mut OSMesaContext {
-        Box::into_raw(Box::new(OSMesaContext { gl: Gl::new(1, 1), format, target: None }))
+        let mut gl = Gl::new(1, 1);
+        gl.set_window_reader(read_canvas);
+        Box::into_raw(Box::new(OSMesaContext { gl, format, target: None }))
     }
 }
 

@@ -234,6 +234,36 @@ static void state_call(void) {
     }
 }
 
+/* The pixel path: zooms of any size, maps of any size, copies and reads from anywhere. */
+static const GLenum pixel_pnames[] = {GL_MAP_COLOR, GL_INDEX_SHIFT, GL_INDEX_OFFSET, GL_RED_SCALE,
+    GL_GREEN_BIAS, GL_ALPHA_SCALE, GL_DEPTH_SCALE, GL_DEPTH_BIAS, GL_ZOOM_X, 0x1234};
+static const GLenum pixel_maps[] = {GL_PIXEL_MAP_I_TO_I, GL_PIXEL_MAP_S_TO_S, GL_PIXEL_MAP_I_TO_R,
+    GL_PIXEL_MAP_I_TO_A, GL_PIXEL_MAP_R_TO_R, GL_PIXEL_MAP_A_TO_A, 0x1234};
+static const GLint map_sizes[] = {-1, 0, 1, 2, 3, 7, 64, 256, 257};
+static const GLenum copy_types[] = {GL_COLOR, GL_DEPTH, GL_STENCIL, 0x1234};
+static const GLenum read_formats[] = {GL_RGBA, GL_DEPTH_COMPONENT, GL_LUMINANCE, GL_STENCIL_INDEX};
+
+static void pixel_call(void) {
+    GLint x = ANY(small) - 8, y = ANY(small) - 8, w = ANY(small), h = ANY(small);
+    switch (pick(8)) {
+    case 0: glPixelZoom(f(), f()); glPixelTransferf(ANY(pixel_pnames), f()); glPixelTransferi(ANY(pixel_pnames), ANY(small)); break;
+    case 1: glPixelMapfv(ANY(pixel_maps), ANY(map_sizes), pick(6) ? buf : NULL);
+            glPixelMapuiv(ANY(pixel_maps), ANY(map_sizes), pick(6) ? (GLuint *)buf : NULL);
+            glPixelMapusv(ANY(pixel_maps), ANY(map_sizes), pick(6) ? (GLushort *)buf : NULL);
+            glGetPixelMapfv(ANY(pixel_maps), pick(6) ? buf : NULL); break;
+    case 2: glRasterPos2f(f(), f()); glCopyPixels(x, y, ANY(grids), ANY(small), ANY(copy_types)); break;
+    case 3: glRasterPos3f(f() * 0.5f, f() * 0.5f, f()); glPixelZoom(f(), f());
+            glDrawPixels(w, h, pick(2) ? GL_RGB : GL_COLOR_INDEX, GL_UNSIGNED_BYTE, pick(6) ? (void *)buf : NULL); break;
+    case 4: glCopyTexImage2D(GL_TEXTURE_2D, ANY(small) % 3, pick(2) ? GL_RGB : GL_DEPTH_COMPONENT, x, y, w, h, pick(3) - 1);
+            glCopyTexSubImage2D(GL_TEXTURE_2D, 0, x, y, x, y, w, h); break;
+    case 5: glCopyTexImage1D(GL_TEXTURE_1D, 0, GL_RGBA, x, y, w, 0); glCopyTexSubImage1D(GL_TEXTURE_1D, 0, x, x, y, w);
+            glTexSubImage1D(GL_TEXTURE_1D, 0, x, w, GL_RGBA, GL_UNSIGNED_BYTE, pick(6) ? (void *)buf : NULL); break;
+    case 6: glReadPixels(x, y, w, h, ANY(read_formats), GL_FLOAT, pick(6) ? buf : NULL);
+            (void)glAreTexturesResident(w, names, (GLboolean *)dbuf); glPrioritizeTextures(w, names, buf); break;
+    default: glIndexf(f()); glIndexfv(fp()); glIndexub((GLubyte)pick(256)); glClearIndex(f()); glIndexMask((GLuint)next()); break;
+    }
+}
+
 static void display(void) {
     for (int i = 0; i < 4; i++) nurbs[i] = gluNewNurbsRenderer();
     for (int i = 0; i < 2; i++) tess[i] = gluNewTess();
@@ -243,11 +273,12 @@ static void display(void) {
     }
     for (int i = 0; i < 600; i++) indices32[i] = indices[i] = (GLushort)((i * 7919) % 600);
     for (unsigned long c = 0; c < calls; c++) {
-        switch (pick(5)) {
+        switch (pick(6)) {
         case 0: map_call(); break;
         case 1: nurbs_call(); break;
         case 2: tess_call(); break;
         case 3: array_call(); break;
+        case 4: pixel_call(); break;
         default: state_call(); break;
         }
         GLenum e = glGetError();

@@ -93,6 +93,8 @@ struct Saved {
     hints: super::hint::Hints,
     /// (capability, on) for every enable a group of the mask files.
     enables: Vec<(GLenum, bool)>,
+    /// The pixel mode group and the colour-index values of the current and colour-buffer groups.
+    pixels: super::pixel_transfer::PixelAttrib,
 }
 
 /// The server attribute stack.
@@ -170,6 +172,7 @@ impl Gl {
             texture: self.texture_attrib(),
             hints: self.hints,
             enables,
+            pixels: self.pixel_attrib(),
         };
         self.attrib_stack.entries.push(saved);
     }
@@ -194,6 +197,7 @@ impl Gl {
     }
 
     fn restore_groups(&mut self, saved: Saved) {
+        self.restore_pixel_attrib(saved.mask, saved.pixels);
         let (mask, v) = (saved.mask, saved.raster);
         let has = |bit: GLbitfield| mask & bit != 0;
         let r = &mut self.raster;

@@ -11,6 +11,7 @@
 use super::consts::*;
 use super::frame::{Command, Primitive};
 use super::lists::ListCommand;
+use super::pixel_zoom::zoomed_pixels;
 use super::pixels::PixelStore;
 use super::types::*;
 use super::vertex::Vertex;
@@ -48,7 +49,7 @@ pub(crate) fn unpack_bitmap(store: PixelStore, width: GLsizei, height: GLsizei, 
 /// Components per pixel of a colour format gleval draws, `None` for the others.
 fn color_components(format: GLenum) -> Option<usize> {
     match format {
-        GL_RED | GL_GREEN | GL_BLUE | GL_ALPHA | GL_LUMINANCE => Some(1),
+        GL_RED | GL_GREEN | GL_BLUE | GL_ALPHA | GL_LUMINANCE | GL_COLOR_INDEX => Some(1),
         GL_LUMINANCE_ALPHA => Some(2),
         GL_RGB | GL_BGR => Some(3),
         GL_RGBA | GL_BGRA => Some(4),
@@ -60,7 +61,8 @@ fn color_components(format: GLenum) -> Option<usize> {
 /// components are 0, a missing alpha is 1, luminance goes to R, G and B).
 fn to_rgba(format: GLenum, c: &[f32]) -> [f32; 4] {
     match format {
-        GL_RED => [c[0], 0.0, 0.0, 1.0],
+        // An index travels in the red slot until it is drawn (`Gl::draw_rgba` maps it).
+        GL_RED | GL_COLOR_INDEX => [c[0], 0.0, 0.0, 1.0],
         GL_GREEN => [0.0, c[0], 0.0, 1.0],
         GL_BLUE => [0.0, 0.0, c[0], 1.0],
         GL_ALPHA => [0.0, 0.0, 0.0, c[0]],
@@ -104,9 +106,20 @@ pub(crate) fn unpack_pixels(
         }
         _ => f32::from(data[at]) / 255.0,
     };
+    // Indices are integers, not normalised (GL 1.1 table 3.5 converts colour components only).
+    let scale = if format == GL_COLOR_INDEX && type_ == GL_UNSIGNED_BYTE { 255.0 } else { 1.0 };
     let pixel = |j: usize, i: usize| {
         let at = first + j * stride + i * n * element;
-        let c: Vec<f32> = (0..n).map(|k| component(at + k * element)).collect();
+        let c: Vec<f32> = (0..n)
+            .map(|k| {
+                let v = component(at + k * element);
+                if scale > 1.0 {
+                    (v * scale).round()
+                } else {
+                    v
+                }
+            })
+            .collect();
         to_rgba(format, &c)
     };
     Some((0..h).flat_map(|j| (0..w).map(move |i| pixel(j, i))).collect())
@@ -217,15 +230,19 @@ impl Gl {
     }
 
     /// `glDrawPixels` for the colour formats (`GL_RED` .. `GL_LUMINANCE_ALPHA`) with
-    /// `GL_UNSIGNED_BYTE` or `GL_FLOAT` components: pixel (i, j) is a fragment at window
-    /// (round(xr) + i, round(yr) + j) (Mesa rounds; zoom 1) at the raster depth. Nothing is drawn
+    /// `GL_UNSIGNED_BYTE` or `GL_FLOAT` components: pixel (i, j) goes through the pixel transfer
+    /// (`glPixelTransfer`, `glPixelMap`) and becomes the fragments at the raster depth that
+    /// `glPixelZoom` gives it from window (round(xr), round(yr)) on (Mesa rounds;
+    /// [`super::pixel_zoom`]). Nothing is drawn
     /// when the raster position is invalid. `pixels` is read with the unpack modes. Errors, in
     /// Mesa's order: inside `begin`/`end` → `GL_INVALID_OPERATION`; a negative size →
     /// `GL_INVALID_VALUE`; an unknown format or type → `GL_INVALID_ENUM`; a packed type the
     /// format does not fit, or `GL_STENCIL_INDEX` → `GL_INVALID_OPERATION`; `pixels` shorter
     /// than the image → `GL_INVALID_VALUE`. The colour formats (with `GL_BGR`, `GL_BGRA`) are
-    /// drawn from `GL_UNSIGNED_BYTE` and `GL_FLOAT` components; the other valid formats and
-    /// types (indices, depth, the other integer and the packed types) draw nothing.
+    /// drawn from `GL_UNSIGNED_BYTE` and `GL_FLOAT` components, and so are colour indices
+    /// (`GL_COLOR_INDEX`, through the index shift, offset and maps, as an RGBA context draws
+    /// them); the other valid formats and types (depth, the other integer and the packed
+    /// types) draw nothing.
     pub fn draw_pixels(&mut self, width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum, pixels: &[u8]) {
         let store = self.unpack_store();
         let unpacked = || unpack_pixels(store, (width, height), format, type_, pixels);
@@ -257,13 +274,20 @@ impl Gl {
             return;
         }
         let [xr, yr, z, _] = self.raster_pos.window;
-        let (x0, y0) = (xr.round() as i32, yr.round() as i32);
-        let w = width as usize;
-        let fragments: Vec<_> = rgba
-            .iter()
-            .enumerate()
-            .map(|(k, c)| {
-                ([x0.saturating_add((k % w) as i32), y0.saturating_add((k / w) as i32)], c.map(|v| v.clamp(0.0, 1.0)))
+        let origin = [xr.round() as i32, yr.round() as i32];
+        let transfer = self.draw_color_transfer();
+        let (w, h) = (width as usize, height as usize);
+        let window = (self.width().max(0) as u32, self.height().max(0) as u32);
+        let fragments: Vec<_> = zoomed_pixels(origin, self.zoom(), (w, h), window)
+            .map(|((i, j), (x, y))| {
+                let c = rgba[j * w + i];
+                let c = match format {
+                    // RGBA mode: an index goes through the index shift and offset and the
+                    // I_TO_R .. I_TO_A maps (GL 1.1 §3.6.3; Mesa `_mesa_map_ci_to_rgba`).
+                    GL_COLOR_INDEX => self.index_to_rgba(c[0]),
+                    _ => transfer.as_ref().map_or(c, |t| t.apply(c)),
+                };
+                ([x as i32, y as i32], c.map(|v| v.clamp(0.0, 1.0)))
             })
             .collect();
         self.record_fragments(z, &fragments);
@@ -291,7 +315,7 @@ impl Gl {
     /// The index of a draw state that puts window coordinates on their pixels: the current state
     /// (depth test included) with identity modelview, a window-to-clip projection, the whole
     /// window as viewport, depth range [0, 1], no lighting and one-pixel points.
-    fn window_state(&mut self) -> usize {
+    pub(crate) fn window_state(&mut self) -> usize {
         // No texture and no fog: the raster position's texture coordinates and distance are
         // not applied to these fragments (left out; blending and the alpha test are kept).
         let mut state = self.snapshot(None);

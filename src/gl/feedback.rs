@@ -298,8 +298,8 @@ impl Gl {
                     out.extend(feedback_prims::report(mode, state, &vertices, &[]));
                 }
             }
-            // GL clears only in render mode.
-            Command::Clear { .. } => {}
+            // GL clears and copies only in render mode (a copy gives its token instead).
+            Command::Clear { .. } | Command::CopyPixels(_) => {}
         }
         out
     }

@@ -129,6 +129,8 @@ pub enum Command {
     Draw(usize),
     /// Draw mesh number `n` of [`Frame::meshes`].
     Mesh(usize),
+    /// Execute copy number `n` of [`Frame::pixel_copies`] (`glCopyPixels`).
+    CopyPixels(usize),
 }
 
 /// An immediate-mode call, in the order the program made it.
@@ -170,6 +172,8 @@ pub struct Frame {
     /// The vertices (indices in `vertices`, ascending) issued with the edge flag false
     /// (`glEdgeFlag`): in line and point polygon modes their edges are not boundary edges.
     pub hidden_edges: Vec<usize>,
+    /// The `glCopyPixels` calls, executed by the rasterisers where [`Command::CopyPixels`] says.
+    pub pixel_copies: Vec<super::PixelCopy>,
 }
 
 /// What a `glEvalMesh` grid draws.
@@ -280,6 +284,7 @@ impl Frame {
         self.meshes.clear();
         self.material_changes.clear();
         self.hidden_edges.clear();
+        self.pixel_copies.clear();
     }
 
     /// For each vertex of `primitive`, whether its edge flag is false; empty when none is (the
@@ -301,10 +306,15 @@ impl Frame {
     /// evaluated on the CPU): what a test comparing against GL's primitive stream reads.
     #[must_use]
     pub fn expanded(&self) -> Frame {
-        let mut out = Frame { calls: self.calls.clone(), states: self.states.clone(), ..Frame::default() };
+        let mut out = Frame {
+            calls: self.calls.clone(),
+            states: self.states.clone(),
+            pixel_copies: self.pixel_copies.clone(),
+            ..Frame::default()
+        };
         for command in &self.commands {
             match *command {
-                Command::Clear { .. } => out.commands.push(*command),
+                Command::Clear { .. } | Command::CopyPixels(_) => out.commands.push(*command),
                 Command::Draw(i) => {
                     let p = self.primitives[i];
                     let first = out.vertices.len();

@@ -153,6 +153,8 @@ pub(crate) enum ListCommand {
     PushName(GLuint),
     PopName,
     PassThrough(GLfloat),
+    /// The pixel path's calls (`pixel_commands.rs`).
+    Pixels(super::pixel_commands::PixelCommand),
 }
 
 /// A list being compiled.
@@ -482,6 +484,7 @@ impl Gl {
             C::RasterPos([x, y, z, w]) => self.raster_pos4f(*x, *y, *z, *w),
             C::Bitmap(call, bits) => self.draw_bitmap(*call, bits.as_deref()),
             C::DrawPixels(size, format, type_, rgba) => self.draw_rgba(*size, *format, *type_, rgba.as_deref()),
+            C::Pixels(command) => self.execute_pixel_command(command),
             C::CallList(list) => self.call_list(*list),
             C::CallLists(n, type_, names) => self.call_lists(*n, *type_, names),
             C::ListBase(base) => self.list_base(*base),

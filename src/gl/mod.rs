@@ -13,7 +13,10 @@ mod bitmap;
 mod client_memory;
 mod clip;
 mod color_material;
+mod color_index;
 pub mod consts;
+mod copy_pixels;
+mod copy_texture;
 mod enable;
 mod eval;
 pub mod feedback;
@@ -31,6 +34,9 @@ mod matrix;
 mod mesh_job;
 mod offset;
 mod param_variants;
+mod pixel_commands;
+mod pixel_transfer;
+pub mod pixel_zoom;
 mod pixels;
 mod raster;
 mod raster_pos;
@@ -43,9 +49,11 @@ mod texture;
 pub mod types;
 mod variants;
 mod vertex;
+mod window_read;
 
 pub use arrays::PointerArg;
 pub use client_memory::{ArrayElement, ClientArray, ClientMemory, ClientPointer};
+pub use copy_pixels::{CopyFragment, PixelCopy};
 pub use eval::{MapTarget, Slot};
 pub use fragment::Fog;
 pub use frame::{Call, Command, DrawState, Frame, GridMesh, MaterialChange, MeshMode, MeshVertices, Primitive};
@@ -54,10 +62,12 @@ pub use lighting::{Light, Lighting, Material};
 pub use lists::MAX_LIST_NESTING;
 pub use mesh_job::{MapSample, MeshJob};
 pub use offset::PolygonOffset;
+pub use pixel_transfer::{ColorTransfer, DepthTransfer, MAX_PIXEL_MAP_TABLE};
 pub use texgen::{TexGen, TexGenCoord, TexGenState};
 pub use texture::{BoundTexture, TexLevel, TexParams, MAX_TEXTURE_SIZE};
 pub use variants::GlComponent;
 pub use vertex::Vertex;
+pub use window_read::{WindowImage, WindowReader};
 
 use consts::*;
 use types::*;
@@ -168,6 +178,12 @@ pub struct Gl {
     fragment_ops: fragment::FragmentOps,
     /// How client memory is laid out for images and bitmaps (`glPixelStore`).
     pixel_stores: pixels::PixelStores,
+    /// `glPixelTransfer`, `glPixelMap` and `glPixelZoom`.
+    pixel_state: pixel_transfer::PixelState,
+    /// The colour-index calls' state (an RGBA context keeps it and draws nothing with it).
+    color_index: color_index::ColorIndex,
+    /// What reads the window mid-frame (`glCopyTexImage`).
+    window_reader: window_read::Reader,
     /// GLU NURBS objects, indexed by their handles: the one import from `gl` into `glu`, since
     /// GLU's calls are methods of `Gl` (the porting rule).
     pub(crate) nurbs: Vec<Option<crate::glu::NurbsObject>>,
@@ -207,6 +223,9 @@ impl Gl {
             feedback: feedback::Feedback::default(),
             lists: lists::Lists::default(),
             pixel_stores: pixels::PixelStores::default(),
+            pixel_state: pixel_transfer::PixelState::default(),
+            color_index: color_index::ColorIndex::default(),
+            window_reader: window_read::Reader::default(),
             textures: texture::Textures::default(),
             tex_gen: texgen::TexGen::default(),
             hints: hint::Hints::default(),
@@ -281,6 +300,7 @@ impl Gl {
             frame.commands.clear();
             frame.material_changes.clear();
             frame.hidden_edges.clear();
+            frame.pixel_copies.clear();
             self.frame = frame;
         }
     }
@@ -398,7 +418,9 @@ impl Gl {
     /// how many, `None` for a name that is not its; chain them here as
     /// `self.stencil_query(pname, out).or_else(|| self.arrays_query(pname, out))`.
     fn query(&self, pname: GLenum, out: &mut [f64]) -> Option<usize> {
-        self.arrays_query(pname, out).or_else(|| self.select_query(pname, out))
+        self.arrays_query(pname, out)
+            .or_else(|| self.select_query(pname, out))
+            .or_else(|| self.pixels_query(pname, out))
     }
 
     /// Records `code` unless an earlier error is still pending (GL's sticky flag; Mesa's `_mesa_error`).

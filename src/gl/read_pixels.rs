@@ -2,21 +2,23 @@
 //! colours, converted to the caller's format and type and laid out with the pack modes.
 //!
 //! The `gl` layer has no framebuffer: the caller that owns a renderer hands in a closure that
-//! draws the frame recorded so far and returns the window's RGBA8 pixels (rows top to bottom,
-//! as `Renderer::render_frame` gives them). It runs only when the call is valid. GL's rules
+//! draws the frame recorded so far and returns the window's buffers ([`WindowImage`]: RGBA8
+//! colour and depth, rows top to bottom, as `soft::render_window` and
+//! `Renderer::render_window` give them). It runs only when the call is valid. GL's rules
 //! live here: the errors in Mesa's order, the rectangle (pixels outside the window are left
-//! as they were, as Mesa leaves them), the conversion of each colour component (GL 1.1 table
-//! 2.9 inverted: unsigned types scale by 2ᵇ − 1, signed ones map [−1, 1] onto the range),
-//! luminance as R + G + B clamped (§4.3.2), the pack modes.
+//! as they were, as Mesa leaves them), the pixel transfer (colour scale, bias and maps; depth
+//! scale and bias, §4.3.2), the conversion of each component (GL 1.1 table 2.9 inverted:
+//! unsigned types scale by 2ᵇ − 1, signed ones map [−1, 1] onto the range), luminance as
+//! R + G + B clamped (§4.3.2), the pack modes.
 //!
-//! gleval's window has no readable depth, stencil or colour-index buffer: reading
-//! `GL_DEPTH_COMPONENT`, `GL_STENCIL_INDEX` or `GL_COLOR_INDEX` is `GL_INVALID_OPERATION`
-//! (Mesa reads its depth and stencil buffers).
+//! An RGBA window has no colour-index buffer and gleval's none a stencil buffer yet: reading
+//! `GL_COLOR_INDEX` or `GL_STENCIL_INDEX` is `GL_INVALID_OPERATION`, as in Mesa without one.
 
 use super::binding::type_size;
 use super::consts::*;
 use super::frame::Frame;
 use super::types::*;
+use super::window_read::WindowImage;
 use super::Gl;
 
 /// The components of one window pixel (floats in [0, 1]) that `format` returns; `None` for a
@@ -31,6 +33,8 @@ fn components(format: GLenum, [r, g, b, a]: [f32; 4]) -> Option<Vec<f32>> {
         GL_RGBA => vec![r, g, b, a],
         GL_LUMINANCE => vec![(r + g + b).min(1.0)],
         GL_LUMINANCE_ALPHA => vec![(r + g + b).min(1.0), a],
+        // A depth travels in the red slot (see `Gl::read_pixels`).
+        GL_DEPTH_COMPONENT => vec![r],
         _ => return None,
     })
 }
@@ -53,10 +57,13 @@ fn encode(c: f32, type_: GLenum) -> Vec<u8> {
     let c = f64::from(c.clamp(0.0, 1.0));
     let unsigned = |max: f64| (c * max).round();
     let signed = |max: f64| ((c * (2.0 * max + 1.0) - 1.0) / 2.0).round();
+    // Mesa's `_mesa_float_to_unorm`: the product in floats, rounded half to even (a colour
+    // biased to 131.5 reads as 132).
+    let unorm = |max: f32| (c as f32 * max).round_ties_even();
     match type_ {
-        GL_UNSIGNED_BYTE => vec![unsigned(255.0) as u8],
+        GL_UNSIGNED_BYTE => vec![unorm(255.0) as u8],
         GL_BYTE => (signed(127.0) as i8).to_ne_bytes().to_vec(),
-        GL_UNSIGNED_SHORT => (unsigned(65535.0) as u16).to_ne_bytes().to_vec(),
+        GL_UNSIGNED_SHORT => (unorm(65535.0) as u16).to_ne_bytes().to_vec(),
         GL_SHORT => (signed(32767.0) as i16).to_ne_bytes().to_vec(),
         GL_UNSIGNED_INT => (unsigned(4294967295.0) as u32).to_ne_bytes().to_vec(),
         GL_INT => (signed(2147483647.0) as i32).to_ne_bytes().to_vec(),
@@ -72,6 +79,22 @@ pub(crate) fn read_format_error(format: GLenum, type_: GLenum) -> Option<GLenum>
         return Some(GL_INVALID_ENUM);
     }
     components(format, [0.0; 4]).is_none().then_some(GL_INVALID_OPERATION)
+}
+
+/// One depth `d` ∈ [0, 1] as `type_` stores it: Mesa packs depths with truncating conversions
+/// (`FLOAT_TO_UBYTE` and its kin in `_mesa_pack_depth_span`; measured: 0.25 reads as 63).
+fn encode_depth(d: f32, type_: GLenum) -> Vec<u8> {
+    let d = f64::from(d.clamp(0.0, 1.0));
+    let signed = |max: f64| ((d * (2.0 * max + 1.0) - 1.0) / 2.0).trunc();
+    match type_ {
+        GL_UNSIGNED_BYTE => vec![(d * 255.0) as u8],
+        GL_BYTE => (signed(127.0) as i8).to_ne_bytes().to_vec(),
+        GL_UNSIGNED_SHORT => ((d * 65535.0) as u16).to_ne_bytes().to_vec(),
+        GL_SHORT => (signed(32767.0) as i16).to_ne_bytes().to_vec(),
+        GL_UNSIGNED_INT => ((d * 4294967295.0) as u32).to_ne_bytes().to_vec(),
+        GL_INT => (signed(2147483647.0) as i32).to_ne_bytes().to_vec(),
+        _ => (d as f32).to_ne_bytes().to_vec(),
+    }
 }
 
 impl Gl {
@@ -92,11 +115,12 @@ impl Gl {
     }
 
     /// `glReadPixels(x, y, width, height, format, type, pixels)` into `out`: `window` draws what
-    /// was recorded and returns the window's RGBA8 pixels, rows top to bottom. Errors, in
+    /// was recorded and returns the window's buffers. Colours go through the pixel transfer,
+    /// depths (`GL_DEPTH_COMPONENT`) through the depth scale and bias. Errors, in
     /// Mesa's order: inside `begin`/`end` (`GL_INVALID_OPERATION`), a negative size
     /// (`GL_INVALID_VALUE`), an unknown type or `GL_BITMAP` (`GL_INVALID_ENUM`), an unknown
-    /// format (`GL_INVALID_OPERATION`, Mesa's answer), a buffer gleval cannot read (depth,
-    /// stencil, colour index: `GL_INVALID_OPERATION`), a non-empty `out` shorter than
+    /// format (`GL_INVALID_OPERATION`, Mesa's answer), a buffer gleval cannot read (stencil,
+    /// colour index: `GL_INVALID_OPERATION`), a non-empty `out` shorter than
     /// [`Gl::packed_image_len`] (`GL_INVALID_VALUE`); an empty `out` (C's NULL) writes nothing
     /// and is no error, as in Mesa. Not compiled into lists.
     pub fn read_pixels(
@@ -105,7 +129,7 @@ impl Gl {
         (width, height): (GLsizei, GLsizei),
         format: GLenum,
         type_: GLenum,
-        window: impl FnOnce(&Frame) -> Option<Vec<u8>>,
+        window: impl FnOnce(&Frame) -> Option<WindowImage>,
         out: &mut [u8],
     ) {
         if self.reject_inside_begin_end() {
@@ -132,14 +156,15 @@ impl Gl {
         if out.len() < needed {
             return self.set_error(GL_INVALID_VALUE);
         }
-        let (ww, wh) = (self.width(), self.height());
-        let Some(pixels) = window(self.frame()) else { return self.set_error(GL_OUT_OF_MEMORY) };
+        let Some(image) = window(self.frame()) else { return self.set_error(GL_OUT_OF_MEMORY) };
+        let (colors, depths) = (self.color_transfer(), self.depth_transfer());
         let at = |wx: i32, wy: i32| -> Option<[f32; 4]> {
-            if !(0..ww).contains(&wx) || !(0..wh).contains(&wy) {
-                return None;
+            let (wx, wy) = (i64::from(wx), i64::from(wy));
+            if format == GL_DEPTH_COMPONENT {
+                return image.depth_at(wx, wy).map(|d| [depths.apply(d), 0.0, 0.0, 0.0]);
             }
-            let k = 4 * ((wh - 1 - wy) as usize * ww as usize + wx as usize);
-            pixels.get(k..k + 4).map(|p| [0, 1, 2, 3].map(|c| f32::from(p[c]) / 255.0))
+            let c = image.color_at(wx, wy)?;
+            Some(colors.as_ref().map_or(c, |t| t.apply(c).map(|v| v.clamp(0.0, 1.0))))
         };
         self.pack_rectangle((x, y), (width as usize, height as usize), (format, type_, size), at, out);
     }
@@ -156,6 +181,24 @@ impl Gl {
         let size = type_size(type_).unwrap_or(1);
         let at = |x: i32, y: i32| rgba.get(y as usize * w + x as usize).copied();
         self.pack_rectangle((0, 0), (w, h), (format, type_, size), at, out);
+    }
+
+    /// `glReadPixels` as a ported program calls it: [`Gl::read_pixels`] reading the window
+    /// through the context's reader ([`Gl::set_window_reader`]; `App` installs its
+    /// rasteriser's), drawn as far as the program has drawn.
+    pub fn read_window_pixels(
+        &mut self,
+        (x, y): (GLint, GLint),
+        (width, height): (GLsizei, GLsizei),
+        format: GLenum,
+        type_: GLenum,
+        out: &mut [u8],
+    ) {
+        if self.inside_begin_end() {
+            return self.set_error(GL_INVALID_OPERATION);
+        }
+        let image = self.read_window();
+        self.read_pixels((x, y), (width, height), format, type_, |_| image, out);
     }
 
     /// Writes the rectangle's pixels that lie in the window where the pack modes put them.
@@ -177,7 +220,8 @@ impl Gl {
                 let Some(rgba) = at(wx, wy) else { continue };
                 let mut offset = first + j * stride + i * n * size;
                 for c in components(format, rgba).unwrap_or_default() {
-                    let mut bytes = encode(c, type_);
+                    let mut bytes =
+                        if format == GL_DEPTH_COMPONENT { encode_depth(c, type_) } else { encode(c, type_) };
                     if store.swap_bytes {
                         bytes.reverse();
                     }
@@ -193,9 +237,27 @@ impl Gl {
 mod tests {
     use super::*;
 
-    /// A 2 × 2 window: bottom row red, green; top row blue, white (rows top first).
-    fn window() -> Vec<u8> {
-        [[0, 0, 255, 255], [255, 255, 255, 255], [255, 0, 0, 255], [0, 255, 0, 255]].concat()
+    /// A 2 × 2 window: bottom row red, green; top row blue, white (rows top first); depths
+    /// 0.25, 0.5 at the bottom, 0.75, 1 above.
+    fn window() -> WindowImage {
+        let color = [[0, 0, 255, 255], [255, 255, 255, 255], [255, 0, 0, 255], [0, 255, 0, 255]].concat();
+        WindowImage { width: 2, height: 2, color, depth: vec![0.75, 1.0, 0.25, 0.5] }
+    }
+
+    #[test]
+    fn depths_and_transfer() {
+        let mut gl = Gl::new(2, 2);
+        let mut out = [0u8; 8];
+        gl.read_pixels((0, 0), (2, 1), GL_DEPTH_COMPONENT, GL_FLOAT, |_| Some(window()), &mut out[..]);
+        assert_eq!(gl.get_error(), GL_NO_ERROR);
+        assert_eq!(out[..4], 0.25f32.to_ne_bytes());
+        gl.pixel_transferf(GL_DEPTH_BIAS, 0.25);
+        gl.pixel_transferf(GL_RED_SCALE, 0.5);
+        gl.read_pixels((1, 0), (1, 1), GL_DEPTH_COMPONENT, GL_FLOAT, |_| Some(window()), &mut out[..]);
+        assert_eq!(out[..4], 0.75f32.to_ne_bytes());
+        let mut rgba = [0u8; 4];
+        gl.read_pixels((0, 0), (1, 1), GL_RGBA, GL_UNSIGNED_BYTE, |_| Some(window()), &mut rgba[..]);
+        assert_eq!(rgba, [128, 0, 0, 255]);
     }
 
     #[test]
@@ -227,7 +289,7 @@ mod tests {
         assert_eq!(gl.get_error(), GL_INVALID_OPERATION);
         gl.read_pixels((0, 0), (1, 1), GL_RGBA, GL_FLOAT, |_| None, &mut []);
         assert_eq!(gl.get_error(), GL_NO_ERROR);
-        gl.read_pixels((0, 0), (1, 1), GL_DEPTH_COMPONENT, GL_FLOAT, |_| None, &mut out[..]);
+        gl.read_pixels((0, 0), (1, 1), GL_STENCIL_INDEX, GL_FLOAT, |_| None, &mut out[..]);
         assert_eq!(gl.get_error(), GL_INVALID_OPERATION);
         gl.read_pixels((1, 1), (2, 1), GL_RGBA, GL_UNSIGNED_BYTE, |_| Some(window()), &mut out[..]);
         assert_eq!(gl.get_error(), GL_NO_ERROR);

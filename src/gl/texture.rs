@@ -123,12 +123,12 @@ impl PartialEq for BoundTexture {
 
 /// A texture object.
 #[derive(Clone, Debug, Default)]
-struct TextureObject {
+pub(super) struct TextureObject {
     /// 1 or 2 once bound to `GL_TEXTURE_1D` or `GL_TEXTURE_2D`; 0 before.
     dims: u8,
-    levels: Vec<Option<TexLevel>>,
+    pub(super) levels: Vec<Option<TexLevel>>,
     /// The base format of each level.
-    formats: Vec<GLenum>,
+    pub(super) formats: Vec<GLenum>,
     params: TexParams,
     /// Unique among all objects and versions: changes whenever an image does.
     key: u64,
@@ -138,10 +138,17 @@ struct TextureObject {
     extra: query::ObjectExtras,
 }
 
+impl TextureObject {
+    /// `glPrioritizeTextures`: `GL_TEXTURE_PRIORITY`, clamped to [0, 1].
+    pub(super) fn set_priority(&mut self, priority: f32) {
+        self.extra.priority = priority.clamp(0.0, 1.0);
+    }
+}
+
 /// Unit 0's texture state.
 #[derive(Debug)]
 pub(crate) struct Textures {
-    objects: HashMap<GLuint, TextureObject>,
+    pub(super) objects: HashMap<GLuint, TextureObject>,
     /// The default objects (name 0) of `GL_TEXTURE_1D` and `GL_TEXTURE_2D`.
     defaults: [TextureObject; 2],
     bound: [GLuint; 2],
@@ -167,7 +174,7 @@ impl Default for Textures {
 }
 
 /// 0 for `GL_TEXTURE_1D`, 1 for `GL_TEXTURE_2D`.
-fn target_index(target: GLenum) -> Option<usize> {
+pub(super) fn target_index(target: GLenum) -> Option<usize> {
     match target {
         GL_TEXTURE_1D => Some(0),
         GL_TEXTURE_2D => Some(1),
@@ -177,7 +184,7 @@ fn target_index(target: GLenum) -> Option<usize> {
 
 /// The base internal format of an `internalformat` argument (GL 1.1 table 3.15, with GL 1.0's
 /// component counts 1..4), `None` for one GL rejects.
-fn base_format(internal: GLint) -> Option<GLenum> {
+pub(super) fn base_format(internal: GLint) -> Option<GLenum> {
     match internal as GLenum {
         1 | GL_LUMINANCE | GL_LUMINANCE8 => Some(GL_LUMINANCE),
         2 | GL_LUMINANCE_ALPHA | GL_LUMINANCE8_ALPHA8 => Some(GL_LUMINANCE_ALPHA),
@@ -443,28 +450,76 @@ impl Gl {
         {
             return;
         }
-        if target != GL_TEXTURE_2D {
+        self.tex_sub_image(2, target, level, [xoffset, yoffset, width, height], (format, type_), bytes);
+    }
+
+    /// `glTexSubImage1D` and `glTexSubImage2D` once compiled: `rect` is x, y, width, height in
+    /// the level (y 0 and height 1 for a 1D texture).
+    pub(super) fn tex_sub_image(
+        &mut self,
+        dims: u8,
+        target: GLenum,
+        level: GLint,
+        rect: [GLint; 4],
+        (format, type_): (GLenum, GLenum),
+        bytes: &[u8],
+    ) {
+        if target_index(target) != Some(usize::from(dims - 1)) {
             return self.set_error(GL_INVALID_ENUM);
+        }
+        let Some((x, y, w, h)) = self.sub_image_rect(dims, level, rect) else { return };
+        let Some(layout) = self.image_format(format, type_) else { return };
+        let Some(texels) = self.unpack_texels(layout, w, h, bytes) else {
+            return self.set_error(GL_INVALID_VALUE);
+        };
+        self.replace_texels(dims, level as usize, (x, y, w), &texels);
+    }
+
+    /// Checks a sub-image rectangle against the bound object's level `level`: a level outside
+    /// 0..=log2(max size) → `GL_INVALID_VALUE`; a level not defined → `GL_INVALID_OPERATION`;
+    /// negative sizes or a rectangle outside the level →
+    /// `GL_INVALID_VALUE`. The rectangle as (x, y, width, height) when it fits.
+    pub(super) fn sub_image_rect(
+        &mut self,
+        dims: u8,
+        level: GLint,
+        rect: [GLint; 4],
+    ) -> Option<(usize, usize, usize, usize)> {
+        // Mesa checks the level's range before whether it is defined (measured).
+        if !(0..=MAX_TEXTURE_SIZE.ilog2() as GLint).contains(&level) {
+            self.set_error(GL_INVALID_VALUE);
+            return None;
         }
         let defined = usize::try_from(level)
             .ok()
-            .and_then(|l| self.bound_object(2).levels.get(l).cloned().flatten())
-            .map(|l| (l.width as i64, l.height as i64));
-        let Some((lw, lh)) = defined else { return self.set_error(GL_INVALID_OPERATION) };
-        let (x, y, w, h) = (i64::from(xoffset), i64::from(yoffset), i64::from(width), i64::from(height));
-        if w < 0 || h < 0 || x < 0 || y < 0 || x + w > lw || y + h > lh {
-            return self.set_error(GL_INVALID_VALUE);
-        }
-        let Some(layout) = self.image_format(format, type_) else { return };
-        let Some(texels) = self.unpack_texels(layout, w as usize, h as usize, bytes) else {
-            return self.set_error(GL_INVALID_VALUE);
+            .and_then(|l| self.bound_object(dims).levels.get(l).cloned().flatten())
+            .map(|l| (i64::from(l.width), i64::from(l.height)));
+        let Some((lw, lh)) = defined else {
+            self.set_error(GL_INVALID_OPERATION);
+            return None;
         };
-        let level = self.bound_object_mut(2).levels[level as usize].as_mut().expect("checked above");
-        for row in 0..h as usize {
-            let start = (y as usize + row) * level.width as usize + x as usize;
-            level.texels[start..start + w as usize].copy_from_slice(&texels[row * w as usize..][..w as usize]);
+        let [x, y, w, h] = rect.map(i64::from);
+        if w < 0 || h < 0 || x < 0 || y < 0 || x + w > lw || y + h > lh {
+            self.set_error(GL_INVALID_VALUE);
+            return None;
         }
-        self.image_changed(2);
+        Some((x as usize, y as usize, w as usize, h as usize))
+    }
+
+    /// Writes rows of `w` texels into level `level` of the bound object from (`x`, `y`) on.
+    pub(super) fn replace_texels(
+        &mut self,
+        dims: u8,
+        level: usize,
+        (x, y, w): (usize, usize, usize),
+        texels: &[[u8; 4]],
+    ) {
+        let Some(Some(target)) = self.bound_object_mut(dims).levels.get_mut(level) else { return };
+        for (row, source) in texels.chunks_exact(w.max(1)).enumerate() {
+            let start = (y + row) * target.width as usize + x;
+            target.texels[start..start + w].copy_from_slice(source);
+        }
+        self.image_changed(dims);
     }
 
     /// `glTexParameteri` for `GL_TEXTURE_MIN_FILTER`, `GL_TEXTURE_MAG_FILTER`,
@@ -618,7 +673,7 @@ impl Gl {
         }
     }
 
-    fn bound_object(&self, dims: u8) -> &TextureObject {
+    pub(super) fn bound_object(&self, dims: u8) -> &TextureObject {
         let t = usize::from(dims - 1);
         match self.textures.bound[t] {
             0 => &self.textures.defaults[t],
@@ -626,7 +681,7 @@ impl Gl {
         }
     }
 
-    fn bound_object_mut(&mut self, dims: u8) -> &mut TextureObject {
+    pub(super) fn bound_object_mut(&mut self, dims: u8) -> &mut TextureObject {
         let t = usize::from(dims - 1);
         match self.textures.bound[t] {
             0 => &mut self.textures.defaults[t],
@@ -635,7 +690,7 @@ impl Gl {
     }
 
     /// A level of the bound object changed: a new key (the renderer uploads again) and chain.
-    fn image_changed(&mut self, dims: u8) {
+    pub(super) fn image_changed(&mut self, dims: u8) {
         let key = self.textures.next_key;
         self.textures.next_key += 1;
         let object = self.bound_object_mut(dims);

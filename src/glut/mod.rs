@@ -9,6 +9,7 @@
 //! `App`'s builder methods.
 
 pub mod consts;
+pub mod display_mode;
 pub mod fonts;
 mod menu;
 #[cfg(all(feature = "gpu", feature = "png"))]

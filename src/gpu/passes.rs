@@ -41,6 +41,9 @@ pub(crate) fn split_passes(ops: &[Op], keep: bool) -> Vec<Pass> {
             Op::GpuMesh { mesh, fragment } => {
                 passes.last_mut().expect("at least one pass").draws.push(PassItem::Mesh { mesh, fragment })
             }
+            // The renderer turns copies into point batches before it splits the passes
+            // (`Renderer::render_window`); one left here has nothing to draw.
+            Op::CopyPixels { .. } => {}
         }
     }
     passes

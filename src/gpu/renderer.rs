@@ -14,9 +14,10 @@ use super::frame_raster::{vertex_buffer, FrameRaster, PipelineKey};
 use super::mesh_raster::{gpu_mesh_indices, MeshRaster, PreparedMeshes};
 use super::passes::{begin_pass, scissor_rect, split_passes, PassItem};
 use super::target::Target;
-use crate::gl::Frame;
+use crate::gl::{Frame, WindowImage};
 use crate::math::BezierPatch;
-use crate::render::assemble::{assemble_frame, Batch, DrawList};
+use crate::render::assemble::{assemble_frame, Batch, DrawList, Op};
+use crate::render::pixel_copy::{copy_batch, copy_vertices};
 use crate::render::Image;
 use crate::tess::Mesh;
 
@@ -87,15 +88,79 @@ impl Renderer {
 
     /// Renders a recorded frame headless and reads it back.
     pub fn render_frame(&mut self, frame: &Frame, width: u32, height: u32) -> Result<Image, RenderError> {
+        let window = self.render_window(frame, width, height, false)?;
+        Ok(Image { width: window.width, height: window.height, pixels: window.color })
+    }
+
+    /// Renders a recorded frame headless and reads its colour back, and its depth with `depth`.
+    /// A `glCopyPixels` reads the target as drawn so far: the frame is drawn up to it, read back,
+    /// and its points join the draws that follow (`render::pixel_copy`).
+    pub fn render_window(
+        &mut self,
+        frame: &Frame,
+        width: u32,
+        height: u32,
+        depth: bool,
+    ) -> Result<WindowImage, RenderError> {
         let target = Target::new(&self.device, width.max(1), height.max(1), COLOR_FORMAT);
+        let attachments = Attachments {
+            color: &target.color_view,
+            depth: &target.depth_view,
+            size: (target.width, target.height),
+            format: COLOR_FORMAT,
+        };
+        let (list, prepared, mut encoder, start, keep) = self.draw_copies(frame, &target, &attachments)?;
+        self.encode_list(&list, &list.ops[start..], frame, prepared.as_ref(), &mut encoder, &attachments, keep);
+        self.read_target(&target, encoder, depth)
+    }
+
+    /// Draws `frame` into the headless `target` up to its last `glCopyPixels`, each copy
+    /// reading the target as drawn so far and becoming a batch of points: the assembled list
+    /// with every copy so replaced, its prepared GPU meshes, the encoder for what follows, the
+    /// index of the first op not drawn yet, and whether the target already holds a picture.
+    #[allow(clippy::type_complexity)]
+    fn draw_copies(
+        &mut self,
+        frame: &Frame,
+        target: &Target,
+        attachments: &Attachments<'_>,
+    ) -> Result<(DrawList, Option<PreparedMeshes>, wgpu::CommandEncoder, usize, bool), RenderError> {
         let mut encoder = self.device.create_command_encoder(&Default::default());
-        let size = (target.width, target.height);
-        self.encode(frame, &mut encoder, &target.color_view, &target.depth_view, size, COLOR_FORMAT);
-        let pixels = target.read(&self.device, &self.queue, encoder);
+        let (mut list, prepared) = self.prepare(frame, &mut encoder, attachments);
+        let (mut start, mut keep) = (0, false);
+        let is_copy = |op: &Op| matches!(op, Op::CopyPixels { .. });
+        while let Some(at) = list.ops[start..].iter().position(is_copy).map(|k| start + k) {
+            self.encode_list(&list, &list.ops[start..at], frame, prepared.as_ref(), &mut encoder, attachments, keep);
+            let window = self.read_target(target, encoder, true)?;
+            let Op::CopyPixels { copy, batch } = list.ops[at] else { unreachable!("found above") };
+            let points = list.pixel_copies.get(copy).map(|c| copy_vertices(c, &window)).unwrap_or_default();
+            let first = list.vertices.len() as u32;
+            list.vertices.extend(points);
+            list.ops[at] = Op::Draw(copy_batch(&batch, &window, first, list.vertices.len() as u32 - first));
+            encoder = self.device.create_command_encoder(&Default::default());
+            (start, keep) = (at, true);
+        }
+        Ok((list, prepared, encoder, start, keep))
+    }
+
+    /// Submits `encoder` and reads `target` back (its depth too with `depth`).
+    fn read_target(
+        &self,
+        target: &Target,
+        encoder: wgpu::CommandEncoder,
+        depth: bool,
+    ) -> Result<WindowImage, RenderError> {
+        let color = target.read(&self.device, &self.queue, encoder);
         // A validation error makes the submission fail; report the error itself.
         self.take_error()?;
-        let pixels = pixels?;
-        Ok(Image { width: target.width, height: target.height, pixels })
+        let color = color?;
+        let depth = if depth {
+            let encoder = self.device.create_command_encoder(&Default::default());
+            target.read_depth(&self.device, &self.queue, encoder)?
+        } else {
+            Vec::new()
+        };
+        Ok(WindowImage { width: target.width, height: target.height, color, depth })
     }
 
     /// The first wgpu validation or device error since the last call, if any.
@@ -135,6 +200,32 @@ impl Renderer {
     }
 
     fn encode_onto(&mut self, frame: &Frame, encoder: &mut wgpu::CommandEncoder, target: &Attachments<'_>, keep: bool) {
+        let (mut list, prepared) = self.prepare(frame, encoder, target);
+        if !frame.pixel_copies.is_empty() {
+            // A window's surface cannot be read back: the copies read a headless target of the
+            // same size drawn the same way, and the window draws their points.
+            let headless = Target::new(&self.device, target.size.0, target.size.1, COLOR_FORMAT);
+            let attachments = Attachments {
+                color: &headless.color_view,
+                depth: &headless.depth_view,
+                size: target.size,
+                format: COLOR_FORMAT,
+            };
+            match self.draw_copies(frame, &headless, &attachments) {
+                Ok((resolved, ..)) => list = resolved,
+                Err(e) => eprintln!("gleval: glCopyPixels in a window: {e}"),
+            }
+        }
+        self.encode_list(&list, &list.ops, frame, prepared.as_ref(), encoder, target, keep);
+    }
+
+    /// Assembles a frame, and records the evaluation of the meshes left to the GPU.
+    fn prepare(
+        &mut self,
+        frame: &Frame,
+        encoder: &mut wgpu::CommandEncoder,
+        target: &Attachments<'_>,
+    ) -> (DrawList, Option<PreparedMeshes>) {
         let size = target.size;
         let on_gpu = gpu_mesh_indices(&self.device, frame);
         let list = assemble_frame(frame, &on_gpu);
@@ -147,13 +238,15 @@ impl Renderer {
             meshes.ensure_pipelines(&self.device, frame, &prepared, target.format);
             prepared
         });
-        self.encode_list(&list, frame, prepared.as_ref(), encoder, target, keep);
+        (list, prepared)
     }
 
-    /// Records an assembled list (with its frame's GPU meshes already prepared).
+    /// Records `ops` of an assembled list (with its frame's GPU meshes already prepared).
+    #[allow(clippy::too_many_arguments)]
     fn encode_list(
         &mut self,
         list: &DrawList,
+        ops: &[Op],
         frame: &Frame,
         prepared: Option<&PreparedMeshes>,
         encoder: &mut wgpu::CommandEncoder,
@@ -162,7 +255,7 @@ impl Renderer {
     ) {
         let buffer = vertex_buffer(&self.device, list, target.size);
         let bind_groups = self.frames.texture_bind_groups(&self.device, &self.queue, list, target.size.1);
-        let passes = split_passes(&list.ops, keep);
+        let passes = split_passes(ops, keep);
         let batches = passes.iter().flat_map(|p| &p.draws).filter_map(|item| match item {
             PassItem::Batch(batch) => Some(pipeline_key(batch, target)),
             PassItem::Mesh { .. } => None,

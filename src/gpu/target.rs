@@ -9,6 +9,7 @@ pub(crate) struct Target {
     pub width: u32,
     pub height: u32,
     color: wgpu::Texture,
+    depth: wgpu::Texture,
     pub color_view: wgpu::TextureView,
     pub depth_view: wgpu::TextureView,
 }
@@ -29,10 +30,10 @@ impl Target {
             })
         };
         let color = texture(format, wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::COPY_SRC);
-        let depth = texture(DEPTH_FORMAT, wgpu::TextureUsages::RENDER_ATTACHMENT);
+        let depth = texture(DEPTH_FORMAT, wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::COPY_SRC);
         let color_view = color.create_view(&Default::default());
         let depth_view = depth.create_view(&Default::default());
-        Self { width, height, color, color_view, depth_view }
+        Self { width, height, color, depth, color_view, depth_view }
     }
 
     /// Submits `encoder` with a copy of the colour texture at its end, waits, and returns the
@@ -51,6 +52,41 @@ impl Target {
             read_back(device, queue, encoder, size, |encoder, buffer| self.copy_out(encoder, buffer, padded_row))?;
         let row = self.width as usize * 4;
         Ok(padded.chunks_exact(padded_row as usize).flat_map(|r| r[..row].iter().copied()).collect())
+    }
+
+    /// Submits `encoder` with a copy of the depth texture at its end, waits, and returns the
+    /// depths (32-bit floats), rows top to bottom.
+    pub(crate) fn read_depth(
+        &self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        encoder: wgpu::CommandEncoder,
+    ) -> Result<Vec<f32>, RenderError> {
+        let align = wgpu::COPY_BYTES_PER_ROW_ALIGNMENT;
+        let padded_row = (self.width * 4).div_ceil(align) * align;
+        let size = u64::from(padded_row) * u64::from(self.height);
+        let padded = read_back(device, queue, encoder, size, |encoder, buffer| {
+            encoder.copy_texture_to_buffer(
+                wgpu::TexelCopyTextureInfo {
+                    texture: &self.depth,
+                    mip_level: 0,
+                    origin: wgpu::Origin3d::ZERO,
+                    aspect: wgpu::TextureAspect::DepthOnly,
+                },
+                wgpu::TexelCopyBufferInfo {
+                    buffer,
+                    layout: wgpu::TexelCopyBufferLayout {
+                        offset: 0,
+                        bytes_per_row: Some(padded_row),
+                        rows_per_image: Some(self.height),
+                    },
+                },
+                wgpu::Extent3d { width: self.width, height: self.height, depth_or_array_layers: 1 },
+            );
+        })?;
+        let row = self.width as usize * 4;
+        let bytes = padded.chunks_exact(padded_row as usize).flat_map(|r| r[..row].iter().copied());
+        Ok(bytes.collect::<Vec<u8>>().chunks_exact(4).map(|b| f32::from_ne_bytes([b[0], b[1], b[2], b[3]])).collect())
     }
 
     /// Records a copy of the colour texture into `buffer`, `padded_row` bytes a row.

@@ -127,6 +127,15 @@ pub enum Op {
         /// Its texture, fog and alpha test, as for [`Batch::fragment`].
         fragment: Option<u32>,
     },
+    /// Execute copy `copy` of [`DrawList::pixel_copies`] (`glCopyPixels`): read the buffers as
+    /// drawn so far and draw the copy's points ([`super::pixel_copy`]) with `batch`'s depth test,
+    /// blending and fragment operations (its vertex range is empty until then).
+    CopyPixels {
+        /// Index in [`DrawList::pixel_copies`].
+        copy: usize,
+        /// The state its points are drawn with.
+        batch: Batch,
+    },
 }
 
 /// Everything to rasterise for one frame, in order.
@@ -138,6 +147,8 @@ pub struct DrawList {
     pub ops: Vec<Op>,
     /// The fragment states the batches are drawn with.
     pub fragments: Vec<FragmentState>,
+    /// The `glCopyPixels` calls the ops execute.
+    pub pixel_copies: Vec<crate::gl::PixelCopy>,
 }
 
 /// Assembles a frame, evaluating deferred (GPU) meshes on the CPU.
@@ -182,6 +193,11 @@ pub fn assemble_frame(frame: &Frame, gpu_meshes: &[usize]) -> DrawList {
                     out.primitive(mode, &vertices, state);
                 }
             }
+            Command::CopyPixels(index) => {
+                let Some(copy) = frame.pixel_copies.get(index) else { continue };
+                let Some(state) = frame.states.get(copy.state) else { continue };
+                out.pixel_copy(copy, state);
+            }
         }
     }
     out.list
@@ -199,6 +215,15 @@ impl Assembler {
         if color.is_some() || depth.is_some() {
             self.list.ops.push(Op::Clear { color, depth });
         }
+    }
+
+    /// A `glCopyPixels`: its copy and the batch state its points will be drawn with.
+    fn pixel_copy(&mut self, copy: &crate::gl::PixelCopy, state: &DrawState) {
+        let fragment = self.fragment_index(state, (Smooth::None, None));
+        let (viewport, depth_test, blend) = (state.viewport, state.depth_test, state.blend);
+        let batch = Batch { viewport, depth_test, topology: Topology::Points, first: 0, count: 0, fragment, blend };
+        self.list.pixel_copies.push(copy.clone());
+        self.list.ops.push(Op::CopyPixels { copy: self.list.pixel_copies.len() - 1, batch });
     }
 
     fn primitive(&mut self, mode: GLenum, vertices: &[crate::gl::Vertex], state: &DrawState) {

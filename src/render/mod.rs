@@ -12,6 +12,7 @@ pub(crate) mod compare;
 mod corner;
 mod image;
 mod offset;
+pub mod pixel_copy;
 pub(crate) mod shade;
 mod smooth;
 pub mod soft;

@@ -24,6 +24,10 @@ mod colormap;
 mod colormat;
 #[path = "../../examples/edgeflags.rs"]
 mod edgeflags;
+#[path = "../../examples/copypixels.rs"]
+mod copypixels;
+#[path = "../../examples/copytex.rs"]
+mod copytex;
 #[path = "../../examples/ex1_bezier.rs"]
 mod ex1_bezier;
 #[path = "../../examples/ex2_bspline.rs"]
@@ -52,6 +56,8 @@ mod operations;
 mod outline;
 #[path = "../../examples/picking.rs"]
 pub(crate) mod picking;
+#[path = "../../examples/pixelmap.rs"]
+mod pixelmap;
 #[path = "../../examples/rational.rs"]
 mod rational;
 #[path = "../../examples/rationalmap.rs"]
@@ -145,6 +151,29 @@ fn check_with(name: &str, app: fn() -> App, threshold: impl Fn(f64) -> f64) {
 fn gpu_meshes(app: fn() -> App) -> usize {
     let mut gl = app().with_tessellator(Tessellator::Gpu).record_frame();
     gl.frame().meshes.iter().filter(|m| matches!(m.vertices, MeshVertices::Deferred(_))).count()
+}
+
+/// The pixel path's pictures (issue 26) must be within 0.1% of Mesa's.
+const PIXEL_THRESHOLD: f64 = 0.001;
+
+/// Copied, zoomed (2, 1.5, negative, huge) and overlapping `glCopyPixels`, and a depth copy
+/// (`CopyPixels.c`).
+#[test]
+fn copied_and_zoomed_pixels_match_mesa() {
+    check_with("copypixels", copypixels::app, |_| PIXEL_THRESHOLD);
+}
+
+/// Scale, bias and colour maps on draws, copies and reads, and a colour-index palette
+/// (`PixelMap.c`).
+#[test]
+fn pixel_maps_and_transfer_match_mesa() {
+    check_with("pixelmap", pixelmap::app, |_| PIXEL_THRESHOLD);
+}
+
+/// Textures copied from the window as drawn so far (`CopyTex.c`).
+#[test]
+fn textures_copied_from_the_window_match_mesa() {
+    check_with("copytex", copytex::app, |_| PIXEL_THRESHOLD);
 }
 
 #[test]

@@ -14,6 +14,7 @@ mod gpu_parity;
 mod interactive_demo;
 mod mesa_calls;
 mod picking_demo;
+mod pixel_properties;
 mod properties;
 mod query_properties;
 mod raster_images;

@@ -11,6 +11,8 @@ use std::path::{Path, PathBuf};
 
 #[path = "mesa_calls_queries.rs"]
 mod queries;
+#[path = "mesa_calls_pixels.rs"]
+mod pixels;
 
 fn calls_dir() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/reference/calls")
@@ -331,6 +333,8 @@ impl Runner {
         let mut values: Vec<String> = Vec::new();
         // The feedback token a glBitmap or glDrawPixels writes if it succeeds.
         let mut raster_token = None;
+        // glCopyPixels calls executed by this line (directly or from a list) each write one.
+        let copies = self.gl.frame().pixel_copies.len();
         let gl = &mut self.gl;
         match cmd {
             "map1f" => {
@@ -489,7 +493,10 @@ impl Runner {
                 return;
             }
             other => {
-                if !self.arrays.run(gl, other, &mut a, &mut values) && !queries::run(gl, other, &mut a, &mut values) {
+                if !self.arrays.run(gl, other, &mut a, &mut values)
+                    && !queries::run(gl, other, &mut a, &mut values)
+                    && !pixels::pixel_call(gl, other, &mut a, &mut values)
+                {
                     panic!("unknown command {other}");
                 }
             }
@@ -510,6 +517,9 @@ impl Runner {
             // Feedback mode reports the raster position instead of the pixels drawn.
             self.out.push(token);
             self.collected = self.gl.frame().expanded().primitives.len();
+        }
+        for _ in copies..self.gl.frame().pixel_copies.len() {
+            self.out.extend(raster_feedback(&mut self.gl, "copy_pixel"));
         }
         if cmd == "new_list" || cmd == "end_list" {
             // Mesa buffers what GL_COMPILE_AND_EXECUTE draws until the list ends (its vertex

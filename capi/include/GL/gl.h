@@ -1114,6 +1114,37 @@ GLAPI void GLAPIENTRY glBitmap(GLsizei width, GLsizei height, GLfloat xorig, GLf
 GLAPI void GLAPIENTRY glReadPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum format, GLenum type, GLvoid *pixels);
 GLAPI void GLAPIENTRY glDrawPixels(GLsizei width, GLsizei height, GLenum format, GLenum type, const GLvoid *pixels);
 
+/* The pixel path: transfer, maps, zoom, copies, the textures read from the window, colour index. */
+GLAPI void GLAPIENTRY glPixelZoom(GLfloat xfactor, GLfloat yfactor);
+GLAPI void GLAPIENTRY glPixelTransferf(GLenum pname, GLfloat param);
+GLAPI void GLAPIENTRY glPixelTransferi(GLenum pname, GLint param);
+GLAPI void GLAPIENTRY glPixelMapfv(GLenum map, GLsizei mapsize, const GLfloat *values);
+GLAPI void GLAPIENTRY glPixelMapuiv(GLenum map, GLsizei mapsize, const GLuint *values);
+GLAPI void GLAPIENTRY glPixelMapusv(GLenum map, GLsizei mapsize, const GLushort *values);
+GLAPI void GLAPIENTRY glGetPixelMapfv(GLenum map, GLfloat *values);
+GLAPI void GLAPIENTRY glGetPixelMapuiv(GLenum map, GLuint *values);
+GLAPI void GLAPIENTRY glGetPixelMapusv(GLenum map, GLushort *values);
+GLAPI void GLAPIENTRY glCopyPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum type);
+GLAPI void GLAPIENTRY glCopyTexImage1D(GLenum target, GLint level, GLenum internalformat, GLint x, GLint y, GLsizei width, GLint border);
+GLAPI void GLAPIENTRY glCopyTexImage2D(GLenum target, GLint level, GLenum internalformat, GLint x, GLint y, GLsizei width, GLsizei height, GLint border);
+GLAPI void GLAPIENTRY glCopyTexSubImage1D(GLenum target, GLint level, GLint xoffset, GLint x, GLint y, GLsizei width);
+GLAPI void GLAPIENTRY glCopyTexSubImage2D(GLenum target, GLint level, GLint xoffset, GLint yoffset, GLint x, GLint y, GLsizei width, GLsizei height);
+GLAPI void GLAPIENTRY glTexSubImage1D(GLenum target, GLint level, GLint xoffset, GLsizei width, GLenum format, GLenum type, const GLvoid *pixels);
+GLAPI GLboolean GLAPIENTRY glAreTexturesResident(GLsizei n, const GLuint *textures, GLboolean *residences);
+GLAPI void GLAPIENTRY glPrioritizeTextures(GLsizei n, const GLuint *textures, const GLclampf *priorities);
+GLAPI void GLAPIENTRY glIndexd(GLdouble c);
+GLAPI void GLAPIENTRY glIndexf(GLfloat c);
+GLAPI void GLAPIENTRY glIndexi(GLint c);
+GLAPI void GLAPIENTRY glIndexs(GLshort c);
+GLAPI void GLAPIENTRY glIndexub(GLubyte c);
+GLAPI void GLAPIENTRY glIndexdv(const GLdouble *c);
+GLAPI void GLAPIENTRY glIndexfv(const GLfloat *c);
+GLAPI void GLAPIENTRY glIndexiv(const GLint *c);
+GLAPI void GLAPIENTRY glIndexsv(const GLshort *c);
+GLAPI void GLAPIENTRY glIndexubv(const GLubyte *c);
+GLAPI void GLAPIENTRY glClearIndex(GLfloat c);
+GLAPI void GLAPIENTRY glIndexMask(GLuint mask);
+
 /* Type variants of the per-vertex calls (integers normalised for colours and normals). */
 GLAPI void GLAPIENTRY glColor3b(GLbyte r, GLbyte g, GLbyte b);
 GLAPI void GLAPIENTRY glColor3s(GLshort r, GLshort g, GLshort b);

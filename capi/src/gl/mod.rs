@@ -8,6 +8,7 @@ mod immediate;
 mod lighting;
 mod lists;
 mod matrix;
+mod pixel_transfer;
 mod pixels;
 mod queries;
 mod raster_modes;

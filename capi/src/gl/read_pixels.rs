@@ -5,7 +5,9 @@
 use crate::context::with_gl;
 use crate::memory::array_mut;
 use gleval::gl::types::*;
-use gleval::gl::Frame;
+use gleval::gl::{Frame, WindowImage};
+#[allow(unused_imports)]
+use gleval::render::Image;
 use gleval::render::{soft, Rasterizer, Renderer};
 use std::cell::{Cell, RefCell};
 use std::ffi::c_void;
@@ -27,15 +29,16 @@ fn renderer() -> Option<&'static RefCell<Renderer>> {
     Some(kept)
 }
 
-/// The window's RGBA8 pixels (rows top to bottom) with `frame` drawn; `None` if it cannot be
-/// drawn (the message is printed).
-fn draw(frame: &Frame, width: i32, height: i32) -> Option<Vec<u8>> {
+/// The window's buffers with `frame` drawn; `None` if it cannot be drawn (the message is
+/// printed).
+fn draw(frame: &Frame, width: i32, height: i32) -> Option<WindowImage> {
+    let (width, height) = (width.max(1) as u32, height.max(1) as u32);
     if Rasterizer::from_env() == Rasterizer::Cpu {
-        return Some(soft::render_frame(frame, width.max(1) as u32, height.max(1) as u32).pixels);
+        return Some(soft::render_window(frame, width, height));
     }
     let mut renderer = renderer()?.try_borrow_mut().ok()?;
-    let image = renderer.render_frame(frame, width.max(1) as u32, height.max(1) as u32);
-    image.map_err(|e| eprintln!("gleval: glReadPixels: {e}")).ok().map(|i| i.pixels)
+    let image = renderer.render_window(frame, width, height, true);
+    image.map_err(|e| eprintln!("gleval: glReadPixels: {e}")).ok()
 }
 
 entry! {
@@ -52,7 +55,7 @@ entry! {
             let out = unsafe { array_mut(pixels.cast::<u8>(), len) };
             let (w, h) = (gl.width(), gl.height());
             let draw = |frame: &Frame| match &osmesa {
-                Some(image) => Some(image.pixels.clone()),
+                Some(image) => Some(image.clone()),
                 None => draw(frame, w, h),
             };
             gl.read_pixels((x, y), (width, height), format, type_, draw, out)

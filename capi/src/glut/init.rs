@@ -124,6 +124,8 @@ entry! {
     unsafe fn glutCreateWindow(title: *const c_char) -> c_int {
         let title = if title.is_null() { String::new() } else { unsafe { CStr::from_ptr(title) }.to_string_lossy().into_owned() };
         SETUP.with(|s| s.borrow_mut().title = title);
+        // freeglut on Mesa has no colour-index window to give: its fatal error, status 1.
+        gleval::glut::display_mode::exit_unless_possible(SETUP.with(|s| s.borrow().display_mode));
         // `App` makes contexts as its windows have them (size, display mode, tessellator).
         let mut gl = app_from_setup().record_frame();
         let _ = gl.take_frame();

@@ -7,6 +7,7 @@ use crate::gl::types::GLenum;
 use crate::render::Image;
 
 /// Colour (RGBA8, rows top to bottom) and depth, one value a pixel.
+#[derive(Clone)]
 pub(super) struct Framebuffer {
     pub width: u32,
     pub height: u32,
@@ -59,6 +60,12 @@ impl Framebuffer {
     pub fn into_image(self) -> Image {
         let pixels = self.color.into_iter().flatten().collect();
         Image { width: self.width, height: self.height, pixels }
+    }
+
+    /// A copy of both buffers.
+    pub fn window_image(&self) -> crate::gl::WindowImage {
+        let color = self.color.iter().flatten().copied().collect();
+        crate::gl::WindowImage { width: self.width, height: self.height, color, depth: self.depth.clone() }
     }
 
     /// A copy of the colour buffer as an [`Image`].

@@ -24,7 +24,7 @@ mod tests;
 
 use super::assemble::{assemble, viewport_in_target, Batch, DrawList, Op, Topology};
 use super::Image;
-use crate::gl::Frame;
+use crate::gl::{Frame, WindowImage};
 use fragment::{Fragment, Program, TexSlope};
 use framebuffer::Framebuffer;
 
@@ -33,6 +33,14 @@ use framebuffer::Framebuffer;
 #[must_use]
 pub fn render_frame(frame: &Frame, width: u32, height: u32) -> Image {
     rasterize(&assemble(frame), width, height)
+}
+
+/// [`render_frame`], keeping the depth buffer too: what `glReadPixels` and the copies read.
+#[must_use]
+pub fn render_window(frame: &Frame, width: u32, height: u32) -> WindowImage {
+    let mut canvas = Canvas::new(width, height);
+    canvas.draw_frame(frame);
+    canvas.fb.window_image()
 }
 
 /// Rasterises an assembled list into a `width` × `height` picture that starts as a new
@@ -47,6 +55,7 @@ pub fn rasterize(list: &DrawList, width: u32, height: u32) -> Image {
 
 /// A colour and depth buffer that keeps what was drawn: frames drawn one after another land on
 /// top of each other, as they do in a GL context's framebuffer (an OSMesa buffer, say).
+#[derive(Clone)]
 pub struct Canvas {
     fb: Framebuffer,
 }
@@ -65,8 +74,21 @@ impl Canvas {
                 Op::Clear { color, depth } => self.fb.clear(*color, *depth),
                 Op::Draw(batch) => draw_batch(&mut self.fb, list, batch),
                 Op::GpuMesh { .. } => {}
+                Op::CopyPixels { copy, batch } => {
+                    let Some(copy) = list.pixel_copies.get(*copy) else { continue };
+                    let window = self.fb.window_image();
+                    let points = super::pixel_copy::copy_vertices(copy, &window);
+                    let batch = super::pixel_copy::copy_batch(batch, &window, 0, points.len() as u32);
+                    draw_vertices(&mut self.fb, list, &batch, &points);
+                }
             }
         }
+    }
+
+    /// What the canvas holds, colour and depth.
+    #[must_use]
+    pub fn window_image(&self) -> WindowImage {
+        self.fb.window_image()
     }
 
     /// Draws a recorded frame over what the canvas holds, its meshes evaluated on the CPU.
@@ -82,10 +104,15 @@ impl Canvas {
 }
 
 fn draw_batch(fb: &mut Framebuffer, list: &DrawList, batch: &Batch) {
-    let Some(scissor) = viewport_in_target(batch.viewport, (fb.width, fb.height)) else { return };
-    let program = batch.fragment.and_then(|f| list.fragments.get(f as usize)).map(Program::new);
     let first = batch.first as usize;
     let Some(vertices) = list.vertices.get(first..first + batch.count as usize) else { return };
+    draw_vertices(fb, list, batch, vertices);
+}
+
+/// Draws `vertices` with `batch`'s topology and state (its own range ignored).
+fn draw_vertices(fb: &mut Framebuffer, list: &DrawList, batch: &Batch, vertices: &[super::RasterVertex]) {
+    let Some(scissor) = viewport_in_target(batch.viewport, (fb.width, fb.height)) else { return };
+    let program = batch.fragment.and_then(|f| list.fragments.get(f as usize)).map(Program::new);
     let mut target = Target {
         map: WindowMap::new(batch.viewport, fb.height),
         fb,

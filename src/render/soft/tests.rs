@@ -26,7 +26,7 @@ fn list(topology: Topology, vertices: Vec<RasterVertex>, blend: Option<[u32; 2]>
         fragment: None,
         blend,
     };
-    DrawList { vertices, ops: vec![Op::Draw(batch)], fragments: Vec::new() }
+    DrawList { vertices, ops: vec![Op::Draw(batch)], fragments: Vec::new(), pixel_copies: Vec::new() }
 }
 
 /// The red channel of GL window pixel (x, y).

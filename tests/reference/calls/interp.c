@@ -396,6 +396,7 @@ static void run_typed(void)
 }
 
 #include "queries.inc.c"
+#include "interp_pixels.h"
 
 /* ---------------------------------------------------------------- calls */
 #include "interp_arrays.c"
@@ -690,7 +691,7 @@ static void run_call(const char *c)
         glEnable(GL_TEXTURE_GEN_S);
         glEnable(GL_TEXTURE_GEN_T);
         glEnable(GL_TEXTURE_GEN_R);
-    } else if (!run_arrays_call(c) && !run_queries_call(c)) {
+    } else if (!run_arrays_call(c) && !run_queries_call(c) && !run_pixel_call(c)) {
         die("unknown call", c);
     }
 }

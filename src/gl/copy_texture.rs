@@ -1,0 +1,387 @@
+//! Texture images from the window and the other GL 1.1 texture calls of the pixel path (GL 1.1
+//! spec §3.8.2, §3.8.8; Mesa `main/teximage.c`, `texobj.c`): `glCopyTexImage1D/2D`,
+//! `glCopyTexSubImage1D/2D`, `glTexSubImage1D`, `glAreTexturesResident`,
+//! `glPrioritizeTextures`.
+//!
+//! A copy reads the window as drawn so far, in program order: the context draws what it has
+//! recorded through its reader ([`Gl::set_window_reader`]) when the call runs, and the texels
+//! it reads become an ordinary level (so later frames, `glGetTexImage` and display lists see
+//! them). Colours go through the pixel transfer, as Mesa's copies do. Source pixels outside the
+//! window leave their texels 0 (GL leaves them undefined; Mesa clips the copy).
+
+use super::consts::*;
+use super::lists::ListCommand;
+use super::pixel_commands::PixelCommand;
+use super::pixels::PixelStore;
+use super::texture::{base_format, target_index, TexLevel, MAX_TEXTURE_SIZE};
+
+/// The base format of a `glCopyTexImage` internal format: the named colour formats of
+/// `glTexImage` (Mesa 22 refuses the component counts 1 to 4 here: `GL_INVALID_ENUM`,
+/// measured), and the depth formats, whose texels hold depths (sampled as luminance, the
+/// initial `GL_DEPTH_TEXTURE_MODE`).
+fn copy_base_format(internal: GLenum) -> Option<GLenum> {
+    match internal {
+        1..=4 => None,
+        GL_DEPTH_COMPONENT => Some(GL_DEPTH_COMPONENT),
+        _ => base_format(internal as GLint),
+    }
+}
+use super::types::*;
+use super::window_read::WindowImage;
+use super::Gl;
+
+/// A `glCopyTexImage` call: dimensions (1 or 2), target, level, internal format, the window
+/// rectangle (x, y, width, height) and the border.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct CopyTexImage {
+    pub dims: u8,
+    pub target: GLenum,
+    pub level: GLint,
+    pub internalformat: GLenum,
+    pub rect: [GLint; 4],
+    pub border: GLint,
+}
+
+/// A `glCopyTexSubImage` call: dimensions, target, level, the offset in the level (x, y) and
+/// the window rectangle.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct CopyTexSubImage {
+    pub dims: u8,
+    pub target: GLenum,
+    pub level: GLint,
+    pub offset: [GLint; 2],
+    pub rect: [GLint; 4],
+}
+
+impl Gl {
+    /// `glCopyTexImage2D`: defines level `level` of the bound 2D texture from the window
+    /// rectangle at (`x`, `y`) (see the module docs). Errors, in Mesa's order: inside
+    /// `begin`/`end` → `GL_INVALID_OPERATION`; target → `GL_INVALID_ENUM`; level, border →
+    /// `GL_INVALID_VALUE`; internal format → `GL_INVALID_ENUM`; sizes (negative or over
+    /// [`MAX_TEXTURE_SIZE`]) → `GL_INVALID_VALUE`. Compiled into display lists.
+    #[allow(clippy::too_many_arguments)]
+    pub fn copy_tex_image_2d(
+        &mut self,
+        target: GLenum,
+        level: GLint,
+        internalformat: GLenum,
+        x: GLint,
+        y: GLint,
+        width: GLsizei,
+        height: GLsizei,
+        border: GLint,
+    ) {
+        self.copy_tex_image(CopyTexImage {
+            dims: 2,
+            target,
+            level,
+            internalformat,
+            rect: [x, y, width, height],
+            border,
+        });
+    }
+
+    /// `glCopyTexImage1D`: as [`Gl::copy_tex_image_2d`] for the bound 1D texture (one row).
+    #[allow(clippy::too_many_arguments)]
+    pub fn copy_tex_image_1d(
+        &mut self,
+        target: GLenum,
+        level: GLint,
+        internalformat: GLenum,
+        x: GLint,
+        y: GLint,
+        width: GLsizei,
+        border: GLint,
+    ) {
+        self.copy_tex_image(CopyTexImage { dims: 1, target, level, internalformat, rect: [x, y, width, 1], border });
+    }
+
+    pub(crate) fn copy_tex_image(&mut self, call: CopyTexImage) {
+        if self.compiled(|| ListCommand::Pixels(PixelCommand::CopyTexImage(call))) || self.reject_inside_begin_end() {
+            return;
+        }
+        if target_index(call.target) != Some(usize::from(call.dims - 1)) {
+            return self.set_error(GL_INVALID_ENUM);
+        }
+        let max_level = MAX_TEXTURE_SIZE.ilog2() as GLint;
+        if !(0..=max_level).contains(&call.level) || call.border != 0 {
+            // Mesa takes border 1 in a compatibility context, which gleval's textures lack.
+            return self.set_error(GL_INVALID_VALUE);
+        }
+        let Some(base) = copy_base_format(call.internalformat) else { return self.set_error(GL_INVALID_ENUM) };
+        let [x, y, width, height] = call.rect;
+        if !(0..=MAX_TEXTURE_SIZE).contains(&width) || !(0..=MAX_TEXTURE_SIZE).contains(&height) {
+            return self.set_error(GL_INVALID_VALUE);
+        }
+        let (w, h) = (width as usize, height as usize);
+        let texels = self.window_texels([x, y], (w, h), base == GL_DEPTH_COMPONENT);
+        let base = if base == GL_DEPTH_COMPONENT { GL_LUMINANCE } else { base };
+        let object = self.bound_object_mut(call.dims);
+        let level = call.level as usize;
+        if object.levels.len() <= level {
+            object.levels.resize(level + 1, None);
+            object.formats.resize(level + 1, 0);
+        }
+        object.levels[level] = Some(TexLevel { width: w as u32, height: h as u32, texels });
+        object.formats[level] = base;
+        self.image_changed(call.dims);
+    }
+
+    /// `glCopyTexSubImage2D`: replaces the rectangle at (`xoffset`, `yoffset`) of level `level`
+    /// of the bound 2D texture with the window rectangle at (`x`, `y`). Errors, in Mesa's
+    /// order: inside `begin`/`end` → `GL_INVALID_OPERATION`; target → `GL_INVALID_ENUM`; a level
+    /// not defined → `GL_INVALID_OPERATION`; negative sizes or a rectangle outside the level →
+    /// `GL_INVALID_VALUE`. Compiled into display lists.
+    #[allow(clippy::too_many_arguments)]
+    pub fn copy_tex_sub_image_2d(
+        &mut self,
+        target: GLenum,
+        level: GLint,
+        xoffset: GLint,
+        yoffset: GLint,
+        x: GLint,
+        y: GLint,
+        width: GLsizei,
+        height: GLsizei,
+    ) {
+        let call = CopyTexSubImage { dims: 2, target, level, offset: [xoffset, yoffset], rect: [x, y, width, height] };
+        self.copy_tex_sub_image(call);
+    }
+
+    /// `glCopyTexSubImage1D`: as [`Gl::copy_tex_sub_image_2d`] for the bound 1D texture.
+    pub fn copy_tex_sub_image_1d(
+        &mut self,
+        target: GLenum,
+        level: GLint,
+        xoffset: GLint,
+        x: GLint,
+        y: GLint,
+        width: GLsizei,
+    ) {
+        let call = CopyTexSubImage { dims: 1, target, level, offset: [xoffset, 0], rect: [x, y, width, 1] };
+        self.copy_tex_sub_image(call);
+    }
+
+    pub(crate) fn copy_tex_sub_image(&mut self, call: CopyTexSubImage) {
+        if self.compiled(|| ListCommand::Pixels(PixelCommand::CopyTexSubImage(call))) || self.reject_inside_begin_end()
+        {
+            return;
+        }
+        if target_index(call.target) != Some(usize::from(call.dims - 1)) {
+            return self.set_error(GL_INVALID_ENUM);
+        }
+        let [x, y, width, height] = call.rect;
+        let rect = [call.offset[0], call.offset[1], width, height];
+        let Some((ox, oy, w, h)) = self.sub_image_rect(call.dims, call.level, rect) else { return };
+        let texels = self.window_texels([x, y], (w, h), false);
+        self.replace_texels(call.dims, call.level as usize, (ox, oy, w), &texels);
+    }
+
+    /// The window's `w` × `h` rectangle at (`x`, `y`) as texels, rows from the bottom, through
+    /// the colour transfer (`depth`: its depths through the depth transfer, as luminance); 0
+    /// outside the window (and where the window cannot be read).
+    fn window_texels(&mut self, [x, y]: [GLint; 2], (w, h): (usize, usize), depth: bool) -> Vec<[u8; 4]> {
+        if w == 0 || h == 0 {
+            return Vec::new();
+        }
+        let window = self.read_window().unwrap_or_default();
+        let (transfer, depths) = (self.color_transfer(), self.depth_transfer());
+        let texel = |window: &WindowImage, i: usize, j: usize| {
+            let (wx, wy) = (i64::from(x) + i as i64, i64::from(y) + j as i64);
+            let c = if depth {
+                let Some(d) = window.depth_at(wx, wy) else { return [0; 4] };
+                let d = depths.apply(d);
+                [d, d, d, 1.0]
+            } else {
+                let Some(c) = window.color_at(wx, wy) else { return [0; 4] };
+                transfer.as_ref().map_or(c, |t| t.apply(c))
+            };
+            c.map(|v| (v.clamp(0.0, 1.0) * 255.0).round() as u8)
+        };
+        (0..h).flat_map(|j| (0..w).map(move |i| (i, j))).map(|(i, j)| texel(&window, i, j)).collect()
+    }
+
+    /// `glTexSubImage1D`: as [`Gl::tex_sub_image_2d`] for the bound 1D texture (one row at
+    /// `xoffset`). Compiled into display lists with the client's bytes and the unpack modes of
+    /// compile time.
+    #[allow(clippy::too_many_arguments)]
+    pub fn tex_sub_image_1d<P: bytemuck::Pod>(
+        &mut self,
+        target: GLenum,
+        level: GLint,
+        xoffset: GLint,
+        width: GLsizei,
+        format: GLenum,
+        type_: GLenum,
+        pixels: &[P],
+    ) {
+        let bytes: &[u8] = bytemuck::cast_slice(pixels);
+        let store = self.unpack_store();
+        let call = TexSubImage1D { target, level, xoffset, width, format: (format, type_) };
+        if self.compiled(|| ListCommand::Pixels(PixelCommand::TexSubImage1D(call, store, bytes.to_vec())))
+            || self.reject_inside_begin_end()
+        {
+            return;
+        }
+        self.tex_sub_image(1, target, level, [xoffset, 0, width, 1], (format, type_), bytes);
+    }
+
+    /// Replays a compiled `glTexSubImage1D` with the unpack modes it was compiled with.
+    pub(crate) fn replay_tex_sub_image_1d(&mut self, call: TexSubImage1D, store: PixelStore, bytes: &[u8]) {
+        self.with_unpack_store(store, |gl| {
+            let (format, type_) = call.format;
+            gl.tex_sub_image_1d(call.target, call.level, call.xoffset, call.width, format, type_, bytes);
+        });
+    }
+
+    /// `glAreTexturesResident`: `GL_TRUE` when every name is a texture object (gleval's
+    /// textures are always resident; `residences` is left as it was, as Mesa leaves it). Errors,
+    /// as Mesa: `n` < 0, a name 0 or one that names no object (generated names count) →
+    /// `GL_INVALID_VALUE` and `GL_FALSE`; `textures` shorter than `n` → `GL_INVALID_VALUE`;
+    /// inside `begin`/`end` → `GL_INVALID_OPERATION`. Executed at once, not compiled.
+    pub fn are_textures_resident(
+        &mut self,
+        n: GLsizei,
+        textures: &[GLuint],
+        residences: &mut [GLboolean],
+    ) -> GLboolean {
+        if self.reject_inside_begin_end() {
+            return GL_FALSE;
+        }
+        let Ok(count) = usize::try_from(n) else {
+            self.set_error(GL_INVALID_VALUE);
+            return GL_FALSE;
+        };
+        let _ = residences;
+        let names = textures.get(..count);
+        let known = |name: &GLuint| *name != 0 && self.textures.objects.contains_key(name);
+        if names.is_some_and(|names| names.iter().all(known)) {
+            GL_TRUE
+        } else {
+            self.set_error(GL_INVALID_VALUE);
+            GL_FALSE
+        }
+    }
+
+    /// `glPrioritizeTextures`: each named object's `GL_TEXTURE_PRIORITY`, clamped to [0, 1]
+    /// (names 0 and unknown names are skipped, as in Mesa). `n` < 0, or slices shorter than `n` →
+    /// `GL_INVALID_VALUE`. Compiled into display lists, one pair at a time as Mesa compiles it.
+    pub fn prioritize_textures(&mut self, n: GLsizei, textures: &[GLuint], priorities: &[GLclampf]) {
+        let pairs = || {
+            let count = usize::try_from(n).unwrap_or(0);
+            textures.iter().zip(priorities).take(count).map(|(&t, &p)| (t, p)).collect()
+        };
+        if self.compiled(|| ListCommand::Pixels(PixelCommand::PrioritizeTextures(pairs())))
+            || self.reject_inside_begin_end()
+        {
+            return;
+        }
+        let Ok(count) = usize::try_from(n) else { return self.set_error(GL_INVALID_VALUE) };
+        let (Some(names), Some(values)) = (textures.get(..count), priorities.get(..count)) else {
+            return self.set_error(GL_INVALID_VALUE);
+        };
+        for (name, &priority) in names.iter().zip(values) {
+            if let Some(object) = self.textures.objects.get_mut(name) {
+                object.set_priority(priority);
+            }
+        }
+    }
+}
+
+/// A `glTexSubImage1D` call's arguments but the pixels.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct TexSubImage1D {
+    pub target: GLenum,
+    pub level: GLint,
+    pub xoffset: GLint,
+    pub width: GLsizei,
+    pub format: (GLenum, GLenum),
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A context whose window reads as a 2 × 2 picture: red, green on the bottom row; blue,
+    /// white above.
+    fn gl_with_window() -> Gl {
+        let mut gl = Gl::new(2, 2);
+        gl.set_window_reader(|_, w, h| {
+            let color = [[0, 0, 255, 255], [255, 255, 255, 255], [255, 0, 0, 255], [0, 255, 0, 255]].concat();
+            Some(WindowImage { width: w, height: h, color, depth: Vec::new() })
+        });
+        gl
+    }
+
+    fn level0(gl: &mut Gl, dims: u8) -> TexLevel {
+        gl.bound_object(dims).levels[0].clone().expect("defined")
+    }
+
+    #[test]
+    fn copies_read_the_window_bottom_up_and_clip() {
+        let mut gl = gl_with_window();
+        gl.copy_tex_image_2d(GL_TEXTURE_2D, 0, GL_RGB, 0, 0, 2, 2, 0);
+        assert_eq!(gl.get_error(), GL_NO_ERROR);
+        let level = level0(&mut gl, 2);
+        assert_eq!(level.texels, [[255, 0, 0, 255], [0, 255, 0, 255], [0, 0, 255, 255], [255, 255, 255, 255]]);
+        gl.copy_tex_sub_image_2d(GL_TEXTURE_2D, 0, 1, 0, 1, 1, 1, 1);
+        let level = level0(&mut gl, 2);
+        assert_eq!(level.texels[1], [255, 255, 255, 255]);
+        gl.copy_tex_image_1d(GL_TEXTURE_1D, 0, GL_RGBA, 1, 0, 3, 0);
+        assert_eq!(level0(&mut gl, 1).texels, [[0, 255, 0, 255], [0; 4], [0; 4]], "outside the window: 0");
+        gl.pixel_transferf(GL_RED_SCALE, 0.5);
+        gl.copy_tex_sub_image_1d(GL_TEXTURE_1D, 0, 0, 0, 0, 1);
+        assert_eq!(level0(&mut gl, 1).texels[0], [128, 0, 0, 255], "through the transfer");
+        gl.tex_sub_image_1d(GL_TEXTURE_1D, 0, 2, 1, GL_RGBA, GL_UNSIGNED_BYTE, &[1u8, 2, 3, 4]);
+        assert_eq!(level0(&mut gl, 1).texels[2], [1, 2, 3, 4]);
+        assert_eq!(gl.get_error(), GL_NO_ERROR);
+    }
+
+    #[test]
+    fn copy_errors_in_mesas_order() {
+        let mut gl = gl_with_window();
+        gl.copy_tex_image_2d(GL_TEXTURE_1D, -1, 0x1234, 0, 0, -1, 1, 2);
+        assert_eq!(gl.get_error(), GL_INVALID_ENUM);
+        gl.copy_tex_image_2d(GL_TEXTURE_2D, -1, 0x1234, 0, 0, -1, 1, 0);
+        assert_eq!(gl.get_error(), GL_INVALID_VALUE);
+        gl.copy_tex_image_2d(GL_TEXTURE_2D, 0, 0x1234, 0, 0, -1, 1, 0);
+        assert_eq!(gl.get_error(), GL_INVALID_ENUM);
+        gl.copy_tex_image_2d(GL_TEXTURE_2D, 0, GL_RGB, 0, 0, -1, 1, 0);
+        assert_eq!(gl.get_error(), GL_INVALID_VALUE);
+        gl.copy_tex_sub_image_2d(GL_TEXTURE_2D, 0, 0, 0, 0, 0, 1, 1);
+        assert_eq!(gl.get_error(), GL_INVALID_OPERATION, "no level yet");
+        gl.copy_tex_image_2d(GL_TEXTURE_2D, 0, GL_RGB, 0, 0, 2, 2, 0);
+        gl.copy_tex_sub_image_2d(GL_TEXTURE_2D, 0, 1, 1, 0, 0, 2, 1);
+        assert_eq!(gl.get_error(), GL_INVALID_VALUE, "outside the level");
+        gl.tex_sub_image_1d(GL_TEXTURE_2D, 0, 0, 1, GL_RGB, GL_UNSIGNED_BYTE, &[0u8; 3]);
+        assert_eq!(gl.get_error(), GL_INVALID_ENUM);
+    }
+
+    #[test]
+    fn residency_and_priorities_as_mesa() {
+        let mut gl = Gl::new(2, 2);
+        let mut names = [0; 2];
+        gl.gen_textures(2, &mut names);
+        let mut residences = [7; 2];
+        assert_eq!(gl.are_textures_resident(2, &names, &mut residences), GL_TRUE);
+        assert_eq!(residences, [7, 7], "left as they were");
+        assert_eq!(gl.are_textures_resident(2, &[names[0], 99], &mut residences), GL_FALSE);
+        assert_eq!(gl.get_error(), GL_INVALID_VALUE);
+        assert_eq!(gl.are_textures_resident(1, &[0], &mut residences), GL_FALSE);
+        assert_eq!(gl.get_error(), GL_INVALID_VALUE);
+        gl.bind_texture(GL_TEXTURE_2D, names[1]);
+        let priority = |gl: &mut Gl| {
+            let mut p = [f32::NAN];
+            gl.get_tex_parameterfv(GL_TEXTURE_2D, GL_TEXTURE_PRIORITY, &mut p);
+            p[0]
+        };
+        gl.prioritize_textures(1, &[names[1]], &[0.25]);
+        assert_eq!(priority(&mut gl), 0.25);
+        gl.prioritize_textures(3, &[0, 99, names[1]], &[0.5, 0.5, 2.0]);
+        assert_eq!(priority(&mut gl), 1.0);
+        gl.prioritize_textures(1, &[names[1]], &[-1.0]);
+        assert_eq!(priority(&mut gl), 0.0);
+        gl.prioritize_textures(-1, &[], &[]);
+        assert_eq!(gl.get_error(), GL_INVALID_VALUE);
+    }
+}
