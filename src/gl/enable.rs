@@ -41,6 +41,9 @@ pub(crate) const KNOWN: &[GLenum] = &[
     GL_POLYGON_STIPPLE,
     GL_RESCALE_NORMAL,
     GL_MULTISAMPLE,
+    GL_STENCIL_TEST,
+    GL_COLOR_LOGIC_OP,
+    GL_INDEX_LOGIC_OP,
 ];
 
 impl Caps {

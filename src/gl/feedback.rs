@@ -203,7 +203,7 @@ impl Gl {
                     }
                 }
                 // GL clears only in render mode.
-                Command::Clear { .. } => {}
+                Command::Clear { .. } | Command::Accum { .. } | Command::SwapBuffers => {}
             }
         }
         for (_, token, vertex) in tokens {

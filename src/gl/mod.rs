@@ -6,21 +6,25 @@
 //! slices; a slice shorter than the call needs sets `GL_INVALID_VALUE` instead of reading out of
 //! bounds. Nothing here panics on bad input.
 
+mod accum;
 mod attrib;
 mod binding;
 mod bitmap;
 mod clip;
 pub mod consts;
+mod draw_buffer;
 mod enable;
 mod eval;
 pub mod feedback;
 mod fragment;
+pub mod fragments;
 mod frame;
 mod grid_vertices;
 mod hint;
 mod immediate;
 mod lighting;
 pub(crate) mod lists;
+mod masks;
 mod matrix;
 mod mesh_job;
 mod offset;
@@ -28,6 +32,7 @@ mod pixels;
 mod raster;
 mod raster_pos;
 mod read_pixels;
+mod stencil;
 mod stipple;
 mod texgen;
 mod texture;
@@ -37,6 +42,7 @@ mod vertex;
 
 pub use eval::{MapTarget, Slot};
 pub use fragment::Fog;
+pub use fragments::{BufferConfig, FragmentTests, Stencil};
 pub use frame::{Call, Command, DrawState, Frame, GridMesh, MaterialChange, MeshMode, MeshVertices, Primitive};
 pub use grid_vertices::GridVertices;
 pub use lighting::{Light, Lighting, Material};
@@ -153,6 +159,8 @@ pub struct Gl {
     hints: hint::Hints,
     /// Blending, the alpha test and fog.
     fragment_ops: fragment::FragmentOps,
+    /// Stencil, accumulation, write masks, scissor, logic op, draw and read buffers.
+    fragments: fragments::PerFragment,
     /// How client memory is laid out for images and bitmaps (`glPixelStore`).
     pixel_stores: pixels::PixelStores,
     /// GLU NURBS objects, indexed by their handles: the one import from `gl` into `glu`, since
@@ -203,6 +211,7 @@ impl Gl {
             tex_gen: texgen::TexGen::default(),
             hints: hint::Hints::default(),
             fragment_ops: fragment::FragmentOps::default(),
+            fragments: fragments::PerFragment::new(width, height),
             nurbs: Vec::new(),
         }
     }
@@ -330,6 +339,7 @@ impl Gl {
             polygon_offset: self.enabled_polygon_offset(),
             clip_planes: self.enabled_clip_planes(),
             polygon_stipple: self.enabled_polygon_stipple(),
+            fragment_tests: self.fragment_tests(),
         }
     }
 
@@ -449,6 +459,7 @@ impl Gl {
             .grid_query(pname, out)
             .or_else(|| self.raster_pos_query(pname, out))
             .or_else(|| self.current_query(pname, out))
+            .or_else(|| self.fragments_query(pname, out))
     }
 
     /// How many values `glGet*v(pname)` writes (1 for a name it does not answer, where it

@@ -25,6 +25,7 @@
 mod device;
 mod draw_uniform;
 mod evaluate;
+mod fallback;
 mod frame_raster;
 mod layout;
 mod mesh_raster;

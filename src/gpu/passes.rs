@@ -28,7 +28,7 @@ pub(crate) fn split_passes(ops: &[Op], keep: bool) -> Vec<Pass> {
     let mut passes = vec![Pass { clear_color: start.0, clear_depth: start.1, draws: Vec::new() }];
     for op in ops {
         match *op {
-            Op::Clear { color, depth } => {
+            Op::Clear { color, depth, .. } => {
                 let last = passes.last_mut().expect("at least one pass");
                 if last.draws.is_empty() {
                     last.clear_color = color.or(last.clear_color);
@@ -38,6 +38,8 @@ pub(crate) fn split_passes(ops: &[Op], keep: bool) -> Vec<Pass> {
                 }
             }
             Op::Draw(batch) => passes.last_mut().expect("at least one pass").draws.push(PassItem::Batch(batch)),
+            // Frames with these are drawn by the CPU rasteriser (`fallback.rs`).
+            Op::Accum { .. } | Op::SwapBuffers => {}
             Op::GpuMesh { mesh, fragment } => {
                 passes.last_mut().expect("at least one pass").draws.push(PassItem::Mesh { mesh, fragment })
             }

@@ -87,6 +87,9 @@ impl Renderer {
 
     /// Renders a recorded frame headless and reads it back.
     pub fn render_frame(&mut self, frame: &Frame, width: u32, height: u32) -> Result<Image, RenderError> {
+        if super::fallback::needs_cpu(frame) {
+            return Ok(crate::render::soft::render_frame(frame, width.max(1), height.max(1)));
+        }
         let target = Target::new(&self.device, width.max(1), height.max(1), COLOR_FORMAT);
         let mut encoder = self.device.create_command_encoder(&Default::default());
         let size = (target.width, target.height);

@@ -1,0 +1,75 @@
+//! Per-fragment arithmetic shared by the CPU rasteriser's stages: the stencil operations (GL
+//! 1.1 spec §4.1.4, with GL 1.4's wrapping ones), the logic ops (§4.1.7, table 4.2) and the
+//! conversion of a colour component into the 8-bit buffer.
+
+use crate::gl::consts::*;
+use crate::gl::types::GLenum;
+
+/// GL 1.4's wrapping stencil operations (`GL/glext.h`).
+const GL_INCR_WRAP: GLenum = 0x8507;
+const GL_DECR_WRAP: GLenum = 0x8508;
+
+/// A float colour component in an 8-bit normalised buffer: clamped, rounded to nearest.
+pub(super) fn to_unorm8(c: f32) -> u8 {
+    (c.clamp(0.0, 1.0) * 255.0 + 0.5) as u8
+}
+
+/// The stencil value after operation `op` on `old` with reference `reference` (8 bits:
+/// `GL_INCR` and `GL_DECR` saturate, the wrapping ones wrap).
+pub(super) fn stencil_op(op: GLenum, old: u8, reference: u8) -> u8 {
+    match op {
+        GL_ZERO => 0,
+        GL_REPLACE => reference,
+        GL_INCR => old.saturating_add(1),
+        GL_DECR => old.saturating_sub(1),
+        GL_INVERT => !old,
+        GL_INCR_WRAP => old.wrapping_add(1),
+        GL_DECR_WRAP => old.wrapping_sub(1),
+        _ => old,
+    }
+}
+
+/// Logic op `op` between source `s` and destination `d` bits (GL 1.1 table 4.2).
+pub(super) fn logic_op(op: GLenum, s: u8, d: u8) -> u8 {
+    match op {
+        GL_CLEAR => 0,
+        GL_AND => s & d,
+        GL_AND_REVERSE => s & !d,
+        GL_AND_INVERTED => !s & d,
+        GL_NOOP => d,
+        GL_XOR => s ^ d,
+        GL_OR => s | d,
+        GL_NOR => !(s | d),
+        GL_EQUIV => !(s ^ d),
+        GL_INVERT => !d,
+        GL_OR_REVERSE => s | !d,
+        GL_COPY_INVERTED => !s,
+        GL_OR_INVERTED => !s | d,
+        GL_NAND => !(s & d),
+        GL_SET => 0xFF,
+        _ => s,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Measured on Mesa 22.3 (OSMesa): white XOR (255, 0, 0, 255) is (0, 255, 255, 0);
+    /// COPY_INVERTED of (51, 102, 153, 204) is (204, 153, 102, 51).
+    #[test]
+    fn logic_ops_as_mesa() {
+        assert_eq!([255, 0, 0, 255].map(|d| logic_op(GL_XOR, 255, d)), [0, 255, 255, 0]);
+        assert_eq!([51, 102, 153, 204].map(|s| logic_op(GL_COPY_INVERTED, s, 0)), [204, 153, 102, 51]);
+    }
+
+    #[test]
+    fn stencil_ops_saturate_or_wrap() {
+        assert_eq!(stencil_op(GL_INCR, 255, 0), 255);
+        assert_eq!(stencil_op(GL_INCR_WRAP, 255, 0), 0);
+        assert_eq!(stencil_op(GL_DECR, 0, 0), 0);
+        assert_eq!(stencil_op(GL_DECR_WRAP, 0, 0), 255);
+        assert_eq!(stencil_op(GL_REPLACE, 3, 9), 9);
+        assert_eq!(stencil_op(GL_INVERT, 0x0F, 0), 0xF0);
+    }
+}
