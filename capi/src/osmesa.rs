@@ -9,7 +9,7 @@
 use crate::context::{is_current, make_current, release_if_current};
 use gleval::gl::consts::*;
 use gleval::gl::types::*;
-use gleval::gl::Gl;
+use gleval::gl::{BufferConfig, Gl};
 use gleval::render::soft::Canvas;
 use gleval::render::Image;
 use std::cell::Cell;
@@ -94,13 +94,28 @@ pub(crate) fn flush_current() -> Option<Image> {
     Some(image)
 }
 
+/// The current OSMesa context's stencil buffer (rows top to bottom), brought up to date first;
+/// `None` when no OSMesa context with a buffer is current.
+pub(crate) fn current_stencil() -> Option<Vec<u8>> {
+    flush_current()?;
+    let ctx = CURRENT.with(Cell::get);
+    // SAFETY: as in `flush_current`, which just found it current.
+    let ctx = unsafe { ctx.as_ref() }?;
+    Some(ctx.target.as_ref()?.canvas.stencil().to_vec())
+}
+
 entry! {
-    /// `OSMesaCreateContextExt`: a context in GL's initial state (depth, stencil and
-    /// accumulation depths are not used: gleval's frames always have colour and depth).
+    /// `OSMesaCreateContextExt`: a context in GL's initial state, single-buffered, with an
+    /// 8-bit stencil buffer if `stencil_bits` > 0 and a 16-bit accumulation buffer if
+    /// `accum_bits` > 0, as Mesa makes them (gleval's frames always have a depth buffer).
     fn OSMesaCreateContextExt(
-        format: GLenum, _depth_bits: GLint, _stencil_bits: GLint, _accum_bits: GLint, _sharelist: *mut OSMesaContext,
+        format: GLenum, _depth_bits: GLint, stencil_bits: GLint, accum_bits: GLint, _sharelist: *mut OSMesaContext,
     ) -> *mut OSMesaContext {
-        Box::into_raw(Box::new(OSMesaContext { gl: Gl::new(1, 1), format, target: None }))
+        let mut gl = Gl::new(1, 1);
+        let stencil_bits = if stencil_bits > 0 { 8 } else { 0 };
+        let accum_bits = if accum_bits > 0 { 16 } else { 0 };
+        gl.set_buffer_config(BufferConfig { stencil_bits, accum_bits, double: false });
+        Box::into_raw(Box::new(OSMesaContext { gl, format, target: None }))
     }
 }
 

@@ -25,6 +25,21 @@ pub struct BufferConfig {
     pub double: bool,
 }
 
+impl BufferConfig {
+    /// What freeglut on Mesa 22.3 gives for `glutInitDisplayMode(mode)` (measured under Xvfb
+    /// with llvmpipe): 8 stencil bits with `GLUT_STENCIL` (32), 16 accumulation bits with
+    /// `GLUT_ACCUM` (4), none without; double buffering with `GLUT_DOUBLE` (2).
+    #[must_use]
+    pub fn of_display_mode(mode: u32) -> Self {
+        let has = |bit: u32| mode & bit != 0;
+        Self {
+            stencil_bits: if has(32) { 8 } else { 0 },
+            accum_bits: if has(4) { 16 } else { 0 },
+            double: has(2),
+        }
+    }
+}
+
 impl Default for BufferConfig {
     /// A single-buffered context with a stencil and an accumulation buffer: what a [`Gl::new`]
     /// context has, so that a Rust program gets every buffer without asking.
@@ -50,8 +65,10 @@ pub struct Stencil {
 }
 
 impl Default for Stencil {
+    /// GL's initial state; both masks start as 0xFF in Mesa 22.3 (measured, with or without a
+    /// stencil buffer).
     fn default() -> Self {
-        Self { func: GL_ALWAYS, reference: 0, value_mask: !0, ops: [GL_KEEP; 3], write_mask: !0 }
+        Self { func: GL_ALWAYS, reference: 0, value_mask: 0xFF, ops: [GL_KEEP; 3], write_mask: 0xFF }
     }
 }
 
@@ -85,7 +102,7 @@ impl Default for FragmentTests {
         Self {
             scissor: None,
             stencil: None,
-            stencil_write_mask: !0,
+            stencil_write_mask: 0xFF,
             depth_write: true,
             color_write: [true; 4],
             logic_op: None,
@@ -213,12 +230,12 @@ impl Gl {
         let values = match pname {
             GL_STENCIL_FUNC => one(f64::from(s.func)),
             GL_STENCIL_REF => one(f64::from(s.reference.clamp(0, self.stencil_max() as GLint))),
-            // Mesa reads the masks as GLint (`CONTEXT_INT`): the initial ~0 is −1 in every type.
-            GL_STENCIL_VALUE_MASK => one(f64::from(s.value_mask as GLint)),
+            // Unsigned: a mask above 2³¹ − 1 reads as 2³¹ − 1 in glGetIntegerv (measured).
+            GL_STENCIL_VALUE_MASK => one(f64::from(s.value_mask)),
             GL_STENCIL_FAIL => one(f64::from(s.ops[0])),
             GL_STENCIL_PASS_DEPTH_FAIL => one(f64::from(s.ops[1])),
             GL_STENCIL_PASS_DEPTH_PASS => one(f64::from(s.ops[2])),
-            GL_STENCIL_WRITEMASK => one(f64::from(s.write_mask as GLint)),
+            GL_STENCIL_WRITEMASK => one(f64::from(s.write_mask)),
             GL_STENCIL_CLEAR_VALUE => one(f64::from(f.clear_stencil)),
             GL_STENCIL_BITS => one(f64::from(f.config.stencil_bits)),
             GL_ACCUM_RED_BITS | GL_ACCUM_GREEN_BITS | GL_ACCUM_BLUE_BITS | GL_ACCUM_ALPHA_BITS => {
@@ -301,7 +318,7 @@ mod tests {
         let mut gl = Gl::new(30, 20);
         assert_eq!(int(&mut gl, GL_SCISSOR_BOX), [0, 0, 30, 20]);
         assert_eq!(int(&mut gl, GL_COLOR_WRITEMASK), [1, 1, 1, 1]);
-        assert_eq!(int(&mut gl, GL_STENCIL_VALUE_MASK), [-1]);
+        assert_eq!(int(&mut gl, GL_STENCIL_VALUE_MASK), [255]);
         assert_eq!(int(&mut gl, GL_STENCIL_FUNC), [GL_ALWAYS as i32]);
         assert_eq!(int(&mut gl, GL_LOGIC_OP_MODE), [GL_COPY as i32]);
         assert_eq!(int(&mut gl, GL_DRAW_BUFFER), [GL_FRONT as i32]);

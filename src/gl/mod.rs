@@ -32,6 +32,7 @@ mod pixels;
 mod raster;
 mod raster_pos;
 mod read_pixels;
+mod read_stencil;
 mod stencil;
 mod stipple;
 mod texgen;
@@ -397,7 +398,7 @@ impl Gl {
     /// colours and normals, which map [−1, 1] linearly onto [−2³¹ + 1, 2³¹ − 1], truncated
     /// (GL 1.1 §6.1.2; Mesa `FLOAT_TO_INT`).
     pub fn get_integerv(&mut self, pname: GLenum, params: &mut [GLint]) {
-        if matches!(pname, GL_CURRENT_RASTER_COLOR | GL_CURRENT_COLOR | GL_CURRENT_NORMAL) {
+        if matches!(pname, GL_CURRENT_RASTER_COLOR | GL_CURRENT_COLOR | GL_CURRENT_NORMAL | GL_ACCUM_CLEAR_VALUE) {
             return self.get_converted(pname, params, float_to_int);
         }
         self.get_converted(pname, params, |v| v.round() as GLint);

@@ -5,7 +5,7 @@
 
 use super::device::shader_module;
 use super::layout::RASTER_WGSL;
-use super::raster::RasterPipeline;
+use super::raster::{PipelineTests, RasterPipeline};
 use super::textures::{self, TextureCache};
 use crate::gl::consts::*;
 use crate::gl::types::GLenum;
@@ -13,8 +13,8 @@ use crate::render::assemble::{DrawList, Op, RasterVertex, Topology};
 use std::collections::HashMap;
 use wgpu::util::DeviceExt;
 
-/// Pipeline key: topology, depth function, target format, blend factors.
-pub(crate) type PipelineKey = (Topology, Option<GLenum>, wgpu::TextureFormat, Option<[GLenum; 2]>);
+/// Pipeline key: topology, depth function, target format, blend factors, stencil and masks.
+pub(crate) type PipelineKey = (Topology, Option<GLenum>, wgpu::TextureFormat, Option<[GLenum; 2]>, PipelineTests);
 
 /// The frame rasteriser's shader and its pipelines, made on first use, and the textures it
 /// samples.
@@ -72,7 +72,7 @@ fn make_pipeline(
     device: &wgpu::Device,
     module: &wgpu::ShaderModule,
     layout: &wgpu::PipelineLayout,
-    (topology, depth, format, blend): PipelineKey,
+    (topology, depth, format, blend, tests): PipelineKey,
 ) -> wgpu::RenderPipeline {
     let attributes =
         wgpu::vertex_attr_array![0 => Float32x4, 1 => Float32x4, 2 => Float32x4, 3 => Float32, 4 => Float32x4];
@@ -93,6 +93,7 @@ fn make_pipeline(
         faces: (wgpu::FrontFace::Ccw, None),
         format,
         blend: blend.map(blend_state),
+        tests,
     }
     .build(device)
 }

@@ -12,7 +12,7 @@ use super::draw_uniform::draw_uniform;
 use super::evaluate::{EvaluatedMeshes, Evaluator};
 use super::layout::{GpuDraw, MESH_RASTER_WGSL, VERTEX_BYTES};
 use super::pack::{index_count, PackedJobs};
-use super::raster::RasterPipeline;
+use super::raster::{PipelineTests, RasterPipeline};
 use crate::gl::consts::*;
 use crate::gl::types::GLenum;
 use crate::gl::{DrawState, Frame, MeshMode, MeshVertices};
@@ -22,8 +22,15 @@ use wgpu::util::DeviceExt;
 
 /// Pipeline key: topology, depth function, target format, culling (front face, culled face),
 /// flat shading, blend factors.
-type PipelineKey =
-    (Topology, Option<GLenum>, wgpu::TextureFormat, (wgpu::FrontFace, Option<wgpu::Face>), bool, Option<[GLenum; 2]>);
+type PipelineKey = (
+    Topology,
+    Option<GLenum>,
+    wgpu::TextureFormat,
+    (wgpu::FrontFace, Option<wgpu::Face>),
+    bool,
+    Option<[GLenum; 2]>,
+    PipelineTests,
+);
 
 /// The evaluator and the render pipelines that draw what it writes.
 pub(crate) struct MeshRaster {
@@ -57,9 +64,9 @@ pub(crate) struct PreparedMeshes {
 }
 
 impl PreparedMeshes {
-    /// The GL viewport mesh `index` is drawn in (the renderer scissors to it).
-    pub(crate) fn viewport(&self, frame: &Frame, index: usize) -> Option<[i32; 4]> {
-        self.draws.get(&index).map(|d| frame.states[d.state].viewport)
+    /// The draw state of mesh `index` (the renderer scissors to its viewport and scissor box).
+    pub(crate) fn state<'f>(&self, frame: &'f Frame, index: usize) -> Option<&'f DrawState> {
+        self.draws.get(&index).and_then(|d| frame.states.get(d.state))
     }
 }
 
@@ -232,14 +239,15 @@ fn pipeline_key(draw: &MeshDraw, state: &DrawState, format: wgpu::TextureFormat)
         (Topology::Triangles, Some(_)) => Some(wgpu::Face::Back),
         _ => None,
     };
-    Some((draw.topology, state.depth_test, format, (front, cull), state.shade_model == GL_FLAT, state.blend))
+    let tests = PipelineTests::of(&state.fragment_tests);
+    Some((draw.topology, state.depth_test, format, (front, cull), state.shade_model == GL_FLAT, state.blend, tests))
 }
 
 fn make_pipeline(
     device: &wgpu::Device,
     module: &wgpu::ShaderModule,
     layout: &wgpu::PipelineLayout,
-    (topology, depth, format, faces, flat, blend): PipelineKey,
+    (topology, depth, format, faces, flat, blend, tests): PipelineKey,
 ) -> wgpu::RenderPipeline {
     let attributes = wgpu::vertex_attr_array![0 => Float32x4, 1 => Float32x4, 2 => Float32x4, 3 => Float32x4];
     let vertex = wgpu::VertexBufferLayout {
@@ -260,6 +268,7 @@ fn make_pipeline(
         faces,
         format,
         blend,
+        tests,
     }
     .build(device)
 }

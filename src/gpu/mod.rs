@@ -24,6 +24,7 @@
 
 mod device;
 mod draw_uniform;
+mod clear_quads;
 mod evaluate;
 mod fallback;
 mod frame_raster;

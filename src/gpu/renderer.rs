@@ -12,7 +12,8 @@ use super::device::{first_adapter, request_device, ErrorSlot, Gpu, RenderError};
 use super::evaluate;
 use super::frame_raster::{vertex_buffer, FrameRaster, PipelineKey};
 use super::mesh_raster::{gpu_mesh_indices, MeshRaster, PreparedMeshes};
-use super::passes::{begin_pass, scissor_rect, split_passes, PassItem};
+use super::passes::{begin_pass, draw_rect, split_passes, stencil_reference, PassItem};
+use super::raster::PipelineTests;
 use super::target::Target;
 use crate::gl::Frame;
 use crate::math::BezierPatch;
@@ -163,6 +164,8 @@ impl Renderer {
         target: &Attachments<'_>,
         keep: bool,
     ) {
+        let list = super::clear_quads::clears_as_quads(list, target.size);
+        let list = list.as_ref();
         let buffer = vertex_buffer(&self.device, list, target.size);
         let bind_groups = self.frames.texture_bind_groups(&self.device, &self.queue, list, target.size.1);
         let passes = split_passes(&list.ops, keep);
@@ -172,7 +175,8 @@ impl Renderer {
         });
         self.frames.ensure_pipelines(&self.device, batches);
         for pass in passes {
-            let mut rp = begin_pass(encoder, target.color, target.depth, pass.clear_color, pass.clear_depth);
+            let clears = (pass.clear_depth, pass.clear_stencil);
+            let mut rp = begin_pass(encoder, target.color, target.depth, pass.clear_color, clears);
             for item in &pass.draws {
                 self.draw_item(&mut rp, item, (buffer.as_ref(), &bind_groups), frame, prepared, target);
             }
@@ -192,8 +196,9 @@ impl Renderer {
         match item {
             PassItem::Batch(batch) => {
                 let Some(buffer) = buffer else { return };
-                let Some(scissor) = scissor_rect(batch.viewport, target.size) else { return };
+                let Some(scissor) = draw_rect(batch.viewport, &batch.tests, target.size) else { return };
                 rp.set_scissor_rect(scissor[0], scissor[1], scissor[2], scissor[3]);
+                rp.set_stencil_reference(stencil_reference(&batch.tests));
                 rp.set_pipeline(self.frames.pipeline(pipeline_key(batch, target)));
                 rp.set_bind_group(0, fragment_group(bind_groups, batch.fragment), &[]);
                 rp.set_vertex_buffer(0, buffer.slice(..));
@@ -201,9 +206,11 @@ impl Renderer {
             }
             PassItem::Mesh { mesh, fragment } => {
                 let (Some(prepared), Some(meshes)) = (prepared, &self.meshes) else { return };
-                let Some(viewport) = prepared.viewport(frame, *mesh) else { return };
-                let Some(scissor) = scissor_rect(viewport, target.size) else { return };
+                let Some(state) = prepared.state(frame, *mesh) else { return };
+                let tests = &state.fragment_tests;
+                let Some(scissor) = draw_rect(state.viewport, tests, target.size) else { return };
                 rp.set_scissor_rect(scissor[0], scissor[1], scissor[2], scissor[3]);
+                rp.set_stencil_reference(stencil_reference(tests));
                 let fragment = fragment_group(bind_groups, *fragment);
                 meshes.draw(rp, frame, prepared, (*mesh, fragment), target.format);
             }
@@ -218,7 +225,7 @@ fn fragment_group(bind_groups: &[wgpu::BindGroup], fragment: Option<u32>) -> &wg
 
 /// The frame rasteriser's pipeline for a batch drawn into `target`.
 fn pipeline_key(batch: &Batch, target: &Attachments<'_>) -> PipelineKey {
-    (batch.topology, batch.depth_test, target.format, batch.blend)
+    (batch.topology, batch.depth_test, target.format, batch.blend, PipelineTests::of(&batch.tests))
 }
 
 /// The typed API on the GPU tessellator: each patch over a uniform `segments_u` × `segments_v`

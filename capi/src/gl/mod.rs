@@ -3,6 +3,7 @@
 mod eval;
 mod feedback;
 mod fragment;
+mod fragments;
 mod immediate;
 mod lighting;
 mod lists;

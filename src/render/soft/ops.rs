@@ -9,9 +9,20 @@ use crate::gl::types::GLenum;
 const GL_INCR_WRAP: GLenum = 0x8507;
 const GL_DECR_WRAP: GLenum = 0x8508;
 
-/// A float colour component in an 8-bit normalised buffer: clamped, rounded to nearest.
+/// A float colour component in an 8-bit normalised buffer as Mesa converts it (gallium's
+/// `float_to_ubyte`, which llvmpipe's clears, fragment outputs and `glAccum(GL_RETURN)` share):
+/// c · 255/256 rounded to a float, added to 2¹⁵ so that the float's last 8 mantissa bits hold
+/// the result, rounded to nearest, ties to even. So 0.3 gives 76 and 0.9 gives 230 (measured on
+/// Mesa 22.3), where c · 255 rounded half up gives 77 and 229.
 pub(super) fn to_unorm8(c: f32) -> u8 {
-    (c.clamp(0.0, 1.0) * 255.0 + 0.5) as u8
+    if c.is_nan() || c <= 0.0 {
+        return 0;
+    }
+    if c >= 1.0 {
+        return 255;
+    }
+    let t = c * (255.0 / 256.0) + 32768.0;
+    (t.to_bits() & 0xFF) as u8
 }
 
 /// The stencil value after operation `op` on `old` with reference `reference` (8 bits:
@@ -61,6 +72,13 @@ mod tests {
     fn logic_ops_as_mesa() {
         assert_eq!([255, 0, 0, 255].map(|d| logic_op(GL_XOR, 255, d)), [0, 255, 255, 0]);
         assert_eq!([51, 102, 153, 204].map(|s| logic_op(GL_COPY_INVERTED, s, 0)), [204, 153, 102, 51]);
+    }
+
+    /// Measured on Mesa 22.3 (OSMesa, llvmpipe): clear colours and flat colours 0.1, 0.15, 0.3,
+    /// 0.9 are stored as 26, 38, 76, 230.
+    #[test]
+    fn unorm8_as_mesa() {
+        assert_eq!([0.1, 0.15, 0.3, 0.9, 0.0, 1.0, -1.0, 2.0].map(to_unorm8), [26, 38, 76, 230, 0, 255, 0, 255]);
     }
 
     #[test]

@@ -18,16 +18,20 @@ const SUBPIXEL: f32 = 256.0;
 /// The farthest window coordinate the triangle setup takes, in pixels.
 const WINDOW_LIMIT: f32 = (1 << 20) as f32;
 
-/// The fragment whose vertices carry `weights` (perspective-corrected, summing to 1).
+/// The fragment whose vertices carry `weights` (perspective-corrected, summing to 1), as the
+/// first vertex's values plus the weighted differences to the others: a value equal at every
+/// vertex comes out exactly (a flat colour of 0.9 stays 0.9 and is stored as 230, as llvmpipe's
+/// plane equations give it, where a weighted sum may give 0.8999999 and 229).
 fn mix<const N: usize>(v: &[&RasterVertex; N], weights: [f32; N]) -> Fragment {
-    let mut f = Fragment::default();
-    for (v, w) in v.iter().zip(weights) {
+    let first = v[0];
+    let mut f = Fragment { color: first.color, tex: first.tex, fog: first.fog, aa: first.aa };
+    for (v, w) in v.iter().zip(weights).skip(1) {
         for k in 0..4 {
-            f.color[k] += v.color[k] * w;
-            f.tex[k] += v.tex[k] * w;
-            f.aa[k] += v.aa[k] * w;
+            f.color[k] += (v.color[k] - first.color[k]) * w;
+            f.tex[k] += (v.tex[k] - first.tex[k]) * w;
+            f.aa[k] += (v.aa[k] - first.aa[k]) * w;
         }
-        f.fog += v.fog * w;
+        f.fog += (v.fog - first.fog) * w;
     }
     f
 }
