@@ -23,7 +23,17 @@ const J8: [[f32; 2]; 8] = [
 /// The Red Book's accFrustum without its pixel jitter: the eye moved by (eyedx, eyedy), the
 /// plane at distance `focus` kept in place.
 #[allow(clippy::too_many_arguments)]
-fn acc_frustum(gl: &mut Gl, left: f64, right: f64, bottom: f64, top: f64, near: f64, far: f64, eye: (f64, f64), focus: f64) {
+fn acc_frustum(
+    gl: &mut Gl,
+    left: f64,
+    right: f64,
+    bottom: f64,
+    top: f64,
+    near: f64,
+    far: f64,
+    eye: (f64, f64),
+    focus: f64,
+) {
     let (eyedx, eyedy) = eye;
     let (dx, dy) = (-(eyedx * near / focus), -(eyedy * near / focus));
     gl.matrix_mode(GL_PROJECTION);

@@ -32,11 +32,7 @@ impl BufferConfig {
     #[must_use]
     pub fn of_display_mode(mode: u32) -> Self {
         let has = |bit: u32| mode & bit != 0;
-        Self {
-            stencil_bits: if has(32) { 8 } else { 0 },
-            accum_bits: if has(4) { 16 } else { 0 },
-            double: has(2),
-        }
+        Self { stencil_bits: if has(32) { 8 } else { 0 }, accum_bits: if has(4) { 16 } else { 0 }, double: has(2) }
     }
 }
 

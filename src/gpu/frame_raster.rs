@@ -125,9 +125,18 @@ fn blend_factor(factor: GLenum) -> wgpu::BlendFactor {
     }
 }
 
-/// The list's vertices in one vertex buffer (in the target's clip space), if there are any.
-pub(crate) fn vertex_buffer(device: &wgpu::Device, list: &DrawList, size: (u32, u32)) -> Option<wgpu::Buffer> {
-    let vertices = to_target_space(list, size);
+/// The list's vertices in one vertex buffer (in the target's clip space, upside down with
+/// `flip`), if there are any.
+pub(crate) fn vertex_buffer(
+    device: &wgpu::Device,
+    list: &DrawList,
+    size: (u32, u32),
+    flip: bool,
+) -> Option<wgpu::Buffer> {
+    let mut vertices = to_target_space(list, size);
+    if flip {
+        vertices.iter_mut().for_each(|v| v.clip[1] = -v.clip[1]);
+    }
     (!vertices.is_empty()).then(|| {
         device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
             label: Some("frame vertices"),

@@ -61,6 +61,8 @@ pub(crate) struct PreparedMeshes {
     _uniforms: wgpu::Buffer,
     bind: wgpu::BindGroup,
     draws: HashMap<usize, MeshDraw>,
+    /// Drawn upside down (the renderer's headless frames): windings swap.
+    flip: bool,
 }
 
 impl PreparedMeshes {
@@ -132,11 +134,11 @@ impl MeshRaster {
         encoder: &mut wgpu::CommandEncoder,
         frame: &Frame,
         which: &[usize],
-        size: (u32, u32),
+        (size, flip): ((u32, u32), bool),
     ) -> PreparedMeshes {
         let align = device.limits().min_uniform_buffer_offset_alignment.max(1);
         let stride = (std::mem::size_of::<GpuDraw>() as u32).div_ceil(align) * align;
-        let mut packed = self.pack(frame, which, size, stride);
+        let mut packed = self.pack(frame, which, (size, flip), stride);
         packed.uniforms.resize(packed.uniforms.len().max(stride as usize), 0);
         let buffers = self.evaluator.evaluate(device, queue, encoder, &packed.jobs);
         let uniforms = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
@@ -156,12 +158,12 @@ impl MeshRaster {
                 }),
             }],
         });
-        PreparedMeshes { buffers, _uniforms: uniforms, bind, draws: packed.draws }
+        PreparedMeshes { buffers, _uniforms: uniforms, bind, draws: packed.draws, flip }
     }
 
     /// Packs the meshes `which` of `frame` and their draw uniforms; a mesh whose state is
     /// missing or whose jobs do not pack is left out.
-    fn pack(&self, frame: &Frame, which: &[usize], size: (u32, u32), stride: u32) -> Packed {
+    fn pack(&self, frame: &Frame, which: &[usize], (size, flip): ((u32, u32), bool), stride: u32) -> Packed {
         let mut out =
             Packed { jobs: PackedJobs::new(self.provoking_last), uniforms: Vec::new(), draws: HashMap::new() };
         for &i in which {
@@ -172,7 +174,7 @@ impl MeshRaster {
                 continue;
             }
             let uniform_offset = out.uniforms.len() as u32;
-            let draw = draw_uniform(state, matches!(mesh.mode, MeshMode::Fill | MeshMode::Triangles), size);
+            let draw = draw_uniform(state, matches!(mesh.mode, MeshMode::Fill | MeshMode::Triangles), size, flip);
             out.uniforms.extend_from_slice(bytemuck::bytes_of(&draw));
             out.uniforms.resize((uniform_offset + stride) as usize, 0);
             let draw = MeshDraw {
@@ -197,7 +199,10 @@ impl MeshRaster {
         prepared: &PreparedMeshes,
         format: wgpu::TextureFormat,
     ) {
-        let keys = prepared.draws.values().filter_map(|draw| pipeline_key(draw, &frame.states[draw.state], format));
+        let keys = prepared
+            .draws
+            .values()
+            .filter_map(|draw| pipeline_key(draw, &frame.states[draw.state], format, prepared.flip));
         let (module, layout) = (&self.module, &self.layout);
         super::raster::make_missing(&mut self.pipelines, keys, |key| make_pipeline(device, module, layout, key));
     }
@@ -214,7 +219,7 @@ impl MeshRaster {
     ) {
         let Some(draw) = prepared.draws.get(&index) else { return };
         let state = &frame.states[draw.state];
-        let Some(key) = pipeline_key(draw, state, format) else { return };
+        let Some(key) = pipeline_key(draw, state, format, prepared.flip) else { return };
         let Some(pipeline) = self.pipelines.get(&key) else { return };
         rp.set_pipeline(pipeline);
         rp.set_bind_group(0, &prepared.bind, &[draw.uniform_offset]);
@@ -230,9 +235,10 @@ impl MeshRaster {
 }
 
 /// The pipeline a mesh draws with, or `None` when GL draws nothing (both faces culled). The
-/// front face is always GL's: two-sided lighting reads the facing even without culling.
-fn pipeline_key(draw: &MeshDraw, state: &DrawState, format: wgpu::TextureFormat) -> Option<PipelineKey> {
-    let front = if state.front_face == GL_CW { wgpu::FrontFace::Cw } else { wgpu::FrontFace::Ccw };
+/// front face is always GL's (the other winding in a target drawn upside down): two-sided
+/// lighting reads the facing even without culling.
+fn pipeline_key(draw: &MeshDraw, state: &DrawState, format: wgpu::TextureFormat, flip: bool) -> Option<PipelineKey> {
+    let front = if (state.front_face == GL_CW) != flip { wgpu::FrontFace::Cw } else { wgpu::FrontFace::Ccw };
     let cull = match (draw.topology, state.cull_face) {
         (Topology::Triangles, Some(GL_FRONT_AND_BACK)) => return None,
         (Topology::Triangles, Some(GL_FRONT)) => Some(wgpu::Face::Front),

@@ -40,7 +40,12 @@ pub(crate) fn split_passes(ops: &[Op], keep: bool) -> Vec<Pass> {
                     last.clear_depth = depth.or(last.clear_depth);
                     last.clear_stencil = stencil.or(last.clear_stencil);
                 } else {
-                    passes.push(Pass { clear_color: color, clear_depth: depth, clear_stencil: stencil, draws: Vec::new() });
+                    passes.push(Pass {
+                        clear_color: color,
+                        clear_depth: depth,
+                        clear_stencil: stencil,
+                        draws: Vec::new(),
+                    });
                 }
             }
             Op::Draw(batch) => passes.last_mut().expect("at least one pass").draws.push(PassItem::Batch(batch)),
@@ -87,14 +92,23 @@ pub(crate) fn begin_pass<'e>(
 }
 
 /// Where a draw lands: its viewport's rectangle (see [`scissor_rect`]) within the scissor box
-/// of `tests` when the scissor test is on; `None` when empty.
-pub(crate) fn draw_rect(viewport: [i32; 4], tests: &FragmentTests, size: (u32, u32)) -> Option<[u32; 4]> {
+/// of `tests` when the scissor test is on, in a target drawn upside down with `flip`; `None`
+/// when empty.
+pub(crate) fn draw_rect(viewport: [i32; 4], tests: &FragmentTests, size: (u32, u32), flip: bool) -> Option<[u32; 4]> {
     let [x0, y0, w0, h0] = scissor_rect(viewport, size)?;
-    let Some(b) = tests.scissor else { return Some([x0, y0, w0, h0]) };
-    let [x1, y1, w1, h1] = scissor_rect(b, size)?;
-    let (left, top) = (x0.max(x1), y0.max(y1));
-    let (right, bottom) = ((x0 + w0).min(x1 + w1), (y0 + h0).min(y1 + h1));
-    (right > left && bottom > top).then_some([left, top, right - left, bottom - top])
+    let [left, top, width, height] = match tests.scissor {
+        None => [x0, y0, w0, h0],
+        Some(b) => {
+            let [x1, y1, w1, h1] = scissor_rect(b, size)?;
+            let (left, top) = (x0.max(x1), y0.max(y1));
+            let (right, bottom) = ((x0 + w0).min(x1 + w1), (y0 + h0).min(y1 + h1));
+            if right <= left || bottom <= top {
+                return None;
+            }
+            [left, top, right - left, bottom - top]
+        }
+    };
+    Some(if flip { [left, size.1 - top - height, width, height] } else { [left, top, width, height] })
 }
 
 /// The stencil reference a draw sets: GL's, clamped to the 8-bit buffer's range.

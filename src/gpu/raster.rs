@@ -34,7 +34,8 @@ impl PipelineTests {
     }
 
     fn color_writes(&self) -> wgpu::ColorWrites {
-        let bits = [wgpu::ColorWrites::RED, wgpu::ColorWrites::GREEN, wgpu::ColorWrites::BLUE, wgpu::ColorWrites::ALPHA];
+        let bits =
+            [wgpu::ColorWrites::RED, wgpu::ColorWrites::GREEN, wgpu::ColorWrites::BLUE, wgpu::ColorWrites::ALPHA];
         bits.iter().zip(self.color_write).filter(|(_, on)| *on).fold(wgpu::ColorWrites::empty(), |a, (b, _)| a | *b)
     }
 }
@@ -115,15 +116,16 @@ fn topology(topology: Topology) -> wgpu::PrimitiveTopology {
 /// `glDepthMask` decides the write. The stencil test (§4.1.4) compares the reference (set per
 /// draw) with the stored value, both through the value mask, as wgpu does.
 fn depth_stencil(depth: Option<GLenum>, tests: &PipelineTests) -> wgpu::DepthStencilState {
-    let stencil = tests.stencil.map_or_else(wgpu::StencilState::default, |(func, read_mask, [fail, zfail, pass], write_mask)| {
-        let face = wgpu::StencilFaceState {
-            compare: compare(func),
-            fail_op: stencil_op(fail),
-            depth_fail_op: stencil_op(zfail),
-            pass_op: stencil_op(pass),
-        };
-        wgpu::StencilState { front: face, back: face, read_mask, write_mask }
-    });
+    let stencil =
+        tests.stencil.map_or_else(wgpu::StencilState::default, |(func, read_mask, [fail, zfail, pass], write_mask)| {
+            let face = wgpu::StencilFaceState {
+                compare: compare(func),
+                fail_op: stencil_op(fail),
+                depth_fail_op: stencil_op(zfail),
+                pass_op: stencil_op(pass),
+            };
+            wgpu::StencilState { front: face, back: face, read_mask, write_mask }
+        });
     wgpu::DepthStencilState {
         format: DEPTH_FORMAT,
         depth_write_enabled: Some(depth.is_some() && tests.depth_write),

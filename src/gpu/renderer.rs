@@ -38,12 +38,14 @@ pub struct Renderer {
     errors: ErrorSlot,
 }
 
-/// Where a render goes: colour and depth views of a `size` target whose colour is `format`.
+/// Where a render goes: colour and depth views of a `size` target whose colour is `format`,
+/// drawn upside down with `flip` (see [`Renderer::render_frame`]).
 struct Attachments<'a> {
     color: &'a wgpu::TextureView,
     depth: &'a wgpu::TextureView,
     size: (u32, u32),
     format: wgpu::TextureFormat,
+    flip: bool,
 }
 
 impl Renderer {
@@ -86,7 +88,10 @@ impl Renderer {
         }
     }
 
-    /// Renders a recorded frame headless and reads it back.
+    /// Renders a recorded frame headless and reads it back. The target is drawn upside down
+    /// (GL's bottom row first) and read back the right way up: Vulkan's top-left fill rule then
+    /// includes the pixels on a triangle's left and bottom edges in GL's window, llvmpipe's rule
+    /// for GL (measured on Mesa 22.3; the CPU rasteriser's too).
     pub fn render_frame(&mut self, frame: &Frame, width: u32, height: u32) -> Result<Image, RenderError> {
         if super::fallback::needs_cpu(frame) {
             return Ok(crate::render::soft::render_frame(frame, width.max(1), height.max(1)));
@@ -94,8 +99,15 @@ impl Renderer {
         let target = Target::new(&self.device, width.max(1), height.max(1), COLOR_FORMAT);
         let mut encoder = self.device.create_command_encoder(&Default::default());
         let size = (target.width, target.height);
-        self.encode(frame, &mut encoder, &target.color_view, &target.depth_view, size, COLOR_FORMAT);
-        let pixels = target.read(&self.device, &self.queue, encoder);
+        let attachments = Attachments {
+            color: &target.color_view,
+            depth: &target.depth_view,
+            size,
+            format: COLOR_FORMAT,
+            flip: true,
+        };
+        self.encode_onto(frame, &mut encoder, &attachments, false);
+        let pixels = target.read(&self.device, &self.queue, encoder, true);
         // A validation error makes the submission fail; report the error itself.
         self.take_error()?;
         let pixels = pixels?;
@@ -119,7 +131,7 @@ impl Renderer {
         size: (u32, u32),
         format: wgpu::TextureFormat,
     ) {
-        let target = Attachments { color, depth, size, format };
+        let target = Attachments { color, depth, size, format, flip: false };
         self.encode_onto(frame, encoder, &target, false);
     }
 
@@ -134,7 +146,7 @@ impl Renderer {
         size: (u32, u32),
         format: wgpu::TextureFormat,
     ) {
-        let target = Attachments { color, depth, size, format };
+        let target = Attachments { color, depth, size, format, flip: false };
         self.encode_onto(frame, encoder, &target, true);
     }
 
@@ -147,7 +159,7 @@ impl Renderer {
             let texture_layout = self.frames.texture_layout();
             let meshes =
                 self.meshes.get_or_insert_with(|| MeshRaster::new(&self.device, texture_layout, provoking_last));
-            let prepared = meshes.prepare(&self.device, &self.queue, encoder, frame, &on_gpu, size);
+            let prepared = meshes.prepare(&self.device, &self.queue, encoder, frame, &on_gpu, (size, target.flip));
             meshes.ensure_pipelines(&self.device, frame, &prepared, target.format);
             prepared
         });
@@ -166,8 +178,10 @@ impl Renderer {
     ) {
         let list = super::clear_quads::clears_as_quads(list, target.size);
         let list = list.as_ref();
-        let buffer = vertex_buffer(&self.device, list, target.size);
-        let bind_groups = self.frames.texture_bind_groups(&self.device, &self.queue, list, target.size.1);
+        let buffer = vertex_buffer(&self.device, list, target.size, target.flip);
+        // A height of 0 tells the polygon stipple that rows are GL's (`fragment.wgsl`).
+        let height = if target.flip { 0 } else { target.size.1 };
+        let bind_groups = self.frames.texture_bind_groups(&self.device, &self.queue, list, height);
         let passes = split_passes(&list.ops, keep);
         let batches = passes.iter().flat_map(|p| &p.draws).filter_map(|item| match item {
             PassItem::Batch(batch) => Some(pipeline_key(batch, target)),
@@ -196,7 +210,7 @@ impl Renderer {
         match item {
             PassItem::Batch(batch) => {
                 let Some(buffer) = buffer else { return };
-                let Some(scissor) = draw_rect(batch.viewport, &batch.tests, target.size) else { return };
+                let Some(scissor) = draw_rect(batch.viewport, &batch.tests, target.size, target.flip) else { return };
                 rp.set_scissor_rect(scissor[0], scissor[1], scissor[2], scissor[3]);
                 rp.set_stencil_reference(stencil_reference(&batch.tests));
                 rp.set_pipeline(self.frames.pipeline(pipeline_key(batch, target)));
@@ -208,7 +222,7 @@ impl Renderer {
                 let (Some(prepared), Some(meshes)) = (prepared, &self.meshes) else { return };
                 let Some(state) = prepared.state(frame, *mesh) else { return };
                 let tests = &state.fragment_tests;
-                let Some(scissor) = draw_rect(state.viewport, tests, target.size) else { return };
+                let Some(scissor) = draw_rect(state.viewport, tests, target.size, target.flip) else { return };
                 rp.set_scissor_rect(scissor[0], scissor[1], scissor[2], scissor[3]);
                 rp.set_stencil_reference(stencil_reference(tests));
                 let fragment = fragment_group(bind_groups, *fragment);

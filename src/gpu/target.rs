@@ -36,12 +36,14 @@ impl Target {
     }
 
     /// Submits `encoder` with a copy of the colour texture at its end, waits, and returns the
-    /// pixels, rows top to bottom, without row padding.
+    /// pixels, rows top to bottom, without row padding (a texture drawn upside down, `flip`, is
+    /// read from its last row up).
     pub(crate) fn read(
         &self,
         device: &wgpu::Device,
         queue: &wgpu::Queue,
         encoder: wgpu::CommandEncoder,
+        flip: bool,
     ) -> Result<Vec<u8>, RenderError> {
         // wgpu copies rows at a multiple of 256 bytes.
         let align = wgpu::COPY_BYTES_PER_ROW_ALIGNMENT;
@@ -50,7 +52,8 @@ impl Target {
         let padded =
             read_back(device, queue, encoder, size, |encoder, buffer| self.copy_out(encoder, buffer, padded_row))?;
         let row = self.width as usize * 4;
-        Ok(padded.chunks_exact(padded_row as usize).flat_map(|r| r[..row].iter().copied()).collect())
+        let rows = padded.chunks_exact(padded_row as usize).map(|r| &r[..row]);
+        Ok(if flip { rows.rev().flatten().copied().collect() } else { rows.flatten().copied().collect() })
     }
 
     /// Records a copy of the colour texture into `buffer`, `padded_row` bytes a row.
