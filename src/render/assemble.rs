@@ -408,7 +408,13 @@ impl PrimitiveContext<'_, '_> {
         }
         let [_, _, vw, vh] = self.state.viewport;
         let (hx, hy) = (size / vw.max(1) as f32 * p.w, size / vh.max(1) as f32 * p.w);
-        let corner = |dx: f32, dy: f32| Corner { clip: p + Vec4::new(dx * hx, dy * hy, 0.0, 0.0), ..c };
+        // llvmpipe's wide points break ties the other way from its triangles: a square edge
+        // through a row of pixel centres takes the row above it in GL's window, not the one
+        // below (measured on Mesa 22.3: a 5-pixel point at window y = 100 fills rows 98..102).
+        // Moving the square up by one sub-pixel step (1/256, the rasterisers' precision) makes
+        // both rasterisers do the same.
+        let up = 2.0 / 256.0 / vh.max(1) as f32 * p.w;
+        let corner = |dx: f32, dy: f32| Corner { clip: p + Vec4::new(dx * hx, dy * hy + up, 0.0, 0.0), ..c };
         let (a, b, cc, d) = (corner(-1.0, -1.0), corner(1.0, -1.0), corner(1.0, 1.0), corner(-1.0, 1.0));
         self.out.push(self.state, Topology::Triangles, &[a, b, cc, a, cc, d]);
     }
