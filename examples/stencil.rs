@@ -36,7 +36,8 @@ fn disc(gl: &mut Gl, x: f32, y: f32, r: f32) {
     gl.begin(GL_TRIANGLE_FAN);
     gl.vertex2f(x, y);
     for i in 0..=32 {
-        let a = 6.283_185_3_f32 * i as f32 / 32.0;
+        // The C program's 6.2831853f is this float.
+        let a = std::f32::consts::TAU * i as f32 / 32.0;
         gl.vertex2f(x + r * a.cos(), y + r * a.sin());
     }
     gl.end();

@@ -366,6 +366,9 @@ fn check_fragments(name: &str, app: fn() -> App, min_identical: f64) {
     }
     println!("{name}: {:.3}% of pixels identical to Mesa's (CPU rasteriser)", same * 100.0);
     assert!(same >= min_identical, "{name}: only {:.3}% of pixels identical", same * 100.0);
+    if let Some(wgpu) = render(app().with_tessellator(Tessellator::Cpu).with_rasterizer(Rasterizer::Wgpu)) {
+        println!("{name}: {:.3}% of pixels identical to Mesa's (wgpu)", identical(&reference, &wgpu) * 100.0);
+    }
 }
 
 #[test]

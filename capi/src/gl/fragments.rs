@@ -1,8 +1,6 @@
 //! The stencil and accumulation buffers, write masks, the scissor box, the logic op and the
 //! draw and read buffers.
 
-use crate::context::with_gl;
-
 use gleval::gl::types::*;
 
 forward! {
