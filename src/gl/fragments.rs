@@ -1,7 +1,7 @@
 //! The per-fragment stages after the fragment's colour and the buffers they write (GL 1.1
 //! spec §4.1–4.2): the scissor test, the stencil test, the depth buffer's write mask, the colour
 //! write mask, the logic op, which colour buffers are drawn and read (front, back), and the
-//! accumulation buffer. The values live in [`PerFragment`]; a recorded primitive's
+//! accumulation buffer. The values live in `PerFragment`; a recorded primitive's
 //! [`DrawState`](super::DrawState) carries them as [`FragmentTests`], and both rasterisers apply
 //! them. The calls are in `stencil.rs`, `accum.rs`, `masks.rs` and `draw_buffer.rs`; this file
 //! holds their shared state, their display-list record, their attribute groups and their
