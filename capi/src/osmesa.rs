@@ -128,7 +128,8 @@ entry! {
 
 entry! {
     /// `OSMesaMakeCurrent`: makes `ctx` current for a `width` × `height` buffer of `type`
-    /// pixels; the first time, the viewport becomes the whole buffer, as GL sets it. A new
+    /// pixels; the first time, the viewport and the scissor box become the whole buffer, as GL
+    /// sets them. A new
     /// buffer's framebuffer starts transparent black, and each flush copies it into the
     /// buffer. Returns
     /// `GL_TRUE`, or `GL_FALSE` for a NULL context or buffer or a size that is not positive.
@@ -145,7 +146,10 @@ entry! {
         let first = context.gl.width() == 1 && context.gl.height() == 1;
         context.gl.set_window_size(width, height);
         if first {
+            // GL's initial viewport and scissor box are the drawable's, set when the context is
+            // first made current.
             context.gl.viewport(0, 0, width, height);
+            context.gl.scissor(0, 0, width, height);
         }
         let (w, h) = (width as usize, height as usize);
         // Mesa's framebuffer starts transparent black whatever the buffer held, is copied
