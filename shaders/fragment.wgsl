@@ -32,6 +32,7 @@ struct Fragment {
     // 1 with a polygon stipple (GL 1.1 §3.5.6): row y of the window (from the bottom, modulo
     // 32) keeps the fragments of column x where bit x is set.
     stipple: u32,
+    // The target's height in pixels; 0 for a target drawn upside down (see `stipple_keeps`).
     height: u32,
     pad2: u32,
     pad3: u32,
@@ -70,10 +71,12 @@ fn inside_border(coord: vec2<f32>) -> f32 {
 }
 
 // Whether the polygon stipple keeps the fragment at framebuffer position `p` (y down, pixel
-// centres at +0.5): GL's window row is height − 1 − ⌊y⌋.
+// centres at +0.5): GL's window row is height − 1 − ⌊y⌋, or ⌊y⌋ itself in a target drawn upside
+// down (a height of 0: the renderer's headless frames, rows in GL's order).
 fn stipple_keeps(p: vec2<f32>) -> bool {
     let x = u32(p.x) % 32u;
-    let y = (env.height - 1u - min(u32(p.y), env.height - 1u)) % 32u;
+    let down = env.height - 1u - min(u32(p.y), max(env.height, 1u) - 1u);
+    let y = select(down, u32(p.y), env.height == 0u) % 32u;
     let row = env.stipple_rows[y / 4u][y % 4u];
     return ((row >> x) & 1u) != 0u;
 }

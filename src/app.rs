@@ -423,6 +423,7 @@ impl App {
         let mut gl = Gl::new(self.width, self.height);
         gl.set_tessellator(self.tessellator);
         gl.glut.display_mode = self.display_mode;
+        gl.set_buffer_config(crate::gl::BufferConfig::of_display_mode(self.display_mode));
         gl.glut.init_size = (self.width, self.height);
         gl.set_window_reader(window_reader(self.rasterizer()));
         gl

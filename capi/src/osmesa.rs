@@ -9,7 +9,7 @@
 use crate::context::{is_current, make_current, release_if_current};
 use gleval::gl::consts::*;
 use gleval::gl::types::*;
-use gleval::gl::{Frame, Gl, WindowImage};
+use gleval::gl::{BufferConfig, Frame, Gl, WindowImage};
 use gleval::render::soft::Canvas;
 use gleval::render::Image;
 use std::cell::Cell;
@@ -111,14 +111,28 @@ fn read_canvas(frame: &Frame, _width: u32, _height: u32) -> Option<WindowImage> 
     Some(canvas.window_image())
 }
 
+/// The current OSMesa context's stencil buffer (rows top to bottom), brought up to date first;
+/// `None` when no OSMesa context with a buffer is current.
+pub(crate) fn current_stencil() -> Option<Vec<u8>> {
+    flush_current()?;
+    let ctx = CURRENT.with(Cell::get);
+    // SAFETY: as in `flush_current`, which just found it current.
+    let ctx = unsafe { ctx.as_ref() }?;
+    Some(ctx.target.as_ref()?.canvas.stencil().to_vec())
+}
+
 entry! {
-    /// `OSMesaCreateContextExt`: a context in GL's initial state (depth, stencil and
-    /// accumulation depths are not used: gleval's frames always have colour and depth).
+    /// `OSMesaCreateContextExt`: a context in GL's initial state, single-buffered, with an
+    /// 8-bit stencil buffer if `stencil_bits` > 0 and a 16-bit accumulation buffer if
+    /// `accum_bits` > 0, as Mesa makes them (gleval's frames always have a depth buffer).
     fn OSMesaCreateContextExt(
-        format: GLenum, _depth_bits: GLint, _stencil_bits: GLint, _accum_bits: GLint, _sharelist: *mut OSMesaContext,
+        format: GLenum, _depth_bits: GLint, stencil_bits: GLint, accum_bits: GLint, _sharelist: *mut OSMesaContext,
     ) -> *mut OSMesaContext {
         let mut gl = Gl::new(1, 1);
         gl.set_window_reader(read_canvas);
+        let stencil_bits = if stencil_bits > 0 { 8 } else { 0 };
+        let accum_bits = if accum_bits > 0 { 16 } else { 0 };
+        gl.set_buffer_config(BufferConfig { stencil_bits, accum_bits, double: false });
         Box::into_raw(Box::new(OSMesaContext { gl, format, target: None }))
     }
 }
@@ -132,7 +146,8 @@ entry! {
 
 entry! {
     /// `OSMesaMakeCurrent`: makes `ctx` current for a `width` × `height` buffer of `type`
-    /// pixels; the first time, the viewport becomes the whole buffer, as GL sets it. A new
+    /// pixels; the first time, the viewport and the scissor box become the whole buffer, as GL
+    /// sets them. A new
     /// buffer's framebuffer starts transparent black, and each flush copies it into the
     /// buffer. Returns
     /// `GL_TRUE`, or `GL_FALSE` for a NULL context or buffer or a size that is not positive.
@@ -149,7 +164,10 @@ entry! {
         let first = context.gl.width() == 1 && context.gl.height() == 1;
         context.gl.set_window_size(width, height);
         if first {
+            // GL's initial viewport and scissor box are the drawable's, set when the context is
+            // first made current.
             context.gl.viewport(0, 0, width, height);
+            context.gl.scissor(0, 0, width, height);
         }
         let (w, h) = (width as usize, height as usize);
         // Mesa's framebuffer starts transparent black whatever the buffer held, is copied

@@ -213,8 +213,29 @@ static void query_call(void) {
     }
 }
 
+/* Stencil, accumulation, masks, scissor, logic op, draw/read buffers, stencil reads: any values. */
+static void fragment_call(void) {
+    static const GLenum funcs[] = {GL_NEVER, GL_LESS, GL_ALWAYS, GL_NOTEQUAL, 0x1234};
+    static const GLenum ops[] = {GL_KEEP, GL_ZERO, GL_REPLACE, GL_INCR, GL_DECR, GL_INVERT, 0x8507, 0x8508, 0x1234};
+    static const GLenum accums[] = {GL_ACCUM, GL_LOAD, GL_ADD, GL_MULT, GL_RETURN, 0x1234};
+    static const GLenum buffers[] = {GL_NONE, GL_FRONT, GL_BACK, GL_FRONT_AND_BACK, GL_RIGHT, GL_AUX0, 0x1234};
+    static const GLenum fcaps[] = {GL_STENCIL_TEST, GL_SCISSOR_TEST, GL_COLOR_LOGIC_OP, GL_POLYGON_SMOOTH};
+    switch (pick(8)) {
+    case 0: glStencilFunc(ANY(funcs), ANY(grids), (GLuint)ANY(grids)); glStencilOp(ANY(ops), ANY(ops), ANY(ops)); break;
+    case 1: glStencilMask((GLuint)ANY(grids)); glClearStencil(ANY(grids)); glClear(GL_STENCIL_BUFFER_BIT); break;
+    case 2: glAccum(ANY(accums), f()); glClearAccum(f(), f(), f(), f()); break;
+    case 3: glDepthMask((GLboolean)pick(3)); glColorMask((GLboolean)pick(2), 1, (GLboolean)pick(3), 0); break;
+    case 4: glScissor(ANY(grids), ANY(small), ANY(grids), ANY(small)); glLogicOp(GL_CLEAR + pick(18) - 1); break;
+    case 5: glDrawBuffer(ANY(buffers)); glReadBuffer(ANY(buffers)); break;
+    case 6: if (pick(2)) glEnable(ANY(fcaps)); else glDisable(ANY(fcaps)); break;
+    default: glReadPixels(ANY(small), ANY(small), ANY(small), ANY(small), GL_STENCIL_INDEX,
+                          pick(2) ? GL_UNSIGNED_BYTE : GL_FLOAT, pick(4) ? (void *)buf : NULL); break;
+    }
+}
+
 static void state_call(void) {
-    switch (pick(14)) {
+    switch (pick(15)) {
+    case 13: fragment_call(); break;
     case 0: glEnable(ANY(caps)); break;
     case 1: glDisable(ANY(caps)); break;
     case 2: glBegin(ANY(modes)); break;

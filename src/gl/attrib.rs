@@ -91,6 +91,7 @@ struct Saved {
     list_base: GLuint,
     texture: super::texture::TextureAttrib,
     hints: super::hint::Hints,
+    fragments: super::fragments::PerFragment,
     /// (capability, on) for every enable a group of the mask files.
     enables: Vec<(GLenum, bool)>,
     /// The pixel mode group and the colour-index values of the current and colour-buffer groups.
@@ -105,7 +106,7 @@ pub(crate) struct AttribStack {
 
 /// The enables the groups of `mask` save (`GL_ENABLE_BIT`: every capability).
 fn enables_of(mask: GLbitfield) -> Vec<GLenum> {
-    let groups: [(GLbitfield, &[GLenum]); 9] = [
+    let groups: [(GLbitfield, &[GLenum]); 12] = [
         (GL_POINT_BIT, POINT_ENABLES),
         (GL_LINE_BIT, LINE_ENABLES),
         (GL_POLYGON_BIT, POLYGON_ENABLES),
@@ -115,6 +116,9 @@ fn enables_of(mask: GLbitfield) -> Vec<GLenum> {
         (GL_TRANSFORM_BIT, TRANSFORM_ENABLES),
         (GL_COLOR_BUFFER_BIT, COLOR_ENABLES),
         (GL_TEXTURE_BIT, TEXTURE_ENABLES),
+        (GL_STENCIL_BUFFER_BIT, super::fragments::STENCIL_ENABLES),
+        (GL_SCISSOR_BIT, super::fragments::SCISSOR_ENABLES),
+        (GL_COLOR_BUFFER_BIT, super::fragments::COLOR_LOGIC_ENABLES),
     ];
     let all = mask & GL_ENABLE_BIT != 0;
     let mut caps: Vec<GLenum> =
@@ -171,6 +175,7 @@ impl Gl {
             list_base: self.list_base_value(),
             texture: self.texture_attrib(),
             hints: self.hints,
+            fragments: self.fragments_attrib(),
             enables,
             pixels: self.pixel_attrib(),
         };
@@ -249,6 +254,7 @@ impl Gl {
         if has(GL_TEXTURE_BIT) {
             self.restore_texture_attrib(saved.texture);
         }
+        self.restore_fragments(mask, &saved.fragments);
         if let Some(eval) = saved.eval {
             // GL_ENABLE_BIT alone restores the map enables and GL_AUTO_NORMAL, not the grids.
             let eval = if has(GL_EVAL_BIT) { eval } else { eval.enables_with_grids_of(&self.eval.attrib()) };

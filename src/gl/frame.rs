@@ -3,6 +3,7 @@
 //! Tests read it; the renderer draws it.
 
 use super::fragment::Fog;
+use super::fragments::FragmentTests;
 use super::lighting::Lighting;
 use super::offset::PolygonOffset;
 use super::texture::BoundTexture;
@@ -89,6 +90,9 @@ pub struct DrawState {
     /// `glPolygonStipple`'s mask when `GL_POLYGON_STIPPLE` is enabled: row y, bit x for window
     /// pixel (x, y) modulo 32.
     pub polygon_stipple: Option<[u32; 32]>,
+    /// The scissor and stencil tests, the write masks, the logic op and the colour buffers
+    /// drawn (`gl/fragments.rs`).
+    pub fragment_tests: FragmentTests,
 }
 
 impl DrawState {
@@ -124,7 +128,27 @@ pub enum Command {
         color: [f32; 4],
         /// The clear depth.
         depth: f32,
+        /// The clear stencil value (`glClearStencil`).
+        stencil: i32,
+        /// The accumulation buffer's clear value (`glClearAccum`).
+        accum: [f32; 4],
+        /// The scissor box, the write masks and the colour buffers the clear reaches.
+        tests: FragmentTests,
     },
+    /// `glAccum(op, value)` over the scissor box of `tests`, reading the colour buffer `read`
+    /// (front or back bit) and returning into `tests`' draw buffers through its colour mask.
+    Accum {
+        /// `GL_ACCUM`, `GL_LOAD`, `GL_ADD`, `GL_MULT` or `GL_RETURN`.
+        op: GLenum,
+        /// The operation's value.
+        value: f32,
+        /// Scissor, colour mask and draw buffers.
+        tests: FragmentTests,
+        /// The buffer `GL_ACCUM` and `GL_LOAD` read (`FRONT_BUFFER` or `BACK_BUFFER`).
+        read: u8,
+    },
+    /// `glutSwapBuffers`: the back buffer becomes the front one (a double-buffered context).
+    SwapBuffers,
     /// Draw primitive number `n` of [`Frame::primitives`].
     Draw(usize),
     /// Draw mesh number `n` of [`Frame::meshes`].
@@ -314,7 +338,9 @@ impl Frame {
         };
         for command in &self.commands {
             match *command {
-                Command::Clear { .. } | Command::CopyPixels(_) => out.commands.push(*command),
+                Command::Clear { .. } | Command::CopyPixels(_) | Command::Accum { .. } | Command::SwapBuffers => {
+                    out.commands.push(*command)
+                }
                 Command::Draw(i) => {
                     let p = self.primitives[i];
                     let first = out.vertices.len();

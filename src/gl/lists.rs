@@ -155,6 +155,8 @@ pub(crate) enum ListCommand {
     PassThrough(GLfloat),
     /// The pixel path's calls (`pixel_commands.rs`).
     Pixels(super::pixel_commands::PixelCommand),
+    /// The stencil, accumulation, mask, scissor, logic-op and buffer calls (`gl/fragments.rs`).
+    Fragment(super::fragments::FragmentCall),
 }
 
 /// A list being compiled.
@@ -479,6 +481,7 @@ impl Gl {
             C::Fog(pname, params) => self.fogfv(*pname, params),
             C::PushAttrib(mask) => self.push_attrib(*mask),
             C::PopAttrib => self.pop_attrib(),
+            C::Fragment(call) => self.replay_fragment_call(*call),
             C::EmitVertex(v) => self.emit_listed_vertex(*v),
             C::ScatteredMesh(jobs, triangles) => self.record_scattered_mesh(jobs.clone(), triangles.clone()),
             C::RasterPos([x, y, z, w]) => self.raster_pos4f(*x, *y, *z, *w),

@@ -7,6 +7,7 @@
 //! bounds. Nothing here panics on bad input.
 
 mod arrays;
+mod accum;
 mod attrib;
 mod binding;
 mod bitmap;
@@ -17,11 +18,13 @@ mod color_index;
 pub mod consts;
 mod copy_pixels;
 mod copy_texture;
+mod draw_buffer;
 mod enable;
 mod eval;
 pub mod feedback;
 mod feedback_prims;
 mod fragment;
+pub mod fragments;
 mod frame;
 mod get;
 mod grid_vertices;
@@ -30,6 +33,7 @@ mod immediate;
 mod light_query;
 mod lighting;
 pub(crate) mod lists;
+mod masks;
 mod matrix;
 mod mesh_job;
 mod offset;
@@ -42,6 +46,8 @@ mod raster;
 mod raster_pos;
 mod read_pixels;
 mod select;
+mod read_stencil;
+mod stencil;
 mod stipple;
 mod stipple_query;
 mod texgen;
@@ -56,6 +62,7 @@ pub use client_memory::{ArrayElement, ClientArray, ClientMemory, ClientPointer};
 pub use copy_pixels::{CopyFragment, PixelCopy};
 pub use eval::{MapTarget, Slot};
 pub use fragment::Fog;
+pub use fragments::{BufferConfig, FragmentTests, Stencil};
 pub use frame::{Call, Command, DrawState, Frame, GridMesh, MaterialChange, MeshMode, MeshVertices, Primitive};
 pub use grid_vertices::GridVertices;
 pub use lighting::{Light, Lighting, Material};
@@ -176,6 +183,8 @@ pub struct Gl {
     hints: hint::Hints,
     /// Blending, the alpha test and fog.
     fragment_ops: fragment::FragmentOps,
+    /// Stencil, accumulation, write masks, scissor, logic op, draw and read buffers.
+    fragments: fragments::PerFragment,
     /// How client memory is laid out for images and bitmaps (`glPixelStore`).
     pixel_stores: pixels::PixelStores,
     /// `glPixelTransfer`, `glPixelMap` and `glPixelZoom`.
@@ -231,6 +240,7 @@ impl Gl {
             hints: hint::Hints::default(),
             color_material_sync: color_material::ColorMaterialSync::default(),
             fragment_ops: fragment::FragmentOps::default(),
+            fragments: fragments::PerFragment::new(width, height),
             nurbs: Vec::new(),
             tessellators: Vec::new(),
             arrays: arrays::VertexArrays::default(),
@@ -363,6 +373,7 @@ impl Gl {
             polygon_offset: self.enabled_polygon_offset(),
             clip_planes: self.enabled_clip_planes(),
             polygon_stipple: self.enabled_polygon_stipple(),
+            fragment_tests: self.fragment_tests(),
         }
     }
 
@@ -421,6 +432,7 @@ impl Gl {
         self.arrays_query(pname, out)
             .or_else(|| self.select_query(pname, out))
             .or_else(|| self.pixels_query(pname, out))
+            .or_else(|| self.fragments_query(pname, out))
     }
 
     /// Records `code` unless an earlier error is still pending (GL's sticky flag; Mesa's `_mesa_error`).

@@ -230,7 +230,8 @@ impl Gl {
             return self.set_error(GL_INVALID_VALUE);
         }
         let (color, depth) = (self.raster.clear_color, self.raster.clear_depth);
-        self.frame.commands.push(Command::Clear { mask, color, depth });
+        let (stencil, accum, tests) = (self.fragments.clear_stencil, self.fragments.clear_accum, self.fragment_tests());
+        self.frame.commands.push(Command::Clear { mask, color, depth, stencil, accum, tests });
     }
 
     /// `glFlush`: the recording is already complete; nothing to do.

@@ -43,9 +43,12 @@ impl Gl {
         self.glut.redisplay = true;
     }
 
-    /// `glutSwapBuffers`: what the display callback drew is shown when it returns, whether the
-    /// program asked for one buffer or two, so there is nothing left to do here.
-    pub fn glut_swap_buffers(&mut self) {}
+    /// `glutSwapBuffers`: in a double-buffered window the back buffer becomes the front one
+    /// (recorded in the frame; see `Gl::record_swap_buffers`); a single-buffered window has
+    /// nothing to swap.
+    pub fn glut_swap_buffers(&mut self) {
+        self.record_swap_buffers();
+    }
 
     /// `glutGetModifiers`: `GLUT_ACTIVE_SHIFT`, `_CTRL` and `_ALT` bits held when the keyboard,
     /// special or mouse callback that is running was called (0 elsewhere, where GLUT warns).

@@ -66,7 +66,9 @@ pub(crate) fn request_device(adapter: &wgpu::Adapter) -> Result<(wgpu::Device, w
         ..wgpu::Limits::downlevel_defaults().using_resolution(available)
     };
     // Timestamp queries where the adapter has them: benchmarks time compute passes on the GPU.
-    let required_features = adapter.features() & wgpu::Features::TIMESTAMP_QUERY;
+    // The stencil buffer's format (`raster::DEPTH_FORMAT`); Mesa's drivers all have it.
+    let required_features =
+        adapter.features() & (wgpu::Features::TIMESTAMP_QUERY | wgpu::Features::DEPTH32FLOAT_STENCIL8);
     let desc =
         wgpu::DeviceDescriptor { label: Some("gleval"), required_limits, required_features, ..Default::default() };
     pollster::block_on(adapter.request_device(&desc)).map_err(|e| RenderError::Device(e.to_string()))

@@ -37,11 +37,13 @@ fn flag(b: bool) -> f32 {
 
 /// The draw uniform of a mesh drawn with `state` into a `width` × `height` target.
 #[must_use]
-pub(crate) fn draw_uniform(state: &DrawState, polygon: bool, (width, height): (u32, u32)) -> GpuDraw {
+/// With `flip` the target is drawn upside down (the renderer's headless frames).
+pub(crate) fn draw_uniform(state: &DrawState, polygon: bool, (width, height): (u32, u32), flip: bool) -> GpuDraw {
     let normal_matrix = Mat4::from_mat3(state.normal_matrix());
     let [vx, vy, vw, vh] = state.viewport.map(|c| c as f32);
     let (fw, fh) = (width as f32, height as f32);
-    let viewport = [vw / fw, (2.0 * vx + vw) / fw - 1.0, vh / fh, (2.0 * vy + vh) / fh - 1.0];
+    let sign = if flip { -1.0 } else { 1.0 };
+    let viewport = [vw / fw, (2.0 * vx + vw) / fw - 1.0, sign * vh / fh, sign * ((2.0 * vy + vh) / fh - 1.0)];
     let mut draw = GpuDraw {
         modelview: state.modelview.to_cols_array_2d(),
         projection: state.projection.to_cols_array_2d(),

@@ -5,7 +5,7 @@
 
 use super::device::shader_module;
 use super::layout::RASTER_WGSL;
-use super::raster::RasterPipeline;
+use super::raster::{PipelineTests, RasterPipeline};
 use super::textures::{self, TextureCache};
 use crate::gl::consts::*;
 use crate::gl::types::GLenum;
@@ -13,8 +13,8 @@ use crate::render::assemble::{DrawList, Op, RasterVertex, Topology};
 use std::collections::HashMap;
 use wgpu::util::DeviceExt;
 
-/// Pipeline key: topology, depth function, target format, blend factors.
-pub(crate) type PipelineKey = (Topology, Option<GLenum>, wgpu::TextureFormat, Option<[GLenum; 2]>);
+/// Pipeline key: topology, depth function, target format, blend factors, stencil and masks.
+pub(crate) type PipelineKey = (Topology, Option<GLenum>, wgpu::TextureFormat, Option<[GLenum; 2]>, PipelineTests);
 
 /// The frame rasteriser's shader and its pipelines, made on first use, and the textures it
 /// samples.
@@ -72,7 +72,7 @@ fn make_pipeline(
     device: &wgpu::Device,
     module: &wgpu::ShaderModule,
     layout: &wgpu::PipelineLayout,
-    (topology, depth, format, blend): PipelineKey,
+    (topology, depth, format, blend, tests): PipelineKey,
 ) -> wgpu::RenderPipeline {
     let attributes =
         wgpu::vertex_attr_array![0 => Float32x4, 1 => Float32x4, 2 => Float32x4, 3 => Float32, 4 => Float32x4];
@@ -93,6 +93,7 @@ fn make_pipeline(
         faces: (wgpu::FrontFace::Ccw, None),
         format,
         blend: blend.map(blend_state),
+        tests,
     }
     .build(device)
 }
@@ -124,9 +125,18 @@ fn blend_factor(factor: GLenum) -> wgpu::BlendFactor {
     }
 }
 
-/// The list's vertices in one vertex buffer (in the target's clip space), if there are any.
-pub(crate) fn vertex_buffer(device: &wgpu::Device, list: &DrawList, size: (u32, u32)) -> Option<wgpu::Buffer> {
-    let vertices = to_target_space(list, size);
+/// The list's vertices in one vertex buffer (in the target's clip space, upside down with
+/// `flip`), if there are any.
+pub(crate) fn vertex_buffer(
+    device: &wgpu::Device,
+    list: &DrawList,
+    size: (u32, u32),
+    flip: bool,
+) -> Option<wgpu::Buffer> {
+    let mut vertices = to_target_space(list, size);
+    if flip {
+        vertices.iter_mut().for_each(|v| v.clip[1] = -v.clip[1]);
+    }
     (!vertices.is_empty()).then(|| {
         device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
             label: Some("frame vertices"),

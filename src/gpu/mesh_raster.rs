@@ -12,7 +12,7 @@ use super::draw_uniform::draw_uniform;
 use super::evaluate::{EvaluatedMeshes, Evaluator};
 use super::layout::{GpuDraw, MESH_RASTER_WGSL, VERTEX_BYTES};
 use super::pack::{index_count, PackedJobs};
-use super::raster::RasterPipeline;
+use super::raster::{PipelineTests, RasterPipeline};
 use crate::gl::consts::*;
 use crate::gl::types::GLenum;
 use crate::gl::{DrawState, Frame, MeshMode, MeshVertices};
@@ -22,8 +22,15 @@ use wgpu::util::DeviceExt;
 
 /// Pipeline key: topology, depth function, target format, culling (front face, culled face),
 /// flat shading, blend factors.
-type PipelineKey =
-    (Topology, Option<GLenum>, wgpu::TextureFormat, (wgpu::FrontFace, Option<wgpu::Face>), bool, Option<[GLenum; 2]>);
+type PipelineKey = (
+    Topology,
+    Option<GLenum>,
+    wgpu::TextureFormat,
+    (wgpu::FrontFace, Option<wgpu::Face>),
+    bool,
+    Option<[GLenum; 2]>,
+    PipelineTests,
+);
 
 /// The evaluator and the render pipelines that draw what it writes.
 pub(crate) struct MeshRaster {
@@ -54,12 +61,14 @@ pub(crate) struct PreparedMeshes {
     _uniforms: wgpu::Buffer,
     bind: wgpu::BindGroup,
     draws: HashMap<usize, MeshDraw>,
+    /// Drawn upside down (the renderer's headless frames): windings swap.
+    flip: bool,
 }
 
 impl PreparedMeshes {
-    /// The GL viewport mesh `index` is drawn in (the renderer scissors to it).
-    pub(crate) fn viewport(&self, frame: &Frame, index: usize) -> Option<[i32; 4]> {
-        self.draws.get(&index).map(|d| frame.states[d.state].viewport)
+    /// The draw state of mesh `index` (the renderer scissors to its viewport and scissor box).
+    pub(crate) fn state<'f>(&self, frame: &'f Frame, index: usize) -> Option<&'f DrawState> {
+        self.draws.get(&index).and_then(|d| frame.states.get(d.state))
     }
 }
 
@@ -125,11 +134,11 @@ impl MeshRaster {
         encoder: &mut wgpu::CommandEncoder,
         frame: &Frame,
         which: &[usize],
-        size: (u32, u32),
+        (size, flip): ((u32, u32), bool),
     ) -> PreparedMeshes {
         let align = device.limits().min_uniform_buffer_offset_alignment.max(1);
         let stride = (std::mem::size_of::<GpuDraw>() as u32).div_ceil(align) * align;
-        let mut packed = self.pack(frame, which, size, stride);
+        let mut packed = self.pack(frame, which, (size, flip), stride);
         packed.uniforms.resize(packed.uniforms.len().max(stride as usize), 0);
         let buffers = self.evaluator.evaluate(device, queue, encoder, &packed.jobs);
         let uniforms = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
@@ -149,12 +158,12 @@ impl MeshRaster {
                 }),
             }],
         });
-        PreparedMeshes { buffers, _uniforms: uniforms, bind, draws: packed.draws }
+        PreparedMeshes { buffers, _uniforms: uniforms, bind, draws: packed.draws, flip }
     }
 
     /// Packs the meshes `which` of `frame` and their draw uniforms; a mesh whose state is
     /// missing or whose jobs do not pack is left out.
-    fn pack(&self, frame: &Frame, which: &[usize], size: (u32, u32), stride: u32) -> Packed {
+    fn pack(&self, frame: &Frame, which: &[usize], (size, flip): ((u32, u32), bool), stride: u32) -> Packed {
         let mut out =
             Packed { jobs: PackedJobs::new(self.provoking_last), uniforms: Vec::new(), draws: HashMap::new() };
         for &i in which {
@@ -165,7 +174,7 @@ impl MeshRaster {
                 continue;
             }
             let uniform_offset = out.uniforms.len() as u32;
-            let draw = draw_uniform(state, matches!(mesh.mode, MeshMode::Fill | MeshMode::Triangles), size);
+            let draw = draw_uniform(state, matches!(mesh.mode, MeshMode::Fill | MeshMode::Triangles), size, flip);
             out.uniforms.extend_from_slice(bytemuck::bytes_of(&draw));
             out.uniforms.resize((uniform_offset + stride) as usize, 0);
             let draw = MeshDraw {
@@ -190,7 +199,10 @@ impl MeshRaster {
         prepared: &PreparedMeshes,
         format: wgpu::TextureFormat,
     ) {
-        let keys = prepared.draws.values().filter_map(|draw| pipeline_key(draw, &frame.states[draw.state], format));
+        let keys = prepared
+            .draws
+            .values()
+            .filter_map(|draw| pipeline_key(draw, &frame.states[draw.state], format, prepared.flip));
         let (module, layout) = (&self.module, &self.layout);
         super::raster::make_missing(&mut self.pipelines, keys, |key| make_pipeline(device, module, layout, key));
     }
@@ -207,7 +219,7 @@ impl MeshRaster {
     ) {
         let Some(draw) = prepared.draws.get(&index) else { return };
         let state = &frame.states[draw.state];
-        let Some(key) = pipeline_key(draw, state, format) else { return };
+        let Some(key) = pipeline_key(draw, state, format, prepared.flip) else { return };
         let Some(pipeline) = self.pipelines.get(&key) else { return };
         rp.set_pipeline(pipeline);
         rp.set_bind_group(0, &prepared.bind, &[draw.uniform_offset]);
@@ -223,23 +235,25 @@ impl MeshRaster {
 }
 
 /// The pipeline a mesh draws with, or `None` when GL draws nothing (both faces culled). The
-/// front face is always GL's: two-sided lighting reads the facing even without culling.
-fn pipeline_key(draw: &MeshDraw, state: &DrawState, format: wgpu::TextureFormat) -> Option<PipelineKey> {
-    let front = if state.front_face == GL_CW { wgpu::FrontFace::Cw } else { wgpu::FrontFace::Ccw };
+/// front face is always GL's (the other winding in a target drawn upside down): two-sided
+/// lighting reads the facing even without culling.
+fn pipeline_key(draw: &MeshDraw, state: &DrawState, format: wgpu::TextureFormat, flip: bool) -> Option<PipelineKey> {
+    let front = if (state.front_face == GL_CW) != flip { wgpu::FrontFace::Cw } else { wgpu::FrontFace::Ccw };
     let cull = match (draw.topology, state.cull_face) {
         (Topology::Triangles, Some(GL_FRONT_AND_BACK)) => return None,
         (Topology::Triangles, Some(GL_FRONT)) => Some(wgpu::Face::Front),
         (Topology::Triangles, Some(_)) => Some(wgpu::Face::Back),
         _ => None,
     };
-    Some((draw.topology, state.depth_test, format, (front, cull), state.shade_model == GL_FLAT, state.blend))
+    let tests = PipelineTests::of(&state.fragment_tests);
+    Some((draw.topology, state.depth_test, format, (front, cull), state.shade_model == GL_FLAT, state.blend, tests))
 }
 
 fn make_pipeline(
     device: &wgpu::Device,
     module: &wgpu::ShaderModule,
     layout: &wgpu::PipelineLayout,
-    (topology, depth, format, faces, flat, blend): PipelineKey,
+    (topology, depth, format, faces, flat, blend, tests): PipelineKey,
 ) -> wgpu::RenderPipeline {
     let attributes = wgpu::vertex_attr_array![0 => Float32x4, 1 => Float32x4, 2 => Float32x4, 3 => Float32x4];
     let vertex = wgpu::VertexBufferLayout {
@@ -260,6 +274,7 @@ fn make_pipeline(
         faces,
         format,
         blend,
+        tests,
     }
     .build(device)
 }

@@ -22,9 +22,11 @@
 //! is crate-private, with what tests, benchmarks and examples drive re-exported from the
 //! hidden `testing` module.
 
+mod clear_quads;
 mod device;
 mod draw_uniform;
 mod evaluate;
+mod fallback;
 mod frame_raster;
 mod layout;
 mod mesh_raster;

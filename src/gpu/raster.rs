@@ -4,12 +4,47 @@
 
 use crate::gl::consts::*;
 use crate::gl::types::GLenum;
+use crate::gl::FragmentTests;
 use crate::render::assemble::Topology;
 use std::collections::HashMap;
 use std::hash::Hash;
 
-/// The depth buffer's format: GL's depth after the viewport transform, in [0, 1].
-pub(crate) const DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth32Float;
+/// The depth and stencil buffer's format: GL's depth after the viewport transform, in [0, 1],
+/// as a 32-bit float, and an 8-bit stencil (the device asks for `DEPTH32FLOAT_STENCIL8`).
+pub(crate) const DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth32FloatStencil8;
+
+/// The per-fragment state a pipeline bakes in (the stencil reference is set per draw): the
+/// stencil test's function, masks and operations, depth writes and the colour write mask.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub(crate) struct PipelineTests {
+    /// Function, value mask, operations (fail, depth fail, pass), write mask.
+    stencil: Option<(GLenum, u32, [GLenum; 3], u32)>,
+    depth_write: bool,
+    color_write: [bool; 4],
+}
+
+impl PipelineTests {
+    /// What `tests` asks of the pipeline.
+    pub(crate) fn of(tests: &FragmentTests) -> Self {
+        Self {
+            stencil: tests.stencil.map(|s| (s.func, s.value_mask & 0xFF, s.ops, s.write_mask & 0xFF)),
+            depth_write: tests.depth_write,
+            color_write: tests.color_write,
+        }
+    }
+
+    fn color_writes(&self) -> wgpu::ColorWrites {
+        let bits =
+            [wgpu::ColorWrites::RED, wgpu::ColorWrites::GREEN, wgpu::ColorWrites::BLUE, wgpu::ColorWrites::ALPHA];
+        bits.iter().zip(self.color_write).filter(|(_, on)| *on).fold(wgpu::ColorWrites::empty(), |a, (b, _)| a | *b)
+    }
+}
+
+impl Default for PipelineTests {
+    fn default() -> Self {
+        Self::of(&FragmentTests::default())
+    }
+}
 
 /// Everything in which the two rasterisers' pipelines differ.
 pub(crate) struct RasterPipeline<'a> {
@@ -31,6 +66,8 @@ pub(crate) struct RasterPipeline<'a> {
     pub format: wgpu::TextureFormat,
     /// GL's blending, when enabled.
     pub blend: Option<wgpu::BlendState>,
+    /// The stencil test and the write masks.
+    pub tests: PipelineTests,
 }
 
 impl RasterPipeline<'_> {
@@ -49,7 +86,7 @@ impl RasterPipeline<'_> {
                 buffers: &[Some(self.vertex)],
             },
             primitive,
-            depth_stencil: Some(depth_stencil(self.depth)),
+            depth_stencil: Some(depth_stencil(self.depth, &self.tests)),
             multisample: wgpu::MultisampleState::default(),
             fragment: Some(wgpu::FragmentState {
                 module: self.module,
@@ -58,7 +95,7 @@ impl RasterPipeline<'_> {
                 targets: &[Some(wgpu::ColorTargetState {
                     format: self.format,
                     blend: self.blend,
-                    write_mask: wgpu::ColorWrites::ALL,
+                    write_mask: self.tests.color_writes(),
                 })],
             }),
             multiview_mask: None,
@@ -75,14 +112,41 @@ fn topology(topology: Topology) -> wgpu::PrimitiveTopology {
     }
 }
 
-/// Without `GL_DEPTH_TEST`, GL neither tests nor writes depth (GL 1.1 spec §4.1.5).
-fn depth_stencil(depth: Option<GLenum>) -> wgpu::DepthStencilState {
+/// Without `GL_DEPTH_TEST`, GL neither tests nor writes depth (GL 1.1 spec §4.1.5); with it,
+/// `glDepthMask` decides the write. The stencil test (§4.1.4) compares the reference (set per
+/// draw) with the stored value, both through the value mask, as wgpu does.
+fn depth_stencil(depth: Option<GLenum>, tests: &PipelineTests) -> wgpu::DepthStencilState {
+    let stencil =
+        tests.stencil.map_or_else(wgpu::StencilState::default, |(func, read_mask, [fail, zfail, pass], write_mask)| {
+            let face = wgpu::StencilFaceState {
+                compare: compare(func),
+                fail_op: stencil_op(fail),
+                depth_fail_op: stencil_op(zfail),
+                pass_op: stencil_op(pass),
+            };
+            wgpu::StencilState { front: face, back: face, read_mask, write_mask }
+        });
     wgpu::DepthStencilState {
         format: DEPTH_FORMAT,
-        depth_write_enabled: Some(depth.is_some()),
+        depth_write_enabled: Some(depth.is_some() && tests.depth_write),
         depth_compare: Some(depth.map_or(wgpu::CompareFunction::Always, compare)),
-        stencil: wgpu::StencilState::default(),
+        stencil,
         bias: wgpu::DepthBiasState::default(),
+    }
+}
+
+/// GL's stencil operation as wgpu's (8 bits: `GL_INCR`/`GL_DECR` clamp, the `_WRAP` ones wrap).
+fn stencil_op(op: GLenum) -> wgpu::StencilOperation {
+    use wgpu::StencilOperation as S;
+    match op {
+        GL_ZERO => S::Zero,
+        GL_REPLACE => S::Replace,
+        GL_INCR => S::IncrementClamp,
+        GL_DECR => S::DecrementClamp,
+        GL_INVERT => S::Invert,
+        0x8507 => S::IncrementWrap,
+        0x8508 => S::DecrementWrap,
+        _ => S::Keep,
     }
 }
 

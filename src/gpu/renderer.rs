@@ -12,7 +12,8 @@ use super::device::{first_adapter, request_device, ErrorSlot, Gpu, RenderError};
 use super::evaluate;
 use super::frame_raster::{vertex_buffer, FrameRaster, PipelineKey};
 use super::mesh_raster::{gpu_mesh_indices, MeshRaster, PreparedMeshes};
-use super::passes::{begin_pass, scissor_rect, split_passes, PassItem};
+use super::passes::{begin_pass, draw_rect, split_passes, stencil_reference, PassItem};
+use super::raster::PipelineTests;
 use super::target::Target;
 use crate::gl::{Frame, WindowImage};
 use crate::math::BezierPatch;
@@ -38,12 +39,14 @@ pub struct Renderer {
     errors: ErrorSlot,
 }
 
-/// Where a render goes: colour and depth views of a `size` target whose colour is `format`.
+/// Where a render goes: colour and depth views of a `size` target whose colour is `format`,
+/// drawn upside down with `flip` (see [`Renderer::render_frame`]).
 struct Attachments<'a> {
     color: &'a wgpu::TextureView,
     depth: &'a wgpu::TextureView,
     size: (u32, u32),
     format: wgpu::TextureFormat,
+    flip: bool,
 }
 
 impl Renderer {
@@ -86,7 +89,10 @@ impl Renderer {
         }
     }
 
-    /// Renders a recorded frame headless and reads it back.
+    /// Renders a recorded frame headless and reads it back. The target is drawn upside down
+    /// (GL's bottom row first) and read back the right way up: Vulkan's top-left fill rule then
+    /// includes the pixels on a triangle's left and bottom edges in GL's window, llvmpipe's rule
+    /// for GL (measured on Mesa 22.3; the CPU rasteriser's too).
     pub fn render_frame(&mut self, frame: &Frame, width: u32, height: u32) -> Result<Image, RenderError> {
         let window = self.render_window(frame, width, height, false)?;
         Ok(Image { width: window.width, height: window.height, pixels: window.color })
@@ -102,15 +108,19 @@ impl Renderer {
         height: u32,
         depth: bool,
     ) -> Result<WindowImage, RenderError> {
+        if super::fallback::needs_cpu(frame) {
+            return Ok(crate::render::soft::render_window(frame, width.max(1), height.max(1)));
+        }
         let target = Target::new(&self.device, width.max(1), height.max(1), COLOR_FORMAT);
         let attachments = Attachments {
             color: &target.color_view,
             depth: &target.depth_view,
             size: (target.width, target.height),
             format: COLOR_FORMAT,
+            flip: true,
         };
         let (list, prepared, mut encoder, start, keep) = self.draw_copies(frame, &target, &attachments)?;
-        self.encode_list(&list, &list.ops[start..], frame, prepared.as_ref(), &mut encoder, &attachments, keep);
+        self.encode_list(&list, start..list.ops.len(), frame, prepared.as_ref(), &mut encoder, &attachments, keep);
         self.read_target(&target, encoder, depth)
     }
 
@@ -130,7 +140,7 @@ impl Renderer {
         let (mut start, mut keep) = (0, false);
         let is_copy = |op: &Op| matches!(op, Op::CopyPixels { .. });
         while let Some(at) = list.ops[start..].iter().position(is_copy).map(|k| start + k) {
-            self.encode_list(&list, &list.ops[start..at], frame, prepared.as_ref(), &mut encoder, attachments, keep);
+            self.encode_list(&list, start..at, frame, prepared.as_ref(), &mut encoder, attachments, keep);
             let window = self.read_target(target, encoder, true)?;
             let Op::CopyPixels { copy, batch } = list.ops[at] else { unreachable!("found above") };
             let points = list.pixel_copies.get(copy).map(|c| copy_vertices(c, &window)).unwrap_or_default();
@@ -150,13 +160,13 @@ impl Renderer {
         encoder: wgpu::CommandEncoder,
         depth: bool,
     ) -> Result<WindowImage, RenderError> {
-        let color = target.read(&self.device, &self.queue, encoder);
+        let color = target.read(&self.device, &self.queue, encoder, true);
         // A validation error makes the submission fail; report the error itself.
         self.take_error()?;
         let color = color?;
         let depth = if depth {
             let encoder = self.device.create_command_encoder(&Default::default());
-            target.read_depth(&self.device, &self.queue, encoder)?
+            target.read_depth(&self.device, &self.queue, encoder, true)?
         } else {
             Vec::new()
         };
@@ -180,7 +190,7 @@ impl Renderer {
         size: (u32, u32),
         format: wgpu::TextureFormat,
     ) {
-        let target = Attachments { color, depth, size, format };
+        let target = Attachments { color, depth, size, format, flip: false };
         self.encode_onto(frame, encoder, &target, false);
     }
 
@@ -195,7 +205,7 @@ impl Renderer {
         size: (u32, u32),
         format: wgpu::TextureFormat,
     ) {
-        let target = Attachments { color, depth, size, format };
+        let target = Attachments { color, depth, size, format, flip: false };
         self.encode_onto(frame, encoder, &target, true);
     }
 
@@ -210,13 +220,14 @@ impl Renderer {
                 depth: &headless.depth_view,
                 size: target.size,
                 format: COLOR_FORMAT,
+                flip: true,
             };
             match self.draw_copies(frame, &headless, &attachments) {
                 Ok((resolved, ..)) => list = resolved,
                 Err(e) => eprintln!("gleval: glCopyPixels in a window: {e}"),
             }
         }
-        self.encode_list(&list, &list.ops, frame, prepared.as_ref(), encoder, target, keep);
+        self.encode_list(&list, 0..list.ops.len(), frame, prepared.as_ref(), encoder, target, keep);
     }
 
     /// Assembles a frame, and records the evaluation of the meshes left to the GPU.
@@ -234,35 +245,40 @@ impl Renderer {
             let texture_layout = self.frames.texture_layout();
             let meshes =
                 self.meshes.get_or_insert_with(|| MeshRaster::new(&self.device, texture_layout, provoking_last));
-            let prepared = meshes.prepare(&self.device, &self.queue, encoder, frame, &on_gpu, size);
+            let prepared = meshes.prepare(&self.device, &self.queue, encoder, frame, &on_gpu, (size, target.flip));
             meshes.ensure_pipelines(&self.device, frame, &prepared, target.format);
             prepared
         });
         (list, prepared)
     }
 
-    /// Records `ops` of an assembled list (with its frame's GPU meshes already prepared).
+    /// Records the ops in range `ops` of an assembled list (with its frame's GPU meshes already prepared).
     #[allow(clippy::too_many_arguments)]
     fn encode_list(
         &mut self,
         list: &DrawList,
-        ops: &[Op],
+        ops: std::ops::Range<usize>,
         frame: &Frame,
         prepared: Option<&PreparedMeshes>,
         encoder: &mut wgpu::CommandEncoder,
         target: &Attachments<'_>,
         keep: bool,
     ) {
-        let buffer = vertex_buffer(&self.device, list, target.size);
-        let bind_groups = self.frames.texture_bind_groups(&self.device, &self.queue, list, target.size.1);
-        let passes = split_passes(ops, keep);
+        let list = super::clear_quads::clears_as_quads(list, target.size);
+        let list = list.as_ref();
+        let buffer = vertex_buffer(&self.device, list, target.size, target.flip);
+        // A height of 0 tells the polygon stipple that rows are GL's (`fragment.wgsl`).
+        let height = if target.flip { 0 } else { target.size.1 };
+        let bind_groups = self.frames.texture_bind_groups(&self.device, &self.queue, list, height);
+        let passes = split_passes(&list.ops[ops], keep);
         let batches = passes.iter().flat_map(|p| &p.draws).filter_map(|item| match item {
             PassItem::Batch(batch) => Some(pipeline_key(batch, target)),
             PassItem::Mesh { .. } => None,
         });
         self.frames.ensure_pipelines(&self.device, batches);
         for pass in passes {
-            let mut rp = begin_pass(encoder, target.color, target.depth, pass.clear_color, pass.clear_depth);
+            let clears = (pass.clear_depth, pass.clear_stencil);
+            let mut rp = begin_pass(encoder, target.color, target.depth, pass.clear_color, clears);
             for item in &pass.draws {
                 self.draw_item(&mut rp, item, (buffer.as_ref(), &bind_groups), frame, prepared, target);
             }
@@ -282,8 +298,9 @@ impl Renderer {
         match item {
             PassItem::Batch(batch) => {
                 let Some(buffer) = buffer else { return };
-                let Some(scissor) = scissor_rect(batch.viewport, target.size) else { return };
+                let Some(scissor) = draw_rect(batch.viewport, &batch.tests, target.size, target.flip) else { return };
                 rp.set_scissor_rect(scissor[0], scissor[1], scissor[2], scissor[3]);
+                rp.set_stencil_reference(stencil_reference(&batch.tests));
                 rp.set_pipeline(self.frames.pipeline(pipeline_key(batch, target)));
                 rp.set_bind_group(0, fragment_group(bind_groups, batch.fragment), &[]);
                 rp.set_vertex_buffer(0, buffer.slice(..));
@@ -291,9 +308,11 @@ impl Renderer {
             }
             PassItem::Mesh { mesh, fragment } => {
                 let (Some(prepared), Some(meshes)) = (prepared, &self.meshes) else { return };
-                let Some(viewport) = prepared.viewport(frame, *mesh) else { return };
-                let Some(scissor) = scissor_rect(viewport, target.size) else { return };
+                let Some(state) = prepared.state(frame, *mesh) else { return };
+                let tests = &state.fragment_tests;
+                let Some(scissor) = draw_rect(state.viewport, tests, target.size, target.flip) else { return };
                 rp.set_scissor_rect(scissor[0], scissor[1], scissor[2], scissor[3]);
+                rp.set_stencil_reference(stencil_reference(tests));
                 let fragment = fragment_group(bind_groups, *fragment);
                 meshes.draw(rp, frame, prepared, (*mesh, fragment), target.format);
             }
@@ -308,7 +327,7 @@ fn fragment_group(bind_groups: &[wgpu::BindGroup], fragment: Option<u32>) -> &wg
 
 /// The frame rasteriser's pipeline for a batch drawn into `target`.
 fn pipeline_key(batch: &Batch, target: &Attachments<'_>) -> PipelineKey {
-    (batch.topology, batch.depth_test, target.format, batch.blend)
+    (batch.topology, batch.depth_test, target.format, batch.blend, PipelineTests::of(&batch.tests))
 }
 
 /// The typed API on the GPU tessellator: each patch over a uniform `segments_u` × `segments_v`

@@ -37,12 +37,14 @@ impl Target {
     }
 
     /// Submits `encoder` with a copy of the colour texture at its end, waits, and returns the
-    /// pixels, rows top to bottom, without row padding.
+    /// pixels, rows top to bottom, without row padding (a texture drawn upside down, `flip`, is
+    /// read from its last row up).
     pub(crate) fn read(
         &self,
         device: &wgpu::Device,
         queue: &wgpu::Queue,
         encoder: wgpu::CommandEncoder,
+        flip: bool,
     ) -> Result<Vec<u8>, RenderError> {
         // wgpu copies rows at a multiple of 256 bytes.
         let align = wgpu::COPY_BYTES_PER_ROW_ALIGNMENT;
@@ -51,16 +53,19 @@ impl Target {
         let padded =
             read_back(device, queue, encoder, size, |encoder, buffer| self.copy_out(encoder, buffer, padded_row))?;
         let row = self.width as usize * 4;
-        Ok(padded.chunks_exact(padded_row as usize).flat_map(|r| r[..row].iter().copied()).collect())
+        let rows = padded.chunks_exact(padded_row as usize).map(|r| &r[..row]);
+        Ok(if flip { rows.rev().flatten().copied().collect() } else { rows.flatten().copied().collect() })
     }
 
     /// Submits `encoder` with a copy of the depth texture at its end, waits, and returns the
-    /// depths (32-bit floats), rows top to bottom.
+    /// depths (32-bit floats), rows top to bottom (a texture drawn upside down, `flip`, is read
+    /// from its last row up).
     pub(crate) fn read_depth(
         &self,
         device: &wgpu::Device,
         queue: &wgpu::Queue,
         encoder: wgpu::CommandEncoder,
+        flip: bool,
     ) -> Result<Vec<f32>, RenderError> {
         let align = wgpu::COPY_BYTES_PER_ROW_ALIGNMENT;
         let padded_row = (self.width * 4).div_ceil(align) * align;
@@ -85,8 +90,10 @@ impl Target {
             );
         })?;
         let row = self.width as usize * 4;
-        let bytes = padded.chunks_exact(padded_row as usize).flat_map(|r| r[..row].iter().copied());
-        Ok(bytes.collect::<Vec<u8>>().chunks_exact(4).map(|b| f32::from_ne_bytes([b[0], b[1], b[2], b[3]])).collect())
+        let rows: Vec<&[u8]> = padded.chunks_exact(padded_row as usize).map(|r| &r[..row]).collect();
+        let ordered: Box<dyn Iterator<Item = &&[u8]>> = if flip { Box::new(rows.iter().rev()) } else { Box::new(rows.iter()) };
+        let bytes: Vec<u8> = ordered.flat_map(|r| r.iter().copied()).collect();
+        Ok(bytes.chunks_exact(4).map(|b| f32::from_ne_bytes([b[0], b[1], b[2], b[3]])).collect())
     }
 
     /// Records a copy of the colour texture into `buffer`, `padded_row` bytes a row.

@@ -13,7 +13,7 @@ use super::stipple::Stipple;
 use super::{clip, offset, smooth};
 use crate::gl::consts::*;
 use crate::gl::types::GLenum;
-use crate::gl::{BoundTexture, Command, DrawState, Fog, Frame, MeshVertices, Vertex};
+use crate::gl::{BoundTexture, Command, DrawState, Fog, FragmentTests, Frame, MeshVertices, Vertex};
 use glam::Vec4;
 
 /// A vertex ready for the rasteriser: clip position (depth already mapped to [0, 1] through
@@ -77,6 +77,8 @@ pub struct Batch {
     pub fragment: Option<u32>,
     /// Source and destination blend factors when blending.
     pub blend: Option<[GLenum; 2]>,
+    /// Scissor, stencil, write masks, logic op and draw buffers.
+    pub tests: FragmentTests,
 }
 
 /// The GL viewport `[x, y, width, height]` (origin bottom-left) within a `width` × `height`
@@ -117,7 +119,26 @@ pub enum Op {
         color: Option<[f32; 4]>,
         /// Depth to clear to, if the depth bit was set.
         depth: Option<f32>,
+        /// Stencil value to clear to, if the stencil bit was set.
+        stencil: Option<i32>,
+        /// Accumulation value to clear to, if the accumulation bit was set.
+        accum: Option<[f32; 4]>,
+        /// The scissor box, write masks and colour buffers of the clear.
+        tests: FragmentTests,
     },
+    /// `glAccum` (see [`Command::Accum`]).
+    Accum {
+        /// The operation.
+        op: GLenum,
+        /// Its value.
+        value: f32,
+        /// Scissor, colour mask, draw buffers.
+        tests: FragmentTests,
+        /// The colour buffer read.
+        read: u8,
+    },
+    /// The back buffer becomes the front one.
+    SwapBuffers,
     /// Draw a batch.
     Draw(Batch),
     /// Draw a mesh of the frame whose vertices the GPU tessellator evaluates.
@@ -164,7 +185,11 @@ pub fn assemble_frame(frame: &Frame, gpu_meshes: &[usize]) -> DrawList {
     let mut out = Assembler::default();
     for command in &frame.commands {
         match *command {
-            Command::Clear { mask, color, depth } => out.clear(mask, color, depth),
+            Command::Clear { mask, color, depth, stencil, accum, tests } => {
+                out.clear(mask, (color, depth, stencil, accum), tests)
+            }
+            Command::Accum { op, value, tests, read } => out.list.ops.push(Op::Accum { op, value, tests, read }),
+            Command::SwapBuffers => out.list.ops.push(Op::SwapBuffers),
             Command::Draw(index) => {
                 if let Some(p) = frame.primitives.get(index) {
                     if let Some(state) = frame.states.get(p.state) {
@@ -209,19 +234,24 @@ struct Assembler {
 }
 
 impl Assembler {
-    fn clear(&mut self, mask: u32, color: [f32; 4], depth: f32) {
-        let color = (mask & GL_COLOR_BUFFER_BIT != 0).then_some(color);
-        let depth = (mask & GL_DEPTH_BUFFER_BIT != 0).then_some(depth);
-        if color.is_some() || depth.is_some() {
-            self.list.ops.push(Op::Clear { color, depth });
+    /// A clear of the buffers `mask` names, to their clear values.
+    fn clear(&mut self, mask: u32, values: ([f32; 4], f32, i32, [f32; 4]), tests: FragmentTests) {
+        let has = |bit: u32| mask & bit != 0;
+        let color = has(GL_COLOR_BUFFER_BIT).then_some(values.0);
+        let depth = has(GL_DEPTH_BUFFER_BIT).then_some(values.1);
+        let stencil = has(GL_STENCIL_BUFFER_BIT).then_some(values.2);
+        let accum = has(GL_ACCUM_BUFFER_BIT).then_some(values.3);
+        if color.is_some() || depth.is_some() || stencil.is_some() || accum.is_some() {
+            self.list.ops.push(Op::Clear { color, depth, stencil, accum, tests });
         }
     }
 
     /// A `glCopyPixels`: its copy and the batch state its points will be drawn with.
     fn pixel_copy(&mut self, copy: &crate::gl::PixelCopy, state: &DrawState) {
         let fragment = self.fragment_index(state, (Smooth::None, None));
-        let (viewport, depth_test, blend) = (state.viewport, state.depth_test, state.blend);
-        let batch = Batch { viewport, depth_test, topology: Topology::Points, first: 0, count: 0, fragment, blend };
+        let (viewport, depth_test, blend, tests) = (state.viewport, state.depth_test, state.blend, state.fragment_tests);
+        let topology = Topology::Points;
+        let batch = Batch { viewport, depth_test, topology, first: 0, count: 0, fragment, blend, tests };
         self.list.pixel_copies.push(copy.clone());
         self.list.ops.push(Op::CopyPixels { copy: self.list.pixel_copies.len() - 1, batch });
     }
@@ -304,7 +334,8 @@ impl Assembler {
     ) {
         let depth_range = state.depth_range;
         let fragment = self.fragment_index(state, extra);
-        let batch_key = (state.viewport, state.depth_test, topology, fragment, state.blend);
+        let tests = state.fragment_tests;
+        let batch_key = (state.viewport, state.depth_test, topology, fragment, state.blend, tests);
         let first = self.list.vertices.len() as u32;
         self.list.vertices.extend(corners.iter().map(|c| RasterVertex {
             clip: offset_depth(depth_mapped(c.clip, depth_range), c.depth_offset),
@@ -315,14 +346,15 @@ impl Assembler {
         }));
         let added = corners.len() as u32;
         if let Some(Op::Draw(last)) = self.list.ops.last_mut() {
-            let last_key = (last.viewport, last.depth_test, last.topology, last.fragment, last.blend);
+            let last_key = (last.viewport, last.depth_test, last.topology, last.fragment, last.blend, last.tests);
             if last_key == batch_key && last.first + last.count == first {
                 last.count += added;
                 return;
             }
         }
-        let (viewport, depth_test, topology, fragment, blend) = batch_key;
-        self.list.ops.push(Op::Draw(Batch { viewport, depth_test, topology, first, count: added, fragment, blend }));
+        let (viewport, depth_test, topology, fragment, blend, tests) = batch_key;
+        let batch = Batch { viewport, depth_test, topology, first, count: added, fragment, blend, tests };
+        self.list.ops.push(Op::Draw(batch));
     }
 
     /// The index of the state's fragment operations in the list, adding them if they are new
@@ -420,7 +452,13 @@ impl PrimitiveContext<'_, '_> {
         }
         let [_, _, vw, vh] = self.state.viewport;
         let (hx, hy) = (size / vw.max(1) as f32 * p.w, size / vh.max(1) as f32 * p.w);
-        let corner = |dx: f32, dy: f32| Corner { clip: p + Vec4::new(dx * hx, dy * hy, 0.0, 0.0), ..c };
+        // llvmpipe's wide points break ties the other way from its triangles: a square edge
+        // through a row of pixel centres takes the row above it in GL's window, not the one
+        // below (measured on Mesa 22.3: a 5-pixel point at window y = 100 fills rows 98..102).
+        // Moving the square up by one sub-pixel step (1/256, the rasterisers' precision) makes
+        // both rasterisers do the same.
+        let up = 2.0 / 256.0 / vh.max(1) as f32 * p.w;
+        let corner = |dx: f32, dy: f32| Corner { clip: p + Vec4::new(dx * hx, dy * hy + up, 0.0, 0.0), ..c };
         let (a, b, cc, d) = (corner(-1.0, -1.0), corner(1.0, -1.0), corner(1.0, 1.0), corner(-1.0, 1.0));
         self.out.push(self.state, Topology::Triangles, &[a, b, cc, a, cc, d]);
     }

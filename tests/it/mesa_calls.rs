@@ -313,14 +313,19 @@ impl Runner {
         }
     }
 
-    fn case(&mut self, name: &str) {
-        self.gl = fresh_gl();
+    /// What a new context of the case starts with besides `Gl` itself.
+    fn case_state_reset(&mut self) {
         self.inside = false;
         self.deferred = false;
         self.texgen_normal = false;
         self.compiling = false;
         self.arrays = arrays::Harness::default();
         self.collected = 0;
+    }
+
+    fn case(&mut self, name: &str) {
+        self.gl = fresh_gl();
+        self.case_state_reset();
         self.out.push(format!("case {name}"));
     }
 
@@ -328,6 +333,14 @@ impl Runner {
         let cmd = tokens[0].as_str();
         if cmd == "case" {
             return self.case(&tokens[1]);
+        }
+        if cmd == "buffers" {
+            let mut a = Args { tokens, at: 1 };
+            let (stencil, accum) = (a.int() as u8, a.int() as u8);
+            self.case_state_reset();
+            self.gl = fresh_gl_with(stencil, accum);
+            self.out.push(format!("{number} buffers err=-"));
+            return;
         }
         let mut a = Args { tokens, at: 1 };
         let mut values: Vec<String> = Vec::new();
@@ -434,6 +447,19 @@ impl Runner {
             "tex_parameteri" => gl.tex_parameteri(a.e(), a.e(), a.e() as i32),
             "tex_envi" => gl.tex_envi(a.e(), a.e(), a.e() as i32),
             "pixel_storei" => gl.pixel_storei(a.e(), a.int()),
+            "stencil_func" => gl.stencil_func(a.e(), a.int(), a.int() as u32),
+            "stencil_op" => gl.stencil_op(a.e(), a.e(), a.e()),
+            "stencil_mask" => gl.stencil_mask(a.int() as u32),
+            "clear_stencil" => gl.clear_stencil(a.int()),
+            "accum" => gl.accum(a.e(), a.f()),
+            "clear_accum" => gl.clear_accum(a.f(), a.f(), a.f(), a.f()),
+            "depth_mask" => gl.depth_mask(a.int() as u8),
+            "color_mask" => gl.color_mask(a.int() as u8, a.int() as u8, a.int() as u8, a.int() as u8),
+            "scissor" => gl.scissor(a.int(), a.int(), a.int(), a.int()),
+            "logic_op" => gl.logic_op(a.e()),
+            "draw_buffer" => gl.draw_buffer(a.e()),
+            "read_buffer" => gl.read_buffer(a.e()),
+            "clear" => gl.clear(a.e()),
             "blend_func" => gl.blend_func(a.e(), a.e()),
             "alpha_func" => gl.alpha_func(a.e(), a.f()),
             "fogi" => gl.fogi(a.e(), a.e() as i32),
@@ -650,7 +676,13 @@ fn raster_feedback(gl: &mut Gl, token: &str) -> Option<String> {
 }
 
 fn fresh_gl() -> Gl {
+    fresh_gl_with(0, 0)
+}
+
+/// interp.c's context with `stencil` and `accum` bits (`buffers S A`; 0 and 0 for a case).
+fn fresh_gl_with(stencil: u8, accum: u8) -> Gl {
     let mut gl = Gl::new(64, 64);
+    gl.set_buffer_config(gleval::gl::BufferConfig { stencil_bits: stencil, accum_bits: accum, double: false });
     gl.viewport(0, 0, 2, 2);
     gl
 }
@@ -696,6 +728,7 @@ fn get_state(gl: &mut Gl, cmd: &str, pname: u32) -> Vec<String> {
         GL_MAP2_GRID_DOMAIN | GL_CURRENT_RASTER_POSITION | GL_CURRENT_RASTER_COLOR => 4,
         GL_CURRENT_RASTER_TEXTURE_COORDS | GL_CURRENT_COLOR | GL_CURRENT_TEXTURE_COORDS => 4,
         GL_CURRENT_NORMAL => 3,
+        GL_COLOR_WRITEMASK | GL_SCISSOR_BOX | GL_ACCUM_CLEAR_VALUE => 4,
         _ => 1,
     };
     if cmd == "get_integerv" {

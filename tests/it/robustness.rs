@@ -166,3 +166,142 @@ proptest! {
         prop_assert_eq!(after_garbage.vertices, fresh.vertices);
     }
 }
+
+/// A stencil, accumulation, mask, scissor, logic-op or buffer call with arbitrary arguments,
+/// or a draw (a triangle and a line across the window).
+#[derive(Clone, Debug)]
+enum FragmentCall {
+    StencilFunc(u32, i32, u32),
+    StencilOp([u32; 3]),
+    StencilMask(u32),
+    ClearStencil(i32),
+    Accum(u32, f32),
+    ClearAccum([f32; 4]),
+    Masks(u8, [u8; 4]),
+    Scissor([i32; 4]),
+    LogicOp(u32),
+    Buffers(u32, u32),
+    Enable(u32, bool),
+    Clear(u32),
+    Draw(f32),
+    Swap,
+}
+
+fn fragment_call() -> impl Strategy<Value = FragmentCall> {
+    let any_enum = prop_oneof![
+        0x0200u32..0x0208,
+        0x1E00u32..0x1E04,
+        0x1500u32..0x1510,
+        0x0100u32..0x0105,
+        0x0400u32..0x040D,
+        any::<u32>()
+    ];
+    let value = prop_oneof![
+        Just(0.0f32),
+        Just(1.0),
+        Just(-1.0),
+        Just(1e30),
+        Just(-1e30),
+        Just(f32::NAN),
+        Just(f32::INFINITY),
+        -4.0f32..4.0
+    ];
+    let int = prop_oneof![Just(i32::MIN), Just(i32::MAX), Just(-1), Just(0), Just(255), Just(256), -70i32..70];
+    prop_oneof![
+        (any_enum.clone(), int.clone(), any::<u32>()).prop_map(|(f, r, m)| FragmentCall::StencilFunc(f, r, m)),
+        [any_enum.clone(), any_enum.clone(), any_enum.clone()].prop_map(FragmentCall::StencilOp),
+        any::<u32>().prop_map(FragmentCall::StencilMask),
+        int.clone().prop_map(FragmentCall::ClearStencil),
+        (any_enum.clone(), value.clone()).prop_map(|(op, v)| FragmentCall::Accum(op, v)),
+        [value.clone(), value.clone(), value.clone(), value.clone()].prop_map(FragmentCall::ClearAccum),
+        (0u8..3, [0u8..2, 0u8..2, 0u8..2, 0u8..2]).prop_map(|(d, c)| FragmentCall::Masks(d, c)),
+        [int.clone(), int.clone(), int.clone(), int].prop_map(FragmentCall::Scissor),
+        any_enum.clone().prop_map(FragmentCall::LogicOp),
+        (any_enum.clone(), any_enum.clone()).prop_map(|(d, r)| FragmentCall::Buffers(d, r)),
+        (
+            prop_oneof![Just(GL_STENCIL_TEST), Just(GL_SCISSOR_TEST), Just(GL_COLOR_LOGIC_OP), Just(GL_DEPTH_TEST)],
+            any::<bool>()
+        )
+            .prop_map(|(c, on)| FragmentCall::Enable(c, on)),
+        (0u32..0x4800).prop_map(FragmentCall::Clear),
+        value.prop_map(FragmentCall::Draw),
+        Just(FragmentCall::Swap),
+    ]
+}
+
+fn apply_fragment(gl: &mut Gl, c: &FragmentCall) {
+    match *c {
+        FragmentCall::StencilFunc(f, r, m) => gl.stencil_func(f, r, m),
+        FragmentCall::StencilOp([a, b, d]) => gl.stencil_op(a, b, d),
+        FragmentCall::StencilMask(m) => gl.stencil_mask(m),
+        FragmentCall::ClearStencil(s) => gl.clear_stencil(s),
+        FragmentCall::Accum(op, v) => gl.accum(op, v),
+        FragmentCall::ClearAccum([r, g, b, a]) => gl.clear_accum(r, g, b, a),
+        FragmentCall::Masks(d, [r, g, b, a]) => {
+            gl.depth_mask(d);
+            gl.color_mask(r, g, b, a);
+        }
+        FragmentCall::Scissor([x, y, w, h]) => gl.scissor(x, y, w, h),
+        FragmentCall::LogicOp(op) => gl.logic_op(op),
+        FragmentCall::Buffers(d, r) => {
+            gl.draw_buffer(d);
+            gl.read_buffer(r);
+        }
+        FragmentCall::Enable(cap, on) => {
+            if on {
+                gl.enable(cap)
+            } else {
+                gl.disable(cap)
+            }
+        }
+        FragmentCall::Clear(mask) => gl.clear(mask),
+        FragmentCall::Draw(z) => {
+            gl.begin(GL_TRIANGLES);
+            gl.color4f(z, 0.5, -z, 1.0);
+            gl.vertex3f(-1.0, -1.0, z.clamp(-2.0, 2.0));
+            gl.vertex3f(1.0, -0.5, 0.0);
+            gl.vertex3f(0.0, 1.0, -z.clamp(-2.0, 2.0));
+            gl.end();
+            gl.begin(GL_LINES);
+            gl.vertex2f(-1.0, 0.3);
+            gl.vertex2f(1.0, -0.3);
+            gl.end();
+        }
+        FragmentCall::Swap => gl.glut_swap_buffers(),
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig {
+        cases: std::env::var("PROPTEST_CASES").ok().and_then(|v| v.parse().ok()).unwrap_or(200),
+        ..ProptestConfig::default()
+    })]
+
+    /// Stencil and accumulation on every framebuffer shape (with and without a stencil, an
+    /// accumulation and a back buffer), huge and non-finite values: only GL's errors, no panic,
+    /// and the CPU rasteriser draws the frame and reads the stencil buffer back.
+    #[test]
+    fn fragment_calls_on_every_buffer_shape_never_panic(
+        calls in proptest::collection::vec(fragment_call(), 0..30),
+        (stencil, accum, double) in (prop_oneof![Just(0u8), Just(8)], prop_oneof![Just(0u8), Just(16)], any::<bool>()),
+        read in (-3i32..20, -3i32..20, -1i32..20, -1i32..20, prop_oneof![Just(GL_UNSIGNED_BYTE), Just(GL_FLOAT), Just(GL_SHORT), Just(0x1234u32)]),
+    ) {
+        let mut gl = Gl::new(16, 16);
+        gl.set_buffer_config(gleval::gl::BufferConfig { stencil_bits: stencil, accum_bits: accum, double });
+        for c in &calls {
+            apply_fragment(&mut gl, c);
+            let e = gl.get_error();
+            prop_assert!(known_error(e), "unknown error code {e:#x} after {c:?}");
+        }
+        let frame = gl.take_frame();
+        let mut canvas = gleval::render::soft::Canvas::new(16, 16);
+        canvas.draw_frame(&frame);
+        let image = canvas.image();
+        prop_assert_eq!(image.pixels.len(), 16 * 16 * 4);
+        let stencil_buffer = canvas.stencil().to_vec();
+        let (x, y, w, h, type_) = read;
+        let mut out = vec![0u8; gl.packed_image_len(w, h, GL_STENCIL_INDEX, type_).unwrap_or(0)];
+        gl.read_stencil_pixels((x, y), (w, h), type_, |_| Some(stencil_buffer), &mut out);
+        prop_assert!(known_error(gl.get_error()));
+    }
+}

@@ -1055,6 +1055,20 @@ GLAPI void GLAPIENTRY glFogf(GLenum pname, GLfloat param);
 GLAPI void GLAPIENTRY glFogi(GLenum pname, GLint param);
 GLAPI void GLAPIENTRY glFogfv(GLenum pname, const GLfloat *params);
 
+/* Stencil and accumulation buffers, masks, scissor, logic op, draw and read buffers. */
+GLAPI void GLAPIENTRY glStencilFunc(GLenum func, GLint ref, GLuint mask);
+GLAPI void GLAPIENTRY glStencilOp(GLenum fail, GLenum zfail, GLenum zpass);
+GLAPI void GLAPIENTRY glStencilMask(GLuint mask);
+GLAPI void GLAPIENTRY glClearStencil(GLint s);
+GLAPI void GLAPIENTRY glAccum(GLenum op, GLfloat value);
+GLAPI void GLAPIENTRY glClearAccum(GLfloat red, GLfloat green, GLfloat blue, GLfloat alpha);
+GLAPI void GLAPIENTRY glDepthMask(GLboolean flag);
+GLAPI void GLAPIENTRY glColorMask(GLboolean red, GLboolean green, GLboolean blue, GLboolean alpha);
+GLAPI void GLAPIENTRY glScissor(GLint x, GLint y, GLsizei width, GLsizei height);
+GLAPI void GLAPIENTRY glLogicOp(GLenum opcode);
+GLAPI void GLAPIENTRY glDrawBuffer(GLenum mode);
+GLAPI void GLAPIENTRY glReadBuffer(GLenum mode);
+
 /* Line and polygon stipple, polygon offset, clip planes. */
 GLAPI void GLAPIENTRY glLineStipple(GLint factor, GLushort pattern);
 GLAPI void GLAPIENTRY glPolygonStipple(const GLubyte *mask);

@@ -4,6 +4,7 @@ mod arrays;
 mod eval;
 mod feedback;
 mod fragment;
+mod fragments;
 mod immediate;
 mod lighting;
 mod lists;

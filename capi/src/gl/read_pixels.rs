@@ -4,6 +4,7 @@
 
 use crate::context::with_gl;
 use crate::memory::array_mut;
+use gleval::gl::consts::GL_STENCIL_INDEX;
 use gleval::gl::types::*;
 use gleval::gl::{Frame, WindowImage};
 #[allow(unused_imports)]
@@ -41,11 +42,39 @@ fn draw(frame: &Frame, width: i32, height: i32) -> Option<WindowImage> {
     image.map_err(|e| eprintln!("gleval: glReadPixels: {e}")).ok()
 }
 
+/// The window's stencil buffer (rows top to bottom) with `frame` drawn by the CPU rasteriser.
+fn draw_stencil(frame: &Frame, width: i32, height: i32) -> Vec<u8> {
+    let mut canvas = soft::Canvas::new(width.max(1) as u32, height.max(1) as u32);
+    canvas.draw_frame(frame);
+    canvas.stencil().to_vec()
+}
+
+/// `glReadPixels` of `GL_STENCIL_INDEX`: `Gl::read_stencil_pixels` on the OSMesa buffer's
+/// stencil or the frame's.
+///
+/// # Safety
+/// `pixels` is NULL or points at the bytes `Gl::packed_image_len` gives (the caller's promise,
+/// as for `glReadPixels`).
+unsafe fn read_stencil(x: GLint, y: GLint, width: GLsizei, height: GLsizei, type_: GLenum, pixels: *mut c_void) {
+    let open: GLboolean = with_gl(|gl| gl.inside_begin_end().into());
+    let osmesa = if open != 0 { None } else { crate::osmesa::current_stencil() };
+    with_gl(|gl| {
+        let len = gl.packed_image_len(width, height, GL_STENCIL_INDEX, type_).unwrap_or(0);
+        let out = unsafe { array_mut(pixels.cast::<u8>(), len) };
+        let (w, h) = (gl.width(), gl.height());
+        let draw = |frame: &Frame| Some(osmesa.unwrap_or_else(|| draw_stencil(frame, w, h)));
+        gl.read_stencil_pixels((x, y), (width, height), type_, draw, out)
+    })
+}
+
 entry! {
     /// `glReadPixels`: `Gl::read_pixels`, writing `Gl::packed_image_len` bytes at `pixels`.
     unsafe fn glReadPixels(
         x: GLint, y: GLint, width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum, pixels: *mut c_void,
     ) {
+        if format == GL_STENCIL_INDEX {
+            return unsafe { read_stencil(x, y, width, height, type_, pixels) };
+        }
         // An OSMesa context reads its buffer, brought up to date first (outside `with_gl`: the
         // flush takes the context's frame).
         let open: GLboolean = with_gl(|gl| gl.inside_begin_end().into());

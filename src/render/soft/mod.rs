@@ -12,11 +12,15 @@
 //! | `primitives.rs` | triangles, lines and points to fragments, attributes interpolated perspective-correctly |
 //! | `fragment.rs` | texture environment, fog, stipple, smooth coverage, alpha test |
 //! | `sampler.rs` | texture filters, wrap modes, mipmap levels |
-//! | `framebuffer.rs` | colour and depth buffers, the depth test, blending |
+//! | `framebuffer.rs` | front, back, depth and stencil buffers; stencil and depth tests, blending, logic op, masks |
+//! | `accum.rs` | the accumulation buffer, with Mesa's arithmetic |
+//! | `ops.rs` | stencil operations, logic ops |
 
+mod accum;
 mod clip;
 mod fragment;
 mod framebuffer;
+mod ops;
 mod primitives;
 mod sampler;
 #[cfg(test)]
@@ -24,9 +28,9 @@ mod tests;
 
 use super::assemble::{assemble, viewport_in_target, Batch, DrawList, Op, Topology};
 use super::Image;
-use crate::gl::{Frame, WindowImage};
+use crate::gl::{FragmentTests, Frame, WindowImage};
 use fragment::{Fragment, Program, TexSlope};
-use framebuffer::Framebuffer;
+use framebuffer::{ColorWrite, Framebuffer};
 
 /// Renders a recorded frame on the CPU: every mesh evaluated by the CPU tessellator, the
 /// frame assembled ([`assemble`]) and rasterised ([`rasterize`]).
@@ -71,7 +75,19 @@ impl Canvas {
     pub fn draw(&mut self, list: &DrawList) {
         for op in &list.ops {
             match op {
-                Op::Clear { color, depth } => self.fb.clear(*color, *depth),
+                Op::Clear { color, depth, stencil, accum, tests } => {
+                    let Some(rect) = self.scissor_rect(tests) else { continue };
+                    self.fb.clear(rect, (*color, *depth, *stencil), tests);
+                    if let Some(value) = accum {
+                        self.fb.clear_accum(rect, *value);
+                    }
+                }
+                Op::Accum { op, value, tests, read } => {
+                    if let Some(rect) = self.scissor_rect(tests) {
+                        self.fb.accumulate(rect, (*op, *value), *read, tests);
+                    }
+                }
+                Op::SwapBuffers => self.fb.swap(),
                 Op::Draw(batch) => draw_batch(&mut self.fb, list, batch),
                 Op::GpuMesh { .. } => {}
                 Op::CopyPixels { copy, batch } => {
@@ -101,6 +117,25 @@ impl Canvas {
     pub fn image(&self) -> Image {
         self.fb.image()
     }
+
+    /// The stencil buffer, one byte a pixel, rows top to bottom.
+    #[must_use]
+    pub fn stencil(&self) -> &[u8] {
+        self.fb.stencil()
+    }
+
+    /// The whole canvas, or the scissor box of `tests` within it (`None` if empty).
+    fn scissor_rect(&self, tests: &FragmentTests) -> Option<[u32; 4]> {
+        let size = (self.fb.width, self.fb.height);
+        let whole = [0, 0, size.0 as i32, size.1 as i32];
+        viewport_in_target(tests.scissor.unwrap_or(whole), size)
+    }
+}
+
+/// The intersection of two rectangles `[x0, top, x1, bottom]`, `None` if empty.
+fn intersect(a: [u32; 4], b: [u32; 4]) -> Option<[u32; 4]> {
+    let r = [a[0].max(b[0]), a[1].max(b[1]), a[2].min(b[2]), a[3].min(b[3])];
+    (r[0] < r[2] && r[1] < r[3]).then_some(r)
 }
 
 fn draw_batch(fb: &mut Framebuffer, list: &DrawList, batch: &Batch) {
@@ -111,7 +146,15 @@ fn draw_batch(fb: &mut Framebuffer, list: &DrawList, batch: &Batch) {
 
 /// Draws `vertices` with `batch`'s topology and state (its own range ignored).
 fn draw_vertices(fb: &mut Framebuffer, list: &DrawList, batch: &Batch, vertices: &[super::RasterVertex]) {
-    let Some(scissor) = viewport_in_target(batch.viewport, (fb.width, fb.height)) else { return };
+    let size = (fb.width, fb.height);
+    let Some(mut scissor) = viewport_in_target(batch.viewport, size) else { return };
+    if let Some(b) = batch.tests.scissor {
+        let Some(r) = viewport_in_target(b, size).and_then(|b| intersect(scissor, b)) else { return };
+        scissor = r;
+    }
+    if batch.tests.draw_buffers == 0 {
+        return;
+    }
     let program = batch.fragment.and_then(|f| list.fragments.get(f as usize)).map(Program::new);
     let mut target = Target {
         map: WindowMap::new(batch.viewport, fb.height),
@@ -119,6 +162,7 @@ fn draw_vertices(fb: &mut Framebuffer, list: &DrawList, batch: &Batch, vertices:
         scissor,
         depth_test: batch.depth_test,
         blend: batch.blend,
+        tests: batch.tests,
         program,
     };
     match batch.topology {
@@ -163,6 +207,7 @@ struct Target<'a> {
     scissor: [u32; 4],
     depth_test: Option<crate::gl::types::GLenum>,
     blend: Option<[crate::gl::types::GLenum; 2]>,
+    tests: FragmentTests,
     program: Option<Program<'a>>,
 }
 
@@ -173,9 +218,13 @@ impl Target<'_> {
     }
 
     /// One fragment at framebuffer column `x`, row `y` (inside the scissor), depth `z`.
+    /// GL's order: the fragment's colour and the alpha test, the stencil test, the depth test
+    /// (stencil operations on each outcome), then the write. Without a stencil test a fragment
+    /// failing the depth test is dropped before it is shaded (nothing observable differs).
     fn fragment(&mut self, (x, y): (u32, u32), z: f32, f: &Fragment, slope: &TexSlope) {
         let index = y as usize * self.fb.width as usize + x as usize;
-        if !self.fb.depth_passes(index, z, self.depth_test) {
+        let stencil = self.tests.stencil;
+        if stencil.is_none() && !self.fb.depth_passes(index, z, self.depth_test) {
             return;
         }
         let row = self.fb.height - 1 - y;
@@ -186,6 +235,18 @@ impl Target<'_> {
             },
             None => f.color,
         };
-        self.fb.write(index, z, color, self.depth_test, self.blend);
+        if let Some(s) = &stencil {
+            if !self.fb.stencil_passes(index, s) {
+                return self.fb.stencil_update(index, s, s.ops[0]);
+            }
+            let depth_passes = self.fb.depth_passes(index, z, self.depth_test);
+            self.fb.stencil_update(index, s, s.ops[if depth_passes { 2 } else { 1 }]);
+            if !depth_passes {
+                return;
+            }
+        }
+        let write_depth = self.depth_test.is_some() && self.tests.depth_write;
+        let write = ColorWrite { color, blend: self.blend, tests: self.tests };
+        self.fb.write(index, z, write_depth, &write);
     }
 }

@@ -1,7 +1,9 @@
 //! Triangles, lines and points to fragments, for the CPU rasteriser. Positions are snapped to
 //! 1/256 of a pixel, as llvmpipe's setup does (its `FIXED_ORDER`), and a triangle covers the
 //! pixels whose centres lie inside its three edge functions, those exactly on an edge only for
-//! top and left edges (GL 1.1 spec §3.5.1 asks for such a rule; this is Vulkan's, lavapipe's).
+//! left and bottom edges in GL's window coordinates (y up): llvmpipe's rule for GL's
+//! framebuffers (its `bottom_edge_rule`), measured on Mesa 22.3 (a square with edges on pixel
+//! centres 10.5 and 20.5 fills columns and rows 10 to 19). GL 1.1 §3.5.1 asks for such a rule.
 //! Attributes are interpolated perspective-correctly (§3.5.1, eq. 3.4), depth linearly in
 //! window space.
 
@@ -16,16 +18,20 @@ const SUBPIXEL: f32 = 256.0;
 /// The farthest window coordinate the triangle setup takes, in pixels.
 const WINDOW_LIMIT: f32 = (1 << 20) as f32;
 
-/// The fragment whose vertices carry `weights` (perspective-corrected, summing to 1).
+/// The fragment whose vertices carry `weights` (perspective-corrected, summing to 1), as the
+/// first vertex's values plus the weighted differences to the others: a value equal at every
+/// vertex comes out exactly (a flat colour of 0.9 stays 0.9 and is stored as 230, as llvmpipe's
+/// plane equations give it, where a weighted sum may give 0.8999999 and 229).
 fn mix<const N: usize>(v: &[&RasterVertex; N], weights: [f32; N]) -> Fragment {
-    let mut f = Fragment::default();
-    for (v, w) in v.iter().zip(weights) {
+    let first = v[0];
+    let mut f = Fragment { color: first.color, tex: first.tex, fog: first.fog, aa: first.aa };
+    for (v, w) in v.iter().zip(weights).skip(1) {
         for k in 0..4 {
-            f.color[k] += v.color[k] * w;
-            f.tex[k] += v.tex[k] * w;
-            f.aa[k] += v.aa[k] * w;
+            f.color[k] += (v.color[k] - first.color[k]) * w;
+            f.tex[k] += (v.tex[k] - first.tex[k]) * w;
+            f.aa[k] += (v.aa[k] - first.aa[k]) * w;
         }
-        f.fog += v.fog * w;
+        f.fog += (v.fog - first.fog) * w;
     }
     f
 }
@@ -86,8 +92,9 @@ fn fill(target: &mut Target<'_>, mut v: [&RasterVertex; 3]) {
     let dx: [i64; 3] = std::array::from_fn(|k| -(ends(k).1[1] - ends(k).0[1]));
     let dy: [i64; 3] = std::array::from_fn(|k| ends(k).1[0] - ends(k).0[0]);
     // A fragment exactly on an edge belongs to the triangle if the edge is a left edge
-    // (inside lies to its right) or a top edge (horizontal, inside below).
-    let top_left: [bool; 3] = std::array::from_fn(|k| dx[k] > 0 || (dx[k] == 0 && dy[k] > 0));
+    // (inside lies to its right) or a bottom edge in GL's window (horizontal, inside above it
+    // there, below it in these rows counted from the top).
+    let top_left: [bool; 3] = std::array::from_fn(|k| dx[k] > 0 || (dx[k] == 0 && dy[k] < 0));
     let [sx0, sy0, sx1, sy1] = target.scissor;
     let pixel = |c: i64, lo: u32, hi: u32| c.div_euclid(SUBPIXEL as i64).clamp(i64::from(lo), i64::from(hi)) as u32;
     let (x0, x1) = (
@@ -137,10 +144,19 @@ fn fill(target: &mut Target<'_>, mut v: [&RasterVertex; 3]) {
 
 /// Draws a one-pixel line, clipped to the view volume: GL's diamond-exit rule as the usual
 /// approximation has it (§3.4.1): along the major axis, each pixel whose centre lies in
-/// [start, end) gets the fragment on the line at that centre.
+/// [start, end) gets the fragment on the line at that centre. Ends are snapped to 1/256 of a
+/// pixel as llvmpipe's are; a line exactly on the boundary between two pixels takes the one
+/// below or to the left in GL's window (llvmpipe draws a line as a one-pixel-wide quad under
+/// its fill rule; measured on Mesa 22.3: a horizontal line at window y = 30 fills row 29, a
+/// vertical one at x = 30 column 29).
 pub(super) fn line(target: &mut Target<'_>, a: &RasterVertex, b: &RasterVertex) {
     let Some((a, b)) = clip::line(a, b) else { return };
-    let (pa, pb) = (target.map.project(a.clip), target.map.project(b.clip));
+    let snap = |mut p: [f32; 4]| {
+        p[0] = (p[0] * SUBPIXEL).round() / SUBPIXEL;
+        p[1] = (p[1] * SUBPIXEL).round() / SUBPIXEL;
+        p
+    };
+    let (pa, pb) = (snap(target.map.project(a.clip)), snap(target.map.project(b.clip)));
     if pa.iter().chain(&pb).any(|c| !c.is_finite()) {
         return;
     }
@@ -170,7 +186,10 @@ pub(super) fn line(target: &mut Target<'_>, a: &RasterVertex, b: &RasterVertex) 
     for k in first..=last {
         let centre = k as f32 + 0.5;
         let t = (centre - start) / length;
-        let m = (pa[minor] + t * (pb[minor] - pa[minor])).floor();
+        let m = pa[minor] + t * (pb[minor] - pa[minor]);
+        // Rows count down from the top: the lower GL row is the floor; columns count up: the
+        // left column of a boundary is the one below it.
+        let m = if x_major { m.floor() } else { m.ceil() - 1.0 };
         if m < lo_minor as f32 || m >= hi_minor as f32 {
             continue;
         }

@@ -25,6 +25,7 @@ fn list(topology: Topology, vertices: Vec<RasterVertex>, blend: Option<[u32; 2]>
         count: vertices.len() as u32,
         fragment: None,
         blend,
+        tests: crate::gl::FragmentTests::default(),
     };
     DrawList { vertices, ops: vec![Op::Draw(batch)], fragments: Vec::new(), pixel_copies: Vec::new() }
 }
@@ -195,4 +196,47 @@ fn points_light_their_pixel() {
     let drawn = counts(Topology::Points, vec![inside, behind]);
     let lit: Vec<usize> = (0..drawn.len()).filter(|&k| drawn[k] == 1).collect();
     assert_eq!(lit, vec![(2 * W + 5) as usize]);
+}
+
+/// The window pixels (GL's, origin bottom-left) a list draws in a 64 × 64 window, as the
+/// bounding box (first and last column, first and last row).
+fn drawn_box(topology: Topology, points: &[(f32, f32)]) -> [u32; 4] {
+    let size = 64u32;
+    let vertices = points
+        .iter()
+        .map(|&(x, y)| {
+            let clip = [2.0 * x / size as f32 - 1.0, 2.0 * y / size as f32 - 1.0, 0.5, 1.0];
+            RasterVertex { clip, color: [1.0; 4], ..RasterVertex::default() }
+        })
+        .collect::<Vec<_>>();
+    let mut l = list(topology, vertices, None);
+    if let Op::Draw(b) = &mut l.ops[0] {
+        b.viewport = [0, 0, size as i32, size as i32];
+    }
+    let image = rasterize(&l, size, size);
+    let mut bounds = [u32::MAX, 0, u32::MAX, 0];
+    for y in 0..size {
+        for x in 0..size {
+            if image.pixels[(((size - 1 - y) * size + x) * 4) as usize] > 0 {
+                bounds = [bounds[0].min(x), bounds[1].max(x), bounds[2].min(y), bounds[3].max(y)];
+            }
+        }
+    }
+    bounds
+}
+
+/// llvmpipe's tie-breaking, measured on Mesa 22.3 (OSMesa, `glOrtho(0, 64, 0, 64, -1, 1)` on a
+/// 64 × 64 buffer): a square with edges on pixel centres 10.5 and 20.5 fills columns and rows
+/// 10..19; a horizontal line at y = 30 from x = 10 to 40 fills columns 10..39 of row 29; a
+/// vertical one at x = 30 column 29, rows 10..39; a loop around 10..40 columns and rows 9..39.
+#[test]
+fn pixel_tie_breaking_is_llvmpipe_s() {
+    let square = [(10.5, 10.5), (20.5, 10.5), (20.5, 20.5), (10.5, 10.5), (20.5, 20.5), (10.5, 20.5)];
+    assert_eq!(drawn_box(Topology::Triangles, &square), [10, 19, 10, 19]);
+    assert_eq!(drawn_box(Topology::Lines, &[(10.0, 30.0), (40.0, 30.0)]), [10, 39, 29, 29]);
+    assert_eq!(drawn_box(Topology::Lines, &[(30.0, 10.0), (30.0, 40.0)]), [29, 29, 10, 39]);
+    let corners = [(10.0, 10.0), (40.0, 10.0), (40.0, 40.0), (10.0, 40.0)];
+    let lines: Vec<(f32, f32)> = (0..4).flat_map(|k| [corners[k], corners[(k + 1) % 4]]).collect();
+    assert_eq!(drawn_box(Topology::Lines, &lines), [9, 39, 9, 39]);
+    assert_eq!(drawn_box(Topology::Lines, &[(10.5, 30.5), (40.5, 30.5)]), [10, 39, 30, 30]);
 }

@@ -23,6 +23,8 @@
 #define MAX_TOK 4096
 
 static OSMesaContext ctx;
+/* Stencil and accumulation bits of the next context (`buffers S A`; a case resets them to 0). */
+static int ctx_stencil, ctx_accum;
 static GLubyte pixels[W * H * 4];
 static GLfloat fb[FB_SIZE];
 static int in_begin;        /* between a script `begin` and `end` */
@@ -213,7 +215,7 @@ static void start_feedback(void)
 static void new_context(void)
 {
     if (ctx) OSMesaDestroyContext(ctx);
-    ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 0, NULL);
+    ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, ctx_stencil, ctx_accum, NULL);
     if (!ctx || !OSMesaMakeCurrent(ctx, pixels, GL_UNSIGNED_BYTE, W, H))
         die("cannot create OSMesa context", NULL);
     glMatrixMode(GL_PROJECTION);
@@ -313,6 +315,7 @@ static int get_count(GLenum pname)
     case GL_CURRENT_RASTER_TEXTURE_COORDS: return 4;
     case GL_CURRENT_COLOR: case GL_CURRENT_TEXTURE_COORDS: return 4;
     case GL_CURRENT_NORMAL: return 3;
+    case GL_COLOR_WRITEMASK: case GL_SCISSOR_BOX: case GL_ACCUM_CLEAR_VALUE: return 4;
     default: return 1;
     }
 }
@@ -575,6 +578,38 @@ static void run_call(const char *c)
     } else if (!strcmp(c, "tex_envi")) {
         GLenum target = arg_enum(), pname = arg_enum();
         glTexEnvi(target, pname, (GLint)arg_enum());
+    } else if (!strcmp(c, "stencil_func")) {
+        GLenum f = arg_enum(); GLint r = arg_int(); GLuint m = (GLuint)arg_int();
+        glStencilFunc(f, r, m);
+    } else if (!strcmp(c, "stencil_op")) {
+        GLenum a = arg_enum(), b = arg_enum(), d = arg_enum();
+        glStencilOp(a, b, d);
+    } else if (!strcmp(c, "stencil_mask")) {
+        glStencilMask((GLuint)arg_int());
+    } else if (!strcmp(c, "clear_stencil")) {
+        glClearStencil(arg_int());
+    } else if (!strcmp(c, "accum")) {
+        GLenum op = arg_enum(); float v = arg_float();
+        glAccum(op, v);
+    } else if (!strcmp(c, "clear_accum")) {
+        float r = arg_float(), g = arg_float(), b = arg_float(), a = arg_float();
+        glClearAccum(r, g, b, a);
+    } else if (!strcmp(c, "depth_mask")) {
+        glDepthMask((GLboolean)arg_int());
+    } else if (!strcmp(c, "color_mask")) {
+        GLint r = arg_int(), g = arg_int(), b = arg_int(), a = arg_int();
+        glColorMask((GLboolean)r, (GLboolean)g, (GLboolean)b, (GLboolean)a);
+    } else if (!strcmp(c, "scissor")) {
+        GLint x = arg_int(), y = arg_int(), w = arg_int(), h = arg_int();
+        glScissor(x, y, w, h);
+    } else if (!strcmp(c, "logic_op")) {
+        glLogicOp(arg_enum());
+    } else if (!strcmp(c, "draw_buffer")) {
+        glDrawBuffer(arg_enum());
+    } else if (!strcmp(c, "read_buffer")) {
+        glReadBuffer(arg_enum());
+    } else if (!strcmp(c, "clear")) {
+        glClear((GLbitfield)arg_enum());
     } else if (!strcmp(c, "blend_func")) {
         GLenum sf = arg_enum();
         glBlendFunc(sf, arg_enum());
@@ -718,8 +753,16 @@ static void run_line(char *line)
 
     if (!strcmp(c, "case")) {
         if (in_begin) die("case starts inside begin/end", NULL);
+        ctx_stencil = ctx_accum = 0;
         new_context();
         printf("case %s\n", next());
+    } else if (!strcmp(c, "buffers")) {
+        /* a fresh context of the case with S stencil and A accumulation bits */
+        if (in_begin) die("buffers inside begin/end", NULL);
+        ctx_stencil = arg_int();
+        ctx_accum = arg_int();
+        new_context();
+        printf("%d buffers err=-\n", lineno);
     } else if (!strcmp(c, "defer_errors")) {
         const char *v = next();
         if (strcmp(v, "on") && strcmp(v, "off")) die("defer_errors on|off", v);

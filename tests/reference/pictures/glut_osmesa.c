@@ -27,7 +27,9 @@ void glutInit(int *argc, char **argv) {
 }
 void glutInitWindowSize(int w, int h) { width = w; height = h; }
 void glutInitWindowPosition(int x, int y) { (void)x; (void)y; }
-void glutInitDisplayMode(unsigned int mode) { (void)mode; }
+static unsigned int display_mode;
+/* Kept for glutCreateWindow: GLUT_STENCIL and GLUT_ACCUM ask for the buffers freeglut gives. */
+void glutInitDisplayMode(unsigned int mode) { display_mode = mode; }
 void glutDisplayFunc(void (*f)(void)) { display = f; }
 void glutReshapeFunc(void (*f)(int, int)) { reshape = f; }
 void glutKeyboardFunc(void (*f)(unsigned char, int, int)) { (void)f; }
@@ -151,7 +153,9 @@ float glutStrokeHeight(void *font) {
 
 int glutCreateWindow(const char *title) {
     (void)title;
-    OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 0, NULL);
+    /* As freeglut on Mesa: 8 stencil bits with GLUT_STENCIL, 16 accumulation bits with GLUT_ACCUM. */
+    int stencil = display_mode & GLUT_STENCIL ? 8 : 0, accum = display_mode & GLUT_ACCUM ? 16 : 0;
+    OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, stencil, accum, NULL);
     pixels = calloc((size_t)width * height, 4);
     if (!ctx || !pixels || !OSMesaMakeCurrent(ctx, pixels, GL_UNSIGNED_BYTE, width, height)) {
         fprintf(stderr, "OSMesa context failed\n");
@@ -189,8 +193,13 @@ static void chunk(FILE *f, const char *type, const unsigned char *data, uint32_t
 static void write_png(const char *path) {
     size_t row = (size_t)width * 3 + 1, raw_n = row * height;
     unsigned char *raw = malloc(raw_n);
+    /* Read through GL: OSMesa does not copy what glAccum(GL_RETURN) wrote into the caller's
+     * buffer at the next glFinish (measured on Mesa 22.3), glReadPixels sees it. */
+    unsigned char *read = malloc((size_t)width * height * 4);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, read);
     for (int y = 0; y < height; y++) {
-        unsigned char *dst = raw + row * y, *src = pixels + (size_t)(height - 1 - y) * width * 4;
+        unsigned char *dst = raw + row * y, *src = read + (size_t)(height - 1 - y) * width * 4;
         dst[0] = 0;
         for (int x = 0; x < width; x++) memcpy(dst + 1 + 3 * x, src + 4 * x, 3);
     }

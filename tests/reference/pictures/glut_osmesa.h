@@ -9,6 +9,8 @@
 #define GLUT_SINGLE 0
 #define GLUT_DOUBLE 2
 #define GLUT_DEPTH 16
+#define GLUT_ACCUM 4
+#define GLUT_STENCIL 32
 #define GLUT_WINDOW_WIDTH 102
 #define GLUT_WINDOW_HEIGHT 103
 void glutInit(int *argc, char **argv);

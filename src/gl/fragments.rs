@@ -1,0 +1,344 @@
+//! The per-fragment stages after the fragment's colour and the buffers they write (GL 1.1
+//! spec §4.1–4.2): the scissor test, the stencil test, the depth buffer's write mask, the colour
+//! write mask, the logic op, which colour buffers are drawn and read (front, back), and the
+//! accumulation buffer. The values live in `PerFragment`; a recorded primitive's
+//! [`DrawState`](super::DrawState) carries them as [`FragmentTests`], and both rasterisers apply
+//! them. The calls are in `stencil.rs`, `accum.rs`, `masks.rs` and `draw_buffer.rs`; this file
+//! holds their shared state, their display-list record, their attribute groups and their
+//! `glGet` names.
+
+use super::consts::*;
+use super::types::*;
+use super::Gl;
+
+/// What buffers a context's framebuffer has besides colour and depth, and whether it is double
+/// buffered: what `glutInitDisplayMode` asked of freeglut (measured on Mesa 22.3: 8 stencil bits
+/// only with `GLUT_STENCIL`, 16 accumulation bits a channel only with `GLUT_ACCUM`), or what
+/// `OSMesaCreateContextExt` was given.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct BufferConfig {
+    /// Bits of the stencil buffer: 0 (none) or 8.
+    pub stencil_bits: u8,
+    /// Bits a channel of the accumulation buffer: 0 (none) or 16 (Mesa's `RGBA_SNORM16`).
+    pub accum_bits: u8,
+    /// A back buffer besides the front one (`GLUT_DOUBLE`).
+    pub double: bool,
+}
+
+impl BufferConfig {
+    /// What freeglut on Mesa 22.3 gives for `glutInitDisplayMode(mode)` (measured under Xvfb
+    /// with llvmpipe): 8 stencil bits with `GLUT_STENCIL` (32), 16 accumulation bits with
+    /// `GLUT_ACCUM` (4), none without; double buffering with `GLUT_DOUBLE` (2).
+    #[must_use]
+    pub fn of_display_mode(mode: u32) -> Self {
+        let has = |bit: u32| mode & bit != 0;
+        Self { stencil_bits: if has(32) { 8 } else { 0 }, accum_bits: if has(4) { 16 } else { 0 }, double: has(2) }
+    }
+}
+
+impl Default for BufferConfig {
+    /// A single-buffered context with a stencil and an accumulation buffer: what a [`Gl::new`]
+    /// context has, so that a Rust program gets every buffer without asking.
+    fn default() -> Self {
+        Self { stencil_bits: 8, accum_bits: 16, double: false }
+    }
+}
+
+/// `glStencilFunc` and `glStencilOp` (GL 1.1 §4.1.4).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct Stencil {
+    /// `GL_NEVER` .. `GL_ALWAYS`.
+    pub func: GLenum,
+    /// The reference value as given (Mesa keeps it unclamped; the test clamps it to the
+    /// buffer's range).
+    pub reference: GLint,
+    /// The mask ANDed with both sides of the comparison.
+    pub value_mask: GLuint,
+    /// The operations on stencil failure, depth failure and depth pass.
+    pub ops: [GLenum; 3],
+    /// `glStencilMask`.
+    pub write_mask: GLuint,
+}
+
+impl Default for Stencil {
+    /// GL's initial state; both masks start as 0xFF in Mesa 22.3 (measured, with or without a
+    /// stencil buffer).
+    fn default() -> Self {
+        Self { func: GL_ALWAYS, reference: 0, value_mask: 0xFF, ops: [GL_KEEP; 3], write_mask: 0xFF }
+    }
+}
+
+/// The colour buffers a draw or clear writes: bit 0 the front, bit 1 the back (GL 1.1 §4.2.1).
+pub const FRONT_BUFFER: u8 = 1;
+/// See [`FRONT_BUFFER`].
+pub const BACK_BUFFER: u8 = 2;
+
+/// The per-fragment state a primitive, a clear or an accumulation is drawn with.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct FragmentTests {
+    /// The scissor box (x, y, width, height, origin bottom-left) while `GL_SCISSOR_TEST` is on.
+    pub scissor: Option<[i32; 4]>,
+    /// The stencil test while `GL_STENCIL_TEST` is on and the framebuffer has a stencil buffer.
+    pub stencil: Option<Stencil>,
+    /// `glStencilMask` (clears write through it whether or not the test is on).
+    pub stencil_write_mask: GLuint,
+    /// `glDepthMask`.
+    pub depth_write: bool,
+    /// `glColorMask`: red, green, blue, alpha.
+    pub color_write: [bool; 4],
+    /// The logic op while `GL_COLOR_LOGIC_OP` is on (it replaces blending, GL 1.1 §4.1.7).
+    pub logic_op: Option<GLenum>,
+    /// The colour buffers written: [`FRONT_BUFFER`], [`BACK_BUFFER`], both or none. A
+    /// single-buffered context has one buffer, which both names reach.
+    pub draw_buffers: u8,
+}
+
+impl Default for FragmentTests {
+    fn default() -> Self {
+        Self {
+            scissor: None,
+            stencil: None,
+            stencil_write_mask: 0xFF,
+            depth_write: true,
+            color_write: [true; 4],
+            logic_op: None,
+            draw_buffers: FRONT_BUFFER,
+        }
+    }
+}
+
+/// The fragment stages' values and the framebuffer's shape.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct PerFragment {
+    pub config: BufferConfig,
+    pub stencil: Stencil,
+    pub clear_stencil: GLint,
+    pub clear_accum: [f32; 4],
+    pub depth_write: bool,
+    pub color_write: [bool; 4],
+    pub scissor: [i32; 4],
+    pub logic_op: GLenum,
+    pub draw_buffer: GLenum,
+    pub read_buffer: GLenum,
+}
+
+impl PerFragment {
+    /// GL's initial values for a `width` × `height` window (the scissor box is the window).
+    pub fn new(width: i32, height: i32) -> Self {
+        Self {
+            config: BufferConfig::default(),
+            stencil: Stencil::default(),
+            clear_stencil: 0,
+            clear_accum: [0.0; 4],
+            depth_write: true,
+            color_write: [true; 4],
+            scissor: [0, 0, width, height],
+            logic_op: GL_COPY,
+            draw_buffer: GL_FRONT,
+            read_buffer: GL_FRONT,
+        }
+    }
+}
+
+/// A fragment call as a display list holds it (one `ListCommand` variant for the area).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) enum FragmentCall {
+    StencilFunc(GLenum, GLint, GLuint),
+    StencilOp(GLenum, GLenum, GLenum),
+    StencilMask(GLuint),
+    ClearStencil(GLint),
+    Accum(GLenum, GLfloat),
+    ClearAccum([GLfloat; 4]),
+    DepthMask(GLboolean),
+    ColorMask([GLboolean; 4]),
+    Scissor([GLint; 4]),
+    LogicOp(GLenum),
+    DrawBuffer(GLenum),
+    ReadBuffer(GLenum),
+}
+
+/// The enables GL files under the stencil, scissor and colour-buffer groups (GL 1.1 tables
+/// 6.15–6.17), beside those `attrib.rs` lists.
+pub(crate) const STENCIL_ENABLES: &[GLenum] = &[GL_STENCIL_TEST];
+/// See [`STENCIL_ENABLES`].
+pub(crate) const SCISSOR_ENABLES: &[GLenum] = &[GL_SCISSOR_TEST];
+/// See [`STENCIL_ENABLES`].
+pub(crate) const COLOR_LOGIC_ENABLES: &[GLenum] = &[GL_COLOR_LOGIC_OP, GL_INDEX_LOGIC_OP];
+
+impl Gl {
+    /// Replays a listed fragment call.
+    pub(crate) fn replay_fragment_call(&mut self, call: FragmentCall) {
+        use FragmentCall as C;
+        match call {
+            C::StencilFunc(func, reference, mask) => self.stencil_func(func, reference, mask),
+            C::StencilOp(fail, zfail, zpass) => self.stencil_op(fail, zfail, zpass),
+            C::StencilMask(mask) => self.stencil_mask(mask),
+            C::ClearStencil(s) => self.clear_stencil(s),
+            C::Accum(op, value) => self.accum(op, value),
+            C::ClearAccum([r, g, b, a]) => self.clear_accum(r, g, b, a),
+            C::DepthMask(flag) => self.depth_mask(flag),
+            C::ColorMask([r, g, b, a]) => self.color_mask(r, g, b, a),
+            C::Scissor([x, y, w, h]) => self.scissor(x, y, w, h),
+            C::LogicOp(op) => self.logic_op(op),
+            C::DrawBuffer(mode) => self.draw_buffer(mode),
+            C::ReadBuffer(mode) => self.read_buffer(mode),
+        }
+    }
+
+    /// The framebuffer's buffers (see [`BufferConfig`]).
+    #[must_use]
+    pub fn buffer_config(&self) -> BufferConfig {
+        self.fragments.config
+    }
+
+    /// Gives the context the buffers of `config` (what GLUT's display mode or OSMesa's
+    /// creation asked for); the draw and read buffers become GL's initial ones for it (the back
+    /// buffer of a double-buffered window, else the front).
+    pub fn set_buffer_config(&mut self, config: BufferConfig) {
+        let f = &mut self.fragments;
+        f.config = config;
+        let initial = if config.double { GL_BACK } else { GL_FRONT };
+        (f.draw_buffer, f.read_buffer) = (initial, initial);
+        self.touch_state();
+    }
+
+    /// The per-fragment state primitives, clears and accumulations are drawn with now.
+    pub(crate) fn fragment_tests(&self) -> FragmentTests {
+        let f = &self.fragments;
+        let has_stencil = f.config.stencil_bits > 0;
+        FragmentTests {
+            scissor: self.capability(GL_SCISSOR_TEST).then_some(f.scissor),
+            stencil: (has_stencil && self.capability(GL_STENCIL_TEST)).then_some(f.stencil),
+            stencil_write_mask: f.stencil.write_mask,
+            depth_write: f.depth_write,
+            color_write: f.color_write,
+            logic_op: self.capability(GL_COLOR_LOGIC_OP).then_some(f.logic_op),
+            draw_buffers: self.buffers_of(f.draw_buffer),
+        }
+    }
+
+    /// `glGet` names of the fragment stages and buffers (GL 1.1 tables 6.15–6.17, 6.22, 6.26).
+    pub(crate) fn fragments_query(&self, pname: GLenum, out: &mut [f64]) -> Option<usize> {
+        let f = &self.fragments;
+        let s = &f.stencil;
+        let flag = |b: bool| f64::from(u8::from(b));
+        let one = |v: f64| -> Option<Vec<f64>> { Some(vec![v]) };
+        let values = match pname {
+            GL_STENCIL_FUNC => one(f64::from(s.func)),
+            GL_STENCIL_REF => one(f64::from(s.reference.clamp(0, self.stencil_max() as GLint))),
+            // Unsigned: a mask above 2³¹ − 1 reads as 2³¹ − 1 in glGetIntegerv (measured).
+            GL_STENCIL_VALUE_MASK => one(f64::from(s.value_mask)),
+            GL_STENCIL_FAIL => one(f64::from(s.ops[0])),
+            GL_STENCIL_PASS_DEPTH_FAIL => one(f64::from(s.ops[1])),
+            GL_STENCIL_PASS_DEPTH_PASS => one(f64::from(s.ops[2])),
+            GL_STENCIL_WRITEMASK => one(f64::from(s.write_mask)),
+            GL_STENCIL_CLEAR_VALUE => one(f64::from(f.clear_stencil)),
+            GL_STENCIL_BITS => one(f64::from(f.config.stencil_bits)),
+            GL_ACCUM_RED_BITS | GL_ACCUM_GREEN_BITS | GL_ACCUM_BLUE_BITS | GL_ACCUM_ALPHA_BITS => {
+                one(f64::from(f.config.accum_bits))
+            }
+            GL_ACCUM_CLEAR_VALUE => Some(f.clear_accum.iter().map(|&c| f64::from(c)).collect()),
+            GL_DEPTH_WRITEMASK => one(flag(f.depth_write)),
+            GL_COLOR_WRITEMASK => Some(f.color_write.iter().map(|&b| flag(b)).collect()),
+            GL_SCISSOR_BOX => Some(f.scissor.iter().map(|&c| f64::from(c)).collect()),
+            GL_LOGIC_OP_MODE => one(f64::from(f.logic_op)),
+            GL_DRAW_BUFFER => one(f64::from(f.draw_buffer)),
+            GL_READ_BUFFER => one(f64::from(f.read_buffer)),
+            GL_DOUBLEBUFFER => one(flag(f.config.double)),
+            GL_STEREO => one(0.0),
+            _ => None,
+        }?;
+        for (o, v) in out.iter_mut().zip(&values) {
+            *o = *v;
+        }
+        Some(values.len())
+    }
+
+    /// Records a buffer swap in a double-buffered context (`glutSwapBuffers`); nothing in a
+    /// single-buffered one. Inside `begin`/`end` GL would end the primitive's frame: ignored.
+    pub fn record_swap_buffers(&mut self) {
+        if self.fragments.config.double && !self.inside_begin_end() {
+            self.frame.commands.push(super::frame::Command::SwapBuffers);
+        }
+    }
+
+    /// The largest stencil value, 2^bits − 1 (0 without a stencil buffer).
+    pub(crate) fn stencil_max(&self) -> u32 {
+        (1u32 << self.fragments.config.stencil_bits) - 1
+    }
+
+    /// What `glPushAttrib` keeps of this area (all of it; `restore_fragments` picks by group).
+    pub(crate) fn fragments_attrib(&self) -> PerFragment {
+        self.fragments
+    }
+
+    /// `glPopAttrib` of this area's values: colour buffer (colour mask, logic op, draw buffer),
+    /// depth buffer (depth mask), stencil buffer, accumulation buffer, scissor, pixel mode (read
+    /// buffer) groups. The enables come back with `attrib.rs`'s.
+    pub(crate) fn restore_fragments(&mut self, mask: GLbitfield, saved: &PerFragment) {
+        let f = &mut self.fragments;
+        let has = |bit: GLbitfield| mask & bit != 0;
+        if has(GL_COLOR_BUFFER_BIT) {
+            (f.color_write, f.logic_op, f.draw_buffer) = (saved.color_write, saved.logic_op, saved.draw_buffer);
+        }
+        if has(GL_DEPTH_BUFFER_BIT) {
+            f.depth_write = saved.depth_write;
+        }
+        if has(GL_STENCIL_BUFFER_BIT) {
+            (f.stencil, f.clear_stencil) = (saved.stencil, saved.clear_stencil);
+        }
+        if has(GL_ACCUM_BUFFER_BIT) {
+            f.clear_accum = saved.clear_accum;
+        }
+        if has(GL_SCISSOR_BIT) {
+            f.scissor = saved.scissor;
+        }
+        if has(GL_PIXEL_MODE_BIT) {
+            f.read_buffer = saved.read_buffer;
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn int(gl: &mut Gl, pname: GLenum) -> Vec<GLint> {
+        let mut v = vec![0; gl.get_len(pname)];
+        gl.get_integerv(pname, &mut v);
+        v
+    }
+
+    #[test]
+    fn initial_values_are_gl_s() {
+        let mut gl = Gl::new(30, 20);
+        assert_eq!(int(&mut gl, GL_SCISSOR_BOX), [0, 0, 30, 20]);
+        assert_eq!(int(&mut gl, GL_COLOR_WRITEMASK), [1, 1, 1, 1]);
+        assert_eq!(int(&mut gl, GL_STENCIL_VALUE_MASK), [255]);
+        assert_eq!(int(&mut gl, GL_STENCIL_FUNC), [GL_ALWAYS as i32]);
+        assert_eq!(int(&mut gl, GL_LOGIC_OP_MODE), [GL_COPY as i32]);
+        assert_eq!(int(&mut gl, GL_DRAW_BUFFER), [GL_FRONT as i32]);
+        gl.set_buffer_config(BufferConfig { double: true, ..BufferConfig::default() });
+        assert_eq!(int(&mut gl, GL_DRAW_BUFFER), [GL_BACK as i32]);
+        assert_eq!(int(&mut gl, GL_READ_BUFFER), [GL_BACK as i32]);
+        assert_eq!(int(&mut gl, GL_ACCUM_RED_BITS), [16]);
+        assert_eq!(gl.get_error(), GL_NO_ERROR);
+    }
+
+    #[test]
+    fn push_and_pop_by_group() {
+        let mut gl = Gl::new(8, 8);
+        gl.push_attrib(GL_STENCIL_BUFFER_BIT | GL_SCISSOR_BIT);
+        gl.stencil_func(GL_LESS, 3, 7);
+        gl.enable(GL_STENCIL_TEST);
+        gl.scissor(1, 2, 3, 4);
+        gl.enable(GL_SCISSOR_TEST);
+        gl.depth_mask(GL_FALSE);
+        gl.pop_attrib();
+        assert_eq!(int(&mut gl, GL_STENCIL_FUNC), [GL_ALWAYS as i32]);
+        assert_eq!(int(&mut gl, GL_SCISSOR_BOX), [0, 0, 8, 8]);
+        assert_eq!((gl.is_enabled(GL_STENCIL_TEST), gl.is_enabled(GL_SCISSOR_TEST)), (GL_FALSE, GL_FALSE));
+        assert_eq!(int(&mut gl, GL_DEPTH_WRITEMASK), [0], "not in the groups pushed");
+        assert_eq!(gl.get_error(), GL_NO_ERROR);
+    }
+}

@@ -1,0 +1,37 @@
+//! What wgpu's frame rasteriser does not draw, and the honest route for it: a frame that uses
+//! the logic op, the accumulation buffer, a swap in the middle of the frame, or more than one
+//! colour buffer is drawn by the CPU rasteriser (`render/soft`, GL's rules, scored against Mesa)
+//! and its picture handed back as the wgpu render's. WebGPU has no logic op at all; the
+//! accumulation buffer and front and back targets would need a texture each and passes between
+//! them, not built (README, "Still missing"). The stencil and scissor tests and the write masks
+//! are wgpu's own (`raster.rs`, `passes.rs`, `clear_quads.rs`).
+
+use crate::gl::consts::*;
+use crate::gl::{Command, FragmentTests, Frame};
+
+/// Whether wgpu's pipelines draw `tests` as GL does: no logic op, one colour buffer (the same
+/// through the frame).
+fn plain(tests: &FragmentTests, buffers: &mut Option<u8>) -> bool {
+    let one_buffer = match buffers {
+        Some(b) => *b == tests.draw_buffers,
+        None => {
+            *buffers = Some(tests.draw_buffers);
+            tests.draw_buffers.count_ones() == 1
+        }
+    };
+    one_buffer && tests.logic_op.is_none()
+}
+
+/// Whether the CPU rasteriser must draw `frame` for wgpu (see the module's text).
+pub(crate) fn needs_cpu(frame: &Frame) -> bool {
+    let mut buffers = None;
+    let last = frame.commands.len().saturating_sub(1);
+    let states = frame.states.iter().any(|s| !plain(&s.fragment_tests, &mut buffers));
+    states
+        || frame.commands.iter().enumerate().any(|(k, command)| match command {
+            Command::Clear { mask, tests, .. } => mask & !GL_ACCUM_BUFFER_BIT != 0 && !plain(tests, &mut buffers),
+            Command::Accum { .. } => true,
+            Command::SwapBuffers => k != last,
+            Command::Draw(_) | Command::Mesh(_) | Command::CopyPixels(_) => false,
+        })
+}
