@@ -158,6 +158,8 @@ pub struct Gl {
     /// GLU NURBS objects, indexed by their handles: the one import from `gl` into `glu`, since
     /// GLU's calls are methods of `Gl` (the porting rule).
     pub(crate) nurbs: Vec<Option<crate::glu::NurbsObject>>,
+    /// GLU quadric objects, indexed by their handles (as `nurbs`).
+    pub(crate) quadrics: Vec<Option<crate::glu::quadric::QuadricObject>>,
 }
 
 /// Mesa's `FLOAT_TO_INT` for colours and normals in `glGetIntegerv`: c · (2³¹ − 1) truncated. A
@@ -204,6 +206,7 @@ impl Gl {
             hints: hint::Hints::default(),
             fragment_ops: fragment::FragmentOps::default(),
             nurbs: Vec::new(),
+            quadrics: Vec::new(),
         }
     }
 

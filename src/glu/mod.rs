@@ -1,4 +1,5 @@
-//! GLU: the NURBS interface (GLU 1.3 as SGI/Mesa GLU 9.0 implements it) and `gluErrorString`.
+//! GLU: the NURBS interface (GLU 1.3 as SGI/Mesa GLU 9.0 implements it), quadrics
+//! ([`quadric`]), mipmaps, `gluErrorString`, `gluGetString` and `gluCheckExtension`.
 //! `gluOrtho2D`, `gluPerspective` and `gluLookAt` are methods of [`crate::gl::Gl`] next to the
 //! matrix calls.
 //!
@@ -25,8 +26,11 @@ mod errors;
 mod evaluation;
 mod mipmap;
 mod model;
+pub mod quadric;
+mod strings;
 
 pub use errors::glu_error_string;
 pub use model::callbacks::{NurbsCallback, UserData};
 pub use model::object::GLUnurbs;
 pub(crate) use model::object::NurbsObject;
+pub use quadric::{GLUquadric, Quadric, QuadricSink};

@@ -4,6 +4,7 @@
 mod conformance;
 mod eval_mesh;
 mod glu_errors;
+mod glu_quadrics;
 mod glu_surfpoints;
 mod glu_tessellation;
 mod glut_loop;

@@ -28,6 +28,9 @@ typedef void (GLAPIENTRYP _GLUfuncptr)(void);
 #else
 typedef void (GLAPIENTRYP _GLUfuncptr)();
 #endif
+/* A quadric object (opaque). */
+typedef struct GLUquadric GLUquadric;
+typedef GLUquadric GLUquadricObj;
 
 /* NURBS properties. */
 #define GLU_AUTO_LOAD_MATRIX 100200
@@ -205,6 +208,18 @@ GLAPI void GLAPIENTRY gluPerspective(GLdouble fovy, GLdouble aspect, GLdouble zN
 GLAPI void GLAPIENTRY gluLookAt(GLdouble eyeX, GLdouble eyeY, GLdouble eyeZ, GLdouble centerX, GLdouble centerY, GLdouble centerZ, GLdouble upX, GLdouble upY, GLdouble upZ);
 GLAPI GLint GLAPIENTRY gluBuild2DMipmaps(GLenum target, GLint internalFormat, GLsizei width, GLsizei height, GLenum format, GLenum type, const void *data);
 GLAPI const GLubyte *GLAPIENTRY gluErrorString(GLenum error);
+
+GLAPI GLUquadric *GLAPIENTRY gluNewQuadric(void);
+GLAPI void GLAPIENTRY gluDeleteQuadric(GLUquadric *quad);
+GLAPI void GLAPIENTRY gluQuadricCallback(GLUquadric *quad, GLenum which, _GLUfuncptr CallBackFunc);
+GLAPI void GLAPIENTRY gluQuadricDrawStyle(GLUquadric *quad, GLenum draw);
+GLAPI void GLAPIENTRY gluQuadricNormals(GLUquadric *quad, GLenum normal);
+GLAPI void GLAPIENTRY gluQuadricOrientation(GLUquadric *quad, GLenum orientation);
+GLAPI void GLAPIENTRY gluQuadricTexture(GLUquadric *quad, GLboolean texture);
+GLAPI void GLAPIENTRY gluSphere(GLUquadric *quad, GLdouble radius, GLint slices, GLint stacks);
+GLAPI void GLAPIENTRY gluCylinder(GLUquadric *quad, GLdouble base, GLdouble top, GLdouble height, GLint slices, GLint stacks);
+GLAPI void GLAPIENTRY gluDisk(GLUquadric *quad, GLdouble inner, GLdouble outer, GLint slices, GLint loops);
+GLAPI void GLAPIENTRY gluPartialDisk(GLUquadric *quad, GLdouble inner, GLdouble outer, GLint slices, GLint loops, GLdouble start, GLdouble sweep);
 
 GLAPI GLUnurbs *GLAPIENTRY gluNewNurbsRenderer(void);
 GLAPI void GLAPIENTRY gluDeleteNurbsRenderer(GLUnurbs *nurb);

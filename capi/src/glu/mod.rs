@@ -1,5 +1,6 @@
-//! `GL/glu.h`: projections, mipmaps, error strings and the NURBS interface.
+//! `GL/glu.h`: projections, mipmaps, error strings, quadrics and the NURBS interface.
 
 mod callbacks;
 mod misc;
 mod nurbs;
+mod quadric;

@@ -15,3 +15,7 @@ cc -std=c99 -O1 -o "$build/tess_counts" "$here/tess_counts.c" -lOSMesa -lGLU -lG
 GALLIUM_DRIVER=llvmpipe "$build/tess_counts" > "$out/tess_counts.txt"
 cc -std=c99 -O1 -o "$build/surfpoints" "$here/surfpoints.c" -lOSMesa -lGLU -lGL
 GALLIUM_DRIVER=llvmpipe "$build/surfpoints" > "$out/surfpoints.txt"
+cc -std=c99 -O1 -o "$build/quadrics" "$here/quadrics.c" -lGLU -lGL -lm
+"$build/quadrics" > "$out/quadrics.txt"
+cc -std=c99 -O1 -o "$build/strings" "$here/strings.c" -lGLU -lGL
+"$build/strings" > "$out/strings.txt"
