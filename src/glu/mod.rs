@@ -30,6 +30,7 @@ pub mod quadric;
 mod strings;
 
 pub use errors::glu_error_string;
+pub use strings::{glu_check_extension, glu_get_string};
 pub use model::callbacks::{NurbsCallback, UserData};
 pub use model::object::GLUnurbs;
 pub(crate) use model::object::NurbsObject;

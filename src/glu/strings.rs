@@ -9,6 +9,27 @@ use crate::glu::consts::{GLU_EXTENSIONS, GLU_VERSION};
 /// GLU 9.0.2's extension string, its trailing space included.
 const EXTENSIONS: &str = "GLU_EXT_nurbs_tessellator GLU_EXT_object_space_tess ";
 
+/// `gluGetString` without a context (GLU needs none): see [`Gl::glu_get_string`].
+#[must_use]
+pub fn glu_get_string(name: GLenum) -> Option<&'static str> {
+    match name {
+        GLU_VERSION => Some("1.3"),
+        GLU_EXTENSIONS => Some(EXTENSIONS),
+        _ => None,
+    }
+}
+
+/// `gluCheckExtension` without a context: see [`Gl::glu_check_extension`].
+#[must_use]
+pub fn glu_check_extension(ext_name: &[u8], ext_string: &[u8]) -> GLboolean {
+    let found = ext_string.split(|&b| b == b' ').any(|word| !word.is_empty() && word == ext_name);
+    if found {
+        GL_TRUE
+    } else {
+        GL_FALSE
+    }
+}
+
 impl Gl {
     /// `gluGetString`: `"1.3"` for `GLU_VERSION`, GLU's extension string for
     /// `GLU_EXTENSIONS`, `None` (C's NULL, no error) for another name.
@@ -21,11 +42,7 @@ impl Gl {
     /// ```
     #[must_use]
     pub fn glu_get_string(&self, name: GLenum) -> Option<&'static str> {
-        match name {
-            GLU_VERSION => Some("1.3"),
-            GLU_EXTENSIONS => Some(EXTENSIONS),
-            _ => None,
-        }
+        glu_get_string(name)
     }
 
     /// `gluCheckExtension`: `GL_TRUE` when `ext_name` is one of the words of `ext_string`,
@@ -41,12 +58,6 @@ impl Gl {
     /// ```
     #[must_use]
     pub fn glu_check_extension(&self, ext_name: impl AsRef<[u8]>, ext_string: impl AsRef<[u8]>) -> GLboolean {
-        let name = ext_name.as_ref();
-        let found = ext_string.as_ref().split(|&b| b == b' ').any(|word| !word.is_empty() && word == name);
-        if found {
-            GL_TRUE
-        } else {
-            GL_FALSE
-        }
+        glu_check_extension(ext_name.as_ref(), ext_string.as_ref())
     }
 }

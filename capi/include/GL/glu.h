@@ -208,6 +208,8 @@ GLAPI void GLAPIENTRY gluPerspective(GLdouble fovy, GLdouble aspect, GLdouble zN
 GLAPI void GLAPIENTRY gluLookAt(GLdouble eyeX, GLdouble eyeY, GLdouble eyeZ, GLdouble centerX, GLdouble centerY, GLdouble centerZ, GLdouble upX, GLdouble upY, GLdouble upZ);
 GLAPI GLint GLAPIENTRY gluBuild2DMipmaps(GLenum target, GLint internalFormat, GLsizei width, GLsizei height, GLenum format, GLenum type, const void *data);
 GLAPI const GLubyte *GLAPIENTRY gluErrorString(GLenum error);
+GLAPI const GLubyte *GLAPIENTRY gluGetString(GLenum name);
+GLAPI GLboolean GLAPIENTRY gluCheckExtension(const GLubyte *extName, const GLubyte *extString);
 
 GLAPI GLUquadric *GLAPIENTRY gluNewQuadric(void);
 GLAPI void GLAPIENTRY gluDeleteQuadric(GLUquadric *quad);

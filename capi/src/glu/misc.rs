@@ -1,10 +1,11 @@
-//! GLU's projections, `gluBuild2DMipmaps` and `gluErrorString`.
+//! GLU's projections, `gluBuild2DMipmaps`, `gluErrorString`, `gluGetString` and
+//! `gluCheckExtension`.
 
 use crate::context::with_gl;
 use crate::memory::bytes;
 use crate::strings::static_c_string;
 use gleval::gl::types::*;
-use std::ffi::c_void;
+use std::ffi::{c_void, CStr};
 
 forward! {
     gluOrtho2D(left: GLdouble, right: GLdouble, bottom: GLdouble, top: GLdouble) => glu_ortho_2d;
@@ -40,5 +41,25 @@ entry! {
     /// `gluErrorString`: GLU's message for a GLU or GL error code, NULL for another number.
     fn gluErrorString(code: GLenum) -> *const GLubyte {
         gleval::glu::glu_error_string(code).map_or(std::ptr::null(), |s| static_c_string(s).cast())
+    }
+}
+
+entry! {
+    /// `gluGetString`: GLU's version or extension string (no context needed), NULL for another
+    /// name.
+    fn gluGetString(name: GLenum) -> *const GLubyte {
+        gleval::glu::glu_get_string(name).map_or(std::ptr::null(), |s| static_c_string(s).cast())
+    }
+}
+
+entry! {
+    /// `gluCheckExtension`: whether `ext_name` is a word of `ext_string`; NULL is no match.
+    unsafe fn gluCheckExtension(ext_name: *const GLubyte, ext_string: *const GLubyte) -> GLboolean {
+        if ext_name.is_null() || ext_string.is_null() {
+            return 0;
+        }
+        // SAFETY: GLU's contract: both are NUL-terminated strings.
+        let (name, string) = unsafe { (CStr::from_ptr(ext_name.cast()), CStr::from_ptr(ext_string.cast())) };
+        gleval::glu::glu_check_extension(name.to_bytes(), string.to_bytes())
     }
 }
