@@ -149,14 +149,11 @@ fn display(gl: &mut Gl, quad: GLUquadric) {
 pub fn app() -> App {
     let quad = std::rc::Rc::new(std::cell::Cell::new(None));
     let at_display = quad.clone();
-    App::new("Quadrics", 320, 240)
-        .init(move |gl| quad.set(Some(init(gl))))
-        .reshape(reshape)
-        .display(move |gl| {
-            if let Some(q) = at_display.get() {
-                display(gl, q);
-            }
-        })
+    App::new("Quadrics", 320, 240).init(move |gl| quad.set(Some(init(gl)))).reshape(reshape).display(move |gl| {
+        if let Some(q) = at_display.get() {
+            display(gl, q);
+        }
+    })
 }
 
 #[allow(dead_code)]

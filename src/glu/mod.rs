@@ -30,8 +30,8 @@ pub mod quadric;
 mod strings;
 
 pub use errors::glu_error_string;
-pub use strings::{glu_check_extension, glu_get_string};
 pub use model::callbacks::{NurbsCallback, UserData};
 pub use model::object::GLUnurbs;
 pub(crate) use model::object::NurbsObject;
 pub use quadric::{GLUquadric, Quadric, QuadricSink};
+pub use strings::{glu_check_extension, glu_get_string};

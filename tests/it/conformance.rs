@@ -46,14 +46,14 @@ mod mipnurbs;
 mod operations;
 #[path = "../../examples/outline.rs"]
 mod outline;
+#[path = "../../examples/quadrics.rs"]
+mod quadrics;
 #[path = "../../examples/rational.rs"]
 mod rational;
 #[path = "../../examples/rationalmap.rs"]
 mod rationalmap;
 #[path = "../../examples/shapes.rs"]
 mod shapes;
-#[path = "../../examples/quadrics.rs"]
-mod quadrics;
 #[path = "../../examples/specular.rs"]
 mod specular;
 #[path = "../../examples/stipple.rs"]

@@ -247,3 +247,147 @@ fn quadrics_match_real_glu() {
         failures.join("\n")
     );
 }
+
+/// Checks the sink sees: begin/end balanced and never nested, and the largest |coordinate|.
+#[derive(Default)]
+struct Outline {
+    open: bool,
+    balanced: bool,
+    largest: f32,
+    vertices: usize,
+}
+
+impl QuadricSink for Outline {
+    fn begin(&mut self, _mode: u32) {
+        self.balanced &= !self.open;
+        self.open = true;
+    }
+    fn end(&mut self) {
+        self.balanced &= self.open;
+        self.open = false;
+    }
+    fn normal(&mut self, _n: [f32; 3]) {}
+    fn tex_coord(&mut self, _t: [f32; 2]) {}
+    fn vertex(&mut self, v: [f32; 3]) {
+        self.balanced &= self.open;
+        self.vertices += 1;
+        self.largest = v.iter().fold(self.largest, |m, x| m.max(x.abs()));
+    }
+}
+
+mod properties {
+    use super::*;
+    use proptest::prelude::*;
+
+    /// Any double, the awkward ones often.
+    fn size() -> impl Strategy<Value = f64> {
+        prop_oneof![
+            4 => -3.0f64..3.0,
+            1 => prop::sample::select(vec![0.0, -0.0, f64::NAN, f64::INFINITY, -f64::INFINITY, 1e30, -1e-30, f64::MAX]),
+        ]
+    }
+
+    /// Any count: GLU clamps slices (and a sphere's stacks) to 239 itself.
+    fn count() -> impl Strategy<Value = i32> {
+        prop_oneof![3 => -3i32..12, 1 => any::<i32>()]
+    }
+
+    /// A count GLU loops over unclamped (a cylinder's stacks, a disk's loops): kept small, as
+    /// GLU would take as long.
+    fn loops() -> impl Strategy<Value = i32> {
+        prop_oneof![3 => -3i32..12, 1 => Just(i32::MIN)]
+    }
+
+    fn modes() -> impl Strategy<Value = Quadric> {
+        (
+            prop::sample::select(vec![GLU_FILL, GLU_LINE, GLU_SILHOUETTE, GLU_POINT]),
+            prop::sample::select(vec![GLU_NONE, GLU_FLAT, GLU_SMOOTH]),
+            prop::sample::select(vec![GLU_OUTSIDE, GLU_INSIDE]),
+            any::<bool>(),
+        )
+            .prop_map(|(draw_style, normals, orientation, texture)| Quadric {
+                draw_style,
+                normals,
+                orientation,
+                texture,
+            })
+    }
+
+    /// Ok and a bounded, balanced shape, or GLU's `GLU_INVALID_VALUE` exactly when `invalid`.
+    fn verdict(result: Result<(), u32>, shape: &Outline, invalid: bool, bound: f64) -> Result<(), TestCaseError> {
+        if invalid {
+            prop_assert_eq!(result, Err(GLU_INVALID_VALUE));
+            prop_assert_eq!(shape.vertices, 0);
+        } else {
+            prop_assert_eq!(result, Ok(()));
+            prop_assert!(shape.balanced && !shape.open);
+            prop_assert!(shape.vertices > 0);
+            if bound.abs() < 1e30 {
+                prop_assert!(f64::from(shape.largest) <= bound * 1.0001 + 1e-6, "{} > {}", shape.largest, bound);
+            }
+        }
+        Ok(())
+    }
+
+    proptest! {
+        #[test]
+        fn spheres_are_glus_errors_or_bounded_shapes(q in modes(), r in size(), slices in count(), stacks in count()) {
+            let mut shape = Outline { balanced: true, ..Outline::default() };
+            let result = q.sphere(&mut shape, r, slices, stacks);
+            let invalid = slices.min(239) < 2 || stacks.min(239) < 1 || r < 0.0;
+            verdict(result, &shape, invalid, r)?;
+        }
+
+        #[test]
+        fn cylinders_are_glus_errors_or_bounded_shapes(
+            q in modes(), base in size(), top in size(), height in size(), slices in count(), stacks in loops()
+        ) {
+            let mut shape = Outline { balanced: true, ..Outline::default() };
+            let result = q.cylinder(&mut shape, base, top, height, slices, stacks);
+            let no_length = f64::from((base - top) as f32).hypot(height) == 0.0;
+            let invalid = slices.min(239) < 2 || stacks < 1 || base < 0.0 || top < 0.0 || height < 0.0 || no_length;
+            verdict(result, &shape, invalid, base.max(top).max(height))?;
+        }
+
+        #[test]
+        fn disks_are_glus_errors_or_bounded_shapes(
+            q in modes(), inner in size(), outer in size(), slices in count(), loops in loops(), start in size(), sweep in size()
+        ) {
+            let mut shape = Outline { balanced: true, ..Outline::default() };
+            let result = q.partial_disk(&mut shape, inner, outer, slices, loops, start * 200.0, sweep * 200.0);
+            let invalid = slices.min(239) < 2 || loops < 1 || outer <= 0.0 || inner < 0.0 || inner > outer;
+            verdict(result, &shape, invalid, outer)?;
+        }
+
+        /// Any sequence of quadric calls through `Gl`, bad modes and deleted handles included:
+        /// no panic, no GL error, only GLU's codes through the callback.
+        #[test]
+        fn random_quadric_calls_never_panic(calls in proptest::collection::vec((0u8..10, any::<u32>(), size(), count(), loops()), 0..30)) {
+            let mut gl = Gl::new(16, 16);
+            let seen = Rc::new(RefCell::new(Vec::new()));
+            let q = gl_quadric(&mut gl, &seen);
+            let modes = [GLU_FILL, GLU_LINE, GLU_SILHOUETTE, GLU_POINT, GLU_NONE, GLU_FLAT, GLU_SMOOTH, GLU_OUTSIDE, GLU_INSIDE];
+            for (op, e, x, n, m) in calls {
+                let mode = if e % 4 == 0 { e } else { modes[e as usize % modes.len()] };
+                match op {
+                    0 => gl.glu_quadric_draw_style(q, mode),
+                    1 => gl.glu_quadric_normals(q, mode),
+                    2 => gl.glu_quadric_orientation(q, mode),
+                    3 => gl.glu_quadric_texture(q, e as u8),
+                    4 => gl.glu_quadric_callback(q, mode, None),
+                    5 => gl.glu_sphere(q, x, n, m),
+                    6 => gl.glu_cylinder(q, x, x * 0.5, x.abs(), n, m),
+                    7 => gl.glu_disk(q, x, 2.0 * x, n, m),
+                    8 => gl.glu_partial_disk(q, x, 1.0, n, m, x * 90.0, f64::from(n) * 30.0),
+                    _ => gl.glu_delete_quadric(q),
+                }
+            }
+            prop_assert_eq!(gl.get_error(), GL_NO_ERROR);
+            for code in seen.borrow().iter() {
+                prop_assert!([
+                    "ERR 100900", "ERR 100901"
+                ].contains(&code.as_str()), "{}", code);
+            }
+        }
+    }
+}
