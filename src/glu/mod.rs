@@ -27,6 +27,7 @@ mod evaluation;
 mod mipmap;
 mod model;
 pub mod quadric;
+mod scale;
 mod strings;
 
 pub use errors::glu_error_string;

@@ -4,6 +4,7 @@
 mod conformance;
 mod eval_mesh;
 mod glu_errors;
+mod glu_mipmaps;
 mod glu_quadrics;
 mod glu_surfpoints;
 mod glu_tessellation;

@@ -19,3 +19,5 @@ cc -std=c99 -O1 -o "$build/quadrics" "$here/quadrics.c" -lGLU -lGL -lm
 "$build/quadrics" > "$out/quadrics.txt"
 cc -std=c99 -O1 -o "$build/strings" "$here/strings.c" -lGLU -lGL
 "$build/strings" > "$out/strings.txt"
+cc -std=c99 -O1 -o "$build/scale_image" "$here/scale_image.c" -lOSMesa -lGLU -lGL
+GALLIUM_DRIVER=llvmpipe "$build/scale_image" > "$out/scale_image.txt"
