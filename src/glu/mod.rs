@@ -25,6 +25,7 @@ mod draw;
 mod errors;
 mod evaluation;
 mod mipmap;
+mod mipmap_levels;
 mod model;
 pub mod quadric;
 mod scale;

@@ -16,7 +16,7 @@ use crate::gl::Gl;
 use crate::glu::consts::*;
 
 /// The formats GLU takes (`legalFormat`).
-fn legal_format(format: GLenum) -> bool {
+pub(super) fn legal_format(format: GLenum) -> bool {
     matches!(
         format,
         GL_COLOR_INDEX
@@ -37,14 +37,14 @@ fn legal_format(format: GLenum) -> bool {
 
 /// GL 1.2's packed types, which GLU takes (`legalType`) but gleval's `gluScaleImage` does not
 /// convert yet: they answer `GLU_INVALID_ENUM` (after GLU's own format check).
-fn packed(type_: GLenum) -> bool {
+pub(super) fn packed(type_: GLenum) -> bool {
     (GL_UNSIGNED_BYTE_3_3_2..=GL_UNSIGNED_INT_10_10_10_2).contains(&type_)
         || (GL_UNSIGNED_BYTE_2_3_3_REV..=GL_UNSIGNED_INT_2_10_10_10_REV).contains(&type_)
 }
 
 /// `isLegalFormatForPackedPixelType`: 3_3_2 and 5_6_5 (and their reverses) are RGB only, the
 /// other packed types RGBA or BGRA only.
-fn packed_format_ok(format: GLenum, type_: GLenum) -> bool {
+pub(super) fn packed_format_ok(format: GLenum, type_: GLenum) -> bool {
     match type_ {
         GL_UNSIGNED_BYTE_3_3_2 | GL_UNSIGNED_BYTE_2_3_3_REV | GL_UNSIGNED_SHORT_5_6_5 | GL_UNSIGNED_SHORT_5_6_5_REV => {
             format == GL_RGB
@@ -55,7 +55,7 @@ fn packed_format_ok(format: GLenum, type_: GLenum) -> bool {
 }
 
 /// The GL 1.1 types GLU converts here (`legalType`, packed types aside).
-fn legal_type(type_: GLenum) -> bool {
+pub(super) fn legal_type(type_: GLenum) -> bool {
     matches!(
         type_,
         GL_BITMAP | GL_BYTE | GL_UNSIGNED_BYTE | GL_SHORT | GL_UNSIGNED_SHORT | GL_INT | GL_UNSIGNED_INT | GL_FLOAT
@@ -83,7 +83,7 @@ fn element_size(type_: GLenum) -> usize {
 }
 
 /// The pixel-store modes GLU reads with `glGetIntegerv` (`retrieveStoreModes`), one direction.
-struct PixelStore {
+pub(super) struct PixelStore {
     swap_bytes: bool,
     lsb_first: bool,
     row_length: usize,
@@ -94,7 +94,7 @@ struct PixelStore {
 
 impl Gl {
     /// The pack (`true`) or unpack modes.
-    fn glu_store(&self, pack: bool) -> PixelStore {
+    pub(super) fn glu_store(&self, pack: bool) -> PixelStore {
         let s = if pack { self.pack_store() } else { self.unpack_store() };
         PixelStore {
             swap_bytes: s.swap_bytes,
@@ -109,18 +109,24 @@ impl Gl {
 
 /// Where the components of an image lie in client memory under a pixel store (GLU's own
 /// arithmetic, which is GL's): each row's first byte, and the bit or byte step.
-struct Layout {
-    rows: Vec<usize>,
+pub(super) struct Layout {
+    pub rows: Vec<usize>,
     /// The bit of the first component of each row (bitmaps).
     first_bit: usize,
     element: usize,
     elements_per_row: usize,
     /// The last byte touched, plus one.
-    end: usize,
+    pub end: usize,
 }
 
 impl Layout {
-    fn new(store: &PixelStore, width: usize, height: usize, components: usize, type_: GLenum) -> Option<Self> {
+    pub(super) fn new(
+        store: &PixelStore,
+        width: usize,
+        height: usize,
+        components: usize,
+        type_: GLenum,
+    ) -> Option<Self> {
         let groups = if store.row_length > 0 { store.row_length } else { width };
         let element = element_size(type_);
         let unpadded = if type_ == GL_BITMAP {
@@ -211,7 +217,7 @@ fn empty_element(value: u16, out: &mut [u8], type_: GLenum, swap: bool, index: b
 }
 
 /// `fill_image`: the client's image as GLU's 16-bit components, row after row.
-fn fill_image(store: &PixelStore, layout: &Layout, type_: GLenum, index: bool, data: &[u8]) -> Vec<u16> {
+pub(super) fn fill_image(store: &PixelStore, layout: &Layout, type_: GLenum, index: bool, data: &[u8]) -> Vec<u16> {
     let mut out = Vec::with_capacity(layout.rows.len() * layout.elements_per_row);
     for &row in &layout.rows {
         for j in 0..layout.elements_per_row {
@@ -303,7 +309,12 @@ fn coverage(low: f32, high: f32, size: usize) -> Vec<(usize, f32)> {
 }
 
 /// `scale_internal`: the box filter, in GLU's float arithmetic.
-fn scale(components: usize, (win, hin): (usize, usize), data: &[u16], (wout, hout): (usize, usize)) -> Vec<u16> {
+pub(super) fn scale(
+    components: usize,
+    (win, hin): (usize, usize),
+    data: &[u16],
+    (wout, hout): (usize, usize),
+) -> Vec<u16> {
     if win == wout * 2 && hin == hout * 2 {
         return halve(components, win, hin, data);
     }

@@ -21,3 +21,5 @@ cc -std=c99 -O1 -o "$build/strings" "$here/strings.c" -lGLU -lGL
 "$build/strings" > "$out/strings.txt"
 cc -std=c99 -O1 -o "$build/scale_image" "$here/scale_image.c" -lOSMesa -lGLU -lGL
 GALLIUM_DRIVER=llvmpipe "$build/scale_image" > "$out/scale_image.txt"
+cc -std=c99 -O1 -o "$build/mipmaps" "$here/mipmaps.c" -lOSMesa -lGLU -lGL
+GALLIUM_DRIVER=llvmpipe "$build/mipmaps" > "$out/mipmaps.txt"
