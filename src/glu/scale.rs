@@ -346,6 +346,19 @@ pub(super) fn scale(
 }
 
 impl Gl {
+    /// Bytes GLU reads (`pack` false: with the unpack modes) or writes (`pack` true: with the
+    /// pack modes) for a `width` × `height` image of `format` and `type_` in its mipmap and
+    /// scaling calls; `None` for sizes, formats or types GLU rejects before touching memory.
+    /// The C ABI sizes its slices with this.
+    #[must_use]
+    pub fn glu_image_len(&self, width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum, pack: bool) -> Option<usize> {
+        if width <= 0 || height <= 0 || !legal_format(format) || !legal_type(type_) {
+            return None;
+        }
+        let store = self.glu_store(pack);
+        Layout::new(&store, width as usize, height as usize, components(format), type_).map(|l| l.end)
+    }
+
     /// `gluScaleImage`: `datain` (`widthin`×`heightin` pixels of `format` and `typein`, read
     /// with the unpack modes) resampled to `widthout`×`heightout` into `dataout` (as
     /// `typeout`, written with the pack modes). Returns 0 (also when a size is 0, doing

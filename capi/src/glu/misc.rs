@@ -2,7 +2,7 @@
 //! `gluCheckExtension`.
 
 use crate::context::with_gl;
-use crate::memory::bytes;
+use crate::memory::{array_mut, bytes};
 use crate::strings::static_c_string;
 use gleval::gl::types::*;
 use std::ffi::{c_void, CStr};
@@ -61,5 +61,93 @@ entry! {
         // SAFETY: GLU's contract: both are NUL-terminated strings.
         let (name, string) = unsafe { (CStr::from_ptr(ext_name.cast()), CStr::from_ptr(ext_string.cast())) };
         gleval::glu::glu_check_extension(name.to_bytes(), string.to_bytes())
+    }
+}
+
+entry! {
+    /// `gluScaleImage`: reads the image under the unpack modes, writes the scaled one under
+    /// the pack modes; returns 0 or a GLU error.
+    #[allow(clippy::too_many_arguments)]
+    unsafe fn gluScaleImage(
+        format: GLenum, widthin: GLint, heightin: GLint, typein: GLenum, datain: *const c_void, widthout: GLint,
+        heightout: GLint, typeout: GLenum, dataout: *mut c_void,
+    ) -> GLint {
+        with_gl(|gl| {
+            let input = unsafe { bytes(datain, gl.glu_image_len(widthin, heightin, format, typein, false)) };
+            let out_len = gl.glu_image_len(widthout, heightout, format, typeout, true).unwrap_or(0);
+            let output = unsafe { array_mut(dataout.cast::<u8>(), out_len) };
+            gl.glu_scale_image(format, widthin, heightin, typein, input, widthout, heightout, typeout, output)
+        })
+    }
+}
+
+entry! {
+    /// `gluBuild1DMipmaps`.
+    unsafe fn gluBuild1DMipmaps(
+        target: GLenum, internal_format: GLint, width: GLsizei, format: GLenum, type_: GLenum, data: *const c_void,
+    ) -> GLint {
+        with_gl(|gl| {
+            let data = unsafe { bytes(data, gl.glu_image_len(width, 1, format, type_, false)) };
+            gl.glu_build_1d_mipmaps(target, internal_format, width, format, type_, data)
+        })
+    }
+}
+
+entry! {
+    /// `gluBuild1DMipmapLevels`.
+    #[allow(clippy::too_many_arguments)]
+    unsafe fn gluBuild1DMipmapLevels(
+        target: GLenum, internal_format: GLint, width: GLsizei, format: GLenum, type_: GLenum, user_level: GLint,
+        base_level: GLint, max_level: GLint, data: *const c_void,
+    ) -> GLint {
+        with_gl(|gl| {
+            let data = unsafe { bytes(data, gl.glu_image_len(width, 1, format, type_, false)) };
+            gl.glu_build_1d_mipmap_levels(target, internal_format, width, format, type_, user_level, base_level, max_level, data)
+        })
+    }
+}
+
+entry! {
+    /// `gluBuild2DMipmapLevels`.
+    #[allow(clippy::too_many_arguments)]
+    unsafe fn gluBuild2DMipmapLevels(
+        target: GLenum, internal_format: GLint, width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum,
+        user_level: GLint, base_level: GLint, max_level: GLint, data: *const c_void,
+    ) -> GLint {
+        with_gl(|gl| {
+            let data = unsafe { bytes(data, gl.unpacked_image_len(width, height, format, type_)) };
+            gl.glu_build_2d_mipmap_levels(
+                target, internal_format, width, height, format, type_, user_level, base_level, max_level, data,
+            )
+        })
+    }
+}
+
+entry! {
+    /// `gluBuild3DMipmaps`: GLU's checks, then GL 1.1's answer to a 3D texture (the image is
+    /// not read).
+    #[allow(clippy::too_many_arguments)]
+    fn gluBuild3DMipmaps(
+        target: GLenum, internal_format: GLint, width: GLsizei, height: GLsizei, depth: GLsizei, format: GLenum,
+        type_: GLenum, data: *const c_void,
+    ) -> GLint {
+        let _ = data;
+        with_gl(|gl| gl.glu_build_3d_mipmaps::<u8>(target, internal_format, width, height, depth, format, type_, &[]))
+    }
+}
+
+entry! {
+    /// `gluBuild3DMipmapLevels`: as `gluBuild3DMipmaps`.
+    #[allow(clippy::too_many_arguments)]
+    fn gluBuild3DMipmapLevels(
+        target: GLenum, internal_format: GLint, width: GLsizei, height: GLsizei, depth: GLsizei, format: GLenum,
+        type_: GLenum, user_level: GLint, base_level: GLint, max_level: GLint, data: *const c_void,
+    ) -> GLint {
+        let _ = data;
+        with_gl(|gl| {
+            gl.glu_build_3d_mipmap_levels::<u8>(
+                target, internal_format, width, height, depth, format, type_, user_level, base_level, max_level, &[],
+            )
+        })
     }
 }
