@@ -99,9 +99,19 @@ static const GLint loops[] = {-1, 0, 1, 2, 7};
 static const GLenum quadric_modes[] = {GLU_FILL, GLU_LINE, GLU_SILHOUETTE, GLU_POINT, GLU_NONE, GLU_FLAT,
     GLU_SMOOTH, GLU_OUTSIDE, GLU_INSIDE, 0x1234};
 
+static const GLenum image_formats[] = {GL_RGB, GL_RGBA, GL_LUMINANCE, GL_COLOR_INDEX, GL_STENCIL_INDEX, GL_BGRA, 0x1234};
+static const GLenum image_types[] = {GL_UNSIGNED_BYTE, GL_BYTE, GL_SHORT, GL_UNSIGNED_INT, GL_FLOAT, GL_BITMAP,
+    GL_UNSIGNED_SHORT_5_6_5, 0x1234};
+static float image_out[4096];
+
 static void quadric_call(void) {
     GLUquadric *q = pick(10) ? quads[pick(2)] : NULL;
-    switch (pick(9)) {
+    switch (pick(12)) {
+    case 9: gluScaleImage(ANY(image_formats), ANY(loops), ANY(loops), ANY(image_types), buf, ANY(loops),
+                          ANY(loops), ANY(image_types), image_out); break;
+    case 10: gluBuild1DMipmaps(GL_TEXTURE_1D, GL_RGB, ANY(slices) % 64, ANY(image_formats), ANY(image_types), buf); break;
+    case 11: gluBuild2DMipmapLevels(GL_TEXTURE_2D, GL_RGB, ANY(loops), ANY(loops), ANY(image_formats), GL_UNSIGNED_BYTE,
+                                    ANY(loops), ANY(loops), ANY(loops), buf); break;
     case 0: gluQuadricDrawStyle(q, ANY(quadric_modes)); break;
     case 1: gluQuadricNormals(q, ANY(quadric_modes)); break;
     case 2: gluQuadricOrientation(q, ANY(quadric_modes)); break;

@@ -220,7 +220,8 @@ impl Gl {
         let store = self.unpack_store();
         let stride = store.row_stride(width, components, 1);
         let first = store.first_byte(stride, components);
-        let needed = first + (height - 1) * stride + width * components;
+        let needed =
+            first.checked_add((height - 1).checked_mul(stride)?)?.checked_add(width.checked_mul(components)?)?;
         if bytes.len() < needed {
             return None;
         }

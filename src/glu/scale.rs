@@ -110,7 +110,11 @@ impl Gl {
 /// Where the components of an image lie in client memory under a pixel store (GLU's own
 /// arithmetic, which is GL's): each row's first byte, and the bit or byte step.
 pub(super) struct Layout {
-    pub rows: Vec<usize>,
+    /// The first row's first byte.
+    start: usize,
+    /// Bytes from one row to the next.
+    row_size: usize,
+    height: usize,
     /// The bit of the first component of each row (bitmaps).
     first_bit: usize,
     element: usize,
@@ -120,6 +124,7 @@ pub(super) struct Layout {
 }
 
 impl Layout {
+    /// `None` when the image's extent overflows memory.
     pub(super) fn new(
         store: &PixelStore,
         width: usize,
@@ -136,18 +141,29 @@ impl Layout {
         };
         let padding = unpadded % store.alignment;
         let row_size = if padding > 0 { unpadded + store.alignment - padding } else { unpadded };
-        let start = if type_ == GL_BITMAP {
-            store.skip_rows.checked_mul(row_size)? + store.skip_pixels.checked_mul(components)? / 8
+        let skipped = if type_ == GL_BITMAP {
+            store.skip_pixels.checked_mul(components)? / 8
         } else {
-            store.skip_rows.checked_mul(row_size)? + store.skip_pixels.checked_mul(components * element)?
+            store.skip_pixels.checked_mul(components * element)?
         };
+        let start = store.skip_rows.checked_mul(row_size)?.checked_add(skipped)?;
         let first_bit = store.skip_pixels.wrapping_mul(components) % 8;
         let elements_per_row = width.checked_mul(components)?;
-        let row_bytes =
-            if type_ == GL_BITMAP { (first_bit + elements_per_row).div_ceil(8) } else { elements_per_row * element };
-        let rows: Vec<usize> = (0..height).map(|i| start + i * row_size).collect();
-        let end = rows.last().map_or(0, |&r| r + row_bytes);
-        Some(Layout { rows, first_bit, element, elements_per_row, end })
+        let row_bytes = if type_ == GL_BITMAP {
+            first_bit.checked_add(elements_per_row)?.div_ceil(8)
+        } else {
+            elements_per_row.checked_mul(element)?
+        };
+        let end = match height {
+            0 => 0,
+            h => start.checked_add((h - 1).checked_mul(row_size)?)?.checked_add(row_bytes)?,
+        };
+        Some(Layout { start, row_size, height, first_bit, element, elements_per_row, end })
+    }
+
+    /// Each row's first byte.
+    fn rows(&self) -> impl Iterator<Item = usize> + '_ {
+        (0..self.height).map(|i| self.start + i * self.row_size)
     }
 }
 
@@ -218,8 +234,8 @@ fn empty_element(value: u16, out: &mut [u8], type_: GLenum, swap: bool, index: b
 
 /// `fill_image`: the client's image as GLU's 16-bit components, row after row.
 pub(super) fn fill_image(store: &PixelStore, layout: &Layout, type_: GLenum, index: bool, data: &[u8]) -> Vec<u16> {
-    let mut out = Vec::with_capacity(layout.rows.len() * layout.elements_per_row);
-    for &row in &layout.rows {
+    let mut out = Vec::with_capacity(layout.height * layout.elements_per_row);
+    for row in layout.rows() {
         for j in 0..layout.elements_per_row {
             if type_ == GL_BITMAP {
                 let bit = layout.first_bit + j;
@@ -243,7 +259,7 @@ pub(super) fn fill_image(store: &PixelStore, layout: &Layout, type_: GLenum, ind
 /// `empty_image`: GLU's 16-bit components written into the client's memory.
 fn empty_image(store: &PixelStore, layout: &Layout, type_: GLenum, index: bool, image: &[u16], out: &mut [u8]) {
     let mut values = image.iter();
-    for &row in &layout.rows {
+    for row in layout.rows() {
         for j in 0..layout.elements_per_row {
             let Some(&value) = values.next() else { return };
             if type_ == GL_BITMAP {
@@ -351,7 +367,14 @@ impl Gl {
     /// scaling calls; `None` for sizes, formats or types GLU rejects before touching memory.
     /// The C ABI sizes its slices with this.
     #[must_use]
-    pub fn glu_image_len(&self, width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum, pack: bool) -> Option<usize> {
+    pub fn glu_image_len(
+        &self,
+        width: GLsizei,
+        height: GLsizei,
+        format: GLenum,
+        type_: GLenum,
+        pack: bool,
+    ) -> Option<usize> {
         if width <= 0 || height <= 0 || !legal_format(format) || !legal_type(type_) {
             return None;
         }

@@ -71,3 +71,63 @@ fn scale_image_matches_real_glu() {
     assert!(cases > 800);
     assert!(failures.is_empty(), "{} of {cases} differ from GLU:\n{}", failures.len(), failures.join("\n"));
 }
+
+mod properties {
+    use super::*;
+    use proptest::prelude::*;
+
+    fn format() -> impl Strategy<Value = u32> {
+        prop::sample::select(vec![
+            GL_RGB,
+            GL_RGBA,
+            GL_LUMINANCE_ALPHA,
+            GL_COLOR_INDEX,
+            GL_STENCIL_INDEX,
+            GL_BGR,
+            0x1234,
+            GL_BITMAP,
+        ])
+    }
+
+    fn type_() -> impl Strategy<Value = u32> {
+        prop::sample::select(vec![
+            GL_UNSIGNED_BYTE,
+            GL_BYTE,
+            GL_SHORT,
+            GL_UNSIGNED_SHORT,
+            GL_INT,
+            GL_UNSIGNED_INT,
+            GL_FLOAT,
+            GL_BITMAP,
+            GL_UNSIGNED_SHORT_5_6_5,
+            GL_UNSIGNED_INT_8_8_8_8,
+            GL_DOUBLE,
+        ])
+    }
+
+    fn size() -> impl Strategy<Value = i32> {
+        prop_oneof![4 => -2i32..9, 1 => Just(i32::MAX), 1 => Just(i32::MIN)]
+    }
+
+    proptest! {
+        /// Any sizes, formats, types, pixel-store modes and slice lengths (short ones too):
+        /// no panic, and one of GLU's answers.
+        #[test]
+        fn scale_image_and_mipmaps_never_panic(
+            f in format(), tin in type_(), tout in type_(), (w, h, w2, h2) in (size(), size(), size(), size()),
+            s in 0i32..4, len_in in 0usize..2048, len_out in 0usize..2048,
+        ) {
+            let mut gl = Gl::new(4, 4);
+            store(&mut gl, s);
+            let data = input(tin, 3);
+            let mut out = vec![0u8; len_out];
+            let rc = gl.glu_scale_image(f, w, h, tin, &data[..len_in], w2, h2, tout, &mut out) as u32;
+            prop_assert!(rc == 0 || [GLU_INVALID_ENUM, GLU_INVALID_VALUE, GLU_INVALID_OPERATION].contains(&rc), "{}", rc);
+            gl.bind_texture(GL_TEXTURE_1D, 1);
+            let rc = gl.glu_build_1d_mipmaps(GL_TEXTURE_1D, 3, w.min(64), f, tin, &data[..len_in]) as u32;
+            prop_assert!(rc == 0 || [GLU_INVALID_ENUM, GLU_INVALID_VALUE, GLU_INVALID_OPERATION].contains(&rc), "{}", rc);
+            let rc = gl.glu_build_2d_mipmap_levels(GL_TEXTURE_2D, 3, w, h, f, tin, w2, h2, s, &data[..len_in]) as u32;
+            prop_assert!(rc == 0 || [GLU_INVALID_ENUM, GLU_INVALID_VALUE, GLU_INVALID_OPERATION].contains(&rc), "{}", rc);
+        }
+    }
+}
