@@ -61,7 +61,7 @@ fn fitted_power(n: i32) -> i32 {
             }
         }
     }
-    power.min(crate::gl::MAX_TEXTURE_SIZE as i32)
+    power.min(crate::gl::MAX_TEXTURE_SIZE)
 }
 
 impl Gl {

@@ -348,8 +348,8 @@ pub(super) fn scale(
                     let percent = xpercent * ypercent;
                     area += percent;
                     let base = (x + y * win) * components;
-                    for k in 0..components {
-                        totals[k] += f32::from(data[base + k]) * percent;
+                    for (total, &c) in totals.iter_mut().zip(&data[base..base + components]) {
+                        *total += f32::from(c) * percent;
                     }
                 }
             }

@@ -84,7 +84,10 @@ impl Quadric {
     }
 }
 
-/// GLU's sweep rules: beyond ±360 is 360; a negative sweep starts that much earlier.
+/// GLU's sweep rules: beyond ±360 is 360; a negative sweep starts that much earlier. A NaN
+/// sweep stays NaN (GLU's two comparisons are false for it; `RangeInclusive::contains` would
+/// make it 360).
+#[allow(clippy::manual_range_contains)]
 fn normalised_sweep(mut start: f64, mut sweep: f64) -> (f64, f64) {
     if sweep < -360.0 || sweep > 360.0 {
         sweep = 360.0;

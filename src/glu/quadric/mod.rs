@@ -94,7 +94,10 @@ impl Quadric {
     /// Sets the draw style; `Err(GLU_INVALID_ENUM)` (and no change) for another value.
     pub fn set_draw_style(&mut self, style: GLenum) -> Result<(), GLenum> {
         match style {
-            GLU_POINT | GLU_LINE | GLU_FILL | GLU_SILHOUETTE => Ok(self.draw_style = style),
+            GLU_POINT | GLU_LINE | GLU_FILL | GLU_SILHOUETTE => {
+                self.draw_style = style;
+                Ok(())
+            }
             _ => Err(GLU_INVALID_ENUM),
         }
     }
@@ -102,7 +105,10 @@ impl Quadric {
     /// Sets the normal mode; `Err(GLU_INVALID_ENUM)` (and no change) for another value.
     pub fn set_normals(&mut self, normals: GLenum) -> Result<(), GLenum> {
         match normals {
-            GLU_SMOOTH | GLU_FLAT | GLU_NONE => Ok(self.normals = normals),
+            GLU_SMOOTH | GLU_FLAT | GLU_NONE => {
+                self.normals = normals;
+                Ok(())
+            }
             _ => Err(GLU_INVALID_ENUM),
         }
     }
@@ -110,7 +116,10 @@ impl Quadric {
     /// Sets the orientation; `Err(GLU_INVALID_ENUM)` (and no change) for another value.
     pub fn set_orientation(&mut self, orientation: GLenum) -> Result<(), GLenum> {
         match orientation {
-            GLU_OUTSIDE | GLU_INSIDE => Ok(self.orientation = orientation),
+            GLU_OUTSIDE | GLU_INSIDE => {
+                self.orientation = orientation;
+                Ok(())
+            }
             _ => Err(GLU_INVALID_ENUM),
         }
     }
