@@ -8,7 +8,7 @@ pub use crate::gl::types::*;
 pub use crate::gl::{Frame, Gl, Primitive, Vertex};
 pub use crate::gll;
 pub use crate::glu::consts::*;
-pub use crate::glu::{glu_error_string, GLUnurbs, NurbsCallback};
+pub use crate::glu::{glu_error_string, GLUnurbs, GLUquadric, NurbsCallback};
 pub use crate::glu::{GLUtesselator, TessCallback};
 pub use crate::glut::consts::*;
 pub use crate::glut::fonts::{GlutBitmapFont, GlutCharacter, GlutStrokeFont};

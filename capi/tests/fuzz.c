@@ -23,6 +23,7 @@ static double dbuf[16384];
 static GLuint names[64];
 static GLUnurbs *nurbs[4];
 static GLUtesselator *tess[2];
+static GLUquadric *quads[2];
 /* Between glNewList and glEndList no list is called: a list that calls itself n times runs
  * n^64 calls before GL's nesting limit stops it, in Mesa as here (a hang, not a fault). */
 static int compiling;
@@ -139,6 +140,40 @@ static void tess_call(void) {
         case 4: gluTessCallback(t, GLU_TESS_EDGE_FLAG, pick(2) ? (_GLUfuncptr)tess_edge_cb : NULL); break;
         default: gluTessCallback(t, pick(2) ? GLU_TESS_ERROR : 0x1234, (_GLUfuncptr)tess_error_cb); break;
         }
+    }
+}
+
+/* Quadrics: any mode (bad ones are GLU_INVALID_ENUM), NaN and infinite sizes, bad counts.
+ * Stacks and loops stay small where GLU loops over them unclamped (a cylinder of 2^31 stacks
+ * runs as long in GLU); slices and a sphere's stacks are clamped to 239 by GLU itself, and one
+ * of a sphere's two counts stays small so that the frame stays quick to render. */
+static const GLint slices[] = {-5, -1, 0, 1, 2, 3, 8, 300, 2147483647, -2147483647 - 1};
+static const GLint loops[] = {-1, 0, 1, 2, 7};
+static const GLenum quadric_modes[] = {GLU_FILL, GLU_LINE, GLU_SILHOUETTE, GLU_POINT, GLU_NONE, GLU_FLAT,
+    GLU_SMOOTH, GLU_OUTSIDE, GLU_INSIDE, 0x1234};
+
+static const GLenum image_formats[] = {GL_RGB, GL_RGBA, GL_LUMINANCE, GL_COLOR_INDEX, GL_STENCIL_INDEX, GL_BGRA, 0x1234};
+static const GLenum image_types[] = {GL_UNSIGNED_BYTE, GL_BYTE, GL_SHORT, GL_UNSIGNED_INT, GL_FLOAT, GL_BITMAP,
+    GL_UNSIGNED_SHORT_5_6_5, 0x1234};
+static float image_out[4096];
+
+static void quadric_call(void) {
+    GLUquadric *q = pick(10) ? quads[pick(2)] : NULL;
+    switch (pick(12)) {
+    case 9: gluScaleImage(ANY(image_formats), ANY(loops), ANY(loops), ANY(image_types), buf, ANY(loops),
+                          ANY(loops), ANY(image_types), image_out); break;
+    case 10: gluBuild1DMipmaps(GL_TEXTURE_1D, GL_RGB, ANY(slices) % 64, ANY(image_formats), ANY(image_types), buf); break;
+    case 11: gluBuild2DMipmapLevels(GL_TEXTURE_2D, GL_RGB, ANY(loops), ANY(loops), ANY(image_formats), GL_UNSIGNED_BYTE,
+                                    ANY(loops), ANY(loops), ANY(loops), buf); break;
+    case 0: gluQuadricDrawStyle(q, ANY(quadric_modes)); break;
+    case 1: gluQuadricNormals(q, ANY(quadric_modes)); break;
+    case 2: gluQuadricOrientation(q, ANY(quadric_modes)); break;
+    case 3: gluQuadricTexture(q, (GLboolean)pick(3)); break;
+    case 4: gluQuadricCallback(q, pick(2) ? GLU_ERROR : 0x1234, pick(3) ? (_GLUfuncptr)error_cb : NULL); break;
+    case 5: if (pick(2)) gluSphere(q, f(), ANY(slices), ANY(loops)); else gluSphere(q, f(), ANY(loops), ANY(slices)); break;
+    case 6: gluCylinder(q, f(), f(), f(), ANY(slices), ANY(loops)); break;
+    case 7: gluDisk(q, f(), f(), ANY(slices), ANY(loops)); break;
+    default: gluPartialDisk(q, f(), f(), ANY(slices), ANY(loops), f(), f()); break;
     }
 }
 
@@ -288,18 +323,20 @@ static void pixel_call(void) {
 static void display(void) {
     for (int i = 0; i < 4; i++) nurbs[i] = gluNewNurbsRenderer();
     for (int i = 0; i < 2; i++) tess[i] = gluNewTess();
+    for (int i = 0; i < 2; i++) quads[i] = gluNewQuadric();
     for (size_t i = 0; i < sizeof buf / sizeof buf[0]; i++) {
         buf[i] = (i % 17 == 5) ? NAN : (float)((int)(i % 11) - 5) * 0.4f;
         dbuf[i] = buf[i];
     }
     for (int i = 0; i < 600; i++) indices32[i] = indices[i] = (GLushort)((i * 7919) % 600);
     for (unsigned long c = 0; c < calls; c++) {
-        switch (pick(6)) {
+        switch (pick(7)) {
         case 0: map_call(); break;
         case 1: nurbs_call(); break;
         case 2: tess_call(); break;
         case 3: array_call(); break;
         case 4: pixel_call(); break;
+        case 5: quadric_call(); break;
         default: state_call(); break;
         }
         GLenum e = glGetError();
@@ -317,6 +354,8 @@ static void display(void) {
     gluDeleteNurbsRenderer(NULL);
     for (int i = 0; i < 2; i++) gluDeleteTess(tess[i]);
     gluDeleteTess(NULL);
+    for (int i = 0; i < 2; i++) gluDeleteQuadric(quads[i]);
+    gluDeleteQuadric(NULL);
     printf("fuzz: %lu calls returned; errors: none %lu, enum %lu, value %lu, operation %lu, "
            "overflow %lu, underflow %lu, out of memory %lu\n", done_calls, errors[0], errors[1],
            errors[2], errors[3], errors[4], errors[5], errors[6]);

@@ -203,6 +203,8 @@ pub struct Gl {
     arrays: arrays::VertexArrays,
     /// Selection mode: its buffer, the name stack and the hit being gathered.
     select: select::Selection,
+    /// GLU quadric objects, indexed by their handles (as `nurbs`).
+    pub(crate) quadrics: Vec<Option<crate::glu::quadric::QuadricObject>>,
 }
 
 impl Gl {
@@ -245,6 +247,7 @@ impl Gl {
             tessellators: Vec::new(),
             arrays: arrays::VertexArrays::default(),
             select: select::Selection::default(),
+            quadrics: Vec::new(),
         }
     }
 

@@ -152,6 +152,11 @@ impl Gl {
         self.pixel_stores.unpack
     }
 
+    /// The pack modes images are written with (GLU's `gluScaleImage` writes with them too).
+    pub(crate) fn pack_store(&self) -> PixelStore {
+        self.pixel_stores.pack
+    }
+
     /// `glGetIntegerv(GL_UNPACK_ALIGNMENT)`, which GLU saves around its own unpacking.
     pub(crate) fn unpack_alignment(&self) -> GLint {
         self.pixel_stores.unpack.alignment as GLint

@@ -681,6 +681,13 @@ impl Gl {
         }
     }
 
+    /// The levels loaded into the bound 1D (`dims` 1) or 2D texture, complete or not (tests of
+    /// `gluBuild*Mipmap*` read them as `glGetTexImage` would).
+    #[cfg(test)]
+    pub(crate) fn bound_levels(&mut self, dims: u8) -> Vec<Option<TexLevel>> {
+        self.bound_object_mut(dims).levels.clone()
+    }
+
     pub(super) fn bound_object_mut(&mut self, dims: u8) -> &mut TextureObject {
         let t = usize::from(dims - 1);
         match self.textures.bound[t] {

@@ -1,5 +1,6 @@
-//! `gluErrorString` (GLU 9.0 `libutil/error.c` and the NURBS table of `libutil/glue.c`), with
-//! GLU's exact texts, typos included.
+//! `gluErrorString` (GLU 9.0 `libutil/error.c`, the NURBS table of `libutil/glue.c` and the
+//! tessellator's of `libtess`), with GLU's exact texts, typos included: every GL and GLU code
+//! real GLU 9.0.2 answers (`tests/reference/glu/error_strings.txt` scans them all).
 
 use super::consts::*;
 use crate::gl::consts::*;
@@ -46,8 +47,22 @@ const NURBS_ERRORS: [&str; 37] = [
     "duplicate point on piecewise linear trimming curve",
 ];
 
-/// `gluErrorString(code)`: GL and GLU error codes and the NURBS errors; `None` (C's NULL) for
-/// anything else.
+/// The 6 tessellator error messages, entry n−1 for `GLU_TESS_ERRORn`.
+const TESS_ERRORS: [&str; 6] = [
+    "gluTessBeginPolygon() must precede a gluTessEndPolygon()",
+    "gluTessBeginContour() must precede a gluTessEndContour()",
+    "gluTessEndPolygon() must follow a gluTessBeginPolygon()",
+    "gluTessEndContour() must follow a gluTessBeginContour()",
+    "a coordinate is too large",
+    "need combine callback",
+];
+
+/// `GL_INVALID_FRAMEBUFFER_OPERATION` (`GL_EXT_framebuffer_object`, not a GL 1.1 code), which
+/// GLU's table names too.
+const INVALID_FRAMEBUFFER_OPERATION: GLenum = 0x0506;
+
+/// `gluErrorString(code)`: GL and GLU error codes, the tessellator's and the NURBS errors;
+/// `None` (C's NULL) for anything else.
 ///
 /// ```
 /// use gleval::glu::consts::GLU_NURBS_ERROR34;
@@ -64,7 +79,10 @@ pub fn glu_error_string(code: GLenum) -> Option<&'static str> {
         GL_STACK_OVERFLOW => "stack overflow",
         GL_STACK_UNDERFLOW => "stack underflow",
         GL_OUT_OF_MEMORY | GLU_OUT_OF_MEMORY => "out of memory",
+        INVALID_FRAMEBUFFER_OPERATION => "invalid framebuffer operation",
+        GL_TABLE_TOO_LARGE => "table too large",
         GLU_INCOMPATIBLE_GL_VERSION => "incompatible gl version",
+        GLU_TESS_ERROR1..=GLU_TESS_ERROR6 => TESS_ERRORS[(code - GLU_TESS_ERROR1) as usize],
         GLU_NURBS_ERROR1..=GLU_NURBS_ERROR37 => NURBS_ERRORS[(code - GLU_NURBS_ERROR1) as usize],
         _ => return None,
     };

@@ -152,13 +152,76 @@ impl Gl {
         0
     }
 
+    /// `gluBuild2DMipmapLevels`: `data` (bytes, `GL_UNSIGNED_BYTE`) is level `user_level`;
+    /// the levels below it are made by GLU's halving (sides that are not powers of two are
+    /// halved as they are, as GLU does) and those from `base_level` to `max_level` loaded.
+    /// GLU's checks first: `checkMipmapArgs`, sizes below 1, then `isLegalLevels` over the
+    /// larger side's levels (`GLU_INVALID_VALUE`). Types other than `GL_UNSIGNED_BYTE`, which
+    /// GLU takes, are `GLU_INVALID_ENUM` here.
+    #[allow(clippy::too_many_arguments)]
+    pub fn glu_build_2d_mipmap_levels<P: bytemuck::Pod>(
+        &mut self,
+        target: GLenum,
+        internal_format: GLint,
+        width: GLsizei,
+        height: GLsizei,
+        format: GLenum,
+        type_: GLenum,
+        user_level: GLint,
+        base_level: GLint,
+        max_level: GLint,
+        data: &[P],
+    ) -> GLint {
+        if let Err(code) = super::mipmap_levels::check_mipmap_args(format, type_) {
+            return code;
+        }
+        if width < 1 || height < 1 {
+            return GLU_INVALID_VALUE as GLint;
+        }
+        let log = |n: GLsizei| if n.count_ones() == 1 { n.trailing_zeros() as GLint } else { -1 };
+        let levels = log(width).max(log(height)).saturating_add(user_level);
+        if base_level < 0 || base_level < user_level || max_level < base_level || levels < max_level {
+            return GLU_INVALID_VALUE as GLint;
+        }
+        let components = match format {
+            GL_ALPHA | GL_LUMINANCE => 1,
+            GL_LUMINANCE_ALPHA => 2,
+            GL_RGB => 3,
+            GL_RGBA => 4,
+            _ => return GLU_INVALID_ENUM as GLint,
+        };
+        if type_ != GL_UNSIGNED_BYTE {
+            return GLU_INVALID_ENUM as GLint;
+        }
+        let Some(mut image) =
+            self.packed_image(width as usize, height as usize, components, bytemuck::cast_slice(data))
+        else {
+            return GLU_INVALID_VALUE as GLint;
+        };
+        let saved = self.unpack_alignment();
+        self.pixel_storei(GL_UNPACK_ALIGNMENT, 1);
+        for level in user_level..=levels.min(max_level) {
+            if level >= base_level {
+                let (lw, lh) = (image.width as GLsizei, image.height as GLsizei);
+                self.tex_image_2d(target, level, internal_format, lw, lh, 0, format, type_, &image.bytes);
+            }
+            if image.width == 1 && image.height == 1 {
+                break;
+            }
+            image = image.halved();
+        }
+        self.pixel_storei(GL_UNPACK_ALIGNMENT, saved);
+        0
+    }
+
     /// The client's image as tightly packed rows, read with the unpack pixel store.
     fn packed_image(&self, width: usize, height: usize, components: usize, bytes: &[u8]) -> Option<Image> {
         // GLU reads the unpack modes (glGetIntegerv) and unpacks the image itself.
         let store = self.unpack_store();
         let stride = store.row_stride(width, components, 1);
         let first = store.first_byte(stride, components);
-        let needed = first + (height - 1) * stride + width * components;
+        let needed =
+            first.checked_add((height - 1).checked_mul(stride)?)?.checked_add(width.checked_mul(components)?)?;
         if bytes.len() < needed {
             return None;
         }

@@ -1,4 +1,5 @@
-//! GLU: the NURBS interface (GLU 1.3 as SGI/Mesa GLU 9.0 implements it) and `gluErrorString`.
+//! GLU: the NURBS interface (GLU 1.3 as SGI/Mesa GLU 9.0 implements it), quadrics
+//! ([`quadric`]), mipmaps, `gluErrorString`, `gluGetString` and `gluCheckExtension`.
 //! `gluOrtho2D`, `gluPerspective` and `gluLookAt` are methods of [`crate::gl::Gl`] next to the
 //! matrix calls.
 //!
@@ -24,9 +25,13 @@ mod draw;
 mod errors;
 mod evaluation;
 mod mipmap;
+mod mipmap_levels;
 mod model;
 mod tess;
 mod project;
+pub mod quadric;
+mod scale;
+mod strings;
 
 pub use errors::glu_error_string;
 pub use model::callbacks::{NurbsCallback, UserData};
@@ -34,3 +39,5 @@ pub use model::object::GLUnurbs;
 pub(crate) use model::object::NurbsObject;
 pub(crate) use tess::TessObject;
 pub use tess::{GLUtesselator, TessCallback, TessData};
+pub use quadric::{GLUquadric, Quadric, QuadricSink};
+pub use strings::{glu_check_extension, glu_get_string};

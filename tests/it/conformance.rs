@@ -62,6 +62,8 @@ mod outline;
 pub(crate) mod picking;
 #[path = "../../examples/pixelmap.rs"]
 mod pixelmap;
+#[path = "../../examples/quadrics.rs"]
+mod quadrics;
 #[path = "../../examples/rational.rs"]
 mod rational;
 #[path = "../../examples/rationalmap.rs"]
@@ -248,6 +250,13 @@ fn linespoints_matches_mesa() {
 #[test]
 fn color_material_matches_mesa() {
     check("colormat", colormat::app, 0.0);
+}
+
+#[test]
+fn quadrics_match_mesa() {
+    // Every quadric in every draw style, lit and textured, through GLU's own GL calls: held
+    // to under 0.1% of pixels (measured: 0.000% on both rasterisers).
+    check_with("quadrics", quadrics::app, |_| 0.001);
 }
 
 #[test]

@@ -199,12 +199,45 @@ fn nurbs_errors_match_real_glu() {
 
 #[test]
 fn error_strings_match_real_glu() {
-    for line in reference("error_strings.txt").lines() {
+    // Each scanned range: GLU's messages, and NULL for every code it does not list.
+    let mut listed = std::collections::BTreeMap::new();
+    let mut ranges = Vec::new();
+    let text = reference("error_strings.txt");
+    for line in text.lines() {
         let (code, text) = line.split_once(' ').expect("code text");
-        let code: u32 = code.parse().expect("code");
-        let want = (text != "(null)").then_some(text);
-        assert_eq!(glu_error_string(code), want, "gluErrorString({code})");
+        if code == "range" {
+            let (from, to) = text.split_once(' ').expect("range from to");
+            ranges.push(from.parse::<u32>().unwrap()..=to.parse::<u32>().unwrap());
+        } else {
+            listed.insert(code.parse::<u32>().expect("code"), text);
+        }
     }
+    assert_eq!(ranges.len(), 2);
+    for code in ranges.into_iter().flatten() {
+        assert_eq!(glu_error_string(code), listed.get(&code).copied(), "gluErrorString({code})");
+    }
+}
+
+#[test]
+fn get_string_and_check_extension_match_real_glu() {
+    let gl = Gl::new(1, 1);
+    let text = reference("strings.txt");
+    let mut checked = 0;
+    for line in text.lines() {
+        let fields: Vec<&str> = line.splitn(4, '\t').collect();
+        match fields[..] {
+            ["get", _, name, want] => {
+                let want = (want != "(null)").then_some(want);
+                assert_eq!(gl.glu_get_string(name.parse().unwrap()), want, "{line}");
+            }
+            ["check", want, name, string] => {
+                assert_eq!(gl.glu_check_extension(name, string), want.parse::<u8>().unwrap(), "{line:?}");
+            }
+            _ => panic!("bad line {line:?}"),
+        }
+        checked += 1;
+    }
+    assert!(checked > 50);
 }
 
 #[test]

@@ -6,6 +6,8 @@ mod conformance;
 mod eval_mesh;
 mod glu_errors;
 mod glu_project;
+mod glu_mipmaps;
+mod glu_quadrics;
 mod glu_surfpoints;
 mod glu_tess;
 mod glu_tessellation;

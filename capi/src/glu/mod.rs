@@ -1,8 +1,9 @@
-//! `GL/glu.h`: projections, mipmaps, error strings, the NURBS interface and the polygon
-//! tessellator.
+//! `GL/glu.h`: projections, mipmaps, error strings, quadrics, the NURBS interface and the
+//! polygon tessellator.
 
 mod callbacks;
 mod misc;
 mod nurbs;
 mod tess;
 mod project;
+mod quadric;

@@ -19,3 +19,11 @@ cc -std=c99 -O1 -o "$build/tess_calls" "$here/tess_calls.c" -lGLU -lGL -lm
 "$build/tess_calls" < "$here/tess_cases.in" > "$out/tess_calls.txt"
 cc -std=c99 -O1 -o "$build/project" "$here/project.c" -lOSMesa -lGLU -lGL
 GALLIUM_DRIVER=llvmpipe "$build/project" > "$out/project.txt"
+cc -std=c99 -O1 -o "$build/quadrics" "$here/quadrics.c" -lGLU -lGL -lm
+"$build/quadrics" > "$out/quadrics.txt"
+cc -std=c99 -O1 -o "$build/strings" "$here/strings.c" -lGLU -lGL
+"$build/strings" > "$out/strings.txt"
+cc -std=c99 -O1 -o "$build/scale_image" "$here/scale_image.c" -lOSMesa -lGLU -lGL
+GALLIUM_DRIVER=llvmpipe "$build/scale_image" > "$out/scale_image.txt"
+cc -std=c99 -O1 -o "$build/mipmaps" "$here/mipmaps.c" -lOSMesa -lGLU -lGL
+GALLIUM_DRIVER=llvmpipe "$build/mipmaps" > "$out/mipmaps.txt"
