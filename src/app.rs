@@ -8,16 +8,18 @@
 mod callbacks;
 mod compose;
 pub(crate) mod program;
+mod running;
 
 pub use callbacks::{Int2Fn, Int3Fn, Int4Fn, Int5Fn, IntFn, JoystickFn, VoidFn};
+pub use running::{Pass, Running};
 
 use crate::gl::{Frame, Gl, Tessellator};
 use crate::glut::consts::{GLUT_DOWN, GLUT_UP};
-use program::Program;
 use crate::glut::popup::{Popup, PopupEvent};
 use crate::glut::state::TimerRequest;
 use crate::glut::{IdleFn, Schedule};
 use crate::render::{soft, Image, Rasterizer, RenderError, Renderer};
+use program::Program;
 
 type DisplayFn = Box<dyn FnMut(&mut Gl)>;
 type ReshapeFn = Box<dyn FnMut(&mut Gl, i32, i32)>;

@@ -86,7 +86,12 @@ fn depth_view(device: &wgpu::Device, width: u32, height: u32) -> wgpu::TextureVi
 impl Gpu {
     /// The window, a surface on it and a renderer on an adapter that can present to it:
     /// Vulkan first, then GL (or what `WGPU_BACKEND` says).
-    fn new(event_loop: &ActiveEventLoop, title: &str, facts: &WindowFacts, placed: Option<(i32, i32)>) -> Result<Self, String> {
+    fn new(
+        event_loop: &ActiveEventLoop,
+        title: &str,
+        facts: &WindowFacts,
+        placed: Option<(i32, i32)>,
+    ) -> Result<Self, String> {
         let (w, h) = (facts.width, facts.height);
         let mut attributes = Window::default_attributes()
             .with_title(title)
@@ -191,7 +196,6 @@ impl Gpu {
         self.lost.lock().ok().and_then(|slot| slot.clone())
     }
 }
-
 
 /// A top-level window on the screen.
 struct OnScreen {
@@ -494,12 +498,20 @@ impl WindowState {
         if let Some(code) = special_key(&event.logical_key) {
             return self.input_event(event_loop, |app, gl, x, y| {
                 let ran = app.run_special(gl, !pressed, code, x, y);
-                if ran { Redraw::Program } else { Redraw::Nothing }
+                if ran {
+                    Redraw::Program
+                } else {
+                    Redraw::Nothing
+                }
             });
         }
         // GLUT's keyboard callback gets the character typed (Enter is '\r', Backspace '\b').
         // A release carries no text: the logical key (layout and modifiers applied) gives it.
-        let text = if pressed { event.text.as_deref().or_else(|| key_text(&event.logical_key)) } else { key_text(&event.logical_key) };
+        let text = if pressed {
+            event.text.as_deref().or_else(|| key_text(&event.logical_key))
+        } else {
+            key_text(&event.logical_key)
+        };
         let Some(key) = text.and_then(|t| t.chars().next()) else { return };
         self.input_event(event_loop, |app, gl, x, y| {
             if pressed {
@@ -553,7 +565,11 @@ impl WindowState {
         for _ in 0..notches.unsigned_abs() {
             let direction = notches.signum();
             self.input_event(event_loop, |app, gl, x, y| {
-                if app.run_wheel(gl, direction, x, y) { Redraw::Program } else { Redraw::Nothing }
+                if app.run_wheel(gl, direction, x, y) {
+                    Redraw::Program
+                } else {
+                    Redraw::Nothing
+                }
             });
         }
     }

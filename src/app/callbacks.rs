@@ -67,13 +67,28 @@ macro_rules! builders {
     };
 }
 
-builders! {
+impl App {
     /// `glutVisibilityFunc`: `GLUT_VISIBLE` when the window is shown, `GLUT_NOT_VISIBLE` when
-    /// it is hidden or iconified (freeglut derives it from the window status).
-    visibility(i32) => visibility;
+    /// it is hidden or iconified. freeglut makes it of the window status, so it replaces a
+    /// window status callback (and [`App::window_status`] replaces it).
+    #[must_use]
+    pub fn visibility(mut self, f: impl FnMut(&mut Gl, i32) + 'static) -> Self {
+        self.more.visibility = Some(Box::new(f));
+        self.more.window_status = None;
+        self
+    }
+
     /// `glutWindowStatusFunc`: `GLUT_FULLY_RETAINED` when the window is shown, `GLUT_HIDDEN`
-    /// when it is hidden or iconified.
-    window_status(i32) => window_status;
+    /// when it is hidden or iconified; it replaces a visibility callback.
+    #[must_use]
+    pub fn window_status(mut self, f: impl FnMut(&mut Gl, i32) + 'static) -> Self {
+        self.more.window_status = Some(Box::new(f));
+        self.more.visibility = None;
+        self
+    }
+}
+
+builders! {
     /// `glutCloseFunc` (and `glutWMCloseFunc`, its old name): runs before the window closes,
     /// whether the user closed it or the program called `glutDestroyWindow`.
     close() => close;
@@ -133,7 +148,8 @@ impl App {
     /// The window status and visibility callbacks for a window shown (`true`) or hidden.
     pub(crate) fn run_shown(&mut self, gl: &mut Gl, shown: bool) {
         use crate::glut::consts::*;
-        let (status, visible) = if shown { (GLUT_FULLY_RETAINED, GLUT_VISIBLE) } else { (GLUT_HIDDEN, GLUT_NOT_VISIBLE) };
+        let (status, visible) =
+            if shown { (GLUT_FULLY_RETAINED, GLUT_VISIBLE) } else { (GLUT_HIDDEN, GLUT_NOT_VISIBLE) };
         Self::run_int(gl, &mut self.more.window_status, status);
         Self::run_int(gl, &mut self.more.visibility, visible);
     }

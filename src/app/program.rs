@@ -6,6 +6,7 @@
 use super::App;
 use crate::gl::Gl;
 use crate::glut::consts::*;
+use crate::glut::messages::Messages;
 use crate::glut::options::GlutOptions;
 use crate::glut::windows::{WindowFacts, WindowRequest};
 use crate::glut::Schedule;
@@ -49,6 +50,8 @@ pub(crate) struct Program {
     /// Milliseconds since the loop started (`GLUT_ELAPSED_TIME`; headless, virtual).
     pub now_ms: f64,
     pub screen: (i32, i32),
+    /// The program's handlers of freeglut's messages.
+    messages: Messages,
 }
 
 impl Program {
@@ -79,6 +82,7 @@ impl Program {
             slots.push(Slot { facts, app, gl, redisplay: true, reshape: None, z: id, iconic: false });
         }
         let options = slots.first().map(|s| s.gl.glut.options).unwrap_or_default();
+        let messages = slots.first().map(|s| s.gl.glut.messages.clone()).unwrap_or_default();
         let mut program = Self {
             slots,
             current: 1,
@@ -88,6 +92,7 @@ impl Program {
             effects: Vec::new(),
             now_ms: 0.0,
             screen: (0, 0),
+            messages,
         };
         for slot in &mut program.slots {
             slot.iconic = program.options.iconic && slot.facts.parent == 0;
@@ -116,6 +121,7 @@ impl Program {
             glut.current = self.current;
             glut.elapsed_ms = self.now_ms as i32;
             glut.screen = self.screen;
+            glut.messages.clone_from(&self.messages);
         }
     }
 
@@ -145,6 +151,7 @@ impl Program {
     fn absorb(&mut self, k: usize) {
         if let Some(slot) = self.slots.get_mut(k) {
             self.options = slot.gl.glut.options;
+            self.messages.clone_from(&slot.gl.glut.messages);
             self.current = slot.gl.glut.current;
             self.leave |= std::mem::take(&mut slot.gl.glut.leave_main_loop);
             self.schedule.absorb(&mut slot.gl, self.now_ms);
@@ -262,20 +269,30 @@ impl Program {
         self.options.action_on_close == GLUT_ACTION_EXIT
     }
 
-    /// The first frame of every window, as freeglut's first pass through its loop draws them:
-    /// per window in creation order, the init-context callback, the reshape, the window status
-    /// and visibility callbacks, then the display callback of a shown window.
+    /// The first frame of every window, in the order freeglut 3.4's first pass through its
+    /// loop runs the callbacks (seen under Xvfb): the init-context callbacks in creation order,
+    /// the reshapes in reverse creation order, the window status (or visibility) callbacks in
+    /// creation order, then the display callbacks of the shown windows in creation order.
     pub fn start(&mut self) {
         for k in 0..self.slots.len() {
             self.callback(k, |app, gl| app.run_init(gl));
         }
         let ids: Vec<i32> = self.slots.iter().map(|s| s.facts.id).collect();
-        for id in ids {
-            let Some(k) = self.index(id) else { continue };
-            self.callback(k, |app, gl| app.run_init_context(gl));
-            self.reshape(k);
-            let shown = self.slots[k].facts.shown;
-            self.callback(k, |app, gl| app.run_shown(gl, shown));
+        for &id in &ids {
+            if let Some(k) = self.index(id) {
+                self.callback(k, |app, gl| app.run_init_context(gl));
+            }
+        }
+        for &id in ids.iter().rev() {
+            if let Some(k) = self.index(id) {
+                self.reshape(k);
+            }
+        }
+        for &id in &ids {
+            if let Some(k) = self.index(id) {
+                let shown = self.slots[k].facts.shown;
+                self.callback(k, |app, gl| app.run_shown(gl, shown));
+            }
         }
         self.display_pending();
     }
@@ -365,5 +382,53 @@ impl Program {
             }
         }
         false
+    }
+}
+
+impl App {
+    /// Before the main loop (the C ABI, between `glutCreateWindow` and `glutMainLoop`): every
+    /// window gets its context if it has none, and every context learns the program's windows,
+    /// that `current` is the current window, and the settings of `current`'s context, so that
+    /// `glutGet`, `glutSetWindow` and the settings answer as they will in the loop.
+    pub fn sync_contexts(&mut self, current: i32) {
+        let mut facts = Vec::new();
+        let count = self.extra.len() as i32 + 1;
+        for id in 1..=count {
+            let parent = if id == 1 { 0 } else { self.extra[id as usize - 2].0 };
+            let app = self.window_mut(id).expect("numbered above");
+            let (x, y) = app.position.unwrap_or((0, 0));
+            let (width, height) = (app.width, app.height);
+            let gl = app.context_mut();
+            gl.glut.window = id;
+            let shown = !gl.glut.requests.iter().any(|(w, r)| *w == id && *r == WindowRequest::Destroy);
+            let f = WindowFacts {
+                id,
+                parent,
+                x,
+                y,
+                width,
+                height,
+                shown,
+                cursor: GLUT_CURSOR_INHERIT,
+                ..WindowFacts::default()
+            };
+            facts.push(f);
+        }
+        for f in &mut facts {
+            f.children = (2..=count).filter(|&c| self.extra[c as usize - 2].0 == f.id).count() as i32;
+        }
+        let options = self.window_mut(current).map(|w| {
+            let glut = &w.context_mut().glut;
+            (glut.options, glut.messages.clone())
+        });
+        for id in 1..=count {
+            let gl = self.window_mut(id).expect("numbered above").context_mut();
+            gl.glut.windows.clone_from(&facts);
+            gl.glut.current = current;
+            if let Some((options, messages)) = &options {
+                gl.glut.options = *options;
+                gl.glut.messages.clone_from(messages);
+            }
+        }
     }
 }

@@ -10,16 +10,24 @@
 
 pub mod consts;
 pub mod fonts;
+mod limits;
 mod menu;
+pub(crate) mod messages;
 #[cfg(all(feature = "gpu", feature = "png"))]
 pub(crate) mod popup;
 // The main loop's scheduling belongs to the runner, `App`.
+mod cylinder;
+pub(crate) mod options;
+mod polyhedra;
 #[cfg(all(feature = "gpu", feature = "png"))]
 mod schedule;
-pub(crate) mod options;
 mod shapes;
+#[rustfmt::skip]
+#[allow(clippy::excessive_precision, clippy::unreadable_literal)]
+mod solids_data;
 pub(crate) mod state;
 mod teapot;
+mod teaset;
 pub(crate) mod windows;
 
 pub use menu::MenuFn;
@@ -30,6 +38,8 @@ pub(crate) use state::GlutState;
 use crate::gl::types::GLenum;
 use crate::gl::Gl;
 use consts::*;
+pub use limits::display_mode_from_string;
+pub use messages::MessageFn;
 pub use options::FREEGLUT_VERSION;
 use windows::WindowRequest;
 
@@ -125,7 +135,9 @@ impl Gl {
             GLUT_WINDOW_ALPHA_SIZE => bits(GLUT_ALPHA, 8),
             GLUT_WINDOW_BUFFER_SIZE => 24 + bits(GLUT_ALPHA, 8),
             GLUT_WINDOW_STENCIL_SIZE => bits(GLUT_STENCIL, 8),
-            GLUT_WINDOW_ACCUM_RED_SIZE | GLUT_WINDOW_ACCUM_GREEN_SIZE | GLUT_WINDOW_ACCUM_BLUE_SIZE => bits(GLUT_ACCUM, 16),
+            GLUT_WINDOW_ACCUM_RED_SIZE | GLUT_WINDOW_ACCUM_GREEN_SIZE | GLUT_WINDOW_ACCUM_BLUE_SIZE => {
+                bits(GLUT_ACCUM, 16)
+            }
             GLUT_WINDOW_ACCUM_ALPHA_SIZE => bits(GLUT_ACCUM | GLUT_ALPHA, 16) * i32::from(mode & GLUT_ALPHA != 0),
             GLUT_WINDOW_COLORMAP_SIZE
             | GLUT_WINDOW_NUM_SAMPLES
@@ -138,5 +150,23 @@ impl Gl {
             GLUT_MENU_NUM_ITEMS => self.glut_menu_num_items(),
             _ => -1,
         }
+    }
+
+    /// `glutLeaveMainLoop` (freeglut): the main loop ends after the current callback; with
+    /// `GLUT_ACTION_ON_WINDOW_CLOSE` at `GLUT_ACTION_EXIT` (the default) the program then exits,
+    /// otherwise `glutMainLoop` returns.
+    pub fn glut_leave_main_loop(&mut self) {
+        self.glut.leave_main_loop = true;
+    }
+
+    /// `glutExtensionSupported(name)`: whether `name` is one of the words of
+    /// `glGetString(GL_EXTENSIONS)` (GLUT 3 spec §9.1: a whole word, not a prefix).
+    #[must_use]
+    pub fn glut_extension_supported(&mut self, name: &str) -> i32 {
+        if name.is_empty() || name.contains(' ') {
+            return 0;
+        }
+        let extensions = self.get_string(crate::gl::consts::GL_EXTENSIONS).unwrap_or_default();
+        i32::from(extensions.split_whitespace().any(|e| e == name))
     }
 }

@@ -37,6 +37,10 @@ pub(crate) struct GlutOptions {
     pub init_position: (i32, i32),
     /// `-iconic`: top-level windows start iconified.
     pub iconic: bool,
+    /// `glutGameModeString`: width, height, bits per pixel, refresh rate.
+    pub game_mode: super::limits::GameMode,
+    /// `glutSetVertexAttribCoord3`, `...Normal`, `...TexCoord2`.
+    pub vertex_attribs: [i32; 3],
 }
 
 impl Default for GlutOptions {
@@ -55,6 +59,8 @@ impl Default for GlutOptions {
             context_profile: 0,
             init_position: (-1, -1),
             iconic: false,
+            game_mode: [-1; 4],
+            vertex_attribs: [-1; 3],
         }
     }
 }
@@ -121,7 +127,7 @@ impl Gl {
             GLUT_INIT_WINDOW_WIDTH => self.glut.init_size.0 = value,
             GLUT_INIT_WINDOW_HEIGHT => self.glut.init_size.1 = value,
             GLUT_INIT_DISPLAY_MODE => self.glut.display_mode = value as u32,
-            _ => eprintln!("freeglut: glutSetOption(): missing enum handle {what}"),
+            _ => self.glut_warning(&format!("glutSetOption(): missing enum handle {what}")),
         }
     }
 
@@ -130,7 +136,7 @@ impl Gl {
     pub fn glut_set_key_repeat(&mut self, mode: i32) {
         match mode {
             GLUT_KEY_REPEAT_OFF | GLUT_KEY_REPEAT_ON | GLUT_KEY_REPEAT_DEFAULT => self.glut.options.key_repeat = mode,
-            _ => eprintln!("freeglut: glutSetKeyRepeat: Invalid glutSetKeyRepeat mode: {mode}"),
+            _ => self.glut_warning(&format!("glutSetKeyRepeat(): invalid glutSetKeyRepeat mode: {mode}")),
         }
     }
 
@@ -155,6 +161,18 @@ impl Gl {
         self.glut.options.context_profile = profile;
     }
 
+    /// GLUT's `-iconic`: top-level windows start iconified.
+    pub fn glut_init_iconic(&mut self) {
+        self.glut.options.iconic = true;
+    }
+
+    /// Takes the program-wide settings and message handlers of `other` (a window made
+    /// before the main loop takes those set before it).
+    pub fn glut_inherit_settings(&mut self, other: &Gl) {
+        self.glut.options = other.glut.options;
+        self.glut.messages.clone_from(&other.glut.messages);
+    }
+
     /// `glutDeviceGet(what)`: the input devices, as freeglut on X11 answers them (no joystick,
     /// spaceball, tablet, dials or button box); -1 for other names.
     #[must_use]
@@ -170,16 +188,6 @@ impl Gl {
         match what {
             GLUT_OVERLAY_POSSIBLE | GLUT_HAS_OVERLAY | GLUT_TRANSPARENT_INDEX | GLUT_NORMAL_DAMAGED => 0,
             GLUT_LAYER_IN_USE => GLUT_NORMAL as i32,
-            _ => -1,
-        }
-    }
-
-    /// `glutGameModeGet(what)`: game mode never starts (freeglut's X11 answers without an
-    /// XRandR mode change): not active, not possible, no display change; -1 for the rest.
-    #[must_use]
-    pub fn glut_game_mode_get(&self, what: GLenum) -> i32 {
-        match what {
-            GLUT_GAME_MODE_ACTIVE | GLUT_GAME_MODE_POSSIBLE | GLUT_GAME_MODE_DISPLAY_CHANGED => 0,
             _ => -1,
         }
     }

@@ -1,6 +1,7 @@
 //! What GLUT calls made inside callbacks leave for the runner, and what the runner tells them.
 
 use super::menu::Menus;
+use super::messages::Messages;
 use super::options::GlutOptions;
 use super::windows::{WindowFacts, WindowRequest};
 use super::{IdleFn, TimerFn};
@@ -47,6 +48,8 @@ pub(crate) struct GlutState {
     pub screen: (i32, i32),
     /// `glutLeaveMainLoop` was called.
     pub leave_main_loop: bool,
+    /// The program's handlers of freeglut's messages.
+    pub messages: Messages,
 }
 
 impl GlutState {

@@ -74,7 +74,7 @@ impl Gl {
         if self.glut.facts(window).is_some() {
             self.glut.current = window;
         } else {
-            eprintln!("freeglut: glutSetWindow: window ID {window} not found!");
+            self.glut_warning(&format!("glutSetWindow(): window ID {window} not found!"));
         }
     }
 
@@ -111,7 +111,7 @@ impl Gl {
         if self.glut.facts(window).is_some() {
             self.glut.requests.push((window, WindowRequest::Redisplay));
         } else {
-            eprintln!("freeglut: glutPostWindowRedisplay: window ID {window} not found!");
+            self.glut_warning(&format!("glutPostWindowRedisplay(): window ID {window} not found!"));
         }
     }
 
@@ -149,7 +149,7 @@ impl Gl {
     /// run first, as freeglut's); destroying the current window leaves none current.
     pub fn glut_destroy_window(&mut self, window: i32) {
         if self.glut.facts(window).is_none() {
-            return eprintln!("freeglut: glutDestroyWindow: window ID {window} not found!");
+            return self.glut_warning(&format!("glutDestroyWindow(): window ID {window} not found!"));
         }
         self.glut.requests.push((window, WindowRequest::Destroy));
         if self.glut.current == window {

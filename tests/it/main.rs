@@ -7,6 +7,8 @@ mod glu_errors;
 mod glu_surfpoints;
 mod glu_tessellation;
 mod glut_loop;
+mod glut_shapes;
+mod glut_windows;
 mod gpu_parity;
 mod interactive_demo;
 mod mesa_calls;
