@@ -46,6 +46,7 @@ pub(crate) fn run(app: App) -> Result<bool, Box<dyn Error>> {
         frames,
         frames_drawn: 0,
         exit: false,
+        last_wheel: None,
         error: None,
     };
     event_loop.run_app(&mut state)?;
@@ -225,6 +226,8 @@ struct WindowState {
     frames_drawn: usize,
     /// A window closed with `GLUT_ACTION_EXIT`.
     exit: bool,
+    /// The wheel's last motion and when it came.
+    last_wheel: Option<(MouseScrollDelta, Instant)>,
     error: Option<String>,
 }
 
@@ -265,7 +268,9 @@ impl WindowState {
             if slot.iconic {
                 gpu.window.set_minimized(true);
             }
-            self.windows.insert(gpu.window.id(), OnScreen { id, gpu, size: None });
+            // The program's first reshape is at this size: no second one at the first redraw.
+            let first = Some((size.width, size.height));
+            self.windows.insert(gpu.window.id(), OnScreen { id, gpu, size: first });
         }
         Ok(())
     }
@@ -716,7 +721,16 @@ impl ApplicationHandler for WindowState {
             }
             WindowEvent::MouseWheel { delta, .. } => {
                 self.pointer_in = Some(winit);
-                self.wheel(event_loop, delta);
+                // X reports a click of a wheel button made by XTEST (xdotool) twice, as the
+                // button and as the scroll valuator's motion, at once; freeglut sees the button
+                // once. The same motion again within 25 ms (faster than a hand turns a wheel) is
+                // that echo.
+                let now = Instant::now();
+                let echo = self.last_wheel.is_some_and(|(d, t)| d == delta && now - t < Duration::from_millis(25));
+                self.last_wheel = Some((delta, now));
+                if !echo {
+                    self.wheel(event_loop, delta);
+                }
             }
             WindowEvent::KeyboardInput { event, .. } => {
                 self.pointer_in.get_or_insert(winit);
