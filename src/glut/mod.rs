@@ -10,6 +10,7 @@
 
 pub mod consts;
 pub mod fonts;
+mod joystick;
 mod limits;
 mod menu;
 pub(crate) mod messages;
@@ -38,6 +39,7 @@ pub(crate) use state::GlutState;
 use crate::gl::types::GLenum;
 use crate::gl::Gl;
 use consts::*;
+pub use joystick::JoystickRange;
 pub use limits::display_mode_from_string;
 pub use messages::MessageFn;
 pub use options::FREEGLUT_VERSION;

@@ -15,7 +15,7 @@ use crate::gl::Gl;
 pub const FREEGLUT_VERSION: i32 = 30400;
 
 /// The settings every window shares.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) struct GlutOptions {
     /// `GLUT_ACTION_ON_WINDOW_CLOSE`: what closing a window does (`GLUT_ACTION_EXIT`, ...).
     pub action_on_close: i32,
@@ -41,6 +41,8 @@ pub(crate) struct GlutOptions {
     pub game_mode: super::limits::GameMode,
     /// `glutSetVertexAttribCoord3`, `...Normal`, `...TexCoord2`.
     pub vertex_attribs: [i32; 3],
+    /// The joystick calls' settings.
+    pub joysticks: super::joystick::Joysticks,
 }
 
 impl Default for GlutOptions {
@@ -61,6 +63,7 @@ impl Default for GlutOptions {
             iconic: false,
             game_mode: [-1; 4],
             vertex_attribs: [-1; 3],
+            joysticks: Default::default(),
         }
     }
 }

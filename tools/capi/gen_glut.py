@@ -21,7 +21,8 @@ CONSTS = "src/glut/consts.rs"
 
 DEFINE = re.compile(r"^\s*#\s*define\s+(GLUT_[A-Z0-9_]+)\s+(0x[0-9A-Fa-f]+|-?[0-9]+)\b")
 FONT = re.compile(r"^\s*#\s*define\s+(GLUT_(?:STROKE|BITMAP)_[A-Z0-9_]+)\s+\(\(void \*\)\s*(0x[0-9A-Fa-f]+)\)")
-PROTO = re.compile(r"^\s*FGAPI\s+(.*?)\s*FGAPIENTRY\s+(glut\w+)\s*\((.*)\)\s*;")
+# freeglut_ext.h declares its deprecated joystick calls without FGAPI.
+PROTO = re.compile(r"^\s*(?:FGAPI\s+)?(\w[\w *]*?)\s*(?:FGAPIENTRY\s+)?\b(glut\w+)\s*\((.*)\)\s*;")
 SECTION = re.compile(r"^\s*\*\s+([A-Z][A-Za-z0-9 ,/()'._-]+?)\s*$")
 
 # The types the Rust constants take: display-mode bits are `u32` (glutInitDisplayMode's
@@ -69,7 +70,7 @@ def read(path):
             consts.append((d.group(1), d.group(2), section))
             continue
         p = PROTO.match(line)
-        if p:
+        if p and not line.lstrip().startswith("static"):
             params = re.sub(r"\s+", " ", p.group(3).strip())
             protos.append((re.sub(r"\s+", " ", p.group(1)), p.group(2), params))
     return consts, fonts, protos

@@ -4,7 +4,9 @@
 # subwindow composed in place; ImageMagick's count of differing pixels) and the callbacks'
 # order (the program's log). Needs freeglut3-dev, Xvfb, xdotool, ImageMagick and gleval's C
 # library built (cargo build -p gleval-c); not in CI.
-#   sh tools/freeglut_check/windows.sh
+#   sh tools/freeglut_check/windows.sh          compare
+#   sh tools/freeglut_check/windows.sh --save   also keep freeglut's pictures and log as the
+#                                               references capi/tests/glut.sh compares with
 set -eu
 here=$(cd "$(dirname "$0")" && pwd)
 root="$here/../.."
@@ -22,6 +24,10 @@ for name in first second; do
   DISPLAY=:95 import -window "$(DISPLAY=:95 xdotool search --name "^$name\$")" "$work/freeglut-$name.png"
 done
 kill "$prog" "$xvfb"
+if [ "${1:-}" = --save ]; then
+  for name in first second; do convert "$work/freeglut-$name.png" "PNG24:$root/tests/reference/glut/windows-$name.png"; done
+  cp "$work/freeglut.log" "$root/tests/reference/glut/windows.log"
+fi
 "$work/gleval" --png "$work/gleval.png" > "$work/gleval.log"
 for pair in first:gleval.png second:gleval-3.png; do
   echo "window ${pair%%:*}: $(compare -metric AE "$work/freeglut-${pair%%:*}.png" "$work/${pair#*:}" null: 2>&1) pixels differ"

@@ -237,3 +237,42 @@ entry! {
         own_symbol(name)
     }
 }
+
+forward! {
+    glutJoystickGetNumAxes(ident: c_int) -> c_int => glut_joystick_get_num_axes;
+    glutJoystickGetNumButtons(ident: c_int) -> c_int => glut_joystick_get_num_buttons;
+    glutJoystickNotWorking(ident: c_int) -> c_int => glut_joystick_not_working;
+    glutJoystickGetDeadBand(ident: c_int, axis: c_int) -> GLfloat => glut_joystick_get_dead_band;
+    glutJoystickSetDeadBand(ident: c_int, axis: c_int, value: GLfloat) => glut_joystick_set_dead_band;
+    glutJoystickGetSaturation(ident: c_int, axis: c_int) -> GLfloat => glut_joystick_get_saturation;
+    glutJoystickSetSaturation(ident: c_int, axis: c_int, value: GLfloat) => glut_joystick_set_saturation;
+}
+
+/// A joystick range call: freeglut reads or writes one float an axis (2 axes).
+macro_rules! joystick_ranges {
+    ($($name:ident => $which:ident, $set:ident;)*) => {
+        $(entry! {
+            #[doc = concat!("`", stringify!($name), "(ident, axes)`: two floats (NULL: nothing).")]
+            unsafe fn $name(ident: c_int, axes: *mut GLfloat) {
+                if axes.is_null() {
+                    return;
+                }
+                // SAFETY: freeglut's contract: `axes` holds a float for each of the 2 axes.
+                let axes = unsafe { std::slice::from_raw_parts_mut(axes, 2) };
+                let which = gleval::glut::JoystickRange::$which;
+                joystick_ranges!(@call $set, ident, which, axes)
+            }
+        })*
+    };
+    (@call get, $ident:ident, $which:ident, $axes:ident) => { with_glut(|gl| gl.glut_joystick_get_range($ident, $which, $axes)) };
+    (@call set, $ident:ident, $which:ident, $axes:ident) => { with_glut(|gl| gl.glut_joystick_set_range($ident, $which, $axes)) };
+}
+
+joystick_ranges! {
+    glutJoystickGetMinRange => Min, get;
+    glutJoystickGetMaxRange => Max, get;
+    glutJoystickGetCenter => Center, get;
+    glutJoystickSetMinRange => Min, set;
+    glutJoystickSetMaxRange => Max, set;
+    glutJoystickSetCenter => Center, set;
+}
