@@ -11,9 +11,18 @@ use crate::gl::consts::*;
 use crate::gl::types::*;
 use crate::gl::Gl;
 
+/// freeglut indexes its vertices with `GLushort`s: beyond this many it warns that "indices
+/// will wrap" and draws a mangled shape; gleval warns the same and draws nothing (and never
+/// runs out of memory for absurd counts).
+const MAX_VERTICES: i64 = 65535;
+
 /// The cylinder's vertices in freeglut's order; empty for `slices < 1` or `stacks < 1`.
 fn vertices(radius: f32, height: f32, slices: i32, stacks: i32) -> Vec<Point> {
     if slices < 1 || stacks < 1 {
+        return Vec::new();
+    }
+    if i64::from(slices) * (i64::from(stacks) + 3) + 2 > MAX_VERTICES {
+        eprintln!("freeglut: fghGenerateCylinder: too many slices or stacks requested, indices will wrap");
         return Vec::new();
     }
     let step = height / stacks as f32;

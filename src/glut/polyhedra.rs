@@ -119,7 +119,7 @@ impl Gl {
     }
 
     /// `glutSolidSierpinskiSponge(levels, offset, scale)` (freeglut): 4^levels tetrahedra of
-    /// the Sierpinski tetrahedron, one `GL_TRIANGLES`; nothing for `levels < 0`.
+    /// the Sierpinski tetrahedron, one `GL_TRIANGLES`; nothing for `levels < 0` (nor beyond 10).
     pub fn glut_solid_sierpinski_sponge(&mut self, levels: i32, offset: &[GLdouble; 3], scale: GLdouble) {
         let points = sponge(levels, offset, scale as f32);
         self.drawing_shape(|gl| gl.shape_primitive(GL_TRIANGLES, points));
@@ -136,12 +136,16 @@ impl Gl {
     }
 }
 
+/// The deepest sponge drawn: 4^10 tetrahedra, 12.6 million vertices (deeper ones would exhaust
+/// memory; freeglut gives up on its allocation there too).
+const MAX_SPONGE_LEVELS: i32 = 10;
+
 /// The sponge's faces as freeglut generates them: at level 0 the tetrahedron scaled and moved
 /// (in `f32`); above, four sponges of the level below, half the size, at `offset + scale/2 ·
 /// corner k` (the offset kept in `f64`, as freeglut keeps it to avoid round-off build-up).
 fn sponge(levels: i32, offset: &[f64; 3], scale: f32) -> Vec<Point> {
     let mut out = Vec::new();
-    if levels >= 0 && levels < 16 {
+    if (0..=MAX_SPONGE_LEVELS).contains(&levels) {
         sponge_into(levels, *offset, scale, &mut out);
     }
     out

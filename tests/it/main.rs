@@ -7,6 +7,7 @@ mod glu_errors;
 mod glu_surfpoints;
 mod glu_tessellation;
 mod glut_loop;
+mod glut_robustness;
 mod glut_shapes;
 mod glut_windows;
 mod gpu_parity;
