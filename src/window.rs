@@ -21,10 +21,43 @@ use winit::event_loop::{ActiveEventLoop, ControlFlow, EventLoop};
 use winit::keyboard::{Key, NamedKey};
 use winit::window::{CursorIcon, Fullscreen, Window, WindowId};
 
-/// Opens the program's windows and runs until the loop ends (the last window closed,
-/// `glutLeaveMainLoop`, Escape); true if the program should exit rather than return from
-/// `glutMainLoop` (freeglut's `GLUT_ACTION_ON_WINDOW_CLOSE`).
-pub(crate) fn run(app: App) -> Result<bool, Box<dyn Error>> {
+/// A program whose windowed loop the program drives itself (`glutMainLoopEvent`): each pass
+/// handles the events waiting, runs the callbacks they call for and draws what must be drawn,
+/// then returns to the program.
+#[cfg(any(target_os = "linux", target_os = "windows", target_os = "macos", target_os = "freebsd"))]
+pub(crate) struct Pumped {
+    event_loop: EventLoop<()>,
+    state: WindowState,
+}
+
+#[cfg(any(target_os = "linux", target_os = "windows", target_os = "macos", target_os = "freebsd"))]
+impl Pumped {
+    /// The program's windows, not yet open (the first pass opens them).
+    pub(crate) fn new(app: App) -> Result<Self, Box<dyn Error>> {
+        let event_loop = connect()?;
+        Ok(Self { event_loop, state: WindowState::new(app) })
+    }
+
+    /// One pass of the loop; `Some(exit)` once the loop is over (its windows closed), `exit`
+    /// as [`run`]'s.
+    pub(crate) fn pass(&mut self) -> Result<Option<bool>, Box<dyn Error>> {
+        use winit::platform::pump_events::{EventLoopExtPumpEvents, PumpStatus};
+        let status = self.event_loop.pump_app_events(Some(Duration::ZERO), &mut self.state);
+        if let Some(e) = self.state.error.take() {
+            return Err(e.into());
+        }
+        Ok(match status {
+            PumpStatus::Continue => None,
+            PumpStatus::Exit(_) => {
+                let finish = self.state.program.finish();
+                Some(self.state.exit || finish)
+            }
+        })
+    }
+}
+
+/// The display's event loop, or why there is none.
+fn connect() -> Result<EventLoop<()>, Box<dyn Error>> {
     const USE_PNG: &str = "run the program with --png PATH to render one frame to a PNG file instead";
     let has_display = ["DISPLAY", "WAYLAND_DISPLAY"].iter().any(|v| std::env::var_os(v).is_some_and(|s| !s.is_empty()));
     if !has_display {
@@ -32,23 +65,15 @@ pub(crate) fn run(app: App) -> Result<bool, Box<dyn Error>> {
             format!("no display to open a window on (neither DISPLAY nor WAYLAND_DISPLAY is set); {USE_PNG}").into()
         );
     }
-    let event_loop = EventLoop::new().map_err(|e| format!("could not connect to the display ({e}); {USE_PNG}"))?;
-    let frames = app.frames();
-    let mut state = WindowState {
-        program: Program::new(app),
-        windows: HashMap::new(),
-        started: false,
-        cursor: (0, 0),
-        pointer_in: None,
-        buttons_down: 0,
-        modifiers: 0,
-        start: Instant::now(),
-        frames,
-        frames_drawn: 0,
-        exit: false,
-        last_wheel: None,
-        error: None,
-    };
+    Ok(EventLoop::new().map_err(|e| format!("could not connect to the display ({e}); {USE_PNG}"))?)
+}
+
+/// Opens the program's windows and runs until the loop ends (the last window closed,
+/// `glutLeaveMainLoop`, Escape); true if the program should exit rather than return from
+/// `glutMainLoop` (freeglut's `GLUT_ACTION_ON_WINDOW_CLOSE`).
+pub(crate) fn run(app: App) -> Result<bool, Box<dyn Error>> {
+    let event_loop = connect()?;
+    let mut state = WindowState::new(app);
     event_loop.run_app(&mut state)?;
     if let Some(e) = state.error {
         return Err(e.into());
@@ -232,6 +257,25 @@ struct WindowState {
 }
 
 impl WindowState {
+    fn new(app: App) -> Self {
+        let frames = app.frames();
+        Self {
+            program: Program::new(app),
+            windows: HashMap::new(),
+            started: false,
+            cursor: (0, 0),
+            pointer_in: None,
+            buttons_down: 0,
+            modifiers: 0,
+            start: Instant::now(),
+            frames,
+            frames_drawn: 0,
+            exit: false,
+            last_wheel: None,
+            error: None,
+        }
+    }
+
     fn fail(&mut self, event_loop: &ActiveEventLoop, error: String) {
         self.error = Some(error);
         event_loop.exit();
@@ -732,6 +776,9 @@ impl ApplicationHandler for WindowState {
                     self.wheel(event_loop, delta);
                 }
             }
+            // winit makes up presses of the keys held when a window gains the focus; X tells
+            // freeglut of no such key, so neither does this.
+            WindowEvent::KeyboardInput { is_synthetic: true, .. } => {}
             WindowEvent::KeyboardInput { event, .. } => {
                 self.pointer_in.get_or_insert(winit);
                 self.key(event_loop, &event);

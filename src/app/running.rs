@@ -1,17 +1,33 @@
-//! A loop the program drives itself (freeglut's `glutMainLoopEvent`), headless: each call is
-//! one pass of GLUT's main loop on the virtual 60 Hz clock of `--frames`. The first call draws
-//! every window's first frame; after `--frames N` calls (1 by default) the pictures are
-//! written to the `--png` path as `glutMainLoop` writes them, and the loop is over.
+//! A loop the program drives itself (freeglut's `glutMainLoopEvent`). In windows (feature
+//! `window`, no `--png`), each call handles the events waiting and returns. Headless (`--png`),
+//! each call is one pass of GLUT's main loop on the virtual 60 Hz clock of `--frames`: the
+//! first draws every window's first frame; after `--frames N` calls (1 by default) the
+//! pictures are written to the `--png` path as `glutMainLoop` writes them, and the loop is over.
 
 use super::program::Program;
 use super::{compose, App, Headless, Options};
-use crate::render::RenderError;
 
 /// The virtual refresh period of a pass.
 const PASS_MS: f64 = 1000.0 / 60.0;
 
 /// A program whose loop runs one pass at a time.
 pub struct Running {
+    inner: Inner,
+}
+
+enum Inner {
+    /// The loop is over and what it held is gone.
+    Closed,
+    Headless(Passes),
+    #[cfg(all(
+        feature = "window",
+        any(target_os = "linux", target_os = "windows", target_os = "macos", target_os = "freebsd")
+    ))]
+    Window(Box<crate::window::Pumped>),
+}
+
+/// The headless passes.
+struct Passes {
     program: Program,
     renderer: Headless,
     png: Option<String>,
@@ -33,21 +49,64 @@ pub enum Pass {
 }
 
 impl App {
-    /// The program's loop, to be run one pass at a time ([`Running::pass`]).
-    pub fn start_passes(self, options: &Options) -> Result<Running, RenderError> {
+    /// The program's loop, to be run one pass at a time ([`Running::pass`]): in its windows,
+    /// or headless with `--png`.
+    pub fn start_passes(self, options: &Options) -> Result<Running, Box<dyn std::error::Error>> {
+        #[cfg(all(
+            feature = "window",
+            any(target_os = "linux", target_os = "windows", target_os = "macos", target_os = "freebsd")
+        ))]
+        if options.png.is_none() {
+            let pumped = crate::window::Pumped::new(self)?;
+            return Ok(Running { inner: Inner::Window(Box::new(pumped)) });
+        }
         let renderer = Headless::new(if options.wgpu { crate::render::Rasterizer::Wgpu } else { self.rasterizer() })?;
-        Ok(Running {
+        let passes = Passes {
             program: Program::new(self),
             renderer,
             png: options.png.clone(),
             frames: options.frames.unwrap_or(1).max(1),
             passes: 0,
-        })
+        };
+        Ok(Running { inner: Inner::Headless(passes) })
     }
 }
 
 impl Running {
-    /// One pass of the main loop: the first draws every window's first frame; later ones
+    /// One pass of the main loop (see [`Passes::pass`] for headless runs); in windows, the
+    /// events waiting and what they call for. `Pass::Over` once the loop has ended (the last
+    /// window closed, `glutLeaveMainLoop`), its windows closed.
+    pub fn pass(&mut self) -> Result<Pass, Box<dyn std::error::Error>> {
+        match &mut self.inner {
+            Inner::Closed => Ok(Pass::Over { exit: false }),
+            Inner::Headless(passes) => passes.pass(),
+            #[cfg(all(
+                feature = "window",
+                any(target_os = "linux", target_os = "windows", target_os = "macos", target_os = "freebsd")
+            ))]
+            Inner::Window(pumped) => Ok(match pumped.pass()? {
+                None => Pass::Running,
+                Some(exit) => Pass::Over { exit },
+            }),
+        }
+    }
+
+    /// Drops what the loop held (windows, GPU devices) now, rather than whenever the `Running`
+    /// is dropped: a `Running` kept in a thread-local would otherwise be dropped while the
+    /// thread exits, when the GPU library's own thread-locals are already gone.
+    pub fn close(&mut self) {
+        self.inner = Inner::Closed;
+    }
+
+    /// Whether the passes are headless (the pictures are written when the loop is over).
+    #[must_use]
+    pub fn headless(&self) -> bool {
+        matches!(self.inner, Inner::Headless(_))
+    }
+}
+
+impl Passes {
+    /// One headless pass of the main loop: the first draws every window's first frame; later ones
     /// advance the clock a refresh (due timers, the idle callback) and redraw the windows that
     /// asked. After the last of `--frames` (or when the program left the loop) the pictures are
     /// written and the loop ends.
@@ -69,11 +128,5 @@ impl Running {
             }
         }
         Ok(Pass::Over { exit: self.program.finish() })
-    }
-
-    /// The loop was left (`glutLeaveMainLoop`, the last window closed).
-    #[must_use]
-    pub fn left(&self) -> bool {
-        self.program.leave
     }
 }

@@ -34,8 +34,13 @@ thread_local! {
         gl_debug: false,
         settings: Gl::new(300, 300),
     });
-    /// A loop the program drives with `glutMainLoopEvent`.
-    static RUNNING: RefCell<Option<Running>> = const { RefCell::new(None) };
+    /// A loop the program drives with `glutMainLoopEvent`. Leaked rather than owned: a program
+    /// may exit with its loop running, and a thread-local dropped at exit must not drop GPU
+    /// devices (their library's thread-locals are gone by then); `Running::close` frees what
+    /// it holds when the loop ends.
+    static RUNNING: RefCell<Option<&'static mut Running>> = const { RefCell::new(None) };
+    /// That loop is over (later passes do nothing).
+    static ENDED: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
 }
 
 /// Runs `f` on the current context, or before any window on the settings' context (GLUT's
@@ -306,29 +311,38 @@ entry! {
 
 entry! {
     /// `glutMainLoopEvent` (freeglut): one pass of the main loop, for programs that run their
-    /// own loop. gleval runs these passes headless (`--png PATH` with `--frames N`: the
-    /// pictures are written after the Nth pass, and the loop is over); see the README.
+    /// own loop: the events waiting and the callbacks they call for. Headless (`--png PATH`
+    /// with `--frames N`), the pictures are written after the Nth pass and the program ends.
     fn glutMainLoopEvent() {
+        if ENDED.with(std::cell::Cell::get) {
+            return;
+        }
         let started = RUNNING.with(|r| r.borrow().is_some());
         if !started {
             let Some(app) = program("glutMainLoopEvent") else { return };
             let options = SETUP.with(|s| s.borrow().options.clone());
             match app.start_passes(&options) {
-                Ok(running) => RUNNING.with(|r| *r.borrow_mut() = Some(running)),
+                Ok(running) => RUNNING.with(|r| *r.borrow_mut() = Some(Box::leak(Box::new(running)))),
                 Err(e) => {
                     eprintln!("{e}");
                     std::process::exit(1);
                 }
             }
         }
-        let pass = RUNNING.with(|r| r.borrow_mut().as_mut().map(Running::pass));
+        let pass = RUNNING.with(|r| r.borrow_mut().as_mut().map(|running| running.pass()));
         match pass {
             Some(Ok(Pass::Running)) | None => {}
-            // The pictures are written: the program ends here whatever the close action, as
-            // its own loop would otherwise call for passes that never come.
-            Some(Ok(Pass::Over { .. })) => {
-                RUNNING.with(|r| r.borrow_mut().take());
-                loop_over(true);
+            // Headless, the pictures are written: the program ends here whatever the close
+            // action, as its own loop would otherwise call for passes that never come.
+            Some(Ok(Pass::Over { exit })) => {
+                let headless = RUNNING.with(|r| {
+                    r.borrow_mut().take().is_some_and(|running| {
+                        running.close();
+                        running.headless()
+                    })
+                });
+                ENDED.with(|e| e.set(true));
+                loop_over(exit || headless);
             }
             Some(Err(e)) => {
                 eprintln!("{e}");
@@ -350,8 +364,8 @@ entry! {
     /// `glutMainLoopEvent` has its windows closed now (their close callbacks run).
     fn glutExit() {
         with_gl(|gl| gl.glut_leave_main_loop());
-        if RUNNING.with(|r| r.borrow().is_some()) {
-            RUNNING.with(|r| r.borrow_mut().take());
+        if let Some(running) = RUNNING.with(|r| r.borrow_mut().take()) {
+            running.close();
             windows::forget_all();
             crate::context::clear_current();
         }
