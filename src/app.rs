@@ -651,7 +651,7 @@ impl App {
         program.run_headless(frames);
         let pictures = program.render_windows(&mut renderer)?;
         for (n, (id, image)) in pictures.iter().enumerate() {
-            crate::render::write_png(&compose::png_path(path, *id, n == 0), image)?;
+            crate::render::write_png(compose::png_path(path, *id, n == 0), image)?;
         }
         Ok(program.finish())
     }

@@ -18,7 +18,7 @@ pub struct Running {
 enum Inner {
     /// The loop is over and what it held is gone.
     Closed,
-    Headless(Passes),
+    Headless(Box<Passes>),
     #[cfg(all(
         feature = "window",
         any(target_os = "linux", target_os = "windows", target_os = "macos", target_os = "freebsd")
@@ -68,12 +68,12 @@ impl App {
             frames: options.frames.unwrap_or(1).max(1),
             passes: 0,
         };
-        Ok(Running { inner: Inner::Headless(passes) })
+        Ok(Running { inner: Inner::Headless(Box::new(passes)) })
     }
 }
 
 impl Running {
-    /// One pass of the main loop (see [`Passes::pass`] for headless runs); in windows, the
+    /// One pass of the main loop (headless: as the module documentation says); in windows, the
     /// events waiting and what they call for. `Pass::Over` once the loop has ended (the last
     /// window closed, `glutLeaveMainLoop`), its windows closed.
     pub fn pass(&mut self) -> Result<Pass, Box<dyn std::error::Error>> {
@@ -124,7 +124,7 @@ impl Passes {
         if let Some(path) = &self.png {
             let pictures = self.program.render_windows(&mut self.renderer)?;
             for (n, (id, image)) in pictures.iter().enumerate() {
-                crate::render::write_png(&compose::png_path(path, *id, n == 0), image)?;
+                crate::render::write_png(compose::png_path(path, *id, n == 0), image)?;
             }
         }
         Ok(Pass::Over { exit: self.program.finish() })

@@ -17,6 +17,9 @@ use crate::gl::Gl;
 /// A menu callback (`glutCreateMenu(func)`): called with the value of the entry chosen.
 pub type MenuFn = Box<dyn FnMut(&mut Gl, i32)>;
 
+/// A menu's destroy callback (`glutMenuDestroyFunc(func)`).
+pub type MenuDestroyFn = Box<dyn FnMut(&mut Gl)>;
+
 /// One line of a menu.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub(crate) enum MenuItem {
@@ -41,7 +44,7 @@ pub(crate) struct Menu {
     /// `glutSetMenuData`: the program's pointer, kept as a number.
     data: usize,
     /// `glutMenuDestroyFunc`: runs when the menu is destroyed.
-    on_destroy: Option<Box<dyn FnMut(&mut Gl)>>,
+    on_destroy: Option<MenuDestroyFn>,
     /// `glutSetMenuFont`: the font its labels are drawn in.
     font: Option<GlutBitmapFont>,
 }
@@ -198,7 +201,7 @@ impl Gl {
     }
 
     /// `glutMenuDestroyFunc(func)` (freeglut): `func` runs when the current menu is destroyed.
-    pub fn glut_menu_destroy_func(&mut self, func: Option<Box<dyn FnMut(&mut Gl)>>) {
+    pub fn glut_menu_destroy_func(&mut self, func: Option<MenuDestroyFn>) {
         if let Some(menu) = self.glut.menus.current_mut("glutMenuDestroyFunc") {
             menu.on_destroy = func;
         }

@@ -24,14 +24,14 @@ mod polyhedra;
 mod schedule;
 mod shapes;
 #[rustfmt::skip]
-#[allow(clippy::excessive_precision, clippy::unreadable_literal)]
+#[allow(clippy::excessive_precision, clippy::unreadable_literal, clippy::approx_constant)]
 mod solids_data;
 pub(crate) mod state;
 mod teapot;
 mod teaset;
 pub(crate) mod windows;
 
-pub use menu::MenuFn;
+pub use menu::{MenuDestroyFn, MenuFn};
 #[cfg(all(feature = "gpu", feature = "png"))]
 pub(crate) use schedule::Schedule;
 pub(crate) use state::GlutState;

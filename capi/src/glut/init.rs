@@ -128,8 +128,11 @@ fn split_options(args: Vec<String>) -> (Vec<String>, Vec<String>, Vec<bool>) {
     (ours, x, keep)
 }
 
+/// A size or a place: two numbers.
+type Pair = Option<(i32, i32)>;
+
 /// `-geometry WxH+X+Y` (each part optional, as X's geometry strings): size and place.
-fn parse_geometry(g: &str) -> (Option<(i32, i32)>, Option<(i32, i32)>) {
+fn parse_geometry(g: &str) -> (Pair, Pair) {
     let (size, place) = match g.find(['+', '-']) {
         Some(at) => g.split_at(at),
         None => (g, ""),

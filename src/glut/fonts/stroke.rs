@@ -162,6 +162,7 @@ impl Gl {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::gl::types::GLenum;
 
     #[test]
     fn every_glyph_has_its_strips_and_points() {
