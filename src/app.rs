@@ -17,6 +17,7 @@ use crate::gl::{Frame, Gl, Tessellator};
 use crate::glut::consts::{GLUT_DOWN, GLUT_UP};
 use crate::glut::popup::{Popup, PopupEvent};
 use crate::glut::state::TimerRequest;
+use crate::glut::windows::WindowRequest;
 use crate::glut::{IdleFn, Schedule};
 use crate::render::{soft, Image, Rasterizer, RenderError, Renderer};
 use program::Program;
@@ -592,11 +593,20 @@ impl App {
     pub fn record_frames(&mut self, frames: usize) -> Gl {
         let mut program = Program::new(std::mem::replace(self, App::new("", 1, 1)));
         program.run_headless(frames);
+        // The title a callback last asked for stays for the caller (a window would show it).
+        let title = program.effects.iter().rev().find_map(|(id, e)| match e {
+            WindowRequest::Title(t) if *id == 1 => Some(t.clone()),
+            _ => None,
+        });
         match program.index(1) {
             Some(k) => {
                 let slot = program.slots.swap_remove(k);
                 *self = slot.app;
-                *slot.gl
+                let mut gl = *slot.gl;
+                if let Some(title) = title {
+                    gl.glut_set_window_title(&title);
+                }
+                gl
             }
             None => self.new_gl(),
         }

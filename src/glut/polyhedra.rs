@@ -122,6 +122,9 @@ impl Gl {
     /// the Sierpinski tetrahedron, one `GL_TRIANGLES`; nothing for `levels < 0` (nor beyond 10).
     pub fn glut_solid_sierpinski_sponge(&mut self, levels: i32, offset: &[GLdouble; 3], scale: GLdouble) {
         let points = sponge(levels, offset, scale as f32);
+        if points.is_empty() {
+            return; // freeglut draws nothing at all for no tetrahedra
+        }
         self.drawing_shape(|gl| gl.shape_primitive(GL_TRIANGLES, points));
     }
 

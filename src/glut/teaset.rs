@@ -236,3 +236,18 @@ impl Gl {
         self.wire_piece(&TEASPOON, 1, size);
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn odd_sizes_draw_without_panicking() {
+        for size in [f64::NAN, f64::INFINITY, -1.0, 0.0, 1e30] {
+            let mut gl = Gl::new(4, 4);
+            gl.glut_solid_teacup(size);
+            gl.glut_wire_teaspoon(size);
+            assert_eq!(gl.get_error(), GL_NO_ERROR);
+        }
+    }
+}
