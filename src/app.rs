@@ -5,12 +5,22 @@
 //! Callbacks take the [`Gl`] context, which keeps its state from frame to frame as a GL
 //! context does; `gl.glut_get(GLUT_WINDOW_WIDTH)` answers inside them.
 
+mod callbacks;
+mod compose;
+pub(crate) mod program;
+mod running;
+
+pub use callbacks::{Int2Fn, Int3Fn, Int4Fn, Int5Fn, IntFn, JoystickFn, VoidFn};
+pub use running::{Pass, Running};
+
 use crate::gl::{Frame, Gl, Tessellator};
 use crate::glut::consts::{GLUT_DOWN, GLUT_UP};
 use crate::glut::popup::{Popup, PopupEvent};
 use crate::glut::state::TimerRequest;
+use crate::glut::windows::WindowRequest;
 use crate::glut::{IdleFn, Schedule};
 use crate::render::{soft, Image, Rasterizer, RenderError, Renderer};
+use program::Program;
 
 type DisplayFn = Box<dyn FnMut(&mut Gl)>;
 type ReshapeFn = Box<dyn FnMut(&mut Gl, i32, i32)>;
@@ -33,7 +43,7 @@ pub(crate) enum Redraw {
 }
 
 impl Redraw {
-    fn program_if(ran: bool) -> Self {
+    pub(crate) fn program_if(ran: bool) -> Self {
         if ran {
             Self::Program
         } else {
@@ -114,6 +124,18 @@ pub struct App {
     rasterizer: Rasterizer,
     /// The GLUT menu open in the window, if any.
     popup: Option<Popup>,
+    /// Where the open menu was opened (for `glutMenuStatusFunc`).
+    menu_at: (i32, i32),
+    /// `glutInitWindowPosition` (a subwindow's place in its parent).
+    position: Option<(i32, i32)>,
+    /// The program's other windows, in creation order, each with its parent's number (0 for
+    /// a top-level window); this window is number 1.
+    extra: Vec<(i32, App)>,
+    /// A context made before the main loop (the C ABI's `glutCreateWindow`), used instead of a
+    /// fresh one.
+    context: Option<Box<Gl>>,
+    /// The callbacks beyond GLUT's first ones.
+    more: callbacks::More,
 }
 
 impl App {
@@ -142,7 +164,85 @@ impl App {
             tessellator: Tessellator::from_env(),
             rasterizer: Rasterizer::from_env(),
             popup: None,
+            menu_at: (0, 0),
+            position: None,
+            extra: Vec::new(),
+            context: None,
+            more: callbacks::More::default(),
         }
+    }
+
+    /// `glutInitWindowPosition(x, y)` for this window: where it opens on the screen (the
+    /// window system may place it elsewhere).
+    #[must_use]
+    pub fn position(mut self, x: i32, y: i32) -> Self {
+        self.position = Some((x, y));
+        self
+    }
+
+    /// Where this window asked to open, if it did.
+    pub(crate) fn placed(&self) -> Option<(i32, i32)> {
+        self.position
+    }
+
+    /// Another top-level window (`glutCreateWindow` again), with its own context and callbacks.
+    /// Windows are numbered in the order they are added, from 2 (this one is 1); a window's
+    /// own added windows follow it.
+    #[must_use]
+    pub fn window(mut self, other: App) -> Self {
+        self.add_window(0, other);
+        self
+    }
+
+    /// `glutCreateSubWindow(parent, x, y, width, height)`: `child` (of its own size, with its
+    /// own context and callbacks) drawn inside window `parent` with its top left corner at
+    /// (x, y) of the parent's, numbered as [`App::window`] numbers windows.
+    #[must_use]
+    pub fn sub_window(mut self, parent: i32, x: i32, y: i32, child: App) -> Self {
+        self.add_window(parent, child.position(x, y));
+        self
+    }
+
+    /// Adds a window (`parent` 0: top-level) and returns its number.
+    pub fn add_window(&mut self, parent: i32, mut window: App) -> i32 {
+        let id = self.extra.len() as i32 + 2;
+        let grandchildren = std::mem::take(&mut window.extra);
+        self.extra.push((parent, window));
+        for (p, w) in grandchildren {
+            self.extra.push((if p == 0 { 0 } else { p + id - 1 }, w));
+        }
+        id
+    }
+
+    /// Window `id` of this program (1: this one), to set its callbacks.
+    pub fn window_mut(&mut self, id: i32) -> Option<&mut App> {
+        if id == 1 {
+            return Some(self);
+        }
+        let index = usize::try_from(id - 2).ok()?;
+        self.extra.get_mut(index).map(|(_, w)| w)
+    }
+
+    /// Uses `gl` as this window's context when the program runs (a context the program set up
+    /// before the main loop, as C programs do between `glutCreateWindow` and `glutMainLoop`).
+    #[must_use]
+    pub fn with_context(mut self, gl: Box<Gl>) -> Self {
+        self.context = Some(gl);
+        self
+    }
+
+    /// This window's context, made now if it was not yet (before the main loop).
+    pub fn context_mut(&mut self) -> &mut Gl {
+        if self.context.is_none() {
+            self.context = Some(Box::new(self.new_gl()));
+        }
+        self.context.as_mut().expect("made above")
+    }
+
+    /// This window and the windows added to it, in number order, with their parents.
+    fn flatten(mut self) -> Vec<(i32, App)> {
+        let extra = std::mem::take(&mut self.extra);
+        std::iter::once((0, self)).chain(extra).collect()
     }
 
     /// Code the C program runs once after `glutCreateWindow` (the textbook's `Hint()`).
@@ -300,7 +400,9 @@ impl App {
         }
         if state == GLUT_DOWN {
             if let Some(menu) = gl.glut.menus.attached(button) {
+                self.run_menu_status(gl, crate::glut::consts::GLUT_MENU_IN_USE, x, y);
                 self.popup = Popup::open(gl, menu, x, y, (gl.width(), gl.height()));
+                self.menu_at = (x, y);
                 return Redraw::Menu;
             }
         }
@@ -321,8 +423,13 @@ impl App {
     }
 
     /// Closes an open menu without a choice (Escape); false if none was open.
-    pub(crate) fn close_menu(&mut self) -> bool {
-        self.popup.take().is_some()
+    pub(crate) fn close_menu(&mut self, gl: &mut Gl) -> bool {
+        let open = self.popup.take().is_some();
+        if open {
+            let (x, y) = self.menu_at;
+            self.run_menu_status(gl, crate::glut::consts::GLUT_MENU_NOT_IN_USE, x, y);
+        }
+        open
     }
 
     /// The open menu as a frame to draw over the program's last one (no clear, its own
@@ -336,11 +443,15 @@ impl App {
             PopupEvent::Open => Redraw::Menu,
             PopupEvent::Closed => {
                 self.popup = None;
+                let (x, y) = self.menu_at;
+                self.run_menu_status(gl, crate::glut::consts::GLUT_MENU_NOT_IN_USE, x, y);
                 Redraw::Menu
             }
             PopupEvent::Chosen { menu, value } => {
                 self.popup = None;
                 gl.run_menu_callback(menu, value);
+                let (x, y) = self.menu_at;
+                self.run_menu_status(gl, crate::glut::consts::GLUT_MENU_NOT_IN_USE, x, y);
                 Redraw::Program
             }
         }
@@ -438,7 +549,15 @@ impl App {
 
     /// [`App::run`] with options parsed elsewhere (C's `glutInit` takes them out of the
     /// program's `argv`, which then no longer holds them).
-    pub fn run_with(mut self, options: Options) {
+    pub fn run_with(self, options: Options) {
+        self.run_loop(options);
+    }
+
+    /// [`App::run_with`], telling how the loop ended, as freeglut's `glutMainLoop` ends: true
+    /// if the program should exit now (`GLUT_ACTION_ON_WINDOW_CLOSE` is `GLUT_ACTION_EXIT`),
+    /// false if `glutMainLoop` returns to the program (`GLUT_ACTION_GLUTMAINLOOP_RETURNS`,
+    /// `GLUT_ACTION_CONTINUE_EXECUTION`).
+    pub fn run_loop(mut self, options: Options) -> bool {
         // A colour-index window cannot be had on Mesa: freeglut's fatal error (`glut::display_mode`).
         crate::glut::display_mode::exit_unless_possible(self.display_mode);
         if options.gpu {
@@ -449,14 +568,17 @@ impl App {
         }
         self.frames = options.frames;
         let result = match (options.time, options.png) {
-            (Some(frames), _) => self.print_frame_time(frames),
-            (None, Some(path)) if options.profile => self.write_png_profiled(&path),
-            (None, Some(path)) => self.write_png(&path),
+            (Some(frames), _) => self.print_frame_time(frames).map(|()| true),
+            (None, Some(path)) if options.profile => self.write_png_profiled(&path).map(|()| true),
+            (None, Some(path)) => self.write_pngs(&path),
             (None, None) => self.run_window(),
         };
-        if let Err(e) = result {
-            eprintln!("{e}");
-            std::process::exit(1);
+        match result {
+            Ok(exit) => exit,
+            Err(e) => {
+                eprintln!("{e}");
+                std::process::exit(1);
+            }
         }
     }
 
@@ -465,33 +587,33 @@ impl App {
         self.record_frames(1)
     }
 
-    /// Runs the program headless for `frames` frames and returns the context holding what the
-    /// last one drew: init, reshape and display, then, between frames, what GLUT's main loop
-    /// does in one refresh of a 60 Hz display: the timers due by then (earliest first) and the
-    /// idle callback once; the next frame is drawn when one of them posts a redisplay. The
-    /// clock is virtual (`GLUT_ELAPSED_TIME` advances 1000/60 ms a step), so every run draws
-    /// the same frames. A program that stops asking for redisplays ends early.
+    /// Runs the program headless for `frames` frames and returns the context of its first
+    /// window holding what the last frame drew: every window's init, reshape and display, then,
+    /// between frames, what GLUT's main loop does in one refresh of a 60 Hz display: the timers
+    /// due by then (earliest first) and the idle callback once; the next frame is drawn when one
+    /// of them posts a redisplay. The clock is virtual (`GLUT_ELAPSED_TIME` advances 1000/60 ms
+    /// a step), so every run draws the same frames. A program that stops asking for redisplays
+    /// ends early. The first window's callbacks stay with `self` (the others are used up).
     pub fn record_frames(&mut self, frames: usize) -> Gl {
-        let mut gl = self.new_gl();
-        self.run_init(&mut gl);
-        let mut schedule = self.take_schedule(0.0);
-        schedule.absorb(&mut gl, 0.0);
-        let mut clock = 0.0;
-        self.draw_into(&mut gl, self.width, self.height);
-        for _ in 1..frames.max(1) {
-            if !advance_to_redisplay(&mut gl, &mut schedule, &mut clock) {
-                break;
+        let mut program = Program::new(std::mem::replace(self, App::new("", 1, 1)));
+        program.run_headless(frames);
+        // The title a callback last asked for stays for the caller (a window would show it).
+        let title = program.effects.iter().rev().find_map(|(id, e)| match e {
+            WindowRequest::Title(t) if *id == 1 => Some(t.clone()),
+            _ => None,
+        });
+        match program.index(1) {
+            Some(k) => {
+                let slot = program.slots.swap_remove(k);
+                *self = slot.app;
+                let mut gl = *slot.gl;
+                if let Some(title) = title {
+                    gl.glut_set_window_title(&title);
+                }
+                gl
             }
-            let previous = gl.take_frame();
-            gl.recycle_frame(previous);
-            if let Some((width, height)) = gl.glut.reshape.take() {
-                (self.width, self.height) = (width, height);
-                self.run_reshape(&mut gl, width, height);
-            }
-            self.run_display(&mut gl);
-            schedule.absorb(&mut gl, clock);
+            None => self.new_gl(),
         }
-        gl
     }
 
     pub(crate) fn draw_into(&mut self, gl: &mut Gl, width: i32, height: i32) {
@@ -515,11 +637,37 @@ impl App {
         }
     }
 
-    /// Renders one frame headless (the last of `--frames N`) with [`App::rasterizer`].
+    /// Renders the first window headless (the last frame of `--frames N`) with
+    /// [`App::rasterizer`], its subwindows composed in place.
     pub fn render_image(&mut self) -> Result<Image, RenderError> {
-        let mut gl = self.record_frames(self.frames.unwrap_or(1));
         let mut renderer = Headless::new(self.rasterizer())?;
-        renderer.render_frame(&gl.take_frame(), self.width as u32, self.height as u32)
+        let frames = self.frames.unwrap_or(1);
+        let mut program = Program::new(std::mem::replace(self, App::new("", 1, 1)));
+        program.run_headless(frames);
+        let image = match program.index(1) {
+            Some(k) => program.render_tree(k, &mut renderer),
+            None => Err(RenderError::Gpu("the program destroyed its first window".into())),
+        };
+        if let Some(k) = program.index(1) {
+            *self = program.slots.swap_remove(k).app;
+        }
+        image
+    }
+
+    /// Runs the program headless and writes each shown top-level window's picture (its
+    /// subwindows composed in place): the first to `path`, window N to `path` with `-N` before
+    /// the extension. Then the loop ends as freeglut's does (every window's close callback);
+    /// true if the program should exit (`GLUT_ACTION_ON_WINDOW_CLOSE` is `GLUT_ACTION_EXIT`).
+    fn write_pngs(self, path: &str) -> Result<bool, Box<dyn std::error::Error>> {
+        let mut renderer = Headless::new(self.rasterizer())?;
+        let frames = self.frames.unwrap_or(1);
+        let mut program = Program::new(self);
+        program.run_headless(frames);
+        let pictures = program.render_windows(&mut renderer)?;
+        for (n, (id, image)) in pictures.iter().enumerate() {
+            crate::render::write_png(compose::png_path(path, *id, n == 0), image)?;
+        }
+        Ok(program.finish())
     }
 
     /// Renders `frames` headless frames with one renderer (display callback, assembly,
@@ -527,7 +675,8 @@ impl App {
     /// pipelines), and returns the median frame time.
     pub fn median_frame_time(&mut self, frames: usize) -> Result<std::time::Duration, RenderError> {
         let mut renderer = Headless::new(self.rasterizer())?;
-        let mut gl = self.new_gl();
+        let mut gl = self.context.take().map_or_else(|| self.new_gl(), |made| *made);
+        gl.set_tessellator(self.tessellator);
         self.run_init(&mut gl);
         let mut times = Vec::with_capacity(frames.max(1));
         self.draw_into(&mut gl, self.width, self.height);
@@ -550,11 +699,10 @@ impl App {
         Ok(())
     }
 
-    /// Renders one frame headless and writes it as PNG.
-    pub fn write_png(mut self, path: &str) -> Result<(), Box<dyn std::error::Error>> {
-        let image = self.render_image()?;
-        crate::render::write_png(path, &image)?;
-        Ok(())
+    /// Renders the program headless and writes it as PNG: the first window to `path`, each
+    /// further top-level window to `path` with `-N` (its number) before the extension.
+    pub fn write_png(self, path: &str) -> Result<(), Box<dyn std::error::Error>> {
+        self.write_pngs(path).map(|_| ())
     }
 
     /// [`App::write_png`] timing each phase of the run, printed to stderr (`--profile`): the
@@ -602,18 +750,18 @@ impl App {
     }
 
     #[cfg(feature = "window")]
-    fn run_window(self) -> Result<(), Box<dyn std::error::Error>> {
+    fn run_window(self) -> Result<bool, Box<dyn std::error::Error>> {
         crate::window::run(self)
     }
 
     #[cfg(not(feature = "window"))]
-    fn run_window(self) -> Result<(), Box<dyn std::error::Error>> {
+    fn run_window(self) -> Result<bool, Box<dyn std::error::Error>> {
         Err("this build has no window support (feature `window`); run with --png PATH".into())
     }
 }
 
 /// A headless frame's rasteriser.
-enum Headless {
+pub(crate) enum Headless {
     Cpu,
     Wgpu(Box<Renderer>),
 }
@@ -648,31 +796,6 @@ fn window_reader(rasterizer: Rasterizer) -> impl FnMut(&Frame, u32, u32) -> Opti
             renderer.as_mut()?.render_window(frame, width, height, true).ok()
         }
     }
-}
-
-/// The virtual refresh period of headless runs: a 60 Hz display.
-const HEADLESS_FRAME_MS: f64 = 1000.0 / 60.0;
-
-/// How many refreshes a headless run waits for a redisplay (an idle callback that never posts
-/// one, a timer an hour away) before it decides the picture will not change.
-const MAX_QUIET_REFRESHES: usize = 100_000;
-
-/// Steps the virtual clock one refresh at a time, running due timers and the idle callback,
-/// until a callback has posted a redisplay (true) or nothing is left that could (false).
-fn advance_to_redisplay(gl: &mut Gl, schedule: &mut Schedule, clock: &mut f64) -> bool {
-    for _ in 0..MAX_QUIET_REFRESHES {
-        *clock += HEADLESS_FRAME_MS;
-        gl.glut.elapsed_ms = *clock as i32;
-        schedule.fire_due(gl, *clock);
-        schedule.run_idle(gl, *clock);
-        if std::mem::take(&mut gl.glut.redisplay) {
-            return true;
-        }
-        if schedule.is_empty() {
-            return false;
-        }
-    }
-    false
 }
 
 #[cfg(test)]
@@ -723,8 +846,8 @@ mod tests {
         assert_eq!(app.mouse_button(&mut gl, GLUT_LEFT_BUTTON, GLUT_DOWN, 250, 150), Redraw::Menu);
         assert!(app.menu_overlay(&gl).is_none());
         app.mouse_button(&mut gl, GLUT_RIGHT_BUTTON, GLUT_DOWN, 40, 30);
-        assert!(app.close_menu());
-        assert!(!app.close_menu());
+        assert!(app.close_menu(&mut gl));
+        assert!(!app.close_menu(&mut gl));
         assert!(log.borrow().iter().all(|entry| !entry.starts_with("menu")));
     }
 }

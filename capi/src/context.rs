@@ -68,6 +68,11 @@ pub fn take_owned() -> Option<Box<Gl>> {
     OWNED.with(|o| o.borrow_mut().take())
 }
 
+/// Nothing is current any more (GLUT's loop is over and its windows are gone).
+pub fn clear_current() {
+    CURRENT.with(|c| c.set(std::ptr::null_mut()));
+}
+
 /// Whether `gl` is the current context.
 pub fn is_current(gl: &Gl) -> bool {
     std::ptr::eq(CURRENT.with(Cell::get), gl)

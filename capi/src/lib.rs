@@ -28,6 +28,7 @@ pub mod memory;
 mod strings;
 
 mod gl;
+mod glew;
 mod glu;
 mod glut;
 mod osmesa;

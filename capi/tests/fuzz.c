@@ -9,7 +9,7 @@
  * vertices and all) to the PNG. Every non-NULL pointer passed addresses at least what the
  * call's own arguments say GL reads (the caller's promise in GL); the arguments themselves
  * are anything. */
-#include <GL/glut.h>
+#include <GL/freeglut.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -320,6 +320,28 @@ static void pixel_call(void) {
     }
 }
 
+/* GLUT's calls with any arguments: windows that do not exist, unknown names, odd shape sizes
+ * (small enough to draw: freeglut itself gives up on shapes of more than 65535 vertices). The
+ * program's own window is never hidden or destroyed, so that its picture is written. */
+static void glut_call(void) {
+    static const unsigned char text[] = "glut\nfuzz\x7f\xff";
+    double offset[3] = {f(), f(), f()};
+    switch (pick(8)) {
+    case 0: glutSetWindow(pick(6) - 1); glutPostWindowRedisplay(pick(6) - 1); glutDestroyWindow(2 + pick(5)); break;
+    case 1: glutGet(pick(0x300)); glutDeviceGet(pick(0x300)); glutLayerGet(pick(0x400)); glutGameModeGet(pick(10) - 2); break;
+    case 2: glutSetOption(pick(0x300), pick(5) - 1); glutSetKeyRepeat(pick(5) - 1); glutIgnoreKeyRepeat(pick(3)); break;
+    case 3: glutSolidCylinder(f(), f(), pick(40) - 5, pick(40) - 5); glutWireSierpinskiSponge(pick(7) - 2, pick(4) ? offset : NULL, f()); break;
+    /* The tea set is thousands of vertices a call: now and then. */
+    case 4: if (!pick(24)) { glutSolidTeacup(f()); glutWireTeaspoon(f()); }
+            glutSolidRhombicDodecahedron(); glutWireIcosahedron(); break;
+    case 5: glutStrokeString(pick(2) ? GLUT_STROKE_ROMAN : (void *)(intptr_t)pick(4000), pick(4) ? text : NULL);
+            glutStrokeCharacter(GLUT_STROKE_MONO_ROMAN, pick(400) - 100); glutBitmapString(GLUT_BITMAP_9_BY_15, text); break;
+    case 6: glutSetMenu(pick(4)); glutSetMenuData(buf); glutGetMenuData(); glutSetMenuFont(pick(4), (void *)(intptr_t)pick(12)); break;
+    default: glutJoystickSetCenter(pick(4) - 1, pick(4) ? buf : NULL); glutJoystickGetDeadBand(pick(4) - 1, pick(4) - 1);
+             glutPositionWindow(pick(100), pick(100)); glutSetCursor(pick(120)); glutWarpPointer(pick(64), pick(64)); break;
+    }
+}
+
 static void display(void) {
     for (int i = 0; i < 4; i++) nurbs[i] = gluNewNurbsRenderer();
     for (int i = 0; i < 2; i++) tess[i] = gluNewTess();
@@ -330,13 +352,14 @@ static void display(void) {
     }
     for (int i = 0; i < 600; i++) indices32[i] = indices[i] = (GLushort)((i * 7919) % 600);
     for (unsigned long c = 0; c < calls; c++) {
-        switch (pick(7)) {
+        switch (pick(8)) {
         case 0: map_call(); break;
         case 1: nurbs_call(); break;
         case 2: tess_call(); break;
         case 3: array_call(); break;
         case 4: pixel_call(); break;
         case 5: quadric_call(); break;
+        case 6: glut_call(); break;
         default: state_call(); break;
         }
         GLenum e = glGetError();

@@ -1,10 +1,11 @@
 #!/bin/sh
-# Checks capi/include/GL/{gl,glu,glut}.h:
+# Checks capi/include/GL/{gl,glu,freeglut_std,freeglut_ext}.h (glut.h and freeglut.h include the last two):
 # 1. every constant has the value the system's headers give it (Mesa's GL/gl.h and GL/glext.h,
-#    GL/glu.h, freeglut's GL/freeglut_std.h): the values are the API's, so an independent
+#    GL/glu.h, freeglut's GL/freeglut_std.h and GL/freeglut_ext.h): the values are the API's, so an independent
 #    header is the truth to compare with;
 # 2. the headers declare exactly the functions libgleval_c exports, so a call gleval lacks
-#    does not compile, and nothing implemented is hidden.
+#    does not compile, and nothing implemented is hidden;
+# 3. every function of the system's GL/freeglut_std.h and GL/freeglut_ext.h is declared.
 #   capi/tests/headers.sh LIBDIR     (the directory holding libgleval_c.so)
 set -eu
 here=$(cd "$(dirname "$0")/.." && pwd)
@@ -19,8 +20,10 @@ trap 'rm -rf "$tmp"' EXIT
   echo '#include <GL/glext.h>'
   echo '#include <GL/glu.h>'
   echo '#include <GL/freeglut_std.h>'
+  echo '#include <GL/freeglut_ext.h>'
   sed -n 's/^#define \(GLU\{0,1\}T\{0,1\}_[A-Z0-9_]*\) \([0-9xA-Fa-f]*\)$/#ifdef \1\n_Static_assert(\1 == \2, "\1");\n#else\nMISSING(\1)\n#endif/p' \
-    "$here"/include/GL/gl.h "$here"/include/GL/glu.h "$here"/include/GL/glut.h
+    "$here"/include/GL/gl.h "$here"/include/GL/glu.h "$here"/include/GL/freeglut_std.h \
+    "$here"/include/GL/freeglut_ext.h
 } > "$tmp/consts.c"
 missing=$(cc -E -P "$tmp/consts.c" | grep -o 'MISSING([A-Z0-9_]*)' || true)
 cc -std=c11 -fsyntax-only -DMISSING\(x\)= "$tmp/consts.c"
@@ -34,3 +37,13 @@ if ! diff "$tmp/declared" "$tmp/exported" > "$tmp/diff"; then
   echo "headers: declared (<) and exported (>) functions differ:"; cat "$tmp/diff"; exit 1
 fi
 echo "headers: $(wc -l < "$tmp/declared") functions declared, all exported, none more"
+
+# 3. The system's freeglut functions, all declared here.
+for h in freeglut_std freeglut_ext; do
+  grep -ho '\b\(glu\|glut\)[A-Z][A-Za-z0-9]* *(' "/usr/include/GL/$h.h" | tr -d '( ' | sort -u > "$tmp/system"
+  lacking=$(comm -23 "$tmp/system" "$tmp/declared")
+  if [ -n "$lacking" ]; then
+    echo "headers: functions of the system's GL/$h.h not declared here:"; echo "$lacking"; exit 1
+  fi
+  echo "headers: all $(wc -l < "$tmp/system") functions of the system's GL/$h.h declared"
+done

@@ -11,10 +11,14 @@
 // Without the runner (`App`: features gpu and png) menus are built but never shown.
 #![cfg_attr(not(all(feature = "gpu", feature = "png")), allow(dead_code))]
 
+use super::fonts::{GlutBitmapFont, GLUT_BITMAP_HELVETICA_18};
 use crate::gl::Gl;
 
 /// A menu callback (`glutCreateMenu(func)`): called with the value of the entry chosen.
 pub type MenuFn = Box<dyn FnMut(&mut Gl, i32)>;
+
+/// A menu's destroy callback (`glutMenuDestroyFunc(func)`).
+pub type MenuDestroyFn = Box<dyn FnMut(&mut Gl)>;
 
 /// One line of a menu.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -37,6 +41,12 @@ impl MenuItem {
 pub(crate) struct Menu {
     pub items: Vec<MenuItem>,
     callback: Option<MenuFn>,
+    /// `glutSetMenuData`: the program's pointer, kept as a number.
+    data: usize,
+    /// `glutMenuDestroyFunc`: runs when the menu is destroyed.
+    on_destroy: Option<MenuDestroyFn>,
+    /// `glutSetMenuFont`: the font its labels are drawn in.
+    font: Option<GlutBitmapFont>,
 }
 
 /// Every menu of the program, the current one and the menus attached to the mouse buttons.
@@ -65,6 +75,11 @@ impl Menus {
     fn get_mut(&mut self, id: i32) -> Option<&mut Menu> {
         let index = usize::try_from(id).ok()?.checked_sub(1)?;
         self.menus.get_mut(index)?.as_mut()
+    }
+
+    /// The font menu `id`'s labels are drawn in (freeglut's default, Helvetica 18).
+    pub(crate) fn font(&self, id: i32) -> GlutBitmapFont {
+        self.get(id).and_then(|m| m.font).unwrap_or(GLUT_BITMAP_HELVETICA_18)
     }
 
     /// The menu attached to a mouse button, if any.
@@ -137,7 +152,8 @@ impl Gl {
     /// `func(gl, value)` runs when one of its entries is chosen.
     pub fn glut_create_menu(&mut self, func: impl FnMut(&mut Gl, i32) + 'static) -> i32 {
         let menus = &mut self.glut.menus;
-        menus.menus.push(Some(Menu { items: Vec::new(), callback: Some(Box::new(func)) }));
+        let menu = Menu { items: Vec::new(), callback: Some(Box::new(func)), data: 0, on_destroy: None, font: None };
+        menus.menus.push(Some(menu));
         menus.current = menus.menus.len() as i32;
         menus.current
     }
@@ -163,10 +179,16 @@ impl Gl {
     /// `glutDestroyMenu(menu)`: the menu is gone; buttons it was attached to open nothing, and
     /// if it was current there is no current menu.
     pub fn glut_destroy_menu(&mut self, menu: i32) {
-        let menus = &mut self.glut.menus;
-        if !menus.valid_sub_menu("glutDestroyMenu", menu) {
+        if !self.glut.menus.valid_sub_menu("glutDestroyMenu", menu) {
             return;
         }
+        // freeglut runs the menu's destroy callback with the menu current, before it goes.
+        if let Some(mut on_destroy) = self.glut.menus.get_mut(menu).and_then(|m| m.on_destroy.take()) {
+            let previous = self.glut.menus.swap_current(menu);
+            on_destroy(self);
+            self.glut.menus.current = previous;
+        }
+        let menus = &mut self.glut.menus;
         menus.menus[menu as usize - 1] = None;
         for attached in &mut menus.attached {
             if *attached == menu {
@@ -175,6 +197,35 @@ impl Gl {
         }
         if menus.current == menu {
             menus.current = 0;
+        }
+    }
+
+    /// `glutMenuDestroyFunc(func)` (freeglut): `func` runs when the current menu is destroyed.
+    pub fn glut_menu_destroy_func(&mut self, func: Option<MenuDestroyFn>) {
+        if let Some(menu) = self.glut.menus.current_mut("glutMenuDestroyFunc") {
+            menu.on_destroy = func;
+        }
+    }
+
+    /// `glutSetMenuData(data)` (freeglut): a number the program keeps with the current menu.
+    pub fn glut_set_menu_data(&mut self, data: usize) {
+        if let Some(menu) = self.glut.menus.current_mut("glutSetMenuData") {
+            menu.data = data;
+        }
+    }
+
+    /// `glutGetMenuData` (freeglut): what `glutSetMenuData` kept (0 initially or without a
+    /// current menu).
+    #[must_use]
+    pub fn glut_get_menu_data(&self) -> usize {
+        self.glut.menus.get(self.glut.menus.current).map_or(0, |m| m.data)
+    }
+
+    /// `glutSetMenuFont(menu, font)` (freeglut): menu `menu`'s labels are drawn in `font`.
+    pub fn glut_set_menu_font(&mut self, menu: i32, font: GlutBitmapFont) {
+        match self.glut.menus.get_mut(menu) {
+            Some(m) => m.font = Some(font),
+            None => complain("glutSetMenuFont", &format!("there is no menu {menu}")),
         }
     }
 

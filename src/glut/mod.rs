@@ -11,17 +11,28 @@
 pub mod consts;
 pub mod display_mode;
 pub mod fonts;
+mod joystick;
+mod limits;
 mod menu;
+pub(crate) mod messages;
 #[cfg(all(feature = "gpu", feature = "png"))]
 pub(crate) mod popup;
 // The main loop's scheduling belongs to the runner, `App`.
+mod cylinder;
+pub(crate) mod options;
+mod polyhedra;
 #[cfg(all(feature = "gpu", feature = "png"))]
 mod schedule;
 mod shapes;
+#[rustfmt::skip]
+#[allow(clippy::excessive_precision, clippy::unreadable_literal, clippy::approx_constant)]
+mod solids_data;
 pub(crate) mod state;
 mod teapot;
+mod teaset;
+pub(crate) mod windows;
 
-pub use menu::MenuFn;
+pub use menu::{MenuDestroyFn, MenuFn};
 #[cfg(all(feature = "gpu", feature = "png"))]
 pub(crate) use schedule::Schedule;
 pub(crate) use state::GlutState;
@@ -29,6 +40,11 @@ pub(crate) use state::GlutState;
 use crate::gl::types::GLenum;
 use crate::gl::Gl;
 use consts::*;
+pub use joystick::JoystickRange;
+pub use limits::display_mode_from_string;
+pub use messages::MessageFn;
+pub use options::FREEGLUT_VERSION;
+use windows::WindowRequest;
 
 /// An idle callback (`glutIdleFunc`): runs when the window has nothing else to do.
 pub type IdleFn = Box<dyn FnMut(&mut Gl)>;
@@ -40,7 +56,7 @@ impl Gl {
     /// `glutPostRedisplay`: the display callback runs again once the current callback returns
     /// (in a window at the display's rate; headless, it makes the next of `--frames N`).
     pub fn glut_post_redisplay(&mut self) {
-        self.glut.redisplay = true;
+        self.window_request(WindowRequest::Redisplay, |gl| gl.glut.redisplay = true);
     }
 
     /// `glutSwapBuffers`: in a double-buffered window the back buffer becomes the front one
@@ -72,7 +88,8 @@ impl Gl {
     /// `glutSetWindowTitle`: the window shows `title` after the current callback (headless
     /// rendering ignores it).
     pub fn glut_set_window_title(&mut self, title: &str) {
-        self.glut.title = Some(title.to_owned());
+        let own = title.to_owned();
+        self.window_request(WindowRequest::Title(title.to_owned()), |gl| gl.glut.title = Some(own));
     }
 
     /// The title asked for since the last call, if any (the window applies it).
@@ -83,35 +100,79 @@ impl Gl {
     /// `glutReshapeWindow`: asks the window system for this size; the reshape callback runs
     /// when the window has it. Headless, the next frame is drawn at this size.
     pub fn glut_reshape_window(&mut self, width: i32, height: i32) {
-        self.glut.reshape = Some((width.max(1), height.max(1)));
+        let size = (width.max(1), height.max(1));
+        self.window_request(WindowRequest::Reshape(size.0, size.1), |gl| gl.glut.reshape = Some(size));
     }
 
     /// `glutFullScreen`: asks for the window to cover the screen (headless: nothing changes).
     pub fn glut_full_screen(&mut self) {
-        self.glut.full_screen = true;
+        self.window_request(WindowRequest::FullScreen, |gl| gl.glut.full_screen = true);
     }
 
-    /// `glutGet`: the window's size and position, the initial size and display mode, the
-    /// screen size (headless: the window's), `GLUT_ELAPSED_TIME` (ms since the program
-    /// started; headless, the virtual clock of `--frames`), and the buffers GLUT's window has
-    /// (RGBA, double buffered as asked, a 24-bit depth buffer). Other names give -1, as
-    /// freeglut answers unknown queries.
+    /// `glutGet`: every name freeglut 3.4 answers on X11. The current window's size, position,
+    /// parent, children, cursor and full-screen state; its buffers (RGBA, double buffered as
+    /// asked, a 24-bit depth buffer, stencil, alpha and accumulation as the display mode asks);
+    /// the screen (headless: the window's size, at X's 100 dots an inch); the initial window
+    /// and display mode; `GLUT_ELAPSED_TIME` (ms since the program started; headless, the
+    /// virtual clock of `--frames`); the settings of `glutSetOption` and the context asked
+    /// for; `GLUT_VERSION` (30400). Other names give -1, as freeglut answers them.
     #[must_use]
     pub fn glut_get(&self, what: GLenum) -> i32 {
+        if let Some(answer) = self.window_query(what).or_else(|| self.glut.options.get(what)) {
+            return answer;
+        }
         let glut = &self.glut;
+        let mode = glut.display_mode;
+        let bits = |bit: u32, size: i32| if mode & bit != 0 { size } else { 0 };
+        let screen = if glut.screen.0 > 0 { glut.screen } else { (self.width(), self.height()) };
         match what {
-            GLUT_WINDOW_X | GLUT_WINDOW_Y | GLUT_INIT_WINDOW_X | GLUT_INIT_WINDOW_Y => 0,
-            GLUT_WINDOW_WIDTH | GLUT_SCREEN_WIDTH => self.width(),
-            GLUT_WINDOW_HEIGHT | GLUT_SCREEN_HEIGHT => self.height(),
+            GLUT_SCREEN_WIDTH => screen.0,
+            GLUT_SCREEN_HEIGHT => screen.1,
+            GLUT_SCREEN_WIDTH_MM => (f64::from(screen.0) * 0.254).round() as i32,
+            GLUT_SCREEN_HEIGHT_MM => (f64::from(screen.1) * 0.254).round() as i32,
             GLUT_INIT_WINDOW_WIDTH => glut.init_size.0,
             GLUT_INIT_WINDOW_HEIGHT => glut.init_size.1,
-            GLUT_INIT_DISPLAY_MODE => glut.display_mode as i32,
-            GLUT_WINDOW_DOUBLEBUFFER => i32::from(glut.display_mode & GLUT_DOUBLE != 0),
-            GLUT_WINDOW_RGBA => 1,
+            GLUT_INIT_DISPLAY_MODE => mode as i32,
+            GLUT_INIT_STATE | GLUT_DISPLAY_MODE_POSSIBLE => 1,
+            GLUT_WINDOW_DOUBLEBUFFER => bits(GLUT_DOUBLE, 1),
+            GLUT_WINDOW_RGBA => i32::from(mode & GLUT_INDEX == 0),
             GLUT_WINDOW_DEPTH_SIZE => 24,
+            GLUT_WINDOW_RED_SIZE | GLUT_WINDOW_GREEN_SIZE | GLUT_WINDOW_BLUE_SIZE => 8,
+            GLUT_WINDOW_ALPHA_SIZE => bits(GLUT_ALPHA, 8),
+            GLUT_WINDOW_BUFFER_SIZE => 24 + bits(GLUT_ALPHA, 8),
+            GLUT_WINDOW_STENCIL_SIZE => bits(GLUT_STENCIL, 8),
+            GLUT_WINDOW_ACCUM_RED_SIZE | GLUT_WINDOW_ACCUM_GREEN_SIZE | GLUT_WINDOW_ACCUM_BLUE_SIZE => {
+                bits(GLUT_ACCUM, 16)
+            }
+            GLUT_WINDOW_ACCUM_ALPHA_SIZE => bits(GLUT_ACCUM | GLUT_ALPHA, 16) * i32::from(mode & GLUT_ALPHA != 0),
+            GLUT_WINDOW_COLORMAP_SIZE
+            | GLUT_WINDOW_NUM_SAMPLES
+            | GLUT_WINDOW_STEREO
+            | GLUT_WINDOW_SRGB
+            | GLUT_WINDOW_FORMAT_ID
+            | GLUT_WINDOW_BORDER_WIDTH
+            | GLUT_WINDOW_HEADER_HEIGHT => 0,
             GLUT_ELAPSED_TIME => glut.elapsed_ms,
             GLUT_MENU_NUM_ITEMS => self.glut_menu_num_items(),
             _ => -1,
         }
+    }
+
+    /// `glutLeaveMainLoop` (freeglut): the main loop ends after the current callback; with
+    /// `GLUT_ACTION_ON_WINDOW_CLOSE` at `GLUT_ACTION_EXIT` (the default) the program then exits,
+    /// otherwise `glutMainLoop` returns.
+    pub fn glut_leave_main_loop(&mut self) {
+        self.glut.leave_main_loop = true;
+    }
+
+    /// `glutExtensionSupported(name)`: whether `name` is one of the words of
+    /// `glGetString(GL_EXTENSIONS)` (GLUT 3 spec §9.1: a whole word, not a prefix).
+    #[must_use]
+    pub fn glut_extension_supported(&mut self, name: &str) -> i32 {
+        if name.is_empty() || name.contains(' ') {
+            return 0;
+        }
+        let extensions = self.get_string(crate::gl::consts::GL_EXTENSIONS).unwrap_or_default();
+        i32::from(extensions.split_whitespace().any(|e| e == name))
     }
 }

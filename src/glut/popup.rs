@@ -13,7 +13,6 @@
 //! highlighted item dark blue with white text, a dark frame, a small arrow at the right of an
 //! item that opens a sub-menu.
 
-use super::fonts::GLUT_BITMAP_HELVETICA_18;
 use super::menu::{MenuItem, Menus};
 use crate::gl::consts::*;
 use crate::gl::{Frame, Gl};
@@ -87,7 +86,7 @@ pub(crate) struct Popup {
 impl Popup {
     /// Opens `menu` with its top left corner at the pointer (moved in to fit the window).
     pub(crate) fn open(gl: &Gl, menu: i32, x: i32, y: i32, window: (i32, i32)) -> Option<Self> {
-        let item_height = gl.glut_bitmap_height(GLUT_BITMAP_HELVETICA_18) + 4;
+        let item_height = gl.glut_bitmap_height(gl.glut.menus.font(menu)) + 4;
         let mut popup = Self { shown: Vec::new(), window, item_height, pressed_at: (x, y), dragged: false };
         let shown = popup.place(gl, menu, x, y)?;
         popup.shown.push(shown);
@@ -97,7 +96,8 @@ impl Popup {
     /// A menu laid out at (x, y), moved left and up as far as needed to be inside the window.
     fn place(&self, gl: &Gl, menu: i32, x: i32, y: i32) -> Option<Shown> {
         let items = &gl.glut.menus.get(menu)?.items;
-        let widest = items.iter().map(|i| gl.glut_bitmap_length(GLUT_BITMAP_HELVETICA_18, i.label())).max();
+        let font = gl.glut.menus.font(menu);
+        let widest = items.iter().map(|i| gl.glut_bitmap_length(font, i.label())).max();
         let arrow = if items.iter().any(|i| matches!(i, MenuItem::SubMenu { .. })) { ARROW_ROOM } else { 0 };
         let width = widest.unwrap_or(0) + 2 * PAD + arrow + 2 * BORDER;
         let mut shown = Shown { menu, x, y, width, items: items.len(), highlight: None };
@@ -186,13 +186,13 @@ impl Popup {
         overlay.matrix_mode(GL_MODELVIEW);
         for shown in &self.shown {
             if let Some(menu) = gl.glut.menus.get(shown.menu) {
-                self.draw_menu(&mut overlay, shown, &menu.items);
+                self.draw_menu(&mut overlay, shown, &menu.items, gl.glut.menus.font(shown.menu));
             }
         }
         overlay.take_frame()
     }
 
-    fn draw_menu(&self, gl: &mut Gl, shown: &Shown, items: &[MenuItem]) {
+    fn draw_menu(&self, gl: &mut Gl, shown: &Shown, items: &[MenuItem], font: crate::glut::fonts::GlutBitmapFont) {
         let (x, y, w, h) = (shown.x as f32, shown.y as f32, shown.width as f32, shown.height(self.item_height) as f32);
         let border = BORDER as f32;
         gl.color3fv(&FRAME);
@@ -210,7 +210,7 @@ impl Popup {
             gl.color3fv(&ink);
             // The baseline sits 6 pixels above the item's bottom (Helvetica 18 descends 4).
             gl.raster_pos2i(shown.x + BORDER + PAD, top + self.item_height - 6);
-            gl.glut_bitmap_string(GLUT_BITMAP_HELVETICA_18, item.label());
+            gl.glut_bitmap_string(font, item.label());
             if matches!(item, MenuItem::SubMenu { .. }) {
                 let (right, middle) =
                     ((shown.x + shown.width - BORDER - PAD) as f32, top as f32 + 0.5 * self.item_height as f32);

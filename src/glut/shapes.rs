@@ -13,12 +13,12 @@ use crate::gl::types::*;
 use crate::gl::Gl;
 
 /// A vertex with its normal: (normal, position).
-type Point = ([f32; 3], [f32; 3]);
+pub(super) type Point = ([f32; 3], [f32; 3]);
 
 /// Sample `i` of freeglut's circle table of `n` steps over a full turn (half a turn if `half`),
 /// as (sin, cos): a negative `n` turns clockwise; the step is an `f32`, each sample a double
 /// sine or cosine rounded to `f32`, and the last sample (`i == |n|`) closes the circle exactly.
-fn circle(n: i32, half: bool, i: i32) -> (f32, f32) {
+pub(super) fn circle(n: i32, half: bool, i: i32) -> (f32, f32) {
     let size = n.abs();
     if i == 0 || (i == size && !half) {
         return (0.0, 1.0);
@@ -245,7 +245,7 @@ impl Gl {
     }
 
     /// One primitive of a shape: each point's normal, then its vertex.
-    fn shape_primitive(&mut self, mode: GLenum, points: impl IntoIterator<Item = Point>) {
+    pub(super) fn shape_primitive(&mut self, mode: GLenum, points: impl IntoIterator<Item = Point>) {
         self.begin(mode);
         for (n, v) in points {
             self.normal3f(n[0], n[1], n[2]);
@@ -259,7 +259,7 @@ impl Gl {
     /// current normal is the one before (arrays do not set it). In a display list being compiled
     /// that is the normal current when the list is called, kept by `glPushAttrib(GL_CURRENT_BIT)`,
     /// which saves nothing else the shapes change. (All checked with freeglut 3.4 on Mesa.)
-    fn drawing_shape(&mut self, draw: impl FnOnce(&mut Gl)) {
+    pub(super) fn drawing_shape(&mut self, draw: impl FnOnce(&mut Gl)) {
         if self.inside_begin_end() {
             return self.set_error(GL_INVALID_OPERATION);
         }

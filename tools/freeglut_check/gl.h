@@ -2,7 +2,8 @@
    glutDisplayFunc, glutReshapeFunc, glutInitDisplayMode and glutMainLoop are caught here. */
 #include <GL/gl.h>
 #include <GL/glu.h>
-#include <GL/glut.h>
+/* freeglut.h: the reference programs call freeglut's extensions too (glutStrokeHeight). */
+#include <GL/freeglut.h>
 void fg_display_func(void (*f)(void));
 void fg_reshape_func(void (*f)(int, int));
 void fg_init_display_mode(unsigned int mode);

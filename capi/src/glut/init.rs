@@ -1,69 +1,206 @@
-//! `glutInit`, the window's initial attributes, `glutCreateWindow` and `glutMainLoop`.
+//! `glutInit` (gleval's options and GLUT's X options out of `argv`), the initial window
+//! attributes, and the main loop: `glutMainLoop`, `glutMainLoopEvent`, `glutLeaveMainLoop`,
+//! `glutExit`.
 
-use super::callbacks;
-use crate::context::{install, take_owned};
-use gleval::app::{App, Options};
+use super::{callbacks, windows};
+use crate::context::{has_current, with_gl};
+use gleval::app::{App, Options, Pass, Running};
+use gleval::gl::Gl;
+use gleval::glut::consts::*;
 use std::cell::RefCell;
 use std::ffi::{c_char, c_int, c_uint, CStr};
 
-/// What the program asked for before the main loop.
+/// What the program asked for before its windows.
 struct Setup {
     options: Options,
     size: (i32, i32),
+    position: Option<(i32, i32)>,
     display_mode: u32,
-    title: String,
+    /// `-gldebug`: GL errors are reported after each display callback.
+    gl_debug: bool,
+    /// The program-wide settings made before any window (`glutSetOption` after `glutInit`),
+    /// which each window takes.
+    settings: Gl,
 }
 
 thread_local! {
     static SETUP: RefCell<Setup> = RefCell::new(Setup {
         options: Options::default(),
-        // GLUT's default window size.
+        // GLUT's default window size and display mode (GLUT_RGBA | GLUT_SINGLE | GLUT_DEPTH
+        // is freeglut's; gleval's windows have colour and depth whatever is asked).
         size: (300, 300),
+        position: None,
         display_mode: 0,
-        title: String::new(),
+        gl_debug: false,
+        settings: Gl::new(300, 300),
     });
+    /// A loop the program drives with `glutMainLoopEvent`. Leaked rather than owned: a program
+    /// may exit with its loop running, and a thread-local dropped at exit must not drop GPU
+    /// devices (their library's thread-locals are gone by then); `Running::close` frees what
+    /// it holds when the loop ends.
+    static RUNNING: RefCell<Option<&'static mut Running>> = const { RefCell::new(None) };
+    /// That loop is over (later passes do nothing).
+    static ENDED: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+}
+
+/// Runs `f` on the current context, or before any window on the settings' context (GLUT's
+/// settings and queries answer before `glutCreateWindow`).
+pub(super) fn with_glut<R: crate::boundary::Fallback>(f: impl FnOnce(&mut Gl) -> R) -> R {
+    if has_current() {
+        with_gl(f)
+    } else {
+        SETUP.with(|s| f(&mut s.borrow_mut().settings))
+    }
+}
+
+/// A program-wide setting: on the current context, and on the settings' context that windows
+/// made later take it from.
+pub(super) fn set_glut(f: impl Fn(&mut Gl)) {
+    if has_current() {
+        with_gl(&f);
+    }
+    SETUP.with(|s| f(&mut s.borrow_mut().settings));
+}
+
+/// A new window's `App` with the program's size, place and display mode (`sub`: a
+/// subwindow's own place and size); its context takes the settings made so far.
+pub(super) fn new_window(title: &str, sub: Option<(i32, i32, i32, i32)>) -> App {
+    SETUP.with(|s| {
+        let s = s.borrow();
+        // freeglut on Mesa has no colour-index window to give: its fatal error, status 1.
+        gleval::glut::display_mode::exit_unless_possible(s.display_mode);
+        let (w, h) = sub.map_or(s.size, |(_, _, w, h)| (w, h));
+        let mut app = App::new(title, w, h).init_display_mode(s.display_mode);
+        if let Some((x, y)) = sub.map(|(x, y, _, _)| (x, y)).or(s.position) {
+            app = app.position(x, y);
+        }
+        app.context_mut().glut_inherit_settings(&s.settings);
+        app
+    })
 }
 
 /// gleval's options and whether each takes a value (`App` parses them: `Options::from_args`).
 const OPTIONS: [(&str, bool); 6] =
     [("--png", true), ("--time", true), ("--frames", true), ("--gpu", false), ("--wgpu", false), ("--profile", false)];
 
-/// How many of `args` (from the first) are one gleval option with its value; 0 if the first
-/// is not one.
-fn option_len(args: &[String]) -> usize {
+/// GLUT's X options (GLUT 3 spec §2.1) and whether each takes a value.
+const X_OPTIONS: [(&str, bool); 7] = [
+    ("-display", true),
+    ("-geometry", true),
+    ("-iconic", false),
+    ("-direct", false),
+    ("-indirect", false),
+    ("-sync", false),
+    ("-gldebug", false),
+];
+
+/// How many of `args` (from the first) are one option of `table` with its value; 0 if the
+/// first is not one.
+fn option_len(args: &[String], table: &[(&str, bool)]) -> usize {
     let Some(first) = args.first() else { return 0 };
-    if first.starts_with("--png=") {
+    if first.starts_with("--png=") && table.len() == OPTIONS.len() {
         return 1;
     }
-    match OPTIONS.iter().find(|(name, _)| first == name) {
+    match table.iter().find(|(name, _)| first == name) {
         Some((_, true)) => args.len().min(2),
         Some((_, false)) => 1,
         None => 0,
     }
 }
 
-/// Splits the program's arguments into gleval's options and the program's own.
-fn split_options(args: Vec<String>) -> (Vec<String>, Vec<bool>) {
-    let mut ours = Vec::new();
+/// Splits the program's arguments into gleval's options, GLUT's X options and the program's
+/// own (which `keep` marks).
+fn split_options(args: Vec<String>) -> (Vec<String>, Vec<String>, Vec<bool>) {
+    let (mut ours, mut x) = (Vec::new(), Vec::new());
     let mut keep = vec![true; args.len()];
-    let mut i = 0;
+    let mut i = 1.min(args.len());
     while i < args.len() {
-        let n = option_len(&args[i..]);
+        let (n, into) = match option_len(&args[i..], &OPTIONS) {
+            0 => (option_len(&args[i..], &X_OPTIONS), &mut x),
+            n => (n, &mut ours),
+        };
         if n == 0 {
             i += 1;
             continue;
         }
-        ours.extend_from_slice(&args[i..i + n]);
+        into.extend_from_slice(&args[i..i + n]);
         keep[i..i + n].fill(false);
         i += n;
     }
-    (ours, keep)
+    (ours, x, keep)
+}
+
+/// A size or a place: two numbers.
+type Pair = Option<(i32, i32)>;
+
+/// `-geometry WxH+X+Y` (each part optional, as X's geometry strings): size and place.
+fn parse_geometry(g: &str) -> (Pair, Pair) {
+    let (size, place) = match g.find(['+', '-']) {
+        Some(at) => g.split_at(at),
+        None => (g, ""),
+    };
+    let size = size.split_once(['x', 'X']).and_then(|(w, h)| Some((w.parse().ok()?, h.parse().ok()?)));
+    let mut numbers = Vec::new();
+    let mut rest = place;
+    while let Some(sign) = rest.chars().next() {
+        let body = &rest[1..];
+        let end = body.find(['+', '-']).unwrap_or(body.len());
+        let Ok(n) = body[..end].parse::<i32>() else { break };
+        numbers.push(if sign == '-' { -n } else { n });
+        rest = &body[end..];
+    }
+    let place = (numbers.len() == 2).then(|| (numbers[0], numbers[1]));
+    (size, place)
+}
+
+/// Applies GLUT's X options as freeglut does.
+fn apply_x_options(x: &[String]) {
+    let mut i = 0;
+    while i < x.len() {
+        let value = x.get(i + 1).cloned().unwrap_or_default();
+        match x[i].as_str() {
+            "-geometry" => {
+                let (size, place) = parse_geometry(&value);
+                SETUP.with(|s| {
+                    let mut s = s.borrow_mut();
+                    if let Some(size) = size {
+                        s.size = size;
+                        s.settings.glut_set_option(GLUT_INIT_WINDOW_WIDTH, size.0);
+                        s.settings.glut_set_option(GLUT_INIT_WINDOW_HEIGHT, size.1);
+                    }
+                    if let Some((px, py)) = place {
+                        s.position = Some((px, py));
+                        s.settings.glut_set_option(GLUT_INIT_WINDOW_X, px);
+                        s.settings.glut_set_option(GLUT_INIT_WINDOW_Y, py);
+                    }
+                });
+                i += 1;
+            }
+            // The X display the windows open on (winit reads it from the environment).
+            "-display" => {
+                std::env::set_var("DISPLAY", &value);
+                i += 1;
+            }
+            "-iconic" => set_glut(Gl::glut_init_iconic),
+            "-direct" => set_glut(|gl| gl.glut_set_option(GLUT_DIRECT_RENDERING, GLUT_FORCE_DIRECT_CONTEXT)),
+            "-indirect" => set_glut(|gl| gl.glut_set_option(GLUT_DIRECT_RENDERING, GLUT_FORCE_INDIRECT_CONTEXT)),
+            "-gldebug" => SETUP.with(|s| s.borrow_mut().gl_debug = true),
+            // X's synchronous mode changes nothing a program can see.
+            _ => {}
+        }
+        i += 1;
+    }
+}
+
+/// Whether `-gldebug` was given.
+pub(super) fn gl_debug() -> bool {
+    SETUP.with(|s| s.borrow().gl_debug)
 }
 
 entry! {
-    /// `glutInit(&argc, argv)`: takes `--png PATH`, `--time N`, `--frames N`, `--gpu`, `--wgpu`
-    /// and `--profile` out of `argv` (as GLUT takes its own options) and keeps them for the main
-    /// loop.
+    /// `glutInit(&argc, argv)`: takes gleval's options (`--png PATH`, `--time N`, `--frames N`,
+    /// `--gpu`, `--wgpu`, `--profile`) and GLUT's X options (`-geometry WxH+X+Y`, `-display`,
+    /// `-iconic`, `-direct`, `-indirect`, `-sync`, `-gldebug`) out of `argv`, as GLUT does.
     unsafe fn glutInit(argcp: *mut c_int, argv: *mut *mut c_char) {
         let (Some(argc), false) = (unsafe { argcp.as_mut() }, argv.is_null()) else { return };
         let n = usize::try_from(*argc).unwrap_or(0);
@@ -72,10 +209,7 @@ entry! {
             .map(|i| unsafe { *argv.add(i) })
             .map(|p| if p.is_null() { String::new() } else { unsafe { CStr::from_ptr(p) }.to_string_lossy().into_owned() })
             .collect();
-        let (ours, mut keep) = split_options(strings);
-        if let Some(program) = keep.first_mut() {
-            *program = true;
-        }
+        let (ours, x, keep) = split_options(strings);
         let mut kept = 0;
         for (i, keep) in keep.into_iter().enumerate() {
             if keep {
@@ -88,80 +222,157 @@ entry! {
         }
         *argc = kept as c_int;
         SETUP.with(|s| s.borrow_mut().options = Options::from_args(ours));
+        apply_x_options(&x);
     }
 }
 
 entry! {
     /// `glutInitWindowSize`.
     fn glutInitWindowSize(width: c_int, height: c_int) {
-        SETUP.with(|s| s.borrow_mut().size = (width, height))
+        SETUP.with(|s| {
+            let mut s = s.borrow_mut();
+            s.size = (width, height);
+            s.settings.glut_set_option(GLUT_INIT_WINDOW_WIDTH, width);
+            s.settings.glut_set_option(GLUT_INIT_WINDOW_HEIGHT, height);
+        })
     }
 }
 
 entry! {
-    /// `glutInitWindowPosition`: where the window system places the window is its business.
-    fn glutInitWindowPosition(_x: c_int, _y: c_int) {}
+    /// `glutInitWindowPosition`: where later windows open (the window system may place them
+    /// elsewhere); `glutGet(GLUT_INIT_WINDOW_X)` reads it back.
+    fn glutInitWindowPosition(x: c_int, y: c_int) {
+        SETUP.with(|s| s.borrow_mut().position = Some((x, y)));
+        set_glut(|gl| {
+            gl.glut_set_option(GLUT_INIT_WINDOW_X, x);
+            gl.glut_set_option(GLUT_INIT_WINDOW_Y, y);
+        });
+    }
 }
 
 entry! {
     /// `glutInitDisplayMode`: kept for `glutGet`; the window always has colour and depth.
     fn glutInitDisplayMode(mode: c_uint) {
-        SETUP.with(|s| s.borrow_mut().display_mode = mode)
-    }
-}
-
-/// An `App` with the program's title, size and display mode.
-fn app_from_setup() -> App {
-    SETUP.with(|s| {
-        let s = s.borrow();
-        App::new(&s.title, s.size.0, s.size.1).init_display_mode(s.display_mode)
-    })
-}
-
-entry! {
-    /// `glutCreateWindow(title)`: makes the context the program's GL calls go to (GLUT makes
-    /// the window's context current); returns the window's number, 1.
-    unsafe fn glutCreateWindow(title: *const c_char) -> c_int {
-        let title = if title.is_null() { String::new() } else { unsafe { CStr::from_ptr(title) }.to_string_lossy().into_owned() };
-        SETUP.with(|s| s.borrow_mut().title = title);
-        // freeglut on Mesa has no colour-index window to give: its fatal error, status 1.
-        gleval::glut::display_mode::exit_unless_possible(SETUP.with(|s| s.borrow().display_mode));
-        // `App` makes contexts as its windows have them (size, display mode, tessellator).
-        let mut gl = app_from_setup().record_frame();
-        let _ = gl.take_frame();
-        install(gl);
-        1
+        SETUP.with(|s| s.borrow_mut().display_mode = mode);
+        set_glut(|gl| gl.glut_set_option(GLUT_INIT_DISPLAY_MODE, mode as i32));
     }
 }
 
 entry! {
-    /// `glutMainLoop`: runs the program (a window, or headless with `--png PATH`, `--time N`)
-    /// and exits the process when it ends, as GLUT's main loop never returns.
+    /// `glutInitDisplayString`: the display mode freeglut makes of the string's words.
+    unsafe fn glutInitDisplayString(string: *const c_char) {
+        if string.is_null() {
+            return;
+        }
+        let s = unsafe { CStr::from_ptr(string) }.to_string_lossy().into_owned();
+        let (mode, unknown) = gleval::glut::display_mode_from_string(&s);
+        for word in unknown {
+            with_glut(|gl| gl.glut_warning(&format!("WARNING - Display string token not recognized:  {word}")));
+        }
+        SETUP.with(|s| s.borrow_mut().display_mode = mode);
+        set_glut(|gl| gl.glut_set_option(GLUT_INIT_DISPLAY_MODE, mode as i32));
+    }
+}
+
+/// The windows made so far with their callbacks, ready to run; `None` (with GLUT's complaint)
+/// before any window.
+fn program(call: &str) -> Option<App> {
+    let current = with_gl(|gl| gl.glut_get_window()).max(1);
+    let Some(mut root) = windows::take_root() else {
+        eprintln!("gleval: {call} called before glutCreateWindow");
+        return None;
+    };
+    root.sync_contexts(current);
+    Some(callbacks::register(root))
+}
+
+/// The loop is over: no window's context is reachable any more; exit unless the program asked
+/// for `glutMainLoop` to return.
+fn loop_over(exit: bool) {
+    windows::forget_all();
+    crate::context::clear_current();
+    if exit {
+        std::process::exit(0);
+    }
+}
+
+entry! {
+    /// `glutMainLoop`: runs the program (windows, or headless with `--png PATH`, `--time N`)
+    /// until the loop ends; then, as freeglut, exits the process unless
+    /// `GLUT_ACTION_ON_WINDOW_CLOSE` is `GLUT_ACTION_GLUTMAINLOOP_RETURNS` or
+    /// `GLUT_ACTION_CONTINUE_EXECUTION`, in which case it returns.
     fn glutMainLoop() {
-        let Some(made) = take_owned() else {
-            eprintln!("gleval: glutMainLoop called before glutCreateWindow");
-            std::process::exit(1);
-        };
+        let Some(app) = program("glutMainLoop") else { std::process::exit(1) };
         let options = SETUP.with(|s| s.borrow().options.clone());
-        let app = callbacks::register(app_from_setup().init(hand_over(made)));
-        callbacks::set_in_loop(true);
-        // The loop does not return to C either way: a panic inside it (a bug) ends the
-        // program with status 1 after its message, as a failed run does.
-        let ran = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| app.run_with(options)));
-        std::process::exit(if ran.is_ok() { 0 } else { 1 });
+        // A panic inside the loop (a bug) ends the program with status 1 after its message,
+        // as a failed run does.
+        let ran = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| app.run_loop(options)));
+        match ran {
+            Ok(exit) => loop_over(exit),
+            Err(_) => std::process::exit(1),
+        }
     }
 }
 
-/// `App`'s init step: the context the program set up before the main loop replaces the fresh
-/// one `App` made, keeping the fresh one's tessellator (`--gpu`). What the program drew before
-/// the loop is dropped, as a window not yet shown loses it.
-fn hand_over(made: Box<gleval::gl::Gl>) -> impl FnMut(&mut gleval::gl::Gl) {
-    let mut made = Some(made);
-    move |fresh| {
-        if let Some(mut mine) = made.take() {
-            mine.set_tessellator(fresh.tessellator());
-            let _ = mine.take_frame();
-            std::mem::swap(fresh, &mut *mine);
+entry! {
+    /// `glutMainLoopEvent` (freeglut): one pass of the main loop, for programs that run their
+    /// own loop: the events waiting and the callbacks they call for. Headless (`--png PATH`
+    /// with `--frames N`), the pictures are written after the Nth pass and the program ends.
+    fn glutMainLoopEvent() {
+        if ENDED.with(std::cell::Cell::get) {
+            return;
+        }
+        let started = RUNNING.with(|r| r.borrow().is_some());
+        if !started {
+            let Some(app) = program("glutMainLoopEvent") else { return };
+            let options = SETUP.with(|s| s.borrow().options.clone());
+            match app.start_passes(&options) {
+                Ok(running) => RUNNING.with(|r| *r.borrow_mut() = Some(Box::leak(Box::new(running)))),
+                Err(e) => {
+                    eprintln!("{e}");
+                    std::process::exit(1);
+                }
+            }
+        }
+        let pass = RUNNING.with(|r| r.borrow_mut().as_mut().map(|running| running.pass()));
+        match pass {
+            Some(Ok(Pass::Running)) | None => {}
+            // Headless, the pictures are written: the program ends here whatever the close
+            // action, as its own loop would otherwise call for passes that never come.
+            Some(Ok(Pass::Over { exit })) => {
+                let headless = RUNNING.with(|r| {
+                    r.borrow_mut().take().is_some_and(|running| {
+                        running.close();
+                        running.headless()
+                    })
+                });
+                ENDED.with(|e| e.set(true));
+                loop_over(exit || headless);
+            }
+            Some(Err(e)) => {
+                eprintln!("{e}");
+                std::process::exit(1);
+            }
+        }
+    }
+}
+
+entry! {
+    /// `glutLeaveMainLoop` (freeglut): the loop ends after the current callback.
+    fn glutLeaveMainLoop() {
+        with_gl(|gl| gl.glut_leave_main_loop())
+    }
+}
+
+entry! {
+    /// `glutExit` (freeglut): the loop ends; a program driving its own loop with
+    /// `glutMainLoopEvent` has its windows closed now (their close callbacks run).
+    fn glutExit() {
+        with_gl(|gl| gl.glut_leave_main_loop());
+        if let Some(running) = RUNNING.with(|r| r.borrow_mut().take()) {
+            running.close();
+            windows::forget_all();
+            crate::context::clear_current();
         }
     }
 }
@@ -172,9 +383,29 @@ mod tests {
 
     #[test]
     fn options_leave_the_programs_arguments() {
-        let args = ["prog", "-v", "--png", "a.png", "--gpu", "x", "--png=b.png", "--frames"];
-        let (ours, keep) = split_options(args.iter().map(|s| s.to_string()).collect());
+        let args = [
+            "prog",
+            "-v",
+            "--png",
+            "a.png",
+            "--gpu",
+            "x",
+            "--png=b.png",
+            "-iconic",
+            "-geometry",
+            "40x30+5-6",
+            "--frames",
+        ];
+        let (ours, x, keep) = split_options(args.iter().map(|s| s.to_string()).collect());
         assert_eq!(ours, ["--png", "a.png", "--gpu", "--png=b.png", "--frames"]);
-        assert_eq!(keep, [true, true, false, false, false, true, false, false]);
+        assert_eq!(x, ["-iconic", "-geometry", "40x30+5-6"]);
+        assert_eq!(keep, [true, true, false, false, false, true, false, false, false, false, false]);
+    }
+
+    #[test]
+    fn geometry_strings() {
+        assert_eq!(parse_geometry("40x30+5-6"), (Some((40, 30)), Some((5, -6))));
+        assert_eq!(parse_geometry("640x480"), (Some((640, 480)), None));
+        assert_eq!(parse_geometry("+10+20"), (None, Some((10, 20))));
     }
 }

@@ -2,7 +2,7 @@
 //! current, as GLUT's callbacks do.
 
 use crate::context::{enter, with_gl};
-use std::ffi::{c_char, c_int, CStr};
+use std::ffi::{c_char, c_int, c_void, CStr};
 
 /// A C menu callback: the chosen entry's value.
 type MenuFn = extern "C" fn(c_int);
@@ -69,5 +69,29 @@ entry! {
     unsafe fn glutChangeToSubMenu(item: c_int, name: *const c_char, menu: c_int) {
         let name = unsafe { label(name) };
         with_gl(|gl| gl.glut_change_to_sub_menu(item, &name, menu))
+    }
+}
+
+entry! {
+    /// `glutSetMenuData(data)` (freeglut): the program's pointer, kept with the current menu.
+    fn glutSetMenuData(data: *mut c_void) {
+        with_gl(|gl| gl.glut_set_menu_data(data as usize))
+    }
+}
+
+entry! {
+    /// `glutGetMenuData` (freeglut).
+    fn glutGetMenuData() -> *mut c_void {
+        with_gl(|gl| gl.glut_get_menu_data() as *mut c_void)
+    }
+}
+
+entry! {
+    /// `glutSetMenuFont(menu, font)` (freeglut): the bitmap font menu `menu` is drawn in
+    /// (another handle is no bitmap font: nothing changes).
+    fn glutSetMenuFont(menu: c_int, font: *mut c_void) {
+        if let Some(font) = super::font_handles::bitmap(font) {
+            with_gl(|gl| gl.glut_set_menu_font(menu, font))
+        }
     }
 }

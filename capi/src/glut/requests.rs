@@ -1,7 +1,6 @@
-//! What a program asks of its window: redisplay, swap, queries, title, size.
+//! What a program asks of its window: redisplay, swap, modifiers, title, size, full screen.
 
 use crate::context::with_gl;
-use gleval::gl::types::*;
 use std::ffi::{c_char, c_int, CStr};
 
 forward! {
@@ -10,7 +9,6 @@ forward! {
     glutGetModifiers() -> c_int => glut_get_modifiers;
     glutReshapeWindow(width: c_int, height: c_int) => glut_reshape_window;
     glutFullScreen() => glut_full_screen;
-    glutGet(what: GLenum) -> c_int => glut_get;
 }
 
 entry! {

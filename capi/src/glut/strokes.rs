@@ -1,20 +1,12 @@
-//! GLUT's stroke fonts. Their C handles are freeglut's, `(void *)0` for `GLUT_STROKE_ROMAN`
-//! and `(void *)1` for `GLUT_STROKE_MONO_ROMAN`; another pointer is no font, and the calls
-//! draw nothing and measure 0.
+//! GLUT's stroke fonts. Their C handles are freeglut's numbers (`(void *)0` for
+//! `GLUT_STROKE_ROMAN`, `(void *)1` for `GLUT_STROKE_MONO_ROMAN`) or its font symbols'
+//! addresses (`font_handles.rs`); another pointer is no font, and the calls draw nothing and
+//! measure 0.
 
+use super::font_handles::stroke as font;
 use super::fonts::c_bytes;
 use crate::context::with_gl;
-use gleval::glut::fonts::{GlutStrokeFont, GLUT_STROKE_MONO_ROMAN, GLUT_STROKE_ROMAN};
 use std::ffi::{c_float, c_int, c_uchar, c_void};
-
-/// The font a C handle names.
-fn font(handle: *const c_void) -> Option<GlutStrokeFont> {
-    match handle as usize {
-        0 => Some(GLUT_STROKE_ROMAN),
-        1 => Some(GLUT_STROKE_MONO_ROMAN),
-        _ => None,
-    }
-}
 
 entry! {
     /// `glutStrokeCharacter`.

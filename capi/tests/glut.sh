@@ -1,0 +1,50 @@
+#!/bin/sh
+# GLUT's windows and freeglut's calls through the C ABI, built with capi/glevalcc:
+# 1. tests/reference/glut/Windows.c (two windows and a subwindow) headless: each window's
+#    picture (PATH, PATH-3) equals real freeglut's under Xvfb pixel for pixel
+#    (tests/reference/glut/windows-*.png, captured by tools/freeglut_check/windows.sh --save);
+# 2. tests/reference/glut/Calls.c: GLUT's X options out of argv, glutGet, GLEW, glutGetProcAddress,
+#    the warning handler, window data, and glutMainLoop returning after the close callback;
+# 3. tests/reference/glut/Events.c runs headless to the end of its loop.
+#   capi/tests/glut.sh     (after cargo build -p gleval-c)
+set -eu
+here=$(cd "$(dirname "$0")/../.." && pwd)
+ref="$here/tests/reference/glut"
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cc="env GLEVAL_PROFILE=${GLEVAL_PROFILE:-debug} $here/capi/glevalcc -std=gnu99 -Wall -Werror"
+
+$cc -o "$work/windows" "$ref/Windows.c"
+"$work/windows" --png "$work/w.png" > "$work/windows.log"
+python3 "$here/tools/freeglut_check/cmp.py" "$ref/windows-first.png" "$work/w.png" | tee "$work/cmp1"
+python3 "$here/tools/freeglut_check/cmp.py" "$ref/windows-second.png" "$work/w-3.png" | tee "$work/cmp2"
+grep -q '^0 of' "$work/cmp1" && grep -q '^0 of' "$work/cmp2"
+diff "$ref/windows.log" "$work/windows.log"
+echo "glut: Windows.c's windows and callbacks as freeglut's"
+
+$cc -o "$work/calls" "$ref/Calls.c" -lGLEW
+"$work/calls" -geometry 64x48+5+6 mine -direct -sync -gldebug --png "$work/c.png" > "$work/calls.log"
+cat > "$work/expected" <<'END'
+argc 2: mine
+init window 5 6 64 48
+warning: WARNING - Display string token not recognized:  bogus
+display mode 18
+glew before a window 1
+glewInit 0 No error, 1.1 1, 2.0 0
+window 1 size 64 48 version 30400
+proc glBegin 1 glutSolidCube 1 glFooBar 0
+extension 0
+window data 42
+warning: glutSetWindow(): window ID 7 not found!
+devices keyboard 1 joystick 0 layer 0 game 0
+close 1
+returned
+END
+diff "$work/expected" "$work/calls.log"
+[ -s "$work/c.png" ]
+echo "glut: Calls.c as expected (X options, glutGet, GLEW, handlers, the loop returning)"
+
+$cc -o "$work/events" "$ref/Events.c"
+"$work/events" --png "$work/e.png" > "$work/events.log"
+tail -2 "$work/events.log" | tr '\n' ' ' | grep -q '^close 1 0 returned 0 0 $'
+echo "glut: Events.c closes its window and returns from glutMainLoop headless"
