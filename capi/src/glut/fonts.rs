@@ -1,11 +1,11 @@
 //! GLUT's bitmap fonts and teapot.
 //!
-//! C GLUT's font handles are pointers; freeglut's values are the small integers 2..=8 that
-//! `GL/glut.h` here gives them, mapped to `gleval`'s fonts. Another pointer is no font: the
-//! calls then draw nothing and measure 0.
+//! C GLUT's font handles are pointers: the small integers 2..=8 that `GL/glut.h` here gives
+//! them, or on Linux the addresses of freeglut's font objects (`font_objects`). Another pointer
+//! is no font: the calls then draw nothing and measure 0.
 
+use super::font_objects::{self, Font};
 use crate::context::with_gl;
-use gleval::glut::consts::*;
 use gleval::glut::fonts::GlutBitmapFont;
 use std::ffi::{c_char, c_int, c_uchar, c_void, CStr};
 
@@ -14,18 +14,12 @@ forward! {
     glutWireTeapot(size: f64) => glut_wire_teapot;
 }
 
-/// The font a C handle names.
+/// The bitmap font a C handle names ([`font_objects::font`]).
 fn font(handle: *const c_void) -> Option<GlutBitmapFont> {
-    let fonts = [
-        GLUT_BITMAP_9_BY_15,
-        GLUT_BITMAP_8_BY_13,
-        GLUT_BITMAP_TIMES_ROMAN_10,
-        GLUT_BITMAP_TIMES_ROMAN_24,
-        GLUT_BITMAP_HELVETICA_10,
-        GLUT_BITMAP_HELVETICA_12,
-        GLUT_BITMAP_HELVETICA_18,
-    ];
-    fonts.into_iter().find(|f| usize::from(f.id()) == handle as usize)
+    match font_objects::font(handle)? {
+        Font::Bitmap(f) => Some(f),
+        Font::Stroke(_) => None,
+    }
 }
 
 /// The bytes of a C string up to its NUL; empty for NULL.

@@ -6,6 +6,7 @@
 //! runs it (a window, or headless with `--png PATH`); it does not return, as GLUT's.
 
 mod callbacks;
+mod font_objects;
 mod fonts;
 mod init;
 mod menus;

@@ -1,18 +1,19 @@
 //! GLUT's stroke fonts. Their C handles are freeglut's, `(void *)0` for `GLUT_STROKE_ROMAN`
-//! and `(void *)1` for `GLUT_STROKE_MONO_ROMAN`; another pointer is no font, and the calls
-//! draw nothing and measure 0.
+//! and `(void *)1` for `GLUT_STROKE_MONO_ROMAN` (gleval's `GL/glut.h`), or the addresses of
+//! freeglut's `glutStrokeRoman`/`glutStrokeMonoRoman` (`font_objects`); another pointer is no
+//! font, and the calls draw nothing and measure 0.
 
+use super::font_objects::{self, Font};
 use super::fonts::c_bytes;
 use crate::context::with_gl;
-use gleval::glut::fonts::{GlutStrokeFont, GLUT_STROKE_MONO_ROMAN, GLUT_STROKE_ROMAN};
+use gleval::glut::fonts::GlutStrokeFont;
 use std::ffi::{c_float, c_int, c_uchar, c_void};
 
-/// The font a C handle names.
+/// The stroke font a C handle names ([`font_objects::font`]).
 fn font(handle: *const c_void) -> Option<GlutStrokeFont> {
-    match handle as usize {
-        0 => Some(GLUT_STROKE_ROMAN),
-        1 => Some(GLUT_STROKE_MONO_ROMAN),
-        _ => None,
+    match font_objects::font(handle)? {
+        Font::Stroke(f) => Some(f),
+        Font::Bitmap(_) => None,
     }
 }
 
