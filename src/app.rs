@@ -437,6 +437,7 @@ impl App {
     /// [`App::run`] with options parsed elsewhere (C's `glutInit` takes them out of the
     /// program's `argv`, which then no longer holds them).
     pub fn run_with(mut self, options: Options) {
+        crate::render::quiet_device_select();
         if options.gpu {
             self.tessellator = Tessellator::Gpu;
         }
