@@ -112,6 +112,8 @@ const PROGRAMS: [Program; 30] = [
 ];
 
 fn main() {
+    // Before wgpu starts (with --wgpu): no false "error" lines from Vulkan without a desktop.
+    gleval::render::quiet_device_select();
     // Display, not Debug: a missing adapter's message says what to install.
     if let Err(e) = render_gallery() {
         eprintln!("gallery: {e}");
