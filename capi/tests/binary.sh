@@ -50,8 +50,10 @@ else
 fi
 
 # 2. The pictures. Their "gl.h" includes <GL/gl.h>, <GL/glu.h> and the OSMesa GLUT stand-in
-# glut_osmesa.h (the reference's harness): its guard defined, and freeglut's <GL/glut.h>
-# included first instead, they are the system's GL, GLU and GLUT programs.
+# glut_osmesa.h (the reference's harness): its guard defined, and freeglut's <GL/freeglut.h>
+# included first instead (its GL/freeglut_ext.h declares glutStrokeHeight and
+# glutStrokeLengthf), they are the system's GL, GLU and GLUT programs. A call without a
+# declaration is an error: C would take it to return int.
 score() { # score REFERENCE.png PICTURE.png: the metric's line, or "failed"
   "$compare" "$1" "$2" 0.01 || echo "above 1%"
 }
@@ -78,7 +80,7 @@ for src in "$pictures"/*.c; do
   name=$(basename "$src" .c)
   [ "$name" = glut_osmesa ] && continue
   lower=$(echo "$name" | tr 'A-Z' 'a-z')
-  if ! cc -std=gnu99 -O1 -w -I"$pictures" -DGLUT_OSMESA_H -include GL/glut.h -o "$out/$lower" "$src" \
+  if ! cc -std=gnu99 -O1 -w -I"$pictures" -Werror=implicit-function-declaration -DGLUT_OSMESA_H -include GL/freeglut.h -o "$out/$lower" "$src" \
     -lglut -lGLU -lGL -lm; then
     echo "$lower: does not build against the system's GL, GLU and GLUT"; failed=1; continue
   fi
@@ -89,7 +91,7 @@ done
 # picture real Mesa draws from the same source (capi/tests/textbook.sh's .mesa.png).
 for name in BezCurve BezSurf BCurve BSurf; do
   lower=$(echo "$name" | tr 'A-Z' 'a-z')
-  if ! cc -std=gnu99 -O1 -w -I"$book" -o "$out/$lower.book" "$book/$name.c" -lglut -lGLU -lGL -lm; then
+  if ! cc -std=gnu99 -O1 -w -Werror=implicit-function-declaration -I"$book" -o "$out/$lower.book" "$book/$name.c" -lglut -lGLU -lGL -lm; then
     echo "$lower (textbook): does not build against the system's GL, GLU and GLUT"; failed=1; continue
   fi
   run_one "$lower (textbook)" "$out/$lower.book" "$target/capi/textbook/$lower.mesa.png" "$target/capi/textbook/$lower.png"
