@@ -16,6 +16,14 @@
 set -eu
 rounds=${1:-1}
 here=$(cd "$(dirname "$0")" && pwd)
+# Cargo's output folder: $CARGO_TARGET_DIR (relative to where this is started, as cargo reads
+# it) or the workspace's target/. whole_process.sh reads it from the environment too.
+case "${CARGO_TARGET_DIR:-}" in
+  "") ;;
+  /*) export CARGO_TARGET_DIR ;;
+  *) CARGO_TARGET_DIR="$PWD/$CARGO_TARGET_DIR"; export CARGO_TARGET_DIR ;;
+esac
+release="${CARGO_TARGET_DIR:-$here/../target}/release"
 build="$here/../tests/reference/build/bench"
 mkdir -p "$build"
 cc -std=gnu99 -O2 -o "$build/anchor" "$here/anchor.c" -lOSMesa -lGLU -lGL -lm
@@ -26,7 +34,7 @@ cc -std=gnu99 -O2 -o "$build/anchor" "$here/anchor.c" -lOSMesa -lGLU -lGL -lm
 r=1
 while [ "$r" -le "$rounds" ]; do
   GALLIUM_DRIVER=llvmpipe "$build/anchor" > "$build/anchor.txt"
-  "$here/../target/release/examples/bench" > "$build/ours.txt"
+  "$release/examples/bench" > "$build/ours.txt"
   sh "$here/whole_process.sh" anchor 5 >> "$build/anchor.txt"
   sh "$here/whole_process.sh" ours 5 >> "$build/ours.txt"
   # The first eval_mesh2 of a process: 5 new processes a side, their median.
@@ -34,7 +42,7 @@ while [ "$r" -le "$rounds" ]; do
     k=0
     while [ "$k" -lt 5 ]; do
       if [ "$side" = anchor ]; then GALLIUM_DRIVER=llvmpipe "$build/anchor" cold
-      else BENCH_COLD=1 "$here/../target/release/examples/bench" first_eval_mesh2_1000; fi
+      else BENCH_COLD=1 "$release/examples/bench" first_eval_mesh2_1000; fi
       k=$((k + 1))
     done | sort -k2 -n | awk '{ v[NR] = $0 } END { print v[int((NR + 1) / 2)] }' >> "$build/$side.txt"
   done

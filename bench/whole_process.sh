@@ -9,6 +9,8 @@ set -eu
 side=$1
 runs=${2:-9}
 here=$(cd "$(dirname "$0")" && pwd)
+# The Rust ports in cargo's output folder: $CARGO_TARGET_DIR, else the workspace's target/.
+release="${CARGO_TARGET_DIR:-$here/../target}/release"
 pictures="$here/../tests/reference/pictures"
 build="$here/../tests/reference/build/bench"
 mkdir -p "$build"
@@ -25,7 +27,7 @@ for pair in $programs; do
     [ -x "$bin" ] || cc -std=gnu99 -O2 -w -I"$pictures" -o "$bin" "$pictures/$c.c" "$pictures/glut_osmesa.c" -lOSMesa -lGLU -lGL -lz -lm
     cmd="$bin --png $build/whole_$lower.png"
   else
-    cmd="$here/../target/release/examples/$rust --png $build/whole_$lower.png"
+    cmd="$release/examples/$rust --png $build/whole_$lower.png"
   fi
   times=""
   i=0

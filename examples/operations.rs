@@ -5,7 +5,9 @@
 //! and curvature comb of a cubic, the exact NURBS circle with its control polygon, a vase as a
 //! surface of revolution; degree reduction (a quartic and the cubic closest to it), knot
 //! refinement of a B-spline (the polygon after 0, 1 and 3 rounds of midpoint insertion), a
-//! Hermite segment with its end tangents, and a tube extruded from the NURBS circle.
+//! Hermite segment with its end tangents, and a tube extruded from the NURBS circle. Each
+//! panel has a caption strip below it in GLUT bitmap text, its words in the colours of the
+//! curves they name.
 //!
 //! `cargo run --release --example operations -- --png operations.png`
 
@@ -14,9 +16,19 @@ use gleval::math::{interpolate, Parameterization};
 use gleval::math::{BSplineCurve, BSplineSurface, BezierCurve, HermiteCurve, KnotVector};
 use gleval::prelude::*;
 
-fn view(gl: &mut Gl, k: i32, (x0, x1, y0, y1): (f64, f64, f64, f64)) {
+/// The height in pixels of the caption strip under each panel's drawing.
+const CAPTION: i32 = 18;
+
+/// Panel `k`'s drawing area (four panels to a row, three rows, the first at the top left),
+/// above its caption strip: x, y, width, height.
+fn panel(gl: &Gl, k: i32) -> (i32, i32, i32, i32) {
     let (w, h) = (gl.glut_get(GLUT_WINDOW_WIDTH) / 4, gl.glut_get(GLUT_WINDOW_HEIGHT) / 3);
-    gl.viewport((k % 4) * w, (2 - k / 4) * h, w, h);
+    ((k % 4) * w, (2 - k / 4) * h + CAPTION, w, h - CAPTION)
+}
+
+fn view(gl: &mut Gl, k: i32, (x0, x1, y0, y1): (f64, f64, f64, f64)) {
+    let (x, y, w, h) = panel(gl, k);
+    gl.viewport(x, y, w, h);
     gl.matrix_mode(GL_PROJECTION);
     gl.load_identity();
     gl.glu_ortho_2d(x0, x1, y0, y1);
@@ -129,8 +141,8 @@ fn circle(gl: &mut Gl) {
 
 /// A perspective view in viewport `k` for a lit NURBS surface.
 fn lit_view(gl: &mut Gl, k: i32, tilt: f32) {
-    let (w, h) = (gl.glut_get(GLUT_WINDOW_WIDTH) / 4, gl.glut_get(GLUT_WINDOW_HEIGHT) / 3);
-    gl.viewport((k % 4) * w, (2 - k / 4) * h, w, h);
+    let (x, y, w, h) = panel(gl, k);
+    gl.viewport(x, y, w, h);
     gl.matrix_mode(GL_PROJECTION);
     gl.load_identity();
     gl.glu_perspective(30.0, f64::from(w) / f64::from(h), 1.0, 50.0);
@@ -242,27 +254,83 @@ fn tube(gl: &mut Gl) {
     draw_nurbs_surface(gl, &extrude(&ring, [0.0, 0.0, 2.5]).expect("a tube"), [0.9, 0.6, 0.2, 1.0]);
 }
 
+const BLACK: [f32; 3] = [0.0, 0.0, 0.0];
+const BLUE: [f32; 3] = [0.0, 0.0, 0.8];
+const ORANGE: [f32; 3] = [0.9, 0.3, 0.0];
+const GREEN: [f32; 3] = [0.0, 0.6, 0.2];
+const GREY: [f32; 3] = [0.45, 0.45, 0.45];
+
+/// Each panel and its caption: pieces of text, each in the colour of what it names.
+type Panel = (fn(&mut Gl), &'static [(&'static str, [f32; 3])]);
+
+const PANELS: [Panel; 10] = [
+    (
+        subdivision,
+        &[
+            ("subdivision at u = 1/2: ", BLACK),
+            ("left", ORANGE),
+            (" and ", BLACK),
+            ("right", GREEN),
+            (" halves", BLACK),
+        ],
+    ),
+    (elevation, &[("degree elevation: ", BLACK), ("0, 2, 8, 32 times", GREY)]),
+    (
+        interpolation,
+        &[
+            ("interpolation: ", BLACK),
+            ("uniform", [0.9, 0.2, 0.0]),
+            (", ", BLACK),
+            ("chord", GREEN),
+            (", ", BLACK),
+            ("centripetal", [0.1, 0.2, 0.9]),
+        ],
+    ),
+    (frenet, &[("Frenet frames: ", BLACK), ("tangents", GREY), (", ", BLACK), ("curvature comb", ORANGE)]),
+    (circle, &[("the exact NURBS circle and its control polygon", BLACK)]),
+    (vase, &[("a vase: a surface of revolution", BLACK)]),
+    (reduction, &[("degree reduction: ", BLACK), ("quartic", BLUE), (" to ", BLACK), ("cubic", ORANGE)]),
+    (refinement, &[("knot refinement: ", BLACK), ("0, 1, 3 rounds", GREY)]),
+    (hermite, &[("Hermite segment, ", BLACK), ("end tangents", ORANGE), (", ", BLACK), ("p(1/2)", GREEN)]),
+    (tube, &[("a tube extruded from the NURBS circle", BLACK)]),
+];
+
+/// Panel `k`'s caption, centred in the strip under its drawing, in GLUT's Helvetica 12.
+fn caption(gl: &mut Gl, k: i32, pieces: &[(&str, [f32; 3])]) {
+    let (x, y, w, _) = panel(gl, k);
+    gl.viewport(x, y - CAPTION, w, CAPTION);
+    gl.matrix_mode(GL_PROJECTION);
+    gl.load_identity();
+    gl.glu_ortho_2d(0.0, f64::from(w), 0.0, f64::from(CAPTION));
+    gl.matrix_mode(GL_MODELVIEW);
+    gl.load_identity();
+    let font = GLUT_BITMAP_HELVETICA_12;
+    let width: i32 = pieces.iter().map(|(text, _)| gl.glut_bitmap_length(font, text)).sum();
+    let mut left = (w - width) / 2;
+    for &(text, [r, g, b]) in pieces {
+        // The raster position takes the colour current when it is set.
+        gl.color3f(r, g, b);
+        gl.raster_pos2i(left, 5);
+        gl.glut_bitmap_string(font, text);
+        left += gl.glut_bitmap_length(font, text);
+    }
+}
+
 fn paint(gl: &mut Gl) {
     gl.clear_color(1.0, 1.0, 1.0, 1.0);
     gl.clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     gl.line_width(1.5);
     gl.point_size(5.0);
-    subdivision(gl);
-    elevation(gl);
-    interpolation(gl);
-    frenet(gl);
-    circle(gl);
-    vase(gl);
-    reduction(gl);
-    refinement(gl);
-    hermite(gl);
-    tube(gl);
+    for (k, (draw, text)) in (0..).zip(PANELS) {
+        draw(gl);
+        caption(gl, k, text);
+    }
     gl.flush();
 }
 
 /// The program, for tests that render it headless.
 pub fn app() -> App {
-    App::new("曲线与曲面运算", 1200, 600).display(paint)
+    App::new("曲线与曲面运算", 1200, 3 * (200 + CAPTION)).display(paint)
 }
 
 #[allow(dead_code)]

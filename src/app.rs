@@ -560,6 +560,7 @@ impl App {
     pub fn run_loop(mut self, options: Options) -> bool {
         // A colour-index window cannot be had on Mesa: freeglut's fatal error (`glut::display_mode`).
         crate::glut::display_mode::exit_unless_possible(self.display_mode);
+        crate::render::quiet_device_select();
         if options.gpu {
             self.tessellator = Tessellator::Gpu;
         }

@@ -12,7 +12,7 @@
 set -eu
 root=$(cd "$(dirname "$0")/../.." && pwd)
 name=$1
-out="$root/target/capi/$name"
+out="${CARGO_TARGET_DIR:-$root/target}/capi/$name"
 dir=debug
 [ "${CAPI_PROFILE:-test}" = release ] && dir=release
 export GLEVAL_LIB_DIR="${CARGO_TARGET_DIR:-$root/target}/$dir"

@@ -12,7 +12,7 @@
 set -eu
 root=$(cd "$(dirname "$0")/../.." && pwd)
 calls="$root/tests/reference/calls"
-out="$root/target/capi/calls"
+out="${CARGO_TARGET_DIR:-$root/target}/capi/calls"
 dir=debug
 [ "${CAPI_PROFILE:-test}" = release ] && dir=release
 export GLEVAL_LIB_DIR="${CARGO_TARGET_DIR:-$root/target}/$dir"

@@ -8,7 +8,7 @@ set -eu
 root=$(cd "$(dirname "$0")/../.." && pwd)
 calls=${1:-5000}
 seeds=${2:-6}
-out="$root/target/capi/fuzz"
+out="${CARGO_TARGET_DIR:-$root/target}/capi/fuzz"
 dir=debug
 [ "${CAPI_PROFILE:-test}" = release ] && dir=release
 export GLEVAL_LIB_DIR="${CARGO_TARGET_DIR:-$root/target}/$dir"

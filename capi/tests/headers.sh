@@ -32,7 +32,7 @@ echo "headers: $(grep -c _Static_assert "$tmp/consts.c") constants checked again
 
 # 2. Declarations against exports.
 grep -ho '\b\(gl\|glu\|glut\)[A-Z][A-Za-z0-9]*(' "$here"/include/GL/*.h | tr -d '(' | sort -u > "$tmp/declared"
-nm -D --defined-only "$lib" | awk '{print $3}' | grep '^\(gl\|glu\|glut\)[A-Z]' | sort -u > "$tmp/exported"
+nm -D --defined-only "$lib" | awk '$2 == "T" {print $3}' | grep '^\(gl\|glu\|glut\)[A-Z]' | sort -u > "$tmp/exported"
 if ! diff "$tmp/declared" "$tmp/exported" > "$tmp/diff"; then
   echo "headers: declared (<) and exported (>) functions differ:"; cat "$tmp/diff"; exit 1
 fi

@@ -3,7 +3,7 @@
 # capi/glevalcc, each rendered with --png and compared with the picture real Mesa rendered from
 # the same source (tests/reference/pictures/png/), with the project's image metric.
 #
-#   capi/tests/pictures.sh [--osmesa] [OUT_DIR]     (default target/capi/pictures[-osmesa])
+#   capi/tests/pictures.sh [--osmesa] [OUT_DIR]     (default $CARGO_TARGET_DIR or target, then capi/pictures[-osmesa])
 #
 # With --osmesa each program is built with the reference's own GLUT stand-in over OSMesa
 # (tests/reference/pictures/glut_osmesa.c, the harness Mesa's pictures come from: an OSMesa
@@ -24,7 +24,7 @@ if [ "${1:-}" = --osmesa ]; then
   suffix=-osmesa
   shift
 fi
-out=${1:-$root/target/capi/pictures$suffix}
+out=${1:-${CARGO_TARGET_DIR:-$root/target}/capi/pictures$suffix}
 profile=${CAPI_PROFILE:-test}
 dir=debug
 [ "$profile" = release ] && dir=release

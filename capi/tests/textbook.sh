@@ -4,13 +4,13 @@
 # capi/glevalcc (warnings on) and run with --png; each picture is compared with the one real
 # Mesa renders from the same source (system GL/GLU headers and freeglut's GL/glut.h, linked with
 # the OSMesa GLUT stand-in of tests/reference/pictures), with the project's image metric.
-#   capi/tests/textbook.sh [OUT_DIR]    (default target/capi/textbook)
+#   capi/tests/textbook.sh [OUT_DIR]    (default $CARGO_TARGET_DIR or target, then capi/textbook)
 # Also builds BezCurve with pkg-config (capi/gleval.pc). Expects libgleval_c and gleval-compare built (capi/tests/pictures.sh builds them); the same
 # CAPI_PROFILE as there.
 set -eu
 root=$(cd "$(dirname "$0")/../.." && pwd)
 book="$root/capi/examples/textbook"
-out=${1:-$root/target/capi/textbook}
+out=${1:-${CARGO_TARGET_DIR:-$root/target}/capi/textbook}
 dir=debug
 [ "${CAPI_PROFILE:-test}" = release ] && dir=release
 export GLEVAL_LIB_DIR="${CARGO_TARGET_DIR:-$root/target}/$dir"

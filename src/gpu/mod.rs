@@ -46,6 +46,9 @@ pub use renderer::{tessellate_patches, Renderer};
 pub use timer::PassTimer;
 
 #[cfg(feature = "window")]
-pub(crate) use device::{backend_order, first_adapter};
+pub(crate) use device::backend_order;
+// `App`'s profiled run (features gpu + png) and nothing else outside this module.
+#[cfg(feature = "png")]
+pub(crate) use device::first_adapter;
 #[cfg(feature = "window")]
 pub(crate) use raster::DEPTH_FORMAT;

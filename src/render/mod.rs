@@ -10,6 +10,8 @@ mod clip;
 #[cfg(all(feature = "gpu", feature = "png"))]
 pub(crate) mod compare;
 mod corner;
+#[cfg(feature = "gpu")]
+mod device_select;
 mod image;
 mod offset;
 pub mod pixel_copy;
@@ -19,6 +21,8 @@ pub mod soft;
 mod stipple;
 
 pub use assemble::{assemble, assemble_frame, Batch, DrawList, Op, RasterVertex, Smooth, Topology};
+#[cfg(feature = "gpu")]
+pub use device_select::{quiet_device_select, NODEVICE_SELECT};
 pub use image::Image;
 
 /// Which rasteriser draws a headless picture (a window always draws through wgpu).

@@ -24,6 +24,8 @@ fn renderer() -> Option<&'static RefCell<Renderer>> {
     if let Some(renderer) = RENDERER.with(Cell::get) {
         return Some(renderer);
     }
+    // No false "error" lines from Vulkan's device-select layer without a desktop session.
+    gleval::render::quiet_device_select();
     let made = Renderer::new().map_err(|e| eprintln!("gleval: glReadPixels: {e}")).ok()?;
     let kept: &'static RefCell<Renderer> = Box::leak(Box::new(RefCell::new(made)));
     RENDERER.with(|c| c.set(Some(kept)));

@@ -1,9 +1,12 @@
 //! GLUT's bitmap fonts and teapot.
 //!
-//! C GLUT's font handles are pointers: freeglut's numbers or its font symbols' addresses
-//! (`font_handles.rs`). Another pointer is no font: the calls then draw nothing and measure 0.
+//! C GLUT's font handles are pointers: the small integers 2..=8 that `GL/glut.h` here gives
+//! them, or on Linux the addresses of freeglut's font objects (`font_objects`). Another pointer
+//! is no font: the calls then draw nothing and measure 0.
 
+use super::font_objects::{self, Font};
 use crate::context::with_gl;
+use gleval::glut::fonts::GlutBitmapFont;
 use std::ffi::{c_char, c_int, c_uchar, c_void, CStr};
 
 forward! {
@@ -11,7 +14,13 @@ forward! {
     glutWireTeapot(size: f64) => glut_wire_teapot;
 }
 
-use super::font_handles::bitmap as font;
+/// The bitmap font a C handle names ([`font_objects::font`]).
+pub(super) fn font(handle: *const c_void) -> Option<GlutBitmapFont> {
+    match font_objects::font(handle)? {
+        Font::Bitmap(f) => Some(f),
+        Font::Stroke(_) => None,
+    }
+}
 
 /// The bytes of a C string up to its NUL; empty for NULL.
 ///

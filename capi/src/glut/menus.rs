@@ -90,7 +90,7 @@ entry! {
     /// `glutSetMenuFont(menu, font)` (freeglut): the bitmap font menu `menu` is drawn in
     /// (another handle is no bitmap font: nothing changes).
     fn glutSetMenuFont(menu: c_int, font: *mut c_void) {
-        if let Some(font) = super::font_handles::bitmap(font) {
+        if let Some(font) = super::fonts::font(font) {
             with_gl(|gl| gl.glut_set_menu_font(menu, font))
         }
     }

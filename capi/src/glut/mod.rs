@@ -6,7 +6,7 @@
 //! windows and their callbacks to `App` and runs them (windows, or headless with `--png PATH`).
 
 mod callbacks;
-mod font_handles;
+mod font_objects;
 mod fonts;
 mod init;
 mod menus;

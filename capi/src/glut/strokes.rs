@@ -1,12 +1,21 @@
-//! GLUT's stroke fonts. Their C handles are freeglut's numbers (`(void *)0` for
-//! `GLUT_STROKE_ROMAN`, `(void *)1` for `GLUT_STROKE_MONO_ROMAN`) or its font symbols'
-//! addresses (`font_handles.rs`); another pointer is no font, and the calls draw nothing and
-//! measure 0.
+//! GLUT's stroke fonts. Their C handles are freeglut's, `(void *)0` for `GLUT_STROKE_ROMAN`
+//! and `(void *)1` for `GLUT_STROKE_MONO_ROMAN` (gleval's `GL/glut.h`), or the addresses of
+//! freeglut's `glutStrokeRoman`/`glutStrokeMonoRoman` (`font_objects`); another pointer is no
+//! font, and the calls draw nothing and measure 0.
 
-use super::font_handles::stroke as font;
+use super::font_objects::{self, Font};
 use super::fonts::c_bytes;
 use crate::context::with_gl;
+use gleval::glut::fonts::GlutStrokeFont;
 use std::ffi::{c_float, c_int, c_uchar, c_void};
+
+/// The stroke font a C handle names ([`font_objects::font`]).
+fn font(handle: *const c_void) -> Option<GlutStrokeFont> {
+    match font_objects::font(handle)? {
+        Font::Stroke(f) => Some(f),
+        Font::Bitmap(_) => None,
+    }
+}
 
 entry! {
     /// `glutStrokeCharacter`.

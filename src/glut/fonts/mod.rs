@@ -13,6 +13,7 @@
 
 #[rustfmt::skip]
 mod data;
+mod handles;
 mod stroke;
 
 pub use stroke::{GlutStrokeFont, GLUT_STROKE_MONO_ROMAN, GLUT_STROKE_ROMAN};

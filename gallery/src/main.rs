@@ -1,73 +1,78 @@
 //! Renders every example headless into `out/gallery/` and writes `index.html` showing each
 //! picture beside the picture real Mesa/GLU renders from the C original (where there is one),
-//! with the share of pixels that differ by the conformance tests' metric.
+//! with the share of pixels that differ by the conformance tests' metric, and what drew it.
 //!
-//! `cargo run --release --example gallery`
+//! `cargo run --release -p gallery` (the CPU rasteriser), `cargo run --release -p gallery --
+//! --wgpu` (wgpu; `GLEVAL_RASTERIZER=wgpu` does the same).
+//!
+//! The examples are gleval's (`examples/*.rs`), compiled here as modules: this package is not
+//! an example of gleval so that building it builds none of gleval's dev-dependencies.
 
 use gleval::prelude::*;
+use gleval::render::Rasterizer;
 use gleval::testing::compare::{compare, load_png, RgbImage};
 use std::fmt::Write as _;
 use std::path::Path;
 
-#[path = "bcurve.rs"]
+#[path = "../../examples/bcurve.rs"]
 mod bcurve;
-#[path = "bezcurve.rs"]
+#[path = "../../examples/bezcurve.rs"]
 mod bezcurve;
-#[path = "bezsurf.rs"]
+#[path = "../../examples/bezsurf.rs"]
 mod bezsurf;
-#[path = "bsurf.rs"]
+#[path = "../../examples/bsurf.rs"]
 mod bsurf;
-#[path = "colormap.rs"]
+#[path = "../../examples/colormap.rs"]
 mod colormap;
-#[path = "demo.rs"]
+#[path = "../../examples/demo.rs"]
 mod demo;
-#[path = "ex1_bezier.rs"]
+#[path = "../../examples/ex1_bezier.rs"]
 mod ex1_bezier;
-#[path = "ex2_bspline.rs"]
+#[path = "../../examples/ex2_bspline.rs"]
 mod ex2_bspline;
-#[path = "ex3_bspline_n.rs"]
+#[path = "../../examples/ex3_bspline_n.rs"]
 mod ex3_bspline_n;
-#[path = "ex4_bspline_surface.rs"]
+#[path = "../../examples/ex4_bspline_surface.rs"]
 mod ex4_bspline_surface;
-#[path = "ex5_bird.rs"]
+#[path = "../../examples/ex5_bird.rs"]
 mod ex5_bird;
-#[path = "flattwoviewports.rs"]
+#[path = "../../examples/flattwoviewports.rs"]
 mod flattwoviewports;
-#[path = "fogblend.rs"]
+#[path = "../../examples/fogblend.rs"]
 mod fogblend;
-#[path = "labels.rs"]
+#[path = "../../examples/labels.rs"]
 mod labels;
-#[path = "linespoints.rs"]
+#[path = "../../examples/linespoints.rs"]
 mod linespoints;
-#[path = "lists.rs"]
+#[path = "../../examples/lists.rs"]
 mod lists;
-#[path = "mipnurbs.rs"]
+#[path = "../../examples/mipnurbs.rs"]
 mod mipnurbs;
-#[path = "operations.rs"]
+#[path = "../../examples/operations.rs"]
 mod operations;
-#[path = "outline.rs"]
+#[path = "../../examples/outline.rs"]
 mod outline;
-#[path = "rational.rs"]
+#[path = "../../examples/rational.rs"]
 mod rational;
-#[path = "rationalmap.rs"]
+#[path = "../../examples/rationalmap.rs"]
 mod rationalmap;
-#[path = "shapes.rs"]
+#[path = "../../examples/shapes.rs"]
 mod shapes;
-#[path = "specular.rs"]
+#[path = "../../examples/specular.rs"]
 mod specular;
-#[path = "stipple.rs"]
+#[path = "../../examples/stipple.rs"]
 mod stipple;
-#[path = "strokes.rs"]
+#[path = "../../examples/strokes.rs"]
 mod strokes;
-#[path = "teapot.rs"]
+#[path = "../../examples/teapot.rs"]
 mod teapot;
-#[path = "texgen.rs"]
+#[path = "../../examples/texgen.rs"]
 mod texgen;
-#[path = "texsurf.rs"]
+#[path = "../../examples/texsurf.rs"]
 mod texsurf;
-#[path = "texteapot.rs"]
+#[path = "../../examples/texteapot.rs"]
 mod texteapot;
-#[path = "trimmed.rs"]
+#[path = "../../examples/trimmed.rs"]
 mod trimmed;
 
 /// A built-in program: its name and how to build it.
@@ -107,6 +112,8 @@ const PROGRAMS: [Program; 30] = [
 ];
 
 fn main() {
+    // Before wgpu starts (with --wgpu): no false "error" lines from Vulkan without a desktop.
+    gleval::render::quiet_device_select();
     // Display, not Debug: a missing adapter's message says what to install.
     if let Err(e) = render_gallery() {
         eprintln!("gallery: {e}");
@@ -114,19 +121,34 @@ fn main() {
     }
 }
 
+/// What drew a picture, for people: the page's and the terminal's words.
+fn drawn_by(rasterizer: Rasterizer) -> &'static str {
+    match rasterizer {
+        Rasterizer::Cpu => "gleval's CPU rasteriser (gleval::render::soft)",
+        Rasterizer::Wgpu => "wgpu (gleval::render::Renderer)",
+    }
+}
+
 fn render_gallery() -> Result<(), Box<dyn std::error::Error>> {
+    let wgpu = std::env::args().skip(1).any(|a| a == "--wgpu");
     let out = Path::new("out/gallery");
     std::fs::create_dir_all(out)?;
-    let references = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/reference/pictures/png");
+    let references = Path::new(env!("CARGO_MANIFEST_DIR")).join("../tests/reference/pictures/png");
     let mut html = String::from(
         "<!doctype html><meta charset=utf-8><title>gleval gallery</title>\
          <style>body{font-family:sans-serif}td{padding:6px;vertical-align:top}</style>\
-         <h1>gleval gallery</h1><p>Left: gleval (wgpu). Right: real Mesa/GLU (OSMesa) from the C original.</p><table>",
+         <h1>gleval gallery</h1><p>Left: gleval's picture, drawn headless by the rasteriser named beside it. \
+         Right: real Mesa/GLU (OSMesa, llvmpipe) from the C original.</p><table>",
     );
     println!("{:<12} {:>9}  title", "program", "differ");
+    let mut rasterizers = Vec::new();
     for (name, make) in PROGRAMS {
         let mut app = make();
+        if wgpu {
+            app = app.with_rasterizer(Rasterizer::Wgpu);
+        }
         let title = app.title().to_owned();
+        let drawn_by = drawn_by(app.rasterizer());
         let image = app.render_image()?;
         let png = out.join(format!("{name}.png"));
         gleval::render::write_png(&png, &image)?;
@@ -135,6 +157,9 @@ fn render_gallery() -> Result<(), Box<dyn std::error::Error>> {
             load_png(&reference).ok().and_then(|r| compare(&r, &RgbImage::from_rgba(&image)).ok()).map(|c| c.fraction);
         let score_text = score.map_or("-".to_owned(), |s| format!("{:.3}%", s * 100.0));
         println!("{name:<12} {score_text:>9}  {title}");
+        if !rasterizers.contains(&drawn_by) {
+            rasterizers.push(drawn_by);
+        }
         let reference_cell = if reference.exists() {
             std::fs::copy(&reference, out.join(format!("{name}.mesa.png")))?;
             format!("<img src=\"{name}.mesa.png\">")
@@ -143,11 +168,12 @@ fn render_gallery() -> Result<(), Box<dyn std::error::Error>> {
         };
         let _ = write!(
             html,
-            "<tr><td><b>{name}</b><br>{title}<br>differs: {score_text}</td><td><img src=\"{name}.png\"></td><td>{reference_cell}</td></tr>"
+            "<tr><td><b>{name}</b><br>{title}<br>drawn by {drawn_by}<br>differs from Mesa: {score_text}</td>\
+             <td><img src=\"{name}.png\"></td><td>{reference_cell}</td></tr>"
         );
     }
     html.push_str("</table>");
     std::fs::write(out.join("index.html"), html)?;
-    println!("wrote {}", out.join("index.html").display());
+    println!("drawn by {}; wrote {}", rasterizers.join(", "), out.join("index.html").display());
     Ok(())
 }
