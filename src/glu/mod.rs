@@ -26,6 +26,7 @@ mod evaluation;
 mod mipmap;
 mod model;
 
+pub(crate) use draw::trim_fallbacks;
 pub use errors::glu_error_string;
 pub use model::callbacks::{NurbsCallback, UserData};
 pub use model::object::GLUnurbs;

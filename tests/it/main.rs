@@ -6,6 +6,7 @@ mod eval_mesh;
 mod glu_errors;
 mod glu_surfpoints;
 mod glu_tessellation;
+mod glu_trimcases;
 mod glut_loop;
 mod gpu_parity;
 mod interactive_demo;

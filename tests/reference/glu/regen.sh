@@ -15,3 +15,5 @@ cc -std=c99 -O1 -o "$build/tess_counts" "$here/tess_counts.c" -lOSMesa -lGLU -lG
 GALLIUM_DRIVER=llvmpipe "$build/tess_counts" > "$out/tess_counts.txt"
 cc -std=c99 -O1 -o "$build/surfpoints" "$here/surfpoints.c" -lOSMesa -lGLU -lGL
 GALLIUM_DRIVER=llvmpipe "$build/surfpoints" > "$out/surfpoints.txt"
+cc -std=c99 -O1 -o "$build/trimcases" "$here/trimcases.c" -lOSMesa -lGLU -lGL -lm
+GALLIUM_DRIVER=llvmpipe "$build/trimcases" > "$out/trimcases.txt"
