@@ -18,8 +18,11 @@ struct Case {
     glu: String,
 }
 
+/// The committed cases, or those of the file `GLEVAL_TRIMCASES` names (`trimcases random SEED
+/// COUNT` prints random ones, to search wider).
 fn cases() -> Vec<Case> {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/reference/glu/trimcases.txt");
+    let committed = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/reference/glu/trimcases.txt");
+    let path = std::env::var_os("GLEVAL_TRIMCASES").map_or(committed, Into::into);
     let text = std::fs::read_to_string(path).expect("trimcases.txt");
     let mut cases: Vec<Case> = Vec::new();
     for line in text.lines() {
@@ -212,7 +215,8 @@ fn trimmed_tessellation_is_glus_line_for_line_without_fallback() {
         }
         if ours != case.glu {
             let lines = ours.lines().zip(case.glu.lines()).filter(|(a, b)| a != b).count();
-            let first = ours.lines().zip(case.glu.lines()).enumerate().find(|(_, (a, b))| a != b);
+            let (mut a, mut b) = (ours.lines().map(Some).chain([None]), case.glu.lines().map(Some).chain([None]));
+            let first = (0..).zip(a.by_ref().zip(b.by_ref())).find(|(_, (a, b))| a != b);
             diffs.push(format!(
                 "{}: glu {} lines / ours {}; {lines} differ, first {first:?}",
                 case.name,

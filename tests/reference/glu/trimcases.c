@@ -5,12 +5,17 @@
    fine samplings. Each case prints its inputs first ("@" lines: the surface and its sampling,
    then every trim loop's curves, floats to 9 significant digits), then what GLU hands to the
    GLU_NURBS_TESSELLATOR callbacks as surfpoints.c prints it. tests/it/glu_trimcases.rs reads
-   the inputs, draws them with gleval and compares the text.
+   the inputs, draws them with gleval and compares the text. `trimcases random SEED COUNT`
+   prints random cases instead (holes inside the border, some with vertices rounded to a grid),
+   for GLEVAL_TRIMCASES=FILE cargo test --test it glu_trimcases: seeds 1 to 6, 300 cases each,
+   all match where GLU draws (it draws nothing, and reports nothing, where rounding made a hole
+   touch the border or itself; gleval reports GLU's error 28 or 29 there).
    Build: cc trimcases.c -lOSMesa -lGLU -lGL -lm */
 #include <GL/osmesa.h>
 #include <GL/glu.h>
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 
 #define PI 3.14159265358979323846
 
@@ -232,6 +237,7 @@ static GLfloat rnd(void) {
     seed_state = seed_state * 1103515245u + 12345u;
     return (GLfloat)((seed_state >> 8) & 0xffff) / 65536.0f;
 }
+static GLfloat snap; /* random cases: hole vertices rounded to multiples of this, when set */
 static void random_hole(unsigned seed, int count, GLfloat cu, GLfloat cv, GLfloat rmin, GLfloat rmax) {
     GLfloat p[64][2];
     seed_state = seed;
@@ -240,6 +246,10 @@ static void random_hole(unsigned seed, int count, GLfloat cu, GLfloat cv, GLfloa
         GLfloat r = rmin + (rmax - rmin) * rnd();
         p[i][0] = cu + r * (GLfloat)cos(a);
         p[i][1] = cv + r * (GLfloat)sin(a);
+        if (snap > 0) {
+            p[i][0] = snap * roundf(p[i][0] / snap);
+            p[i][1] = snap * roundf(p[i][1] / snap);
+        }
     }
     polygon(count, p);
 }
@@ -298,7 +308,52 @@ static void run(enum kind k, const char *shape, const struct sampling *s, int no
     end_case();
 }
 
-int main(void) {
+/* `trimcases random SEED COUNT`: COUNT random cases (random holes and stars under random
+   samplings) instead of the fixed ones, for searching wider than the committed cases. */
+static void random_cases(unsigned seed, int count) {
+    static const char *shapes[3] = {"hill", "cylinder", "sheet"};
+    for (int i = 0; i < count; i++) {
+        char name[64];
+        struct sampling s;
+        seed_state = seed * 7919u + (unsigned)i * 104729u;
+        rnd();
+        int dd = rnd() < 0.5f;
+        s.method = dd ? "domain_distance" : "path_length";
+        s.tolerance = dd ? 50 : 15 + 135 * rnd();
+        s.step = dd ? 2 + (int)(12 * rnd()) : 100;
+        s.viewport = 500;
+        const char *shape = shapes[(int)(3 * rnd()) % 3];
+        int holes = 1 + (rnd() < 0.3f);
+        unsigned seeds[2];
+        int counts[2];
+        GLfloat cu[2], cv[2], rmin[2], rmax[2];
+        for (int h = 0; h < holes; h++) {
+            seeds[h] = (unsigned)(rnd() * 1000000);
+            counts[h] = 3 + (int)(18 * rnd());
+            GLfloat r = 0.05f + 0.25f * rnd();
+            cu[h] = holes == 1 ? 0.3f + 0.4f * rnd() : 0.27f + 0.46f * h;
+            cv[h] = 0.3f + 0.4f * rnd();
+            rmax[h] = holes == 1 ? r + 0.1f : 0.2f;
+            rmin[h] = rmax[h] * rnd();
+            /* inside the domain: GLU draws nothing, and reports nothing, for a hole across the border */
+            GLfloat room = fminf(fminf(cu[h], 1 - cu[h]), fminf(cv[h], 1 - cv[h])) - 0.02f;
+            if (rmax[h] > room) rmax[h] = room;
+            if (rmin[h] > rmax[h]) rmin[h] = rmax[h];
+        }
+        snap = rnd() < 0.4f ? 1.0f / (GLfloat)(2 + (int)(16 * rnd())) : 0;
+        snprintf(name, sizeof name, "random_%u_%d", seed, i);
+        s.name = name;
+        begin_case(name, shape, s.method, s.tolerance, s.step, s.viewport, 0, 0, 0);
+        offset = shape[0] == 's' ? 3 : 0;
+        scale = shape[0] == 's' ? 2 : 1;
+        border(0, 1);
+        for (int h = 0; h < holes; h++) random_hole(seeds[h], counts[h], cu[h], cv[h], rmin[h], rmax[h]);
+        end_case();
+        snap = 0;
+    }
+}
+
+int main(int argc, char **argv) {
     static GLubyte buf[500 * 500 * 4];
     OSMesaContext c = OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 0, NULL);
     OSMesaMakeCurrent(c, buf, GL_UNSIGNED_BYTE, 500, 500);
@@ -314,6 +369,11 @@ int main(void) {
             sheet[i][j][1] = -3.0f + j * 1.5f;
             sheet[i][j][2] = ((i * 3 + j * 5) % 7) / 3.5f - 1.0f;
         }
+    if (argc == 4) {
+        random_cases((unsigned)atoi(argv[2]), atoi(argv[3]));
+        OSMesaDestroyContext(c);
+        return 0;
+    }
     for (int k = 0; k < NKINDS; k++)
         for (int i = 0; i < COUNT(sweep); i++) run((enum kind)k, "hill", sweep[i], 0, 0, 0);
     /* The cylinder (linear in v) and the sheet (2 x 2 patches) under coarse and fine samplings. */
