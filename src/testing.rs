@@ -12,7 +12,11 @@ pub use crate::gpu::{
 pub use crate::tess::grid::{eval_grid2, Grid2, MapView};
 
 // --- GLU internals ---
-// None: the tests, benchmarks and examples reach GLU through its public `glu_*` calls.
+// The tests, benchmarks and examples reach GLU through its public `glu_*` calls; the one
+// window into it: how many trimmed surfaces this thread drew by gleval's own triangulation.
+pub fn trim_fallbacks() -> usize {
+    crate::glu::trim_fallbacks()
+}
 
 // --- image comparison used by the conformance tests and the gallery ---
 #[cfg(all(feature = "gpu", feature = "png"))]

@@ -33,6 +33,7 @@ pub mod quadric;
 mod scale;
 mod strings;
 
+pub(crate) use draw::trim_fallbacks;
 pub use errors::glu_error_string;
 pub use model::callbacks::{NurbsCallback, UserData};
 pub use model::object::GLUnurbs;

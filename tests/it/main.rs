@@ -11,6 +11,7 @@ mod glu_quadrics;
 mod glu_surfpoints;
 mod glu_tess;
 mod glu_tessellation;
+mod glu_trimcases;
 mod glut_loop;
 mod glut_robustness;
 mod glut_shapes;

@@ -12,3 +12,5 @@ mod subdivider;
 pub(crate) mod surface;
 mod tessellate;
 mod trimmed;
+
+pub(crate) use trimmed::fallbacks as trim_fallbacks;

@@ -27,3 +27,5 @@ cc -std=c99 -O1 -o "$build/scale_image" "$here/scale_image.c" -lOSMesa -lGLU -lG
 GALLIUM_DRIVER=llvmpipe "$build/scale_image" > "$out/scale_image.txt"
 cc -std=c99 -O1 -o "$build/mipmaps" "$here/mipmaps.c" -lOSMesa -lGLU -lGL
 GALLIUM_DRIVER=llvmpipe "$build/mipmaps" > "$out/mipmaps.txt"
+cc -std=c99 -O1 -o "$build/trimcases" "$here/trimcases.c" -lOSMesa -lGLU -lGL -lm
+GALLIUM_DRIVER=llvmpipe "$build/trimcases" > "$out/trimcases.txt"

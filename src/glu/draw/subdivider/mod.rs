@@ -7,9 +7,10 @@
 //! patch's border steps (`tessellation`, `join_s`, `join_t`), and cuts between two samples
 //! leave GLU's degenerate triangles.
 //!
-//! Loops that end up rectangles are sliced as untrimmed patches are ([`crate::glu::draw::slicer`]).
-//! Other loops go through `sampleMonoPoly` in GLU, not written here yet: the subdivision then
-//! reports [`Failure::Unsupported`] and the caller falls back to gleval's own triangulation.
+//! Loops that end up rectangles are sliced as untrimmed patches are ([`crate::glu::draw::slicer`]),
+//! other loops by GLU's `sampleMonoPoly` in all its ways. Where GLU itself would read past its
+//! arrays (loops it mishandles), the subdivision reports [`Failure::Unsupported`] and the
+//! caller falls back to gleval's own triangulation.
 
 mod arcs;
 pub(crate) mod arctess;

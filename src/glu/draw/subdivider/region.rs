@@ -1,7 +1,7 @@
 //! One loop left by the subdivision, sliced (`Slicer::slice_new`, `internals/slicer.cc`): a
 //! rectangle goes the way of an untrimmed patch ([`slice_rect`]), a loop with no inner grid
 //! line across it by GLU's monotone triangulation ([`mono`]), the rest by GLU's
-//! `sampleMonoPoly` ([`super::sample`]); `None` where that takes a way not written here.
+//! `sampleMonoPoly` ([`super::sample`]); `None` where GLU would read past its arrays.
 
 use super::arcs::{ArcId, Arcs};
 use super::mono;
@@ -39,8 +39,8 @@ pub(super) fn slice(arcs: &Arcs, lp: &[ArcId], interior: Interior) -> Option<Vec
 }
 
 /// GLU's `sampleMonoPoly` on the loop, then its stream of fans (`Slicer::evalStream`) and its
-/// blocks of quads (`Slicer::evalRBArray`), or `None` where the sampling takes a way not
-/// written here.
+/// blocks of quads (`Slicer::evalRBArray`), or `None` where GLU would read past its arrays
+/// (or the grid has more lines than gleval's sampling allows).
 fn sampled(arcs: &Arcs, lp: &[ArcId], lines: (i64, i64), bbox: [f32; 4], linear: (bool, bool)) -> Option<Vec<Piece>> {
     let n = |x: i64| usize::try_from(x).ok().filter(|&x| (2..=MAX_SEGMENTS).contains(&x));
     let (nu, nv) = (n(lines.0)?, n(lines.1)?);

@@ -18,6 +18,17 @@ use crate::glu::evaluation::surface::Surface;
 use crate::glu::model::maps::TrimPiece;
 use crate::glu::model::object::NurbsObject;
 
+thread_local! {
+    /// How many trimmed surfaces this thread drew by gleval's own triangulation.
+    static FALLBACKS: std::cell::Cell<usize> = const { std::cell::Cell::new(0) };
+}
+
+/// How many trimmed surfaces this thread has drawn by gleval's own triangulation (regions whose
+/// sampling GLU itself mishandles), for the tests that count them.
+pub(crate) fn fallbacks() -> usize {
+    FALLBACKS.with(std::cell::Cell::get)
+}
+
 /// Draws a trimmed surface.
 pub(super) fn draw_trimmed(
     gl: &mut Gl,
@@ -40,7 +51,7 @@ pub(super) fn draw_trimmed(
             };
         }
         Err(Failure::Error(n)) => return obj.nurbs_error(n),
-        Err(Failure::Unsupported) => {} // gleval's own triangulation below
+        Err(Failure::Unsupported) => FALLBACKS.with(|n| n.set(n.get() + 1)), // gleval's own triangulation below
     }
     let bounds = surface.domain();
     if tessellate {

@@ -6,9 +6,11 @@
 //! down the region (`sampleMonoPolyRec`, `sampleConnectedComp`).
 
 mod chain;
+mod convex;
 mod corners;
 mod ends;
 mod grid;
+mod partition;
 mod sides;
 mod tri;
 
@@ -80,7 +82,7 @@ impl Poly {
     }
 }
 
-/// GLU's `primStream` (fans) and whether the region left what this port reproduces.
+/// GLU's `primStream` (fans) and whether GLU would have read past its arrays on the way.
 #[derive(Default)]
 pub(crate) struct Stream {
     pub pieces: Vec<Piece>,
@@ -112,7 +114,7 @@ pub(crate) struct Sampled {
 }
 
 /// GLU `sampleMonoPoly` on `poly` over a grid of `lines` = (n_u, n_v) lines spanning the
-/// region's box; `None` where the region takes a way not written here.
+/// region's box; `None` where GLU would read past its arrays (loops it mishandles).
 pub(crate) fn sample_mono_poly(
     poly: &Poly,
     lines: (usize, usize),
@@ -126,7 +128,13 @@ pub(crate) fn sample_mono_poly(
             tri::mono_fun(poly, comp_v2_in_y, &mut s);
             return finish(s, lines.0, Vec::new());
         }
-        return None; // the convex and u-monotone special cases: not written
+        if convex::is_convex(poly) && poly.len() >= 4 {
+            convex::triangulate_convex(poly, linear, &mut s);
+            return finish(s, lines.0, Vec::new());
+        }
+        if (linear.1 || convex::is_u_direction(poly)) && tri::mono_u(poly, &mut s) {
+            return finish(s, lines.0, Vec::new());
+        }
     }
     let (mut top, mut bot) = (0, 0);
     for t in 1..poly.len() {

@@ -6,6 +6,7 @@
 
 use super::chain::at;
 use super::grid::GridWrap;
+use super::partition;
 use super::{Poly, Pt, Stream};
 use crate::glu::draw::subdivider::mono::{chains, comp_v2_in_y, ReflexChain};
 use std::cmp::Ordering;
@@ -62,8 +63,9 @@ pub(crate) fn mono2(top: Pt, bot: Pt, c: &[Pt], small: i64, large: i64, increasi
     chain.process(bot, &mut s.pieces);
 }
 
-/// `monoTriangulationRecGenOpt`: the region as a polygon of segments, triangulated as a
-/// polygon monotone in u where it is one ([`mono_opt_x`]).
+/// `monoTriangulationRecGenOpt`: the region as a polygon of segments, triangulated by u
+/// ([`mono_u`]), or where it has several interior cusps in u, cut by GLU's `monoPolyPart` into
+/// polygons monotone in u, each triangulated by u.
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn rec_gen_opt(
     top: Pt,
@@ -92,40 +94,36 @@ pub(crate) fn rec_gen_opt(
         lines.push(vec![bot, top]);
     }
     let poly = Poly { lines };
-    match cusps_x(&poly).len() {
-        0 => mono_fun(&poly, comp_v2_in_x, s),
-        1 => single_cusp(&poly, s),
-        _ => s.bad = true, // GLU's monoPolyPart: not written
+    if !mono_u(&poly, s) {
+        match partition::mono_poly_part(&poly) {
+            Some(parts) => parts.iter().for_each(|p| mono_fun(p, comp_v2_in_x, s)),
+            None => s.bad = true,
+        }
     }
+}
+
+/// The polygon triangulated by u where it has no interior cusp in u, or one that a diagonal
+/// cuts off (GLU's u-monotone cases in `sampleMonoPoly`, `monoTriangulationOpt` and
+/// `monoTriangulationRecGenOpt`); false, with nothing drawn, where it has several.
+pub(crate) fn mono_u(poly: &Poly, s: &mut Stream) -> bool {
+    let cusps = cusps_x(poly);
+    match cusps[..] {
+        [] => mono_fun(poly, comp_v2_in_x, s),
+        [c] => match partition::split_at_cusp(poly, c) {
+            Some(halves) => halves.iter().for_each(|h| mono_fun(h, comp_v2_in_x, s)),
+            None => mono_fun(poly, comp_v2_in_x, s),
+        },
+        _ => return false,
+    }
+    true
 }
 
 /// `monoTriangulationOpt`: a polygon monotone in u by u, one with a single interior cusp cut
 /// at it, any other by v.
 pub(crate) fn mono_opt(poly: &Poly, s: &mut Stream) {
-    match cusps_x(poly).len() {
-        0 => mono_fun(poly, comp_v2_in_x, s),
-        1 => single_cusp(poly, s),
-        _ => mono_fun(poly, comp_v2_in_y, s),
+    if !mono_u(poly, s) {
+        mono_fun(poly, comp_v2_in_y, s);
     }
-}
-
-/// GLU's single-cusp case (`polygonConvert`, `findDiagonal_singleCuspX`,
-/// `connectDiagonal_2slines`): only the case with no diagonal is written; the other marks the
-/// region as not reproduced.
-fn single_cusp(poly: &Poly, s: &mut Stream) {
-    let c = cusps_x(poly)[0];
-    let head = poly.head(c);
-    let minimal = comp_v2_in_x(head, poly.tail(c)) == Ordering::Less;
-    let want = if minimal { Ordering::Greater } else { Ordering::Less };
-    let mut t = poly.next(c);
-    while t != c {
-        if comp_v2_in_x(head, poly.head(t)) == want {
-            s.bad = true; // connectDiagonal_2slines: not written
-            return;
-        }
-        t = poly.next(t);
-    }
-    mono_fun(poly, comp_v2_in_x, s);
 }
 
 /// GLU `findInteriorCuspsX` (`partitionX.cc`): the vertices where the polygon turns back in u
