@@ -6,15 +6,15 @@
 //! slices; a slice shorter than the call needs sets `GL_INVALID_VALUE` instead of reading out of
 //! bounds. Nothing here panics on bad input.
 
-mod arrays;
 mod accum;
+mod arrays;
 mod attrib;
 mod binding;
 mod bitmap;
 mod client_memory;
 mod clip;
-mod color_material;
 mod color_index;
+mod color_material;
 pub mod consts;
 mod copy_pixels;
 mod copy_texture;
@@ -45,8 +45,8 @@ mod pixels;
 mod raster;
 mod raster_pos;
 mod read_pixels;
-mod select;
 mod read_stencil;
+mod select;
 mod stencil;
 mod stipple;
 mod stipple_query;

@@ -91,7 +91,8 @@ impl Target {
         })?;
         let row = self.width as usize * 4;
         let rows: Vec<&[u8]> = padded.chunks_exact(padded_row as usize).map(|r| &r[..row]).collect();
-        let ordered: Box<dyn Iterator<Item = &&[u8]>> = if flip { Box::new(rows.iter().rev()) } else { Box::new(rows.iter()) };
+        let ordered: Box<dyn Iterator<Item = &&[u8]>> =
+            if flip { Box::new(rows.iter().rev()) } else { Box::new(rows.iter()) };
         let bytes: Vec<u8> = ordered.flat_map(|r| r.iter().copied()).collect();
         Ok(bytes.chunks_exact(4).map(|b| f32::from_ne_bytes([b[0], b[1], b[2], b[3]])).collect())
     }

@@ -249,7 +249,8 @@ impl Assembler {
     /// A `glCopyPixels`: its copy and the batch state its points will be drawn with.
     fn pixel_copy(&mut self, copy: &crate::gl::PixelCopy, state: &DrawState) {
         let fragment = self.fragment_index(state, (Smooth::None, None));
-        let (viewport, depth_test, blend, tests) = (state.viewport, state.depth_test, state.blend, state.fragment_tests);
+        let (viewport, depth_test, blend, tests) =
+            (state.viewport, state.depth_test, state.blend, state.fragment_tests);
         let topology = Topology::Points;
         let batch = Batch { viewport, depth_test, topology, first: 0, count: 0, fragment, blend, tests };
         self.list.pixel_copies.push(copy.clone());

@@ -26,12 +26,12 @@ mod bsurf;
 mod colormap;
 #[path = "../../examples/colormat.rs"]
 mod colormat;
-#[path = "../../examples/edgeflags.rs"]
-mod edgeflags;
 #[path = "../../examples/copypixels.rs"]
 mod copypixels;
 #[path = "../../examples/copytex.rs"]
 mod copytex;
+#[path = "../../examples/edgeflags.rs"]
+mod edgeflags;
 #[path = "../../examples/ex1_bezier.rs"]
 mod ex1_bezier;
 #[path = "../../examples/ex2_bspline.rs"]

@@ -9,10 +9,10 @@ use gleval::gl::MapTarget;
 use gleval::prelude::*;
 use std::path::{Path, PathBuf};
 
-#[path = "mesa_calls_queries.rs"]
-mod queries;
 #[path = "mesa_calls_pixels.rs"]
 mod pixels;
+#[path = "mesa_calls_queries.rs"]
+mod queries;
 
 fn calls_dir() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/reference/calls")

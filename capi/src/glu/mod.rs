@@ -4,6 +4,6 @@
 mod callbacks;
 mod misc;
 mod nurbs;
-mod tess;
 mod project;
 mod quadric;
+mod tess;
