@@ -78,7 +78,8 @@ pub(crate) fn read_format_error(format: GLenum, type_: GLenum) -> Option<GLenum>
     if format_size(format).is_none() || type_size(type_).is_none() {
         return Some(GL_INVALID_ENUM);
     }
-    components(format, [0.0; 4]).is_none().then_some(GL_INVALID_OPERATION)
+    let colour = format != GL_DEPTH_COMPONENT && components(format, [0.0; 4]).is_some();
+    (!colour).then_some(GL_INVALID_OPERATION)
 }
 
 /// One depth `d` ∈ [0, 1] as `type_` stores it: Mesa packs depths with truncating conversions

@@ -22,6 +22,14 @@ fn plain(tests: &FragmentTests, buffers: &mut Option<u8>) -> bool {
     one_buffer && tests.logic_op.is_none()
 }
 
+/// Whether a render of `frame` reads the depth buffer back: asked for (`depth`: `glReadPixels`
+/// of `GL_DEPTH_COMPONENT`, `glCopyTexImage` of a depth texture), or a `glCopyPixels` of
+/// `GL_DEPTH` in it. wgpu's GL backend cannot copy a depth-stencil attachment into a buffer (its
+/// submission fails), so there such a frame is the CPU rasteriser's too.
+pub(crate) fn reads_depth(frame: &Frame, depth: bool) -> bool {
+    depth || frame.pixel_copies.iter().any(|c| c.buffer == GL_DEPTH)
+}
+
 /// Whether the CPU rasteriser must draw `frame` for wgpu (see the module's text).
 pub(crate) fn needs_cpu(frame: &Frame) -> bool {
     let mut buffers = None;

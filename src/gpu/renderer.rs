@@ -15,6 +15,7 @@ use super::mesh_raster::{gpu_mesh_indices, MeshRaster, PreparedMeshes};
 use super::passes::{begin_pass, draw_rect, split_passes, stencil_reference, PassItem};
 use super::raster::PipelineTests;
 use super::target::Target;
+use crate::gl::consts::GL_DEPTH;
 use crate::gl::{Frame, WindowImage};
 use crate::math::BezierPatch;
 use crate::render::assemble::{assemble_frame, Batch, DrawList, Op};
@@ -108,7 +109,8 @@ impl Renderer {
         height: u32,
         depth: bool,
     ) -> Result<WindowImage, RenderError> {
-        if super::fallback::needs_cpu(frame) {
+        let gl_backend = self.adapter.get_info().backend == wgpu::Backend::Gl;
+        if super::fallback::needs_cpu(frame) || (gl_backend && super::fallback::reads_depth(frame, depth)) {
             return Ok(crate::render::soft::render_window(frame, width.max(1), height.max(1)));
         }
         let target = Target::new(&self.device, width.max(1), height.max(1), COLOR_FORMAT);
@@ -141,8 +143,9 @@ impl Renderer {
         let is_copy = |op: &Op| matches!(op, Op::CopyPixels { .. });
         while let Some(at) = list.ops[start..].iter().position(is_copy).map(|k| start + k) {
             self.encode_list(&list, start..at, frame, prepared.as_ref(), &mut encoder, attachments, keep);
-            let window = self.read_target(target, encoder, true)?;
             let Op::CopyPixels { copy, batch } = list.ops[at] else { unreachable!("found above") };
+            let depth = list.pixel_copies.get(copy).is_some_and(|c| c.buffer == GL_DEPTH);
+            let window = self.read_target(target, encoder, depth)?;
             let points = list.pixel_copies.get(copy).map(|c| copy_vertices(c, &window)).unwrap_or_default();
             let first = list.vertices.len() as u32;
             list.vertices.extend(points);

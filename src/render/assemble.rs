@@ -231,6 +231,35 @@ pub fn assemble_frame(frame: &Frame, gpu_meshes: &[usize]) -> DrawList {
 #[derive(Default)]
 struct Assembler {
     list: DrawList,
+    /// `list.fragments`' indices by [`fragment_bucket`]: a frame may hold thousands of
+    /// fragment states, and a linear search per primitive made assembling it quadratic.
+    fragment_buckets: std::collections::HashMap<u64, Vec<u32>>,
+}
+
+/// A hash of the fragment state a primitive is drawn with: equal states (by `FragmentState`'s
+/// `==`) share it, unequal ones rarely do. The texture is named by its key (object and image
+/// version) and environment, its images are not read.
+fn fragment_bucket(state: &DrawState, smooth: Smooth, polygon_stipple: Option<[u32; 32]>) -> u64 {
+    use std::hash::{Hash, Hasher};
+    let mut h = std::collections::hash_map::DefaultHasher::new();
+    let bits = |values: &[f32], h: &mut std::collections::hash_map::DefaultHasher| {
+        values.iter().for_each(|v| v.to_bits().hash(h))
+    };
+    if let Some(t) = &state.texture {
+        (t.key, t.base_format, t.env_mode, t.one_d).hash(&mut h);
+        bits(&t.env_color, &mut h);
+    }
+    if let Some(f) = &state.fog {
+        f.mode.hash(&mut h);
+        bits(&[f.density, f.start, f.end], &mut h);
+        bits(&f.color, &mut h);
+    }
+    if let Some((func, reference)) = state.alpha_test {
+        func.hash(&mut h);
+        bits(&[reference], &mut h);
+    }
+    (smooth, polygon_stipple).hash(&mut h);
+    h.finish()
 }
 
 impl Assembler {
@@ -359,7 +388,7 @@ impl Assembler {
     }
 
     /// The index of the state's fragment operations in the list, adding them if they are new
-    /// (searched from the last: consecutive primitives share them); `None` without any.
+    /// (looked up by [`fragment_bucket`]); `None` without any.
     fn fragment_index(
         &mut self,
         state: &DrawState,
@@ -377,12 +406,15 @@ impl Assembler {
                 && f.smooth == smooth
                 && f.polygon_stipple == polygon_stipple
         };
-        let found = fragments.iter().rposition(same);
-        Some(found.unwrap_or_else(|| {
-            let (texture, fog, alpha_test) = (state.texture.clone(), state.fog, state.alpha_test);
-            fragments.push(FragmentState { texture, fog, alpha_test, smooth, polygon_stipple });
-            fragments.len() - 1
-        }) as u32)
+        let bucket = self.fragment_buckets.entry(fragment_bucket(state, smooth, polygon_stipple)).or_default();
+        if let Some(&found) = bucket.iter().rev().find(|&&i| same(&fragments[i as usize])) {
+            return Some(found);
+        }
+        let (texture, fog, alpha_test) = (state.texture.clone(), state.fog, state.alpha_test);
+        fragments.push(FragmentState { texture, fog, alpha_test, smooth, polygon_stipple });
+        let index = (fragments.len() - 1) as u32;
+        bucket.push(index);
+        Some(index)
     }
 }
 
