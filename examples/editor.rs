@@ -65,21 +65,9 @@ fn choose(s: &mut State, value: i32) {
     let sel = s.selected as usize;
     match value {
         POLYGON => s.polygon = !s.polygon,
-        HEAVIER => {
-            if s.selected >= 0 && s.weight[sel] < 4.0 {
-                s.weight[sel] *= 2.0;
-            }
-        }
-        LIGHTER => {
-            if s.selected >= 0 && s.weight[sel] > 0.25 {
-                s.weight[sel] /= 2.0;
-            }
-        }
-        COLOUR => {
-            if s.selected >= 0 {
-                s.colour[sel] = (s.colour[sel] + 1) % 4;
-            }
-        }
+        HEAVIER if s.selected >= 0 && s.weight[sel] < 4.0 => s.weight[sel] *= 2.0,
+        LIGHTER if s.selected >= 0 && s.weight[sel] > 0.25 => s.weight[sel] /= 2.0,
+        COLOUR if s.selected >= 0 => s.colour[sel] = (s.colour[sel] + 1) % 4,
         RESET => reset(s),
         QUIT => std::process::exit(0),
         _ => {}
