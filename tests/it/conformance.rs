@@ -32,6 +32,8 @@ mod copypixels;
 mod copytex;
 #[path = "../../examples/edgeflags.rs"]
 mod edgeflags;
+#[path = "../../examples/editor.rs"]
+pub(crate) mod editor;
 #[path = "../../examples/ex1_bezier.rs"]
 mod ex1_bezier;
 #[path = "../../examples/ex2_bspline.rs"]
@@ -300,6 +302,14 @@ const ARRAYS_THRESHOLD: f64 = 0.001;
 #[test]
 fn picking_matches_mesa() {
     check_with("picking", picking::app, |_| ARRAYS_THRESHOLD);
+}
+
+/// A control-point editor: lit `gluSphere` balls picked in selection mode through
+/// `gluPickMatrix` around the program's own projection, a rational curve, a `gluDisk` ring and
+/// `glutBitmapString` labels, after a click and two menu choices (`Editor.c`).
+#[test]
+fn editor_matches_mesa() {
+    check_with("editor", editor::app, |_| ARRAYS_THRESHOLD);
 }
 
 /// Meshes from every interleaved format and through `glDrawElements` (`VertexArrays.c`).

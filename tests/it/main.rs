@@ -3,6 +3,7 @@
 
 mod arrays_properties;
 mod conformance;
+mod editor_demo;
 mod eval_mesh;
 mod glu_errors;
 mod glu_mipmaps;

@@ -35,6 +35,10 @@ void glutReshapeFunc(void (*f)(int, int)) { reshape = f; }
 void glutKeyboardFunc(void (*f)(unsigned char, int, int)) { (void)f; }
 void glutMouseFunc(void (*f)(int, int, int, int)) { (void)f; }
 void glutMotionFunc(void (*f)(int, int)) { (void)f; }
+static int menus;
+int glutCreateMenu(void (*f)(int)) { (void)f; return ++menus; }
+void glutAddMenuEntry(const char *label, int value) { (void)label; (void)value; }
+void glutAttachMenu(int button) { (void)button; }
 void glutPostRedisplay(void) {}
 void glutSwapBuffers(void) { glFinish(); }
 int glutGet(unsigned int what) {
@@ -73,6 +77,29 @@ void glutBitmapCharacter(void *font, int character) {
     glPopClientAttrib();
 }
 
+/* As freeglut's glutBitmapString: the characters one after another, the client's modes kept; a
+   newline moves the raster position back to where the line started and down by the font's
+   height (its glyphs' largest ascent plus largest descent plus 1, as freeglut's fonts record). */
+void glutBitmapString(void *font, const unsigned char *string) {
+    const unsigned char *bits;
+    int ascent = 0, descent = 0;
+    for (int c = 1; c < 256; c++) {
+        const GlutGlyph *g = glyph(font, c, &bits);
+        if (!g) continue;
+        if (g->height - g->yorig > ascent) ascent = g->height - g->yorig;
+        if (g->yorig > descent) descent = g->yorig;
+    }
+    float x = 0.0f;
+    for (; string && *string; string++) {
+        if (*string == '\n') {
+            glBitmap(0, 0, 0, 0, -x, (float)-(ascent + descent + 1), NULL);
+            x = 0.0f;
+        } else if (glyph(font, *string, &bits)) {
+            glutBitmapCharacter(font, *string);
+            x += glutBitmapWidth(font, *string);
+        }
+    }
+}
 int glutBitmapWidth(void *font, int character) {
     const unsigned char *bits;
     const GlutGlyph *g = glyph(font, character, &bits);

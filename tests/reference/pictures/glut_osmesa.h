@@ -25,8 +25,14 @@ void glutKeyboardFunc(void (*f)(unsigned char, int, int));
 #define GLUT_LEFT_BUTTON 0
 #define GLUT_DOWN 0
 #define GLUT_UP 1
+#define GLUT_MIDDLE_BUTTON 1
+#define GLUT_RIGHT_BUTTON 2
 void glutMouseFunc(void (*f)(int, int, int, int));
 void glutMotionFunc(void (*f)(int, int));
+/* Menus: built and numbered from 1 as freeglut does, never shown (no mouse headless). */
+int glutCreateMenu(void (*f)(int));
+void glutAddMenuEntry(const char *label, int value);
+void glutAttachMenu(int button);
 int glutGet(unsigned int what);
 void glutPostRedisplay(void);
 void glutSwapBuffers(void);
@@ -42,6 +48,7 @@ void glutMainLoop(void);
 void glutBitmapCharacter(void *font, int character);
 int glutBitmapWidth(void *font, int character);
 int glutBitmapLength(void *font, const unsigned char *string);
+void glutBitmapString(void *font, const unsigned char *string);
 /* Stroke fonts: freeglut's handle values; glyphs from glut_strokes.h (tools/fonts/gen_stroke.py). */
 #define GLUT_STROKE_ROMAN ((void *)0x0000)
 #define GLUT_STROKE_MONO_ROMAN ((void *)0x0001)
