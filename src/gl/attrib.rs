@@ -237,6 +237,7 @@ impl Gl {
         }
         if has(GL_FOG_BIT) {
             self.fragment_ops.fog = saved.fragment.fog;
+            self.fragment_ops.fog_index = saved.fragment.fog_index;
         }
         if let Some(lighting) = saved.lighting {
             self.lighting = lighting;

@@ -35,11 +35,14 @@ pub(crate) struct FragmentOps {
     pub blend: [GLenum; 2],
     pub alpha: (GLenum, f32),
     pub fog: Fog,
+    /// `GL_FOG_INDEX`: colour-index fog, kept for `glGet` and `GL_FOG_BIT` (nothing is drawn in
+    /// colour-index mode).
+    pub fog_index: f32,
 }
 
 impl Default for FragmentOps {
     fn default() -> Self {
-        Self { blend: [GL_ONE, GL_ZERO], alpha: (GL_ALWAYS, 0.0), fog: Fog::default() }
+        Self { blend: [GL_ONE, GL_ZERO], alpha: (GL_ALWAYS, 0.0), fog: Fog::default(), fog_index: 0.0 }
     }
 }
 
@@ -78,7 +81,7 @@ impl Gl {
 
     /// `glFogfv`: `GL_FOG_MODE` (`GL_LINEAR`, `GL_EXP`, `GL_EXP2`), `GL_FOG_DENSITY` (a
     /// negative one → `GL_INVALID_VALUE`), `GL_FOG_START`, `GL_FOG_END`, `GL_FOG_COLOR` (4
-    /// values) or `GL_FOG_INDEX` (colour-index mode: ignored). Another name or mode →
+    /// values) or `GL_FOG_INDEX` (colour-index mode: kept, not drawn). Another name or mode →
     /// `GL_INVALID_ENUM`; a short slice → `GL_INVALID_VALUE`.
     pub fn fogfv(&mut self, pname: GLenum, params: &[GLfloat]) {
         if self.compiled(|| ListCommand::Fog(pname, params.to_vec())) || self.reject_inside_begin_end() {
@@ -97,7 +100,7 @@ impl Gl {
             GL_FOG_START => fog.start = values[0],
             GL_FOG_END => fog.end = values[0],
             GL_FOG_COLOR => fog.color = std::array::from_fn(|i| values[i].clamp(0.0, 1.0)),
-            GL_FOG_INDEX => {}
+            GL_FOG_INDEX => self.fragment_ops.fog_index = values[0],
             _ => return self.set_error(GL_INVALID_ENUM),
         }
         self.touch_state();

@@ -169,7 +169,7 @@ pub(crate) static STATE: &[StateVar] = &[
     row(GL_MATRIX_MODE, 1, Int, |gl, o| put_enum(o, [GL_MODELVIEW, GL_PROJECTION, GL_TEXTURE][gl.matrices.mode()])),
     // Table 6.6: colouring.
     row(GL_FOG_COLOR, 4, Normalized, |gl, o| put(o, &gl.fragment_ops.fog.color)),
-    hook(GL_FOG_INDEX, 1, Float),
+    row(GL_FOG_INDEX, 1, Float, |gl, o| o[0] = gl.fragment_ops.fog_index.into()),
     row(GL_FOG_DENSITY, 1, Float, |gl, o| o[0] = gl.fragment_ops.fog.density.into()),
     row(GL_FOG_START, 1, Float, |gl, o| o[0] = gl.fragment_ops.fog.start.into()),
     row(GL_FOG_END, 1, Float, |gl, o| o[0] = gl.fragment_ops.fog.end.into()),
