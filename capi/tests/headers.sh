@@ -5,7 +5,8 @@
 #    header is the truth to compare with;
 # 2. the headers declare exactly the functions libgleval_c exports, so a call gleval lacks
 #    does not compile, and nothing implemented is hidden;
-# 3. every function of the system's GL/freeglut_std.h and GL/freeglut_ext.h is declared.
+# 3. every function of the system's GL/gl.h up to GL 1.1, GL/glu.h, GL/freeglut_std.h and
+#    GL/freeglut_ext.h is declared.
 #   capi/tests/headers.sh LIBDIR     (the directory holding libgleval_c.so)
 set -eu
 here=$(cd "$(dirname "$0")/.." && pwd)
@@ -38,8 +39,15 @@ if ! diff "$tmp/declared" "$tmp/exported" > "$tmp/diff"; then
 fi
 echo "headers: $(wc -l < "$tmp/declared") functions declared, all exported, none more"
 
-# 3. The system's freeglut functions, all declared here.
-for h in freeglut_std freeglut_ext; do
+# 3. The system's GL 1.1 functions (Mesa's GL/gl.h before its "OpenGL 1.2" section), GLU 1.3
+#    functions and freeglut functions, all declared here (and so, by 2, exported).
+awk '/^ \* OpenGL 1\.2/ {exit} {print}' /usr/include/GL/gl.h | grep -o '\bgl[A-Z][A-Za-z0-9]* *(' | tr -d '( ' | sort -u > "$tmp/system"
+lacking=$(comm -23 "$tmp/system" "$tmp/declared")
+if [ -n "$lacking" ]; then
+  echo "headers: GL 1.1 functions of the system's GL/gl.h not declared here:"; echo "$lacking"; exit 1
+fi
+echo "headers: all $(wc -l < "$tmp/system") GL 1.1 functions of the system's GL/gl.h declared"
+for h in glu freeglut_std freeglut_ext; do
   grep -ho '\b\(glu\|glut\)[A-Z][A-Za-z0-9]* *(' "/usr/include/GL/$h.h" | tr -d '( ' | sort -u > "$tmp/system"
   lacking=$(comm -23 "$tmp/system" "$tmp/declared")
   if [ -n "$lacking" ]; then
