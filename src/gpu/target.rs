@@ -46,20 +46,11 @@ impl Target {
         encoder: wgpu::CommandEncoder,
         flip: bool,
     ) -> Result<Vec<u8>, RenderError> {
-        // wgpu copies rows at a multiple of 256 bytes.
-        let align = wgpu::COPY_BYTES_PER_ROW_ALIGNMENT;
-        let padded_row = (self.width * 4).div_ceil(align) * align;
-        let size = u64::from(padded_row) * u64::from(self.height);
-        let padded =
-            read_back(device, queue, encoder, size, |encoder, buffer| self.copy_out(encoder, buffer, padded_row))?;
-        let row = self.width as usize * 4;
-        let rows = padded.chunks_exact(padded_row as usize).map(|r| &r[..row]);
-        Ok(if flip { rows.rev().flatten().copied().collect() } else { rows.flatten().copied().collect() })
+        self.read_plane(device, queue, encoder, (&self.color, wgpu::TextureAspect::All), flip)
     }
 
     /// Submits `encoder` with a copy of the depth texture at its end, waits, and returns the
-    /// depths (32-bit floats), rows top to bottom (a texture drawn upside down, `flip`, is read
-    /// from its last row up).
+    /// depths (32-bit floats), rows top to bottom (upside down with `flip`, as [`Target::read`]).
     pub(crate) fn read_depth(
         &self,
         device: &wgpu::Device,
@@ -67,17 +58,28 @@ impl Target {
         encoder: wgpu::CommandEncoder,
         flip: bool,
     ) -> Result<Vec<f32>, RenderError> {
+        let plane = (&self.depth, wgpu::TextureAspect::DepthOnly);
+        let bytes = self.read_plane(device, queue, encoder, plane, flip)?;
+        Ok(bytes.chunks_exact(4).map(|b| f32::from_ne_bytes([b[0], b[1], b[2], b[3]])).collect())
+    }
+
+    /// Reads one aspect of a texture of 4 bytes a texel (RGBA8, or the depth as `f32`) back:
+    /// rows top to bottom without wgpu's row padding, from the last row up with `flip`.
+    fn read_plane(
+        &self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        encoder: wgpu::CommandEncoder,
+        (texture, aspect): (&wgpu::Texture, wgpu::TextureAspect),
+        flip: bool,
+    ) -> Result<Vec<u8>, RenderError> {
+        // wgpu copies rows at a multiple of 256 bytes.
         let align = wgpu::COPY_BYTES_PER_ROW_ALIGNMENT;
         let padded_row = (self.width * 4).div_ceil(align) * align;
         let size = u64::from(padded_row) * u64::from(self.height);
         let padded = read_back(device, queue, encoder, size, |encoder, buffer| {
             encoder.copy_texture_to_buffer(
-                wgpu::TexelCopyTextureInfo {
-                    texture: &self.depth,
-                    mip_level: 0,
-                    origin: wgpu::Origin3d::ZERO,
-                    aspect: wgpu::TextureAspect::DepthOnly,
-                },
+                wgpu::TexelCopyTextureInfo { texture, mip_level: 0, origin: wgpu::Origin3d::ZERO, aspect },
                 wgpu::TexelCopyBufferInfo {
                     buffer,
                     layout: wgpu::TexelCopyBufferLayout {
@@ -90,31 +92,7 @@ impl Target {
             );
         })?;
         let row = self.width as usize * 4;
-        let rows: Vec<&[u8]> = padded.chunks_exact(padded_row as usize).map(|r| &r[..row]).collect();
-        let ordered: Box<dyn Iterator<Item = &&[u8]>> =
-            if flip { Box::new(rows.iter().rev()) } else { Box::new(rows.iter()) };
-        let bytes: Vec<u8> = ordered.flat_map(|r| r.iter().copied()).collect();
-        Ok(bytes.chunks_exact(4).map(|b| f32::from_ne_bytes([b[0], b[1], b[2], b[3]])).collect())
-    }
-
-    /// Records a copy of the colour texture into `buffer`, `padded_row` bytes a row.
-    fn copy_out(&self, encoder: &mut wgpu::CommandEncoder, buffer: &wgpu::Buffer, padded_row: u32) {
-        encoder.copy_texture_to_buffer(
-            wgpu::TexelCopyTextureInfo {
-                texture: &self.color,
-                mip_level: 0,
-                origin: wgpu::Origin3d::ZERO,
-                aspect: wgpu::TextureAspect::All,
-            },
-            wgpu::TexelCopyBufferInfo {
-                buffer,
-                layout: wgpu::TexelCopyBufferLayout {
-                    offset: 0,
-                    bytes_per_row: Some(padded_row),
-                    rows_per_image: Some(self.height),
-                },
-            },
-            wgpu::Extent3d { width: self.width, height: self.height, depth_or_array_layers: 1 },
-        );
+        let rows = padded.chunks_exact(padded_row as usize).map(|r| &r[..row]);
+        Ok(if flip { rows.rev().flatten().copied().collect() } else { rows.flatten().copied().collect() })
     }
 }
