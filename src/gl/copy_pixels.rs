@@ -69,6 +69,10 @@ impl PixelCopy {
     pub fn fragments(&self, window: &WindowImage) -> Vec<CopyFragment> {
         let [sx, sy, w, h] = self.source;
         let (Ok(w), Ok(h)) = (usize::try_from(w), usize::try_from(h)) else { return Vec::new() };
+        if self.buffer == GL_STENCIL {
+            // Written into the stencil buffer by the rasteriser itself (`Framebuffer::copy_stencil`).
+            return Vec::new();
+        }
         let size = (window.width, window.height);
         let mut out = Vec::new();
         for ((i, j), (x, y)) in zoomed_pixels(self.origin, self.zoom, (w, h), size) {
@@ -139,7 +143,11 @@ impl Gl {
     /// Whether the window has the buffer `glCopyPixels` names: colour and depth always (both
     /// rasterisers keep a depth buffer); no stencil buffer yet.
     fn window_has(&self, type_: GLenum) -> bool {
-        matches!(type_, GL_COLOR | GL_DEPTH)
+        match type_ {
+            GL_COLOR | GL_DEPTH => true,
+            GL_STENCIL => self.buffer_config().stencil_bits > 0,
+            _ => false,
+        }
     }
 }
 

@@ -30,8 +30,12 @@ pub(crate) fn reads_depth(frame: &Frame, depth: bool) -> bool {
     depth || frame.pixel_copies.iter().any(|c| c.buffer == GL_DEPTH)
 }
 
-/// Whether the CPU rasteriser must draw `frame` for wgpu (see the module's text).
+/// Whether the CPU rasteriser must draw `frame` for wgpu (see the module's text; a
+/// `glCopyPixels` of `GL_STENCIL` writes stencil values, which a draw cannot).
 pub(crate) fn needs_cpu(frame: &Frame) -> bool {
+    if frame.pixel_copies.iter().any(|c| c.buffer == GL_STENCIL) {
+        return true;
+    }
     let mut buffers = None;
     let last = frame.commands.len().saturating_sub(1);
     let states = frame.states.iter().any(|s| !plain(&s.fragment_tests, &mut buffers));

@@ -28,6 +28,7 @@ mod tests;
 
 use super::assemble::{assemble, viewport_in_target, Batch, DrawList, Op, Topology};
 use super::Image;
+use crate::gl::consts::GL_STENCIL;
 use crate::gl::{FragmentTests, Frame, WindowImage};
 use fragment::{Fragment, Program, TexSlope};
 use framebuffer::{ColorWrite, Framebuffer};
@@ -92,6 +93,12 @@ impl Canvas {
                 Op::GpuMesh { .. } => {}
                 Op::CopyPixels { copy, batch } => {
                     let Some(copy) = list.pixel_copies.get(*copy) else { continue };
+                    if copy.buffer == GL_STENCIL {
+                        if let Some(rect) = self.scissor_rect(&batch.tests) {
+                            self.fb.copy_stencil(copy, rect, batch.tests.stencil_write_mask);
+                        }
+                        continue;
+                    }
                     let window = self.fb.window_image();
                     let points = super::pixel_copy::copy_vertices(copy, &window);
                     let batch = super::pixel_copy::copy_batch(batch, &window, 0, points.len() as u32);
