@@ -333,6 +333,18 @@ pub(crate) struct Positions<'a> {
     points: &'a [f32],
 }
 
+/// A grid's lines with their row sums and u coefficients (see [`Positions::line_table`]).
+#[derive(Clone, Debug)]
+pub(crate) struct LineTable {
+    pub us: Vec<f32>,
+    pub vs: Vec<f32>,
+    rows: Vec<[[f32; 4]; MAX_ORDER]>,
+    ucs: Vec<[f32; MAX_ORDER]>,
+    /// Where each line is, by its parameter's bits.
+    uindex: HashMap<u32, usize, BuildHasherDefault<BitsHasher>>,
+    vindex: HashMap<u32, usize, BuildHasherDefault<BitsHasher>>,
+}
+
 impl Positions<'_> {
     /// Whether the patch is empty (GLU evaluates nothing on it).
     pub fn empty(&self) -> bool {
@@ -384,8 +396,10 @@ impl Positions<'_> {
         Some([q[0], q[1], q[2], u, v])
     }
 
+    #[cfg(test)]
     /// The positions at (u, v) for every point of `uvs`, into `out` (as long), a v row's sums
     /// kept while consecutive points share it.
+    #[cfg(test)]
     pub fn points_into(&self, uvs: &[[f32; 2]], out: &mut [[f32; 5]]) -> Option<()> {
         if self.empty() {
             return None;
@@ -400,6 +414,47 @@ impl Positions<'_> {
             *slot = [q[0], q[1], q[2], u, v];
         }
         Some(())
+    }
+
+    /// The row sums and u coefficients of the grid lines `us` × `vs`, worked out on rayon's
+    /// workers, for [`LineTable::at`].
+    pub fn line_table(&self, us: Vec<f32>, vs: Vec<f32>) -> LineTable {
+        use rayon::prelude::*;
+        let rows = vs.par_iter().with_min_len(8).map(|&v| self.row_sums(v)).collect();
+        let ucs = us.par_iter().with_min_len(8).map(|&u| self.u_values(u)).collect();
+        let index = |values: &[f32]| values.iter().zip(0..).map(|(x, k)| (x.to_bits(), k)).collect();
+        LineTable { uindex: index(&us), vindex: index(&vs), us, vs, rows, ucs }
+    }
+
+    /// [`Self::points_into`], the sums of points on the lines of `tables` (made by
+    /// [`Self::line_table`] on this patch) taken from there: the same bits.
+    pub fn points_into_with(&self, uvs: &[[f32; 2]], out: &mut [[f32; 5]], tables: &[&LineTable]) -> Option<()> {
+        if self.empty() {
+            return None;
+        }
+        let mut row: Option<(u32, [[f32; 4]; MAX_ORDER])> = None;
+        for (&[u, v], slot) in uvs.iter().zip(out) {
+            let on_line = tables.iter().find_map(|t| Some(&t.rows[*t.vindex.get(&v.to_bits())?]));
+            let sums = match (on_line, &row) {
+                (Some(sums), _) => sums,
+                (None, Some((bits, sums))) if *bits == v.to_bits() => sums,
+                (None, _) => &row.insert((v.to_bits(), self.row_sums(v))).1,
+            };
+            let q = match tables.iter().find_map(|t| Some(&t.ucs[*t.uindex.get(&u.to_bits())?])) {
+                Some(uc) => self.combine(sums, uc),
+                None => self.combine(sums, &self.u_values(u)),
+            };
+            *slot = [q[0], q[1], q[2], u, v];
+        }
+        Some(())
+    }
+
+    /// The position at grid point (i, j) of `table` (made by [`Self::line_table`] on this
+    /// patch) as [x, y, z, u, v]: [`Self::points_into`]'s bits at (us[i], vs[j]).
+    #[inline]
+    pub fn table_at(&self, table: &LineTable, i: usize, j: usize) -> [f32; 5] {
+        let q = self.combine(&table.rows[j], &table.ucs[i]);
+        [q[0], q[1], q[2], table.us[i], table.vs[j]]
     }
 
     /// The positions at every (us[i], vs[j]), j outer, into `out` (`us.len() × vs.len()`).
@@ -616,9 +671,16 @@ mod tests {
             let uvs: Vec<[f32; 2]> = vs.iter().flat_map(|&v| us.iter().map(move |&u| [u, v])).collect();
             let mut listed = vec![[0.0; 5]; uvs.len()];
             positions.points_into(&uvs, &mut listed).unwrap();
+            let table = positions.line_table(us.to_vec(), vs.to_vec());
+            let some_lines = positions.line_table(vec![0.75, 1.1], vec![0.2]);
+            let mut looked_up = vec![[0.0; 5]; uvs.len()];
+            positions.points_into_with(&uvs, &mut looked_up, &[&some_lines]).unwrap();
             for (n, &[u, v]) in uvs.iter().enumerate() {
+                let (i, j) = (n % us.len(), n / us.len());
+                assert_eq!(positions.table_at(&table, i, j).map(f32::to_bits), expect(u, v), "{k} {uo}x{vo} table");
                 assert_eq!(grid[n].map(f32::to_bits), expect(u, v), "{k} {uo}x{vo} grid ({u}, {v})");
                 assert_eq!(listed[n].map(f32::to_bits), expect(u, v), "{k} {uo}x{vo} list ({u}, {v})");
+                assert_eq!(looked_up[n].map(f32::to_bits), expect(u, v), "{k} {uo}x{vo} looked up ({u}, {v})");
                 assert_eq!(positions.at(u, v).unwrap().map(f32::to_bits), expect(u, v), "{k} {uo}x{vo} at");
             }
         }

@@ -8,7 +8,7 @@ use super::vertex::PatchVertices;
 use super::{Grid, Piece};
 use crate::gl::consts::*;
 use crate::gl::Gl;
-use crate::glu::evaluation::machine::Positions;
+use crate::glu::evaluation::machine::{LineTable, Positions};
 use crate::glu::model::callbacks::StripSink;
 use crate::glu::model::object::NurbsObject;
 
@@ -84,8 +84,11 @@ fn block_lines(g: &Grid, (u0, u1): (i64, i64), (v0, v1): (i64, i64)) -> (Vec<f32
     ((u0..=u1).map(|i| at(i, g.nu, g.u)).collect(), (v0..=v1).map(|j| at(j, g.nv, g.v)).collect())
 }
 
-/// A piece's grid block and its line ranges, if it is one.
-fn as_block(piece: &Piece) -> Option<(&Grid, (i64, i64), (i64, i64))> {
+/// Grid lines from the first to the last, inclusive.
+type Lines = (i64, i64);
+
+/// A piece's grid block and its line ranges in u and v, if it is one.
+fn as_block(piece: &Piece) -> Option<(&Grid, Lines, Lines)> {
     match piece {
         Piece::Block { grid, u, v } => Some((grid, *u, *v)),
         Piece::Grid(g) => Some((g, (0, g.nu as i64), (0, g.nv as i64))),
@@ -105,8 +108,43 @@ fn evaluated_points(piece: &Piece) -> usize {
     }
 }
 
-/// Evaluates a batch of pieces into `out` (resized), piece after piece, on rayon's workers.
-fn evaluate_pieces(positions: Positions<'_>, batch: &[Piece], out: &mut Vec<[f32; 5]>) {
+/// The lines of one grid that a patch's blocks cover, from (`i0`, `j0`) on, with their sums.
+struct GridLines {
+    grid: Grid,
+    i0: i64,
+    j0: i64,
+    table: LineTable,
+}
+
+/// Every grid the blocks of `pieces` are on, each with the lines its blocks cover: blocks share
+/// their grid's lines, whose sums along v and u coefficients are then worked out once.
+fn grid_lines(positions: Positions<'_>, pieces: &[Piece]) -> Vec<GridLines> {
+    let mut ranges: Vec<(Grid, Lines, Lines)> = Vec::new();
+    for (g, (u0, u1), (v0, v1)) in pieces.iter().filter_map(as_block) {
+        if u1 < u0 || v1 < v0 {
+            continue;
+        }
+        let (u0, v0) = (u0.max(0), v0.max(0));
+        match ranges.iter_mut().find(|r| r.0 == *g) {
+            Some((_, u, v)) => {
+                *u = (u.0.min(u0), u.1.max(u1));
+                *v = (v.0.min(v0), v.1.max(v1));
+            }
+            None => ranges.push((*g, (u0, u1.max(u0)), (v0, v1.max(v0)))),
+        }
+    }
+    ranges
+        .into_iter()
+        .map(|(grid, u, v)| {
+            let (us, vs) = block_lines(&grid, u, v);
+            GridLines { grid, i0: u.0, j0: v.0, table: positions.line_table(us, vs) }
+        })
+        .collect()
+}
+
+/// Evaluates a batch of pieces into `out` (resized), piece after piece, on rayon's workers;
+/// blocks from their grid's `lines`.
+fn evaluate_pieces(positions: Positions<'_>, lines: &[GridLines], batch: &[Piece], out: &mut Vec<[f32; 5]>) {
     use rayon::prelude::*;
     let size = batch.iter().map(evaluated_points).sum();
     // Every entry is overwritten: no zeroing.
@@ -121,11 +159,24 @@ fn evaluate_pieces(positions: Positions<'_>, batch: &[Piece], out: &mut Vec<[f32
         chunks.push((piece, chunk));
         free = after;
     }
+    let tables: Vec<&LineTable> = lines.iter().map(|l| &l.table).collect();
+    let tables = tables.as_slice();
     chunks.into_par_iter().with_min_len(16).for_each(|(piece, chunk)| {
         let done = match piece {
-            Piece::Fan(p) | Piece::QuadStrip(p) | Piece::Line(p) => positions.points_into(p, chunk),
-            _ => as_block(piece).and_then(|(g, u, v)| {
-                let (us, vs) = block_lines(g, u, v);
+            Piece::Fan(p) | Piece::QuadStrip(p) | Piece::Line(p) => positions.points_into_with(p, chunk, tables),
+            _ => as_block(piece).and_then(|(g, (u0, u1), (v0, v1))| {
+                if let Some(l) = lines.iter().find(|l| l.grid == *g) {
+                    let width = usize::try_from(u1 - u0 + 1).unwrap_or(0).max(1);
+                    let columns: Vec<usize> = (u0..=u1).map(|i| (i.max(0) - l.i0) as usize).collect();
+                    for (row, j) in chunk.chunks_exact_mut(width).zip(v0..) {
+                        let j = (j.max(0) - l.j0) as usize;
+                        for (slot, &i) in row.iter_mut().zip(&columns) {
+                            *slot = positions.table_at(&l.table, i, j);
+                        }
+                    }
+                    return Some(());
+                }
+                let (us, vs) = block_lines(g, (u0, u1), (v0, v1));
                 positions.grid_into(&us, &vs, chunk)
             }),
         };
@@ -164,14 +215,16 @@ pub(crate) fn tessellate_pieces_sunk(
 ) {
     let [current, next] = buffers;
     let batches = piece_batches(pieces);
+    let lines = grid_lines(positions, pieces);
+    let lines = lines.as_slice();
     if let Some(first) = batches.first() {
-        evaluate_pieces(positions, first, current);
+        evaluate_pieces(positions, lines, first, current);
     }
     for (k, batch) in batches.iter().enumerate() {
         rayon::in_place_scope(|scope| {
             if let Some(following) = batches.get(k + 1) {
                 let next = &mut *next;
-                scope.spawn(move |_| evaluate_pieces(positions, following, next));
+                scope.spawn(move |_| evaluate_pieces(positions, lines, following, next));
             }
             issue_pieces(gl, sinks, batch, current);
         });
