@@ -101,16 +101,32 @@ fn surface(gl: &mut Gl, n: GLUnurbs, shape: &str) {
 /// A bilinear colour map over [0, 1]².
 const COLOURS: [f32; 16] = [1.0, 0.0, 0.0, 1.0, 0.0, 1.0, 0.0, 1.0, 0.0, 0.0, 1.0, 1.0, 1.0, 1.0, 0.0, 0.5];
 
-fn callbacks(gl: &mut Gl, n: GLUnurbs, normals: bool, colour: bool) -> Rc<RefCell<String>> {
+/// How a run prints: as trimcases.c, or every vertex value's bits (with `slow`, a texture
+/// coordinate callback is registered too, which no case has a map for: it adds nothing, but
+/// takes the vertices off the fast path that evaluates them ahead on the thread pool).
+#[derive(Clone, Copy, PartialEq)]
+enum Print {
+    AsGlu,
+    Bits { slow: bool },
+}
+
+fn callbacks(gl: &mut Gl, n: GLUnurbs, normals: bool, colour: bool, print: Print) -> Rc<RefCell<String>> {
     let out = Rc::new(RefCell::new(String::new()));
     let o = Rc::clone(&out);
     let begin = NurbsCallback::begin(move |_, t| o.borrow_mut().push_str(&format!("glBegin({})\n", prim(t))));
     gl.glu_nurbs_callback(n, GLU_NURBS_BEGIN, Some(begin));
     let o = Rc::clone(&out);
-    let vertex = NurbsCallback::vertex(move |_, v| {
-        o.borrow_mut().push_str(&format!("glVertex3f ({:.3}, {:.3}, {:.3})\n", v[0], v[1], v[2]))
-    });
+    let vertex = if print == Print::AsGlu {
+        NurbsCallback::vertex(move |_, v| {
+            o.borrow_mut().push_str(&format!("glVertex3f ({:.3}, {:.3}, {:.3})\n", v[0], v[1], v[2]))
+        })
+    } else {
+        NurbsCallback::vertex(move |_, v| o.borrow_mut().push_str(&format!("{:08x?}\n", v.iter().map(|x| x.to_bits()))))
+    };
     gl.glu_nurbs_callback(n, GLU_NURBS_VERTEX, Some(vertex));
+    if print == (Print::Bits { slow: true }) {
+        gl.glu_nurbs_callback(n, GLU_NURBS_TEXTURE_COORD, Some(NurbsCallback::tex_coord(|_, _| {})));
+    }
     if normals {
         let o = Rc::clone(&out);
         let normal = NurbsCallback::normal(move |_, v| {
@@ -135,6 +151,10 @@ fn callbacks(gl: &mut Gl, n: GLUnurbs, normals: bool, colour: bool) -> Rc<RefCel
 
 /// Draws a case's inputs through gleval and prints the callbacks as trimcases.c does.
 fn run(inputs: &[String]) -> String {
+    run_printing(inputs, Print::AsGlu)
+}
+
+fn run_printing(inputs: &[String], print: Print) -> String {
     let head: Vec<&str> = inputs[0].split_whitespace().collect();
     // surface SHAPE METHOD TOLERANCE STEP viewport SIZE normals N colour N outline N
     assert_eq!(head[0], "surface");
@@ -154,7 +174,7 @@ fn run(inputs: &[String]) -> String {
     gl.glu_nurbs_property(n, GLU_V_STEP, step);
     let mode = if outline { GLU_OUTLINE_POLYGON } else { GLU_FILL };
     gl.glu_nurbs_property(n, GLU_DISPLAY_MODE, mode as f32);
-    let out = callbacks(&mut gl, n, normals, colour);
+    let out = callbacks(&mut gl, n, normals, colour, print);
     gl.matrix_mode(GL_PROJECTION);
     gl.load_identity();
     gl.glu_perspective(45.0, 1.0, 3.0, 8.0);
@@ -226,4 +246,20 @@ fn trimmed_tessellation_is_glus_line_for_line_without_fallback() {
         }
     }
     assert!(diffs.is_empty(), "{} cases:\n{}", diffs.len(), diffs.join("\n"));
+}
+
+/// With only begin, vertex and end callbacks gleval evaluates the vertices on the thread pool
+/// ahead of the callbacks: every case's vertices are those of the vertex-by-vertex path, to
+/// the bit (x, y, z, u, v).
+#[test]
+fn vertices_evaluated_ahead_are_the_exact_paths_to_the_bit() {
+    let mut diffs = Vec::new();
+    for case in cases() {
+        let fast = run_printing(&case.inputs, Print::Bits { slow: false });
+        let slow = run_printing(&case.inputs, Print::Bits { slow: true });
+        if fast != slow {
+            diffs.push(case.name.clone());
+        }
+    }
+    assert!(diffs.is_empty(), "{} cases differ: {}", diffs.len(), diffs.join(", "));
 }

@@ -6,7 +6,7 @@
 //! the head of its list); in renderer mode each patch is drawn as it comes.
 
 use super::patches::{load_patch, restore_polygon_mode, save_polygon_mode};
-use super::slicer::output::{render_pieces, tessellate_pieces};
+use super::slicer::output::{render_pieces, tessellate_pieces, tessellate_pieces_sunk};
 use super::slicer::split::{leaves, Part, MAX_SUBDIVISIONS};
 use super::slicer::vertex::PatchVertices;
 use super::slicer::{outline_rect, slice_rect, Grid, Piece};
@@ -121,13 +121,26 @@ pub(crate) fn grid_patches(patches: &[PatchGrid]) -> Vec<SlicedPatch> {
     patches.iter().map(|p| SlicedPatch { grid: *p, pieces: vec![Piece::Grid(glu_grid(p))] }).collect()
 }
 
-/// The patches through the callbacks, last patch first.
+/// The patches through the callbacks, last patch first. With only begin, vertex and end
+/// callbacks set, the positions are evaluated on rayon's workers ahead of the callbacks
+/// ([`tessellate_pieces_sunk`]).
 pub(crate) fn tessellate_sliced(gl: &mut Gl, obj: &mut NurbsObject, surface: &Surface, patches: &[SlicedPatch]) {
+    let mut buffers = std::mem::take(&mut obj.vertex_scratch);
     for patch in patches.iter().rev() {
-        if let Some(maps) = PatchVertices::new(obj, surface, patch.grid.u, patch.grid.v) {
-            tessellate_pieces(gl, obj, &maps, &patch.pieces);
+        let Some(maps) = PatchVertices::new(obj, surface, patch.grid.u, patch.grid.v) else { continue };
+        let positions = maps.positions();
+        match obj.callbacks.sinks() {
+            Some(mut sinks) if !positions.empty() => {
+                if let Some(mut plain) = sinks.plain() {
+                    tessellate_pieces_sunk(gl, &mut plain, positions, &patch.pieces, &mut buffers);
+                } else {
+                    tessellate_pieces_sunk(gl, &mut sinks, positions, &patch.pieces, &mut buffers);
+                }
+            }
+            _ => tessellate_pieces(gl, obj, &maps, &patch.pieces),
         }
     }
+    obj.vertex_scratch = buffers;
 }
 
 /// The patches through the GL evaluators, each after its maps, in a `GL_EVAL_BIT` push with

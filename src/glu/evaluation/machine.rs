@@ -304,6 +304,11 @@ impl PatchMachine {
         Some(())
     }
 
+    /// The machine's positions alone, without its caches: shareable between threads.
+    pub fn positions(&self) -> Positions<'_> {
+        Positions { k: self.k, u: self.u, v: self.v, uorder: self.uorder, vorder: self.vorder, points: &self.points }
+    }
+
     /// The u coefficients of every value of `us`, for [`Self::position_row`].
     pub fn u_coefficients(&self, us: &[f32]) -> Vec<[f32; MAX_ORDER]> {
         us.iter().map(|&u| coefficients(self.uorder, (u - self.u.0) / (self.u.1 - self.u.0)).0).collect()
@@ -312,6 +317,160 @@ impl PatchMachine {
     /// The position (divided by w for k = 4) of a sample: GLU's `inDoDomain2EM`.
     pub fn position_of(&self, s: &MachineSample) -> [f32; 3] {
         project(&s.point, self.k)
+    }
+}
+
+/// A [`PatchMachine`]'s positions (x, y, z divided by w for k = 4) with nothing cached, so
+/// that threads can share it: each point's arithmetic is [`PatchMachine::sample`]'s followed
+/// by [`PatchMachine::position_of`], to the bit. `None` on an empty patch.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Positions<'a> {
+    k: usize,
+    u: (f32, f32),
+    v: (f32, f32),
+    uorder: usize,
+    vorder: usize,
+    points: &'a [f32],
+}
+
+/// A grid's lines with their row sums and u coefficients (see [`Positions::line_table`]).
+#[derive(Clone, Debug)]
+pub(crate) struct LineTable {
+    pub us: Vec<f32>,
+    pub vs: Vec<f32>,
+    rows: Vec<[[f32; 4]; MAX_ORDER]>,
+    ucs: Vec<[f32; MAX_ORDER]>,
+    /// Where each line is, by its parameter's bits.
+    uindex: HashMap<u32, usize, BuildHasherDefault<BitsHasher>>,
+    vindex: HashMap<u32, usize, BuildHasherDefault<BitsHasher>>,
+}
+
+impl Positions<'_> {
+    /// Whether the patch is empty (GLU evaluates nothing on it).
+    pub fn empty(&self) -> bool {
+        self.u.1 == self.u.0 || self.v.1 == self.v.0
+    }
+
+    /// The sums along v of every row of control points at v (`sums_at`'s point sums).
+    fn row_sums(&self, v: f32) -> [[f32; 4]; MAX_ORDER] {
+        let t = (v - self.v.0) / (self.v.1 - self.v.0);
+        let vc = values(self.vorder, t);
+        let mut p = [[0.0f32; 4]; MAX_ORDER];
+        for (row, sums) in p.iter_mut().enumerate().take(self.uorder) {
+            for (j, sum) in sums.iter_mut().enumerate().take(self.k) {
+                let at = |col: usize| self.points[(row * self.vorder + col) * self.k + j];
+                *sum = vc[0] * at(0);
+                for col in 1..self.vorder {
+                    *sum += vc[col] * at(col);
+                }
+            }
+        }
+        p
+    }
+
+    /// The u coefficients at u.
+    fn u_values(&self, u: f32) -> [f32; MAX_ORDER] {
+        values(self.uorder, (u - self.u.0) / (self.u.1 - self.u.0))
+    }
+
+    /// The position from the row sums and the u coefficients (`combine`, then `project`).
+    #[inline]
+    fn combine(&self, p: &[[f32; 4]; MAX_ORDER], uc: &[f32; MAX_ORDER]) -> [f32; 3] {
+        // Each component's sum runs over the rows in GLU's order, from zero as `combine`'s.
+        let mut point = [0.0f32; 4];
+        for (w, sums) in uc.iter().zip(p).take(self.uorder) {
+            for (c, s) in point.iter_mut().zip(sums) {
+                *c += w * s;
+            }
+        }
+        project(&point, self.k)
+    }
+
+    /// The position at (u, v) as [x, y, z, u, v].
+    #[cfg(test)]
+    pub fn at(&self, u: f32, v: f32) -> Option<[f32; 5]> {
+        if self.empty() {
+            return None;
+        }
+        let q = self.combine(&self.row_sums(v), &self.u_values(u));
+        Some([q[0], q[1], q[2], u, v])
+    }
+
+    #[cfg(test)]
+    /// The positions at (u, v) for every point of `uvs`, into `out` (as long), a v row's sums
+    /// kept while consecutive points share it.
+    #[cfg(test)]
+    pub fn points_into(&self, uvs: &[[f32; 2]], out: &mut [[f32; 5]]) -> Option<()> {
+        if self.empty() {
+            return None;
+        }
+        let mut row: Option<(u32, [[f32; 4]; MAX_ORDER])> = None;
+        for (&[u, v], slot) in uvs.iter().zip(out) {
+            let sums = match &row {
+                Some((bits, sums)) if *bits == v.to_bits() => sums,
+                _ => &row.insert((v.to_bits(), self.row_sums(v))).1,
+            };
+            let q = self.combine(sums, &self.u_values(u));
+            *slot = [q[0], q[1], q[2], u, v];
+        }
+        Some(())
+    }
+
+    /// The row sums and u coefficients of the grid lines `us` × `vs`, worked out on rayon's
+    /// workers, for [`LineTable::at`].
+    pub fn line_table(&self, us: Vec<f32>, vs: Vec<f32>) -> LineTable {
+        use rayon::prelude::*;
+        let rows = vs.par_iter().with_min_len(8).map(|&v| self.row_sums(v)).collect();
+        let ucs = us.par_iter().with_min_len(8).map(|&u| self.u_values(u)).collect();
+        let index = |values: &[f32]| values.iter().zip(0..).map(|(x, k)| (x.to_bits(), k)).collect();
+        LineTable { uindex: index(&us), vindex: index(&vs), us, vs, rows, ucs }
+    }
+
+    /// [`Self::points_into`], the sums of points on the lines of `tables` (made by
+    /// [`Self::line_table`] on this patch) taken from there: the same bits.
+    pub fn points_into_with(&self, uvs: &[[f32; 2]], out: &mut [[f32; 5]], tables: &[&LineTable]) -> Option<()> {
+        if self.empty() {
+            return None;
+        }
+        let mut row: Option<(u32, [[f32; 4]; MAX_ORDER])> = None;
+        for (&[u, v], slot) in uvs.iter().zip(out) {
+            let on_line = tables.iter().find_map(|t| Some(&t.rows[*t.vindex.get(&v.to_bits())?]));
+            let sums = match (on_line, &row) {
+                (Some(sums), _) => sums,
+                (None, Some((bits, sums))) if *bits == v.to_bits() => sums,
+                (None, _) => &row.insert((v.to_bits(), self.row_sums(v))).1,
+            };
+            let q = match tables.iter().find_map(|t| Some(&t.ucs[*t.uindex.get(&u.to_bits())?])) {
+                Some(uc) => self.combine(sums, uc),
+                None => self.combine(sums, &self.u_values(u)),
+            };
+            *slot = [q[0], q[1], q[2], u, v];
+        }
+        Some(())
+    }
+
+    /// The position at grid point (i, j) of `table` (made by [`Self::line_table`] on this
+    /// patch) as [x, y, z, u, v]: [`Self::points_into`]'s bits at (us[i], vs[j]).
+    #[inline]
+    pub fn table_at(&self, table: &LineTable, i: usize, j: usize) -> [f32; 5] {
+        let q = self.combine(&table.rows[j], &table.ucs[i]);
+        [q[0], q[1], q[2], table.us[i], table.vs[j]]
+    }
+
+    /// The positions at every (us[i], vs[j]), j outer, into `out` (`us.len() × vs.len()`).
+    pub fn grid_into(&self, us: &[f32], vs: &[f32], out: &mut [[f32; 5]]) -> Option<()> {
+        if self.empty() || us.is_empty() {
+            return (!self.empty()).then_some(());
+        }
+        let ucs: Vec<[f32; MAX_ORDER]> = us.iter().map(|&u| self.u_values(u)).collect();
+        for (&v, row) in vs.iter().zip(out.chunks_exact_mut(us.len())) {
+            let sums = self.row_sums(v);
+            for ((slot, &u), uc) in row.iter_mut().zip(us).zip(&ucs) {
+                let q = self.combine(&sums, uc);
+                *slot = [q[0], q[1], q[2], u, v];
+            }
+        }
+        Some(())
     }
 }
 
@@ -408,6 +567,21 @@ fn coefficients(order: usize, t: f32) -> ([f32; MAX_ORDER], [f32; MAX_ORDER]) {
     (c, d)
 }
 
+/// [`coefficients`]' first half alone: the same steps, the same bits, no derivatives.
+fn values(order: usize, t: f32) -> [f32; MAX_ORDER] {
+    let mut c = [0.0f32; MAX_ORDER];
+    let one_minus = 1.0 - t;
+    if order == 1 {
+        c[0] = 1.0;
+        return c;
+    }
+    (c[0], c[1]) = (one_minus, t);
+    for i in 2..order {
+        raise(&mut c, i, t, one_minus);
+    }
+    c
+}
+
 /// One order up: the `i` coefficients of order i become the i + 1 of order i + 1.
 fn raise(c: &mut [f32; MAX_ORDER], i: usize, t: f32, one_minus: f32) {
     let mut old = c[0] * t;
@@ -470,6 +644,59 @@ mod tests {
                 let point_bits = |p: [f32; 4]| p.map(f32::to_bits);
                 assert_eq!(point_bits(lean[j * us.len() + i].point), point_bits(fresh.point), "{k} {uo}x{vo} lean");
                 assert_eq!(bits(&shared.sample(us[i], vs[j]).unwrap()), bits(&fresh), "{k} {uo}x{vo} sample {n}");
+            }
+        }
+    }
+
+    /// The shareable positions give the bits of a sample's position, point by point, along
+    /// point lists and over grids: rational and not, orders 1 to 7, on and off the patch.
+    #[test]
+    fn positions_match_sampled_positions() {
+        for (k, uo, vo) in [(3, 4, 4), (4, 3, 5), (3, 1, 7), (2, 7, 2), (4, 4, 1), (1, 2, 3)] {
+            let pts: Vec<f64> = (0..uo * vo * k)
+                .map(|x| ((x * 37 % 23) as f64) * 0.3 - 2.5 + if x % k == 3 { 4.0 } else { 0.0 })
+                .collect();
+            let machine = PatchMachine::new(&pts, k, (uo, vo), (0.5, 2.0), (-1.0, 1.0)).unwrap();
+            let lean = machine.clone().without_partials();
+            let positions = machine.positions();
+            let us = [0.5, 0.75, 1.1, 2.0, 0.3, 1.1, 0.6180339];
+            let vs = [-1.0, 0.2, 1.0, 0.2, 1.7, -0.333];
+            let expect = |u: f32, v: f32| {
+                let p = machine.position_of(&machine.sample(u, v).unwrap());
+                assert_eq!(p.map(f32::to_bits), lean.position_of(&lean.sample(u, v).unwrap()).map(f32::to_bits));
+                [p[0], p[1], p[2], u, v].map(f32::to_bits)
+            };
+            let mut grid = vec![[0.0; 5]; us.len() * vs.len()];
+            positions.grid_into(&us, &vs, &mut grid).unwrap();
+            let uvs: Vec<[f32; 2]> = vs.iter().flat_map(|&v| us.iter().map(move |&u| [u, v])).collect();
+            let mut listed = vec![[0.0; 5]; uvs.len()];
+            positions.points_into(&uvs, &mut listed).unwrap();
+            let table = positions.line_table(us.to_vec(), vs.to_vec());
+            let some_lines = positions.line_table(vec![0.75, 1.1], vec![0.2]);
+            let mut looked_up = vec![[0.0; 5]; uvs.len()];
+            positions.points_into_with(&uvs, &mut looked_up, &[&some_lines]).unwrap();
+            for (n, &[u, v]) in uvs.iter().enumerate() {
+                let (i, j) = (n % us.len(), n / us.len());
+                assert_eq!(positions.table_at(&table, i, j).map(f32::to_bits), expect(u, v), "{k} {uo}x{vo} table");
+                assert_eq!(grid[n].map(f32::to_bits), expect(u, v), "{k} {uo}x{vo} grid ({u}, {v})");
+                assert_eq!(listed[n].map(f32::to_bits), expect(u, v), "{k} {uo}x{vo} list ({u}, {v})");
+                assert_eq!(looked_up[n].map(f32::to_bits), expect(u, v), "{k} {uo}x{vo} looked up ({u}, {v})");
+                assert_eq!(positions.at(u, v).unwrap().map(f32::to_bits), expect(u, v), "{k} {uo}x{vo} at");
+            }
+        }
+        let flat = PatchMachine::new(&[0.0; 12], 3, (2, 2), (1.0, 1.0), (0.0, 1.0)).unwrap();
+        assert!(flat.positions().at(1.0, 0.5).is_none() && flat.sample(1.0, 0.5).is_none());
+    }
+
+    #[test]
+    fn values_are_the_coefficients() {
+        for order in 1..=MAX_ORDER {
+            for t in [0.0f32, 0.3, 0.5, 0.77, 1.0, -0.2, 1.3] {
+                assert_eq!(
+                    values(order, t).map(f32::to_bits),
+                    coefficients(order, t).0.map(f32::to_bits),
+                    "{order} {t}"
+                );
             }
         }
     }

@@ -8,6 +8,8 @@ use super::vertex::PatchVertices;
 use super::{Grid, Piece};
 use crate::gl::consts::*;
 use crate::gl::Gl;
+use crate::glu::evaluation::machine::{LineTable, Positions};
+use crate::glu::model::callbacks::StripSink;
 use crate::glu::model::object::NurbsObject;
 
 /// The pieces of one patch through the callbacks, each vertex as GLU's `inDoEvalCoord2EM`
@@ -68,6 +70,205 @@ fn tessellate_block(
                 emit(gl, obj, i, j);
             }
             obj.callbacks.end(gl);
+        }
+    }
+}
+
+/// Vertices per batch of pieces on the fast path: small enough that evaluating the next batch
+/// overlaps issuing this one's callbacks, large enough to amortise the hand-over.
+const BATCH_POINTS: usize = 1 << 14;
+
+/// The grid lines a block covers, as [`tessellate_block`] computes them.
+fn block_lines(g: &Grid, (u0, u1): (i64, i64), (v0, v1): (i64, i64)) -> (Vec<f32>, Vec<f32>) {
+    let at = |x: i64, n: usize, r: (f32, f32)| super::line(r, n, x.max(0) as usize);
+    ((u0..=u1).map(|i| at(i, g.nu, g.u)).collect(), (v0..=v1).map(|j| at(j, g.nv, g.v)).collect())
+}
+
+/// Grid lines from the first to the last, inclusive.
+type Lines = (i64, i64);
+
+/// A piece's grid block and its line ranges in u and v, if it is one.
+fn as_block(piece: &Piece) -> Option<(&Grid, Lines, Lines)> {
+    match piece {
+        Piece::Block { grid, u, v } => Some((grid, *u, *v)),
+        Piece::Grid(g) => Some((g, (0, g.nu as i64), (0, g.nv as i64))),
+        _ => None,
+    }
+}
+
+/// How many positions a piece's evaluation holds: its points, or its block's grid points.
+fn evaluated_points(piece: &Piece) -> usize {
+    match (piece, as_block(piece)) {
+        (Piece::Fan(p) | Piece::QuadStrip(p) | Piece::Line(p), _) => p.len(),
+        (_, Some((_, u, v))) => {
+            let lines = |(a, b): (i64, i64)| usize::try_from(b - a + 1).unwrap_or(0);
+            lines(u).saturating_mul(lines(v))
+        }
+        _ => 0,
+    }
+}
+
+/// The lines of one grid that a patch's blocks cover, from (`i0`, `j0`) on, with their sums.
+struct GridLines {
+    grid: Grid,
+    i0: i64,
+    j0: i64,
+    table: LineTable,
+}
+
+/// Every grid the blocks of `pieces` are on, each with the lines its blocks cover: blocks share
+/// their grid's lines, whose sums along v and u coefficients are then worked out once.
+fn grid_lines(positions: Positions<'_>, pieces: &[Piece]) -> Vec<GridLines> {
+    let mut ranges: Vec<(Grid, Lines, Lines)> = Vec::new();
+    for (g, (u0, u1), (v0, v1)) in pieces.iter().filter_map(as_block) {
+        if u1 < u0 || v1 < v0 {
+            continue;
+        }
+        let (u0, v0) = (u0.max(0), v0.max(0));
+        match ranges.iter_mut().find(|r| r.0 == *g) {
+            Some((_, u, v)) => {
+                *u = (u.0.min(u0), u.1.max(u1));
+                *v = (v.0.min(v0), v.1.max(v1));
+            }
+            None => ranges.push((*g, (u0, u1.max(u0)), (v0, v1.max(v0)))),
+        }
+    }
+    ranges
+        .into_iter()
+        .map(|(grid, u, v)| {
+            let (us, vs) = block_lines(&grid, u, v);
+            GridLines { grid, i0: u.0, j0: v.0, table: positions.line_table(us, vs) }
+        })
+        .collect()
+}
+
+/// Evaluates a batch of pieces into `out` (resized), piece after piece, on rayon's workers;
+/// blocks from their grid's `lines`.
+fn evaluate_pieces(positions: Positions<'_>, lines: &[GridLines], batch: &[Piece], out: &mut Vec<[f32; 5]>) {
+    use rayon::prelude::*;
+    let size = batch.iter().map(evaluated_points).sum();
+    // Every entry is overwritten: no zeroing.
+    if out.len() < size {
+        out.resize(size, [0.0; 5]);
+    }
+    out.truncate(size);
+    let mut chunks = Vec::with_capacity(batch.len());
+    let mut free = out.as_mut_slice();
+    for piece in batch {
+        let (chunk, after) = free.split_at_mut(evaluated_points(piece));
+        chunks.push((piece, chunk));
+        free = after;
+    }
+    let tables: Vec<&LineTable> = lines.iter().map(|l| &l.table).collect();
+    let tables = tables.as_slice();
+    chunks.into_par_iter().with_min_len(16).for_each(|(piece, chunk)| {
+        let done = match piece {
+            Piece::Fan(p) | Piece::QuadStrip(p) | Piece::Line(p) => positions.points_into_with(p, chunk, tables),
+            _ => as_block(piece).and_then(|(g, (u0, u1), (v0, v1))| {
+                if let Some(l) = lines.iter().find(|l| l.grid == *g) {
+                    let width = usize::try_from(u1 - u0 + 1).unwrap_or(0).max(1);
+                    let columns: Vec<usize> = (u0..=u1).map(|i| (i.max(0) - l.i0) as usize).collect();
+                    for (row, j) in chunk.chunks_exact_mut(width).zip(v0..) {
+                        let j = (j.max(0) - l.j0) as usize;
+                        for (slot, &i) in row.iter_mut().zip(&columns) {
+                            *slot = positions.table_at(&l.table, i, j);
+                        }
+                    }
+                    return Some(());
+                }
+                let (us, vs) = block_lines(g, (u0, u1), (v0, v1));
+                positions.grid_into(&us, &vs, chunk)
+            }),
+        };
+        debug_assert!(done.is_some(), "positions of an empty patch");
+    });
+}
+
+/// Consecutive runs of pieces of at most [`BATCH_POINTS`] evaluated points (at least one each).
+fn piece_batches(pieces: &[Piece]) -> Vec<&[Piece]> {
+    let mut out = Vec::new();
+    let mut rest = pieces;
+    while !rest.is_empty() {
+        let mut take = 1;
+        let mut points = evaluated_points(&rest[0]);
+        while take < rest.len() && points.saturating_add(evaluated_points(&rest[take])) <= BATCH_POINTS {
+            points += evaluated_points(&rest[take]);
+            take += 1;
+        }
+        let (batch, tail) = rest.split_at(take);
+        out.push(batch);
+        rest = tail;
+    }
+    out
+}
+
+/// [`tessellate_pieces`] when only begin, vertex and end callbacks are set and the patch is not
+/// empty: the same primitives and vertices, the positions evaluated a batch of pieces ahead on
+/// rayon's workers while this thread issues the previous batch's callbacks (which need not be
+/// `Send`). `buffers` are reused between calls.
+pub(crate) fn tessellate_pieces_sunk(
+    gl: &mut Gl,
+    sinks: &mut impl StripSink,
+    positions: Positions<'_>,
+    pieces: &[Piece],
+    buffers: &mut [Vec<[f32; 5]>; 2],
+) {
+    let [current, next] = buffers;
+    let batches = piece_batches(pieces);
+    let lines = grid_lines(positions, pieces);
+    let lines = lines.as_slice();
+    if let Some(first) = batches.first() {
+        evaluate_pieces(positions, lines, first, current);
+    }
+    for (k, batch) in batches.iter().enumerate() {
+        rayon::in_place_scope(|scope| {
+            if let Some(following) = batches.get(k + 1) {
+                let next = &mut *next;
+                scope.spawn(move |_| evaluate_pieces(positions, lines, following, next));
+            }
+            issue_pieces(gl, sinks, batch, current);
+        });
+        std::mem::swap(current, next);
+    }
+}
+
+/// The callbacks of a batch of pieces whose positions are in `evaluated` (piece after piece).
+fn issue_pieces(gl: &mut Gl, sinks: &mut impl StripSink, batch: &[Piece], evaluated: &[[f32; 5]]) {
+    let mut start = 0;
+    for piece in batch {
+        let points = &evaluated[start..start + evaluated_points(piece)];
+        start += points.len();
+        match as_block(piece) {
+            None => {
+                sinks.begin(gl, kind(piece));
+                for p in points {
+                    sinks.vertex(gl, p);
+                }
+                sinks.end(gl);
+            }
+            Some((g, (u0, u1), (v0, v1))) => {
+                let width = usize::try_from(u1 - u0 + 1).unwrap_or(0);
+                let at = |i: i64, j: i64| &points[(j - v0) as usize * width + (i - u0) as usize];
+                if g.nu >= g.nv {
+                    for i in u0..u1 {
+                        sinks.begin(gl, GL_QUAD_STRIP);
+                        for j in (v0..=v1).rev() {
+                            sinks.vertex(gl, at(i, j));
+                            sinks.vertex(gl, at(i + 1, j));
+                        }
+                        sinks.end(gl);
+                    }
+                } else {
+                    for j in v0..v1 {
+                        sinks.begin(gl, GL_QUAD_STRIP);
+                        for i in (u0..=u1).rev() {
+                            sinks.vertex(gl, at(i, j + 1));
+                            sinks.vertex(gl, at(i, j));
+                        }
+                        sinks.end(gl);
+                    }
+                }
+            }
         }
     }
 }

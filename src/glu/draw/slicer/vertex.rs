@@ -41,6 +41,12 @@ impl PatchVertices {
         Some(Self { position, attributes, has_normal_map, auto_normal })
     }
 
+    /// The position map's machine, shareable between threads (the only map whose values reach
+    /// the callbacks when only begin, vertex and end callbacks are set).
+    pub fn positions(&self) -> crate::glu::evaluation::machine::Positions<'_> {
+        self.position.positions()
+    }
+
     /// The callbacks of the vertex at (u, v).
     pub fn emit(&self, gl: &mut Gl, obj: &mut NurbsObject, u: f32, v: f32) {
         self.emit_with(gl, obj, (u, v), |machine| machine.sample(u, v));
