@@ -212,6 +212,8 @@ mod tests {
         assert_eq!(gl.get_error(), GL_INVALID_VALUE);
         gl.copy_pixels(0, 0, 1, 1, 0x1234);
         assert_eq!(gl.get_error(), GL_INVALID_ENUM);
+        // A window without a stencil buffer (a context with one copies: pixel_properties.rs).
+        gl.set_buffer_config(crate::gl::BufferConfig { stencil_bits: 0, accum_bits: 0, double: false });
         gl.copy_pixels(0, 0, 1, 1, GL_STENCIL);
         assert_eq!(gl.get_error(), GL_INVALID_OPERATION);
         gl.begin(GL_POINTS);
