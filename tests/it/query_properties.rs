@@ -202,9 +202,12 @@ proptest! {
         let mut out = vec![0xEEu8; len + 64];
         gl.get_tex_image(GL_TEXTURE_2D, 0, format, type_, &mut out);
         prop_assert!(out[len..].iter().all(|&b| b == 0xEE));
-        let mut short = vec![0xEEu8; len - 1];
-        gl.get_tex_image(GL_TEXTURE_2D, 0, format, type_, &mut short);
-        prop_assert_eq!(gl.get_error(), GL_INVALID_VALUE);
+        // One byte short (an empty slice is C's NULL, which Mesa answers by doing nothing).
+        if len > 1 {
+            let mut short = vec![0xEEu8; len - 1];
+            gl.get_tex_image(GL_TEXTURE_2D, 0, format, type_, &mut short);
+            prop_assert_eq!(gl.get_error(), GL_INVALID_VALUE);
+        }
         let stipple_len = gl.polygon_stipple_len();
         let mut mask = vec![0xEEu8; stipple_len + 64];
         gl.get_polygon_stipple(&mut mask);
