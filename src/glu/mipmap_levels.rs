@@ -188,14 +188,8 @@ impl Gl {
         data: &[P],
     ) -> GLint {
         let _ = (internal_format, data);
-        if let Err(code) = check_mipmap_args(format, type_) {
+        if let Err(code) = check_3d_args(format, type_, [width, height, depth]) {
             return code;
-        }
-        if width < 1 || height < 1 || depth < 1 {
-            return GLU_INVALID_VALUE as GLint;
-        }
-        if type_ == GL_BITMAP {
-            return GLU_INVALID_ENUM as GLint;
         }
         self.no_3d_textures(target);
         0
@@ -219,14 +213,8 @@ impl Gl {
         data: &[P],
     ) -> GLint {
         let _ = (internal_format, data);
-        if let Err(code) = check_mipmap_args(format, type_) {
+        if let Err(code) = check_3d_args(format, type_, [width, height, depth]) {
             return code;
-        }
-        if width < 1 || height < 1 || depth < 1 {
-            return GLU_INVALID_VALUE as GLint;
-        }
-        if type_ == GL_BITMAP {
-            return GLU_INVALID_ENUM as GLint;
         }
         let levels = compute_log(width).max(compute_log(height)).max(compute_log(depth)).saturating_add(user_level);
         if !legal_levels(user_level, base_level, max_level, levels) {
@@ -243,6 +231,19 @@ impl Gl {
         let _ = target;
         self.tex_image_1d(GL_TEXTURE_3D, 0, GL_RGBA as GLint, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, &[0u8; 4]);
     }
+}
+
+/// The checks the 3D builders share, in GLU's order: format and type, then a side under 1
+/// (`GLU_INVALID_VALUE`), then `GL_BITMAP`, which has no 3D form (`GLU_INVALID_ENUM`).
+fn check_3d_args(format: GLenum, type_: GLenum, sides: [GLsizei; 3]) -> Result<(), GLint> {
+    check_mipmap_args(format, type_)?;
+    if sides.iter().any(|&side| side < 1) {
+        return Err(GLU_INVALID_VALUE as GLint);
+    }
+    if type_ == GL_BITMAP {
+        return Err(GLU_INVALID_ENUM as GLint);
+    }
+    Ok(())
 }
 
 #[cfg(test)]
