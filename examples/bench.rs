@@ -5,7 +5,9 @@
 //! `cargo run --release --example bench [case ...]` (`name*`: the cases starting with `name`).
 //! With `BENCH_COLD=1` each case runs once, untimed warm-up skipped, and prints as
 //! `cold_<case>`: the first run of a process, its memory fresh from the kernel (what
-//! `bench/compare.sh` runs in new processes for the first `eval_mesh2`).
+//! `bench/compare.sh` runs in new processes for the first `eval_mesh2`). With `BENCH_BEST=1`
+//! the fastest run is reported instead of the median: a comparison of two builds on a machine
+//! that other work shares.
 
 #[path = "../bench/workloads.rs"]
 mod workloads;
@@ -23,6 +25,10 @@ fn median_seconds(runs: usize, run: &mut dyn FnMut()) -> f64 {
         })
         .collect();
     t.sort_by(f64::total_cmp);
+    // The fastest run where the machine is shared: the other runs measure the other load.
+    if std::env::var_os("BENCH_BEST").is_some() {
+        return t[0];
+    }
     t[t.len() / 2]
 }
 

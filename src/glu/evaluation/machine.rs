@@ -289,17 +289,13 @@ impl PatchMachine {
                 }
             }
         }
-        for ((slot, &u), uc) in out.iter_mut().zip(us).zip(ucoeffs) {
-            // Each component's sum runs over the rows in GLU's order; the four components side
-            // by side (unused ones stay zero) so that they share one vector register.
-            let mut point = [0.0f32; 4];
-            for (w, sums) in uc.iter().zip(&p).take(self.uorder) {
-                for (c, s) in point.iter_mut().zip(sums) {
-                    *c += w * s;
-                }
-            }
-            let q = project(&point, self.k);
-            *slot = [q[0], q[1], q[2], u, v];
+        match self.uorder {
+            2 => row_along_u::<2>(&p, self.k, v, us, ucoeffs, out),
+            3 => row_along_u::<3>(&p, self.k, v, us, ucoeffs, out),
+            4 => row_along_u::<4>(&p, self.k, v, us, ucoeffs, out),
+            5 => row_along_u::<5>(&p, self.k, v, us, ucoeffs, out),
+            6 => row_along_u::<6>(&p, self.k, v, us, ucoeffs, out),
+            _ => row_along_u::<MAX_ORDER>(&p[..self.uorder], self.k, v, us, ucoeffs, out),
         }
         Some(())
     }
@@ -567,6 +563,33 @@ fn coefficients(order: usize, t: f32) -> ([f32; MAX_ORDER], [f32; MAX_ORDER]) {
     (c, d)
 }
 
+/// The sums along u of [`PatchMachine::position_row`]: point i of the row from the row sums
+/// `p` (the first `U.min(p.len())` of them) and the u coefficients of column i. Each
+/// component's sum runs over the rows in GLU's order from zero, the four components side by
+/// side (unused ones stay zero) so that they share one vector register; `U` fixed at compile
+/// time for the usual orders so that the sum unrolls. The same bits for every `U`.
+#[inline]
+fn row_along_u<const U: usize>(
+    p: &[[f32; 4]],
+    k: usize,
+    v: f32,
+    us: &[f32],
+    ucoeffs: &[[f32; MAX_ORDER]],
+    out: &mut [[f32; 5]],
+) {
+    let p = &p[..U.min(p.len())];
+    for ((slot, &u), uc) in out.iter_mut().zip(us).zip(ucoeffs) {
+        let mut point = [0.0f32; 4];
+        for (w, sums) in uc[..p.len()].iter().zip(p) {
+            for (c, s) in point.iter_mut().zip(sums) {
+                *c += w * s;
+            }
+        }
+        let q = project(&point, k);
+        *slot = [q[0], q[1], q[2], u, v];
+    }
+}
+
 /// [`coefficients`]' first half alone: the same steps, the same bits, no derivatives.
 fn values(order: usize, t: f32) -> [f32; MAX_ORDER] {
     let mut c = [0.0f32; MAX_ORDER];
@@ -644,6 +667,32 @@ mod tests {
                 let point_bits = |p: [f32; 4]| p.map(f32::to_bits);
                 assert_eq!(point_bits(lean[j * us.len() + i].point), point_bits(fresh.point), "{k} {uo}x{vo} lean");
                 assert_eq!(bits(&shared.sample(us[i], vs[j]).unwrap()), bits(&fresh), "{k} {uo}x{vo} sample {n}");
+            }
+        }
+    }
+
+    /// A grid row through `position_row` (its sums along u unrolled for orders 2 to 6, a loop
+    /// for the others) gives the bits of each sample's position: u orders 1 to 8, rational
+    /// and not, parameters on and off the patch.
+    #[test]
+    fn position_rows_match_sampled_positions() {
+        for uo in 1..=8 {
+            for (k, vo) in [(3, 4), (4, 3), (2, 1)] {
+                let pts: Vec<f64> = (0..uo * vo * k)
+                    .map(|x| ((x * 37 % 23) as f64) * 0.3 - 2.5 + if x % k == 3 { 4.0 } else { 0.0 })
+                    .collect();
+                let machine = PatchMachine::new(&pts, k, (uo, vo), (0.5, 2.0), (-1.0, 1.0)).unwrap();
+                let us = [0.5, 0.75, 1.1, 2.0, 0.3, 1.1, 0.6180339, 2.25];
+                let ucoeffs = machine.u_coefficients(&us);
+                for v in [-1.0, 0.2, 1.0, 1.7, -0.333] {
+                    let mut row = [[0.0; 5]; 8];
+                    machine.position_row(v, &us, &ucoeffs, &mut row).unwrap();
+                    for (i, &u) in us.iter().enumerate() {
+                        let p = machine.position_of(&machine.sample(u, v).unwrap());
+                        let expected = [p[0], p[1], p[2], u, v].map(f32::to_bits);
+                        assert_eq!(row[i].map(f32::to_bits), expected, "k {k}, order {uo}x{vo}, ({u}, {v})");
+                    }
+                }
             }
         }
     }
