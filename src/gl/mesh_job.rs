@@ -9,7 +9,7 @@ use super::eval::Slot;
 use super::vertex::Vertex;
 use super::GridVertices;
 use crate::math::bezier::{horner_many, Vec4};
-use crate::math::rational::normalize;
+use crate::math::rational::{normalize, normalize_many};
 use crate::tess::{rows_per_band, run_bands, MapView, Row, RowKernel};
 use std::cell::RefCell;
 
@@ -316,10 +316,13 @@ impl MeshJob {
                 let by_points = kernel.eval_row_points(j, row, |i, p, n| {
                     positions[i] = [p[0], p[1], p[2], 1.0];
                     if *normals {
-                        normal_out[i] = normalize(n);
+                        normal_out[i] = n;
                     }
                 });
                 if by_points {
+                    if *normals {
+                        normalize_many(normal_out);
+                    }
                     continue;
                 }
             }

@@ -160,27 +160,46 @@ pub(crate) fn reduce_rows<S: Scalar>(
         rows_dv.iter_mut().take(map.uorder).for_each(|r| *r = [S::ZERO; MAX_DIM]);
         return;
     }
-    let (dim, vorder) = (map.dim, map.vorder);
+    // With partials (meshes with normals): the component loop fixed at compile time too.
+    match map.dim {
+        1 => reduce_with_partials::<S, 1>(map, bv, bv_low, rows, rows_dv),
+        2 => reduce_with_partials::<S, 2>(map, bv, bv_low, rows, rows_dv),
+        3 => reduce_with_partials::<S, 3>(map, bv, bv_low, rows, rows_dv),
+        _ => reduce_with_partials::<S, 4>(map, bv, bv_low, rows, rows_dv),
+    }
+}
+
+/// [`reduce_rows`] with partials for maps of `D` components: each sum from zero up, over j in
+/// order, the v partial's scaled by q at the end.
+fn reduce_with_partials<S: Scalar, const D: usize>(
+    map: &MapView<'_, S>,
+    bv: &[S],
+    bv_low: &[S],
+    rows: &mut [Vec4<S>],
+    rows_dv: &mut [Vec4<S>],
+) {
+    let vorder = map.vorder;
     let q = S::from_usize(vorder - 1);
-    for i in 0..map.uorder {
-        let net = &map.points[i * vorder * dim..(i + 1) * vorder * dim];
-        let mut row = [S::ZERO; MAX_DIM];
-        let mut row_dv = [S::ZERO; MAX_DIM];
-        for j in 0..vorder {
-            for c in 0..dim {
-                row[c] += bv[j] * net[j * dim + c];
+    let column = vorder * D;
+    let nets = map.points.chunks_exact(column).take(map.uorder);
+    for ((row_out, dv_out), net) in rows.iter_mut().zip(rows_dv.iter_mut()).zip(nets) {
+        let point = |j: usize| -> [S; D] { std::array::from_fn(|c| net[j * D + c]) };
+        let mut row = [S::ZERO; D];
+        let mut row_dv = [S::ZERO; D];
+        for (j, &b) in bv.iter().enumerate().take(vorder) {
+            let p = point(j);
+            for c in 0..D {
+                row[c] += b * p[c];
             }
-            if partials && j + 1 < vorder {
-                for c in 0..dim {
-                    row_dv[c] += bv_low[j] * (net[(j + 1) * dim + c] - net[j * dim + c]);
+            if j + 1 < vorder {
+                let (next, low) = (point(j + 1), bv_low[j]);
+                for c in 0..D {
+                    row_dv[c] += low * (next[c] - p[c]);
                 }
             }
         }
-        for c in 0..dim {
-            row_dv[c] *= q;
-        }
-        rows[i] = row;
-        rows_dv[i] = row_dv;
+        *row_out = std::array::from_fn(|c| if c < D { row[c] } else { S::ZERO });
+        *dv_out = std::array::from_fn(|c| if c < D { row_dv[c] * q } else { S::ZERO });
     }
 }
 
