@@ -10,8 +10,9 @@ use super::vertex::Vertex;
 use super::GridVertices;
 use crate::math::bezier::{horner_many, Vec4};
 use crate::math::rational::{normalize, normalize_many};
-use crate::tess::{rows_per_band, run_bands, MapView, Row, RowKernel};
+use crate::tess::{rows_per_band, run_bands, MapView, Row, RowBases, RowKernel};
 use std::cell::RefCell;
+use std::sync::Arc;
 
 /// Points per tile of a curve (`glEvalMesh1`): the unit of work shared out between the cores.
 const CURVE_TILE: usize = 2048;
@@ -20,7 +21,29 @@ const CURVE_TILE: usize = 2048;
 /// the row kernel's per-component passes cost more than they save on short rows.
 const POINT_BY_POINT_ROW: usize = 64;
 
+/// Basis tables kept by each thread for the meshes after (a frame of many small patches uses a
+/// few grids and orders again and again).
+const KEPT_BASES: usize = 4;
+
+/// The basis tables for these orders over this grid: kept ones where they fit (the most
+/// recently used first), else new ones, kept in place of the least recently used.
+fn shared_bases(uorder: usize, vorder: usize, us: &[f32], vs: &[f32], normals: bool) -> Arc<RowBases<f32>> {
+    BASES.with_borrow_mut(|kept| {
+        if let Some(k) = kept.iter().position(|b| b.fits(uorder, vorder, us, vs, normals)) {
+            let bases = kept.remove(k);
+            kept.insert(0, Arc::clone(&bases));
+            return bases;
+        }
+        let bases = Arc::new(RowBases::new(uorder, vorder, us, vs, normals));
+        kept.truncate(KEPT_BASES - 1);
+        kept.insert(0, Arc::clone(&bases));
+        bases
+    })
+}
+
 thread_local! {
+    /// The basis tables of the latest meshes of this thread ([`shared_bases`]).
+    static BASES: RefCell<Vec<Arc<RowBases<f32>>>> = const { RefCell::new(Vec::new()) };
     /// Row scratch of this thread, kept between meshes so that small meshes allocate nothing.
     static SCRATCH_ROWS: RefCell<Vec<Row<f32>>> = const { RefCell::new(Vec::new()) };
     /// A curve tile's values, likewise.
@@ -280,13 +303,19 @@ impl MeshJob {
         }
     }
 
-    /// A row kernel per map over the whole grid (`None` for a malformed map).
+    /// A row kernel per map over the whole grid (`None` for a malformed map), its basis tables
+    /// shared with the meshes before it of the same orders over the same grid.
     fn kernels(&self) -> Vec<(Slot, bool, Option<RowKernel<'_, f32>>)> {
         self.maps
             .iter()
             .map(|map| {
                 let normals = self.auto_normal && matches!(map.slot, Slot::Vertex3 | Slot::Vertex4);
-                (map.slot, normals, RowKernel::new(map.view(), &map.us, &map.vs, normals))
+                let view = map.view();
+                let kernel = view.is_valid().then(|| {
+                    let bases = shared_bases(map.uorder, map.vorder, &map.us, &map.vs, normals);
+                    RowKernel::with_bases(view, bases)
+                });
+                (map.slot, normals, kernel.flatten())
             })
             .collect()
     }

@@ -13,4 +13,4 @@ pub mod trim;
 
 pub(crate) use grid::MapView;
 pub use mesh::{Mesh, MeshError, MAX_MESH_VERTICES};
-pub(crate) use rows::{rows_per_band, run_bands, Row, RowKernel, MIN_POINTS_PER_THREAD};
+pub(crate) use rows::{rows_per_band, run_bands, Row, RowBases, RowKernel, MIN_POINTS_PER_THREAD};

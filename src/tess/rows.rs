@@ -13,6 +13,7 @@
 use super::grid::{reduce_rows, BasisTable, MapView};
 use crate::math::bezier::{Vec4, MAX_DIM};
 use crate::math::Scalar;
+use std::sync::Arc;
 
 /// A patch over a fixed grid, ready to evaluate any of its rows.
 #[derive(Clone, Debug)]
@@ -20,11 +21,58 @@ pub struct RowKernel<'a, S: Scalar> {
     map: MapView<'a, S>,
     nu: usize,
     normals: bool,
+    bases: Arc<RowBases<S>>,
+}
+
+/// The basis tables of a [`RowKernel`]: what depends on the grid and the orders, not on the
+/// control points, so that patches of the same orders over the same grid (a frame of many
+/// small patches) share them.
+#[derive(Debug)]
+pub struct RowBases<S: Scalar> {
+    uorder: usize,
+    vorder: usize,
+    normals: bool,
+    /// The grid's parameters, by bits (what [`RowBases::fits`] compares).
+    us: Vec<S>,
+    vs: Vec<S>,
     /// `B_a(u_i)` at `a · nu + i`.
     basis_u: Vec<S>,
     /// The order−1 basis, same layout (empty without normals).
     lower_u: Vec<S>,
     basis_v: BasisTable<S>,
+}
+
+impl<S: Scalar> RowBases<S> {
+    /// The tables of orders (`uorder`, `vorder`) over `us` × `vs`; `normals` adds the lower
+    /// orders' (for the partials).
+    #[must_use]
+    pub fn new(uorder: usize, vorder: usize, us: &[S], vs: &[S], normals: bool) -> Self {
+        let lower_u = if normals && uorder > 1 { order_major_basis(uorder - 1, us) } else { Vec::new() };
+        Self {
+            uorder,
+            vorder,
+            normals,
+            us: us.to_vec(),
+            vs: vs.to_vec(),
+            basis_u: order_major_basis(uorder, us),
+            lower_u,
+            basis_v: BasisTable::new(vorder, vs, normals),
+        }
+    }
+
+    /// Whether these are the tables [`RowBases::new`] would make of these arguments (the
+    /// parameters compared bit for bit: −0 and 0 give different bits in places).
+    #[must_use]
+    pub fn fits(&self, uorder: usize, vorder: usize, us: &[S], vs: &[S], normals: bool) -> bool {
+        let same = |a: &[S], b: &[S]| {
+            a.len() == b.len() && a.iter().zip(b).all(|(x, y)| x.to_f64().to_bits() == y.to_f64().to_bits())
+        };
+        self.uorder == uorder
+            && self.vorder == vorder
+            && self.normals == normals
+            && same(&self.us, us)
+            && same(&self.vs, vs)
+    }
 }
 
 /// One evaluated row in structure-of-arrays form.
@@ -162,15 +210,17 @@ impl<'a, S: Scalar> RowKernel<'a, S> {
         if !map.is_valid() {
             return None;
         }
-        let lower_u = if normals && map.uorder > 1 { order_major_basis(map.uorder - 1, us) } else { Vec::new() };
-        Some(Self {
-            map,
-            nu: us.len(),
-            normals,
-            basis_u: order_major_basis(map.uorder, us),
-            lower_u,
-            basis_v: BasisTable::new(map.vorder, vs, normals),
-        })
+        Self::with_bases(map, Arc::new(RowBases::new(map.uorder, map.vorder, us, vs, normals)))
+    }
+
+    /// The kernel for `map` with tables made before (for its orders: `None` otherwise, or if
+    /// the map is malformed).
+    #[must_use]
+    pub fn with_bases(map: MapView<'a, S>, bases: Arc<RowBases<S>>) -> Option<Self> {
+        if !map.is_valid() || bases.uorder != map.uorder || bases.vorder != map.vorder {
+            return None;
+        }
+        Some(Self { map, nu: bases.us.len(), normals: bases.normals, bases })
     }
 
     /// Evaluates row `j` (the row at `vs[j]`) into `row`.
@@ -178,12 +228,12 @@ impl<'a, S: Scalar> RowKernel<'a, S> {
         let (dim, uorder, nu) = (self.map.dim, self.map.uorder, self.nu);
         row.reduced.resize(uorder, [S::ZERO; MAX_DIM]);
         row.reduced_dv.resize(uorder, [S::ZERO; MAX_DIM]);
-        let bv = self.basis_v.at(j);
-        reduce_rows(&self.map, bv, self.basis_v.lower_at(j), self.normals, &mut row.reduced, &mut row.reduced_dv);
+        let bv = self.bases.basis_v.at(j);
+        reduce_rows(&self.map, bv, self.bases.basis_v.lower_at(j), self.normals, &mut row.reduced, &mut row.reduced_dv);
         for c in 0..dim {
             row.coeffs.clear();
             row.coeffs.extend(row.reduced.iter().map(|r| r[c]));
-            combine_row(&self.basis_u, &row.coeffs, nu, &mut row.point[c]);
+            combine_row(&self.bases.basis_u, &row.coeffs, nu, &mut row.point[c]);
         }
         if !self.normals {
             return;
@@ -192,11 +242,11 @@ impl<'a, S: Scalar> RowKernel<'a, S> {
         for c in 0..dim {
             row.coeffs.clear();
             row.coeffs.extend(row.reduced.windows(2).map(|w| w[1][c] - w[0][c]));
-            combine_row(&self.lower_u, &row.coeffs, nu, &mut row.du[c]);
+            combine_row(&self.bases.lower_u, &row.coeffs, nu, &mut row.du[c]);
             row.du[c].iter_mut().for_each(|d| *d *= n);
             row.coeffs.clear();
             row.coeffs.extend(row.reduced_dv.iter().map(|r| r[c]));
-            combine_row(&self.basis_u, &row.coeffs, nu, &mut row.dv[c]);
+            combine_row(&self.bases.basis_u, &row.coeffs, nu, &mut row.dv[c]);
         }
         if dim == 4 {
             rational_correction(&mut row.du, &row.point);
@@ -237,14 +287,14 @@ impl<S: Scalar> RowKernel<'_, S> {
         row.reduced_dv.resize(K, [S::ZERO; MAX_DIM]);
         reduce_rows(
             &self.map,
-            self.basis_v.at(j),
-            self.basis_v.lower_at(j),
+            self.bases.basis_v.at(j),
+            self.bases.basis_v.lower_at(j),
             self.normals,
             &mut row.reduced,
             &mut row.reduced_dv,
         );
         let r: [[S; 3]; K] = std::array::from_fn(|a| [row.reduced[a][0], row.reduced[a][1], row.reduced[a][2]]);
-        let basis: [&[S]; K] = std::array::from_fn(|a| &self.basis_u[a * nu..(a + 1) * nu]);
+        let basis: [&[S]; K] = std::array::from_fn(|a| &self.bases.basis_u[a * nu..(a + 1) * nu]);
         if !self.normals {
             for i in 0..nu {
                 let mut p = [S::ZERO; 3];
@@ -265,7 +315,7 @@ impl<S: Scalar> RowKernel<'_, S> {
                 |a| if a + 1 < K { std::array::from_fn(|c| r[a + 1][c] - r[a][c]) } else { [S::ZERO; 3] },
             );
         let lower: [&[S]; K] =
-            std::array::from_fn(|a| if a + 1 < K { &self.lower_u[a * nu..(a + 1) * nu] } else { &[][..] });
+            std::array::from_fn(|a| if a + 1 < K { &self.bases.lower_u[a * nu..(a + 1) * nu] } else { &[][..] });
         let n = S::from_usize(K - 1);
         for i in 0..nu {
             let (mut p, mut du, mut dv) = ([S::ZERO; 3], [S::ZERO; 3], [S::ZERO; 3]);
@@ -479,5 +529,32 @@ mod tests {
     fn malformed_map_has_no_kernel() {
         let map = MapView { dim: 3, uorder: 4, vorder: 4, points: &[1.0f32; 5] };
         assert!(RowKernel::new(map, &[0.0], &[0.0], true).is_none());
+    }
+
+    /// Tables fit only the orders, grid (bit for bit) and partials they were made for, and a
+    /// kernel on tables made before evaluates as one made afresh; a map of other orders is
+    /// refused them.
+    #[test]
+    fn shared_bases_fit_their_own_grid_only() {
+        let (us, vs) = ([0.0f32, 0.25, 0.5, 1.0], [0.0f32, 0.5, 1.0]);
+        let bases = Arc::new(RowBases::new(3, 2, &us, &vs, true));
+        assert!(bases.fits(3, 2, &us, &vs, true));
+        assert!(!bases.fits(3, 2, &us, &vs, false));
+        assert!(!bases.fits(2, 3, &us, &vs, true));
+        assert!(!bases.fits(3, 2, &[-0.0, 0.25, 0.5, 1.0], &vs, true));
+        assert!(!bases.fits(3, 2, &us[..3], &vs, true));
+        let points: Vec<f32> = (0..3 * 2 * 3).map(|x| ((x * 37 % 23) as f32) * 0.3 - 2.5).collect();
+        let map = MapView { dim: 3, uorder: 3, vorder: 2, points: &points };
+        let (shared, fresh) =
+            (RowKernel::with_bases(map, Arc::clone(&bases)).unwrap(), RowKernel::new(map, &us, &vs, true).unwrap());
+        for j in 0..vs.len() {
+            let (mut a, mut b) = (Row::default(), Row::default());
+            shared.eval_row(j, &mut a);
+            fresh.eval_row(j, &mut b);
+            let bits = |r: &Row<f32>| r.point.iter().chain(&r.cross).flatten().map(|x| x.to_bits()).collect::<Vec<_>>();
+            assert_eq!(bits(&a), bits(&b));
+        }
+        let other = MapView { dim: 3, uorder: 2, vorder: 3, points: &points };
+        assert!(RowKernel::with_bases(other, bases).is_none());
     }
 }
