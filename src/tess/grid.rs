@@ -161,24 +161,31 @@ pub(crate) fn reduce_rows<S: Scalar>(
         return;
     }
     // With partials (meshes with normals): the component loop fixed at compile time too.
-    match map.dim {
-        1 => reduce_with_partials::<S, 1>(map, bv, bv_low, rows, rows_dv),
-        2 => reduce_with_partials::<S, 2>(map, bv, bv_low, rows, rows_dv),
-        3 => reduce_with_partials::<S, 3>(map, bv, bv_low, rows, rows_dv),
-        _ => reduce_with_partials::<S, 4>(map, bv, bv_low, rows, rows_dv),
+    // Three components of v order 2 to 6 (the usual surfaces) with the v order fixed too, so
+    // that the sums along v unroll.
+    match (map.dim, map.vorder) {
+        (3, 2) => reduce_with_partials::<S, 3, 2>(map, bv, bv_low, rows, rows_dv),
+        (3, 3) => reduce_with_partials::<S, 3, 3>(map, bv, bv_low, rows, rows_dv),
+        (3, 4) => reduce_with_partials::<S, 3, 4>(map, bv, bv_low, rows, rows_dv),
+        (3, 5) => reduce_with_partials::<S, 3, 5>(map, bv, bv_low, rows, rows_dv),
+        (3, 6) => reduce_with_partials::<S, 3, 6>(map, bv, bv_low, rows, rows_dv),
+        (1, _) => reduce_with_partials::<S, 1, 0>(map, bv, bv_low, rows, rows_dv),
+        (2, _) => reduce_with_partials::<S, 2, 0>(map, bv, bv_low, rows, rows_dv),
+        (3, _) => reduce_with_partials::<S, 3, 0>(map, bv, bv_low, rows, rows_dv),
+        _ => reduce_with_partials::<S, 4, 0>(map, bv, bv_low, rows, rows_dv),
     }
 }
 
-/// [`reduce_rows`] with partials for maps of `D` components: each sum from zero up, over j in
-/// order, the v partial's scaled by q at the end.
-fn reduce_with_partials<S: Scalar, const D: usize>(
+/// [`reduce_rows`] with partials for maps of `D` components and v order `V` (0: the map's, read
+/// at run time): each sum from zero up, over j in order, the v partial's scaled by q at the end.
+fn reduce_with_partials<S: Scalar, const D: usize, const V: usize>(
     map: &MapView<'_, S>,
     bv: &[S],
     bv_low: &[S],
     rows: &mut [Vec4<S>],
     rows_dv: &mut [Vec4<S>],
 ) {
-    let vorder = map.vorder;
+    let vorder = if V == 0 { map.vorder } else { V };
     let q = S::from_usize(vorder - 1);
     let column = vorder * D;
     let nets = map.points.chunks_exact(column).take(map.uorder);
@@ -270,6 +277,41 @@ mod tests {
                 reduce_rows(&map, &bv, &low, true, &mut general, &mut dv);
                 let bits = |rows: &[[f64; 4]]| rows.iter().map(|r| r.map(f64::to_bits)).collect::<Vec<_>>();
                 assert_eq!(bits(&fast), bits(&general), "{dim} {uo}x{vo}");
+            }
+        }
+    }
+
+    /// The reduction with partials (its v order fixed at compile time for three components of
+    /// orders 2 to 6, read at run time otherwise) gives the bits of the plain sums written as
+    /// documented: Σⱼ Bⱼ(v) Pᵢⱼ and q Σⱼ Bⱼ^{q−1}(v) (Pᵢ,ⱼ₊₁ − Pᵢⱼ), j in order from zero.
+    #[test]
+    fn rows_with_partials_are_the_plain_sums() {
+        for dim in 1..=4 {
+            for vo in 1..=8 {
+                let uo = 3;
+                let pts = net(uo, vo, dim);
+                let map = MapView { dim, uorder: uo, vorder: vo, points: &pts };
+                let mut bv = vec![0.0; vo];
+                crate::math::bezier::bernstein(vo, 0.37, &mut bv);
+                let mut low = vec![0.0; vo.saturating_sub(1).max(1)];
+                crate::math::bezier::bernstein(vo.saturating_sub(1).max(1), 0.37, &mut low);
+                let (mut rows, mut rows_dv) = (vec![[9.0; 4]; uo], vec![[9.0; 4]; uo]);
+                reduce_rows(&map, &bv, &low, true, &mut rows, &mut rows_dv);
+                for i in 0..uo {
+                    let at = |j: usize, c: usize| pts[(i * vo + j) * dim + c];
+                    let (mut p, mut d) = ([0.0f64; 4], [0.0f64; 4]);
+                    for c in 0..dim {
+                        for j in 0..vo {
+                            p[c] += bv[j] * at(j, c);
+                        }
+                        for j in 0..vo - 1 {
+                            d[c] += low[j] * (at(j + 1, c) - at(j, c));
+                        }
+                        d[c] *= (vo - 1) as f64;
+                    }
+                    assert_eq!(rows[i].map(f64::to_bits), p.map(f64::to_bits), "{dim} components, v order {vo}");
+                    assert_eq!(rows_dv[i].map(f64::to_bits), d.map(f64::to_bits), "{dim} components, v order {vo}");
+                }
             }
         }
     }
