@@ -51,13 +51,14 @@ impl Gl {
         if !self.reserve_vertices(n) {
             return;
         }
-        let us = grid_params(&self.eval.grid1, i1, i2);
+        let grid = self.eval.grid1;
         let maps = act
             .attributes()
             .chain(act.vertex)
             .map(|slot| {
                 let m = self.eval.map(1, slot);
-                let us = us.iter().map(|&u| m.norm_u(u)).collect();
+                // The grid's parameters normalised in one pass (a curve may have millions).
+                let us = (i64::from(i1)..=i64::from(i2)).map(|i| m.norm_u(grid.param(i))).collect();
                 MapSample { slot, uorder: m.uorder, vorder: 1, points: m.points.clone(), us, vs: vec![0.0] }
             })
             .collect();
