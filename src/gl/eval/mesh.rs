@@ -13,9 +13,10 @@ use crate::gl::{Command, Gl, GridMesh, MapSample, MeshJob, MeshMode, MeshVertice
 /// `GL_OUT_OF_MEMORY` and draws nothing (instead of exhausting memory).
 pub const MAX_MESH_VERTICES: usize = 1 << 27;
 
-/// The grid parameters for lines `first..=last`, or an empty list when `last < first`.
-fn grid_params(grid: &Grid, first: i32, last: i32) -> Vec<f32> {
-    (i64::from(first)..=i64::from(last)).map(|i| grid.param(i)).collect()
+/// The grid parameters for lines `first..=last` through `normalise` (a map's normalisation),
+/// in one pass; an empty list when `last < first`.
+fn grid_params(grid: &Grid, first: i32, last: i32, normalise: impl Fn(f32) -> f32) -> Vec<f32> {
+    (i64::from(first)..=i64::from(last)).map(|i| normalise(grid.param(i))).collect()
 }
 
 /// Number of lines in `first..=last` (0 when reversed).
@@ -57,8 +58,7 @@ impl Gl {
             .chain(act.vertex)
             .map(|slot| {
                 let m = self.eval.map(1, slot);
-                // The grid's parameters normalised in one pass (a curve may have millions).
-                let us = (i64::from(i1)..=i64::from(i2)).map(|i| m.norm_u(grid.param(i))).collect();
+                let us = grid_params(&grid, i1, i2, |u| m.norm_u(u));
                 MapSample { slot, uorder: m.uorder, vorder: 1, points: m.points.clone(), us, vs: vec![0.0] }
             })
             .collect();
@@ -101,8 +101,6 @@ impl Gl {
             return;
         }
         let (gu, gv) = self.eval.grid2;
-        let us = grid_params(&gu, i1, i2);
-        let vs = grid_params(&gv, j1, j2);
         let maps = act
             .attributes()
             .chain(act.vertex)
@@ -113,8 +111,8 @@ impl Gl {
                     uorder: m.uorder,
                     vorder: m.vorder,
                     points: m.points.clone(),
-                    us: us.iter().map(|&u| m.norm_u(u)).collect(),
-                    vs: vs.iter().map(|&v| m.norm_v(v)).collect(),
+                    us: grid_params(&gu, i1, i2, |u| m.norm_u(u)),
+                    vs: grid_params(&gv, j1, j2, |v| m.norm_v(v)),
                 }
             })
             .collect();
