@@ -353,9 +353,17 @@ impl Positions<'_> {
 
     /// The sums along v of every row of control points at v (`sums_at`'s point sums).
     fn row_sums(&self, v: f32) -> [[f32; 4]; MAX_ORDER] {
+        let mut p = [[0.0f32; 4]; MAX_ORDER];
+        self.row_sums_into(v, &mut p);
+        p
+    }
+
+    /// [`Self::row_sums`] into `p`, whose entries past the first `uorder` rows and `k`
+    /// components are left as they are (nothing reads them but [`Self::combine`], which
+    /// ignores them: `project` reads `k` components).
+    fn row_sums_into(&self, v: f32, p: &mut [[f32; 4]; MAX_ORDER]) {
         let t = (v - self.v.0) / (self.v.1 - self.v.0);
         let vc = values(self.vorder, t);
-        let mut p = [[0.0f32; 4]; MAX_ORDER];
         for (row, sums) in p.iter_mut().enumerate().take(self.uorder) {
             for (j, sum) in sums.iter_mut().enumerate().take(self.k) {
                 let at = |col: usize| self.points[(row * self.vorder + col) * self.k + j];
@@ -365,7 +373,6 @@ impl Positions<'_> {
                 }
             }
         }
-        p
     }
 
     /// The u coefficients at u.
@@ -426,22 +433,28 @@ impl Positions<'_> {
         LineTable { uindex: index(&us), vindex: index(&vs), us, vs, rows, ucs }
     }
 
-    /// [`Self::points_into`], the sums of points on the lines of `tables` (made by
-    /// [`Self::line_table`] on this patch) taken from there: the same bits.
-    pub fn points_into_with(&self, uvs: &[[f32; 2]], out: &mut [[f32; 5]], tables: &[&LineTable]) -> Option<()> {
+    /// [`Self::points_into`], the sums and u coefficients of points on the lines of `table`
+    /// (made by [`Self::line_table`] on this patch) taken from there: the same bits.
+    pub fn points_into_with(&self, uvs: &[[f32; 2]], out: &mut [[f32; 5]], table: &LineTable) -> Option<()> {
         if self.empty() {
             return None;
         }
-        let mut row: Option<(u32, [[f32; 4]; MAX_ORDER])> = None;
+        // The sums of the last v off the table's lines, worked out in place.
+        let mut row = [[0.0f32; 4]; MAX_ORDER];
+        let mut row_v: Option<u32> = None;
         for (&[u, v], slot) in uvs.iter().zip(out) {
-            let on_line = tables.iter().find_map(|t| Some(&t.rows[*t.vindex.get(&v.to_bits())?]));
-            let sums = match (on_line, &row) {
-                (Some(sums), _) => sums,
-                (None, Some((bits, sums))) if *bits == v.to_bits() => sums,
-                (None, _) => &row.insert((v.to_bits(), self.row_sums(v))).1,
+            let sums = match table.v_slot(v) {
+                Some(j) => &table.rows[j],
+                None => {
+                    if row_v != Some(v.to_bits()) {
+                        self.row_sums_into(v, &mut row);
+                        row_v = Some(v.to_bits());
+                    }
+                    &row
+                }
             };
-            let q = match tables.iter().find_map(|t| Some(&t.ucs[*t.uindex.get(&u.to_bits())?])) {
-                Some(uc) => self.combine(sums, uc),
+            let q = match table.u_slot(u) {
+                Some(i) => self.combine(sums, &table.ucs[i]),
                 None => self.combine(sums, &self.u_values(u)),
             };
             *slot = [q[0], q[1], q[2], u, v];
@@ -471,6 +484,21 @@ impl Positions<'_> {
             }
         }
         Some(())
+    }
+}
+
+
+impl LineTable {
+    /// Where the line u is in the table, by its bits.
+    #[inline]
+    pub fn u_slot(&self, u: f32) -> Option<usize> {
+        self.uindex.get(&u.to_bits()).copied()
+    }
+
+    /// Where the line v is in the table, by its bits.
+    #[inline]
+    pub fn v_slot(&self, v: f32) -> Option<usize> {
+        self.vindex.get(&v.to_bits()).copied()
     }
 }
 
@@ -674,7 +702,7 @@ mod tests {
             let table = positions.line_table(us.to_vec(), vs.to_vec());
             let some_lines = positions.line_table(vec![0.75, 1.1], vec![0.2]);
             let mut looked_up = vec![[0.0; 5]; uvs.len()];
-            positions.points_into_with(&uvs, &mut looked_up, &[&some_lines]).unwrap();
+            positions.points_into_with(&uvs, &mut looked_up, &some_lines).unwrap();
             for (n, &[u, v]) in uvs.iter().enumerate() {
                 let (i, j) = (n % us.len(), n / us.len());
                 assert_eq!(positions.table_at(&table, i, j).map(f32::to_bits), expect(u, v), "{k} {uo}x{vo} table");

@@ -108,43 +108,30 @@ fn evaluated_points(piece: &Piece) -> usize {
     }
 }
 
-/// The lines of one grid that a patch's blocks cover, from (`i0`, `j0`) on, with their sums.
-struct GridLines {
-    grid: Grid,
-    i0: i64,
-    j0: i64,
-    table: LineTable,
-}
-
-/// Every grid the blocks of `pieces` are on, each with the lines its blocks cover: blocks share
-/// their grid's lines, whose sums along v and u coefficients are then worked out once.
-fn grid_lines(positions: Positions<'_>, pieces: &[Piece]) -> Vec<GridLines> {
-    let mut ranges: Vec<(Grid, Lines, Lines)> = Vec::new();
-    for (g, (u0, u1), (v0, v1)) in pieces.iter().filter_map(as_block) {
-        if u1 < u0 || v1 < v0 {
+/// Every grid line the blocks of `pieces` cover (each region's blocks are on its own grid), u
+/// and v by their bits, each once, with their sums along v and u coefficients worked out once:
+/// blocks and fan points on those lines take them from there.
+fn grid_lines(positions: Positions<'_>, pieces: &[Piece]) -> LineTable {
+    let (mut us, mut vs) = (Vec::new(), Vec::new());
+    for (g, u, v) in pieces.iter().filter_map(as_block) {
+        if u.1 < u.0 || v.1 < v.0 {
             continue;
         }
-        let (u0, v0) = (u0.max(0), v0.max(0));
-        match ranges.iter_mut().find(|r| r.0 == *g) {
-            Some((_, u, v)) => {
-                *u = (u.0.min(u0), u.1.max(u1));
-                *v = (v.0.min(v0), v.1.max(v1));
-            }
-            None => ranges.push((*g, (u0, u1.max(u0)), (v0, v1.max(v0)))),
-        }
+        let (bu, bv) = block_lines(g, u, v);
+        us.extend(bu.iter().map(|x| x.to_bits()));
+        vs.extend(bv.iter().map(|x| x.to_bits()));
     }
-    ranges
-        .into_iter()
-        .map(|(grid, u, v)| {
-            let (us, vs) = block_lines(&grid, u, v);
-            GridLines { grid, i0: u.0, j0: v.0, table: positions.line_table(us, vs) }
-        })
-        .collect()
+    let distinct = |mut bits: Vec<u32>| {
+        bits.sort_unstable();
+        bits.dedup();
+        bits.into_iter().map(f32::from_bits).collect()
+    };
+    positions.line_table(distinct(us), distinct(vs))
 }
 
 /// Evaluates a batch of pieces into `out` (resized), piece after piece, on rayon's workers;
-/// blocks from their grid's `lines`.
-fn evaluate_pieces(positions: Positions<'_>, lines: &[GridLines], batch: &[Piece], out: &mut Vec<[f32; 5]>) {
+/// blocks and points on grid lines from the patch's `lines`.
+fn evaluate_pieces(positions: Positions<'_>, lines: &LineTable, batch: &[Piece], out: &mut Vec<[f32; 5]>) {
     use rayon::prelude::*;
     let size = batch.iter().map(evaluated_points).sum();
     // Every entry is overwritten: no zeroing.
@@ -159,25 +146,25 @@ fn evaluate_pieces(positions: Positions<'_>, lines: &[GridLines], batch: &[Piece
         chunks.push((piece, chunk));
         free = after;
     }
-    let tables: Vec<&LineTable> = lines.iter().map(|l| &l.table).collect();
-    let tables = tables.as_slice();
     chunks.into_par_iter().with_min_len(16).for_each(|(piece, chunk)| {
         let done = match piece {
-            Piece::Fan(p) | Piece::QuadStrip(p) | Piece::Line(p) => positions.points_into_with(p, chunk, tables),
-            _ => as_block(piece).and_then(|(g, (u0, u1), (v0, v1))| {
-                if let Some(l) = lines.iter().find(|l| l.grid == *g) {
-                    let width = usize::try_from(u1 - u0 + 1).unwrap_or(0).max(1);
-                    let columns: Vec<usize> = (u0..=u1).map(|i| (i.max(0) - l.i0) as usize).collect();
-                    for (row, j) in chunk.chunks_exact_mut(width).zip(v0..) {
-                        let j = (j.max(0) - l.j0) as usize;
+            Piece::Fan(p) | Piece::QuadStrip(p) | Piece::Line(p) => positions.points_into_with(p, chunk, lines),
+            _ => as_block(piece).and_then(|(g, u, v)| {
+                let (us, vs) = block_lines(g, u, v);
+                let slots = |xs: &[f32], slot: &dyn Fn(f32) -> Option<usize>| xs.iter().map(|&x| slot(x)).collect();
+                let (columns, rows): (Option<Vec<usize>>, Option<Vec<usize>>) =
+                    (slots(&us, &|x| lines.u_slot(x)), slots(&vs, &|x| lines.v_slot(x)));
+                let (Some(columns), Some(rows)) = (columns, rows) else {
+                    return positions.grid_into(&us, &vs, chunk);
+                };
+                if !columns.is_empty() {
+                    for (row, &j) in chunk.chunks_exact_mut(columns.len()).zip(&rows) {
                         for (slot, &i) in row.iter_mut().zip(&columns) {
-                            *slot = positions.table_at(&l.table, i, j);
+                            *slot = positions.table_at(lines, i, j);
                         }
                     }
-                    return Some(());
                 }
-                let (us, vs) = block_lines(g, (u0, u1), (v0, v1));
-                positions.grid_into(&us, &vs, chunk)
+                Some(())
             }),
         };
         debug_assert!(done.is_some(), "positions of an empty patch");
@@ -215,8 +202,7 @@ pub(crate) fn tessellate_pieces_sunk(
 ) {
     let [current, next] = buffers;
     let batches = piece_batches(pieces);
-    let lines = grid_lines(positions, pieces);
-    let lines = lines.as_slice();
+    let lines = &grid_lines(positions, pieces);
     if let Some(first) = batches.first() {
         evaluate_pieces(positions, lines, first, current);
     }
