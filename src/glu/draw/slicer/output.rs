@@ -108,30 +108,68 @@ fn evaluated_points(piece: &Piece) -> usize {
     }
 }
 
-/// Every grid line the blocks of `pieces` cover (each region's blocks are on its own grid), u
-/// and v by their bits, each once, with their sums along v and u coefficients worked out once:
-/// blocks and fan points on those lines take them from there.
-fn grid_lines(positions: Positions<'_>, pieces: &[Piece]) -> LineTable {
-    let (mut us, mut vs) = (Vec::new(), Vec::new());
-    for (g, u, v) in pieces.iter().filter_map(as_block) {
-        if u.1 < u.0 || v.1 < v.0 {
+/// One grid's lines that a patch's blocks cover, from (`i0`, `j0`) on: where each is in the
+/// patch's [`LineTable`].
+struct GridSlots {
+    grid: Grid,
+    i0: i64,
+    j0: i64,
+    columns: Vec<usize>,
+    rows: Vec<usize>,
+}
+
+/// Every grid line the blocks of a patch cover (each region's blocks are on its own grid),
+/// each once by its bits, with its sums along v or u coefficients worked out once: blocks and
+/// fan points on those lines take them from there.
+struct PatchLines {
+    table: LineTable,
+    grids: Vec<GridSlots>,
+}
+
+/// The lines of every grid the blocks of `pieces` are on.
+fn grid_lines(positions: Positions<'_>, pieces: &[Piece]) -> PatchLines {
+    let mut ranges: Vec<(Grid, Lines, Lines)> = Vec::new();
+    for (g, (u0, u1), (v0, v1)) in pieces.iter().filter_map(as_block) {
+        if u1 < u0 || v1 < v0 {
             continue;
         }
-        let (bu, bv) = block_lines(g, u, v);
-        us.extend(bu.iter().map(|x| x.to_bits()));
-        vs.extend(bv.iter().map(|x| x.to_bits()));
+        let (u0, v0) = (u0.max(0), v0.max(0));
+        match ranges.iter_mut().find(|r| r.0 == *g) {
+            Some((_, u, v)) => {
+                *u = (u.0.min(u0), u.1.max(u1));
+                *v = (v.0.min(v0), v.1.max(v1));
+            }
+            None => ranges.push((*g, (u0, u1.max(u0)), (v0, v1.max(v0)))),
+        }
     }
-    let distinct = |mut bits: Vec<u32>| {
+    let lines: Vec<(Vec<f32>, Vec<f32>)> = ranges.iter().map(|(g, u, v)| block_lines(g, *u, *v)).collect();
+    let distinct = |each: &dyn Fn(&(Vec<f32>, Vec<f32>)) -> &Vec<f32>| {
+        let mut bits: Vec<u32> = lines.iter().flat_map(|l| each(l).iter().map(|x| x.to_bits())).collect();
         bits.sort_unstable();
         bits.dedup();
         bits.into_iter().map(f32::from_bits).collect()
     };
-    positions.line_table(distinct(us), distinct(vs))
+    let table = positions.line_table(distinct(&|l| &l.0), distinct(&|l| &l.1));
+    let slots = |xs: &[f32], slot: &dyn Fn(f32) -> Option<usize>| {
+        xs.iter().map(|&x| slot(x).expect("every block line is in the table")).collect()
+    };
+    let grids = ranges
+        .iter()
+        .zip(&lines)
+        .map(|((grid, u, v), (us, vs))| GridSlots {
+            grid: *grid,
+            i0: u.0,
+            j0: v.0,
+            columns: slots(us, &|x| table.u_slot(x)),
+            rows: slots(vs, &|x| table.v_slot(x)),
+        })
+        .collect();
+    PatchLines { table, grids }
 }
 
 /// Evaluates a batch of pieces into `out` (resized), piece after piece, on rayon's workers;
 /// blocks and points on grid lines from the patch's `lines`.
-fn evaluate_pieces(positions: Positions<'_>, lines: &LineTable, batch: &[Piece], out: &mut Vec<[f32; 5]>) {
+fn evaluate_pieces(positions: Positions<'_>, lines: &PatchLines, batch: &[Piece], out: &mut Vec<[f32; 5]>) {
     use rayon::prelude::*;
     let size = batch.iter().map(evaluated_points).sum();
     // Every entry is overwritten: no zeroing.
@@ -146,29 +184,30 @@ fn evaluate_pieces(positions: Positions<'_>, lines: &LineTable, batch: &[Piece],
         chunks.push((piece, chunk));
         free = after;
     }
-    chunks.into_par_iter().with_min_len(16).for_each(|(piece, chunk)| {
-        let done = match piece {
-            Piece::Fan(p) | Piece::QuadStrip(p) | Piece::Line(p) => positions.points_into_with(p, chunk, lines),
-            _ => as_block(piece).and_then(|(g, u, v)| {
-                let (us, vs) = block_lines(g, u, v);
-                let slots = |xs: &[f32], slot: &dyn Fn(f32) -> Option<usize>| xs.iter().map(|&x| slot(x)).collect();
-                let (columns, rows): (Option<Vec<usize>>, Option<Vec<usize>>) =
-                    (slots(&us, &|x| lines.u_slot(x)), slots(&vs, &|x| lines.v_slot(x)));
-                let (Some(columns), Some(rows)) = (columns, rows) else {
-                    return positions.grid_into(&us, &vs, chunk);
-                };
-                if !columns.is_empty() {
-                    for (row, &j) in chunk.chunks_exact_mut(columns.len()).zip(&rows) {
-                        for (slot, &i) in row.iter_mut().zip(&columns) {
-                            *slot = positions.table_at(lines, i, j);
-                        }
-                    }
-                }
-                Some(())
-            }),
-        };
-        debug_assert!(done.is_some(), "positions of an empty patch");
-    });
+    chunks.into_par_iter().with_min_len(16).for_each(|(piece, chunk)| evaluate_piece(positions, lines, piece, chunk));
+}
+
+/// One piece's positions into `chunk` (as long as [`evaluated_points`]).
+fn evaluate_piece(positions: Positions<'_>, lines: &PatchLines, piece: &Piece, chunk: &mut [[f32; 5]]) {
+    let table = &lines.table;
+    let done = match piece {
+        Piece::Fan(p) | Piece::QuadStrip(p) | Piece::Line(p) => positions.points_into_with(p, chunk, table),
+        _ => as_block(piece).and_then(|(g, (u0, u1), (v0, v1))| {
+            let width = usize::try_from(u1 - u0 + 1).unwrap_or(0);
+            if width == 0 || v1 < v0 {
+                return Some(());
+            }
+            let l = lines.grids.iter().find(|l| l.grid == *g).expect("every block's grid has its lines");
+            // Lines before the first (index < 0) are the first again, as `block_lines` has them.
+            let at = |slots: &[usize], x: i64, first: i64| slots[(x.max(0) - first) as usize];
+            for (row, j) in chunk.chunks_exact_mut(width).zip(v0..) {
+                let j = at(&l.rows, j, l.j0);
+                positions.table_row_into(table, (u0..).map(|i| at(&l.columns, i, l.i0)), j, row);
+            }
+            Some(())
+        }),
+    };
+    debug_assert!(done.is_some(), "positions of an empty patch");
 }
 
 /// Consecutive runs of pieces of at most [`BATCH_POINTS`] evaluated points (at least one each).
