@@ -143,16 +143,16 @@ fn grid_lines(positions: Positions<'_>, pieces: &[Piece]) -> PatchLines {
         }
     }
     let lines: Vec<(Vec<f32>, Vec<f32>)> = ranges.iter().map(|(g, u, v)| block_lines(g, *u, *v)).collect();
-    let distinct = |each: &dyn Fn(&(Vec<f32>, Vec<f32>)) -> &Vec<f32>| {
-        let mut bits: Vec<u32> = lines.iter().flat_map(|l| each(l).iter().map(|x| x.to_bits())).collect();
+    let distinct = |values: Vec<&Vec<f32>>| {
+        let mut bits: Vec<u32> = values.into_iter().flatten().map(|x| x.to_bits()).collect();
         bits.sort_unstable();
         bits.dedup();
         bits.into_iter().map(f32::from_bits).collect()
     };
-    let table = positions.line_table(distinct(&|l| &l.0), distinct(&|l| &l.1));
-    let slots = |xs: &[f32], slot: &dyn Fn(f32) -> Option<usize>| {
-        xs.iter().map(|&x| slot(x).expect("every block line is in the table")).collect()
-    };
+    let table = positions
+        .line_table(distinct(lines.iter().map(|l| &l.0).collect()), distinct(lines.iter().map(|l| &l.1).collect()));
+    // Every line is in the table: no slot is missing.
+    let slots = |xs: &[f32], slot: &dyn Fn(f32) -> Option<usize>| xs.iter().filter_map(|&x| slot(x)).collect();
     let grids = ranges
         .iter()
         .zip(&lines)
@@ -192,22 +192,36 @@ fn evaluate_piece(positions: Positions<'_>, lines: &PatchLines, piece: &Piece, c
     let table = &lines.table;
     let done = match piece {
         Piece::Fan(p) | Piece::QuadStrip(p) | Piece::Line(p) => positions.points_into_with(p, chunk, table),
-        _ => as_block(piece).and_then(|(g, (u0, u1), (v0, v1))| {
-            let width = usize::try_from(u1 - u0 + 1).unwrap_or(0);
-            if width == 0 || v1 < v0 {
-                return Some(());
-            }
-            let l = lines.grids.iter().find(|l| l.grid == *g).expect("every block's grid has its lines");
-            // Lines before the first (index < 0) are the first again, as `block_lines` has them.
-            let at = |slots: &[usize], x: i64, first: i64| slots[(x.max(0) - first) as usize];
-            for (row, j) in chunk.chunks_exact_mut(width).zip(v0..) {
-                let j = at(&l.rows, j, l.j0);
-                positions.table_row_into(table, (u0..).map(|i| at(&l.columns, i, l.i0)), j, row);
-            }
-            Some(())
-        }),
+        _ => as_block(piece).and_then(|(g, u, v)| evaluate_block(positions, lines, g, u, v, chunk)),
     };
     debug_assert!(done.is_some(), "positions of an empty patch");
+}
+
+/// A block's grid points, row after row, into `chunk` from the patch's lines; `None` if its
+/// grid has none there.
+fn evaluate_block(
+    positions: Positions<'_>,
+    lines: &PatchLines,
+    g: &Grid,
+    (u0, u1): Lines,
+    (v0, v1): Lines,
+    chunk: &mut [[f32; 5]],
+) -> Option<()> {
+    let width = usize::try_from(u1 - u0 + 1).unwrap_or(0);
+    if width == 0 || v1 < v0 {
+        return Some(());
+    }
+    let l = lines.grids.iter().find(|l| l.grid == *g)?;
+    // Lines before the first (index < 0) are the first again, as `block_lines` has them.
+    let at = |slots: &[usize], x: i64, first: i64| slots.get(usize::try_from(x.max(0) - first).ok()?).copied();
+    // The slots run with the lines: both ends there, every column between is.
+    at(&l.columns, u0, l.i0)?;
+    at(&l.columns, u1, l.i0)?;
+    for (row, j) in chunk.chunks_exact_mut(width).zip(v0..) {
+        let j = at(&l.rows, j, l.j0)?;
+        positions.table_row_into(&lines.table, (u0..).filter_map(|i| at(&l.columns, i, l.i0)), j, row);
+    }
+    Some(())
 }
 
 /// Consecutive runs of pieces of at most [`BATCH_POINTS`] evaluated points (at least one each).
