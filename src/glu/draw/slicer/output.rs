@@ -78,6 +78,9 @@ fn tessellate_block(
 /// overlaps issuing this one's callbacks, large enough to amortise the hand-over.
 const BATCH_POINTS: usize = 1 << 14;
 
+/// Vertices in the first batch, which the callbacks wait for.
+const FIRST_BATCH_POINTS: usize = 1 << 11;
+
 /// The grid lines a block covers, as [`tessellate_block`] computes them.
 fn block_lines(g: &Grid, (u0, u1): (i64, i64), (v0, v1): (i64, i64)) -> (Vec<f32>, Vec<f32>) {
     let at = |x: i64, n: usize, r: (f32, f32)| super::line(r, n, x.max(0) as usize);
@@ -224,19 +227,23 @@ fn evaluate_block(
     Some(())
 }
 
-/// Consecutive runs of pieces of at most [`BATCH_POINTS`] evaluated points (at least one each).
+/// Consecutive runs of pieces of at most [`BATCH_POINTS`] evaluated points, the first of at most
+/// [`FIRST_BATCH_POINTS`] (at least one piece each).
 fn piece_batches(pieces: &[Piece]) -> Vec<&[Piece]> {
     let mut out = Vec::new();
     let mut rest = pieces;
+    // The first batch smaller: nothing overlaps its evaluation.
+    let mut limit = FIRST_BATCH_POINTS;
     while !rest.is_empty() {
         let mut take = 1;
         let mut points = evaluated_points(&rest[0]);
-        while take < rest.len() && points.saturating_add(evaluated_points(&rest[take])) <= BATCH_POINTS {
+        while take < rest.len() && points.saturating_add(evaluated_points(&rest[take])) <= limit {
             points += evaluated_points(&rest[take]);
             take += 1;
         }
         let (batch, tail) = rest.split_at(take);
         out.push(batch);
+        limit = BATCH_POINTS;
         rest = tail;
     }
     out
