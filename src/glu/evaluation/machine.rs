@@ -329,13 +329,15 @@ pub(crate) struct Positions<'a> {
     points: &'a [f32],
 }
 
-/// A grid's lines with their row sums and u coefficients (see [`Positions::line_table`]).
+/// A grid's lines with their row sums and u coefficients (see [`Positions::line_table`]),
+/// each line's `uorder` of them side by side.
 #[derive(Clone, Debug)]
 pub(crate) struct LineTable {
     pub us: Vec<f32>,
     pub vs: Vec<f32>,
-    rows: Vec<[[f32; 4]; MAX_ORDER]>,
-    ucs: Vec<[f32; MAX_ORDER]>,
+    uorder: usize,
+    rows: Vec<[f32; 4]>,
+    ucs: Vec<f32>,
     /// Where each line is, by its parameter's bits.
     uindex: HashMap<u32, usize, BuildHasherDefault<BitsHasher>>,
     vindex: HashMap<u32, usize, BuildHasherDefault<BitsHasher>>,
@@ -349,19 +351,43 @@ impl Positions<'_> {
 
     /// The sums along v of every row of control points at v (`sums_at`'s point sums).
     fn row_sums(&self, v: f32) -> [[f32; 4]; MAX_ORDER] {
+        let mut p = [[0.0f32; 4]; MAX_ORDER];
+        self.row_sums_into(v, &mut p);
+        p
+    }
+
+    /// [`Self::row_sums`] into `p`, whose entries past the first `uorder` rows and `k`
+    /// components are left as they are (nothing reads them but [`Self::combine`], which
+    /// ignores them: `project` reads `k` components).
+    fn row_sums_into(&self, v: f32, p: &mut [[f32; 4]; MAX_ORDER]) {
         let t = (v - self.v.0) / (self.v.1 - self.v.0);
         let vc = values(self.vorder, t);
-        let mut p = [[0.0f32; 4]; MAX_ORDER];
+        match self.k {
+            3 => self.row_sums_as::<3>(&vc, p),
+            4 => self.row_sums_as::<4>(&vc, p),
+            2 => self.row_sums_as::<2>(&vc, p),
+            _ => self.row_sums_as::<1>(&vc, p),
+        }
+    }
+
+    /// [`Self::row_sums_into`] for `K` = k components: each component's sum over the row's
+    /// control points from the first, in the same order (the components side by side).
+    #[inline(always)]
+    fn row_sums_as<const K: usize>(&self, vc: &[f32; MAX_ORDER], p: &mut [[f32; 4]; MAX_ORDER]) {
+        let n = self.vorder * K;
         for (row, sums) in p.iter_mut().enumerate().take(self.uorder) {
-            for (j, sum) in sums.iter_mut().enumerate().take(self.k) {
-                let at = |col: usize| self.points[(row * self.vorder + col) * self.k + j];
-                *sum = vc[0] * at(0);
-                for col in 1..self.vorder {
-                    *sum += vc[col] * at(col);
+            let points = &self.points[row * n..(row + 1) * n];
+            let mut acc = [0.0f32; K];
+            for (a, x) in acc.iter_mut().zip(&points[..K]) {
+                *a = vc[0] * x;
+            }
+            for (w, col) in vc.iter().zip(points.chunks_exact(K)).skip(1) {
+                for (a, x) in acc.iter_mut().zip(col) {
+                    *a += w * x;
                 }
             }
+            sums[..K].copy_from_slice(&acc);
         }
-        p
     }
 
     /// The u coefficients at u.
@@ -371,7 +397,18 @@ impl Positions<'_> {
 
     /// The position from the row sums and the u coefficients (`combine`, then `project`).
     #[inline]
-    fn combine(&self, p: &[[f32; 4]; MAX_ORDER], uc: &[f32; MAX_ORDER]) -> [f32; 3] {
+    fn combine(&self, p: &[[f32; 4]], uc: &[f32]) -> [f32; 3] {
+        if self.k == 4 {
+            self.combine_as::<true>(p, uc)
+        } else {
+            self.combine_as::<false>(p, uc)
+        }
+    }
+
+    /// [`Self::combine`] with the division by w (k = 4) or without, decided by the caller
+    /// outside its loops (so that no division is worked out and thrown away per point).
+    #[inline(always)]
+    fn combine_as<const RATIONAL: bool>(&self, p: &[[f32; 4]], uc: &[f32]) -> [f32; 3] {
         // Each component's sum runs over the rows in GLU's order, from zero as `combine`'s.
         let mut point = [0.0f32; 4];
         for (w, sums) in uc.iter().zip(p).take(self.uorder) {
@@ -379,7 +416,11 @@ impl Positions<'_> {
                 *c += w * s;
             }
         }
-        project(&point, self.k)
+        if RATIONAL {
+            [point[0] / point[3], point[1] / point[3], point[2] / point[3]]
+        } else {
+            [point[0], point[1], point[2]]
+        }
     }
 
     /// The position at (u, v) as [x, y, z, u, v].
@@ -412,32 +453,38 @@ impl Positions<'_> {
         Some(())
     }
 
-    /// The row sums and u coefficients of the grid lines `us` × `vs`, worked out on rayon's
-    /// workers, for [`LineTable::at`].
+    /// The row sums and u coefficients of the grid lines `us` × `vs`, for [`Self::table_at`]
+    /// (a few hundred lines: not worth waking the pool for).
     pub fn line_table(&self, us: Vec<f32>, vs: Vec<f32>) -> LineTable {
-        use rayon::prelude::*;
-        let rows = vs.par_iter().with_min_len(8).map(|&v| self.row_sums(v)).collect();
-        let ucs = us.par_iter().with_min_len(8).map(|&u| self.u_values(u)).collect();
+        let n = self.uorder;
+        let rows = vs.iter().flat_map(|&v| self.row_sums(v).into_iter().take(n)).collect();
+        let ucs = us.iter().flat_map(|&u| self.u_values(u).into_iter().take(n)).collect();
         let index = |values: &[f32]| values.iter().zip(0..).map(|(x, k)| (x.to_bits(), k)).collect();
-        LineTable { uindex: index(&us), vindex: index(&vs), us, vs, rows, ucs }
+        LineTable { uindex: index(&us), vindex: index(&vs), us, vs, uorder: n, rows, ucs }
     }
 
-    /// [`Self::points_into`], the sums of points on the lines of `tables` (made by
-    /// [`Self::line_table`] on this patch) taken from there: the same bits.
-    pub fn points_into_with(&self, uvs: &[[f32; 2]], out: &mut [[f32; 5]], tables: &[&LineTable]) -> Option<()> {
+    /// [`Self::points_into`], the sums and u coefficients of points on the lines of `table`
+    /// (made by [`Self::line_table`] on this patch) taken from there: the same bits.
+    pub fn points_into_with(&self, uvs: &[[f32; 2]], out: &mut [[f32; 5]], table: &LineTable) -> Option<()> {
         if self.empty() {
             return None;
         }
-        let mut row: Option<(u32, [[f32; 4]; MAX_ORDER])> = None;
+        // The sums of the last v off the table's lines, worked out in place.
+        let mut row = [[0.0f32; 4]; MAX_ORDER];
+        let mut row_v: Option<u32> = None;
         for (&[u, v], slot) in uvs.iter().zip(out) {
-            let on_line = tables.iter().find_map(|t| Some(&t.rows[*t.vindex.get(&v.to_bits())?]));
-            let sums = match (on_line, &row) {
-                (Some(sums), _) => sums,
-                (None, Some((bits, sums))) if *bits == v.to_bits() => sums,
-                (None, _) => &row.insert((v.to_bits(), self.row_sums(v))).1,
+            let sums = match table.v_slot(v) {
+                Some(j) => table.row(j),
+                None => {
+                    if row_v != Some(v.to_bits()) {
+                        self.row_sums_into(v, &mut row);
+                        row_v = Some(v.to_bits());
+                    }
+                    &row[..]
+                }
             };
-            let q = match tables.iter().find_map(|t| Some(&t.ucs[*t.uindex.get(&u.to_bits())?])) {
-                Some(uc) => self.combine(sums, uc),
+            let q = match table.u_slot(u) {
+                Some(i) => self.combine(sums, table.u_coefficients(i)),
                 None => self.combine(sums, &self.u_values(u)),
             };
             *slot = [q[0], q[1], q[2], u, v];
@@ -448,12 +495,44 @@ impl Positions<'_> {
     /// The position at grid point (i, j) of `table` (made by [`Self::line_table`] on this
     /// patch) as [x, y, z, u, v]: [`Self::points_into`]'s bits at (us[i], vs[j]).
     #[inline]
+    #[cfg(test)]
     pub fn table_at(&self, table: &LineTable, i: usize, j: usize) -> [f32; 5] {
-        let q = self.combine(&table.rows[j], &table.ucs[i]);
+        let q = self.combine(table.row(j), table.u_coefficients(i));
         [q[0], q[1], q[2], table.us[i], table.vs[j]]
     }
 
+    /// [`Self::table_at`] at (columns[n], j) into `out[n]`, for every n.
+    pub fn table_row_into(
+        &self,
+        table: &LineTable,
+        columns: impl Iterator<Item = usize>,
+        j: usize,
+        out: &mut [[f32; 5]],
+    ) {
+        if self.k == 4 {
+            self.table_row_as::<true>(table, columns, j, out);
+        } else {
+            self.table_row_as::<false>(table, columns, j, out);
+        }
+    }
+
+    #[inline(always)]
+    fn table_row_as<const RATIONAL: bool>(
+        &self,
+        table: &LineTable,
+        columns: impl Iterator<Item = usize>,
+        j: usize,
+        out: &mut [[f32; 5]],
+    ) {
+        let (sums, v) = (table.row(j), table.vs[j]);
+        for (slot, i) in out.iter_mut().zip(columns) {
+            let q = self.combine_as::<RATIONAL>(sums, table.u_coefficients(i));
+            *slot = [q[0], q[1], q[2], table.us[i], v];
+        }
+    }
+
     /// The positions at every (us[i], vs[j]), j outer, into `out` (`us.len() × vs.len()`).
+    #[cfg(test)]
     pub fn grid_into(&self, us: &[f32], vs: &[f32], out: &mut [[f32; 5]]) -> Option<()> {
         if self.empty() || us.is_empty() {
             return (!self.empty()).then_some(());
@@ -467,6 +546,32 @@ impl Positions<'_> {
             }
         }
         Some(())
+    }
+}
+
+impl LineTable {
+    /// Where the line u is in the table, by its bits.
+    #[inline]
+    pub fn u_slot(&self, u: f32) -> Option<usize> {
+        self.uindex.get(&u.to_bits()).copied()
+    }
+
+    /// Where the line v is in the table, by its bits.
+    #[inline]
+    pub fn v_slot(&self, v: f32) -> Option<usize> {
+        self.vindex.get(&v.to_bits()).copied()
+    }
+
+    /// The row sums of line `vs[j]`.
+    #[inline]
+    fn row(&self, j: usize) -> &[[f32; 4]] {
+        &self.rows[j * self.uorder..(j + 1) * self.uorder]
+    }
+
+    /// The u coefficients of line `us[i]`.
+    #[inline]
+    fn u_coefficients(&self, i: usize) -> &[f32] {
+        &self.ucs[i * self.uorder..(i + 1) * self.uorder]
     }
 }
 
@@ -723,10 +828,13 @@ mod tests {
             let table = positions.line_table(us.to_vec(), vs.to_vec());
             let some_lines = positions.line_table(vec![0.75, 1.1], vec![0.2]);
             let mut looked_up = vec![[0.0; 5]; uvs.len()];
-            positions.points_into_with(&uvs, &mut looked_up, &[&some_lines]).unwrap();
+            positions.points_into_with(&uvs, &mut looked_up, &some_lines).unwrap();
             for (n, &[u, v]) in uvs.iter().enumerate() {
                 let (i, j) = (n % us.len(), n / us.len());
                 assert_eq!(positions.table_at(&table, i, j).map(f32::to_bits), expect(u, v), "{k} {uo}x{vo} table");
+                let mut row = [[0.0; 5]; 2];
+                positions.table_row_into(&table, [i, i].into_iter(), j, &mut row);
+                assert_eq!(row[1].map(f32::to_bits), expect(u, v), "{k} {uo}x{vo} table row");
                 assert_eq!(grid[n].map(f32::to_bits), expect(u, v), "{k} {uo}x{vo} grid ({u}, {v})");
                 assert_eq!(listed[n].map(f32::to_bits), expect(u, v), "{k} {uo}x{vo} list ({u}, {v})");
                 assert_eq!(looked_up[n].map(f32::to_bits), expect(u, v), "{k} {uo}x{vo} looked up ({u}, {v})");

@@ -78,6 +78,9 @@ fn tessellate_block(
 /// overlaps issuing this one's callbacks, large enough to amortise the hand-over.
 const BATCH_POINTS: usize = 1 << 14;
 
+/// Vertices in the first batch, which the callbacks wait for.
+const FIRST_BATCH_POINTS: usize = 1 << 11;
+
 /// The grid lines a block covers, as [`tessellate_block`] computes them.
 fn block_lines(g: &Grid, (u0, u1): (i64, i64), (v0, v1): (i64, i64)) -> (Vec<f32>, Vec<f32>) {
     let at = |x: i64, n: usize, r: (f32, f32)| super::line(r, n, x.max(0) as usize);
@@ -108,17 +111,26 @@ fn evaluated_points(piece: &Piece) -> usize {
     }
 }
 
-/// The lines of one grid that a patch's blocks cover, from (`i0`, `j0`) on, with their sums.
-struct GridLines {
+/// One grid's lines that a patch's blocks cover, from (`i0`, `j0`) on: where each is in the
+/// patch's [`LineTable`].
+struct GridSlots {
     grid: Grid,
     i0: i64,
     j0: i64,
-    table: LineTable,
+    columns: Vec<usize>,
+    rows: Vec<usize>,
 }
 
-/// Every grid the blocks of `pieces` are on, each with the lines its blocks cover: blocks share
-/// their grid's lines, whose sums along v and u coefficients are then worked out once.
-fn grid_lines(positions: Positions<'_>, pieces: &[Piece]) -> Vec<GridLines> {
+/// Every grid line the blocks of a patch cover (each region's blocks are on its own grid),
+/// each once by its bits, with its sums along v or u coefficients worked out once: blocks and
+/// fan points on those lines take them from there.
+struct PatchLines {
+    table: LineTable,
+    grids: Vec<GridSlots>,
+}
+
+/// The lines of every grid the blocks of `pieces` are on.
+fn grid_lines(positions: Positions<'_>, pieces: &[Piece]) -> PatchLines {
     let mut ranges: Vec<(Grid, Lines, Lines)> = Vec::new();
     for (g, (u0, u1), (v0, v1)) in pieces.iter().filter_map(as_block) {
         if u1 < u0 || v1 < v0 {
@@ -133,18 +145,34 @@ fn grid_lines(positions: Positions<'_>, pieces: &[Piece]) -> Vec<GridLines> {
             None => ranges.push((*g, (u0, u1.max(u0)), (v0, v1.max(v0)))),
         }
     }
-    ranges
-        .into_iter()
-        .map(|(grid, u, v)| {
-            let (us, vs) = block_lines(&grid, u, v);
-            GridLines { grid, i0: u.0, j0: v.0, table: positions.line_table(us, vs) }
+    let lines: Vec<(Vec<f32>, Vec<f32>)> = ranges.iter().map(|(g, u, v)| block_lines(g, *u, *v)).collect();
+    let distinct = |values: Vec<&Vec<f32>>| {
+        let mut bits: Vec<u32> = values.into_iter().flatten().map(|x| x.to_bits()).collect();
+        bits.sort_unstable();
+        bits.dedup();
+        bits.into_iter().map(f32::from_bits).collect()
+    };
+    let table = positions
+        .line_table(distinct(lines.iter().map(|l| &l.0).collect()), distinct(lines.iter().map(|l| &l.1).collect()));
+    // Every line is in the table: no slot is missing.
+    let slots = |xs: &[f32], slot: &dyn Fn(f32) -> Option<usize>| xs.iter().filter_map(|&x| slot(x)).collect();
+    let grids = ranges
+        .iter()
+        .zip(&lines)
+        .map(|((grid, u, v), (us, vs))| GridSlots {
+            grid: *grid,
+            i0: u.0,
+            j0: v.0,
+            columns: slots(us, &|x| table.u_slot(x)),
+            rows: slots(vs, &|x| table.v_slot(x)),
         })
-        .collect()
+        .collect();
+    PatchLines { table, grids }
 }
 
 /// Evaluates a batch of pieces into `out` (resized), piece after piece, on rayon's workers;
-/// blocks from their grid's `lines`.
-fn evaluate_pieces(positions: Positions<'_>, lines: &[GridLines], batch: &[Piece], out: &mut Vec<[f32; 5]>) {
+/// blocks and points on grid lines from the patch's `lines`.
+fn evaluate_pieces(positions: Positions<'_>, lines: &PatchLines, batch: &[Piece], out: &mut Vec<[f32; 5]>) {
     use rayon::prelude::*;
     let size = batch.iter().map(evaluated_points).sum();
     // Every entry is overwritten: no zeroing.
@@ -159,44 +187,63 @@ fn evaluate_pieces(positions: Positions<'_>, lines: &[GridLines], batch: &[Piece
         chunks.push((piece, chunk));
         free = after;
     }
-    let tables: Vec<&LineTable> = lines.iter().map(|l| &l.table).collect();
-    let tables = tables.as_slice();
-    chunks.into_par_iter().with_min_len(16).for_each(|(piece, chunk)| {
-        let done = match piece {
-            Piece::Fan(p) | Piece::QuadStrip(p) | Piece::Line(p) => positions.points_into_with(p, chunk, tables),
-            _ => as_block(piece).and_then(|(g, (u0, u1), (v0, v1))| {
-                if let Some(l) = lines.iter().find(|l| l.grid == *g) {
-                    let width = usize::try_from(u1 - u0 + 1).unwrap_or(0).max(1);
-                    let columns: Vec<usize> = (u0..=u1).map(|i| (i.max(0) - l.i0) as usize).collect();
-                    for (row, j) in chunk.chunks_exact_mut(width).zip(v0..) {
-                        let j = (j.max(0) - l.j0) as usize;
-                        for (slot, &i) in row.iter_mut().zip(&columns) {
-                            *slot = positions.table_at(&l.table, i, j);
-                        }
-                    }
-                    return Some(());
-                }
-                let (us, vs) = block_lines(g, (u0, u1), (v0, v1));
-                positions.grid_into(&us, &vs, chunk)
-            }),
-        };
-        debug_assert!(done.is_some(), "positions of an empty patch");
-    });
+    chunks.into_par_iter().with_min_len(16).for_each(|(piece, chunk)| evaluate_piece(positions, lines, piece, chunk));
 }
 
-/// Consecutive runs of pieces of at most [`BATCH_POINTS`] evaluated points (at least one each).
+/// One piece's positions into `chunk` (as long as [`evaluated_points`]).
+fn evaluate_piece(positions: Positions<'_>, lines: &PatchLines, piece: &Piece, chunk: &mut [[f32; 5]]) {
+    let table = &lines.table;
+    let done = match piece {
+        Piece::Fan(p) | Piece::QuadStrip(p) | Piece::Line(p) => positions.points_into_with(p, chunk, table),
+        _ => as_block(piece).and_then(|(g, u, v)| evaluate_block(positions, lines, g, u, v, chunk)),
+    };
+    debug_assert!(done.is_some(), "positions of an empty patch");
+}
+
+/// A block's grid points, row after row, into `chunk` from the patch's lines; `None` if its
+/// grid has none there.
+fn evaluate_block(
+    positions: Positions<'_>,
+    lines: &PatchLines,
+    g: &Grid,
+    (u0, u1): Lines,
+    (v0, v1): Lines,
+    chunk: &mut [[f32; 5]],
+) -> Option<()> {
+    let width = usize::try_from(u1 - u0 + 1).unwrap_or(0);
+    if width == 0 || v1 < v0 {
+        return Some(());
+    }
+    let l = lines.grids.iter().find(|l| l.grid == *g)?;
+    // Lines before the first (index < 0) are the first again, as `block_lines` has them.
+    let at = |slots: &[usize], x: i64, first: i64| slots.get(usize::try_from(x.max(0) - first).ok()?).copied();
+    // The slots run with the lines: both ends there, every column between is.
+    at(&l.columns, u0, l.i0)?;
+    at(&l.columns, u1, l.i0)?;
+    for (row, j) in chunk.chunks_exact_mut(width).zip(v0..) {
+        let j = at(&l.rows, j, l.j0)?;
+        positions.table_row_into(&lines.table, (u0..).filter_map(|i| at(&l.columns, i, l.i0)), j, row);
+    }
+    Some(())
+}
+
+/// Consecutive runs of pieces of at most [`BATCH_POINTS`] evaluated points, the first of at most
+/// [`FIRST_BATCH_POINTS`] (at least one piece each).
 fn piece_batches(pieces: &[Piece]) -> Vec<&[Piece]> {
     let mut out = Vec::new();
     let mut rest = pieces;
+    // The first batch smaller: nothing overlaps its evaluation.
+    let mut limit = FIRST_BATCH_POINTS;
     while !rest.is_empty() {
         let mut take = 1;
         let mut points = evaluated_points(&rest[0]);
-        while take < rest.len() && points.saturating_add(evaluated_points(&rest[take])) <= BATCH_POINTS {
+        while take < rest.len() && points.saturating_add(evaluated_points(&rest[take])) <= limit {
             points += evaluated_points(&rest[take]);
             take += 1;
         }
         let (batch, tail) = rest.split_at(take);
         out.push(batch);
+        limit = BATCH_POINTS;
         rest = tail;
     }
     out
@@ -215,8 +262,7 @@ pub(crate) fn tessellate_pieces_sunk(
 ) {
     let [current, next] = buffers;
     let batches = piece_batches(pieces);
-    let lines = grid_lines(positions, pieces);
-    let lines = lines.as_slice();
+    let lines = &grid_lines(positions, pieces);
     if let Some(first) = batches.first() {
         evaluate_pieces(positions, lines, first, current);
     }
