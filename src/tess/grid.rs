@@ -260,6 +260,16 @@ mod tests {
         (0..uo * vo * dim).map(|k| ((k * 53 % 17) as f64) * 0.25 - 2.0).collect()
     }
 
+    /// The basis of order `vo` at `t` and the one an order lower (at least order 1).
+    fn v_bases(vo: usize, t: f64) -> (Vec<f64>, Vec<f64>) {
+        let mut bv = vec![0.0; vo];
+        crate::math::bezier::bernstein(vo, t, &mut bv);
+        let low_order = vo.saturating_sub(1).max(1);
+        let mut low = vec![0.0; low_order];
+        crate::math::bezier::bernstein(low_order, t, &mut low);
+        (bv, low)
+    }
+
     /// The points-only reduction gives the bits of the one that also reduces the partials.
     #[test]
     fn points_only_rows_match_the_general_reduction() {
@@ -267,10 +277,7 @@ mod tests {
             for (uo, vo) in [(1, 1), (4, 4), (3, 7), (30, 2)] {
                 let pts = net(uo, vo, dim);
                 let map = MapView { dim, uorder: uo, vorder: vo, points: &pts };
-                let mut bv = vec![0.0; vo];
-                crate::math::bezier::bernstein(vo, 0.37, &mut bv);
-                let mut low = vec![0.0; vo.saturating_sub(1).max(1)];
-                crate::math::bezier::bernstein(vo.saturating_sub(1).max(1), 0.37, &mut low);
+                let (bv, low) = v_bases(vo, 0.37);
                 let (mut fast, mut general) = (vec![[9.0; 4]; uo], vec![[9.0; 4]; uo]);
                 let mut dv = vec![[0.0; 4]; uo];
                 reduce_rows(&map, &bv, &low, false, &mut fast, &mut dv);
@@ -291,10 +298,7 @@ mod tests {
                 let uo = 3;
                 let pts = net(uo, vo, dim);
                 let map = MapView { dim, uorder: uo, vorder: vo, points: &pts };
-                let mut bv = vec![0.0; vo];
-                crate::math::bezier::bernstein(vo, 0.37, &mut bv);
-                let mut low = vec![0.0; vo.saturating_sub(1).max(1)];
-                crate::math::bezier::bernstein(vo.saturating_sub(1).max(1), 0.37, &mut low);
+                let (bv, low) = v_bases(vo, 0.37);
                 let (mut rows, mut rows_dv) = (vec![[9.0; 4]; uo], vec![[9.0; 4]; uo]);
                 reduce_rows(&map, &bv, &low, true, &mut rows, &mut rows_dv);
                 for i in 0..uo {
