@@ -137,20 +137,12 @@ fn pick(gl: &mut Gl, s: &State, x: i32, y: i32) -> i32 {
     gl.matrix_mode(GL_PROJECTION);
     gl.pop_matrix();
     gl.matrix_mode(GL_MODELVIEW);
-    let hits = gl.render_mode(GL_RENDER);
-    let buffer = gl.select_values();
-    let mut best = -1;
-    let mut best_depth = u32::MAX;
-    let mut p = 0;
-    for _ in 0..hits {
-        let (names, zmin) = (buffer[p], buffer[p + 1]);
-        if names > 0 && zmin <= best_depth {
-            best_depth = zmin;
-            best = buffer[p + 3] as i32;
-        }
-        p += 3 + names as usize;
-    }
-    best
+    gl.render_mode(GL_RENDER);
+    // The nearest named hit, the last of equals (the C loop's `zmin <= best_depth`).
+    gl.select_hits()
+        .filter(|hit| !hit.names.is_empty())
+        .max_by_key(|hit| std::cmp::Reverse(hit.z_min))
+        .map_or(-1, |hit| hit.names[0] as i32)
 }
 
 fn reshape(gl: &mut Gl, s: &mut State, w: i32, h: i32) {

@@ -70,6 +70,7 @@ pub use lists::MAX_LIST_NESTING;
 pub use mesh_job::{MapSample, MeshJob};
 pub use offset::PolygonOffset;
 pub use pixel_transfer::{ColorTransfer, DepthTransfer, MAX_PIXEL_MAP_TABLE};
+pub use select::SelectHit;
 pub use texgen::{TexGen, TexGenCoord, TexGenState};
 pub use texture::{BoundTexture, TexLevel, TexParams, MAX_TEXTURE_SIZE};
 pub use variants::GlComponent;

@@ -10,7 +10,8 @@
 //! 0 .. 2³² − 1, the names. Mesa scales with a float 2³² and converts as the machine does, so a
 //! depth of exactly 1 wraps to 0 (measured, `tests/reference/calls/cases/select.calls`); so
 //! does gleval. A buffer too small keeps the values that fit, and `glRenderMode` returns −1.
-//! Read the records with [`Gl::select_values`] after `render_mode` leaves selection mode.
+//! Read the records with [`Gl::select_hits`] (or the raw values with [`Gl::select_values`])
+//! after `render_mode` leaves selection mode.
 
 use super::consts::*;
 use super::feedback_prims::FeedbackPrimitive;
@@ -37,6 +38,30 @@ pub(crate) struct Selection {
     start: usize,
     /// What the last pass wrote.
     values: Vec<GLuint>,
+}
+
+/// One hit record of a selection pass: the window depths of the hit's primitives, scaled to
+/// 0 .. 2³² − 1, and the name stack when it was written (bottom first).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct SelectHit<'a> {
+    /// The smallest window depth of the hit's primitives.
+    pub z_min: GLuint,
+    /// The largest.
+    pub z_max: GLuint,
+    /// The name stack, bottom first.
+    pub names: &'a [GLuint],
+}
+
+/// The complete records of `values` (name count, minimum and maximum depth, the names, record
+/// after record); a record cut short at the end is left out.
+fn hit_records(values: &[GLuint]) -> impl Iterator<Item = SelectHit<'_>> {
+    let mut rest = values;
+    std::iter::from_fn(move || {
+        let (&[count, z_min, z_max], after) = rest.split_first_chunk::<3>()?;
+        let names = after.get(..usize::try_from(count).ok()?)?;
+        rest = &after[names.len()..];
+        Some(SelectHit { z_min, z_max, names })
+    })
 }
 
 impl Selection {
@@ -91,6 +116,13 @@ impl Gl {
     #[must_use]
     pub fn select_values(&self) -> &[GLuint] {
         &self.select.values
+    }
+
+    /// The complete hit records of the last selection pass, in the order written
+    /// ([`Gl::select_values`] read as GL 1.1 §5.2 lays them out); a record a buffer too small
+    /// cut short is left out.
+    pub fn select_hits(&self) -> impl Iterator<Item = SelectHit<'_>> {
+        hit_records(&self.select.values)
     }
 
     /// Entering selection mode (from `render_mode`): without a buffer → `GL_INVALID_OPERATION`,
@@ -232,6 +264,8 @@ mod tests {
         point(&mut gl, 3.0); // outside: no hit
         assert_eq!(gl.render_mode(GL_RENDER), 1);
         assert_eq!(gl.select_values(), &[1, 1 << 30, 3 << 30, 7]);
+        let hits: Vec<SelectHit<'_>> = gl.select_hits().collect();
+        assert_eq!(hits, [SelectHit { z_min: 1 << 30, z_max: 3 << 30, names: &[7] }]);
         assert_eq!(gl.get_error(), GL_NO_ERROR);
         assert!(gl.frame().commands.is_empty(), "selection draws nothing");
     }
@@ -246,5 +280,21 @@ mod tests {
         point(&mut gl, 0.0);
         assert_eq!(gl.render_mode(GL_RENDER), -1);
         assert_eq!(gl.select_values(), &[1, 1 << 31, 1 << 31]);
+        assert_eq!(gl.select_hits().count(), 0, "the record lost its name: cut short");
+    }
+
+    /// Records are read as GL 1.1 §5.2 lays them out, and what a buffer cut short (or a count
+    /// larger than the values) is left out without a panic.
+    #[test]
+    fn hit_records_read_the_layout() {
+        let values = [2, 10, 20, 5, 6, 0, 1, 2, 1, 3, 4];
+        let hits: Vec<SelectHit<'_>> = hit_records(&values).collect();
+        assert_eq!(
+            hits,
+            [SelectHit { z_min: 10, z_max: 20, names: &[5, 6] }, SelectHit { z_min: 1, z_max: 2, names: &[] }]
+        );
+        assert_eq!(hit_records(&[u32::MAX, 0, 0, 1]).count(), 0);
+        assert_eq!(hit_records(&[0, 1]).count(), 0);
+        assert_eq!(hit_records(&[]).count(), 0);
     }
 }
