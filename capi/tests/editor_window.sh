@@ -10,25 +10,8 @@
 set -eu
 root=$(cd "$(dirname "$0")/../.." && pwd)
 out=${1:-${CARGO_TARGET_DIR:-$root/target}/capi/editor-window}
-dir=debug
-[ "${CAPI_PROFILE:-test}" = release ] && dir=release
-export GLEVAL_LIB_DIR="${CARGO_TARGET_DIR:-$root/target}/$dir"
-mkdir -p "$out"
-pictures="$root/tests/reference/pictures"
-"$root/capi/glevalcc" -std=gnu99 -O1 -w -I"$pictures" -o "$out/editor" "$pictures/Editor.c" -lm
-display=:$((80 + $$ % 9))
-Xvfb "$display" -screen 0 640x480x24 >/dev/null 2>&1 &
-xvfb=$!
-trap 'kill $prog $xvfb 2>/dev/null || true' EXIT
-export DISPLAY="$display"
-sleep 1
-"$out/editor" >"$out/editor.log" 2>&1 &
-prog=$!
-wid=$(timeout 60 xdotool search --sync --name "Control-point editor" | head -1)
-sleep 2
-shot() { import -window "$wid" "$out/$1.png"; }
-# The window's pixel (x, y) from the top, as "r g b".
-pixel() { convert "$out/$1.png" -format "%[fx:int(255*u.p{$2,$3}.r)] %[fx:int(255*u.p{$2,$3}.g)] %[fx:int(255*u.p{$2,$3}.b)]" info:; }
+. "$root/capi/tests/window_lib.sh"
+run_in_xvfb Editor.c editor "Control-point editor" ":$((80 + $$ % 9))"
 # The ring's yellow (1, 0.9, 0.1); a green ball (0.3, 0.85, 0.35 lit); an orange one (1, 0.55, 0.15 lit).
 yellow() { set -- $(pixel "$@"); [ "$1" -gt 240 ] && [ "$2" -ge 220 ] && [ "$2" -le 240 ] && [ "$3" -lt 40 ]; }
 green() { set -- $(pixel "$@"); [ "$2" -gt 150 ] && [ "$2" -gt "$1" ] && [ "$2" -gt "$3" ]; }
@@ -37,6 +20,20 @@ fail() { echo "editor window: $*"; exit 1; }
 # The middle of menu entry N (1-based) of a menu opened at y: items 27 pixels high (Helvetica
 # 18's 23-pixel lines and 4) below a 2-pixel frame.
 entry_y() { echo $(($1 + 2 + 27 * ($2 - 1) + 13)); }
+# menu_to N: the right button pressed at (60, 150), which opens the menu there, and moved onto
+# entry N (still pressed).
+menu_to() {
+  xdotool mousemove --window "$wid" 60 150 mousedown 3
+  sleep 0.3
+  xdotool mousemove --window "$wid" 90 "$(entry_y 150 "$1")"
+  sleep 0.5
+}
+# menu_pick N: entry N chosen (the button released on it).
+menu_pick() {
+  menu_to "$1"
+  xdotool mouseup 3
+  sleep 1
+}
 
 shot 1-start
 # Point 2, (-0.8, -2.6), at window (160, 330): heavier (radius 0.26, ring 16 to 20 pixels out), green.
@@ -49,22 +46,13 @@ shot 2-clicked
 yellow 2-clicked 254 70 || fail "click: point 3 has no ring: $(pixel 2-clicked 254 70)"
 yellow 2-clicked 178 330 && fail "click: point 2 still has its ring"
 # Drag it to window (300, 120), world (2, 1.6).
-xdotool mousemove --window "$wid" 240 70 mousedown 1
-for step in 1 2 3 4 5; do
-  xdotool mousemove --window "$wid" $((240 + 12 * step)) $((70 + 10 * step))
-  sleep 0.2
-done
-xdotool mouseup 1
-sleep 1
+drag 240 70 12 10
 shot 3-dragged
 yellow 3-dragged 314 120 || fail "drag: the ring did not follow to (300, 120): $(pixel 3-dragged 314 120)"
 orange 3-dragged 300 120 || fail "drag: no orange ball at (300, 120): $(pixel 3-dragged 300 120)"
 yellow 3-dragged 254 70 && fail "drag: the ring stayed at (240, 70)"
 # The right button opens the menu at (60, 150); dragging to "Next colour" (entry 4) lights it.
-xdotool mousemove --window "$wid" 60 150 mousedown 3
-sleep 0.3
-xdotool mousemove --window "$wid" 90 "$(entry_y 150 4)"
-sleep 0.5
+menu_to 4
 shot 4-menu
 set -- $(pixel 4-menu 64 "$(entry_y 150 4)")
 [ "$3" -gt 80 ] && [ "$1" -lt 80 ] || fail "menu: \"Next colour\" is not highlighted: $*"
@@ -73,22 +61,12 @@ sleep 1
 shot 5-colour
 green 5-colour 300 120 || fail "menu: the selected ball did not turn green: $(pixel 5-colour 300 120)"
 # "Reset points" (entry 5): the ball goes back to (240, 70), orange, still selected.
-xdotool mousemove --window "$wid" 60 150 mousedown 3
-sleep 0.3
-xdotool mousemove --window "$wid" 90 "$(entry_y 150 5)"
-sleep 0.3
-xdotool mouseup 3
-sleep 1
+menu_pick 5
 shot 6-reset
 orange 6-reset 240 70 || fail "reset: point 3 is not back at (240, 70): $(pixel 6-reset 240 70)"
 yellow 6-reset 254 70 || fail "reset: point 3 lost its ring: $(pixel 6-reset 254 70)"
 # "Quit" (entry 6) ends the program.
-xdotool mousemove --window "$wid" 60 150 mousedown 3
-sleep 0.3
-xdotool mousemove --window "$wid" 90 "$(entry_y 150 6)"
-sleep 0.3
-xdotool mouseup 3
-sleep 1
+menu_pick 6
 kill -0 "$prog" 2>/dev/null && fail "quit: the program is still running"
 wait "$prog" || fail "quit: the program exited with status $?"
 echo "editor window: click selects, drag moves, the menu recolours, resets and quits (screenshots in $out)"
