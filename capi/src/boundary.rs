@@ -17,7 +17,7 @@ pub trait Fallback {
 macro_rules! zero_fallback {
     ($($t:ty),*) => { $(impl Fallback for $t { fn fallback() -> Self { Default::default() } })* };
 }
-zero_fallback!((), u8, u32, i32, f32, f64, usize, String);
+zero_fallback!((), u8, u32, i32, u64, f32, f64, usize, String);
 
 impl<T> Fallback for *const T {
     fn fallback() -> Self {

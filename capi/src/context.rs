@@ -78,6 +78,11 @@ pub fn is_current(gl: &Gl) -> bool {
     std::ptr::eq(CURRENT.with(Cell::get), gl)
 }
 
+/// The current context's address (null if none), to compare with.
+pub fn current_ptr() -> *const Gl {
+    CURRENT.with(Cell::get)
+}
+
 /// Whether a context is current.
 pub fn has_current() -> bool {
     !CURRENT.with(Cell::get).is_null()

@@ -23,12 +23,17 @@
 
 #[macro_use]
 pub mod boundary;
+mod configs;
 pub mod context;
+mod dl;
 pub mod memory;
 mod strings;
+mod surface;
+mod x11;
 
 mod gl;
 mod glew;
 mod glu;
 mod glut;
+mod glx;
 mod osmesa;

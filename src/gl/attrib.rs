@@ -146,6 +146,44 @@ impl Gl {
         if self.attrib_stack.entries.len() >= MAX_ATTRIB_STACK_DEPTH {
             return self.set_error(GL_STACK_OVERFLOW);
         }
+        let saved = self.save_groups(mask);
+        self.attrib_stack.entries.push(saved);
+    }
+
+    /// `glPopAttrib`: restores the groups the matching push saved. An empty stack →
+    /// `GL_STACK_UNDERFLOW`; inside `begin`/`end` → `GL_INVALID_OPERATION`.
+    pub fn pop_attrib(&mut self) {
+        if self.compiled(|| ListCommand::PopAttrib) || self.reject_inside_begin_end() {
+            return;
+        }
+        let Some(saved) = self.attrib_stack.entries.pop() else {
+            return self.set_error(GL_STACK_UNDERFLOW);
+        };
+        self.restore_saved(saved);
+    }
+
+    /// `glXCopyContext(src, dst, mask)` on the destination: the groups of `mask` become
+    /// `source`'s, as a push on `source` and a pop here would make them (GLX 1.4 §3.3.7;
+    /// Mesa's `_mesa_copy_context`). Neither attribute stack changes.
+    pub fn copy_attribs_from(&mut self, source: &mut Gl, mask: GLbitfield) {
+        let saved = source.save_groups(mask);
+        self.restore_saved(saved);
+    }
+
+    /// Restores what [`Gl::save_groups`] saved, as `glPopAttrib` does.
+    fn restore_saved(&mut self, saved: Saved) {
+        let (materials, tracking) = (self.lighting.materials, self.caps.is_on(GL_COLOR_MATERIAL));
+        self.restore_groups(saved);
+        if !tracking && self.caps.is_on(GL_COLOR_MATERIAL) {
+            // Mesa's pop enables it through glEnable, which copies the colour.
+            self.color_material_enabled();
+        }
+        self.land_pending_materials(materials);
+        self.touch_state();
+    }
+
+    /// The groups of `mask` as they are now.
+    fn save_groups(&mut self, mask: GLbitfield) -> Saved {
         self.flush_current();
         let r = &self.raster;
         let raster = RasterValues {
@@ -162,7 +200,7 @@ impl Gl {
             clear_color: r.clear_color,
         };
         let enables = enables_of(mask).into_iter().map(|cap| (cap, self.caps.is_on(cap))).collect();
-        let saved = Saved {
+        Saved {
             mask,
             current: self.current,
             raster,
@@ -178,27 +216,7 @@ impl Gl {
             fragments: self.fragments_attrib(),
             enables,
             pixels: self.pixel_attrib(),
-        };
-        self.attrib_stack.entries.push(saved);
-    }
-
-    /// `glPopAttrib`: restores the groups the matching push saved. An empty stack →
-    /// `GL_STACK_UNDERFLOW`; inside `begin`/`end` → `GL_INVALID_OPERATION`.
-    pub fn pop_attrib(&mut self) {
-        if self.compiled(|| ListCommand::PopAttrib) || self.reject_inside_begin_end() {
-            return;
         }
-        let Some(saved) = self.attrib_stack.entries.pop() else {
-            return self.set_error(GL_STACK_UNDERFLOW);
-        };
-        let (materials, tracking) = (self.lighting.materials, self.caps.is_on(GL_COLOR_MATERIAL));
-        self.restore_groups(saved);
-        if !tracking && self.caps.is_on(GL_COLOR_MATERIAL) {
-            // Mesa's pop enables it through glEnable, which copies the colour.
-            self.color_material_enabled();
-        }
-        self.land_pending_materials(materials);
-        self.touch_state();
     }
 
     fn restore_groups(&mut self, saved: Saved) {

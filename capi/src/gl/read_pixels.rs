@@ -59,7 +59,7 @@ fn draw_stencil(frame: &Frame, width: i32, height: i32) -> Vec<u8> {
 /// as for `glReadPixels`).
 unsafe fn read_stencil(x: GLint, y: GLint, width: GLsizei, height: GLsizei, type_: GLenum, pixels: *mut c_void) {
     let open: GLboolean = with_gl(|gl| gl.inside_begin_end().into());
-    let osmesa = if open != 0 { None } else { crate::osmesa::current_stencil() };
+    let osmesa = if open != 0 { None } else { crate::surface::current_stencil() };
     with_gl(|gl| {
         let len = gl.packed_image_len(width, height, GL_STENCIL_INDEX, type_).unwrap_or(0);
         let out = unsafe { array_mut(pixels.cast::<u8>(), len) };
@@ -80,7 +80,7 @@ entry! {
         // An OSMesa context reads its buffer, brought up to date first (outside `with_gl`: the
         // flush takes the context's frame).
         let open: GLboolean = with_gl(|gl| gl.inside_begin_end().into());
-        let osmesa = if open != 0 { None } else { crate::osmesa::flush_current() };
+        let osmesa = if open != 0 { None } else { crate::surface::flush_current() };
         with_gl(|gl| {
             let len = gl.packed_image_len(width, height, format, type_).unwrap_or(0);
             let out = unsafe { array_mut(pixels.cast::<u8>(), len) };

@@ -17,7 +17,7 @@ fn flush(finish: bool) {
         gl.inside_begin_end().into()
     });
     if open == 0 {
-        crate::osmesa::flush_current();
+        crate::surface::flush_and_show();
     }
 }
 

@@ -1,0 +1,234 @@
+#!/usr/bin/env python3
+"""Runs piglit's OpenGL 1.0 and 1.1 groups on real Mesa or on gleval, and writes one line a test.
+
+    tests/piglit/run.py fetch                       # Debian's prebuilt piglit into target/piglit
+    tests/piglit/run.py run --gl gleval --platform glx --out glx.tsv
+    tests/piglit/run.py run --gl mesa --platform glx --out mesa.tsv
+    tests/piglit/run.py table mesa.tsv glx.tsv egl.tsv   # a Markdown table side by side
+    tests/piglit/run.py check tests/piglit/expected.tsv glx.tsv --column gleval-glx
+
+`run` starts its own Xvfb for `--platform glx` (and `x11_egl`) unless DISPLAY is set;
+`surfaceless_egl` needs no X server. On gleval each test runs through `capi/gleval-run`, so
+the test binary and piglit's own libraries (waffle, piglitutil) load libgleval_c under the
+names of Mesa's libraries. A test's result is the last `PIGLIT: {"result": ...}` line it
+prints; a test that prints none is a `crash` (its exit status noted), one past `--timeout`
+seconds a `timeout`.
+
+The test list comes from the package's own `tests/opengl.xml.gz` (the commands with their
+arguments, as piglit's runner reads them): the tests whose names start with
+`spec@!opengl 1.0@` or `spec@!opengl 1.1@`.
+"""
+import argparse
+import ast
+import concurrent.futures
+import gzip
+import json
+import os
+import re
+import shlex
+import subprocess
+import sys
+import tempfile
+import time
+import xml.etree.ElementTree as ET
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(os.path.dirname(HERE))
+DEFAULT_PIGLIT = os.path.join(ROOT, "target", "piglit", "usr", "lib", "x86_64-linux-gnu", "piglit")
+GROUPS = ("spec@!opengl 1.0@", "spec@!opengl 1.1@")
+RESULT = re.compile(r'PIGLIT: (\{.*"result".*\})')
+
+
+def fetch(args):
+    """Debian's piglit package, only its test executables, libraries and test lists."""
+    dest = os.path.join(ROOT, "target", "piglit")
+    os.makedirs(dest, exist_ok=True)
+    if os.path.isfile(os.path.join(args.piglit, "bin", "gl-1.0-logicop")):
+        print(f"piglit already in {dest}")
+        return 0
+    subprocess.run(["apt-get", "download", "piglit"], cwd=dest, check=True)
+    debs = sorted(f for f in os.listdir(dest) if f.startswith("piglit_") and f.endswith(".deb"))
+    prefix = "./usr/lib/x86_64-linux-gnu/piglit/"
+    parts = [prefix + "bin", prefix + "lib", prefix + "tests/opengl.xml.gz"]
+    tar = subprocess.Popen(["dpkg-deb", "--fsys-tarfile", debs[-1]], cwd=dest, stdout=subprocess.PIPE)
+    subprocess.run(["tar", "-x"] + parts, cwd=dest, stdin=tar.stdout, check=True)
+    tar.wait()
+    os.remove(os.path.join(dest, debs[-1]))
+    return 0
+
+
+def tests(piglit, pattern):
+    """(name, argv, concurrent) of the groups' tests, in the list's order."""
+    root = ET.parse(gzip.open(os.path.join(piglit, "tests", "opengl.xml.gz"))).getroot()
+    out = []
+    for test in root:
+        name = test.get("name")
+        if not name.startswith(GROUPS) or (pattern and not re.search(pattern, name)):
+            continue
+        options = {o.get("name"): o.get("value") for o in test}
+        out.append((name, ast.literal_eval(options["command"]), options.get("run_concurrent") == "True"))
+    return out
+
+
+class Xvfb:
+    """An X server of our own for the run (none if DISPLAY is already set)."""
+
+    def __init__(self, needed):
+        self.proc = None
+        if not needed or os.environ.get("DISPLAY"):
+            return
+        for n in range(90, 120):
+            if os.path.exists(f"/tmp/.X{n}-lock"):
+                continue
+            self.proc = subprocess.Popen(["Xvfb", f":{n}", "-screen", "0", "1280x1024x24", "-nolisten", "tcp"],
+                                         stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+            for _ in range(100):
+                if os.path.exists(f"/tmp/.X11-unix/X{n}"):
+                    break
+                time.sleep(0.05)
+            os.environ["DISPLAY"] = f":{n}"
+            return
+        sys.exit("run.py: no free X display number")
+
+    def close(self):
+        if self.proc:
+            self.proc.terminate()
+            self.proc.wait()
+
+
+def run_one(piglit, gl, platform, timeout, argv, concurrent):
+    env = dict(os.environ)
+    env["PIGLIT_PLATFORM"] = platform
+    env["LD_LIBRARY_PATH"] = os.path.join(piglit, "lib") + (":" + env["LD_LIBRARY_PATH"] if env.get("LD_LIBRARY_PATH") else "")
+    env.pop("WAYLAND_DISPLAY", None)
+    if platform == "surfaceless_egl":
+        env.pop("DISPLAY", None)
+    # As piglit's runner: -auto, and -fbo for the tests it runs concurrently (drawn into a
+    # framebuffer object where the GL has them, else into the window).
+    command = [os.path.join(piglit, "bin", argv[0])] + argv[1:] + (["-auto", "-fbo"] if concurrent else ["-auto"])
+    if gl == "gleval":
+        command = [os.path.join(ROOT, "capi", "gleval-run")] + command
+    start = time.monotonic()
+    with tempfile.TemporaryDirectory() as cwd:
+        try:
+            done = subprocess.run(command, cwd=cwd, env=env, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
+                                  stderr=subprocess.STDOUT, timeout=timeout, start_new_session=True)
+        except subprocess.TimeoutExpired as e:
+            return "timeout", time.monotonic() - start, (e.output or b"").decode(errors="replace")
+    seconds = time.monotonic() - start
+    output = done.stdout.decode(errors="replace")
+    results = RESULT.findall(output)
+    if not results:
+        return f"crash({done.returncode})", seconds, output
+    result = json.loads(results[-1]).get("result", "?")
+    if done.returncode not in (0, 1) and result == "pass":
+        result = f"crash({done.returncode})"
+    return result, seconds, output
+
+
+def run(args):
+    if not os.path.isdir(args.piglit):
+        sys.exit(f"run.py: no piglit in {args.piglit} (run.py fetch)")
+    todo = tests(args.piglit, args.filter)
+    x = Xvfb(args.platform in ("glx", "x11_egl"))
+    logs = args.logs
+    if logs:
+        os.makedirs(logs, exist_ok=True)
+    results = {}
+    try:
+        with concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:
+            jobs = {pool.submit(run_one, args.piglit, args.gl, args.platform, args.timeout, argv, concurrent): name
+                    for name, argv, concurrent in todo}
+            for job in concurrent.futures.as_completed(jobs):
+                name = jobs[job]
+                result, seconds, output = job.result()
+                results[name] = (result, seconds)
+                if logs:
+                    with open(os.path.join(logs, name.split("@", 2)[2].replace("/", "_") + ".log"), "w") as f:
+                        f.write(output)
+                if args.verbose:
+                    print(f"{result:10} {seconds:6.1f}s {name}", flush=True)
+    finally:
+        x.close()
+    with open(args.out, "w") as out:
+        out.write("# test\tresult\tseconds\n")
+        for name, _, _ in todo:
+            result, seconds = results[name]
+            out.write(f"{name}\t{result}\t{seconds:.1f}\n")
+    counts = {}
+    for result, _ in results.values():
+        key = "crash" if result.startswith("crash") else result
+        counts[key] = counts.get(key, 0) + 1
+    print(f"piglit {args.gl} {args.platform}: " + ", ".join(f"{n} {k}" for k, n in sorted(counts.items())))
+    return 0
+
+
+def read(path):
+    out = {}
+    for line in open(path):
+        if line.startswith("#") or not line.strip():
+            continue
+        name, result = line.rstrip("\n").split("\t")[:2]
+        out[name] = result
+    return out
+
+
+def table(args):
+    columns = [read(p) for p in args.results]
+    names = list(columns[0])
+    print("| test | " + " | ".join(os.path.splitext(os.path.basename(p))[0] for p in args.results) + " |")
+    print("|---" * (len(columns) + 1) + "|")
+    for name in names:
+        print(f"| {name.split('@', 2)[2]} | " + " | ".join(c.get(name, "-") for c in columns) + " |")
+    return 0
+
+
+def check(args):
+    """Every test the expected list says passes on gleval passes in the results."""
+    expected = {}
+    header = None
+    for line in open(args.expected):
+        fields = line.rstrip("\n").split("\t")
+        if line.startswith("#"):
+            header = [f.strip("# ") for f in fields]
+            continue
+        if len(fields) > 1:
+            expected[fields[0]] = dict(zip(header[1:], fields[1:]))
+    got = read(args.results)
+    lost = [n for n, e in expected.items() if e.get(args.column) == "pass" and got.get(n) != "pass"]
+    gained = [n for n, e in expected.items() if e.get(args.column) != "pass" and got.get(n) == "pass"]
+    for n in gained:
+        print(f"now passes (was {expected[n].get(args.column)}): {n}")
+    for n in lost:
+        print(f"REGRESSED to {got.get(n)}: {n}")
+    passed = sum(1 for r in got.values() if r == "pass")
+    print(f"{args.column}: {passed} pass of {len(got)}; {len(lost)} that passed before do not")
+    return 1 if lost else 0
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("--piglit", default=DEFAULT_PIGLIT)
+    sub = p.add_subparsers(dest="cmd", required=True)
+    sub.add_parser("fetch")
+    r = sub.add_parser("run")
+    r.add_argument("--gl", choices=["mesa", "gleval"], default="gleval")
+    r.add_argument("--platform", choices=["glx", "surfaceless_egl", "x11_egl"], default="glx")
+    r.add_argument("--jobs", type=int, default=2)
+    r.add_argument("--timeout", type=float, default=60)
+    r.add_argument("--filter", help="a regular expression the test's name must match")
+    r.add_argument("--logs", help="a folder for each test's output")
+    r.add_argument("--out", required=True)
+    r.add_argument("-v", "--verbose", action="store_true")
+    t = sub.add_parser("table")
+    t.add_argument("results", nargs="+")
+    c = sub.add_parser("check")
+    c.add_argument("expected")
+    c.add_argument("results")
+    c.add_argument("--column", required=True)
+    args = p.parse_args()
+    return {"fetch": fetch, "run": run, "table": table, "check": check}[args.cmd](args)
+
+
+if __name__ == "__main__":
+    sys.exit(main())
