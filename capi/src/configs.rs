@@ -58,14 +58,6 @@ impl Config {
     pub fn buffers(&self) -> BufferConfig {
         BufferConfig { stencil_bits: self.stencil as u8, accum_bits: self.accum as u8, double: self.double }
     }
-
-    /// The configuration with these buffers.
-    pub fn with(double: bool, stencil: bool, accum: bool) -> &'static Config {
-        CONFIGS
-            .iter()
-            .find(|c| c.double == double && (c.stencil > 0) == stencil && (c.accum > 0) == accum)
-            .unwrap_or(&CONFIGS[0])
-    }
 }
 
 /// How a requested value is matched (GLX 1.4 table 3.4, EGL 1.5 table 3.4).
@@ -109,18 +101,6 @@ mod tests {
         let stranger = 7u64;
         assert_eq!(Config::from_handle(&stranger), None);
         assert_eq!(Config::from_handle(std::ptr::null::<u8>()), None);
-    }
-
-    #[test]
-    fn every_combination_of_buffers_is_offered_once() {
-        for double in [false, true] {
-            for stencil in [false, true] {
-                for accum in [false, true] {
-                    let c = Config::with(double, stencil, accum);
-                    assert_eq!((c.double, c.stencil > 0, c.accum > 0), (double, stencil, accum));
-                }
-            }
-        }
     }
 
     #[test]

@@ -26,6 +26,8 @@ pub mod boundary;
 mod configs;
 pub mod context;
 mod dl;
+mod egl;
+mod launcher;
 pub mod memory;
 mod strings;
 mod surface;

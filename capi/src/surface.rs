@@ -10,7 +10,6 @@
 //!
 //! Drawables are kept per thread, as the contexts current in that thread draw into them.
 
-use crate::context::is_current;
 use crate::x11::{self, Display, Xid};
 use gleval::gl::{Frame, Gl, WindowImage};
 use gleval::render::soft::Canvas;
@@ -40,6 +39,9 @@ struct Surface {
     /// The X drawable's depth (24 or 32 are drawn).
     depth: u32,
     output: Output,
+    /// The canvas's picture and depth since it was last drawn on (programs read the window
+    /// one pixel at a time, as piglit's probes do: one copy serves them all).
+    read: Option<WindowImage>,
 }
 
 /// What is bound on this thread: the drawable and the context drawing into it.
@@ -52,6 +54,17 @@ struct Binding {
 thread_local! {
     static SURFACES: RefCell<HashMap<Key, Surface>> = RefCell::new(HashMap::new());
     static BOUND: Cell<Option<Binding>> = const { Cell::new(None) };
+}
+
+/// Runs `f` on this thread's drawables; nothing (the default answer) once the thread's
+/// storage is gone (a program's exit handlers may still release their contexts then).
+fn surfaces<R: Default>(f: impl FnOnce(&RefCell<HashMap<Key, Surface>>) -> R) -> R {
+    SURFACES.try_with(f).unwrap_or_default()
+}
+
+/// As [`surfaces`], for the swap intervals.
+fn pacing<R: Default>(f: impl FnOnce(&RefCell<HashMap<Key, (u32, Option<std::time::Instant>)>>) -> R) -> R {
+    PACING.try_with(f).unwrap_or_default()
 }
 
 impl Output {
@@ -67,12 +80,13 @@ impl Output {
 /// Makes a drawable known (a GLX window, pixmap or pbuffer, an EGL surface) with its size
 /// for one without output; an existing one keeps its canvas.
 pub fn declare(key: Key, output: Output, size: (u32, u32)) {
-    SURFACES.with(|s| {
+    surfaces(|s| {
         s.borrow_mut().entry(key).or_insert_with(|| Surface {
             canvas: Canvas::new(size.0, size.1),
             size: (size.0.max(1), size.1.max(1)),
             depth: 24,
             output,
+            read: None,
         });
     });
 }
@@ -82,12 +96,13 @@ pub fn forget(key: Key) {
     if BOUND.with(Cell::get).is_some_and(|b| b.key == key) {
         BOUND.with(|b| b.set(None));
     }
-    SURFACES.with(|s| s.borrow_mut().remove(&key));
+    surfaces(|s| s.borrow_mut().remove(&key));
+    pacing(|p| p.borrow_mut().remove(&key));
 }
 
 /// A drawable's size, if it is known.
 pub fn size(key: Key) -> Option<(u32, u32)> {
-    SURFACES.with(|s| s.borrow().get(&key).map(|s| s.size))
+    surfaces(|s| s.borrow().get(&key).map(|s| s.size))
 }
 
 /// Binds `gl` to the drawable `key` (declared before): what was bound is flushed first, the
@@ -96,7 +111,7 @@ pub fn size(key: Key) -> Option<(u32, u32)> {
 /// drawable is gone.
 pub fn bind(key: Key, gl: &mut Gl, first: bool) -> bool {
     flush_current();
-    let Some((w, h)) = SURFACES.with(|s| {
+    let Some((w, h)) = surfaces(|s| {
         let mut s = s.borrow_mut();
         let surface = s.get_mut(&key)?;
         follow_size(surface);
@@ -138,6 +153,7 @@ fn follow_size(surface: &mut Surface) {
     if (w, h) != surface.size {
         surface.size = (w, h);
         surface.canvas = Canvas::new(w, h);
+        surface.read = None;
     }
 }
 
@@ -152,11 +168,14 @@ pub fn flush_current() -> Option<WindowImage> {
     let mut frame = None;
     crate::context::with_gl(|gl| frame = Some(gl.take_frame()));
     let frame = frame?;
-    let image = SURFACES.with(|s| {
+    let image = surfaces(|s| {
         let mut s = s.borrow_mut();
         let surface = s.get_mut(&key)?;
-        surface.canvas.draw_frame(&frame);
-        Some(surface.canvas.window_image())
+        if !frame.commands.is_empty() || surface.read.is_none() {
+            surface.canvas.draw_frame(&frame);
+            surface.read = Some(surface.canvas.window_image());
+        }
+        surface.read.clone()
     });
     crate::context::with_gl(|gl| gl.recycle_frame(frame));
     image
@@ -169,7 +188,7 @@ pub fn current_stencil() -> Option<Vec<u8>> {
     }
     flush_current()?;
     let key = bound()?;
-    SURFACES.with(|s| s.borrow().get(&key).map(|s| s.canvas.stencil().to_vec()))
+    surfaces(|s| s.borrow().get(&key).map(|s| s.canvas.stencil().to_vec()))
 }
 
 /// Presents the bound drawable: with `swap`, the back buffer becomes the front one first
@@ -182,7 +201,7 @@ pub fn present_current(swap: bool) {
     }
     flush_current();
     present(key);
-    let size = SURFACES.with(|s| {
+    let size = surfaces(|s| {
         let mut s = s.borrow_mut();
         let surface = s.get_mut(&key)?;
         follow_size(surface);
@@ -213,13 +232,49 @@ pub fn flush_and_show() {
 /// Presents a drawable that no context of this thread is bound to (`glXSwapBuffers` on a
 /// drawable other than the current one's: what it holds goes out).
 pub fn present(key: Key) {
-    SURFACES.with(|s| {
+    surfaces(|s| {
         let s = s.borrow();
         let Some(surface) = s.get(&key) else { return };
+        let image = surface.canvas.image();
         if let Output::X { display, drawable } = surface.output {
-            let image = surface.canvas.image();
             x11::put_rgba(display, drawable, surface.depth, image.width, image.height, &image.pixels);
         }
+        crate::launcher::frame_presented(&image);
+    });
+}
+
+thread_local! {
+    /// Each drawable's swap interval, and when it was last presented.
+    static PACING: RefCell<HashMap<Key, (u32, Option<std::time::Instant>)>> = RefCell::new(HashMap::new());
+}
+
+/// A video frame, for the swap interval: gleval presents without a display's vertical
+/// blank, so it paces swaps at 60 Hz where an interval is set.
+const FRAME: std::time::Duration = std::time::Duration::from_nanos(16_666_667);
+
+/// Sets a drawable's swap interval (0, the default: swaps are not paced, as this machine's
+/// Mesa does not pace them without a display's vertical blank).
+pub fn set_interval(key: Key, interval: u32) {
+    pacing(|p| p.borrow_mut().entry(key).or_default().0 = interval);
+}
+
+/// A drawable's swap interval.
+pub fn interval(key: Key) -> u32 {
+    pacing(|p| p.borrow().get(&key).map_or(0, |p| p.0))
+}
+
+/// Waits out the drawable's swap interval since its last swap, then notes this one.
+pub fn pace(key: Key) {
+    pacing(|p| {
+        let mut p = p.borrow_mut();
+        let entry = p.entry(key).or_default();
+        if let (n @ 1.., Some(last)) = *entry {
+            let due = last + FRAME * n;
+            if let Some(wait) = due.checked_duration_since(std::time::Instant::now()) {
+                std::thread::sleep(wait);
+            }
+        }
+        entry.1 = Some(std::time::Instant::now());
     });
 }
 
@@ -227,15 +282,10 @@ pub fn present(key: Key) {
 /// copy of it: what a context reads mid-frame (`glCopyPixels`, `glCopyTexImage2D`).
 fn read_bound(frame: &Frame, _width: u32, _height: u32) -> Option<WindowImage> {
     let key = BOUND.with(Cell::get)?.key;
-    SURFACES.with(|s| {
+    surfaces(|s| {
         let s = s.borrow();
         let mut canvas = s.get(&key)?.canvas.clone();
         canvas.draw_frame(frame);
         Some(canvas.window_image())
     })
-}
-
-/// Whether `gl` is bound to a drawable of this thread.
-pub fn is_bound(gl: &Gl) -> bool {
-    BOUND.with(Cell::get).is_some_and(|b| std::ptr::eq(b.gl, gl)) && is_current(gl)
 }

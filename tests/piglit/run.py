@@ -108,6 +108,8 @@ def run_one(piglit, gl, platform, timeout, argv, concurrent):
     command = [os.path.join(piglit, "bin", argv[0])] + argv[1:] + (["-auto", "-fbo"] if concurrent else ["-auto"])
     if gl == "gleval":
         command = [os.path.join(ROOT, "capi", "gleval-run")] + command
+    if not os.path.isfile(os.path.join(piglit, "bin", argv[0])):
+        return "missing", 0.0, f"{argv[0]}: not in the package\n"
     start = time.monotonic()
     with tempfile.TemporaryDirectory() as cwd:
         try:

@@ -51,7 +51,7 @@ fn draw_stencil(frame: &Frame, width: i32, height: i32) -> Vec<u8> {
     canvas.stencil().to_vec()
 }
 
-/// `glReadPixels` of `GL_STENCIL_INDEX`: `Gl::read_stencil_pixels` on the OSMesa buffer's
+/// `glReadPixels` of `GL_STENCIL_INDEX`: `Gl::read_stencil_pixels` on the drawable's (or OSMesa buffer's)
 /// stencil or the frame's.
 ///
 /// # Safety
@@ -59,12 +59,12 @@ fn draw_stencil(frame: &Frame, width: i32, height: i32) -> Vec<u8> {
 /// as for `glReadPixels`).
 unsafe fn read_stencil(x: GLint, y: GLint, width: GLsizei, height: GLsizei, type_: GLenum, pixels: *mut c_void) {
     let open: GLboolean = with_gl(|gl| gl.inside_begin_end().into());
-    let osmesa = if open != 0 { None } else { crate::surface::current_stencil() };
+    let drawn = if open != 0 { None } else { crate::surface::current_stencil() };
     with_gl(|gl| {
         let len = gl.packed_image_len(width, height, GL_STENCIL_INDEX, type_).unwrap_or(0);
         let out = unsafe { array_mut(pixels.cast::<u8>(), len) };
         let (w, h) = (gl.width(), gl.height());
-        let draw = |frame: &Frame| Some(osmesa.unwrap_or_else(|| draw_stencil(frame, w, h)));
+        let draw = |frame: &Frame| Some(drawn.unwrap_or_else(|| draw_stencil(frame, w, h)));
         gl.read_stencil_pixels((x, y), (width, height), type_, draw, out)
     })
 }
@@ -77,16 +77,16 @@ entry! {
         if format == GL_STENCIL_INDEX {
             return unsafe { read_stencil(x, y, width, height, type_, pixels) };
         }
-        // An OSMesa context reads its buffer, brought up to date first (outside `with_gl`: the
+        // A drawable (or OSMesa buffer) is read, brought up to date first (outside `with_gl`: the
         // flush takes the context's frame).
         let open: GLboolean = with_gl(|gl| gl.inside_begin_end().into());
-        let osmesa = if open != 0 { None } else { crate::surface::flush_current() };
+        let drawn = if open != 0 { None } else { crate::surface::flush_current() };
         with_gl(|gl| {
             let len = gl.packed_image_len(width, height, format, type_).unwrap_or(0);
             let out = unsafe { array_mut(pixels.cast::<u8>(), len) };
             let (w, h) = (gl.width(), gl.height());
-            let draw = |frame: &Frame| match &osmesa {
-                Some(image) => Some(image.clone()),
+            let draw = move |frame: &Frame| match drawn {
+                Some(image) => Some(image),
                 None => draw(frame, w, h),
             };
             gl.read_pixels((x, y), (width, height), format, type_, draw, out)

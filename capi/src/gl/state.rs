@@ -5,8 +5,9 @@ use crate::memory::array_mut;
 use crate::strings::static_c_string;
 use gleval::gl::types::*;
 
-/// `glFlush`/`glFinish`: `Gl`'s checks, then, with an OSMesa context current, what was drawn
-/// lands in its buffer (not between `glBegin` and `glEnd`, where the call is an error).
+/// `glFlush`/`glFinish`: `Gl`'s checks, then what was drawn reaches the current drawable (a
+/// single-buffered window shows it) or OSMesa buffer (not between `glBegin` and `glEnd`, where
+/// the call is an error).
 fn flush(finish: bool) {
     let open: GLboolean = with_gl(|gl| {
         if finish {
@@ -22,14 +23,14 @@ fn flush(finish: bool) {
 }
 
 entry! {
-    /// `glFlush`: `Gl::flush`, and an OSMesa context's buffer brought up to date.
+    /// `glFlush`: `Gl::flush`, and the drawable or OSMesa buffer brought up to date.
     fn glFlush() {
         flush(false)
     }
 }
 
 entry! {
-    /// `glFinish`: `Gl::finish`, and an OSMesa context's buffer brought up to date.
+    /// `glFinish`: `Gl::finish`, and the drawable or OSMesa buffer brought up to date.
     fn glFinish() {
         flush(true)
     }

@@ -25,7 +25,7 @@ struct Setup {
 
 thread_local! {
     static SETUP: RefCell<Setup> = RefCell::new(Setup {
-        options: Options::default(),
+        options: Options::from_args(crate::launcher::arguments()),
         // GLUT's default window size and display mode (GLUT_RGBA | GLUT_SINGLE | GLUT_DEPTH
         // is freeglut's; gleval's windows have colour and depth whatever is asked).
         size: (300, 300),
@@ -221,7 +221,8 @@ entry! {
             unsafe { *argv.add(kept) = std::ptr::null_mut() };
         }
         *argc = kept as c_int;
-        SETUP.with(|s| s.borrow_mut().options = Options::from_args(ours));
+        let all = crate::launcher::arguments().into_iter().chain(ours);
+        SETUP.with(|s| s.borrow_mut().options = Options::from_args(all));
         apply_x_options(&x);
     }
 }

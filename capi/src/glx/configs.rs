@@ -6,7 +6,7 @@
 //! round where the server has fewer), so that `glXChooseVisual`'s answer names the
 //! configuration a later `glXCreateContext` gets.
 
-use super::{attributes, glx_error, request, Bool, GlxError, FALSE, TRUE};
+use super::{attributes, glx_error, request, GlxError};
 use crate::configs::{meets, sort, Config, Criterion, CHANNEL_BITS, CONFIGS, DEPTH_BITS};
 use crate::x11::{self, Display, XVisualInfo};
 use std::ffi::{c_int, c_ulong, c_void};
@@ -129,7 +129,7 @@ fn choose(requested: &[(i32, i32)], fbconfig: bool) -> Option<Vec<&'static Confi
     for config in &CONFIGS {
         let mut fits = true;
         for &(name, value) in &wanted {
-            let Some(have) = attribute(config, name, 0) else { return None };
+            let have = attribute(config, name, 0)?;
             if name == GLX_VISUAL_ID || name == GLX_SCREEN {
                 continue;
             }
@@ -150,7 +150,10 @@ thread_local! {
 
 /// The visual ids of `display`'s default screen that configurations are tied to.
 fn visual_ids(display: *mut Display) -> Vec<c_ulong> {
-    if let Some(ids) = VISUALS.with(|v| v.borrow().iter().find(|(d, _)| *d == display as usize).map(|(_, i)| i.clone()))
+    if let Some(ids) = VISUALS
+        .try_with(|v| v.borrow().iter().find(|(d, _)| *d == display as usize).map(|(_, i)| i.clone()))
+        .ok()
+        .flatten()
     {
         return ids;
     }
@@ -161,7 +164,7 @@ fn visual_ids(display: *mut Display) -> Vec<c_ulong> {
         ids = (0..n).map(|i| unsafe { (*list.add(i)).visualid }).collect();
         x11::free(list.cast());
     }
-    VISUALS.with(|v| v.borrow_mut().push((display as usize, ids.clone())));
+    let _ = VISUALS.try_with(|v| v.borrow_mut().push((display as usize, ids.clone())));
     ids
 }
 
@@ -293,7 +296,7 @@ entry! {
     /// have; a handle that is not a configuration → `GLXBadFBConfig`.
     unsafe fn glXGetFBConfigAttrib(display: *mut Display, config: *mut c_void, name: c_int, value: *mut c_int) -> c_int {
         let Some(config) = Config::from_handle(config) else {
-            glx_error(display, GlxError::BadFbConfig, 0, request::GET_FB_CONFIGS);
+            glx_error(display, GlxError::FbConfig, 0, request::GET_FB_CONFIGS);
             return GLX_BAD_ATTRIBUTE;
         };
         match attribute(config, name, visual_of(display, config)) {
@@ -322,18 +325,9 @@ entry! {
 pub fn config_or_error(display: *mut Display, handle: *mut c_void, minor: u16) -> Option<&'static Config> {
     let found = Config::from_handle(handle);
     if found.is_none() {
-        glx_error(display, GlxError::BadFbConfig, 0, minor);
+        glx_error(display, GlxError::FbConfig, 0, minor);
     }
     found
-}
-
-/// glXChooseVisual's booleans, for `Bool` answers.
-pub fn flag(b: bool) -> Bool {
-    if b {
-        TRUE
-    } else {
-        FALSE
-    }
 }
 
 #[cfg(test)]

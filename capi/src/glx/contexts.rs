@@ -130,7 +130,7 @@ fn make_current(display: *mut Display, draw: Xid, read: Xid, ctx: *mut GlxContex
         return TRUE;
     }
     let Some(life) = lookup(ctx) else {
-        glx_error(display, GlxError::BadContext, ctx as Xid, minor);
+        glx_error(display, GlxError::Context, ctx as Xid, minor);
         return FALSE;
     };
     let me = std::thread::current().id();
@@ -143,7 +143,7 @@ fn make_current(display: *mut Display, draw: Xid, read: Xid, ctx: *mut GlxContex
         return FALSE;
     }
     if !declare_drawable(display, draw) || !declare_drawable(display, read) {
-        glx_error(display, GlxError::BadDrawable, if declare_drawable(display, draw) { read } else { draw }, minor);
+        glx_error(display, GlxError::Drawable, if declare_drawable(display, draw) { read } else { draw }, minor);
         return FALSE;
     }
     if CURRENT.with(Cell::get) != ctx {
@@ -185,7 +185,7 @@ fn share_ok(display: *mut Display, share: *mut GlxContext, minor: u16) -> bool {
     if share.is_null() || lookup(share).is_some() {
         return true;
     }
-    glx_error(display, GlxError::BadContext, share as Xid, minor);
+    glx_error(display, GlxError::Context, share as Xid, minor);
     false
 }
 
@@ -271,11 +271,11 @@ fn refuse(list: &[(c_int, c_int)]) -> Option<Result<u8, GlxError>> {
                 & !(GLX_CONTEXT_CORE_PROFILE_BIT | GLX_CONTEXT_COMPATIBILITY_PROFILE_BIT | GLX_CONTEXT_ES_PROFILE_BIT)
                 != 0)
     {
-        return Some(Err(GlxError::BadProfile));
+        return Some(Err(GlxError::Profile));
     }
     // Above what gleval implements, or a forward-compatible context: no configuration can.
     if (major, minor) > (1, 1) || flags & GLX_CONTEXT_FORWARD_COMPATIBLE_BIT != 0 {
-        return Some(Err(GlxError::BadFbConfig));
+        return Some(Err(GlxError::FbConfig));
     }
     None
 }
@@ -313,7 +313,7 @@ entry! {
     /// released; a handle that is not a context → `GLXBadContext`.
     fn glXDestroyContext(display: *mut Display, ctx: *mut GlxContext) {
         let Some(life) = lookup(ctx) else {
-            glx_error(display, GlxError::BadContext, ctx as Xid, request::DESTROY_CONTEXT);
+            glx_error(display, GlxError::Context, ctx as Xid, request::DESTROY_CONTEXT);
             return;
         };
         if life.current_in.is_some() {
@@ -331,7 +331,7 @@ entry! {
     fn glXCopyContext(display: *mut Display, source: *mut GlxContext, dest: *mut GlxContext, mask: std::ffi::c_ulong) {
         let (Some(_), Some(to)) = (lookup(source), lookup(dest)) else {
             let bad = if lookup(source).is_none() { source } else { dest };
-            glx_error(display, GlxError::BadContext, bad as Xid, request::COPY_CONTEXT);
+            glx_error(display, GlxError::Context, bad as Xid, request::COPY_CONTEXT);
             return;
         };
         if source == dest {
@@ -357,7 +357,7 @@ entry! {
         if lookup(ctx).is_some() {
             TRUE
         } else {
-            glx_error(display, GlxError::BadContext, ctx as Xid, request::QUERY_CONTEXT);
+            glx_error(display, GlxError::Context, ctx as Xid, request::QUERY_CONTEXT);
             FALSE
         }
     }
@@ -368,8 +368,8 @@ entry! {
     /// attribute → `GLX_BAD_ATTRIBUTE`; a handle that is not a context → `GLXBadContext`.
     unsafe fn glXQueryContext(display: *mut Display, ctx: *mut GlxContext, name: c_int, value: *mut c_int) -> c_int {
         if lookup(ctx).is_none() {
-            glx_error(display, GlxError::BadContext, ctx as Xid, request::QUERY_CONTEXT);
-            return GlxError::BadContext as c_int;
+            glx_error(display, GlxError::Context, ctx as Xid, request::QUERY_CONTEXT);
+            return GlxError::Context as c_int;
         }
         // SAFETY: registered, hence live; only its configuration is read.
         let config = unsafe { (*ctx).config };
@@ -441,8 +441,8 @@ mod tests {
         assert_eq!(refuse(&[]), None);
         assert_eq!(refuse(&compat(1, 0)), None);
         assert_eq!(refuse(&compat(1, 1)), None);
-        assert_eq!(refuse(&compat(1, 2)), Some(Err(GlxError::BadFbConfig)));
-        assert_eq!(refuse(&compat(3, 3)), Some(Err(GlxError::BadFbConfig)));
+        assert_eq!(refuse(&compat(1, 2)), Some(Err(GlxError::FbConfig)));
+        assert_eq!(refuse(&compat(3, 3)), Some(Err(GlxError::FbConfig)));
         assert_eq!(refuse(&compat(1, 7)), Some(Ok(BAD_MATCH)));
         assert_eq!(refuse(&compat(2, 5)), Some(Ok(BAD_MATCH)));
         assert_eq!(refuse(&[(GLX_CONTEXT_FLAGS, GLX_CONTEXT_FORWARD_COMPATIBLE_BIT)]), Some(Ok(BAD_MATCH)));
@@ -451,6 +451,6 @@ mod tests {
         assert_eq!(refuse(&[(0x1234, 1)]), Some(Ok(BAD_VALUE)));
         let bad_profile =
             [(GLX_CONTEXT_MAJOR_VERSION, 3), (GLX_CONTEXT_MINOR_VERSION, 2), (GLX_CONTEXT_PROFILE_MASK, 3)];
-        assert_eq!(refuse(&bad_profile), Some(Err(GlxError::BadProfile)));
+        assert_eq!(refuse(&bad_profile), Some(Err(GlxError::Profile)));
     }
 }

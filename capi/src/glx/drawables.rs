@@ -16,7 +16,6 @@ use crate::x11::{self, Display, XVisualInfo, Xid};
 use std::cell::{Cell, RefCell};
 use std::collections::HashMap;
 use std::ffi::{c_int, c_uint, c_void};
-use std::time::{Duration, Instant};
 
 const GLX_PRESERVED_CONTENTS: c_int = 0x801B;
 const GLX_LARGEST_PBUFFER: c_int = 0x801C;
@@ -29,9 +28,6 @@ const GLX_SWAP_INTERVAL_EXT: c_int = 0x20F1;
 const GLX_MAX_SWAP_INTERVAL_EXT: c_int = 0x20F2;
 /// The largest swap interval (Mesa's).
 const MAX_SWAP_INTERVAL: c_int = i32::MAX;
-/// A video frame, for the swap interval: gleval presents without a display's vertical
-/// blank, so it paces swaps at 60 Hz where an interval is set.
-const FRAME: Duration = Duration::from_nanos(16_666_667);
 /// pbuffer ids: 2^29 up, where no X server's client ids reach.
 const FIRST_PBUFFER: Xid = 1 << 29;
 
@@ -41,10 +37,6 @@ struct Drawable {
     config_id: c_int,
     pbuffer: bool,
     preserved: bool,
-    /// The swap interval (0: swaps are not paced, as on this machine's Mesa without a
-    /// display's vertical blank).
-    interval: c_int,
-    last_swap: Option<Instant>,
 }
 
 thread_local! {
@@ -57,15 +49,15 @@ fn key(display: *mut Display, id: Xid) -> Key {
 }
 
 fn remember(display: *mut Display, id: Xid, drawable: Drawable) {
-    DRAWABLES.with(|d| d.borrow_mut().insert(key(display, id), drawable));
+    let _ = DRAWABLES.try_with(|d| d.borrow_mut().insert(key(display, id), drawable));
 }
 
 fn known(display: *mut Display, id: Xid) -> Option<Drawable> {
-    DRAWABLES.with(|d| d.borrow().get(&key(display, id)).copied())
+    DRAWABLES.try_with(|d| d.borrow().get(&key(display, id)).copied()).ok().flatten()
 }
 
 fn plain(config_id: c_int) -> Drawable {
-    Drawable { config_id, pbuffer: false, preserved: true, interval: 0, last_swap: None }
+    Drawable { config_id, pbuffer: false, preserved: true }
 }
 
 /// An X window or pixmap as a GLX drawable: the X id, once the server knows it.
@@ -82,14 +74,14 @@ fn x_drawable(display: *mut Display, config: *mut c_void, id: Xid, minor: u16, b
 entry! {
     /// `glXCreateWindow`: the X window as a GLX window (its own id).
     fn glXCreateWindow(display: *mut Display, config: *mut c_void, window: Xid, _list: *const c_int) -> Xid {
-        x_drawable(display, config, window, request::CREATE_WINDOW, GlxError::BadWindow)
+        x_drawable(display, config, window, request::CREATE_WINDOW, GlxError::Window)
     }
 }
 
 entry! {
     /// `glXCreatePixmap`: the X pixmap as a GLX pixmap (its own id).
     fn glXCreatePixmap(display: *mut Display, config: *mut c_void, pixmap: Xid, _list: *const c_int) -> Xid {
-        x_drawable(display, config, pixmap, request::CREATE_PIXMAP, GlxError::BadPixmap)
+        x_drawable(display, config, pixmap, request::CREATE_PIXMAP, GlxError::Pixmap)
     }
 }
 
@@ -102,7 +94,7 @@ entry! {
             x_error(display, BAD_VALUE, 0, request::CREATE_GLX_PIXMAP);
             return 0;
         };
-        x_drawable(display, config.handle(), pixmap, request::CREATE_GLX_PIXMAP, GlxError::BadPixmap)
+        x_drawable(display, config.handle(), pixmap, request::CREATE_GLX_PIXMAP, GlxError::Pixmap)
     }
 }
 
@@ -110,7 +102,7 @@ entry! {
 fn destroy(display: *mut Display, id: Xid, pbuffer: bool) -> bool {
     match known(display, id) {
         Some(d) if d.pbuffer == pbuffer => {
-            DRAWABLES.with(|d| d.borrow_mut().remove(&key(display, id)));
+            let _ = DRAWABLES.try_with(|d| d.borrow_mut().remove(&key(display, id)));
             surface::forget(key(display, id));
             true
         }
@@ -122,7 +114,7 @@ entry! {
     /// `glXDestroyWindow`; a window that is not a GLX window → `GLXBadWindow`.
     fn glXDestroyWindow(display: *mut Display, window: Xid) {
         if !destroy(display, window, false) {
-            glx_error(display, GlxError::BadWindow, window, request::DESTROY_WINDOW);
+            glx_error(display, GlxError::Window, window, request::DESTROY_WINDOW);
         }
     }
 }
@@ -131,7 +123,7 @@ entry! {
     /// `glXDestroyPixmap`; one that is not a GLX pixmap → `GLXBadPixmap`.
     fn glXDestroyPixmap(display: *mut Display, pixmap: Xid) {
         if !destroy(display, pixmap, false) {
-            glx_error(display, GlxError::BadPixmap, pixmap, request::DESTROY_PIXMAP);
+            glx_error(display, GlxError::Pixmap, pixmap, request::DESTROY_PIXMAP);
         }
     }
 }
@@ -140,7 +132,7 @@ entry! {
     /// `glXDestroyGLXPixmap`: as `glXDestroyPixmap`.
     fn glXDestroyGLXPixmap(display: *mut Display, pixmap: Xid) {
         if !destroy(display, pixmap, false) {
-            glx_error(display, GlxError::BadPixmap, pixmap, request::DESTROY_GLX_PIXMAP);
+            glx_error(display, GlxError::Pixmap, pixmap, request::DESTROY_GLX_PIXMAP);
         }
     }
 }
@@ -187,25 +179,9 @@ entry! {
     /// `glXDestroyPbuffer`; one that is not a pbuffer → `GLXBadPbuffer`.
     fn glXDestroyPbuffer(display: *mut Display, pbuffer: Xid) {
         if !destroy(display, pbuffer, true) {
-            glx_error(display, GlxError::BadPbuffer, pbuffer, request::DESTROY_PBUFFER);
+            glx_error(display, GlxError::Pbuffer, pbuffer, request::DESTROY_PBUFFER);
         }
     }
-}
-
-/// Waits out the drawable's swap interval since its last swap.
-fn pace(display: *mut Display, id: Xid) {
-    let Some(d) = known(display, id) else { return };
-    if let (true, Some(last)) = (d.interval > 0, d.last_swap) {
-        let due = last + FRAME * d.interval as u32;
-        if let Some(wait) = due.checked_duration_since(Instant::now()) {
-            std::thread::sleep(wait);
-        }
-    }
-    DRAWABLES.with(|all| {
-        if let Some(d) = all.borrow_mut().get_mut(&key(display, id)) {
-            d.last_swap = Some(Instant::now());
-        }
-    });
 }
 
 entry! {
@@ -216,13 +192,13 @@ entry! {
     fn glXSwapBuffers(display: *mut Display, drawable: Xid) {
         let key = key(display, drawable);
         if surface::bound() == Some(key) {
-            pace(display, drawable);
+            surface::pace(key);
             surface::present_current(true);
         } else if surface::size(key).is_some() || declare_drawable(display, drawable) {
-            pace(display, drawable);
+            surface::pace(key);
             surface::present(key);
         } else {
-            glx_error(display, GlxError::BadDrawable, drawable, request::SWAP_BUFFERS);
+            glx_error(display, GlxError::Drawable, drawable, request::SWAP_BUFFERS);
         }
     }
 }
@@ -235,7 +211,7 @@ entry! {
     unsafe fn glXQueryDrawable(display: *mut Display, drawable: Xid, name: c_int, value: *mut c_uint) {
         let k = key(display, drawable);
         if surface::size(k).is_none() && !declare_drawable(display, drawable) {
-            glx_error(display, GlxError::BadDrawable, drawable, request::GET_DRAWABLE_ATTRIBUTES);
+            glx_error(display, GlxError::Drawable, drawable, request::GET_DRAWABLE_ATTRIBUTES);
             return;
         }
         let d = known(display, drawable).unwrap_or(plain(0));
@@ -251,7 +227,7 @@ entry! {
             GLX_LARGEST_PBUFFER => 0,
             GLX_FBCONFIG_ID => d.config_id as c_uint,
             GLX_EVENT_MASK => 0,
-            GLX_SWAP_INTERVAL_EXT => d.interval as c_uint,
+            GLX_SWAP_INTERVAL_EXT => surface::interval(k),
             GLX_MAX_SWAP_INTERVAL_EXT => MAX_SWAP_INTERVAL as c_uint,
             _ => {
                 x_error(display, BAD_VALUE, drawable, request::GET_DRAWABLE_ATTRIBUTES);
@@ -267,8 +243,7 @@ entry! {
 
 /// Sets a drawable's swap interval.
 fn set_interval(display: *mut Display, drawable: Xid, interval: c_int) {
-    let k = key(display, drawable);
-    DRAWABLES.with(|all| all.borrow_mut().entry(k).or_insert_with(|| plain(0)).interval = interval);
+    surface::set_interval(key(display, drawable), interval as u32);
 }
 
 /// The current context's drawable and display, if a GLX context is current.
@@ -309,7 +284,7 @@ entry! {
 entry! {
     /// `glXGetSwapIntervalMESA`: the current drawable's swap interval (0 without one).
     fn glXGetSwapIntervalMESA() -> c_int {
-        current_drawable().and_then(|(d, id)| known(d, id)).map_or(0, |d| d.interval)
+        current_drawable().map_or(0, |(d, id)| surface::interval(key(d, id)) as c_int)
     }
 }
 
@@ -345,7 +320,7 @@ entry! {
     /// `glXSelectEvent`: GLX's events (pbuffer clobbers, swap completions) are not sent by
     /// gleval; the mask is kept for `glXGetSelectedEvent`.
     fn glXSelectEvent(display: *mut Display, drawable: Xid, mask: std::ffi::c_ulong) {
-        SELECTED.with(|s| s.borrow_mut().insert(key(display, drawable), mask));
+        let _ = SELECTED.try_with(|s| s.borrow_mut().insert(key(display, drawable), mask));
     }
 }
 
@@ -353,7 +328,7 @@ entry! {
     /// `glXGetSelectedEvent`: the mask `glXSelectEvent` kept (0 if none).
     unsafe fn glXGetSelectedEvent(display: *mut Display, drawable: Xid, mask: *mut std::ffi::c_ulong) {
         if !mask.is_null() {
-            let kept = SELECTED.with(|s| s.borrow().get(&key(display, drawable)).copied().unwrap_or(0));
+            let kept = SELECTED.try_with(|s| s.borrow().get(&key(display, drawable)).copied()).ok().flatten().unwrap_or(0);
             // SAFETY: GLX's contract: an unsigned long to write.
             unsafe { *mask = kept };
         }

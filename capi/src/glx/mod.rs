@@ -19,7 +19,9 @@ mod contexts;
 mod drawables;
 mod strings;
 
+pub(crate) use configs::visual_of;
 pub(crate) use contexts::current_display;
+pub(crate) use strings::proc_address;
 
 use crate::x11::{self, Display, Xid};
 
@@ -28,19 +30,18 @@ pub type Bool = std::ffi::c_int;
 pub const TRUE: Bool = 1;
 pub const FALSE: Bool = 0;
 
-/// GLX's error numbers (offsets from the extension's first error; `glxproto.h`).
+/// GLX's errors, `GLXBad*` (offsets from the extension's first error; `glxproto.h`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 #[repr(u8)]
 pub enum GlxError {
-    BadContext = 0,
-    BadDrawable = 2,
-    BadPixmap = 3,
-    BadCurrentWindow = 5,
-    BadFbConfig = 9,
-    BadPbuffer = 10,
-    BadWindow = 12,
+    Context = 0,
+    Drawable = 2,
+    Pixmap = 3,
+    FbConfig = 9,
+    Pbuffer = 10,
+    Window = 12,
     /// GLX_ARB_create_context_profile's `GLXBadProfileARB`.
-    BadProfile = 13,
+    Profile = 13,
 }
 
 /// X's core errors GLX reports.
@@ -57,7 +58,6 @@ pub mod request {
     pub const COPY_CONTEXT: u16 = 10;
     pub const SWAP_BUFFERS: u16 = 11;
     pub const CREATE_GLX_PIXMAP: u16 = 13;
-    pub const GET_VISUAL_CONFIGS: u16 = 14;
     pub const DESTROY_GLX_PIXMAP: u16 = 15;
     pub const GET_FB_CONFIGS: u16 = 21;
     pub const CREATE_PIXMAP: u16 = 22;

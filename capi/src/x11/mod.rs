@@ -65,47 +65,43 @@ struct XErrorEvent {
 /// An X error handler.
 type ErrorHandler = Option<unsafe extern "C" fn(*mut Display, *mut XErrorEvent) -> c_int>;
 
-/// The Xlib functions, as the loader found them.
-struct Xlib {
-    get_geometry: unsafe extern "C" fn(
-        *mut Display,
-        Xid,
-        *mut Xid,
-        *mut c_int,
-        *mut c_int,
-        *mut c_uint,
-        *mut c_uint,
-        *mut c_uint,
-        *mut c_uint,
-    ) -> c_int,
-    create_gc: unsafe extern "C" fn(*mut Display, Xid, c_ulong, *mut c_void) -> *mut c_void,
-    free_gc: unsafe extern "C" fn(*mut Display, *mut c_void) -> c_int,
-    init_image: unsafe extern "C" fn(*mut XImage) -> c_int,
-    put_image: unsafe extern "C" fn(
-        *mut Display,
-        Xid,
-        *mut c_void,
-        *mut XImage,
-        c_int,
-        c_int,
-        c_int,
-        c_int,
-        c_uint,
-        c_uint,
-    ) -> c_int,
-    flush: unsafe extern "C" fn(*mut Display) -> c_int,
-    sync: unsafe extern "C" fn(*mut Display, c_int) -> c_int,
-    get_visual_info: unsafe extern "C" fn(*mut Display, c_long, *mut XVisualInfo, *mut c_int) -> *mut XVisualInfo,
-    default_screen: unsafe extern "C" fn(*mut Display) -> c_int,
-    screen_count: unsafe extern "C" fn(*mut Display) -> c_int,
-    display_width: unsafe extern "C" fn(*mut Display, c_int) -> c_int,
-    display_height: unsafe extern "C" fn(*mut Display, c_int) -> c_int,
-    free: unsafe extern "C" fn(*mut c_void) -> c_int,
-    query_extension: unsafe extern "C" fn(*mut Display, *const c_char, *mut c_int, *mut c_int, *mut c_int) -> c_int,
-    next_request: unsafe extern "C" fn(*mut Display) -> c_ulong,
-    open_display: unsafe extern "C" fn(*const c_char) -> *mut Display,
-    set_error_handler: unsafe extern "C" fn(ErrorHandler) -> ErrorHandler,
-    connection_number: unsafe extern "C" fn(*mut Display) -> c_int,
+/// The Xlib functions gleval calls: the struct of their addresses, and its loader.
+macro_rules! xlib {
+    ($($field:ident = $name:literal: fn($($a:ty),*) -> $r:ty;)*) => {
+        /// The Xlib functions, as the loader found them.
+        struct Xlib {
+            $($field: unsafe extern "C" fn($($a),*) -> $r,)*
+        }
+
+        /// Each function by name; `None` if one is missing.
+        fn load(find: impl Fn(&CStr) -> Option<*mut c_void>) -> Option<Xlib> {
+            Some(Xlib {
+                $(
+                    // SAFETY: the symbol is Xlib's function of that name, whose C signature
+                    // the field's type spells.
+                    $field: unsafe { std::mem::transmute::<*mut c_void, unsafe extern "C" fn($($a),*) -> $r>(find($name)?) },
+                )*
+            })
+        }
+    };
+}
+
+xlib! {
+    get_geometry = c"XGetGeometry": fn(*mut Display, Xid, *mut Xid, *mut c_int, *mut c_int, *mut c_uint, *mut c_uint, *mut c_uint, *mut c_uint) -> c_int;
+    create_gc = c"XCreateGC": fn(*mut Display, Xid, c_ulong, *mut c_void) -> *mut c_void;
+    free_gc = c"XFreeGC": fn(*mut Display, *mut c_void) -> c_int;
+    init_image = c"XInitImage": fn(*mut XImage) -> c_int;
+    put_image = c"XPutImage": fn(*mut Display, Xid, *mut c_void, *mut XImage, c_int, c_int, c_int, c_int, c_uint, c_uint) -> c_int;
+    flush = c"XFlush": fn(*mut Display) -> c_int;
+    sync = c"XSync": fn(*mut Display, c_int) -> c_int;
+    get_visual_info = c"XGetVisualInfo": fn(*mut Display, c_long, *mut XVisualInfo, *mut c_int) -> *mut XVisualInfo;
+    default_screen = c"XDefaultScreen": fn(*mut Display) -> c_int;
+    screen_count = c"XScreenCount": fn(*mut Display) -> c_int;
+    free = c"XFree": fn(*mut c_void) -> c_int;
+    query_extension = c"XQueryExtension": fn(*mut Display, *const c_char, *mut c_int, *mut c_int, *mut c_int) -> c_int;
+    next_request = c"XNextRequest": fn(*mut Display) -> c_ulong;
+    open_display = c"XOpenDisplay": fn(*const c_char) -> *mut Display;
+    set_error_handler = c"XSetErrorHandler": fn(ErrorHandler) -> ErrorHandler;
 }
 
 /// Xlib, found in the process or loaded; `None` where there is none.
@@ -113,43 +109,9 @@ fn xlib() -> Option<&'static Xlib> {
     static XLIB: OnceLock<Option<Xlib>> = OnceLock::new();
     XLIB.get_or_init(|| {
         let loaded = dl::symbol(None, c"XOpenDisplay").map(|_| None).unwrap_or_else(|| dl::open(c"libX11.so.6"));
-        let find = |name: &CStr| dl::symbol(loaded, name);
-        macro_rules! load {
-            ($($field:ident = $name:literal),* $(,)?) => {
-                Xlib { $(
-                    // SAFETY: each symbol is Xlib's function of that name, whose C signature
-                    // the field's type spells.
-                    $field: unsafe { std::mem::transmute::<*mut c_void, _>(find($name)?) },
-                )* }
-            };
-        }
-        Some(load! {
-            get_geometry = c"XGetGeometry",
-            create_gc = c"XCreateGC",
-            free_gc = c"XFreeGC",
-            init_image = c"XInitImage",
-            put_image = c"XPutImage",
-            flush = c"XFlush",
-            sync = c"XSync",
-            get_visual_info = c"XGetVisualInfo",
-            default_screen = c"XDefaultScreen",
-            screen_count = c"XScreenCount",
-            display_width = c"XDisplayWidth",
-            display_height = c"XDisplayHeight",
-            free = c"XFree",
-            query_extension = c"XQueryExtension",
-            next_request = c"XNextRequest",
-            open_display = c"XOpenDisplay",
-            set_error_handler = c"XSetErrorHandler",
-            connection_number = c"XConnectionNumber",
-        })
+        load(|name| dl::symbol(loaded, name))
     })
     .as_ref()
-}
-
-/// Whether Xlib can be had.
-pub fn available() -> bool {
-    xlib().is_some()
 }
 
 /// A drawable's size and depth; `None` if it is not one (the X server's `BadDrawable` then
@@ -267,28 +229,11 @@ pub fn screens(display: *mut Display) -> Option<(c_int, c_int)> {
     Some(unsafe { ((x.default_screen)(display), (x.screen_count)(display)) })
 }
 
-/// A screen's size in pixels.
-pub fn screen_size(display: *mut Display, screen: c_int) -> Option<(c_int, c_int)> {
-    let x = xlib()?;
-    let (_, count) = screens(display)?;
-    if !(0..count).contains(&screen) {
-        return None;
-    }
-    // SAFETY: the program's open connection, an existing screen.
-    Some(unsafe { ((x.display_width)(display, screen), (x.display_height)(display, screen)) })
-}
-
 /// Opens a connection to the X server `name` names (`DISPLAY` for `None`); NULL if none.
 pub fn open_display(name: Option<&CStr>) -> *mut Display {
     let Some(x) = xlib() else { return std::ptr::null_mut() };
     // SAFETY: a NUL-terminated name or NULL, as XOpenDisplay takes.
     unsafe { (x.open_display)(name.map_or(std::ptr::null(), CStr::as_ptr)) }
-}
-
-/// Whether `display` looks like an open connection: Xlib answers its socket.
-pub fn is_open(display: *mut Display) -> bool {
-    // SAFETY: as for every call here, the program's promise that a non-NULL `Display *` is one.
-    xlib().is_some_and(|x| !display.is_null() && unsafe { (x.connection_number)(display) } >= 0)
 }
 
 /// The server's GLX extension: its major opcode and first error code, if it has one (gleval
