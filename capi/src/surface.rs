@@ -39,9 +39,10 @@ struct Surface {
     /// The X drawable's depth (24 or 32 are drawn).
     depth: u32,
     output: Output,
-    /// The canvas's picture and depth since it was last drawn on (programs read the window
-    /// one pixel at a time, as piglit's probes do: one copy serves them all).
-    read: Option<WindowImage>,
+    /// The colour buffer last read (the back one?) with the depth buffer, since the canvas
+    /// was last drawn on (programs read the window one pixel at a time, as piglit's probes
+    /// do: one copy serves them all).
+    read: Option<(bool, WindowImage)>,
 }
 
 /// What is bound on this thread: the drawable and the context drawing into it.
@@ -165,17 +166,20 @@ pub fn flush_current() -> Option<WindowImage> {
         return Some(image);
     }
     let key = bound()?;
-    let mut frame = None;
-    crate::context::with_gl(|gl| frame = Some(gl.take_frame()));
-    let frame = frame?;
+    let mut taken = None;
+    crate::context::with_gl(|gl| taken = Some((gl.take_frame(), gl.reads_back_buffer())));
+    let (frame, back) = taken?;
     let image = surfaces(|s| {
         let mut s = s.borrow_mut();
         let surface = s.get_mut(&key)?;
-        if !frame.commands.is_empty() || surface.read.is_none() {
+        if !frame.commands.is_empty() {
             surface.canvas.draw_frame(&frame);
-            surface.read = Some(surface.canvas.window_image());
+            surface.read = None;
         }
-        surface.read.clone()
+        if surface.read.as_ref().is_none_or(|(b, _)| *b != back) {
+            surface.read = Some((back, surface.canvas.buffer_image(back)));
+        }
+        surface.read.as_ref().map(|(_, image)| image.clone())
     });
     crate::context::with_gl(|gl| gl.recycle_frame(frame));
     image

@@ -53,6 +53,14 @@ impl Gl {
 
     /// The buffers (`FRONT_BUFFER`, `BACK_BUFFER` bits) `mode` reaches in this context: a
     /// single-buffered context has one buffer, the front, which `GL_BACK` reaches too.
+    /// Whether the read buffer (`glReadBuffer`) is the back one: what a reader of the window
+    /// hands `glReadPixels`, `glCopyPixels` and `glCopyTexImage` (a single-buffered context
+    /// reads its front buffer whatever is named).
+    #[must_use]
+    pub fn reads_back_buffer(&self) -> bool {
+        self.buffers_of(self.fragments.read_buffer) & super::fragments::BACK_BUFFER != 0
+    }
+
     pub(crate) fn buffers_of(&self, mode: GLenum) -> u8 {
         let bits = buffers_named(mode).unwrap_or(0);
         if self.fragments.config.double || bits == 0 {

@@ -222,12 +222,20 @@ impl Gl {
     /// `glRectf`: exactly `glBegin(GL_POLYGON)`, the four corners (x1, y1), (x2, y1), (x2, y2),
     /// (x1, y2) with z = 0, `glEnd()` (GL 1.1 spec §2.9).
     pub fn rectf(&mut self, x1: GLfloat, y1: GLfloat, x2: GLfloat, y2: GLfloat) {
-        self.begin(GL_POLYGON);
-        self.vertex2f(x1, y1);
-        self.vertex2f(x2, y1);
-        self.vertex2f(x2, y2);
-        self.vertex2f(x1, y2);
-        self.end();
+        // One command, as Mesa's `OPCODE_RECTF`: inside `begin`/`end` (directly or from a list
+        // called there) it is `GL_INVALID_OPERATION` and draws nothing (GL 1.1 §2.9).
+        if self.compiled(|| super::lists::ListCommand::Rect([x1, y1, x2, y2])) || self.reject_inside_begin_end() {
+            return;
+        }
+        // In GL_COMPILE_AND_EXECUTE the rectangle is recorded once, not also as its vertices.
+        self.uncompiled(|gl| {
+            gl.begin(GL_POLYGON);
+            gl.vertex2f(x1, y1);
+            gl.vertex2f(x2, y1);
+            gl.vertex2f(x2, y2);
+            gl.vertex2f(x1, y2);
+            gl.end();
+        });
     }
 
     /// `glRectd` (cast to float).

@@ -36,6 +36,8 @@ pub const MAX_LIST_NESTING: usize = 64;
 pub(crate) enum ListCommand {
     /// `glBegin`, `glEnd`, `glVertex`, `glColor`, `glNormal`, `glTexCoord`: the calls a frame logs.
     Immediate(Call),
+    /// `glRect*`: `[x1, y1, x2, y2]`.
+    Rect([f32; 4]),
     Enable(GLenum),
     Disable(GLenum),
     Light(GLenum, GLenum, Vec<f32>),
@@ -181,6 +183,14 @@ pub(crate) struct Lists {
 }
 
 impl Gl {
+    /// Runs `f` with no list being compiled: the calls of a command that is recorded whole
+    /// (`glCallList`, `glRect`) are not recorded again in `GL_COMPILE_AND_EXECUTE`.
+    pub(crate) fn uncompiled(&mut self, f: impl FnOnce(&mut Self)) {
+        let compiling = self.lists.compiling.take();
+        f(self);
+        self.lists.compiling = compiling;
+    }
+
     /// The gate of every compiled command: while a list is compiled, appends `command()` to it
     /// and returns true when the command must not run now (`GL_COMPILE`).
     pub(crate) fn compiled(&mut self, command: impl FnOnce() -> ListCommand) -> bool {
@@ -292,9 +302,7 @@ impl Gl {
         }
         self.flush_current();
         // In GL_COMPILE_AND_EXECUTE the call is recorded; what the list does is not again.
-        let compiling = self.lists.compiling.take();
-        self.execute_list(list);
-        self.lists.compiling = compiling;
+        self.uncompiled(|gl| gl.execute_list(list));
     }
 
     /// `glCallLists`: executes `n` lists whose names (offsets from [`Gl::list_base`]) are read
@@ -388,7 +396,21 @@ impl Gl {
         }
         let Some(commands) = self.lists.lists.get(&name).cloned() else { return };
         self.lists.depth += 1;
-        for command in commands.iter() {
+        let mut commands = commands.iter();
+        while let Some(command) = commands.next() {
+            // A primitive the list begins, replayed inside `begin`/`end` (the list called
+            // there), is `GL_INVALID_OPERATION` and is not drawn, its vertices up to its
+            // `glEnd` included (Mesa's `vbo_save_playback_vertex_list`: "draw operation inside
+            // glBegin/End"); `glDrawArrays` compiled into the list is such a primitive.
+            if matches!(command, ListCommand::Immediate(Call::Begin(_))) && self.inside_begin_end() {
+                self.set_error(GL_INVALID_OPERATION);
+                for skipped in commands.by_ref() {
+                    if matches!(skipped, ListCommand::Immediate(Call::End)) {
+                        break;
+                    }
+                }
+                continue;
+            }
             self.execute(command);
         }
         self.lists.depth -= 1;
@@ -399,6 +421,7 @@ impl Gl {
         use ListCommand as C;
         match command {
             C::Immediate(Call::Begin(mode)) => self.begin(*mode),
+            C::Rect([x1, y1, x2, y2]) => self.rectf(*x1, *y1, *x2, *y2),
             C::Immediate(Call::End) => self.end(),
             C::Immediate(Call::Vertex([x, y, z, w])) => self.vertex4f(*x, *y, *z, *w),
             C::Immediate(Call::Color([r, g, b, a])) => self.color4f(*r, *g, *b, *a),

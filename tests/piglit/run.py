@@ -101,8 +101,15 @@ def run_one(piglit, gl, platform, timeout, argv, concurrent):
     env["PIGLIT_PLATFORM"] = platform
     env["LD_LIBRARY_PATH"] = os.path.join(piglit, "lib") + (":" + env["LD_LIBRARY_PATH"] if env.get("LD_LIBRARY_PATH") else "")
     env.pop("WAYLAND_DISPLAY", None)
+    # gleval-run's symbol check (nm over the test and its libraries) costs more than most
+    # tests; a symbol gleval lacked would end the test at the loader instead, as a crash.
+    env.setdefault("GLEVAL_RUN_CHECK", "0")
     if platform == "surfaceless_egl":
         env.pop("DISPLAY", None)
+        # Surfaceless EGL has no window to show: piglit's window framework would abort in
+        # its event loop; with PIGLIT_NO_WINDOW=1 a test runs its display callback once and
+        # reports, as Mesa's CI runs piglit there.
+        env.setdefault("PIGLIT_NO_WINDOW", "1")
     # As piglit's runner: -auto, and -fbo for the tests it runs concurrently (drawn into a
     # framebuffer object where the GL has them, else into the window).
     command = [os.path.join(piglit, "bin", argv[0])] + argv[1:] + (["-auto", "-fbo"] if concurrent else ["-auto"])
@@ -185,6 +192,61 @@ def table(args):
     return 0
 
 
+def reason(log):
+    """Why a test did not pass, from its output: the context or extension it asked for, or
+    its first line of complaint."""
+    lines = [l.strip() for l in log.splitlines() if l.strip() and not l.startswith("PIGLIT")]
+    for l in lines:
+        m = re.search(r"Requested a (OpenGL [\d.]+) Compatibility Context", l)
+        if m:
+            return f"needs an {m.group(1)} context"
+        m = re.search(r"(?:Test requires|Requires) (\S+)", l)
+        if m:
+            return f"needs {m.group(1).rstrip('.')}"
+        m = re.search(r'Function "(\w+)" not supported', l)
+        if m:
+            return f"calls {m.group(1)}"
+    bad = [l for l in lines if re.search(r"(?i)expected|fail|error|unexpected|mismatch", l)]
+    return (bad or lines or [""])[0][:110].replace("|", "/")
+
+
+def report(args):
+    """The Markdown table of the results side by side, each difference with its reason."""
+    columns = [(os.path.splitext(os.path.basename(p))[0], read(p)) for p in args.results]
+    names = list(columns[0][1])
+    out = []
+    totals = []
+    for title, results in columns:
+        counts = {}
+        for r in results.values():
+            key = "crash" if r.startswith("crash") else r
+            counts[key] = counts.get(key, 0) + 1
+        totals.append(f"| {title} | " + " | ".join(str(counts.get(k, 0)) for k in KINDS) + " |")
+    out.append("| run | " + " | ".join(KINDS) + " |")
+    out.append("|---" * (len(KINDS) + 1) + "|")
+    out += totals
+    out.append("")
+    out.append("| test | " + " | ".join(t for t, _ in columns) + " | why they differ |")
+    out.append("|---" * (len(columns) + 2) + "|")
+    for name in names:
+        row = [c.get(name, "-") for _, c in columns]
+        if len(set(row)) == 1:
+            continue
+        why = ""
+        for (title, results), logs in zip(columns, args.logs or []):
+            if results.get(name) != "pass" and logs and os.path.isdir(logs):
+                path = os.path.join(logs, name.split("@", 2)[2].replace("/", "_") + ".log")
+                if os.path.exists(path):
+                    why = reason(open(path, errors="replace").read())
+                    break
+        out.append(f"| {name.split('@', 2)[2]} | " + " | ".join(row) + f" | {why} |")
+    print("\n".join(out))
+    return 0
+
+
+KINDS = ["pass", "fail", "skip", "warn", "crash", "timeout", "missing"]
+
+
 def check(args):
     """Every test the expected list says passes on gleval passes in the results."""
     expected = {}
@@ -198,14 +260,19 @@ def check(args):
             expected[fields[0]] = dict(zip(header[1:], fields[1:]))
     got = read(args.results)
     lost = [n for n, e in expected.items() if e.get(args.column) == "pass" and got.get(n) != "pass"]
+    # A crash or a hang is a defect whatever the test.
+    broken = [n for n, r in got.items() if r.startswith("crash") or r == "timeout"]
+    broken = [n for n in broken if expected.get(n, {}).get(args.column) != got[n]]
+    for n in broken:
+        print(f"{got[n].upper()}: {n}")
     gained = [n for n, e in expected.items() if e.get(args.column) != "pass" and got.get(n) == "pass"]
     for n in gained:
         print(f"now passes (was {expected[n].get(args.column)}): {n}")
     for n in lost:
         print(f"REGRESSED to {got.get(n)}: {n}")
     passed = sum(1 for r in got.values() if r == "pass")
-    print(f"{args.column}: {passed} pass of {len(got)}; {len(lost)} that passed before do not")
-    return 1 if lost else 0
+    print(f"{args.column}: {passed} pass of {len(got)}; {len(lost)} that passed before do not, {len(broken)} newly crash or hang")
+    return 1 if lost or broken else 0
 
 
 def main():
@@ -224,12 +291,15 @@ def main():
     r.add_argument("-v", "--verbose", action="store_true")
     t = sub.add_parser("table")
     t.add_argument("results", nargs="+")
+    rep = sub.add_parser("report")
+    rep.add_argument("results", nargs="+")
+    rep.add_argument("--logs", nargs="*", help="each run's log folder (for the reasons), in the same order")
     c = sub.add_parser("check")
     c.add_argument("expected")
     c.add_argument("results")
     c.add_argument("--column", required=True)
     args = p.parse_args()
-    return {"fetch": fetch, "run": run, "table": table, "check": check}[args.cmd](args)
+    return {"fetch": fetch, "run": run, "table": table, "report": report, "check": check}[args.cmd](args)
 
 
 if __name__ == "__main__":

@@ -220,6 +220,13 @@ impl Framebuffer {
         crate::gl::WindowImage { width: self.width, height: self.height, color, depth: self.depth.clone() }
     }
 
+    /// A copy of the colour buffer `bit` names (the front one if the back does not exist) and
+    /// the depth buffer.
+    pub fn buffer_image(&self, bit: u8) -> crate::gl::WindowImage {
+        let color = self.color(bit).iter().flatten().copied().collect();
+        crate::gl::WindowImage { width: self.width, height: self.height, color, depth: self.depth.clone() }
+    }
+
     /// A copy of the picture as an [`Image`].
     pub fn image(&self) -> Image {
         Image { width: self.width, height: self.height, pixels: self.shown().iter().flatten().copied().collect() }

@@ -114,6 +114,13 @@ impl Canvas {
         self.fb.window_image()
     }
 
+    /// One colour buffer (the back one for `back`, where there is one) with the depth buffer:
+    /// what a read of that buffer sees (`glReadBuffer`).
+    #[must_use]
+    pub fn buffer_image(&self, back: bool) -> WindowImage {
+        self.fb.buffer_image(if back { crate::gl::fragments::BACK_BUFFER } else { crate::gl::fragments::FRONT_BUFFER })
+    }
+
     /// Draws a recorded frame over what the canvas holds, its meshes evaluated on the CPU.
     pub fn draw_frame(&mut self, frame: &Frame) {
         self.draw(&assemble(frame));
