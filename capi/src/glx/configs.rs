@@ -112,8 +112,10 @@ fn choose(requested: &[(i32, i32)], fbconfig: bool) -> Option<Vec<&'static Confi
     let mut wanted: Vec<(i32, i32)> = if fbconfig {
         vec![(GLX_LEVEL, 0), (GLX_STEREO, 0), (GLX_RENDER_TYPE, GLX_RGBA_BIT), (GLX_DRAWABLE_TYPE, GLX_WINDOW_BIT)]
     } else {
-        // glXChooseVisual: a boolean absent is false (GLX_RGBA absent asks for colour index).
-        vec![(GLX_LEVEL, 0), (GLX_STEREO, 0), (GLX_DOUBLEBUFFER, 0), (GLX_RGBA, 0)]
+        // glXChooseVisual: a boolean absent is false. Without GLX_RGBA GLX asks for colour
+        // index, which Mesa answers with an RGBA visual where it has no colour index (as
+        // llvmpipe, and gleval): so does gleval.
+        vec![(GLX_LEVEL, 0), (GLX_STEREO, 0), (GLX_DOUBLEBUFFER, 0)]
     };
     for &(name, value) in requested {
         if fbconfig && name == GLX_RGBA || !fbconfig && name == GLX_RENDER_TYPE {
@@ -219,8 +221,8 @@ fn screen_exists(display: *mut Display, screen: c_int) -> bool {
 
 entry! {
     /// `glXChooseVisual`: the visual of the best configuration meeting the list (booleans
-    /// stand alone; without `GLX_RGBA` a colour-index visual is asked for, which gleval
-    /// has not: NULL, as Mesa's llvmpipe answers). The caller frees it with `XFree`.
+    /// stand alone; without `GLX_RGBA` an RGBA one all the same, as Mesa answers without
+    /// colour-index visuals). The caller frees it with `XFree`.
     unsafe fn glXChooseVisual(display: *mut Display, screen: c_int, list: *const c_int) -> *mut XVisualInfo {
         let booleans = [GLX_USE_GL, GLX_RGBA, GLX_DOUBLEBUFFER, GLX_STEREO];
         // SAFETY: GLX's contract for the list.
@@ -336,7 +338,7 @@ mod tests {
 
     #[test]
     fn choose_visual_needs_rgba_and_matches_double_buffering_exactly() {
-        assert!(choose(&[], false).unwrap().is_empty(), "no GLX_RGBA: colour index, which gleval has not");
+        assert!(!choose(&[], false).unwrap().is_empty(), "no GLX_RGBA: RGBA all the same, as Mesa answers");
         let single = choose(&[(GLX_RGBA, 1)], false).unwrap();
         assert!(!single.is_empty() && single.iter().all(|c| !c.double));
         let double = choose(&[(GLX_RGBA, 1), (GLX_DOUBLEBUFFER, 1), (GLX_DEPTH_SIZE, 16)], false).unwrap();

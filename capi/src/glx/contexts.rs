@@ -138,11 +138,14 @@ fn make_current(display: *mut Display, draw: Xid, read: Xid, ctx: *mut GlxContex
         x_error(display, BAD_ACCESS, ctx as Xid, minor);
         return FALSE;
     }
-    if draw == 0 || read == 0 {
+    // No drawable at all: current without one (nothing drawn lands anywhere), as Mesa
+    // allows; one of the two alone is `BadMatch`.
+    let none = draw == 0 && read == 0;
+    if !none && (draw == 0 || read == 0) {
         x_error(display, BAD_MATCH, draw, minor);
         return FALSE;
     }
-    if !declare_drawable(display, draw) || !declare_drawable(display, read) {
+    if !none && (!declare_drawable(display, draw) || !declare_drawable(display, read)) {
         glx_error(display, GlxError::Drawable, if declare_drawable(display, draw) { read } else { draw }, minor);
         return FALSE;
     }
@@ -156,6 +159,10 @@ fn make_current(display: *mut Display, draw: Xid, read: Xid, ctx: *mut GlxContex
     (context.draw, context.read) = (draw, read);
     crate::context::make_current(&mut context.gl);
     CURRENT.with(|c| c.set(ctx));
+    if none {
+        surface::unbind();
+        return TRUE;
+    }
     let first = !context.bound_once;
     context.bound_once = true;
     surface::bind(Key { display: display as usize, drawable: draw }, &mut context.gl, first);
@@ -237,9 +244,18 @@ const GLX_CONTEXT_CORE_PROFILE_BIT: c_int = 0x1;
 const GLX_CONTEXT_COMPATIBILITY_PROFILE_BIT: c_int = 0x2;
 const GLX_CONTEXT_ES_PROFILE_BIT: c_int = 0x4;
 
-/// The OpenGL versions that exist (GLX_ARB_create_context: another is `BadMatch`).
-fn version_exists(major: c_int, minor: c_int) -> bool {
-    matches!((major, minor), (1, 0..=5) | (2, 0..=1) | (3, 0..=3) | (4, 0..=6))
+/// Whether a version cannot exist (GLX_ARB_create_context: `BadMatch`): a minor version past
+/// the last of its major one, of the majors there are; a major version above 4 is one no
+/// configuration offers (`GLXBadFBConfig`), as Mesa answers.
+fn version_impossible(major: c_int, minor: c_int) -> bool {
+    let last = match major {
+        1 => 5,
+        2 => 1,
+        3 => 3,
+        4 => 6,
+        m => return m < 1 || minor < 0,
+    };
+    minor < 0 || minor > last
 }
 
 /// Why GLX_ARB_create_context refuses an attribute list, if it does: the error and its
@@ -260,7 +276,7 @@ fn refuse(list: &[(c_int, c_int)]) -> Option<Result<u8, GlxError>> {
     if flags & !(GLX_CONTEXT_DEBUG_BIT | GLX_CONTEXT_FORWARD_COMPATIBLE_BIT) != 0 {
         return Some(Ok(BAD_VALUE));
     }
-    if !version_exists(major, minor) || flags & GLX_CONTEXT_FORWARD_COMPATIBLE_BIT != 0 && major < 3 {
+    if version_impossible(major, minor) || flags & GLX_CONTEXT_FORWARD_COMPATIBLE_BIT != 0 && major < 3 {
         return Some(Ok(BAD_MATCH));
     }
     // The profile mask counts from OpenGL 3.2 on; one bit, of the three there are.
@@ -445,6 +461,7 @@ mod tests {
         assert_eq!(refuse(&compat(3, 3)), Some(Err(GlxError::FbConfig)));
         assert_eq!(refuse(&compat(1, 7)), Some(Ok(BAD_MATCH)));
         assert_eq!(refuse(&compat(2, 5)), Some(Ok(BAD_MATCH)));
+        assert_eq!(refuse(&compat(9, 0)), Some(Err(GlxError::FbConfig)));
         assert_eq!(refuse(&[(GLX_CONTEXT_FLAGS, GLX_CONTEXT_FORWARD_COMPATIBLE_BIT)]), Some(Ok(BAD_MATCH)));
         assert_eq!(refuse(&[(GLX_CONTEXT_FLAGS, 0x40)]), Some(Ok(BAD_VALUE)));
         assert_eq!(refuse(&[(GLX_CONTEXT_FLAGS, GLX_CONTEXT_DEBUG_BIT)]), None);
