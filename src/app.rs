@@ -128,6 +128,9 @@ pub struct App {
     menu_at: (i32, i32),
     /// `glutInitWindowPosition` (a subwindow's place in its parent).
     position: Option<(i32, i32)>,
+    /// The screen's size, as the window system says it (`GLUT_SCREEN_WIDTH`/`HEIGHT`); unset,
+    /// GLUT answers the window's size.
+    screen: Option<(i32, i32)>,
     /// The program's other windows, in creation order, each with its parent's number (0 for
     /// a top-level window); this window is number 1.
     extra: Vec<(i32, App)>,
@@ -166,6 +169,7 @@ impl App {
             popup: None,
             menu_at: (0, 0),
             position: None,
+            screen: None,
             extra: Vec::new(),
             context: None,
             more: callbacks::More::default(),
@@ -177,6 +181,16 @@ impl App {
     #[must_use]
     pub fn position(mut self, x: i32, y: i32) -> Self {
         self.position = Some((x, y));
+        self
+    }
+
+    /// The screen's size in pixels, for `glutGet(GLUT_SCREEN_WIDTH)` and `GLUT_SCREEN_HEIGHT`
+    /// (and their millimetres at 100 dots an inch): the C ABI gives the X screen's where there
+    /// is a display, as freeglut answers. Without it a headless program is told its first
+    /// window's size.
+    #[must_use]
+    pub fn screen_size(mut self, width: i32, height: i32) -> Self {
+        self.screen = Some((width, height));
         self
     }
 

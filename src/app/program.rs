@@ -60,6 +60,7 @@ impl Program {
     pub fn new(mut root: App) -> Self {
         let tessellator = root.tessellator();
         let schedule = root.take_schedule(0.0);
+        let screen = root.screen.unwrap_or((0, 0));
         let mut slots = Vec::new();
         for (index, (parent, mut app)) in root.flatten().into_iter().enumerate() {
             let id = index as i32 + 1;
@@ -91,7 +92,7 @@ impl Program {
             leave: false,
             effects: Vec::new(),
             now_ms: 0.0,
-            screen: (0, 0),
+            screen,
             messages,
         };
         for slot in &mut program.slots {

@@ -185,12 +185,24 @@ pub(super) fn target_index(target: GLenum) -> Option<usize> {
 /// The base internal format of an `internalformat` argument (GL 1.1 table 3.15, with GL 1.0's
 /// component counts 1..4), `None` for one GL rejects.
 pub(super) fn base_format(internal: GLint) -> Option<GLenum> {
+    // GL 1.1 table 3.15's sized formats name their base format; gleval keeps each channel in
+    // 8 bits whatever size is asked (GL allows more or fewer, §3.8.1), and says so through
+    // `glGetTexLevelParameter`. The intensity formats are not taken.
     match internal as GLenum {
-        1 | GL_LUMINANCE | GL_LUMINANCE8 => Some(GL_LUMINANCE),
-        2 | GL_LUMINANCE_ALPHA | GL_LUMINANCE8_ALPHA8 => Some(GL_LUMINANCE_ALPHA),
-        3 | GL_RGB | GL_RGB8 => Some(GL_RGB),
-        4 | GL_RGBA | GL_RGBA8 => Some(GL_RGBA),
-        GL_ALPHA | GL_ALPHA8 => Some(GL_ALPHA),
+        1 | GL_LUMINANCE | GL_LUMINANCE4 | GL_LUMINANCE8 | GL_LUMINANCE12 | GL_LUMINANCE16 => Some(GL_LUMINANCE),
+        2
+        | GL_LUMINANCE_ALPHA
+        | GL_LUMINANCE4_ALPHA4
+        | GL_LUMINANCE6_ALPHA2
+        | GL_LUMINANCE8_ALPHA8
+        | GL_LUMINANCE12_ALPHA4
+        | GL_LUMINANCE12_ALPHA12
+        | GL_LUMINANCE16_ALPHA16 => Some(GL_LUMINANCE_ALPHA),
+        3 | GL_RGB | GL_R3_G3_B2 | GL_RGB4 | GL_RGB5 | GL_RGB8 | GL_RGB10 | GL_RGB12 | GL_RGB16 => Some(GL_RGB),
+        4 | GL_RGBA | GL_RGBA2 | GL_RGBA4 | GL_RGB5_A1 | GL_RGBA8 | GL_RGB10_A2 | GL_RGBA12 | GL_RGBA16 => {
+            Some(GL_RGBA)
+        }
+        GL_ALPHA | GL_ALPHA4 | GL_ALPHA8 | GL_ALPHA12 | GL_ALPHA16 => Some(GL_ALPHA),
         _ => None,
     }
 }

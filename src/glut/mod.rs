@@ -109,6 +109,13 @@ impl Gl {
         self.window_request(WindowRequest::FullScreen, |gl| gl.glut.full_screen = true);
     }
 
+    /// The screen's size in pixels that `glutGet(GLUT_SCREEN_WIDTH)` and `GLUT_SCREEN_HEIGHT`
+    /// answer (see [`App::screen_size`](crate::app::App::screen_size), which sets it for
+    /// every window of a program).
+    pub fn glut_set_screen_size(&mut self, width: i32, height: i32) {
+        self.glut.screen = (width, height);
+    }
+
     /// `glutGet`: every name freeglut 3.4 answers on X11. The current window's size, position,
     /// parent, children, cursor and full-screen state; its buffers (RGBA, double buffered as
     /// asked, a 24-bit depth buffer, stencil, alpha and accumulation as the display mode asks);

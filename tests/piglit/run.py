@@ -77,8 +77,11 @@ class Xvfb:
         self.proc = None
         if not needed or os.environ.get("DISPLAY"):
             return
-        for n in range(90, 120):
-            if os.path.exists(f"/tmp/.X{n}-lock"):
+        # A display number of this run's own (from the process id), where no other X server
+        # holds the lock: two runs at once never share (or end) one server.
+        start = 200 + os.getpid() % 600
+        for n in range(start, start + 50):
+            if os.path.exists(f"/tmp/.X{n}-lock") or os.path.exists(f"/tmp/.X11-unix/X{n}"):
                 continue
             self.proc = subprocess.Popen(["Xvfb", f":{n}", "-screen", "0", "1280x1024x24", "-nolisten", "tcp"],
                                          stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)

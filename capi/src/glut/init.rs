@@ -75,7 +75,13 @@ pub(super) fn new_window(title: &str, sub: Option<(i32, i32, i32, i32)>) -> App 
             app = app.position(x, y);
         }
         app.context_mut().glut_inherit_settings(&s.settings);
-        app
+        match crate::x11::default_screen_size() {
+            Some((w, h)) => {
+                app.context_mut().glut_set_screen_size(w, h);
+                app.screen_size(w, h)
+            }
+            None => app,
+        }
     })
 }
 
@@ -224,6 +230,10 @@ entry! {
         let all = crate::launcher::arguments().into_iter().chain(ours);
         SETUP.with(|s| s.borrow_mut().options = Options::from_args(all));
         apply_x_options(&x);
+        // freeglut answers the X screen's size (after `-display`, which picks the server).
+        if let Some((w, h)) = crate::x11::default_screen_size() {
+            SETUP.with(|s| s.borrow_mut().settings.glut_set_screen_size(w, h));
+        }
     }
 }
 

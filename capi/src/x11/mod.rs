@@ -102,6 +102,8 @@ xlib! {
     next_request = c"XNextRequest": fn(*mut Display) -> c_ulong;
     open_display = c"XOpenDisplay": fn(*const c_char) -> *mut Display;
     set_error_handler = c"XSetErrorHandler": fn(ErrorHandler) -> ErrorHandler;
+    display_width = c"XDisplayWidth": fn(*mut Display, c_int) -> c_int;
+    display_height = c"XDisplayHeight": fn(*mut Display, c_int) -> c_int;
 }
 
 /// Xlib, found in the process or loaded; `None` where there is none.
@@ -227,6 +229,23 @@ pub fn screens(display: *mut Display) -> Option<(c_int, c_int)> {
     }
     // SAFETY: the program's open connection.
     Some(unsafe { ((x.default_screen)(display), (x.screen_count)(display)) })
+}
+
+/// The default screen's size in pixels of the X server `DISPLAY` names, if there is one
+/// (asked once; the connection stays open, as the program's own would).
+pub fn default_screen_size() -> Option<(c_int, c_int)> {
+    static SIZE: OnceLock<Option<(c_int, c_int)>> = OnceLock::new();
+    *SIZE.get_or_init(|| {
+        std::env::var_os("DISPLAY").filter(|d| !d.is_empty())?;
+        let x = xlib()?;
+        let display = open_display(None);
+        if display.is_null() {
+            return None;
+        }
+        // SAFETY: a connection just opened.
+        let (screen, _) = screens(display)?;
+        Some(unsafe { ((x.display_width)(display, screen), (x.display_height)(display, screen)) })
+    })
 }
 
 /// Opens a connection to the X server `name` names (`DISPLAY` for `None`); NULL if none.
