@@ -5,7 +5,8 @@
 # in an Xvfb of its own and with surfaceless EGL (no X server); the outputs must be the same.
 # Then the lines where Mesa departs from GLX's specification are checked on gleval alone,
 # Debian's glxinfo must print gleval's strings and visuals, and glxgears (run unchanged) must
-# draw its three gears headless (--png).
+# draw its three gears headless (--png). Last, capi/tests/glx/fuzz.c's random calls with
+# handles that are not handles must end as they began.
 #
 #   capi/tests/glx.sh [OUT]
 set -eu
@@ -21,6 +22,7 @@ export GLEVAL_LIB_DIR="$target/$dir"
 run="$root/capi/gleval-run"
 mkdir -p "$out"
 cc -std=gnu99 -O1 -Wall -o "$out/calls" "$here/glx/calls.c" -lGL -lEGL -lX11 -lpthread
+cc -std=gnu99 -O1 -Wall -o "$out/fuzz" "$here/glx/fuzz.c" -lGL -lEGL -lX11 -lpthread
 
 display=:$(( $$ % 400 + 100 ))
 Xvfb "$display" -screen 0 640x480x24 -nolisten tcp >/dev/null 2>&1 &
@@ -85,4 +87,15 @@ else
   echo "glx.sh: glxgears wrote no picture (see $out/glxgears.log)"
   failed=1
 fi
+# Random GLX and EGL calls with handles that are not handles, in two threads (gleval only).
+for seed in 1 2 3; do
+  if DISPLAY=$display timeout 300 "$run" "$out/fuzz" 3000 $seed > "$out/fuzz.$seed.txt" 2>&1 &&
+    ! grep -q 'failed inside the library' "$out/fuzz.$seed.txt"; then
+    echo "glx.sh: fuzz seed $seed: $(tail -1 "$out/fuzz.$seed.txt")"
+  else
+    echo "glx.sh: fuzz seed $seed crashed, hung or panicked:"
+    tail -20 "$out/fuzz.$seed.txt"
+    failed=1
+  fi
+done
 exit $failed
