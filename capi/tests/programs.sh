@@ -97,7 +97,7 @@ shoot() {
       why="no window titled \"$title\" within 30 s: $(tail -n 5 "$out/$shot.log")"
       return 1
     fi
-    wid=$(xdotool search --onlyvisible --name "^$title\$" 2>/dev/null | head -n 1 || true)
+    wid=$(find_window "$title")
     [ -n "$wid" ] || sleep 0.2
   done
   sleep "$delay"
@@ -118,7 +118,7 @@ shoot() {
   prog=
   # Let the window go before the next program maps its own at the same place.
   i=0
-  while [ $i -lt 50 ] && xdotool search --onlyvisible --name "^$title\$" >/dev/null 2>&1; do
+  while [ $i -lt 50 ] && [ -n "$(find_window "$title")" ]; do
     sleep 0.1
     i=$((i + 1))
   done
@@ -128,6 +128,19 @@ shoot() {
     return 1
   fi
   return 0
+}
+
+# find_window TITLE: the id of a viewable window titled TITLE, if any. xdotool's --name does not
+# match names stored as UTF-8 WM_NAME (SDL2 in pygame's wheel stores them so); xwininfo does.
+find_window() {
+  w=$(xdotool search --onlyvisible --name "^$1\$" 2>/dev/null | head -n 1 || true)
+  if [ -z "$w" ]; then
+    for w in $(xwininfo -root -tree 2>/dev/null | awk -v t="\"$1\":" 'index($0, t) { print $1 }'); do
+      if xwininfo -id "$w" 2>/dev/null | grep -q 'Map State: IsViewable'; then echo "$w"; return; fi
+    done
+    w=
+  fi
+  echo "$w"
 }
 
 # colours PNG: how many distinct colours the picture has (a drawn scene has hundreds).

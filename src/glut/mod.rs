@@ -110,8 +110,7 @@ impl Gl {
     }
 
     /// The screen's size in pixels that `glutGet(GLUT_SCREEN_WIDTH)` and `GLUT_SCREEN_HEIGHT`
-    /// answer (see [`App::screen_size`](crate::app::App::screen_size), which sets it for
-    /// every window of a program).
+    /// answer (`App::screen_size` sets it for every window of a program).
     pub fn glut_set_screen_size(&mut self, width: i32, height: i32) {
         self.glut.screen = (width, height);
     }
