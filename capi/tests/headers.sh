@@ -33,11 +33,23 @@ echo "headers: $(grep -c _Static_assert "$tmp/consts.c") constants checked again
 
 # 2. Declarations against exports.
 grep -ho '\b\(gl\|glu\|glut\)[A-Z][A-Za-z0-9]*(' "$here"/include/GL/*.h | tr -d '(' | sort -u > "$tmp/declared"
-nm -D --defined-only "$lib" | awk '$2 == "T" {print $3}' | grep '^\(gl\|glu\|glut\)[A-Z]' | sort -u > "$tmp/exported"
+nm -D --defined-only "$lib" | awk '$2 == "T" {print $3}' | grep '^\(gl\|glu\|glut\)[A-Z]' | grep -v '^glX' | sort -u > "$tmp/exported"
 if ! diff "$tmp/declared" "$tmp/exported" > "$tmp/diff"; then
   echo "headers: declared (<) and exported (>) functions differ:"; cat "$tmp/diff"; exit 1
 fi
 echo "headers: $(wc -l < "$tmp/declared") functions declared, all exported, none more"
+
+# 2b. GLX and EGL: gleval's programs use the system's GL/glx.h and EGL/egl.h (with Xlib's
+#     types); every glX and egl function exported is one those headers (or their extension
+#     headers) declare, so none has a name of gleval's own.
+nm -D --defined-only "$lib" | awk '$2 == "T" {print $3}' | grep '^\(glX\|egl\)[A-Z]' | sort -u > "$tmp/window"
+cat /usr/include/GL/glx.h /usr/include/GL/glxext.h /usr/include/EGL/egl.h /usr/include/EGL/eglext.h 2>/dev/null |
+  grep -o '\b\(glX\|egl\)[A-Z][A-Za-z0-9]* *(' | tr -d '( ' | sort -u > "$tmp/window_system"
+unknown=$(comm -23 "$tmp/window" "$tmp/window_system")
+if [ -n "$unknown" ]; then
+  echo "headers: exported GLX/EGL functions the system's headers do not declare:"; echo "$unknown"; exit 1
+fi
+echo "headers: $(wc -l < "$tmp/window") GLX and EGL functions exported, each declared by the system's GL/glx.h or EGL/egl.h"
 
 # 3. The system's GL 1.1 functions (Mesa's GL/gl.h before its "OpenGL 1.2" section), GLU 1.3
 #    functions and freeglut functions, all declared here (and so, by 2, exported).
