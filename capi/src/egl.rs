@@ -901,6 +901,19 @@ entry! {
     }
 }
 
+/// A query's answer written where the caller said (`EGL_BAD_PARAMETER` for NULL).
+///
+/// # Safety
+/// `value` is NULL or an int to write.
+unsafe fn write_answer(value: *mut EGLint, answer: EGLint) -> EGLBoolean {
+    if value.is_null() {
+        return fail(EGL_BAD_PARAMETER, EGL_FALSE);
+    }
+    // SAFETY: the caller's promise.
+    unsafe { *value = answer };
+    ok(EGL_TRUE)
+}
+
 entry! {
     /// `eglQuerySurface`: `EGL_WIDTH`, `EGL_HEIGHT`, `EGL_CONFIG_ID`, `EGL_RENDER_BUFFER`,
     /// `EGL_SWAP_BEHAVIOR` (gleval's buffers are preserved), `EGL_LARGEST_PBUFFER`,
@@ -922,12 +935,8 @@ entry! {
             EGL_GL_COLORSPACE => EGL_GL_COLORSPACE_LINEAR,
             _ => return fail(EGL_BAD_ATTRIBUTE, EGL_FALSE),
         };
-        if value.is_null() {
-            return fail(EGL_BAD_PARAMETER, EGL_FALSE);
-        }
-        // SAFETY: EGL's contract: an int to write.
-        unsafe { *value = answer };
-        ok(EGL_TRUE)
+        // SAFETY: EGL's contract for `value`.
+        unsafe { write_answer(value, answer) }
     }
 }
 
@@ -956,12 +965,8 @@ entry! {
             }
             _ => return fail(EGL_BAD_ATTRIBUTE, EGL_FALSE),
         };
-        if value.is_null() {
-            return fail(EGL_BAD_PARAMETER, EGL_FALSE);
-        }
-        // SAFETY: EGL's contract: an int to write.
-        unsafe { *value = answer };
-        ok(EGL_TRUE)
+        // SAFETY: EGL's contract for `value`.
+        unsafe { write_answer(value, answer) }
     }
 }
 

@@ -98,24 +98,37 @@ for name in BezCurve BezSurf BCurve BSurf; do
 done
 
 # 4. A call gleval lacks (a GL 4.3 compute dispatch), and a GLX context: named, not started.
+# A program that calls what gleval lacks, itself and through a library it links (as piglit
+# and FLTK keep their GL calls in libraries): gleval-run names both, and not the GLX call
+# gleval serves.
 cat > "$out/lacking.c" <<'EOF'
 #define GL_GLEXT_PROTOTYPES
 #include <GL/glut.h>
 #include <GL/glext.h>
 #include <GL/glx.h>
+void lacking_in_library(void);
 int main(int argc, char **argv) {
     glutInit(&argc, argv);
     if (argc > 5) glXGetCurrentContext();
+    if (argc > 6) lacking_in_library();
     glDispatchCompute(1, 1, 1);
     return 0;
 }
 EOF
-cc -o "$out/lacking" "$out/lacking.c" -lglut -lGL
+cat > "$out/liblacking.c" <<'EOF'
+#define GL_GLEXT_PROTOTYPES
+#include <GL/gl.h>
+#include <GL/glext.h>
+void lacking_in_library(void) { glDispatchComputeIndirect(0); }
+EOF
+cc -shared -fPIC -o "$out/liblacking.so" "$out/liblacking.c" -lGL
+cc -o "$out/lacking" "$out/lacking.c" -L"$out" -llacking -Wl,-rpath,"$out" -lglut -lGL
 if "$root/capi/gleval-run" "$out/lacking" > "$out/lacking.log" 2>&1; then
   echo "lacking: started although gleval lacks glDispatchCompute"; failed=1
-elif grep -q '^  glDispatchCompute$' "$out/lacking.log" && grep -q 'GLX' "$out/lacking.log" &&
-  ! grep -q 'symbol lookup error' "$out/lacking.log"; then
-  echo "lacking: not started, glDispatchCompute and GLX named"
+elif grep -q '^  glDispatchCompute$' "$out/lacking.log" &&
+  grep -q "^  glDispatchComputeIndirect (from $out/liblacking.so)$" "$out/lacking.log" &&
+  ! grep -q 'glX' "$out/lacking.log" && ! grep -q 'symbol lookup error' "$out/lacking.log"; then
+  echo "lacking: not started, glDispatchCompute and the library's glDispatchComputeIndirect named"
 else
   echo "lacking: unexpected message:"; cat "$out/lacking.log"; failed=1
 fi
