@@ -23,10 +23,11 @@
 #
 # The threshold: the aim is pixel-exact agreement with Mesa. gleval-compare already forgives
 # a one-pixel shift of an edge; what remains above that is rounding of lit colours by one
-# level, a few pixels of the one-pixel yellow line rasterised differently where it crosses
-# the surface and pixels at silhouette edges. 1% (1600 of 160000 pixels) is room for those and
-# well below any real fault: a missing curve is ~0.5% but a wrong normal, light or material,
-# a wrong projection or a missing surface changes 10-40% of the window.
+# level and pixels at silhouette edges. 1% (1600 of 160000 pixels) is room for those and well
+# below a real fault of the surface: a wrong normal, light, material or projection, or a
+# missing surface, changes 10-40% of the window. The one-pixel curve is only ~470 pixels
+# (0.3%), so it is checked on its own: gleval's picture must have as many pure yellow pixels
+# as Mesa's within 20%.
 set -eu
 root=$(cd "$(dirname "$0")/../.." && pwd)
 out=${1:-$root/target/capi/programs}
@@ -146,6 +147,9 @@ find_window() {
 # colours PNG: how many distinct colours the picture has (a drawn scene has hundreds).
 colours() { convert "$1" -format '%k' info:; }
 
+# yellow PNG: how many pixels are the curve's pure yellow.
+yellow() { convert "$1" -fill black +opaque '#ffff00' -fill white -opaque '#ffff00' -format '%[fx:round(mean*w*h)]' info:; }
+
 # judge NAME GLEVAL_SHOT: $out/NAME.mesa.png against $out/GLEVAL_SHOT.png; prints the share of
 # differing pixels (and how many are not exactly equal) to stdout in $verdict; 1 if above the
 # threshold or not comparable.
@@ -159,8 +163,14 @@ judge() {
   size_g=$(identify -format '%wx%h' "$out/$2.png")
   if [ "$size_m" != "$size_g" ]; then verdict="window $size_g on gleval, $size_m on Mesa"; return 1; fi
   exact=$(compare -metric AE "$out/$1.mesa.png" "$out/$2.png" null: 2>&1 || true)
+  yellow_m=$(yellow "$out/$1.mesa.png")
+  yellow_g=$(yellow "$out/$2.png")
+  if [ $((yellow_g * 5)) -lt $((yellow_m * 4)) ] || [ $((yellow_g * 5)) -gt $((yellow_m * 6)) ]; then
+    verdict="the curve: $yellow_g yellow pixels on gleval, $yellow_m on Mesa; $exact pixels not exactly equal"
+    return 1
+  fi
   if result=$("$metric" "$out/$1.mesa.png" "$out/$2.png" "$threshold" 2>&1); then
-    verdict="$result; $exact pixels not exactly equal"
+    verdict="$result; $exact pixels not exactly equal; curve $yellow_g yellow pixels (Mesa $yellow_m)"
   else
     case "$result" in
       *"% of pixels differ"*) verdict="$result, above $(awk "BEGIN { print $threshold * 100 }")% (diff: $out/$2.diff.png); $exact pixels not exactly equal" ;;
