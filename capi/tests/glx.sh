@@ -53,6 +53,7 @@ DISPLAY=$display "$run" "$out/calls" glx gleval > "$out/glx.strict.txt" 2>&1
 for line in \
   "glXMakeCurrent of a context current in another thread: False, X error 10" \
   "glXGetProcAddress(glNoSuchFunction): NULL" \
+  "glXUseXFont: GL error 0x0" \
   "front buffer after the swap: pixel 0 0 255 255, GL error 0x0"; do
   if grep -qxF "$line" "$out/glx.strict.txt"; then
     echo "glx.sh: $line"

@@ -17,8 +17,8 @@
 #        libgl-dev libx11-dev libsdl2-dev (2.26.5) libfltk1.3-dev (1.3.8) freeglut3-dev
 #        (3.4.0, for PyOpenGL's GLUT) binutils (nm, for gleval-run) gcc g++
 #   pip: pygame (2.6.1) PyOpenGL (3.1.10) "pyglet<2" (1.5.31)
-# and the library and gleval-compare built: cargo build --release -p gleval-c (GLEVAL_LIB_DIR
-# picks another folder holding libgleval_c.so and gleval-compare). PYTHON names the Python
+# The library and gleval-compare are built as the other capi scripts build them (the test
+# profile, target/debug; CAPI_PROFILE=release for target/release). PYTHON names the Python
 # (default python3).
 #
 # The threshold: the aim is pixel-exact agreement with Mesa. gleval-compare already forgives
@@ -33,20 +33,24 @@ root=$(cd "$(dirname "$0")/../.." && pwd)
 out=${1:-$root/target/capi/programs}
 src="$root/capi/tests/programs"
 threshold=0.01
-export GLEVAL_LIB_DIR="${GLEVAL_LIB_DIR:-${CARGO_TARGET_DIR:-$root/target}/release}"
+profile=${CAPI_PROFILE:-test}
+dir=debug
+[ "$profile" = release ] && dir=release
+cargo build --quiet --profile "$profile" -p gleval-c --manifest-path "$root/Cargo.toml"
+export GLEVAL_LIB_DIR="${CARGO_TARGET_DIR:-$root/target}/$dir"
 metric="$GLEVAL_LIB_DIR/gleval-compare"
 python=${PYTHON:-python3}
 run="$root/capi/gleval-run"
 for need in Xvfb xdotool import convert; do
   command -v "$need" >/dev/null 2>&1 || { echo "programs: $need not found" >&2; exit 1; }
 done
-[ -x "$metric" ] || { echo "programs: $metric not found: cargo build --release -p gleval-c" >&2; exit 1; }
+[ -x "$metric" ] || { echo "programs: $metric not found" >&2; exit 1; }
 [ -f "$GLEVAL_LIB_DIR/libgleval_c.so" ] || { echo "programs: $GLEVAL_LIB_DIR/libgleval_c.so not found" >&2; exit 1; }
 mkdir -p "$out"
 rm -f "$out"/*.png "$out"/*.log
 
-# Our own Xvfb on the first free display from :90.
-n=90
+# Our own Xvfb on the first free display from one of this run's own (the process id).
+n=$(( $$ % 300 + 900 ))
 while [ -e "/tmp/.X$n-lock" ] || [ -e "/tmp/.X11-unix/X$n" ]; do n=$((n + 1)); done
 Xvfb ":$n" -screen 0 1280x1024x24 -nolisten tcp >"$out/xvfb.log" 2>&1 &
 xvfb=$!

@@ -13,11 +13,13 @@
 //! | `contexts.rs` | `glXCreate*Context*`, `glXMakeCurrent`, `glXDestroyContext`, `glXCopyContext`, the current-context queries |
 //! | `drawables.rs` | windows, pixmaps, pbuffers, `glXSwapBuffers`, `glXQueryDrawable`, the swap interval, `glXWait*` |
 //! | `strings.rs` | versions, extension strings, `glXGetProcAddress` |
+//! | `xfont.rs` | `glXUseXFont` |
 
 mod configs;
 mod contexts;
 mod drawables;
 mod strings;
+mod xfont;
 
 pub(crate) use configs::visual_of;
 pub(crate) use contexts::current_display;

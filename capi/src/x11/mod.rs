@@ -50,6 +50,137 @@ struct XImage {
     funcs: [*mut c_void; 6],
 }
 
+/// Xlib's `XCharStruct`: one glyph's metrics.
+#[repr(C)]
+#[derive(Clone, Copy, Default)]
+pub struct XCharStruct {
+    pub lbearing: i16,
+    pub rbearing: i16,
+    pub width: i16,
+    pub ascent: i16,
+    pub descent: i16,
+    pub attributes: u16,
+}
+
+/// Xlib's `XFontStruct` (what `XQueryFont` answers).
+#[repr(C)]
+pub struct XFontStruct {
+    ext_data: *mut c_void,
+    fid: Xid,
+    direction: c_uint,
+    min_char_or_byte2: c_uint,
+    max_char_or_byte2: c_uint,
+    min_byte1: c_uint,
+    max_byte1: c_uint,
+    all_chars_exist: c_int,
+    default_char: c_uint,
+    n_properties: c_int,
+    properties: *mut c_void,
+    min_bounds: XCharStruct,
+    max_bounds: XCharStruct,
+    per_char: *mut XCharStruct,
+    ascent: c_int,
+    descent: c_int,
+}
+
+/// An X server font's glyphs, as `glXUseXFont` draws them into display lists.
+pub struct FontGlyphs {
+    display: *mut Display,
+    info: *mut XFontStruct,
+    font: Xid,
+}
+
+impl FontGlyphs {
+    /// The font `font` of `display`; `None` if it is not one (the server's `BadFont` goes to
+    /// the program's error handler).
+    pub fn open(display: *mut Display, font: Xid) -> Option<Self> {
+        let x = xlib()?;
+        if display.is_null() {
+            return None;
+        }
+        // SAFETY: the program's open connection.
+        let info = unsafe { (x.query_font)(display, font) };
+        (!info.is_null()).then_some(Self { display, info, font })
+    }
+
+    /// The metrics of glyph `c` (single-byte fonts; for two-byte ones, row `min_byte1`), or
+    /// `None` where the font has none: outside its range, or an empty glyph.
+    pub fn metrics(&self, c: u32) -> Option<XCharStruct> {
+        // SAFETY: `info` is XQueryFont's answer, alive until drop; `per_char` (when not
+        // NULL) has one entry per character of the range.
+        let info = unsafe { &*self.info };
+        if c < info.min_char_or_byte2 || c > info.max_char_or_byte2 {
+            return None;
+        }
+        let m = if info.per_char.is_null() {
+            info.max_bounds
+        } else {
+            unsafe { *info.per_char.add((c - info.min_char_or_byte2) as usize) }
+        };
+        let empty = m.width == 0 && m.lbearing == 0 && m.rbearing == 0 && m.ascent == 0 && m.descent == 0;
+        (!empty).then_some(m)
+    }
+
+    /// Glyph `c` drawn by the server: its bits, rows bottom to top, each row `(width + 7) / 8`
+    /// bytes, the leftmost pixel the high bit (as `glBitmap` reads them by default).
+    pub fn bitmap(&self, c: u32, m: &XCharStruct) -> Vec<u8> {
+        let Some(x) = xlib() else { return Vec::new() };
+        let (w, h) = ((m.rbearing - m.lbearing).max(0) as u32, (m.ascent + m.descent).max(0) as u32);
+        let stride = w.div_ceil(8) as usize;
+        let mut bits = vec![0u8; stride * h as usize];
+        if w == 0 || h == 0 {
+            return bits;
+        }
+        let ch = c as u8 as c_char;
+        // SAFETY: the program's open connection; the pixmap, GC and image are made and freed
+        // here; XGetImage's image is read through its own get_pixel and destroyed by its own
+        // destroy_image, as Xlib's macros do.
+        unsafe {
+            let root = (x.default_root_window)(self.display);
+            let pixmap = (x.create_pixmap)(self.display, root, w, h, 1);
+            let gc = (x.create_gc)(self.display, pixmap, 0, std::ptr::null_mut());
+            (x.set_foreground)(self.display, gc, 0);
+            (x.fill_rectangle)(self.display, pixmap, gc, 0, 0, w, h);
+            (x.set_foreground)(self.display, gc, 1);
+            (x.set_font)(self.display, gc, self.font);
+            (x.draw_string)(self.display, pixmap, gc, -c_int::from(m.lbearing), c_int::from(m.ascent), &ch, 1);
+            let image = (x.get_image)(self.display, pixmap, 0, 0, w, h, 1, 1); // XYPixmap
+            if !image.is_null() {
+                type GetPixel = unsafe extern "C" fn(*mut XImage, c_int, c_int) -> c_ulong;
+                type Destroy = unsafe extern "C" fn(*mut XImage) -> c_int;
+                let get: Option<GetPixel> = std::mem::transmute::<*mut c_void, Option<GetPixel>>((*image).funcs[2]);
+                let destroy: Option<Destroy> = std::mem::transmute::<*mut c_void, Option<Destroy>>((*image).funcs[1]);
+                if let Some(get) = get {
+                    for row in 0..h {
+                        // The image's top row is the bitmap's last.
+                        let out = &mut bits[(h - 1 - row) as usize * stride..][..stride];
+                        for col in 0..w {
+                            if get(image, col as c_int, row as c_int) != 0 {
+                                out[(col / 8) as usize] |= 0x80 >> (col % 8);
+                            }
+                        }
+                    }
+                }
+                if let Some(destroy) = destroy {
+                    destroy(image);
+                }
+            }
+            (x.free_gc)(self.display, gc);
+            (x.free_pixmap)(self.display, pixmap);
+        }
+        bits
+    }
+}
+
+impl Drop for FontGlyphs {
+    fn drop(&mut self) {
+        if let Some(x) = xlib() {
+            // SAFETY: XQueryFont's answer, freed once.
+            unsafe { (x.free_font_info)(std::ptr::null_mut(), self.info, 1) };
+        }
+    }
+}
+
 /// Xlib's `XErrorEvent`, what the program's error handler is given.
 #[repr(C)]
 struct XErrorEvent {
@@ -103,6 +234,16 @@ xlib! {
     open_display = c"XOpenDisplay": fn(*const c_char) -> *mut Display;
     set_error_handler = c"XSetErrorHandler": fn(ErrorHandler) -> ErrorHandler;
     display_width = c"XDisplayWidth": fn(*mut Display, c_int) -> c_int;
+    query_font = c"XQueryFont": fn(*mut Display, Xid) -> *mut XFontStruct;
+    free_font_info = c"XFreeFontInfo": fn(*mut c_char, *mut XFontStruct, c_int) -> c_int;
+    default_root_window = c"XDefaultRootWindow": fn(*mut Display) -> Xid;
+    create_pixmap = c"XCreatePixmap": fn(*mut Display, Xid, c_uint, c_uint, c_uint) -> Xid;
+    free_pixmap = c"XFreePixmap": fn(*mut Display, Xid) -> c_int;
+    set_font = c"XSetFont": fn(*mut Display, *mut c_void, Xid) -> c_int;
+    set_foreground = c"XSetForeground": fn(*mut Display, *mut c_void, c_ulong) -> c_int;
+    fill_rectangle = c"XFillRectangle": fn(*mut Display, Xid, *mut c_void, c_int, c_int, c_uint, c_uint) -> c_int;
+    draw_string = c"XDrawString": fn(*mut Display, Xid, *mut c_void, c_int, c_int, *const c_char, c_int) -> c_int;
+    get_image = c"XGetImage": fn(*mut Display, Xid, c_int, c_int, c_uint, c_uint, c_ulong, c_int) -> *mut XImage;
     display_height = c"XDisplayHeight": fn(*mut Display, c_int) -> c_int;
 }
 

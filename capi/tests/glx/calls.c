@@ -131,6 +131,29 @@ static void glx(Display *dpy) {
     glReadBuffer(GL_BACK);
   }
 
+  /* X's "fixed" font as bitmap lists (glXUseXFont), drawn: which pixels are lit. */
+  Font font = XLoadFont(dpy, "fixed");
+  GLuint base = glGenLists(96);
+  glXUseXFont(font, 32, 96, (int)base);
+  /* Mesa 22.3 sets GL_OUT_OF_MEMORY here, even for one glyph, and makes the lists all the
+   * same (drawn below, pixel for pixel): printed on gleval only, which sets no error. */
+  GLenum font_error = glGetError();
+  if (gleval_only) printf("glXUseXFont: GL error 0x%x\n", font_error);
+  glClearColor(0, 0, 0, 1);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glColor3f(1, 1, 1);
+  glRasterPos2f(-0.95f, -0.3f);
+  glListBase(base - 32);
+  glCallLists(6, GL_UNSIGNED_BYTE, "gleval");
+  static unsigned char text[64 * 48 * 4];
+  glReadPixels(0, 0, 64, 48, GL_RGBA, GL_UNSIGNED_BYTE, text);
+  unsigned long lit = 0, where = 0;
+  for (int i = 0; i < 64 * 48; i++)
+    if (text[4 * i]) lit++, where = where * 31 + (unsigned long)i;
+  printf("glXUseXFont \"gleval\": %lu pixels lit, at %lx\n", lit, where);
+  if (getenv("SHOW_TEXT")) for (int y = 47; y >= 0; y--) { for (int x = 0; x < 64; x++) putchar(text[4 * (y * 64 + x)] ? 35 : 46); putchar(10); }
+  glListBase(0);
+
   printf("glXGetProcAddress(glBegin): %s\n", glXGetProcAddressARB((const GLubyte *)"glBegin") ? "found" : "NULL");
   /* Mesa hands out a stub for any name; gleval NULL for what it lacks. */
   if (gleval_only) printf("glXGetProcAddress(glNoSuchFunction): %s\n",
