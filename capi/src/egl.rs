@@ -309,6 +309,26 @@ unsafe fn pairs(list: *const EGLint) -> Vec<(EGLint, EGLint)> {
     out
 }
 
+/// EGL 1.5's `EGLAttrib` lists (pointer-sized): pairs up to `EGL_NONE`.
+///
+/// # Safety
+/// `list` is NULL or ends with `EGL_NONE`.
+unsafe fn attrib_pairs(list: *const isize) -> Vec<(EGLint, EGLint)> {
+    let mut out = Vec::new();
+    if list.is_null() {
+        return out;
+    }
+    for i in 0..64 {
+        // SAFETY: within the list, up to its EGL_NONE (the caller's promise).
+        let name = unsafe { *list.add(2 * i) } as EGLint;
+        if name == EGL_NONE {
+            break;
+        }
+        out.push((name, unsafe { *list.add(2 * i + 1) } as EGLint));
+    }
+    out
+}
+
 /// The configurations meeting a list, best first; `Err(EGL_BAD_ATTRIBUTE)` for an attribute
 /// EGL has not.
 fn choose(d: &EglDisplay, requested: &[(EGLint, EGLint)]) -> Result<Vec<&'static Config>, EGLint> {
@@ -416,17 +436,8 @@ entry! {
     /// `DISPLAY`'s) or `EGL_PLATFORM_SURFACELESS_MESA` (`EGL_DEFAULT_DISPLAY`); another
     /// platform → `EGL_BAD_PARAMETER`.
     unsafe fn eglGetPlatformDisplay(platform: EGLenum, native: *mut c_void, list: *const isize) -> *mut c_void {
-        let mut read = Vec::new();
-        if !list.is_null() {
-            for i in 0..64 {
-                // SAFETY: EGL's contract: an EGLAttrib list ended by EGL_NONE.
-                let name = unsafe { *list.add(2 * i) } as EGLint;
-                if name == EGL_NONE {
-                    break;
-                }
-                read.push((name, unsafe { *list.add(2 * i + 1) } as EGLint));
-            }
-        }
+        // SAFETY: EGL's contract for the list.
+        let read = unsafe { attrib_pairs(list) };
         platform_display(platform, native, &read)
     }
 }
@@ -686,17 +697,8 @@ entry! {
         if window.is_null() {
             return fail(EGL_BAD_NATIVE_WINDOW, std::ptr::null_mut());
         }
-        let mut read = Vec::new();
-        if !list.is_null() {
-            for i in 0..64 {
-                // SAFETY: EGL's contract: an EGLAttrib list ended by EGL_NONE.
-                let name = unsafe { *list.add(2 * i) } as EGLint;
-                if name == EGL_NONE {
-                    break;
-                }
-                read.push((name, unsafe { *list.add(2 * i + 1) } as EGLint));
-            }
-        }
+        // SAFETY: EGL's contract for the list.
+        let read = unsafe { attrib_pairs(list) };
         // SAFETY: EGL's contract: the address of the window's id.
         window_surface(handle, c, unsafe { *window }, &read)
     }
