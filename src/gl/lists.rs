@@ -139,6 +139,8 @@ pub(crate) enum ListCommand {
     /// surfaces there), with the jobs' maps copied.
     ScatteredMesh(Vec<MeshJob>, Vec<u32>),
     RasterPos([f32; 4]),
+    /// `glWindowPos*`: x, y, z.
+    WindowPos([f32; 3]),
     /// `glBitmap` with its bits unpacked at compile time (`None`: the slice was too short).
     Bitmap(BitmapCall, Option<Vec<bool>>),
     /// `glDrawPixels` with its pixels unpacked to RGBA at compile time.
@@ -508,6 +510,7 @@ impl Gl {
             C::EmitVertex(v) => self.emit_listed_vertex(*v),
             C::ScatteredMesh(jobs, triangles) => self.record_scattered_mesh(jobs.clone(), triangles.clone()),
             C::RasterPos([x, y, z, w]) => self.raster_pos4f(*x, *y, *z, *w),
+            C::WindowPos([x, y, z]) => self.window_pos3f(*x, *y, *z),
             C::Bitmap(call, bits) => self.draw_bitmap(*call, bits.as_deref()),
             C::DrawPixels(size, format, type_, rgba) => self.draw_rgba(*size, *format, *type_, rgba.as_deref()),
             C::Pixels(command) => self.execute_pixel_command(command),

@@ -405,7 +405,8 @@ impl Gl {
 
     /// `glGetString`: who implements this GL (`GL_VENDOR` "gleval"), on what (`GL_RENDERER`:
     /// the tessellator in use; wgpu draws what is recorded), the version (`GL_VERSION`: "1.1"
-    /// and ours, for the GL 1.1 subset implemented) and the extensions (`GL_EXTENSIONS`: none).
+    /// and ours, for the GL 1.1 subset implemented) and the extensions (`GL_EXTENSIONS`:
+    /// `GL_ARB_window_pos`).
     /// Another name → `GL_INVALID_ENUM` and `None` (C's NULL), as inside `begin`/`end`
     /// (`GL_INVALID_OPERATION`).
     pub fn get_string(&mut self, name: GLenum) -> Option<&'static str> {
@@ -419,7 +420,8 @@ impl Gl {
                 Tessellator::Gpu => "gleval (WGSL tessellator, wgpu rasteriser)",
             }),
             GL_VERSION => Some(concat!("1.1 gleval ", env!("CARGO_PKG_VERSION"))),
-            GL_EXTENSIONS => Some(""),
+            // What gleval implements beyond GL 1.1, and nothing more.
+            GL_EXTENSIONS => Some("GL_ARB_window_pos"),
             _ => {
                 self.set_error(GL_INVALID_ENUM);
                 None
@@ -472,7 +474,7 @@ mod tests {
         let mut gl = Gl::new(4, 4);
         assert_eq!(gl.get_string(GL_VENDOR), Some("gleval"));
         assert!(gl.get_string(GL_VERSION).is_some_and(|v| v.starts_with("1.1 ")));
-        assert_eq!(gl.get_string(GL_EXTENSIONS), Some(""));
+        assert_eq!(gl.get_string(GL_EXTENSIONS), Some("GL_ARB_window_pos"));
         assert_eq!(gl.get_error(), GL_NO_ERROR);
         assert_eq!(gl.get_string(0x1234), None);
         assert_eq!(gl.get_error(), GL_INVALID_ENUM);

@@ -184,6 +184,26 @@ impl Gl {
         }
     }
 
+    /// `glWindowPos3f` (GL_ARB_window_pos, core in GL 1.4): the raster position in window
+    /// coordinates, without the matrices, the viewport or clipping: always valid, `z` clamped
+    /// to [0, 1] and mapped into the depth range, w 1, the eye distance 0, the current colour
+    /// and texture coordinates (not lit), as Mesa's `window_pos3f` sets them.
+    pub fn window_pos3f(&mut self, x: GLfloat, y: GLfloat, z: GLfloat) {
+        if self.compiled(|| ListCommand::WindowPos([x, y, z])) || self.reject_inside_begin_end() {
+            return;
+        }
+        self.flush_current();
+        let [near, far] = self.raster.depth_range;
+        let z = near + z.clamp(0.0, 1.0) * (far - near);
+        self.raster_pos = RasterPos {
+            window: [x, y, z, 1.0],
+            valid: true,
+            color: self.current.color,
+            tex_coord: self.current.tex_coord,
+            distance: 0.0,
+        };
+    }
+
     /// Moves a valid raster position by (dx, dy) window pixels (`glBitmap`'s advance).
     pub(crate) fn advance_raster_pos(&mut self, dx: f32, dy: f32) {
         self.raster_pos.window[0] += dx;
@@ -223,6 +243,27 @@ mod tests {
         gl.get_floatv(GL_CURRENT_RASTER_POSITION, &mut p);
         gl.get_integerv(GL_CURRENT_RASTER_POSITION_VALID, &mut valid);
         (p, valid[0] == 1)
+    }
+
+    #[test]
+    fn window_pos_sets_window_coordinates_directly_and_is_always_valid() {
+        let mut gl = Gl::new(100, 50);
+        gl.depth_range(0.5, 1.0);
+        gl.translatef(30.0, 0.0, 0.0);
+        gl.raster_pos2f(1000.0, 0.0);
+        assert!(!position(&mut gl).1);
+        gl.window_pos3f(12.0, 7.0, 0.5);
+        assert_eq!(position(&mut gl), ([12.0, 7.0, 0.75, 1.0], true));
+        gl.window_pos2i(-5, 300);
+        assert_eq!(position(&mut gl), ([-5.0, 300.0, 0.5, 1.0], true), "outside the window, z 0 → near");
+        gl.window_pos3dv(&[1.0, 2.0, 7.0]);
+        assert_eq!(position(&mut gl), ([1.0, 2.0, 1.0, 1.0], true), "z clamped to 1 → far");
+        gl.window_pos3fv(&[1.0, 2.0]);
+        assert_eq!(gl.get_error(), GL_INVALID_VALUE);
+        gl.begin(GL_POINTS);
+        gl.window_pos2f(3.0, 3.0);
+        gl.end();
+        assert_eq!(gl.get_error(), GL_INVALID_OPERATION);
     }
 
     #[test]

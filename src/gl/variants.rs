@@ -128,6 +128,14 @@ impl Gl {
         }
     }
 
+    fn window_pos_n<T: GlComponent, const N: usize>(&mut self, v: [T; N]) {
+        let f = v.map(GlComponent::plain);
+        match N {
+            2 => self.window_pos3f(f[0], f[1], 0.0),
+            _ => self.window_pos3f(f[0], f[1], f[2]),
+        }
+    }
+
     fn raster_pos_n<T: GlComponent, const N: usize>(&mut self, v: [T; N]) {
         let f = v.map(GlComponent::plain);
         match N {
@@ -213,6 +221,14 @@ scalar_forms!(raster_pos_n;
 vector_forms!(raster_pos_n;
     raster_pos2sv(GLshort; 2); raster_pos3iv(GLint; 3); raster_pos3sv(GLshort; 3);
     raster_pos4dv(GLdouble; 4); raster_pos4iv(GLint; 4); raster_pos4sv(GLshort; 4));
+
+scalar_forms!(window_pos_n;
+    window_pos2f(GLfloat; x, y); window_pos2d(GLdouble; x, y); window_pos2i(GLint; x, y);
+    window_pos2s(GLshort; x, y); window_pos3d(GLdouble; x, y, z); window_pos3i(GLint; x, y, z);
+    window_pos3s(GLshort; x, y, z));
+vector_forms!(window_pos_n;
+    window_pos2fv(GLfloat; 2); window_pos2dv(GLdouble; 2); window_pos2iv(GLint; 2); window_pos2sv(GLshort; 2);
+    window_pos3fv(GLfloat; 3); window_pos3dv(GLdouble; 3); window_pos3iv(GLint; 3); window_pos3sv(GLshort; 3));
 
 impl Gl {
     /// `glRects`.

@@ -20,6 +20,45 @@ forward! {
     glRasterPos4d(x: GLdouble, y: GLdouble, z: GLdouble, w: GLdouble) => raster_pos4d;
 }
 
+// GL_ARB_window_pos (core in GL 1.4), by both names.
+forward! {
+    glWindowPos2f(x: GLfloat, y: GLfloat) => window_pos2f;
+    glWindowPos2d(x: GLdouble, y: GLdouble) => window_pos2d;
+    glWindowPos2i(x: GLint, y: GLint) => window_pos2i;
+    glWindowPos2s(x: GLshort, y: GLshort) => window_pos2s;
+    glWindowPos3f(x: GLfloat, y: GLfloat, z: GLfloat) => window_pos3f;
+    glWindowPos3d(x: GLdouble, y: GLdouble, z: GLdouble) => window_pos3d;
+    glWindowPos3i(x: GLint, y: GLint, z: GLint) => window_pos3i;
+    glWindowPos3s(x: GLshort, y: GLshort, z: GLshort) => window_pos3s;
+    glWindowPos2fARB(x: GLfloat, y: GLfloat) => window_pos2f;
+    glWindowPos2dARB(x: GLdouble, y: GLdouble) => window_pos2d;
+    glWindowPos2iARB(x: GLint, y: GLint) => window_pos2i;
+    glWindowPos2sARB(x: GLshort, y: GLshort) => window_pos2s;
+    glWindowPos3fARB(x: GLfloat, y: GLfloat, z: GLfloat) => window_pos3f;
+    glWindowPos3dARB(x: GLdouble, y: GLdouble, z: GLdouble) => window_pos3d;
+    glWindowPos3iARB(x: GLint, y: GLint, z: GLint) => window_pos3i;
+    glWindowPos3sARB(x: GLshort, y: GLshort, z: GLshort) => window_pos3s;
+}
+
+vector! {
+    glWindowPos2fv(GLfloat; 2) => window_pos2fv;
+    glWindowPos2dv(GLdouble; 2) => window_pos2dv;
+    glWindowPos2iv(GLint; 2) => window_pos2iv;
+    glWindowPos2sv(GLshort; 2) => window_pos2sv;
+    glWindowPos3fv(GLfloat; 3) => window_pos3fv;
+    glWindowPos3dv(GLdouble; 3) => window_pos3dv;
+    glWindowPos3iv(GLint; 3) => window_pos3iv;
+    glWindowPos3sv(GLshort; 3) => window_pos3sv;
+    glWindowPos2fvARB(GLfloat; 2) => window_pos2fv;
+    glWindowPos2dvARB(GLdouble; 2) => window_pos2dv;
+    glWindowPos2ivARB(GLint; 2) => window_pos2iv;
+    glWindowPos2svARB(GLshort; 2) => window_pos2sv;
+    glWindowPos3fvARB(GLfloat; 3) => window_pos3fv;
+    glWindowPos3dvARB(GLdouble; 3) => window_pos3dv;
+    glWindowPos3ivARB(GLint; 3) => window_pos3iv;
+    glWindowPos3svARB(GLshort; 3) => window_pos3sv;
+}
+
 vector! {
     glRasterPos2fv(GLfloat; 2) => raster_pos2fv;
     glRasterPos3fv(GLfloat; 3) => raster_pos3fv;
