@@ -262,16 +262,17 @@ static const struct sampling
     pl20 = {"pl20", "path_length", 20, 100, 500}, pl25 = {"pl25", "path_length", 25, 100, 500},
     pl100 = {"pl100", "path_length", 100, 100, 500},
     dd3 = {"dd3", "domain_distance", 50, 3, 500}, dd5 = {"dd5", "domain_distance", 50, 5, 500},
-    dd9 = {"dd9", "domain_distance", 50, 9, 500};
+    dd9 = {"dd9", "domain_distance", 50, 9, 500}, dd10 = {"dd10", "domain_distance", 50, 10, 500};
 static const struct sampling *sweep[] = {&pl100, &dd3, &dd5, &dd9};
 static const struct sampling *wide[] = {&pl20s, &pl25s, &pl20, &pl25, &pl100, &dd3, &dd5, &dd9};
 static const struct sampling *issue[] = {&pl20s, &pl25s, &pl100, &dd3, &dd5};
 #define COUNT(a) (int)(sizeof a / sizeof a[0])
 
 enum kind { TRI_HOLE, TRI_HOLE2, THREE_EDGES, TEXTBOOK, THIN_TRI, THIN_BAR, STAR, SAWTOOTH, COMB, CIRCLE, RANDOM1,
-            RANDOM2, RANDOM3, NKINDS };
+            RANDOM2, RANDOM3, OVERCOVER, NKINDS };
 static const char *kind_names[NKINDS] = {"trihole", "trihole2", "threeedges", "textbook", "thintri", "thinbar", "star",
-                                         "sawtooth", "comb", "circle", "random1", "random2", "random3"};
+                                         "sawtooth", "comb", "circle", "random1", "random2", "random3",
+                                         "overcover"};
 
 static void trims(enum kind k) {
     static GLfloat tri[3][2] = {{0.3f, 0.3f}, {0.45f, 0.72f}, {0.7f, 0.35f}};
@@ -279,6 +280,14 @@ static void trims(enum kind k) {
     static GLfloat tri3[3][2] = {{0.35f, 0.3f}, {0.5f, 0.65f}, {0.65f, 0.3f}};
     static GLfloat thin[3][2] = {{0.15f, 0.5f}, {0.85f, 0.53f}, {0.85f, 0.5f}};
     static GLfloat bar[4][2] = {{0.2f, 0.3f}, {0.75f, 0.72f}, {0.78f, 0.69f}, {0.23f, 0.27f}};
+    /* A ten-point star hole (found by tests/it/glu_tessellation.rs's random holes) that GLU,
+       under ten steps per unit, covers in part: its triangles' area is 0.97665, not the 0.97420
+       of the square less the hole. gleval draws GLU's triangles, so the closed form is not the
+       test there. */
+    static GLfloat overcover[10][2] = {{0.36444646f, 0.3f}, {0.47289985f, 0.17438093f}, {0.31991506f, 0.23870781f},
+                                       {0.28008497f, 0.23870781f}, {0.24786174f, 0.26211935f}, {0.23555358f, 0.3f},
+                                       {0.24786176f, 0.33788067f}, {0.280085f, 0.3612922f},
+                                       {0.33570048f, 0.40987468f}, {0.4439951f, 0.40461856f}};
     switch (k) {
     case TRI_HOLE: border(0, 1); polygon(3, tri); break;
     case TRI_HOLE2: border(0, 1); polygon(3, tri2); break;
@@ -293,6 +302,7 @@ static void trims(enum kind k) {
     case RANDOM1: border(0, 1); random_hole(1, 12, 0.5f, 0.5f, 0.1f, 0.4f); break;
     case RANDOM2: border(0, 1); random_hole(7, 20, 0.5f, 0.5f, 0.15f, 0.45f); break;
     case RANDOM3: border(0, 1); random_hole(23, 7, 0.45f, 0.55f, 0.05f, 0.4f); break;
+    case OVERCOVER: border(0, 1); polygon(10, overcover); break;
     default: break;
     }
 }
@@ -394,6 +404,7 @@ int main(int argc, char **argv) {
     }
     run(TEXTBOOK, "hill", &pl100, 0, 0, 1);
     run(TEXTBOOK, "hill", &pl100, 1, 0, 1);
+    run(OVERCOVER, "hill", &dd10, 0, 0, 0);
     OSMesaDestroyContext(c);
     return 0;
 }
