@@ -8,20 +8,9 @@
 //! answer when the implementation could not carry out a call.
 
 use super::consts::*;
+use super::pixel_unpack::{element_size as type_size, format_components};
 use super::types::*;
 use super::Gl;
-
-/// Components per pixel of a client image format (GL 1.1 table 3.5); `None` for one GL rejects.
-fn format_components(format: GLenum) -> Option<usize> {
-    match format {
-        GL_COLOR_INDEX | GL_STENCIL_INDEX | GL_DEPTH_COMPONENT | GL_RED | GL_GREEN | GL_BLUE | GL_ALPHA
-        | GL_LUMINANCE => Some(1),
-        GL_LUMINANCE_ALPHA => Some(2),
-        GL_RGB | GL_BGR => Some(3),
-        GL_RGBA | GL_BGRA => Some(4),
-        _ => None,
-    }
-}
 
 /// Bytes per pixel of a GL 1.2 packed type (one value holds the whole pixel).
 fn packed_pixel_size(type_: GLenum) -> Option<usize> {
@@ -37,17 +26,6 @@ fn packed_pixel_size(type_: GLenum) -> Option<usize> {
         | GL_UNSIGNED_INT_8_8_8_8_REV
         | GL_UNSIGNED_INT_10_10_10_2
         | GL_UNSIGNED_INT_2_10_10_10_REV => Some(4),
-        _ => None,
-    }
-}
-
-/// Bytes per component of a client data type (GL 1.1 table 3.4), `GL_BITMAP` excepted: what
-/// unpacking (`glTexImage2D`, `glDrawPixels`) and packing (`glReadPixels`) both read.
-pub(super) fn type_size(type_: GLenum) -> Option<usize> {
-    match type_ {
-        GL_BYTE | GL_UNSIGNED_BYTE => Some(1),
-        GL_SHORT | GL_UNSIGNED_SHORT => Some(2),
-        GL_INT | GL_UNSIGNED_INT | GL_FLOAT => Some(4),
         _ => None,
     }
 }

@@ -11,6 +11,7 @@
 use super::consts::*;
 use super::frame::{Command, Primitive};
 use super::lists::ListCommand;
+use super::pixel_unpack::{format_and_type_error, unpack_image};
 use super::pixel_zoom::zoomed_pixels;
 use super::pixels::PixelStore;
 use super::types::*;
@@ -46,121 +47,11 @@ pub(crate) fn unpack_bitmap(store: PixelStore, width: GLsizei, height: GLsizei, 
     Some((0..h).flat_map(|j| (0..w).map(move |i| bit(j, i))).collect())
 }
 
-/// Components per pixel of a colour format gleval draws, `None` for the others.
-fn color_components(format: GLenum) -> Option<usize> {
-    match format {
-        GL_RED | GL_GREEN | GL_BLUE | GL_ALPHA | GL_LUMINANCE | GL_COLOR_INDEX => Some(1),
-        GL_LUMINANCE_ALPHA => Some(2),
-        GL_RGB | GL_BGR => Some(3),
-        GL_RGBA | GL_BGRA => Some(4),
-        _ => None,
-    }
-}
-
-/// One pixel's components as RGBA (GL 1.1 §3.6.3 "Conversion to RGB": missing colour
-/// components are 0, a missing alpha is 1, luminance goes to R, G and B).
-fn to_rgba(format: GLenum, c: &[f32]) -> [f32; 4] {
-    match format {
-        // An index travels in the red slot until it is drawn (`Gl::draw_rgba` maps it).
-        GL_RED | GL_COLOR_INDEX => [c[0], 0.0, 0.0, 1.0],
-        GL_GREEN => [0.0, c[0], 0.0, 1.0],
-        GL_BLUE => [0.0, 0.0, c[0], 1.0],
-        GL_ALPHA => [0.0, 0.0, 0.0, c[0]],
-        GL_LUMINANCE => [c[0], c[0], c[0], 1.0],
-        GL_LUMINANCE_ALPHA => [c[0], c[0], c[0], c[1]],
-        GL_RGB => [c[0], c[1], c[2], 1.0],
-        GL_BGR => [c[2], c[1], c[0], 1.0],
-        GL_BGRA => [c[2], c[1], c[0], c[3]],
-        _ => [c[0], c[1], c[2], c[3]],
-    }
-}
-
-/// Unpacks a `glDrawPixels` image of a colour format with `GL_UNSIGNED_BYTE` or `GL_FLOAT`
-/// components (native byte order, or swapped with `GL_UNPACK_SWAP_BYTES`) into RGBA, row by
-/// row. `None` when `data` is too short; other formats and types, and negative sizes, give an
-/// empty image (the call reports the errors).
-pub(crate) fn unpack_pixels(
-    store: PixelStore,
-    (width, height): (GLsizei, GLsizei),
-    format: GLenum,
-    type_: GLenum,
-    data: &[u8],
-) -> Option<Vec<[f32; 4]>> {
-    let (Ok(w), Ok(h)) = (usize::try_from(width), usize::try_from(height)) else { return Some(Vec::new()) };
-    let (Some(n), Some(element)) = (color_components(format), element_size(type_)) else { return Some(Vec::new()) };
-    if w == 0 || h == 0 {
-        return Some(Vec::new());
-    }
-    let stride = store.row_stride(w, n, element);
-    let first = store.first_byte(stride, n * element);
-    if data.len() < first + (h - 1) * stride + w * n * element {
-        return None;
-    }
-    let component = |at: usize| match type_ {
-        GL_FLOAT => {
-            let mut b = [data[at], data[at + 1], data[at + 2], data[at + 3]];
-            if store.swap_bytes {
-                b.reverse();
-            }
-            f32::from_ne_bytes(b)
-        }
-        _ => f32::from(data[at]) / 255.0,
-    };
-    // Indices are integers, not normalised (GL 1.1 table 3.5 converts colour components only).
-    let scale = if format == GL_COLOR_INDEX && type_ == GL_UNSIGNED_BYTE { 255.0 } else { 1.0 };
-    let pixel = |j: usize, i: usize| {
-        let at = first + j * stride + i * n * element;
-        let c: Vec<f32> = (0..n)
-            .map(|k| {
-                let v = component(at + k * element);
-                if scale > 1.0 {
-                    (v * scale).round()
-                } else {
-                    v
-                }
-            })
-            .collect();
-        to_rgba(format, &c)
-    };
-    Some((0..h).flat_map(|j| (0..w).map(move |i| pixel(j, i))).collect())
-}
-
-fn element_size(type_: GLenum) -> Option<usize> {
-    match type_ {
-        GL_UNSIGNED_BYTE => Some(1),
-        GL_FLOAT => Some(4),
-        _ => None,
-    }
-}
-
-/// `glDrawPixels`' format and type checks, as Mesa makes them (`_mesa_error_check_format_and_type`
-/// and `glDrawPixels`' own): an unknown format or type, or `GL_BITMAP` with a colour format, is
-/// `GL_INVALID_ENUM`; a packed type (GL 1.2) whose component count the format does not have,
-/// and `GL_STENCIL_INDEX` (the window has no stencil buffer) are `GL_INVALID_OPERATION`.
-fn format_and_type_error(format: GLenum, type_: GLenum) -> Option<GLenum> {
-    let known_format = (GL_COLOR_INDEX..=GL_LUMINANCE_ALPHA).contains(&format) || matches!(format, GL_BGR | GL_BGRA);
-    let packed_rgb = matches!(
-        type_,
-        GL_UNSIGNED_BYTE_3_3_2 | GL_UNSIGNED_BYTE_2_3_3_REV | GL_UNSIGNED_SHORT_5_6_5 | GL_UNSIGNED_SHORT_5_6_5_REV
-    );
-    let packed_rgba = matches!(
-        type_,
-        GL_UNSIGNED_SHORT_4_4_4_4
-            | GL_UNSIGNED_SHORT_4_4_4_4_REV
-            | GL_UNSIGNED_SHORT_5_5_5_1
-            | GL_UNSIGNED_SHORT_1_5_5_5_REV
-            | GL_UNSIGNED_INT_8_8_8_8
-            | GL_UNSIGNED_INT_8_8_8_8_REV
-            | GL_UNSIGNED_INT_10_10_10_2
-            | GL_UNSIGNED_INT_2_10_10_10_REV
-    );
-    let known_type = type_ == GL_BITMAP || (GL_BYTE..=GL_FLOAT).contains(&type_) || packed_rgb || packed_rgba;
-    let bitmap_of_colors = type_ == GL_BITMAP && !matches!(format, GL_COLOR_INDEX | GL_STENCIL_INDEX);
-    if !known_format || !known_type || bitmap_of_colors {
-        return Some(GL_INVALID_ENUM);
-    }
-    let packed_mismatch = (packed_rgb && format != GL_RGB) || (packed_rgba && !matches!(format, GL_RGBA | GL_BGRA));
-    (packed_mismatch || format == GL_STENCIL_INDEX).then_some(GL_INVALID_OPERATION)
+/// `glDrawPixels`' format and type checks, as Mesa makes them: the image's
+/// ([`super::pixel_unpack::format_and_type_error`]), then `GL_STENCIL_INDEX`, which gleval does
+/// not draw yet, as `GL_INVALID_OPERATION` (Mesa's answer for a window without stencil).
+fn draw_format_error(format: GLenum, type_: GLenum) -> Option<GLenum> {
+    format_and_type_error(format, type_).or((format == GL_STENCIL_INDEX).then_some(GL_INVALID_OPERATION))
 }
 
 /// The matrix that takes window coordinates (x, y, and z already in [0, 1] mapped to NDC
@@ -222,30 +113,28 @@ impl Gl {
             [x0.saturating_add(i), y0.saturating_add(j)]
         });
         let color = self.raster_pos.color.map(|c| c.clamp(0.0, 1.0));
-        let fragments: Vec<_> = pixels.map(|p| (p, color)).collect();
+        let fragments: Vec<_> = pixels.map(|p| (p, color, z)).collect();
         if !self.feedback_raster_token(GL_BITMAP_TOKEN) {
-            self.record_fragments(z, &fragments);
+            self.record_fragments(&fragments);
         }
         self.advance_raster_pos(call.step.0, call.step.1);
     }
 
-    /// `glDrawPixels` for the colour formats (`GL_RED` .. `GL_LUMINANCE_ALPHA`) with
-    /// `GL_UNSIGNED_BYTE` or `GL_FLOAT` components: pixel (i, j) goes through the pixel transfer
-    /// (`glPixelTransfer`, `glPixelMap`) and becomes the fragments at the raster depth that
-    /// `glPixelZoom` gives it from window (round(xr), round(yr)) on (Mesa rounds;
-    /// [`super::pixel_zoom`]). Nothing is drawn
-    /// when the raster position is invalid. `pixels` is read with the unpack modes. Errors, in
-    /// Mesa's order: inside `begin`/`end` → `GL_INVALID_OPERATION`; a negative size →
-    /// `GL_INVALID_VALUE`; an unknown format or type → `GL_INVALID_ENUM`; a packed type the
-    /// format does not fit, or `GL_STENCIL_INDEX` → `GL_INVALID_OPERATION`; `pixels` shorter
-    /// than the image → `GL_INVALID_VALUE`. The colour formats (with `GL_BGR`, `GL_BGRA`) are
-    /// drawn from `GL_UNSIGNED_BYTE` and `GL_FLOAT` components, and so are colour indices
-    /// (`GL_COLOR_INDEX`, through the index shift, offset and maps, as an RGBA context draws
-    /// them); the other valid formats and types (depth, the other integer and the packed
-    /// types) draw nothing.
+    /// `glDrawPixels`: pixel (i, j) of the image, read with the unpack modes from any GL 1.1
+    /// type ([`super::pixel_unpack`]), goes through the pixel transfer (`glPixelTransfer`,
+    /// `glPixelMap`) and becomes the fragments that `glPixelZoom` gives it from window
+    /// (round(xr), round(yr)) on (Mesa rounds; [`super::pixel_zoom`]): the colour formats (with
+    /// `GL_BGR`, `GL_BGRA`) at the raster depth; colour indices (with `GL_BITMAP` too) through
+    /// the maps, as an RGBA context draws them; `GL_DEPTH_COMPONENT` as fragments of the
+    /// raster colour at the image's depths. Nothing is drawn when the raster position is
+    /// invalid. Errors, in Mesa's order: inside `begin`/`end` → `GL_INVALID_OPERATION`; a
+    /// negative size → `GL_INVALID_VALUE`; an unknown format or type → `GL_INVALID_ENUM`; a
+    /// packed type the format does not fit, or `GL_STENCIL_INDEX` → `GL_INVALID_OPERATION`;
+    /// `pixels` shorter than the image → `GL_INVALID_VALUE`. The packed types of GL 1.2 are
+    /// read too.
     pub fn draw_pixels(&mut self, width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum, pixels: &[u8]) {
         let store = self.unpack_store();
-        let unpacked = || unpack_pixels(store, (width, height), format, type_, pixels);
+        let unpacked = || unpack_image(store, (width, height), format, type_, pixels);
         if self.compiled(|| ListCommand::DrawPixels((width, height), format, type_, unpacked())) {
             return;
         }
@@ -266,7 +155,7 @@ impl Gl {
         if width < 0 || height < 0 {
             return self.set_error(GL_INVALID_VALUE);
         }
-        if let Some(code) = format_and_type_error(format, type_) {
+        if let Some(code) = draw_format_error(format, type_) {
             return self.set_error(code);
         }
         let Some(rgba) = rgba else { return self.set_error(GL_INVALID_VALUE) };
@@ -278,30 +167,36 @@ impl Gl {
         let transfer = self.draw_color_transfer();
         let (w, h) = (width as usize, height as usize);
         let window = (self.width().max(0) as u32, self.height().max(0) as u32);
+        let depth = self.depth_transfer();
+        let raster_color = self.raster_pos.color.map(|c| c.clamp(0.0, 1.0));
         let fragments: Vec<_> = zoomed_pixels(origin, self.zoom(), (w, h), window)
             .map(|((i, j), (x, y))| {
                 let c = rgba[j * w + i];
-                let c = match format {
+                let (c, z) = match format {
                     // RGBA mode: an index goes through the index shift and offset and the
                     // I_TO_R .. I_TO_A maps (GL 1.1 §3.6.3; Mesa `_mesa_map_ci_to_rgba`).
-                    GL_COLOR_INDEX => self.index_to_rgba(c[0]),
-                    _ => transfer.as_ref().map_or(c, |t| t.apply(c)),
+                    GL_COLOR_INDEX => (self.index_to_rgba(c[0]), z),
+                    // A depth image: fragments of the raster colour at the depths it gives,
+                    // scaled, biased and clamped (GL 1.1 §3.6.3 "Final Conversion").
+                    GL_DEPTH_COMPONENT => (raster_color, depth.apply(c[0]).clamp(0.0, 1.0)),
+                    _ => (transfer.as_ref().map_or(c, |t| t.apply(c)), z),
                 };
-                ([x as i32, y as i32], c.map(|v| v.clamp(0.0, 1.0)))
+                ([x as i32, y as i32], c.map(|v| v.clamp(0.0, 1.0)), z)
             })
             .collect();
-        self.record_fragments(z, &fragments);
+        self.record_fragments(&fragments);
     }
 
-    /// Records fragments (window pixel, colour) at window depth `z` as one-pixel points at the
-    /// pixel centres; those outside the window are dropped.
-    fn record_fragments(&mut self, z: f32, fragments: &[([i32; 2], [f32; 4])]) {
+    /// Records fragments (window pixel, colour, window depth) as one-pixel points at the pixel
+    /// centres; those outside the window are dropped.
+    fn record_fragments(&mut self, fragments: &[([i32; 2], [f32; 4], f32)]) {
         let (w, h) = (self.width(), self.height());
         let inside = |p: &[i32; 2]| (0..w).contains(&p[0]) && (0..h).contains(&p[1]);
         let first = self.frame.vertices.len();
-        for &(p, color) in fragments.iter().filter(|(p, _)| inside(p)) {
+        for &(p, color, z) in fragments.iter().filter(|(p, _, _)| inside(p)) {
             let position = [p[0] as f32 + 0.5, p[1] as f32 + 0.5, 2.0 * z - 1.0, 1.0];
-            self.frame.vertices.push(Vertex { position, color, ..self.current_vertex(position) });
+            let tex_coord = self.raster_pos.tex_coord;
+            self.frame.vertices.push(Vertex { position, color, tex_coord, ..self.current_vertex(position) });
         }
         let count = self.frame.vertices.len() - first;
         if count == 0 {
@@ -316,9 +211,16 @@ impl Gl {
     /// (depth test included) with identity modelview, a window-to-clip projection, the whole
     /// window as viewport, depth range [0, 1], no lighting and one-pixel points.
     pub(crate) fn window_state(&mut self) -> usize {
-        // No texture and no fog: the raster position's texture coordinates and distance are
-        // not applied to these fragments (left out; blending and the alpha test are kept).
-        let mut state = self.snapshot(None);
+        // The fragments are textured with the raster position's coordinates (GL 1.1 §3.6.4,
+        // §3.6.3: "the texture coordinates of the current raster position"), which the raster
+        // position already took through the texture matrix: identity here, no texgen. Fog is
+        // not applied to them (left out; blending and the alpha test are kept).
+        let texture = self.bound_texture().map(|mut t| {
+            t.matrix = Mat4::IDENTITY;
+            t.generate = None;
+            t
+        });
+        let mut state = self.snapshot(texture);
         state.fog = None;
         let (w, h) = (self.width(), self.height());
         state.modelview = Mat4::IDENTITY;
@@ -377,14 +279,14 @@ mod tests {
     #[test]
     fn pixels_unpack_to_rgba() {
         let one = PixelStore { alignment: 1, ..MSB };
-        let rgb = unpack_pixels(one, (2, 1), GL_RGB, GL_UNSIGNED_BYTE, &[255, 0, 0, 0, 51, 255]).unwrap();
+        let rgb = unpack_image(one, (2, 1), GL_RGB, GL_UNSIGNED_BYTE, &[255, 0, 0, 0, 51, 255]).unwrap();
         assert_eq!(rgb, [[1.0, 0.0, 0.0, 1.0], [0.0, 0.2, 1.0, 1.0]]);
         // Rows of 3 luminance bytes are padded to 4.
-        let lum = unpack_pixels(MSB, (3, 2), GL_LUMINANCE, GL_UNSIGNED_BYTE, &[0, 0, 0, 9, 255, 255, 255]).unwrap();
+        let lum = unpack_image(MSB, (3, 2), GL_LUMINANCE, GL_UNSIGNED_BYTE, &[0, 0, 0, 9, 255, 255, 255]).unwrap();
         assert_eq!(lum[3], [1.0, 1.0, 1.0, 1.0]);
-        assert_eq!(unpack_pixels(MSB, (3, 2), GL_LUMINANCE, GL_UNSIGNED_BYTE, &[0; 6]), None);
+        assert_eq!(unpack_image(MSB, (3, 2), GL_LUMINANCE, GL_UNSIGNED_BYTE, &[0; 6]), None);
         let floats: Vec<u8> = [0.25f32, 0.5, 0.75, 1.0].iter().flat_map(|f| f.to_ne_bytes()).collect();
-        assert_eq!(unpack_pixels(MSB, (1, 1), GL_RGBA, GL_FLOAT, &floats).unwrap(), [[0.25, 0.5, 0.75, 1.0]]);
+        assert_eq!(unpack_image(MSB, (1, 1), GL_RGBA, GL_FLOAT, &floats).unwrap(), [[0.25, 0.5, 0.75, 1.0]]);
     }
 
     fn points(gl: &mut Gl) -> Vec<([f32; 2], [f32; 4])> {

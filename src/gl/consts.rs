@@ -621,6 +621,10 @@ pub const GL_SCISSOR_BIT: GLenum = 0x00080000;
 // GL/gl.h: OpenGL 1.1.
 pub const GL_PROXY_TEXTURE_1D: GLenum = 0x8063;
 pub const GL_PROXY_TEXTURE_2D: GLenum = 0x8064;
+/// `glGetTexLevelParameter`: a level's depth bits (GL 1.4, `GL_ARB_depth_texture`).
+pub const GL_TEXTURE_DEPTH_SIZE: GLenum = 0x884A;
+/// `glGetTexLevelParameter`: a level's stencil bits (GL 3.0, `GL_EXT_packed_depth_stencil`).
+pub const GL_TEXTURE_STENCIL_SIZE: GLenum = 0x88F1;
 pub const GL_TEXTURE_PRIORITY: GLenum = 0x8066;
 pub const GL_TEXTURE_RESIDENT: GLenum = 0x8067;
 pub const GL_TEXTURE_INTERNAL_FORMAT: GLenum = 0x1003;

@@ -40,6 +40,7 @@ mod offset;
 mod param_variants;
 mod pixel_commands;
 mod pixel_transfer;
+mod pixel_unpack;
 pub mod pixel_zoom;
 mod pixels;
 mod raster;

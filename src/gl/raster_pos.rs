@@ -95,8 +95,10 @@ impl Gl {
             self.raster_pos.valid = false;
             return;
         };
-        self.raster_pos =
-            RasterPos { window, valid: true, color: self.current.color, tex_coord: self.current.tex_coord, distance };
+        // The raster texture coordinates are the current ones through the texture matrix
+        // (GL 1.1 §2.12), as a vertex's are.
+        let tex_coord = (self.matrices.texture() * glam::Vec4::from_array(self.current.tex_coord)).to_array();
+        self.raster_pos = RasterPos { window, valid: true, color: self.current.color, tex_coord, distance };
     }
 
     /// `glRasterPos2f` (z = 0, w = 1). Inside `begin`/`end` → `GL_INVALID_OPERATION`.

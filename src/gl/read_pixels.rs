@@ -14,9 +14,9 @@
 //! An RGBA window has no colour-index buffer and gleval's none a stencil buffer yet: reading
 //! `GL_COLOR_INDEX` or `GL_STENCIL_INDEX` is `GL_INVALID_OPERATION`, as in Mesa without one.
 
-use super::binding::type_size;
 use super::consts::*;
 use super::frame::Frame;
+use super::pixel_unpack::element_size as type_size;
 use super::types::*;
 use super::window_read::WindowImage;
 use super::Gl;

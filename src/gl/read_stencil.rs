@@ -4,9 +4,9 @@
 //! draws the frame recorded so far and returns the window's stencil buffer (one byte a pixel,
 //! rows top to bottom).
 
-use super::binding::type_size;
 use super::consts::*;
 use super::frame::Frame;
+use super::pixel_unpack::element_size as type_size;
 use super::types::*;
 use super::Gl;
 

@@ -10,6 +10,7 @@
 
 use super::consts::*;
 use super::lists::ListCommand;
+use super::pixel_unpack::{format_and_type_error, format_components, unpack_image};
 use super::texgen::{TexGen, TexGenState};
 use super::types::*;
 use super::Gl;
@@ -139,6 +140,18 @@ pub(super) struct TextureObject {
 }
 
 impl TextureObject {
+    /// Sets level `level` (`None`: undefined, as a proxy too large for its level is), with its
+    /// base and internal formats.
+    fn define_level(&mut self, level: usize, image: Option<TexLevel>, base: GLenum, internal: GLint) {
+        if self.levels.len() <= level {
+            self.levels.resize(level + 1, None);
+            self.formats.resize(level + 1, 0);
+        }
+        self.levels[level] = image;
+        self.formats[level] = base;
+        self.extra.set_internal(level, internal);
+    }
+
     /// `glPrioritizeTextures`: `GL_TEXTURE_PRIORITY`, clamped to [0, 1].
     pub(super) fn set_priority(&mut self, priority: f32) {
         self.extra.priority = priority.clamp(0.0, 1.0);
@@ -151,6 +164,9 @@ pub(crate) struct Textures {
     pub(super) objects: HashMap<GLuint, TextureObject>,
     /// The default objects (name 0) of `GL_TEXTURE_1D` and `GL_TEXTURE_2D`.
     defaults: [TextureObject; 2],
+    /// `GL_PROXY_TEXTURE_1D` and `GL_PROXY_TEXTURE_2D`: levels of sizes and formats only
+    /// (GL 1.1 §3.8.1), never bound or drawn.
+    proxies: [TextureObject; 2],
     bound: [GLuint; 2],
     env_mode: GLenum,
     env_color: [f32; 4],
@@ -164,6 +180,7 @@ impl Default for Textures {
         Self {
             objects: HashMap::new(),
             defaults: [default(1, 1), default(2, 2)],
+            proxies: [default(1, 0), default(2, 0)],
             bound: [0, 0],
             env_mode: GL_MODULATE,
             env_color: [0.0; 4],
@@ -180,6 +197,22 @@ pub(super) fn target_index(target: GLenum) -> Option<usize> {
         GL_TEXTURE_2D => Some(1),
         _ => None,
     }
+}
+
+/// 0 for `GL_PROXY_TEXTURE_1D`, 1 for `GL_PROXY_TEXTURE_2D`.
+pub(super) fn proxy_index(target: GLenum) -> Option<usize> {
+    match target {
+        GL_PROXY_TEXTURE_1D => Some(0),
+        GL_PROXY_TEXTURE_2D => Some(1),
+        _ => None,
+    }
+}
+
+/// Whether a `width` × `height` image fits `level` (Mesa's `_mesa_legal_texture_dimensions`:
+/// each side at most the largest texture's side at that level).
+fn fits_level(level: GLint, width: GLsizei, height: GLsizei) -> bool {
+    let largest = MAX_TEXTURE_SIZE >> level;
+    width <= largest && height <= largest
 }
 
 /// The base internal format of an `internalformat` argument (GL 1.1 table 3.15, with GL 1.0's
@@ -207,53 +240,10 @@ pub(super) fn base_format(internal: GLint) -> Option<GLenum> {
     }
 }
 
-/// Components per pixel of a client `format`, `None` for one not taken.
-fn format_components(format: GLenum) -> Option<usize> {
-    match format {
-        GL_ALPHA | GL_LUMINANCE => Some(1),
-        GL_LUMINANCE_ALPHA => Some(2),
-        GL_RGB => Some(3),
-        GL_RGBA => Some(4),
-        _ => None,
-    }
-}
-
-/// Bytes per component of a client `type`, `None` for one not taken.
-fn type_size(type_: GLenum) -> Option<usize> {
-    match type_ {
-        GL_UNSIGNED_BYTE => Some(1),
-        GL_FLOAT => Some(4),
-        _ => None,
-    }
-}
-
-/// One client pixel's components as GL's RGBA (GL 1.1 §3.6.3: luminance to R, G and B, a
-/// missing alpha 1, a missing colour 0), each in [0, 1] as a byte.
-fn to_rgba(format: GLenum, c: &[f32]) -> [u8; 4] {
-    let byte = |x: f32| (x.clamp(0.0, 1.0) * 255.0).round() as u8;
-    let [r, g, b, a] = match format {
-        GL_ALPHA => [0.0, 0.0, 0.0, c[0]],
-        GL_LUMINANCE => [c[0], c[0], c[0], 1.0],
-        GL_LUMINANCE_ALPHA => [c[0], c[0], c[0], c[1]],
-        GL_RGB => [c[0], c[1], c[2], 1.0],
-        _ => [c[0], c[1], c[2], c[3]],
-    };
-    [byte(r), byte(g), byte(b), byte(a)]
-}
-
-/// An image's pixel layout in client memory, checked against GL's rules.
-#[derive(Clone, Copy, Debug)]
-struct ImageFormat {
-    format: GLenum,
-    type_: GLenum,
-    components: usize,
-    component_size: usize,
-}
-
-impl ImageFormat {
-    fn pixel_size(&self) -> usize {
-        self.components * self.component_size
-    }
+/// Whether `glTexImage` and `glTexSubImage` take `format` for a colour texture (GL 1.1
+/// §3.8.1: the colour formats and colour indices; `GL_BGR` and `GL_BGRA` as Mesa takes them).
+fn texture_format(format: GLenum) -> bool {
+    format_components(format).is_some() && !matches!(format, GL_STENCIL_INDEX | GL_DEPTH_COMPONENT)
 }
 
 impl Gl {
@@ -402,34 +392,40 @@ impl Gl {
             return;
         }
         let wanted = if dims == 1 { GL_TEXTURE_1D } else { GL_TEXTURE_2D };
-        if target != wanted {
+        let proxy = proxy_index(target) == Some(usize::from(dims - 1));
+        if target != wanted && !proxy {
             return self.set_error(GL_INVALID_ENUM);
         }
         let max_level = MAX_TEXTURE_SIZE.ilog2() as GLint;
-        let sizes_ok = (0..=MAX_TEXTURE_SIZE).contains(&width) && (0..=MAX_TEXTURE_SIZE).contains(&height);
-        if !(0..=max_level).contains(&level) || !sizes_ok || border != 0 {
+        if !(0..=max_level).contains(&level) || width < 0 || height < 0 || border != 0 {
             return self.set_error(GL_INVALID_VALUE);
         }
-        let Some(layout) = self.image_format(format, type_) else { return };
+        if !self.check_image_format(format, type_) {
+            return;
+        }
         let Some(base) = base_format(internalformat) else { return self.set_error(GL_INVALID_VALUE) };
+        // Too large for its level: an error, or for a proxy, a proxy level of nothing (GL 1.1
+        // §3.8.1: "no error is generated"), as Mesa's `teximage` answers after the checks above.
+        let fits = fits_level(level, width, height);
+        if !fits && !proxy {
+            return self.set_error(GL_INVALID_VALUE);
+        }
+        if proxy {
+            let image = fits.then(|| TexLevel { width: width as u32, height: height as u32, texels: Vec::new() });
+            let object = &mut self.textures.proxies[usize::from(dims - 1)];
+            return object.define_level(level as usize, image, base, internalformat);
+        }
         let (w, h) = (width as usize, height as usize);
         let texels = if bytes.is_empty() {
             vec![[0; 4]; w * h]
         } else {
-            match self.unpack_texels(layout, w, h, bytes) {
+            match self.unpack_texels((format, type_), w, h, bytes) {
                 Some(texels) => texels,
                 None => return self.set_error(GL_INVALID_VALUE),
             }
         };
-        let object = self.bound_object_mut(dims);
-        let level = level as usize;
-        if object.levels.len() <= level {
-            object.levels.resize(level + 1, None);
-            object.formats.resize(level + 1, 0);
-        }
-        object.levels[level] = Some(TexLevel { width: w as u32, height: h as u32, texels });
-        object.formats[level] = base;
-        object.extra.set_internal(level, internalformat);
+        let image = TexLevel { width: w as u32, height: h as u32, texels };
+        self.bound_object_mut(dims).define_level(level as usize, Some(image), base, internalformat);
         self.image_changed(dims);
     }
 
@@ -480,8 +476,10 @@ impl Gl {
             return self.set_error(GL_INVALID_ENUM);
         }
         let Some((x, y, w, h)) = self.sub_image_rect(dims, level, rect) else { return };
-        let Some(layout) = self.image_format(format, type_) else { return };
-        let Some(texels) = self.unpack_texels(layout, w, h, bytes) else {
+        if !self.check_image_format(format, type_) {
+            return;
+        }
+        let Some(texels) = self.unpack_texels((format, type_), w, h, bytes) else {
             return self.set_error(GL_INVALID_VALUE);
         };
         self.replace_texels(dims, level as usize, (x, y, w), &texels);
@@ -718,45 +716,39 @@ impl Gl {
         self.touch_state();
     }
 
-    /// Checks `format` and `type_` (`GL_INVALID_ENUM` otherwise).
-    fn image_format(&mut self, format: GLenum, type_: GLenum) -> Option<ImageFormat> {
-        match (format_components(format), type_size(type_)) {
-            (Some(components), Some(component_size)) => Some(ImageFormat { format, type_, components, component_size }),
-            _ => {
-                self.set_error(GL_INVALID_ENUM);
-                None
-            }
+    /// Checks `format` and `type_` as Mesa does for a colour texture: the image's errors
+    /// ([`super::pixel_unpack::format_and_type_error`]), then a depth or stencil image →
+    /// `GL_INVALID_OPERATION`. False after an error.
+    fn check_image_format(&mut self, format: GLenum, type_: GLenum) -> bool {
+        let error = format_and_type_error(format, type_).or((!texture_format(format)).then_some(GL_INVALID_OPERATION));
+        if let Some(error) = error {
+            self.set_error(error);
         }
+        error.is_none()
     }
 
-    /// Unpacks a `w`×`h` image from client memory to RGBA8, or `None` if `bytes` is short.
-    fn unpack_texels(&self, layout: ImageFormat, w: usize, h: usize, bytes: &[u8]) -> Option<Vec<[u8; 4]>> {
-        let store = self.unpack_store();
-        let size = layout.pixel_size();
-        let stride = store.row_stride(w, layout.components, layout.component_size);
-        let first = store.first_byte(stride, size);
-        if w == 0 || h == 0 {
-            return Some(Vec::new());
-        }
-        let needed = first + (h - 1) * stride + w * size;
-        if bytes.len() < needed {
-            return None;
-        }
-        let mut texels = Vec::with_capacity(w * h);
-        let mut components = [0.0f32; 4];
-        for row in 0..h {
-            let row_bytes = &bytes[first + row * stride..][..w * size];
-            for pixel in row_bytes.chunks_exact(size) {
-                for (c, value) in pixel.chunks_exact(layout.component_size).zip(&mut components) {
-                    *value = match layout.type_ {
-                        GL_FLOAT => f32::from_ne_bytes([c[0], c[1], c[2], c[3]]),
-                        _ => f32::from(c[0]) / 255.0,
-                    };
-                }
-                texels.push(to_rgba(layout.format, &components));
-            }
-        }
-        Some(texels)
+    /// Unpacks a `w`×`h` texture image from client memory to RGBA8 as GL 1.1 §3.8.1 says:
+    /// as `glDrawPixels` reads it ([`super::pixel_unpack`]), through the pixel transfer (colour
+    /// indices through the index-to-RGBA maps, colours through scale, bias and, with
+    /// `GL_MAP_COLOR`, the colour maps), clamped to [0, 1]. `None` if `bytes` is short.
+    fn unpack_texels(
+        &self,
+        (format, type_): (GLenum, GLenum),
+        w: usize,
+        h: usize,
+        bytes: &[u8],
+    ) -> Option<Vec<[u8; 4]>> {
+        let image = unpack_image(self.unpack_store(), (w as GLsizei, h as GLsizei), format, type_, bytes)?;
+        let transfer = self.color_transfer();
+        let byte = |x: f32| (x.clamp(0.0, 1.0) * 255.0).round() as u8;
+        let texel = |c: [f32; 4]| {
+            let c = match format {
+                GL_COLOR_INDEX => self.index_to_rgba(c[0]),
+                _ => transfer.as_ref().map_or(c, |t| t.apply(c)),
+            };
+            c.map(byte)
+        };
+        Some(image.into_iter().map(texel).collect())
     }
 }
 
@@ -826,6 +818,104 @@ mod tests {
         // Too short for the aligned layout.
         gl.tex_image_2d(GL_TEXTURE_2D, 0, 1, 1, 2, 0, GL_LUMINANCE, GL_UNSIGNED_BYTE, &[10u8, 20]);
         assert_eq!(gl.get_error(), GL_INVALID_VALUE);
+    }
+
+    #[test]
+    fn proxies_take_sizes_and_say_when_an_image_does_not_fit() {
+        // GL 1.1 §3.8.1 and piglit's proxy-texture: errors leave the proxy as it was; an image
+        // too large is no error and a proxy level of width and height 0.
+        let mut gl = Gl::new(4, 4);
+        let width = |gl: &mut Gl| {
+            let mut w = [-1];
+            gl.get_tex_level_parameteriv(GL_PROXY_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, &mut w);
+            w[0]
+        };
+        gl.tex_image_2d::<u8>(GL_PROXY_TEXTURE_2D, 0, GL_RGBA as GLint, 8, 8, 0, GL_RGBA, GL_FLOAT, &[]);
+        assert_eq!((gl.get_error(), width(&mut gl)), (GL_NO_ERROR, 8));
+        gl.tex_image_2d::<u8>(GL_PROXY_TEXTURE_2D, 0, GL_RGBA as GLint, 8, 8, 2, GL_RGBA, GL_FLOAT, &[]);
+        assert_eq!((gl.get_error(), width(&mut gl)), (GL_INVALID_VALUE, 8));
+        gl.tex_image_2d::<u8>(
+            GL_PROXY_TEXTURE_2D,
+            0,
+            GL_RGBA as GLint,
+            8,
+            8,
+            0,
+            GL_DEPTH_COMPONENT,
+            GL_UNSIGNED_INT_8_8_8_8,
+            &[],
+        );
+        assert_eq!((gl.get_error(), width(&mut gl)), (GL_INVALID_OPERATION, 8));
+        let big = 2 * MAX_TEXTURE_SIZE;
+        gl.tex_image_2d::<u8>(GL_PROXY_TEXTURE_2D, 0, GL_RGBA as GLint, big, big, 0, GL_RGBA, GL_FLOAT, &[]);
+        assert_eq!((gl.get_error(), width(&mut gl)), (GL_NO_ERROR, 0));
+        assert!(gl.bound_levels(2).is_empty(), "the bound texture is untouched");
+        // piglit's max-texture-size-level: a level's sides are at most the largest >> level.
+        gl.tex_image_2d::<u8>(
+            GL_TEXTURE_2D,
+            0,
+            GL_RGBA as GLint,
+            MAX_TEXTURE_SIZE,
+            1,
+            0,
+            GL_RGBA,
+            GL_UNSIGNED_BYTE,
+            &[],
+        );
+        assert_eq!(gl.get_error(), GL_NO_ERROR);
+        gl.tex_image_2d::<u8>(
+            GL_TEXTURE_2D,
+            1,
+            GL_RGBA as GLint,
+            MAX_TEXTURE_SIZE,
+            1,
+            0,
+            GL_RGBA,
+            GL_UNSIGNED_BYTE,
+            &[],
+        );
+        assert_eq!(gl.get_error(), GL_INVALID_VALUE);
+        gl.tex_image_2d::<u8>(
+            GL_TEXTURE_2D,
+            2,
+            GL_RGBA as GLint,
+            1,
+            MAX_TEXTURE_SIZE / 2,
+            0,
+            GL_RGBA,
+            GL_UNSIGNED_BYTE,
+            &[],
+        );
+        assert_eq!(gl.get_error(), GL_INVALID_VALUE);
+        let mut depth = [-1];
+        gl.get_tex_level_parameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_DEPTH_SIZE, &mut depth);
+        assert_eq!((gl.get_error(), depth[0]), (GL_NO_ERROR, 0));
+    }
+
+    #[test]
+    fn images_go_through_the_pixel_transfer() {
+        // piglit's teximage-scale-bias: (0.5, 0.25, 0.1, 0.5) scaled by (2, 3, 1, 1) and biased
+        // by (-0.25, 0, 0.4, 0) is (0.75, 0.75, 0.5, 0.5).
+        let mut gl = Gl::new(4, 4);
+        for (pname, v) in [(GL_RED_SCALE, 2.0), (GL_RED_BIAS, -0.25), (GL_GREEN_SCALE, 3.0), (GL_BLUE_BIAS, 0.4)] {
+            gl.pixel_transferf(pname, v);
+        }
+        gl.tex_image_2d(GL_TEXTURE_2D, 0, GL_RGBA as GLint, 1, 1, 0, GL_RGBA, GL_FLOAT, &[0.5f32, 0.25, 0.1, 0.5]);
+        let texel = gl.bound_levels(2)[0].as_ref().unwrap().texels[0];
+        assert_eq!(texel, [191, 191, 128, 128]);
+        // A colour-index bitmap through the I_TO_* maps (piglit's
+        // read-pixels-after-display-list): bits 1 and 0 become the maps' entries 1 and 0.
+        let mut gl = Gl::new(4, 4);
+        gl.pixel_mapfv(GL_PIXEL_MAP_I_TO_R, 2, &[0.0, 1.0]);
+        gl.pixel_mapfv(GL_PIXEL_MAP_I_TO_B, 2, &[1.0, 0.0]);
+        gl.pixel_mapfv(GL_PIXEL_MAP_I_TO_A, 2, &[1.0, 1.0]);
+        gl.pixel_storei(GL_UNPACK_ALIGNMENT, 1);
+        gl.tex_image_2d(GL_TEXTURE_2D, 0, GL_RGBA as GLint, 2, 1, 0, GL_COLOR_INDEX, GL_BITMAP, &[0x80u8]);
+        assert_eq!(gl.get_error(), GL_NO_ERROR);
+        let texels = gl.bound_levels(2)[0].as_ref().unwrap().texels.clone();
+        assert_eq!(texels, [[255, 0, 0, 255], [0, 0, 255, 255]]);
+        gl.tex_image_2d(GL_TEXTURE_2D, 0, GL_RGBA as GLint, 2, 1, 0, GL_RGB, GL_BITMAP, &[0x80u8]);
+        assert_eq!(gl.get_error(), GL_INVALID_ENUM);
     }
 
     #[test]

@@ -10,7 +10,7 @@ use super::super::light_query::c_int;
 use super::super::types::*;
 use super::super::variants::GlComponent;
 use super::super::Gl;
-use super::{target_index, MAX_TEXTURE_SIZE};
+use super::{proxy_index, target_index, TextureObject, MAX_TEXTURE_SIZE};
 
 /// A texture object's parameters beyond [`super::TexParams`], and each level's internal format
 /// as the program gave it (what `GL_TEXTURE_INTERNAL_FORMAT` reports).
@@ -176,7 +176,7 @@ impl Gl {
 
     /// `glGetTexLevelParameterfv`: `GL_TEXTURE_WIDTH`, `_HEIGHT`, `_BORDER`,
     /// `_INTERNAL_FORMAT` (`GL_TEXTURE_COMPONENTS`), and the component sizes of `level` of the
-    /// bound 1D or 2D texture; a level never defined answers 0 (its internal format `GL_RGBA`,
+    /// bound 1D or 2D texture, or of a proxy (`GL_PROXY_TEXTURE_1D`, `_2D`); a level never defined answers 0 (its internal format `GL_RGBA`,
     /// as Mesa).
     /// Errors in Mesa's order: target (`GL_INVALID_ENUM`), level outside 0..=log2 of the
     /// largest size (`GL_INVALID_VALUE`), name (`GL_INVALID_ENUM`).
@@ -197,15 +197,18 @@ impl Gl {
         if self.reject_inside_begin_end() {
             return None;
         }
-        let Some(t) = target_index(target) else {
-            self.set_error(GL_INVALID_ENUM);
-            return None;
+        let object: &TextureObject = match (target_index(target), proxy_index(target)) {
+            (Some(t), _) => self.bound_object(t as u8 + 1),
+            (_, Some(p)) => &self.textures.proxies[p],
+            _ => {
+                self.set_error(GL_INVALID_ENUM);
+                return None;
+            }
         };
         if !(0..=MAX_TEXTURE_SIZE.ilog2() as GLint).contains(&level) {
             self.set_error(GL_INVALID_VALUE);
             return None;
         }
-        let object = self.bound_object(t as u8 + 1);
         let l = level as usize;
         let defined = object.levels.get(l).and_then(Option::as_ref);
         let internal = defined.map_or(GL_RGBA as GLint, |_| object.extra.internal_formats.get(l).copied().unwrap_or(1));
@@ -221,6 +224,9 @@ impl Gl {
             GL_TEXTURE_ALPHA_SIZE => sizes[3],
             GL_TEXTURE_LUMINANCE_SIZE => sizes[4],
             GL_TEXTURE_INTENSITY_SIZE => sizes[5],
+            // Colour textures have neither; Mesa answers both names (ARB_depth_texture, and
+            // GL 3.0's stencil size, unguarded in `get_tex_level_parameter_image`).
+            GL_TEXTURE_DEPTH_SIZE | GL_TEXTURE_STENCIL_SIZE => 0,
             _ => {
                 self.set_error(GL_INVALID_ENUM);
                 return None;

@@ -1,0 +1,313 @@
+//! Client images to GL's pixel values (GL 1.1 spec §3.6.3 "Unpacking" and "Conversion to
+//! floating-point", table 3.5; Mesa `main/pack.c`): what `glDrawPixels` and `glTexImage` read
+//! from client memory, element by element, before the pixel transfer.
+//!
+//! Every GL 1.1 type is read (`GL_BITMAP` for indices, the signed and unsigned integers of
+//! 8, 16 and 32 bits, `GL_FLOAT`), with `GL_UNPACK_SWAP_BYTES`, the row length, the skipped
+//! rows and pixels and the row alignment. Colour and depth components become floats as
+//! Mesa 22 converts them (measured: a `GL_BYTE` 1 draws as 1/127, not GL 1.1's 3/255, so
+//! signed values are `max(c / (2^(b−1) − 1), −1)`, unsigned `c / (2^b − 1)`); colour and
+//! stencil indices stay integers.
+
+use super::consts::*;
+use super::pixels::PixelStore;
+use super::types::*;
+
+/// Elements per pixel of a `glDrawPixels`/`glTexImage` format, `None` for one GL 1.1 does not
+/// have (`GL_BGR` and `GL_BGRA` of GL 1.2 included, as Mesa takes them).
+#[must_use]
+pub(crate) fn format_components(format: GLenum) -> Option<usize> {
+    match format {
+        GL_COLOR_INDEX | GL_STENCIL_INDEX | GL_DEPTH_COMPONENT => Some(1),
+        GL_RED | GL_GREEN | GL_BLUE | GL_ALPHA | GL_LUMINANCE => Some(1),
+        GL_LUMINANCE_ALPHA => Some(2),
+        GL_RGB | GL_BGR => Some(3),
+        GL_RGBA | GL_BGRA => Some(4),
+        _ => None,
+    }
+}
+
+/// Bytes per element of a GL 1.1 type other than `GL_BITMAP`, `None` for the others.
+#[must_use]
+pub(crate) fn element_size(type_: GLenum) -> Option<usize> {
+    match type_ {
+        GL_BYTE | GL_UNSIGNED_BYTE => Some(1),
+        GL_SHORT | GL_UNSIGNED_SHORT => Some(2),
+        GL_INT | GL_UNSIGNED_INT | GL_FLOAT => Some(4),
+        _ => None,
+    }
+}
+
+/// A GL 1.2 packed type (GL 1.2 §3.6.4, table 3.8): the bytes of its one element a pixel, the
+/// bits of each component from the first, and whether the first sits in the lowest bits
+/// (`_REV`) rather than the highest.
+#[derive(Clone, Copy)]
+struct Packed {
+    size: usize,
+    bits: &'static [u32],
+    reversed: bool,
+}
+
+fn packed(type_: GLenum) -> Option<Packed> {
+    let (size, bits, reversed): (usize, &'static [u32], bool) = match type_ {
+        GL_UNSIGNED_BYTE_3_3_2 => (1, &[3, 3, 2], false),
+        GL_UNSIGNED_BYTE_2_3_3_REV => (1, &[3, 3, 2], true),
+        GL_UNSIGNED_SHORT_5_6_5 => (2, &[5, 6, 5], false),
+        GL_UNSIGNED_SHORT_5_6_5_REV => (2, &[5, 6, 5], true),
+        GL_UNSIGNED_SHORT_4_4_4_4 => (2, &[4, 4, 4, 4], false),
+        GL_UNSIGNED_SHORT_4_4_4_4_REV => (2, &[4, 4, 4, 4], true),
+        GL_UNSIGNED_SHORT_5_5_5_1 => (2, &[5, 5, 5, 1], false),
+        GL_UNSIGNED_SHORT_1_5_5_5_REV => (2, &[5, 5, 5, 1], true),
+        GL_UNSIGNED_INT_8_8_8_8 => (4, &[8, 8, 8, 8], false),
+        GL_UNSIGNED_INT_8_8_8_8_REV => (4, &[8, 8, 8, 8], true),
+        GL_UNSIGNED_INT_10_10_10_2 => (4, &[10, 10, 10, 2], false),
+        GL_UNSIGNED_INT_2_10_10_10_REV => (4, &[10, 10, 10, 2], true),
+        _ => return None,
+    };
+    Some(Packed { size, bits, reversed })
+}
+
+impl Packed {
+    /// The components of one element, each normalised by its field's largest value.
+    fn components(&self, value: u32, out: &mut [f32; 4]) {
+        let total: u32 = self.bits.iter().sum();
+        let mut shift = if self.reversed { 0 } else { total };
+        for (k, &b) in self.bits.iter().enumerate() {
+            if !self.reversed {
+                shift -= b;
+            }
+            let max = (1u64 << b) - 1;
+            out[k] = (f64::from((value >> shift) & max as u32) / max as f64) as f32;
+            if self.reversed {
+                shift += b;
+            }
+        }
+    }
+}
+
+/// The errors Mesa's `_mesa_error_check_format_and_type` gives a client image's `format` and
+/// `type_` before a call's own checks: an unknown format or type, or `GL_BITMAP` with a
+/// format that is not an index → `GL_INVALID_ENUM`; a packed type whose component count the
+/// format does not have → `GL_INVALID_OPERATION`.
+#[must_use]
+pub(crate) fn format_and_type_error(format: GLenum, type_: GLenum) -> Option<GLenum> {
+    let known_type = type_ == GL_BITMAP || element_size(type_).is_some() || packed(type_).is_some();
+    if format_components(format).is_none() || !known_type || (type_ == GL_BITMAP && !is_index(format)) {
+        return Some(GL_INVALID_ENUM);
+    }
+    let mismatch = packed(type_).is_some_and(|p| match p.bits.len() {
+        3 => format != GL_RGB,
+        _ => !matches!(format, GL_RGBA | GL_BGRA),
+    });
+    mismatch.then_some(GL_INVALID_OPERATION)
+}
+
+/// Whether a format's values are indices (integers, not normalised).
+fn is_index(format: GLenum) -> bool {
+    matches!(format, GL_COLOR_INDEX | GL_STENCIL_INDEX)
+}
+
+/// One element at `bytes` (its type's size, in client byte order unless `swap`) as GL's float:
+/// normalised for colour and depth, the integer itself for an index.
+fn element(type_: GLenum, bytes: &[u8], swap: bool, index: bool) -> f32 {
+    let mut b = [0u8; 4];
+    let n = bytes.len();
+    b[..n].copy_from_slice(bytes);
+    if swap {
+        b[..n].reverse();
+    }
+    let signed = |value: f64, max: f64| if index { value as f32 } else { (value / max).max(-1.0) as f32 };
+    let unsigned = |value: f64, max: f64| if index { value as f32 } else { (value / max) as f32 };
+    match type_ {
+        GL_BYTE => signed(f64::from(b[0] as i8), 127.0),
+        GL_UNSIGNED_BYTE => unsigned(f64::from(b[0]), 255.0),
+        GL_SHORT => signed(f64::from(i16::from_ne_bytes([b[0], b[1]])), 32767.0),
+        GL_UNSIGNED_SHORT => unsigned(f64::from(u16::from_ne_bytes([b[0], b[1]])), 65535.0),
+        GL_INT => signed(f64::from(i32::from_ne_bytes(b)), 2_147_483_647.0),
+        GL_UNSIGNED_INT => unsigned(f64::from(u32::from_ne_bytes(b)), 4_294_967_295.0),
+        _ => f32::from_ne_bytes(b),
+    }
+}
+
+/// One pixel's elements as GL's RGBA (GL 1.1 §3.6.3 "Conversion to RGB": missing colour
+/// components 0, a missing alpha 1, luminance to R, G and B). An index, or a depth, travels in
+/// the red slot.
+#[must_use]
+pub(crate) fn to_rgba(format: GLenum, c: &[f32]) -> [f32; 4] {
+    match format {
+        GL_RED | GL_COLOR_INDEX | GL_STENCIL_INDEX | GL_DEPTH_COMPONENT => [c[0], 0.0, 0.0, 1.0],
+        GL_GREEN => [0.0, c[0], 0.0, 1.0],
+        GL_BLUE => [0.0, 0.0, c[0], 1.0],
+        GL_ALPHA => [0.0, 0.0, 0.0, c[0]],
+        GL_LUMINANCE => [c[0], c[0], c[0], 1.0],
+        GL_LUMINANCE_ALPHA => [c[0], c[0], c[0], c[1]],
+        GL_RGB => [c[0], c[1], c[2], 1.0],
+        GL_BGR => [c[2], c[1], c[0], 1.0],
+        GL_BGRA => [c[2], c[1], c[0], c[3]],
+        _ => [c[0], c[1], c[2], c[3]],
+    }
+}
+
+/// Unpacks a `width` × `height` image of `format` and `type_` from `data` as GL reads it with
+/// `store`: one RGBA value per pixel ([`to_rgba`]), row by row from the bottom. `GL_BITMAP`
+/// (indices only) reads one bit a pixel as a bitmap does. `None` when `data` is shorter than
+/// the image; a format or type not read, or a negative size, gives an empty image (the calls
+/// report those errors themselves).
+#[must_use]
+pub(crate) fn unpack_image(
+    store: PixelStore,
+    (width, height): (GLsizei, GLsizei),
+    format: GLenum,
+    type_: GLenum,
+    data: &[u8],
+) -> Option<Vec<[f32; 4]>> {
+    let (Ok(w), Ok(h)) = (usize::try_from(width), usize::try_from(height)) else { return Some(Vec::new()) };
+    let Some(n) = format_components(format) else { return Some(Vec::new()) };
+    if w == 0 || h == 0 || format_and_type_error(format, type_).is_some() {
+        return Some(Vec::new());
+    }
+    if type_ == GL_BITMAP {
+        let bits = super::bitmap::unpack_bitmap(store, width, height, data)?;
+        return Some(bits.into_iter().map(|set| [f32::from(u8::from(set)), 0.0, 0.0, 1.0]).collect());
+    }
+    if let Some(p) = packed(type_) {
+        return unpack_packed(store, (w, h), format, p, data);
+    }
+    let Some(size) = element_size(type_) else { return Some(Vec::new()) };
+    let stride = store.row_stride(w, n, size);
+    let first = store.first_byte(stride, n * size);
+    if data.len() < first + (h - 1) * stride + w * n * size {
+        return None;
+    }
+    let swap = store.swap_bytes && size > 1;
+    let index = is_index(format);
+    let mut out = Vec::with_capacity(w * h);
+    let mut c = [0.0f32; 4];
+    for row in 0..h {
+        let row_bytes = &data[first + row * stride..][..w * n * size];
+        for pixel in row_bytes.chunks_exact(n * size) {
+            for (value, bytes) in c.iter_mut().zip(pixel.chunks_exact(size)) {
+                *value = element(type_, bytes, swap, index);
+            }
+            out.push(to_rgba(format, &c[..n]));
+        }
+    }
+    Some(out)
+}
+
+/// [`unpack_image`] for a packed type: one element a pixel.
+fn unpack_packed(
+    store: PixelStore,
+    (w, h): (usize, usize),
+    format: GLenum,
+    p: Packed,
+    data: &[u8],
+) -> Option<Vec<[f32; 4]>> {
+    let stride = store.row_stride(w, 1, p.size);
+    let first = store.first_byte(stride, p.size);
+    if data.len() < first + (h - 1) * stride + w * p.size {
+        return None;
+    }
+    let mut out = Vec::with_capacity(w * h);
+    let mut c = [0.0f32; 4];
+    for row in 0..h {
+        for bytes in data[first + row * stride..][..w * p.size].chunks_exact(p.size) {
+            let mut b = [0u8; 4];
+            b[..p.size].copy_from_slice(bytes);
+            if store.swap_bytes {
+                b[..p.size].reverse();
+            }
+            let value = match p.size {
+                1 => u32::from(b[0]),
+                2 => u32::from(u16::from_ne_bytes([b[0], b[1]])),
+                _ => u32::from_ne_bytes(b),
+            };
+            p.components(value, &mut c);
+            out.push(to_rgba(format, &c[..p.bits.len()]));
+        }
+    }
+    Some(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn integers_normalise_as_mesa_converts_them() {
+        // Measured on Mesa 22.3 (glDrawPixels 1×1, read back as bytes): GL_BYTE 1, 64, 127
+        // draw 2, 129, 255; GL_SHORT 300 draws 2; GL_UNSIGNED_SHORT 257 draws 1.
+        let store = PixelStore { alignment: 1, ..PixelStore::default() };
+        let byte = |v: f32| (v.clamp(0.0, 1.0) * 255.0).round() as u8;
+        let bytes = unpack_image(store, (1, 1), GL_RGBA, GL_BYTE, &[1, 64, 127, 0xff]).unwrap();
+        assert_eq!(bytes[0].map(byte), [2, 129, 255, 0]);
+        let shorts: Vec<u8> = [1i16, 16384, 32767, 300].iter().flat_map(|s| s.to_ne_bytes()).collect();
+        let shorts = unpack_image(store, (1, 1), GL_RGBA, GL_SHORT, &shorts).unwrap();
+        assert_eq!(shorts[0].map(byte), [0, 128, 255, 2]);
+        let ushorts: Vec<u8> = [257u16, 32768, 65535, 128].iter().flat_map(|s| s.to_ne_bytes()).collect();
+        let ushorts = unpack_image(store, (1, 1), GL_RGBA, GL_UNSIGNED_SHORT, &ushorts).unwrap();
+        assert_eq!(ushorts[0].map(byte), [1, 128, 255, 0]);
+        assert_eq!(unpack_image(store, (1, 1), GL_LUMINANCE, GL_BYTE, &[0x80]).unwrap()[0], [-1.0, -1.0, -1.0, 1.0]);
+    }
+
+    #[test]
+    fn packed_types_put_the_first_component_high_or_low() {
+        let store = PixelStore { alignment: 1, ..PixelStore::default() };
+        // 3_3_2: red in the top three bits; 2_3_3_REV: red in the lowest three.
+        assert_eq!(
+            unpack_image(store, (1, 1), GL_RGB, GL_UNSIGNED_BYTE_3_3_2, &[0b1110_0000]).unwrap()[0],
+            [1.0, 0.0, 0.0, 1.0]
+        );
+        assert_eq!(
+            unpack_image(store, (1, 1), GL_RGB, GL_UNSIGNED_BYTE_2_3_3_REV, &[0b0000_0111]).unwrap()[0],
+            [1.0, 0.0, 0.0, 1.0]
+        );
+        let word = 0x1234_56ffu32.to_ne_bytes();
+        let rgba = unpack_image(store, (1, 1), GL_RGBA, GL_UNSIGNED_INT_8_8_8_8, &word).unwrap()[0];
+        assert_eq!(rgba.map(|c| (c * 255.0).round() as u8), [0x12, 0x34, 0x56, 0xff]);
+        let rev = unpack_image(store, (1, 1), GL_BGRA, GL_UNSIGNED_INT_8_8_8_8_REV, &word).unwrap()[0];
+        // REV: B = 0xff, G = 0x56, R = 0x34, A = 0x12 (BGRA's order from the lowest byte).
+        assert_eq!(rev.map(|c| (c * 255.0).round() as u8), [0x34, 0x56, 0xff, 0x12]);
+        let ones = (1u16 | (31 << 11)).to_ne_bytes();
+        assert_eq!(
+            unpack_image(store, (1, 1), GL_RGBA, GL_UNSIGNED_SHORT_5_5_5_1, &ones).unwrap()[0],
+            [1.0, 0.0, 0.0, 1.0]
+        );
+        assert_eq!(format_and_type_error(GL_RGBA, GL_UNSIGNED_SHORT_5_6_5), Some(GL_INVALID_OPERATION));
+        assert_eq!(format_and_type_error(GL_DEPTH_COMPONENT, GL_UNSIGNED_INT_8_8_8_8), Some(GL_INVALID_OPERATION));
+        assert_eq!(format_and_type_error(GL_RGB, GL_BITMAP), Some(GL_INVALID_ENUM));
+        assert_eq!(format_and_type_error(GL_COLOR_INDEX, GL_BITMAP), None);
+    }
+
+    #[test]
+    fn indices_stay_integers_and_bitmaps_read_bits() {
+        let store = PixelStore { alignment: 1, ..PixelStore::default() };
+        let ints: Vec<u8> = [-3i32, 70000].iter().flat_map(|s| s.to_ne_bytes()).collect();
+        let rgba = unpack_image(store, (2, 1), GL_COLOR_INDEX, GL_INT, &ints).unwrap();
+        assert_eq!([rgba[0][0], rgba[1][0]], [-3.0, 70000.0]);
+        // 0x8f: bits 1000 1111, most significant first.
+        let bits = unpack_image(store, (8, 1), GL_COLOR_INDEX, GL_BITMAP, &[0x8f]).unwrap();
+        let reds: Vec<f32> = bits.iter().map(|p| p[0]).collect();
+        assert_eq!(reds, [1.0, 0.0, 0.0, 0.0, 1.0, 1.0, 1.0, 1.0]);
+        assert!(unpack_image(store, (8, 1), GL_RGBA, GL_BITMAP, &[0x8f]).unwrap().is_empty());
+    }
+
+    #[test]
+    fn swapped_bytes_rows_and_short_data() {
+        let store = PixelStore { alignment: 4, swap_bytes: true, ..PixelStore::default() };
+        // Two rows of one GL_UNSIGNED_SHORT luminance in the other byte order, each padded to
+        // four bytes.
+        let swapped = |v: u16| {
+            let mut b = v.to_ne_bytes();
+            b.reverse();
+            b
+        };
+        let data: Vec<u8> = [swapped(255).as_slice(), &[0, 0], &swapped(65280)].concat();
+        let rgba = unpack_image(store, (1, 2), GL_LUMINANCE, GL_UNSIGNED_SHORT, &data).unwrap();
+        assert_eq!([rgba[0][0], rgba[1][0]], [255.0 / 65535.0, 65280.0 / 65535.0]);
+        assert_eq!(unpack_image(store, (1, 2), GL_LUMINANCE, GL_UNSIGNED_SHORT, &data[..5]), None);
+        let store = PixelStore { alignment: 1, ..PixelStore::default() };
+        let bgra = unpack_image(store, (1, 1), GL_BGRA, GL_UNSIGNED_BYTE, &[0, 0, 255, 255]).unwrap();
+        assert_eq!(bgra[0], [1.0, 0.0, 0.0, 1.0]);
+    }
+}
