@@ -49,6 +49,11 @@ impl Gl {
     #[must_use]
     pub fn unpacked_image_len(&self, width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum) -> Option<usize> {
         let (w, h) = (usize::try_from(width).ok()?, usize::try_from(height).ok()?);
+        if type_ == GL_BITMAP {
+            // Indices one bit a pixel, laid out as a bitmap (GL 1.1 §3.6.3).
+            format_components(format)?;
+            return self.unpacked_bitmap_len(width, height);
+        }
         // A packed type is one element a pixel, whatever the format's component count.
         let (components, size) = match packed_pixel_size(type_) {
             Some(size) => (format_components(format).map(|_| 1)?, size),

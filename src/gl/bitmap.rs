@@ -47,13 +47,6 @@ pub(crate) fn unpack_bitmap(store: PixelStore, width: GLsizei, height: GLsizei, 
     Some((0..h).flat_map(|j| (0..w).map(move |i| bit(j, i))).collect())
 }
 
-/// `glDrawPixels`' format and type checks, as Mesa makes them: the image's
-/// ([`super::pixel_unpack::format_and_type_error`]), then `GL_STENCIL_INDEX`, which gleval does
-/// not draw yet, as `GL_INVALID_OPERATION` (Mesa's answer for a window without stencil).
-fn draw_format_error(format: GLenum, type_: GLenum) -> Option<GLenum> {
-    format_and_type_error(format, type_).or((format == GL_STENCIL_INDEX).then_some(GL_INVALID_OPERATION))
-}
-
 /// The matrix that takes window coordinates (x, y, and z already in [0, 1] mapped to NDC
 /// [−1, 1]) to clip coordinates for a `width` × `height` viewport at the origin.
 fn window_to_clip(width: i32, height: i32) -> Mat4 {
@@ -126,10 +119,11 @@ impl Gl {
     /// (round(xr), round(yr)) on (Mesa rounds; [`super::pixel_zoom`]): the colour formats (with
     /// `GL_BGR`, `GL_BGRA`) at the raster depth; colour indices (with `GL_BITMAP` too) through
     /// the maps, as an RGBA context draws them; `GL_DEPTH_COMPONENT` as fragments of the
-    /// raster colour at the image's depths. Nothing is drawn when the raster position is
-    /// invalid. Errors, in Mesa's order: inside `begin`/`end` → `GL_INVALID_OPERATION`; a
+    /// raster colour at the image's depths; `GL_STENCIL_INDEX` into the stencil buffer
+    /// ([`Gl::draw_stencil`]). Nothing is drawn when the raster position is invalid. Errors, in Mesa's order: inside `begin`/`end` → `GL_INVALID_OPERATION`; a
     /// negative size → `GL_INVALID_VALUE`; an unknown format or type → `GL_INVALID_ENUM`; a
-    /// packed type the format does not fit, or `GL_STENCIL_INDEX` → `GL_INVALID_OPERATION`;
+    /// packed type the format does not fit, or `GL_STENCIL_INDEX` without a stencil buffer →
+    /// `GL_INVALID_OPERATION`;
     /// `pixels` shorter than the image → `GL_INVALID_VALUE`. The packed types of GL 1.2 are
     /// read too.
     pub fn draw_pixels(&mut self, width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum, pixels: &[u8]) {
@@ -155,12 +149,17 @@ impl Gl {
         if width < 0 || height < 0 {
             return self.set_error(GL_INVALID_VALUE);
         }
-        if let Some(code) = draw_format_error(format, type_) {
+        // The image's errors, then a stencil image for a window without stencil (Mesa).
+        let no_stencil = format == GL_STENCIL_INDEX && !self.window_has(GL_STENCIL);
+        if let Some(code) = format_and_type_error(format, type_).or(no_stencil.then_some(GL_INVALID_OPERATION)) {
             return self.set_error(code);
         }
         let Some(rgba) = rgba else { return self.set_error(GL_INVALID_VALUE) };
         if !self.raster_pos.valid || self.feedback_raster_token(GL_DRAW_PIXEL_TOKEN) || rgba.is_empty() {
             return;
+        }
+        if format == GL_STENCIL_INDEX {
+            return self.draw_stencil((width, height), rgba);
         }
         let [xr, yr, z, _] = self.raster_pos.window;
         let origin = [xr.round() as i32, yr.round() as i32];

@@ -275,6 +275,9 @@ pub const GL_LUMINANCE_ALPHA: GLenum = 0x190A;
 // GL 1.2's reversed colour orders and packed pixel types.
 pub const GL_BGR: GLenum = 0x80E0;
 pub const GL_BGRA: GLenum = 0x80E1;
+/// A two-component image format (GL 3.0, `GL_ARB_texture_rg`), which Mesa's compatibility
+/// contexts take for `glDrawPixels` and `glTexImage`.
+pub const GL_RG: GLenum = 0x8227;
 pub const GL_UNSIGNED_BYTE_3_3_2: GLenum = 0x8032;
 pub const GL_UNSIGNED_SHORT_4_4_4_4: GLenum = 0x8033;
 pub const GL_UNSIGNED_SHORT_5_5_5_1: GLenum = 0x8034;

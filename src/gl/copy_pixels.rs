@@ -30,8 +30,12 @@ pub struct PixelCopy {
     pub origin: [i32; 2],
     /// `glPixelZoom`'s factors.
     pub zoom: [f32; 2],
-    /// `GL_COLOR` or `GL_DEPTH`.
+    /// `GL_COLOR`, `GL_DEPTH` or `GL_STENCIL`.
     pub buffer: GLenum,
+    /// `glDrawPixels` of `GL_STENCIL_INDEX`: the stencil values written, `source`'s width ×
+    /// height row by row from the bottom, in place of the window's (GL writes drawn stencil
+    /// indices straight into the stencil buffer, as a stencil copy does, §4.3.3).
+    pub stencil_values: Option<Arc<Vec<u8>>>,
     /// The raster position's window depth: every fragment's depth in a colour copy.
     pub depth: f32,
     /// The raster colour: every fragment's colour in a depth copy.
@@ -135,6 +139,33 @@ impl Gl {
             color_transfer,
             depth_transfer: self.depth_transfer(),
             state: self.window_state(),
+            stencil_values: None,
+        };
+        self.frame.pixel_copies.push(copy);
+        self.frame.commands.push(Command::CopyPixels(self.frame.pixel_copies.len() - 1));
+    }
+
+    /// `glDrawPixels` of stencil indices once unpacked: each index truncated to its low 8 bits
+    /// into the stencil buffer from the raster position on, zoomed, under the scissor and the
+    /// stencil write mask, as a stencil copy is executed (the depth and stencil tests do not
+    /// apply, GL 1.1 §4.3.3). As Mesa 22.3 (measured, `tests/it/pixel_properties.rs`), the
+    /// index shift and offset and `GL_MAP_STENCIL`, which GL 1.1 §3.6.3 applies, are not.
+    pub(crate) fn draw_stencil(&mut self, (width, height): (GLsizei, GLsizei), indices: &[[f32; 4]]) {
+        let low_bits = |index: f32| if index.is_finite() { (index.trunc() as i64 & 0xFF) as u8 } else { 0 };
+        let values: Vec<u8> = indices.iter().map(|c| low_bits(c[0])).collect();
+        let [xr, yr, depth, _] = self.raster_pos.window;
+        let copy = PixelCopy {
+            source: [0, 0, width, height],
+            origin: [xr.round() as i32, yr.round() as i32],
+            zoom: self.zoom(),
+            buffer: GL_STENCIL,
+            depth,
+            color: self.raster_pos.color.map(|c| c.clamp(0.0, 1.0)),
+            blit: false,
+            color_transfer: None,
+            depth_transfer: self.depth_transfer(),
+            state: self.window_state(),
+            stencil_values: Some(Arc::new(values)),
         };
         self.frame.pixel_copies.push(copy);
         self.frame.commands.push(Command::CopyPixels(self.frame.pixel_copies.len() - 1));
@@ -142,7 +173,7 @@ impl Gl {
 
     /// Whether the window has the buffer `glCopyPixels` names: colour and depth always (both
     /// rasterisers keep a depth buffer); no stencil buffer yet.
-    fn window_has(&self, type_: GLenum) -> bool {
+    pub(crate) fn window_has(&self, type_: GLenum) -> bool {
         match type_ {
             GL_COLOR | GL_DEPTH => true,
             GL_STENCIL => self.buffer_config().stencil_bits > 0,
@@ -178,6 +209,7 @@ mod tests {
             depth_transfer: DepthTransfer { scale: 1.0, bias: 0.0 },
             state: 0,
             blit: buffer == GL_COLOR,
+            stencil_values: None,
         }
     }
 

@@ -14,13 +14,14 @@ use super::pixels::PixelStore;
 use super::types::*;
 
 /// Elements per pixel of a `glDrawPixels`/`glTexImage` format, `None` for one GL 1.1 does not
-/// have (`GL_BGR` and `GL_BGRA` of GL 1.2 included, as Mesa takes them).
+/// have (`GL_BGR` and `GL_BGRA` of GL 1.2 and `GL_RG` of GL 3.0 included, as Mesa's
+/// compatibility contexts take them).
 #[must_use]
 pub(crate) fn format_components(format: GLenum) -> Option<usize> {
     match format {
         GL_COLOR_INDEX | GL_STENCIL_INDEX | GL_DEPTH_COMPONENT => Some(1),
         GL_RED | GL_GREEN | GL_BLUE | GL_ALPHA | GL_LUMINANCE => Some(1),
-        GL_LUMINANCE_ALPHA => Some(2),
+        GL_LUMINANCE_ALPHA | GL_RG => Some(2),
         GL_RGB | GL_BGR => Some(3),
         GL_RGBA | GL_BGRA => Some(4),
         _ => None,
@@ -118,7 +119,13 @@ fn element(type_: GLenum, bytes: &[u8], swap: bool, index: bool) -> f32 {
     }
     let signed = |value: f64, max: f64| if index { value as f32 } else { (value / max).max(-1.0) as f32 };
     let unsigned = |value: f64, max: f64| if index { value as f32 } else { (value / max) as f32 };
+    // A 32-bit index keeps its low 24 bits, which an f32 holds exactly: every use of an index
+    // reads its low bits only (the power-of-two maps, the 8-bit stencil buffer), except a
+    // negative `GL_INDEX_SHIFT`, which would bring higher bits down (left out).
+    let index32 = |value: u32| (value & 0xFF_FFFF) as f32;
     match type_ {
+        GL_INT if index => index32(i32::from_ne_bytes(b) as u32),
+        GL_UNSIGNED_INT if index => index32(u32::from_ne_bytes(b)),
         GL_BYTE => signed(f64::from(b[0] as i8), 127.0),
         GL_UNSIGNED_BYTE => unsigned(f64::from(b[0]), 255.0),
         GL_SHORT => signed(f64::from(i16::from_ne_bytes([b[0], b[1]])), 32767.0),
@@ -141,6 +148,7 @@ pub(crate) fn to_rgba(format: GLenum, c: &[f32]) -> [f32; 4] {
         GL_ALPHA => [0.0, 0.0, 0.0, c[0]],
         GL_LUMINANCE => [c[0], c[0], c[0], 1.0],
         GL_LUMINANCE_ALPHA => [c[0], c[0], c[0], c[1]],
+        GL_RG => [c[0], c[1], 0.0, 1.0],
         GL_RGB => [c[0], c[1], c[2], 1.0],
         GL_BGR => [c[2], c[1], c[0], 1.0],
         GL_BGRA => [c[2], c[1], c[0], c[3]],
@@ -282,9 +290,10 @@ mod tests {
     #[test]
     fn indices_stay_integers_and_bitmaps_read_bits() {
         let store = PixelStore { alignment: 1, ..PixelStore::default() };
-        let ints: Vec<u8> = [-3i32, 70000].iter().flat_map(|s| s.to_ne_bytes()).collect();
-        let rgba = unpack_image(store, (2, 1), GL_COLOR_INDEX, GL_INT, &ints).unwrap();
-        assert_eq!([rgba[0][0], rgba[1][0]], [-3.0, 70000.0]);
+        let ints: Vec<u8> = [-3i32, 70000, 0x7654_3210].iter().flat_map(|s| s.to_ne_bytes()).collect();
+        let rgba = unpack_image(store, (3, 1), GL_COLOR_INDEX, GL_INT, &ints).unwrap();
+        // 32-bit indices keep their low 24 bits exactly (-3 is 0xFFFFFD).
+        assert_eq!([rgba[0][0], rgba[1][0], rgba[2][0]], [16_777_213.0, 70000.0, 5_517_840.0]);
         // 0x8f: bits 1000 1111, most significant first.
         let bits = unpack_image(store, (8, 1), GL_COLOR_INDEX, GL_BITMAP, &[0x8f]).unwrap();
         let reds: Vec<f32> = bits.iter().map(|p| p[0]).collect();

@@ -182,6 +182,81 @@ fn a_copy_reads_what_was_drawn_before_it_and_not_after() {
     assert_eq!(window.color_at(0, 0), Some([0.0, 0.0, 1.0, 1.0]));
 }
 
+/// `glDrawPixels(GL_STENCIL_INDEX)` as Mesa 22.3 on llvmpipe does it, measured with an OSMesa
+/// program (8 × 8, 8 stencil bits) making these calls and reading the stencil buffer back: the
+/// low 8 bits of each index, truncated (−1 → 255, 1000 → 232, 300.0 → 44); the write mask and
+/// the scissor apply, the stencil and depth tests do not, and neither do the index offset, the
+/// index shift or `GL_MAP_STENCIL`. The expected buffer is Mesa's, but for two pixels of the
+/// zoomed draw (2 × 1.5 at (1, 4)): Mesa's middle row takes its right half from the image's
+/// first row and its left half from the second, where gleval, as for a zoomed colour image and
+/// as Mesa's own stencil copy, takes both from the second (not reproduced: marked below).
+#[test]
+fn stencil_draws_are_mesas() {
+    let mut gl = Gl::new(8, 8);
+    gl.matrix_mode(GL_PROJECTION);
+    gl.load_identity();
+    gl.ortho(0.0, 8.0, 0.0, 8.0, -1.0, 1.0);
+    gl.matrix_mode(GL_MODELVIEW);
+    gl.clear_stencil(0);
+    gl.clear(GL_STENCIL_BUFFER_BIT);
+    gl.pixel_storei(GL_UNPACK_ALIGNMENT, 1);
+    let v = [1u8, 2, 3, 250];
+    let draw = |gl: &mut Gl, x: i32, y: i32| {
+        gl.raster_pos2i(x, y);
+        gl.draw_pixels(2, 2, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, &v);
+    };
+    draw(&mut gl, 0, 0);
+    gl.pixel_transferi(GL_INDEX_OFFSET, 3);
+    draw(&mut gl, 2, 0);
+    gl.pixel_transferi(GL_INDEX_OFFSET, 0);
+    gl.pixel_transferi(GL_INDEX_SHIFT, 1);
+    draw(&mut gl, 4, 0);
+    gl.pixel_transferi(GL_INDEX_SHIFT, 0);
+    gl.pixel_mapuiv(GL_PIXEL_MAP_S_TO_S, 2, &[7, 8]);
+    gl.pixel_transferi(GL_MAP_STENCIL, 1);
+    draw(&mut gl, 6, 0);
+    gl.pixel_transferi(GL_MAP_STENCIL, 0);
+    gl.stencil_mask(3);
+    draw(&mut gl, 0, 2);
+    gl.stencil_mask(0xFF);
+    gl.enable(GL_STENCIL_TEST);
+    gl.stencil_func(GL_NEVER, 0, 0xFF);
+    gl.enable(GL_DEPTH_TEST);
+    gl.depth_func(GL_NEVER);
+    draw(&mut gl, 2, 2);
+    gl.disable(GL_STENCIL_TEST);
+    gl.disable(GL_DEPTH_TEST);
+    gl.enable(GL_SCISSOR_TEST);
+    gl.scissor(0, 0, 5, 8);
+    draw(&mut gl, 4, 2);
+    gl.disable(GL_SCISSOR_TEST);
+    gl.pixel_zoom(2.0, 1.5);
+    draw(&mut gl, 1, 4);
+    gl.pixel_zoom(1.0, 1.0);
+    let shorts: Vec<u8> = [-1i16, 256, 257, 1000].iter().flat_map(|s| s.to_ne_bytes()).collect();
+    gl.raster_pos2i(6, 4);
+    gl.draw_pixels(2, 2, GL_STENCIL_INDEX, GL_SHORT, &shorts);
+    let floats: Vec<u8> = [1.7f32, 2.2, -1.0, 300.0].iter().flat_map(|f| f.to_ne_bytes()).collect();
+    gl.raster_pos2i(6, 6);
+    gl.draw_pixels(2, 2, GL_STENCIL_INDEX, GL_FLOAT, &floats);
+    assert_eq!(gl.get_error(), GL_NO_ERROR);
+    let mut canvas = gleval::render::soft::Canvas::new(8, 8);
+    canvas.draw_frame(gl.frame());
+    // Rows top to bottom, as Mesa's program printed them.
+    #[rustfmt::skip]
+    let mesa = [
+        0, 0, 0, 0, 0, 0, 255, 44,
+        0, 3, 3, 250, 250, 0, 1, 2,
+        0, 3, 3, 250, 250, 0, 1, 232, // Mesa: 0, 3, 3, 2, 2, 0, 1, 232
+        0, 1, 1, 2, 2, 0, 255, 0,
+        3, 2, 3, 250, 3, 0, 0, 0,
+        1, 2, 1, 2, 1, 0, 0, 0,
+        3, 250, 3, 250, 3, 250, 3, 250,
+        1, 2, 1, 2, 1, 2, 1, 2,
+    ];
+    assert_eq!(canvas.stencil().to_vec(), mesa);
+}
+
 /// `glCopyPixels(GL_STENCIL)` as Mesa 22.3 on llvmpipe does it, measured with an OSMesa
 /// program (8 × 8, 8 stencil bits) making these calls and reading the stencil buffer back:
 /// the write mask and the scissor box apply, the stencil and depth tests and the index shift

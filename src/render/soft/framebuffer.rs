@@ -145,8 +145,13 @@ impl Framebuffer {
             let (px, py) = (i64::from(sx) + i as i64, i64::from(sy) + j as i64);
             let top = self.height - 1 - y;
             let in_rect = (rect[0]..rect[2]).contains(&x) && (rect[1]..rect[3]).contains(&top);
-            if in_rect && inside(px, py) {
-                writes.push((index(i64::from(x), i64::from(y)), self.stencil[index(px, py)]));
+            let value = match &copy.stencil_values {
+                // glDrawPixels' values: the whole image, wherever it came from.
+                Some(values) => values.get(j * w + i).copied(),
+                None => inside(px, py).then(|| self.stencil[index(px, py)]),
+            };
+            if let (true, Some(value)) = (in_rect, value) {
+                writes.push((index(i64::from(x), i64::from(y)), value));
             }
         }
         let mask = write_mask as u8;
