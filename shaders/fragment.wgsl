@@ -7,7 +7,8 @@
 struct Fragment {
     // 0 no texture, 1 MODULATE, 2 DECAL, 3 BLEND, 4 REPLACE, 5 ADD.
     mode: u32,
-    // The base internal format: 0 ALPHA, 1 LUMINANCE, 2 LUMINANCE_ALPHA, 3 RGB, 4 RGBA.
+    // The base internal format: 0 ALPHA, 1 LUMINANCE, 2 LUMINANCE_ALPHA, 3 RGB, 4 RGBA,
+    // 5 INTENSITY.
     format: u32,
     // GL_CLAMP in s and t: 0 not, 1 with nearest filtering, 2 with linear filtering. The
     // coordinate is clamped to [0, 1] before filtering (GL 1.1 §3.8.6), so linear filtering at
@@ -110,10 +111,12 @@ fn alpha_passes(a: f32) -> bool {
 // GL's texture functions: Cf, Af the fragment's colour; Ct, At the texture's by base format.
 fn apply_env(cf: vec4<f32>, texel: vec4<f32>) -> vec4<f32> {
     let has_rgb = env.format != 0u;
-    let has_alpha = env.format == 0u || env.format == 2u || env.format == 4u;
-    let luminance = env.format == 1u || env.format == 2u;
+    let intensity = env.format == 5u;
+    let has_alpha = env.format == 0u || env.format == 2u || env.format == 4u || intensity;
+    let luminance = env.format == 1u || env.format == 2u || intensity;
     let ct = select(texel.rgb, vec3<f32>(texel.r), luminance);
-    let at = texel.a;
+    // An intensity texel is I in all four components (GL 1.1 table 3.15).
+    let at = select(texel.a, texel.r, intensity);
     var c = cf.rgb;
     var a = cf.a;
     switch env.mode {
@@ -127,7 +130,7 @@ fn apply_env(cf: vec4<f32>, texel: vec4<f32>) -> vec4<f32> {
         }
         case 3u: {
             if has_rgb { c = mix(cf.rgb, env.color.rgb, ct); }
-            if has_alpha { a = cf.a * at; }
+            if has_alpha { a = select(cf.a * at, mix(cf.a, env.color.a, at), intensity); }
         }
         case 4u: {
             if has_rgb { c = ct; }
@@ -135,7 +138,7 @@ fn apply_env(cf: vec4<f32>, texel: vec4<f32>) -> vec4<f32> {
         }
         default: {
             if has_rgb { c = min(cf.rgb + ct, vec3<f32>(1.0)); }
-            if has_alpha { a = cf.a * at; }
+            if has_alpha { a = select(cf.a * at, min(cf.a + at, 1.0), intensity); }
         }
     }
     return vec4<f32>(c, a);

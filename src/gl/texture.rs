@@ -46,11 +46,20 @@ pub struct TexParams {
     pub wrap_s: GLenum,
     /// `GL_TEXTURE_WRAP_T`.
     pub wrap_t: GLenum,
+    /// `GL_TEXTURE_WRAP_R` (GL 1.2's third coordinate): kept and answered, as Mesa does for
+    /// every target, and unused by 1D and 2D textures.
+    pub wrap_r: GLenum,
 }
 
 impl Default for TexParams {
     fn default() -> Self {
-        Self { min_filter: GL_NEAREST_MIPMAP_LINEAR, mag_filter: GL_LINEAR, wrap_s: GL_REPEAT, wrap_t: GL_REPEAT }
+        Self {
+            min_filter: GL_NEAREST_MIPMAP_LINEAR,
+            mag_filter: GL_LINEAR,
+            wrap_s: GL_REPEAT,
+            wrap_t: GL_REPEAT,
+            wrap_r: GL_REPEAT,
+        }
     }
 }
 
@@ -75,7 +84,7 @@ pub struct BoundTexture {
     pub key: u64,
     /// Level 0 and, when the minification filter uses them, every further level down to 1×1.
     pub levels: Arc<Vec<TexLevel>>,
-    /// `GL_ALPHA`, `GL_LUMINANCE`, `GL_LUMINANCE_ALPHA`, `GL_RGB` or `GL_RGBA`.
+    /// `GL_ALPHA`, `GL_LUMINANCE`, `GL_LUMINANCE_ALPHA`, `GL_INTENSITY`, `GL_RGB` or `GL_RGBA`.
     pub base_format: GLenum,
     /// Filters and wrap modes.
     pub params: TexParams,
@@ -220,7 +229,8 @@ fn fits_level(level: GLint, width: GLsizei, height: GLsizei) -> bool {
 pub(super) fn base_format(internal: GLint) -> Option<GLenum> {
     // GL 1.1 table 3.15's sized formats name their base format; gleval keeps each channel in
     // 8 bits whatever size is asked (GL allows more or fewer, §3.8.1), and says so through
-    // `glGetTexLevelParameter`. The intensity formats are not taken.
+    // `glGetTexLevelParameter`. An intensity level keeps I in its red component (Mesa: from
+    // an RGBA image, I is R).
     match internal as GLenum {
         1 | GL_LUMINANCE | GL_LUMINANCE4 | GL_LUMINANCE8 | GL_LUMINANCE12 | GL_LUMINANCE16 => Some(GL_LUMINANCE),
         2
@@ -236,6 +246,7 @@ pub(super) fn base_format(internal: GLint) -> Option<GLenum> {
             Some(GL_RGBA)
         }
         GL_ALPHA | GL_ALPHA4 | GL_ALPHA8 | GL_ALPHA12 | GL_ALPHA16 => Some(GL_ALPHA),
+        GL_INTENSITY | GL_INTENSITY4 | GL_INTENSITY8 | GL_INTENSITY12 | GL_INTENSITY16 => Some(GL_INTENSITY),
         _ => None,
     }
 }
@@ -533,7 +544,7 @@ impl Gl {
     }
 
     /// `glTexParameteri` for `GL_TEXTURE_MIN_FILTER`, `GL_TEXTURE_MAG_FILTER`,
-    /// `GL_TEXTURE_WRAP_S` and `GL_TEXTURE_WRAP_T` of the bound object. Another target or
+    /// `GL_TEXTURE_WRAP_S`, `GL_TEXTURE_WRAP_T` and `GL_TEXTURE_WRAP_R` of the bound object. Another target or
     /// name, or a value the name does not take → `GL_INVALID_ENUM`.
     pub fn tex_parameteri(&mut self, target: GLenum, pname: GLenum, param: GLint) {
         if pname == GL_TEXTURE_PRIORITY {
@@ -549,7 +560,9 @@ impl Gl {
         let ok = match pname {
             GL_TEXTURE_MIN_FILTER => value == GL_NEAREST || value == GL_LINEAR || mipmap_filters.contains(&value),
             GL_TEXTURE_MAG_FILTER => value == GL_NEAREST || value == GL_LINEAR,
-            GL_TEXTURE_WRAP_S | GL_TEXTURE_WRAP_T => matches!(value, GL_REPEAT | GL_CLAMP | GL_CLAMP_TO_EDGE),
+            GL_TEXTURE_WRAP_S | GL_TEXTURE_WRAP_T | GL_TEXTURE_WRAP_R => {
+                matches!(value, GL_REPEAT | GL_CLAMP | GL_CLAMP_TO_EDGE)
+            }
             _ => false,
         };
         if !ok {
@@ -560,7 +573,8 @@ impl Gl {
             GL_TEXTURE_MIN_FILTER => &mut object.params.min_filter,
             GL_TEXTURE_MAG_FILTER => &mut object.params.mag_filter,
             GL_TEXTURE_WRAP_S => &mut object.params.wrap_s,
-            _ => &mut object.params.wrap_t,
+            GL_TEXTURE_WRAP_T => &mut object.params.wrap_t,
+            _ => &mut object.params.wrap_r,
         };
         *field = value;
         // The complete chain depends on whether the filter reads mipmaps.

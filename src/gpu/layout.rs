@@ -158,7 +158,8 @@ pub(crate) struct GpuDraw {
 pub(crate) struct GpuFragment {
     /// 0 none, 1 `GL_MODULATE`, 2 `GL_DECAL`, 3 `GL_BLEND`, 4 `GL_REPLACE`, 5 `GL_ADD`.
     pub mode: u32,
-    /// 0 `GL_ALPHA`, 1 `GL_LUMINANCE`, 2 `GL_LUMINANCE_ALPHA`, 3 `GL_RGB`, 4 `GL_RGBA`.
+    /// 0 `GL_ALPHA`, 1 `GL_LUMINANCE`, 2 `GL_LUMINANCE_ALPHA`, 3 `GL_RGB`, 4 `GL_RGBA`,
+    /// 5 `GL_INTENSITY`.
     pub format: u32,
     /// `GL_CLAMP` in s: 0 not, 1 with nearest, 2 with linear filtering (the shader clamps the
     /// coordinate to [0, 1] and mixes in the border colour).

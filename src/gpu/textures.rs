@@ -53,6 +53,7 @@ impl GpuFragment {
             GL_LUMINANCE => 1,
             GL_LUMINANCE_ALPHA => 2,
             GL_RGB => 3,
+            GL_INTENSITY => 5,
             _ => 4,
         };
         let linear = texture.params.mag_filter == GL_LINEAR

@@ -97,3 +97,50 @@ fn the_cpu_rasteriser_draws_what_wgpu_draws() {
         panic!("{e}");
     }
 }
+
+/// An intensity texture under each texture function, drawn by both rasterisers, against what
+/// Mesa 22.3 (llvmpipe, OSMesa) drew for the same calls: I = 153/255 with the fragment colour
+/// (0.5, 0.25, 1, 0.5) and the environment colour (0.2, 0.4, 0.8, 0.1). Intensity is I in all
+/// four components; `GL_BLEND` blends alpha as colour, `GL_ADD` adds it, `GL_DECAL` leaves the
+/// fragment as it is (GL 1.1 tables 3.17 and 3.18).
+#[test]
+fn intensity_textures_are_mesas_on_both_rasterisers() {
+    let renderer = match Renderer::new() {
+        Ok(r) => Some(r),
+        Err(e) if std::env::var("GLEVAL_REQUIRE_ADAPTER").is_ok_and(|v| v == "1") => panic!("{e}"),
+        Err(_) => None,
+    };
+    let mut renderer = renderer;
+    let mesa = [
+        (GL_MODULATE, [76, 38, 153, 76]),
+        (GL_DECAL, [128, 64, 255, 128]),
+        (GL_BLEND, [82, 87, 224, 66]),
+        (GL_REPLACE, [153, 153, 153, 153]),
+        (GL_ADD, [255, 217, 255, 255]),
+    ];
+    for (mode, expected) in mesa {
+        let mut gl = Gl::new(4, 4);
+        gl.tex_image_2d(GL_TEXTURE_2D, 0, GL_INTENSITY as GLint, 1, 1, 0, GL_LUMINANCE, GL_UNSIGNED_BYTE, &[153u8]);
+        gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST as GLint);
+        gl.enable(GL_TEXTURE_2D);
+        gl.tex_envfv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, &[0.2, 0.4, 0.8, 0.1]);
+        gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, mode as GLint);
+        gl.color4f(0.5, 0.25, 1.0, 0.5);
+        gl.begin(GL_QUADS);
+        gl.tex_coord2f(0.0, 0.0);
+        for (x, y) in [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)] {
+            gl.vertex2f(x, y);
+        }
+        gl.end();
+        assert_eq!(gl.get_error(), GL_NO_ERROR);
+        let frame = gl.take_frame();
+        let pixel = |pixels: &[u8]| -> [u8; 4] { pixels[(4 + 1) * 4..][..4].try_into().unwrap() };
+        let close = |got: [u8; 4]| got.iter().zip(expected).all(|(&g, e)| g.abs_diff(e) <= 1);
+        let soft = soft::render_frame(&frame, 4, 4);
+        assert!(close(pixel(&soft.pixels)), "CPU, mode {mode:#x}: {:?}, Mesa {expected:?}", pixel(&soft.pixels));
+        if let Some(renderer) = renderer.as_mut() {
+            let wgpu = renderer.render_frame(&frame, 4, 4).expect("wgpu renders");
+            assert!(close(pixel(&wgpu.pixels)), "wgpu, mode {mode:#x}: {:?}, Mesa {expected:?}", pixel(&wgpu.pixels));
+        }
+    }
+}

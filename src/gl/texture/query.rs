@@ -60,6 +60,7 @@ fn component_sizes(base: GLenum) -> [GLint; 6] {
         GL_ALPHA => [0, 0, 0, 8, 0, 0],
         GL_LUMINANCE => [0, 0, 0, 0, 8, 0],
         GL_LUMINANCE_ALPHA => [0, 0, 0, 8, 8, 0],
+        GL_INTENSITY => [0, 0, 0, 0, 0, 8],
         _ => [0; 6],
     }
 }
@@ -70,7 +71,8 @@ fn texel_rgba(base: GLenum, t: [u8; 4]) -> [f32; 4] {
     // Mesa multiplies by 1/255 in float (50 → 0x3E48C8CA, where 50/255 rounds to ...C9).
     let [r, g, b, a] = t.map(|c| f32::from(c) * (1.0 / 255.0));
     match base {
-        GL_LUMINANCE => [r, 0.0, 0.0, 1.0],
+        // Intensity as Mesa 22.3 returns it (measured): I in R, alpha 1.
+        GL_LUMINANCE | GL_INTENSITY => [r, 0.0, 0.0, 1.0],
         GL_LUMINANCE_ALPHA => [r, 0.0, 0.0, a],
         GL_ALPHA => [0.0, 0.0, 0.0, a],
         GL_RGB => [r, g, b, 1.0],
@@ -163,6 +165,7 @@ impl Gl {
             GL_TEXTURE_MAG_FILTER => vec![p.mag_filter as f32],
             GL_TEXTURE_WRAP_S => vec![p.wrap_s as f32],
             GL_TEXTURE_WRAP_T => vec![p.wrap_t as f32],
+            GL_TEXTURE_WRAP_R => vec![p.wrap_r as f32],
             GL_TEXTURE_BORDER_COLOR => object.extra.border_color.map(|c| c.clamp(0.0, 1.0)).to_vec(),
             GL_TEXTURE_PRIORITY => vec![object.extra.priority],
             GL_TEXTURE_RESIDENT => vec![1.0],

@@ -112,10 +112,12 @@ fn texel(texture: &BoundTexture, sampler: &Sampler<'_>, tex: [f32; 4], slope: &T
 fn apply_env(texture: &BoundTexture, cf: [f32; 4], texel: [f32; 4]) -> [f32; 4] {
     let format = texture.base_format;
     let has_rgb = format != GL_ALPHA;
-    let has_alpha = matches!(format, GL_ALPHA | GL_LUMINANCE_ALPHA | GL_RGBA);
-    let luminance = matches!(format, GL_LUMINANCE | GL_LUMINANCE_ALPHA);
+    let intensity = format == GL_INTENSITY;
+    let has_alpha = matches!(format, GL_ALPHA | GL_LUMINANCE_ALPHA | GL_RGBA | GL_INTENSITY);
+    let luminance = matches!(format, GL_LUMINANCE | GL_LUMINANCE_ALPHA | GL_INTENSITY);
     let ct = if luminance { [texel[0]; 3] } else { [texel[0], texel[1], texel[2]] };
-    let at = texel[3];
+    // An intensity texel is I in all four components (GL 1.1 table 3.15).
+    let at = if intensity { texel[0] } else { texel[3] };
     let mut c = [cf[0], cf[1], cf[2]];
     let mut a = cf[3];
     let env = texture.env_color;
@@ -141,7 +143,8 @@ fn apply_env(texture: &BoundTexture, cf: [f32; 4], texel: [f32; 4]) -> [f32; 4] 
                 c = std::array::from_fn(|k| cf[k] + (env[k] - cf[k]) * ct[k]);
             }
             if has_alpha {
-                a = cf[3] * at;
+                // Intensity blends its alpha as its colour (GL 1.1 table 3.18).
+                a = if intensity { cf[3] + (env[3] - cf[3]) * at } else { cf[3] * at };
             }
         }
         GL_REPLACE => {
@@ -157,7 +160,7 @@ fn apply_env(texture: &BoundTexture, cf: [f32; 4], texel: [f32; 4]) -> [f32; 4] 
                 c = std::array::from_fn(|k| (cf[k] + ct[k]).min(1.0));
             }
             if has_alpha {
-                a = cf[3] * at;
+                a = if intensity { (cf[3] + at).min(1.0) } else { cf[3] * at };
             }
         }
     }
