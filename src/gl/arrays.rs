@@ -577,16 +577,38 @@ impl Gl {
     /// context's; the C ABI answers them with the caller's). Another name → `GL_INVALID_ENUM`;
     /// inside `begin`/`end` → `GL_INVALID_OPERATION`.
     pub fn get_pointerv(&mut self, pname: GLenum) -> Option<ClientPointer> {
-        if self.reject_inside_begin_end() {
+        if let Some(error) = self.get_pointerv_error(pname) {
+            self.set_error(error);
             return None;
         }
-        if let Some(w) = Which::ALL.into_iter().find(|w| w.pointer_name() == pname) {
-            return self.arrays.get(w).pointer.clone();
+        let which = Which::ALL.into_iter().find(|w| w.pointer_name() == pname)?;
+        self.arrays.get(which).pointer.clone()
+    }
+
+    /// The error `glGetPointerv(pname)` raises now (inside `begin`/`end`, then an unknown
+    /// name), `None` when it writes its answer: what a binding writing the caller's pointer
+    /// asks before it does.
+    #[must_use]
+    pub fn get_pointerv_error(&self, pname: GLenum) -> Option<GLenum> {
+        let known = Which::ALL.into_iter().any(|w| w.pointer_name() == pname)
+            || matches!(pname, GL_FEEDBACK_BUFFER_POINTER | GL_SELECTION_BUFFER_POINTER);
+        if self.inside_begin_end() {
+            Some(GL_INVALID_OPERATION)
+        } else if !known {
+            Some(GL_INVALID_ENUM)
+        } else {
+            None
         }
-        if !matches!(pname, GL_FEEDBACK_BUFFER_POINTER | GL_SELECTION_BUFFER_POINTER) {
-            self.set_error(GL_INVALID_ENUM);
+    }
+
+    /// Bytes `glDrawElements` reads for `count` indices of `type_`; `None` where it reads none
+    /// (a negative count, a type other than `GL_UNSIGNED_BYTE`, `_SHORT`, `_INT`).
+    #[must_use]
+    pub fn draw_elements_len(count: GLsizei, type_: GLenum) -> Option<usize> {
+        if !matches!(type_, GL_UNSIGNED_BYTE | GL_UNSIGNED_SHORT | GL_UNSIGNED_INT) {
+            return None;
         }
-        None
+        usize::try_from(count).ok()?.checked_mul(type_size(type_))
     }
 
     /// `glPushClientAttrib`'s vertex-array half: saves the arrays when `mask` asks.

@@ -119,4 +119,41 @@ mod tests {
         assert_eq!(Gl::call_lists_len(3, GL_3_BYTES), Some(9));
         assert_eq!(Gl::call_lists_len(-1, GL_BYTE), None);
     }
+
+    #[test]
+    fn the_acceptance_answers_are_the_calls_own() {
+        // What a binding asks before it keeps a buffer is the error the call then raises.
+        let mut gl = Gl::new(4, 4);
+        let mut check = |gl: &mut Gl| {
+            for size in [-1, 0, 8] {
+                let asked = gl.select_buffer_error(size);
+                gl.select_buffer(size);
+                assert_eq!(asked.unwrap_or(GL_NO_ERROR), gl.get_error(), "select {size}");
+                for kind in [GL_2D, GL_4D_COLOR_TEXTURE, 0x1234] {
+                    let asked = gl.feedback_buffer_error(size, kind);
+                    gl.feedback_buffer(size, kind);
+                    assert_eq!(asked.unwrap_or(GL_NO_ERROR), gl.get_error(), "feedback {size} {kind:#x}");
+                }
+            }
+            for pname in [GL_VERTEX_ARRAY_POINTER, GL_SELECTION_BUFFER_POINTER, 0x1234] {
+                let asked = gl.get_pointerv_error(pname);
+                gl.get_pointerv(pname);
+                assert_eq!(asked.unwrap_or(GL_NO_ERROR), gl.get_error(), "pointer {pname:#x}");
+            }
+        };
+        check(&mut gl);
+        gl.feedback_buffer(8, GL_2D);
+        gl.render_mode(GL_FEEDBACK);
+        check(&mut gl);
+        gl.render_mode(GL_RENDER);
+        // Inside begin/end every call is refused (and glGetError answers only after glEnd).
+        gl.begin(GL_POINTS);
+        assert_eq!(gl.select_buffer_error(8), Some(GL_INVALID_OPERATION));
+        assert_eq!(gl.feedback_buffer_error(8, GL_2D), Some(GL_INVALID_OPERATION));
+        assert_eq!(gl.get_pointerv_error(GL_VERTEX_ARRAY_POINTER), Some(GL_INVALID_OPERATION));
+        gl.end();
+        assert_eq!(Gl::draw_elements_len(3, GL_UNSIGNED_SHORT), Some(6));
+        assert_eq!(Gl::draw_elements_len(3, GL_FLOAT), None);
+        assert_eq!(Gl::draw_elements_len(-3, GL_UNSIGNED_INT), None);
+    }
 }

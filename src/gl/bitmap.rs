@@ -114,18 +114,18 @@ impl Gl {
     }
 
     /// `glDrawPixels`: pixel (i, j) of the image, read with the unpack modes from any GL 1.1
-    /// type ([`super::pixel_unpack`]), goes through the pixel transfer (`glPixelTransfer`,
-    /// `glPixelMap`) and becomes the fragments that `glPixelZoom` gives it from window
-    /// (round(xr), round(yr)) on (Mesa rounds; [`super::pixel_zoom`]): the colour formats (with
-    /// `GL_BGR`, `GL_BGRA`) at the raster depth; colour indices (with `GL_BITMAP` too) through
-    /// the maps, as an RGBA context draws them; `GL_DEPTH_COMPONENT` as fragments of the
-    /// raster colour at the image's depths; `GL_STENCIL_INDEX` into the stencil buffer
-    /// ([`Gl::draw_stencil`]). Nothing is drawn when the raster position is invalid. Errors, in Mesa's order: inside `begin`/`end` → `GL_INVALID_OPERATION`; a
-    /// negative size → `GL_INVALID_VALUE`; an unknown format or type → `GL_INVALID_ENUM`; a
-    /// packed type the format does not fit, or `GL_STENCIL_INDEX` without a stencil buffer →
-    /// `GL_INVALID_OPERATION`;
-    /// `pixels` shorter than the image → `GL_INVALID_VALUE`. The packed types of GL 1.2 are
-    /// read too.
+    /// type or GL 1.2 packed type (`gl::pixel_unpack`), goes through the pixel transfer
+    /// (`glPixelTransfer`, `glPixelMap`) and becomes the fragments that `glPixelZoom` gives it
+    /// from window (round(xr), round(yr)) on (Mesa rounds; [`super::pixel_zoom`]): the colour
+    /// formats (with `GL_BGR`, `GL_BGRA`) at the raster depth; colour indices (with
+    /// `GL_BITMAP` too) through the maps, as an RGBA context draws them; `GL_DEPTH_COMPONENT`
+    /// as fragments of the raster colour at the image's depths; `GL_STENCIL_INDEX` into the
+    /// stencil buffer (as a stencil `glCopyPixels` writes). Nothing is drawn when the raster
+    /// position is invalid. Errors, in Mesa's order: inside `begin`/`end` →
+    /// `GL_INVALID_OPERATION`; a negative size → `GL_INVALID_VALUE`; an unknown format or type
+    /// → `GL_INVALID_ENUM`; a packed type the format does not fit, or `GL_STENCIL_INDEX`
+    /// without a stencil buffer → `GL_INVALID_OPERATION`; `pixels` shorter than the image →
+    /// `GL_INVALID_VALUE`.
     pub fn draw_pixels(&mut self, width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum, pixels: &[u8]) {
         let store = self.unpack_store();
         let unpacked = || unpack_image(store, (width, height), format, type_, pixels);

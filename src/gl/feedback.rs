@@ -110,17 +110,26 @@ impl Gl {
     /// order: inside `begin`/`end` or in feedback mode (`GL_INVALID_OPERATION`), a negative size
     /// (`GL_INVALID_VALUE`), an unknown type (`GL_INVALID_ENUM`). Not compiled into lists.
     pub fn feedback_buffer(&mut self, size: GLsizei, type_: GLenum) {
-        if self.reject_inside_begin_end() {
-            return;
+        if let Some(error) = self.feedback_buffer_error(size, type_) {
+            return self.set_error(error);
         }
-        if self.feedback.mode == GL_FEEDBACK {
-            return self.set_error(GL_INVALID_OPERATION);
+        (self.feedback.size, self.feedback.kind) = (size as usize, type_);
+    }
+
+    /// The error `glFeedbackBuffer(size, type)` raises now, in Mesa's order (inside
+    /// `begin`/`end`, feedback mode, a negative size, an unknown type), `None` when it takes
+    /// the buffer: what a binding that keeps the caller's buffer asks before it does.
+    #[must_use]
+    pub fn feedback_buffer_error(&self, size: GLsizei, type_: GLenum) -> Option<GLenum> {
+        if self.inside_begin_end() || self.feedback.mode == GL_FEEDBACK {
+            Some(GL_INVALID_OPERATION)
+        } else if size < 0 {
+            Some(GL_INVALID_VALUE)
+        } else if layout(type_).is_none() {
+            Some(GL_INVALID_ENUM)
+        } else {
+            None
         }
-        let Ok(size) = usize::try_from(size) else { return self.set_error(GL_INVALID_VALUE) };
-        if layout(type_).is_none() {
-            return self.set_error(GL_INVALID_ENUM);
-        }
-        (self.feedback.size, self.feedback.kind) = (size, type_);
     }
 
     /// `glRenderMode(mode)`: `GL_RENDER` or `GL_FEEDBACK`. Leaving feedback mode returns the

@@ -79,6 +79,17 @@ impl Gl {
         self.touch_state();
     }
 
+    /// Values `glFogfv`/`glFogiv` read for `pname`: 4 for `GL_FOG_COLOR`, else 1 (the first
+    /// value is read before the name is checked, as Mesa reads it).
+    #[must_use]
+    pub fn fog_param_count(pname: GLenum) -> usize {
+        if pname == GL_FOG_COLOR {
+            4
+        } else {
+            1
+        }
+    }
+
     /// `glFogfv`: `GL_FOG_MODE` (`GL_LINEAR`, `GL_EXP`, `GL_EXP2`), `GL_FOG_DENSITY` (a
     /// negative one → `GL_INVALID_VALUE`), `GL_FOG_START`, `GL_FOG_END`, `GL_FOG_COLOR` (4
     /// values) or `GL_FOG_INDEX` (colour-index mode: kept, not drawn). Another name or mode →
@@ -87,8 +98,9 @@ impl Gl {
         if self.compiled(|| ListCommand::Fog(pname, params.to_vec())) || self.reject_inside_begin_end() {
             return;
         }
-        let needed = if pname == GL_FOG_COLOR { 4 } else { 1 };
-        let Some(values) = params.get(..needed) else { return self.set_error(GL_INVALID_VALUE) };
+        let Some(values) = params.get(..Self::fog_param_count(pname)) else {
+            return self.set_error(GL_INVALID_VALUE);
+        };
         let fog = &mut self.fragment_ops.fog;
         match pname {
             GL_FOG_MODE => match values[0] as GLenum {

@@ -122,6 +122,41 @@ fn vec4_from(p: &[f32]) -> Vec4 {
 }
 
 impl Gl {
+    /// Values `glLightfv`/`glLightiv` read and `glGetLight*v` write for `pname` (GL 1.1 table
+    /// 2.9): 4 for the colours and the position, 3 for the spot direction, 1 for the spot
+    /// exponent, cutoff and attenuations; `None` for a name lights do not have.
+    #[must_use]
+    pub fn light_param_count(pname: GLenum) -> Option<usize> {
+        match pname {
+            GL_AMBIENT | GL_DIFFUSE | GL_SPECULAR | GL_POSITION => Some(4),
+            GL_SPOT_DIRECTION => Some(3),
+            GL_SPOT_EXPONENT | GL_SPOT_CUTOFF | GL_CONSTANT_ATTENUATION..=GL_QUADRATIC_ATTENUATION => Some(1),
+            _ => None,
+        }
+    }
+
+    /// Values `glMaterialfv`/`glMaterialiv` read and `glGetMaterial*v` write for `pname` (GL
+    /// 1.1 table 2.8): 4 for the colours, 1 for the shininess; `None` for another name.
+    #[must_use]
+    pub fn material_param_count(pname: GLenum) -> Option<usize> {
+        match pname {
+            GL_AMBIENT | GL_DIFFUSE | GL_SPECULAR | GL_EMISSION | GL_AMBIENT_AND_DIFFUSE => Some(4),
+            GL_SHININESS => Some(1),
+            _ => None,
+        }
+    }
+
+    /// Values `glLightModelfv`/`glLightModeliv` read for `pname` (GL 1.1 table 2.10): 4 for
+    /// the ambient colour, 1 for the local viewer and two-sided flags; `None` for another name.
+    #[must_use]
+    pub fn light_model_param_count(pname: GLenum) -> Option<usize> {
+        match pname {
+            GL_LIGHT_MODEL_AMBIENT => Some(4),
+            GL_LIGHT_MODEL_LOCAL_VIEWER | GL_LIGHT_MODEL_TWO_SIDE => Some(1),
+            _ => None,
+        }
+    }
+
     /// `glLightfv`. Unknown light or name → `GL_INVALID_ENUM`; a spot exponent outside 0..=128,
     /// a cutoff outside 0..=90 other than 180, or a negative attenuation → `GL_INVALID_VALUE`.
     /// `params` needs 4 values for colours and positions, 3 for the spot direction, else 1.
@@ -135,12 +170,7 @@ impl Gl {
         let Some(index) = light.checked_sub(GL_LIGHT0).filter(|i| *i < 8).map(|i| i as usize) else {
             return self.set_error(GL_INVALID_ENUM);
         };
-        let needed = match pname {
-            GL_AMBIENT | GL_DIFFUSE | GL_SPECULAR | GL_POSITION => 4,
-            GL_SPOT_DIRECTION => 3,
-            GL_SPOT_EXPONENT | GL_SPOT_CUTOFF | GL_CONSTANT_ATTENUATION..=GL_QUADRATIC_ATTENUATION => 1,
-            _ => return self.set_error(GL_INVALID_ENUM),
-        };
+        let Some(needed) = Self::light_param_count(pname) else { return self.set_error(GL_INVALID_ENUM) };
         if params.len() < needed {
             return self.set_error(GL_INVALID_VALUE);
         }
@@ -191,11 +221,7 @@ impl Gl {
             GL_FRONT_AND_BACK => &[0, 1],
             _ => return self.set_error(GL_INVALID_ENUM),
         };
-        let needed = match pname {
-            GL_AMBIENT | GL_DIFFUSE | GL_SPECULAR | GL_EMISSION | GL_AMBIENT_AND_DIFFUSE => 4,
-            GL_SHININESS => 1,
-            _ => return self.set_error(GL_INVALID_ENUM),
-        };
+        let Some(needed) = Self::material_param_count(pname) else { return self.set_error(GL_INVALID_ENUM) };
         if params.len() < needed {
             return self.set_error(GL_INVALID_VALUE);
         }
@@ -237,11 +263,7 @@ impl Gl {
         if self.reject_inside_begin_end() {
             return;
         }
-        let needed = match pname {
-            GL_LIGHT_MODEL_AMBIENT => 4,
-            GL_LIGHT_MODEL_LOCAL_VIEWER | GL_LIGHT_MODEL_TWO_SIDE => 1,
-            _ => return self.set_error(GL_INVALID_ENUM),
-        };
+        let Some(needed) = Self::light_model_param_count(pname) else { return self.set_error(GL_INVALID_ENUM) };
         if params.len() < needed {
             return self.set_error(GL_INVALID_VALUE);
         }

@@ -205,9 +205,9 @@ impl Gl {
         {
             return;
         }
-        let Ok(size) = usize::try_from(mapsize) else { return self.set_error(GL_INVALID_VALUE) };
+        let Some(size) = Self::pixel_map_len(mapsize) else { return self.set_error(GL_INVALID_VALUE) };
         let power_of_two_needed = (GL_PIXEL_MAP_S_TO_S..=GL_PIXEL_MAP_I_TO_A).contains(&map);
-        if !(1..=MAX_PIXEL_MAP_TABLE).contains(&size) || (power_of_two_needed && !size.is_power_of_two()) {
+        if power_of_two_needed && !size.is_power_of_two() {
             return self.set_error(GL_INVALID_VALUE);
         }
         let Some(values) = values.get(..size) else { return self.set_error(GL_INVALID_VALUE) };
@@ -217,6 +217,13 @@ impl Gl {
             GL_PIXEL_MAP_I_TO_I => values.to_vec(),
             _ => values.iter().map(|v| v.clamp(0.0, 1.0)).collect(),
         };
+    }
+
+    /// Values `glPixelMap*` reads: `mapsize` when GL takes that size (1 to
+    /// `GL_MAX_PIXEL_MAP_TABLE`), `None` when it reads none.
+    #[must_use]
+    pub fn pixel_map_len(mapsize: GLsizei) -> Option<usize> {
+        usize::try_from(mapsize).ok().filter(|n| (1..=MAX_PIXEL_MAP_TABLE).contains(n))
     }
 
     /// `glPixelMapuiv`: as [`Gl::pixel_mapfv`]; the index maps (`I_TO_I`, `S_TO_S`) take the

@@ -88,18 +88,31 @@ impl Selection {
 }
 
 impl Gl {
+    /// The error `glSelectBuffer(size)` raises now, in Mesa's order (inside `begin`/`end`, a
+    /// negative size, selection mode), `None` when it takes the buffer: what a binding that
+    /// keeps the caller's buffer asks before it does.
+    #[must_use]
+    pub fn select_buffer_error(&self, size: GLsizei) -> Option<GLenum> {
+        if self.inside_begin_end() {
+            Some(GL_INVALID_OPERATION)
+        } else if size < 0 {
+            Some(GL_INVALID_VALUE)
+        } else if self.render_mode_value() == GL_SELECT {
+            Some(GL_INVALID_OPERATION)
+        } else {
+            None
+        }
+    }
+
     /// `glSelectBuffer(size, buffer)`: selection mode writes up to `size` values, read with
     /// [`Gl::select_values`]. Errors: a negative size (`GL_INVALID_VALUE`), in selection mode
     /// or inside `begin`/`end` (`GL_INVALID_OPERATION`). Not compiled into lists.
     pub fn select_buffer(&mut self, size: GLsizei) {
-        if self.reject_inside_begin_end() {
-            return;
-        }
-        let Ok(size) = usize::try_from(size) else { return self.set_error(GL_INVALID_VALUE) };
-        if self.render_mode_value() == GL_SELECT {
-            return self.set_error(GL_INVALID_OPERATION);
+        if let Some(error) = self.select_buffer_error(size) {
+            return self.set_error(error);
         }
         let s = &mut self.select;
+        let size = size as usize;
         (s.size, s.hit, s.wanted) = (size, None, 0);
         s.written.clear();
     }

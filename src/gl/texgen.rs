@@ -108,12 +108,24 @@ fn mode_allowed(index: usize, mode: GLenum) -> bool {
 }
 
 impl Gl {
+    /// Values `glTexGen*v` read and `glGetTexGen*v` write for `pname`: 1 for
+    /// `GL_TEXTURE_GEN_MODE`, 4 for the planes (and any other name, which is then refused).
+    #[must_use]
+    pub fn tex_gen_param_count(pname: GLenum) -> usize {
+        if pname == GL_TEXTURE_GEN_MODE {
+            1
+        } else {
+            4
+        }
+    }
+
     /// `glTexGenfv(coord, pname, params)`: `GL_TEXTURE_GEN_MODE` (the first value) or the
     /// `GL_OBJECT_PLANE` / `GL_EYE_PLANE` coefficients (four values; the eye plane is stored
     /// times the inverse of the current modelview matrix). A short slice → `GL_INVALID_VALUE`.
     pub fn tex_genfv(&mut self, coord: GLenum, pname: GLenum, params: &[GLfloat]) {
-        let needed = if pname == GL_TEXTURE_GEN_MODE { 1 } else { 4 };
-        let Some(values) = params.get(..needed) else { return self.set_error(GL_INVALID_VALUE) };
+        let Some(values) = params.get(..Self::tex_gen_param_count(pname)) else {
+            return self.set_error(GL_INVALID_VALUE);
+        };
         if self.compiled(|| ListCommand::TexGen(coord, pname, values.to_vec())) || self.reject_inside_begin_end() {
             return;
         }
@@ -194,7 +206,7 @@ impl Gl {
         if failed {
             return;
         }
-        let count = if pname == GL_TEXTURE_GEN_MODE { 1 } else { 4 };
+        let count = Self::tex_gen_param_count(pname);
         match params.get_mut(..count) {
             Some(out) => out.iter_mut().zip(values).for_each(|(o, v)| *o = super::light_query::c_int(v)),
             None => self.set_error(GL_INVALID_VALUE),
@@ -204,7 +216,7 @@ impl Gl {
     /// `glGetTexGendv`: as [`Gl::get_tex_genfv`], widened to doubles.
     pub fn get_tex_gendv(&mut self, coord: GLenum, pname: GLenum, params: &mut [GLdouble]) {
         let mut values = [0.0f32; 4];
-        let count = if pname == GL_TEXTURE_GEN_MODE { 1 } else { 4 };
+        let count = Self::tex_gen_param_count(pname);
         if params.len() < count {
             // Checked after the other arguments, as the float form checks it.
             self.get_tex_genfv(coord, pname, &mut values[..params.len().min(count)]);

@@ -38,6 +38,7 @@ pub use errors::glu_error_string;
 pub use model::callbacks::{NurbsCallback, UserData};
 pub use model::object::GLUnurbs;
 pub(crate) use model::object::NurbsObject;
+pub use model::targets::nurbs_point_components;
 pub use quadric::{GLUquadric, Quadric, QuadricSink};
 pub use strings::{glu_check_extension, glu_get_string};
 pub(crate) use tess::TessObject;

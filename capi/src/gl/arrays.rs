@@ -9,7 +9,7 @@ use crate::context::with_gl;
 use crate::memory::bytes;
 use gleval::gl::consts::*;
 use gleval::gl::types::*;
-use gleval::gl::{ClientMemory, ClientPointer};
+use gleval::gl::{ClientMemory, ClientPointer, Gl};
 use std::any::Any;
 use std::ffi::c_void;
 use std::rc::Rc;
@@ -112,13 +112,7 @@ vector! {
 entry! {
     /// `glDrawElements`: `Gl::draw_elements` over the `count` indices at `indices` (read now).
     unsafe fn glDrawElements(mode: GLenum, count: GLsizei, type_: GLenum, indices: *const c_void) {
-        let size = match type_ {
-            GL_UNSIGNED_BYTE => Some(1usize),
-            GL_UNSIGNED_SHORT => Some(2),
-            GL_UNSIGNED_INT => Some(4),
-            _ => None,
-        };
-        let len = size.zip(usize::try_from(count).ok()).and_then(|(s, n)| s.checked_mul(n));
+        let len = Gl::draw_elements_len(count, type_);
         with_gl(|gl| gl.draw_elements(mode, count, type_, unsafe { bytes(indices, len) }))
     }
 }
@@ -128,17 +122,7 @@ entry! {
     /// buffer's; nothing is written when GL raises an error.
     unsafe fn glGetPointerv(pname: GLenum, params: *mut *mut c_void) {
         with_gl(|gl| {
-            let known = matches!(
-                pname,
-                GL_VERTEX_ARRAY_POINTER
-                    | GL_NORMAL_ARRAY_POINTER
-                    | GL_COLOR_ARRAY_POINTER
-                    | GL_INDEX_ARRAY_POINTER
-                    | GL_TEXTURE_COORD_ARRAY_POINTER
-                    | GL_EDGE_FLAG_ARRAY_POINTER
-                    | GL_FEEDBACK_BUFFER_POINTER
-                    | GL_SELECTION_BUFFER_POINTER
-            ) && !gl.inside_begin_end();
+            let known = gl.get_pointerv_error(pname).is_none();
             let p = gl.get_pointerv(pname);
             let value = match pname {
                 GL_FEEDBACK_BUFFER_POINTER => super::feedback::feedback_pointer().cast(),

@@ -24,10 +24,10 @@ entry! {
     unsafe fn glFeedbackBuffer(size: GLsizei, type_: GLenum, buffer: *mut GLfloat) {
         let size = if buffer.is_null() && size > 0 { -1 } else { size };
         with_gl(|gl| {
+            let takes = gl.feedback_buffer_error(size, type_).is_none();
             gl.feedback_buffer(size, type_);
-            let Ok(size) = usize::try_from(size) else { return };
-            if gl.feedback_buffer_spec() == (size, type_) {
-                BUFFER.with(|b| b.set((buffer, size)));
+            if takes {
+                BUFFER.with(|b| b.set((buffer, size as usize)));
             }
         })
     }

@@ -4,7 +4,7 @@
 use crate::context::with_gl;
 use crate::memory::{array, array_mut, bytes, count};
 use gleval::gl::types::*;
-use gleval::gl::MAX_PIXEL_MAP_TABLE;
+use gleval::gl::Gl;
 use std::ffi::c_void;
 
 forward! {
@@ -77,29 +77,24 @@ entry! {
     }
 }
 
-/// Values `glPixelMap*` reads: `mapsize` of them when GL would read them (1..=256).
-fn map_len(mapsize: GLsizei) -> Option<usize> {
-    count(mapsize).filter(|&n| (1..=MAX_PIXEL_MAP_TABLE).contains(&n))
-}
-
 entry! {
     /// `glPixelMapfv`: reads `mapsize` floats.
     unsafe fn glPixelMapfv(map: GLenum, mapsize: GLsizei, values: *const GLfloat) {
-        with_gl(|gl| gl.pixel_mapfv(map, mapsize, unsafe { array(values, map_len(mapsize)) }))
+        with_gl(|gl| gl.pixel_mapfv(map, mapsize, unsafe { array(values, Gl::pixel_map_len(mapsize)) }))
     }
 }
 
 entry! {
     /// `glPixelMapuiv`: reads `mapsize` unsigned integers.
     unsafe fn glPixelMapuiv(map: GLenum, mapsize: GLsizei, values: *const GLuint) {
-        with_gl(|gl| gl.pixel_mapuiv(map, mapsize, unsafe { array(values, map_len(mapsize)) }))
+        with_gl(|gl| gl.pixel_mapuiv(map, mapsize, unsafe { array(values, Gl::pixel_map_len(mapsize)) }))
     }
 }
 
 entry! {
     /// `glPixelMapusv`: reads `mapsize` unsigned shorts.
     unsafe fn glPixelMapusv(map: GLenum, mapsize: GLsizei, values: *const GLushort) {
-        with_gl(|gl| gl.pixel_mapusv(map, mapsize, unsafe { array(values, map_len(mapsize)) }))
+        with_gl(|gl| gl.pixel_mapusv(map, mapsize, unsafe { array(values, Gl::pixel_map_len(mapsize)) }))
     }
 }
 

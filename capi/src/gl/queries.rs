@@ -6,8 +6,8 @@
 
 use crate::context::with_gl;
 use crate::memory::{array, array_mut};
-use gleval::gl::consts::*;
 use gleval::gl::types::*;
+use gleval::gl::Gl;
 use std::ffi::c_void;
 
 forward! {
@@ -16,35 +16,10 @@ forward! {
     glMateriali(face: GLenum, pname: GLenum, param: GLint) => material_i;
 }
 
-/// Values of a light, material or light-model name (GL 1.1 tables 2.8–2.10): colours and the
-/// position 4, the spot direction and colour indexes 3, the rest 1.
-fn light_values(pname: GLenum) -> usize {
-    match pname {
-        GL_AMBIENT
-        | GL_DIFFUSE
-        | GL_SPECULAR
-        | GL_POSITION
-        | GL_EMISSION
-        | GL_AMBIENT_AND_DIFFUSE
-        | GL_LIGHT_MODEL_AMBIENT => 4,
-        GL_SPOT_DIRECTION | GL_COLOR_INDEXES => 3,
-        _ => 1,
-    }
-}
-
-/// Values of a colour-or-scalar name (`glFog`, `glTexEnv`, `glTexParameter`).
-fn color_or_one(pname: GLenum) -> usize {
-    if matches!(pname, GL_FOG_COLOR | GL_TEXTURE_ENV_COLOR | GL_TEXTURE_BORDER_COLOR) {
-        4
-    } else {
-        1
-    }
-}
-
 entry! {
     /// `glLightiv`: `Gl::light_iv`.
     unsafe fn glLightiv(light: GLenum, pname: GLenum, params: *const GLint) {
-        let params = unsafe { array(params, Some(light_values(pname))) };
+        let params = unsafe { array(params, Some(Gl::light_param_count(pname).unwrap_or(0))) };
         with_gl(|gl| gl.light_iv(light, pname, params))
     }
 }
@@ -52,7 +27,7 @@ entry! {
 entry! {
     /// `glLightModeliv`: `Gl::light_model_iv`.
     unsafe fn glLightModeliv(pname: GLenum, params: *const GLint) {
-        let params = unsafe { array(params, Some(light_values(pname))) };
+        let params = unsafe { array(params, Some(Gl::light_model_param_count(pname).unwrap_or(0))) };
         with_gl(|gl| gl.light_model_iv(pname, params))
     }
 }
@@ -60,7 +35,7 @@ entry! {
 entry! {
     /// `glMaterialiv`: `Gl::material_iv`.
     unsafe fn glMaterialiv(face: GLenum, pname: GLenum, params: *const GLint) {
-        let params = unsafe { array(params, Some(light_values(pname))) };
+        let params = unsafe { array(params, Some(Gl::material_param_count(pname).unwrap_or(0))) };
         with_gl(|gl| gl.material_iv(face, pname, params))
     }
 }
@@ -68,7 +43,7 @@ entry! {
 entry! {
     /// `glFogiv`: `Gl::fogiv`.
     unsafe fn glFogiv(pname: GLenum, params: *const GLint) {
-        let params = unsafe { array(params, Some(color_or_one(pname))) };
+        let params = unsafe { array(params, Some(Gl::fog_param_count(pname))) };
         with_gl(|gl| gl.fogiv(pname, params))
     }
 }
@@ -76,7 +51,7 @@ entry! {
 entry! {
     /// `glTexEnviv`: `Gl::tex_enviv`.
     unsafe fn glTexEnviv(target: GLenum, pname: GLenum, params: *const GLint) {
-        let params = unsafe { array(params, Some(color_or_one(pname))) };
+        let params = unsafe { array(params, Some(Gl::tex_env_param_count(pname))) };
         with_gl(|gl| gl.tex_enviv(target, pname, params))
     }
 }
@@ -84,7 +59,7 @@ entry! {
 entry! {
     /// `glTexParameterfv`: `Gl::tex_parameterfv`.
     unsafe fn glTexParameterfv(target: GLenum, pname: GLenum, params: *const GLfloat) {
-        let params = unsafe { array(params, Some(color_or_one(pname))) };
+        let params = unsafe { array(params, Some(Gl::tex_parameter_param_count(pname))) };
         with_gl(|gl| gl.tex_parameterfv(target, pname, params))
     }
 }
@@ -92,7 +67,7 @@ entry! {
 entry! {
     /// `glTexParameteriv`: `Gl::tex_parameteriv`.
     unsafe fn glTexParameteriv(target: GLenum, pname: GLenum, params: *const GLint) {
-        let params = unsafe { array(params, Some(color_or_one(pname))) };
+        let params = unsafe { array(params, Some(Gl::tex_parameter_param_count(pname))) };
         with_gl(|gl| gl.tex_parameteriv(target, pname, params))
     }
 }
@@ -100,7 +75,7 @@ entry! {
 entry! {
     /// `glGetLightfv`: `Gl::get_light_fv`.
     unsafe fn glGetLightfv(light: GLenum, pname: GLenum, params: *mut GLfloat) {
-        let params = unsafe { array_mut(params, light_values(pname)) };
+        let params = unsafe { array_mut(params, Gl::light_param_count(pname).unwrap_or(0)) };
         with_gl(|gl| gl.get_light_fv(light, pname, params))
     }
 }
@@ -108,7 +83,7 @@ entry! {
 entry! {
     /// `glGetLightiv`: `Gl::get_light_iv`.
     unsafe fn glGetLightiv(light: GLenum, pname: GLenum, params: *mut GLint) {
-        let params = unsafe { array_mut(params, light_values(pname)) };
+        let params = unsafe { array_mut(params, Gl::light_param_count(pname).unwrap_or(0)) };
         with_gl(|gl| gl.get_light_iv(light, pname, params))
     }
 }
@@ -116,7 +91,7 @@ entry! {
 entry! {
     /// `glGetMaterialfv`: `Gl::get_material_fv`.
     unsafe fn glGetMaterialfv(face: GLenum, pname: GLenum, params: *mut GLfloat) {
-        let params = unsafe { array_mut(params, light_values(pname)) };
+        let params = unsafe { array_mut(params, Gl::material_param_count(pname).unwrap_or(0)) };
         with_gl(|gl| gl.get_material_fv(face, pname, params))
     }
 }
@@ -124,7 +99,7 @@ entry! {
 entry! {
     /// `glGetMaterialiv`: `Gl::get_material_iv`.
     unsafe fn glGetMaterialiv(face: GLenum, pname: GLenum, params: *mut GLint) {
-        let params = unsafe { array_mut(params, light_values(pname)) };
+        let params = unsafe { array_mut(params, Gl::material_param_count(pname).unwrap_or(0)) };
         with_gl(|gl| gl.get_material_iv(face, pname, params))
     }
 }
@@ -132,7 +107,7 @@ entry! {
 entry! {
     /// `glGetTexEnvfv`: `Gl::get_tex_envfv`.
     unsafe fn glGetTexEnvfv(target: GLenum, pname: GLenum, params: *mut GLfloat) {
-        let params = unsafe { array_mut(params, color_or_one(pname)) };
+        let params = unsafe { array_mut(params, Gl::tex_env_param_count(pname)) };
         with_gl(|gl| gl.get_tex_envfv(target, pname, params))
     }
 }
@@ -140,7 +115,7 @@ entry! {
 entry! {
     /// `glGetTexEnviv`: `Gl::get_tex_enviv`.
     unsafe fn glGetTexEnviv(target: GLenum, pname: GLenum, params: *mut GLint) {
-        let params = unsafe { array_mut(params, color_or_one(pname)) };
+        let params = unsafe { array_mut(params, Gl::tex_env_param_count(pname)) };
         with_gl(|gl| gl.get_tex_enviv(target, pname, params))
     }
 }
@@ -148,7 +123,7 @@ entry! {
 entry! {
     /// `glGetTexParameterfv`: `Gl::get_tex_parameterfv`.
     unsafe fn glGetTexParameterfv(target: GLenum, pname: GLenum, params: *mut GLfloat) {
-        let params = unsafe { array_mut(params, color_or_one(pname)) };
+        let params = unsafe { array_mut(params, Gl::tex_parameter_param_count(pname)) };
         with_gl(|gl| gl.get_tex_parameterfv(target, pname, params))
     }
 }
@@ -156,7 +131,7 @@ entry! {
 entry! {
     /// `glGetTexParameteriv`: `Gl::get_tex_parameteriv`.
     unsafe fn glGetTexParameteriv(target: GLenum, pname: GLenum, params: *mut GLint) {
-        let params = unsafe { array_mut(params, color_or_one(pname)) };
+        let params = unsafe { array_mut(params, Gl::tex_parameter_param_count(pname)) };
         with_gl(|gl| gl.get_tex_parameteriv(target, pname, params))
     }
 }
@@ -201,8 +176,7 @@ entry! {
 entry! {
     /// `glGetTexGendv`: the mode 1 value, a plane 4.
     unsafe fn glGetTexGendv(coord: GLenum, pname: GLenum, params: *mut GLdouble) {
-        let n = if pname == GL_TEXTURE_GEN_MODE { 1 } else { 4 };
-        let params = unsafe { array_mut(params, n) };
+        let params = unsafe { array_mut(params, Gl::tex_gen_param_count(pname)) };
         with_gl(|gl| gl.get_tex_gendv(coord, pname, params))
     }
 }

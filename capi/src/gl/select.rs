@@ -4,7 +4,6 @@
 //! when `glRenderMode` leaves selection mode.
 
 use crate::context::with_gl;
-use gleval::gl::consts::GL_SELECT;
 use gleval::gl::types::*;
 use std::cell::Cell;
 
@@ -33,7 +32,7 @@ entry! {
     /// Mesa; nothing is written to it).
     unsafe fn glSelectBuffer(size: GLsizei, buffer: *mut GLuint) {
         with_gl(|gl| {
-            let takes = size >= 0 && !gl.inside_begin_end() && gl.render_mode_value() != GL_SELECT;
+            let takes = gl.select_buffer_error(size).is_none();
             gl.select_buffer(size);
             if takes {
                 BUFFER.with(|b| b.set((buffer, gl.select_buffer_size())));

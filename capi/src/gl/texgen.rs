@@ -2,8 +2,8 @@
 
 use crate::context::with_gl;
 use crate::memory::{array, array_mut};
-use gleval::gl::consts::*;
 use gleval::gl::types::*;
+use gleval::gl::Gl;
 
 forward! {
     glTexGeni(coord: GLenum, pname: GLenum, param: GLint) => tex_geni;
@@ -11,19 +11,10 @@ forward! {
     glTexGend(coord: GLenum, pname: GLenum, param: GLdouble) => tex_gend;
 }
 
-/// Values a `glTexGen*v` or `glGetTexGen*v` reads or writes: the mode 1, a plane 4.
-fn values(pname: GLenum) -> usize {
-    if pname == GL_TEXTURE_GEN_MODE {
-        1
-    } else {
-        4
-    }
-}
-
 entry! {
     /// `glTexGenfv`.
     unsafe fn glTexGenfv(coord: GLenum, pname: GLenum, params: *const GLfloat) {
-        let params = unsafe { array(params, Some(values(pname))) };
+        let params = unsafe { array(params, Some(Gl::tex_gen_param_count(pname))) };
         with_gl(|gl| gl.tex_genfv(coord, pname, params))
     }
 }
@@ -31,7 +22,7 @@ entry! {
 entry! {
     /// `glTexGeniv`.
     unsafe fn glTexGeniv(coord: GLenum, pname: GLenum, params: *const GLint) {
-        let params = unsafe { array(params, Some(values(pname))) };
+        let params = unsafe { array(params, Some(Gl::tex_gen_param_count(pname))) };
         with_gl(|gl| gl.tex_geniv(coord, pname, params))
     }
 }
@@ -39,7 +30,7 @@ entry! {
 entry! {
     /// `glTexGendv`.
     unsafe fn glTexGendv(coord: GLenum, pname: GLenum, params: *const GLdouble) {
-        let params = unsafe { array(params, Some(values(pname))) };
+        let params = unsafe { array(params, Some(Gl::tex_gen_param_count(pname))) };
         with_gl(|gl| gl.tex_gendv(coord, pname, params))
     }
 }
@@ -47,7 +38,7 @@ entry! {
 entry! {
     /// `glGetTexGenfv`.
     unsafe fn glGetTexGenfv(coord: GLenum, pname: GLenum, params: *mut GLfloat) {
-        let params = unsafe { array_mut(params, values(pname)) };
+        let params = unsafe { array_mut(params, Gl::tex_gen_param_count(pname)) };
         with_gl(|gl| gl.get_tex_genfv(coord, pname, params))
     }
 }
@@ -55,7 +46,7 @@ entry! {
 entry! {
     /// `glGetTexGeniv`.
     unsafe fn glGetTexGeniv(coord: GLenum, pname: GLenum, params: *mut GLint) {
-        let params = unsafe { array_mut(params, values(pname)) };
+        let params = unsafe { array_mut(params, Gl::tex_gen_param_count(pname)) };
         with_gl(|gl| gl.get_tex_geniv(coord, pname, params))
     }
 }

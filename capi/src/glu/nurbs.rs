@@ -6,8 +6,6 @@
 use crate::context::with_gl;
 use crate::memory::{array, array_mut, count, strided_len};
 use gleval::gl::types::*;
-use gleval::gl::MapTarget;
-use gleval::glu::consts::*;
 
 /// What a C `GLUnurbs *` points at.
 pub struct GLUnurbs(pub(crate) gleval::glu::GLUnurbs);
@@ -21,18 +19,9 @@ pub(crate) unsafe fn handle(nobj: *mut GLUnurbs) -> Option<gleval::glu::GLUnurbs
     unsafe { nobj.as_ref() }.map(|n| n.0)
 }
 
-/// Values a control point of `kind` has: the map targets' and GLU's trim types'.
-fn kind_components(kind: GLenum) -> Option<usize> {
-    match kind {
-        GLU_MAP1_TRIM_2 => Some(2),
-        GLU_MAP1_TRIM_3 => Some(3),
-        _ => MapTarget::from_enum(kind).map(|t| t.components()),
-    }
-}
-
 /// Control values a strided net reads: `count` points per dimension (knots − order).
 fn net_len(kind: GLenum, dims: &[(GLint, GLint, GLint)]) -> Option<usize> {
-    let k = kind_components(kind)?;
+    let k = gleval::glu::nurbs_point_components(kind)?;
     let layout: Vec<(GLint, GLint)> =
         dims.iter().map(|&(knots, order, stride)| (stride, knots.saturating_sub(order))).collect();
     // GLU takes any number of control points; only a positive count is read.
@@ -146,7 +135,7 @@ entry! {
     /// `gluPwlCurve`: reads `count` points of `stride`.
     unsafe fn gluPwlCurve(nobj: *mut GLUnurbs, count_: GLint, data: *const GLfloat, stride: GLint, kind: GLenum) {
         let Some(n) = (unsafe { handle(nobj) }) else { return };
-        let len = kind_components(kind).and_then(|k| strided_len(k, &[(stride, count_)], GLint::MAX));
+        let len = gleval::glu::nurbs_point_components(kind).and_then(|k| strided_len(k, &[(stride, count_)], GLint::MAX));
         let data = unsafe { array(data, len) };
         with_gl(|gl| gl.glu_pwl_curve(n, count_, data, stride, kind))
     }

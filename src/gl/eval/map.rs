@@ -125,6 +125,20 @@ struct Map2Args {
 }
 
 impl Gl {
+    /// Values a `glMap1*` (`layout` one `(stride, order)`) or `glMap2*` (two, u first) call
+    /// reads for `target`: the last point's offset plus its components, as a display list
+    /// copies them (Mesa's `_mesa_copy_map_points1f`); `None` where GL reads nothing (an
+    /// unknown target, an order outside 1..=`GL_MAX_EVAL_ORDER`, a negative stride, an
+    /// overflow). What a binding with only a pointer (the C ABI) must have before it makes the
+    /// slice.
+    #[must_use]
+    pub fn map_points_len(target: GLenum, layout: &[(GLint, GLint)]) -> Option<usize> {
+        let k = MapTarget::from_enum(target)?.components();
+        let readable = layout.iter().all(|&(stride, order)| (1..=MAX_EVAL_ORDER).contains(&order) && stride >= 0);
+        let wide: Vec<(i64, i64)> = layout.iter().map(|&(s, o)| (i64::from(s), i64::from(o))).collect();
+        readable.then(|| needed_len(k, &wide)).flatten()
+    }
+
     /// `glMap1f`: defines a 1D map. Errors, in Mesa's order: inside begin/end
     /// (`GL_INVALID_OPERATION`), `u1 == u2`, order outside 1..=30, an empty slice (C's NULL)
     /// (`GL_INVALID_VALUE`), an unknown target (`GL_INVALID_ENUM`), `stride < k`

@@ -6,6 +6,22 @@ use crate::gl::types::*;
 use crate::gl::Gl;
 
 impl Gl {
+    /// Values `glGetMap*v` writes for `target` and `query`: `GL_ORDER` one a dimension,
+    /// `GL_DOMAIN` two, `GL_COEFF` the map's points times its components; 0 where GL writes
+    /// nothing (an unknown target or query). What a binding with only a pointer (the C ABI)
+    /// makes its slice of.
+    #[must_use]
+    pub fn get_map_len(&self, target: GLenum, query: GLenum) -> usize {
+        let Some(t) = MapTarget::from_enum(target) else { return 0 };
+        let dims = usize::from(t.dims);
+        match query {
+            GL_ORDER => dims,
+            GL_DOMAIN => 2 * dims,
+            GL_COEFF => self.eval.map(t.dims, t.slot).points.len(),
+            _ => 0,
+        }
+    }
+
     /// `glGetMapfv`. Unknown target, then unknown query → `GL_INVALID_ENUM`; `GL_COEFF` returns
     /// the packed points u-major (the original strides are not kept); a slice shorter than the
     /// answer → `GL_INVALID_VALUE` and nothing written.

@@ -81,6 +81,28 @@ fn texel_rgba(base: GLenum, t: [u8; 4]) -> [f32; 4] {
 }
 
 impl Gl {
+    /// Values `glTexParameter*v` read and `glGetTexParameter*v` write for `pname`: 4 for
+    /// `GL_TEXTURE_BORDER_COLOR`, else 1.
+    #[must_use]
+    pub fn tex_parameter_param_count(pname: GLenum) -> usize {
+        if pname == GL_TEXTURE_BORDER_COLOR {
+            4
+        } else {
+            1
+        }
+    }
+
+    /// Values `glTexEnv*v` read and `glGetTexEnv*v` write for `pname`: 4 for
+    /// `GL_TEXTURE_ENV_COLOR`, else 1.
+    #[must_use]
+    pub fn tex_env_param_count(pname: GLenum) -> usize {
+        if pname == GL_TEXTURE_ENV_COLOR {
+            4
+        } else {
+            1
+        }
+    }
+
     /// `glTexParameterfv`: as [`Gl::tex_parameteri`] for the filters and wraps (the value
     /// truncated to an enum), and `GL_TEXTURE_BORDER_COLOR` (4 values) and
     /// `GL_TEXTURE_PRIORITY` (clamped to [0, 1]). A short slice → `GL_INVALID_VALUE`.
@@ -119,7 +141,7 @@ impl Gl {
             return;
         }
         let Some(t) = target_index(target) else { return self.set_error(GL_INVALID_ENUM) };
-        let needed = if pname == GL_TEXTURE_BORDER_COLOR { 4 } else { 1 };
+        let needed = Self::tex_parameter_param_count(pname);
         let Some(values) = params.get(..needed) else { return self.set_error(GL_INVALID_VALUE) };
         let extra = &mut self.bound_object_mut(t as u8 + 1).extra;
         if pname == GL_TEXTURE_BORDER_COLOR {

@@ -14,6 +14,19 @@ pub(crate) fn curve_type(target: GLenum) -> Option<usize> {
     }
 }
 
+/// Values a control point of `kind` has in `gluNurbsCurve`, `gluNurbsSurface` and
+/// `gluPwlCurve`: 2 and 3 for the trim types, a map target's components for the others;
+/// `None` for a type GLU does not know. What a binding that has only a pointer (the C ABI)
+/// must know to read the points.
+#[must_use]
+pub fn nurbs_point_components(kind: GLenum) -> Option<usize> {
+    match kind {
+        GLU_MAP1_TRIM_2 => Some(2),
+        GLU_MAP1_TRIM_3 => Some(3),
+        _ => MapTarget::from_enum(kind).map(|t| t.components()),
+    }
+}
+
 pub(crate) fn is_trim_type(target: GLenum) -> bool {
     target == GLU_MAP1_TRIM_2 || target == GLU_MAP1_TRIM_3
 }
