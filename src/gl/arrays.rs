@@ -485,8 +485,11 @@ impl Gl {
     /// (`GL_INVALID_OPERATION`), `count` < 0 (`GL_INVALID_VALUE`), an unknown mode
     /// (`GL_INVALID_ENUM`); an element outside the arrays' memory (`GL_INVALID_VALUE`).
     pub fn draw_arrays(&mut self, mode: GLenum, first: GLint, count: GLsizei) {
-        if self.reject_inside_begin_end() {
-            return;
+        // Inside begin/end: raised, and compiled too (Mesa's `save_DrawArrays` and
+        // `save_DrawElements`: "glDraw*(recursive)"), so a list made in
+        // `GL_COMPILE_AND_EXECUTE` mode raises it again when called.
+        if self.inside_begin_end() {
+            return self.draw_error(GL_INVALID_OPERATION);
         }
         if count < 0 {
             return self.draw_error(GL_INVALID_VALUE);
@@ -504,8 +507,8 @@ impl Gl {
     /// Errors: `count` < 0 (`GL_INVALID_VALUE`), then the mode and the type
     /// (`GL_INVALID_ENUM`), then `indices` shorter than `count` indices (`GL_INVALID_VALUE`).
     pub fn draw_elements<T: ArrayElement>(&mut self, mode: GLenum, count: GLsizei, type_: GLenum, indices: &[T]) {
-        if self.reject_inside_begin_end() {
-            return;
+        if self.inside_begin_end() {
+            return self.draw_error(GL_INVALID_OPERATION);
         }
         if count < 0 {
             return self.draw_error(GL_INVALID_VALUE);

@@ -124,7 +124,7 @@ mod tests {
     fn the_acceptance_answers_are_the_calls_own() {
         // What a binding asks before it keeps a buffer is the error the call then raises.
         let mut gl = Gl::new(4, 4);
-        let mut check = |gl: &mut Gl| {
+        let check = |gl: &mut Gl| {
             for size in [-1, 0, 8] {
                 let asked = gl.select_buffer_error(size);
                 gl.select_buffer(size);

@@ -604,6 +604,28 @@ mod tests {
     }
 
     #[test]
+    fn a_draw_inside_begin_end_is_compiled_as_its_error() {
+        // piglit's gl-1.0-beginend-coverage: glDrawArrays between glBegin and glEnd of a
+        // GL_COMPILE_AND_EXECUTE list is an error when made and again when the list runs.
+        let mut gl = Gl::new(10, 10);
+        let v = crate::gl::ClientArray::new(&[0.0f32, 0.0]);
+        gl.vertex_pointer(2, GL_FLOAT, 0, &v);
+        gl.enable_client_state(GL_VERTEX_ARRAY);
+        gl.new_list(1, GL_COMPILE_AND_EXECUTE);
+        gl.begin(GL_POINTS);
+        gl.draw_arrays(GL_POINTS, 0, 1);
+        gl.end();
+        gl.end_list();
+        assert_eq!(gl.get_error(), GL_INVALID_OPERATION);
+        gl.call_list(1);
+        assert_eq!(gl.get_error(), GL_INVALID_OPERATION);
+        gl.begin(GL_POINTS);
+        gl.draw_elements(GL_POINTS, 1, GL_UNSIGNED_BYTE, &[0u8]);
+        gl.end();
+        assert_eq!(gl.get_error(), GL_INVALID_OPERATION);
+    }
+
+    #[test]
     fn list_commands_errors_in_mesa_order() {
         let mut gl = Gl::new(10, 10);
         gl.new_list(0, 0x9999);

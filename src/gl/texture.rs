@@ -865,42 +865,13 @@ mod tests {
         assert_eq!((gl.get_error(), width(&mut gl)), (GL_NO_ERROR, 0));
         assert!(gl.bound_levels(2).is_empty(), "the bound texture is untouched");
         // piglit's max-texture-size-level: a level's sides are at most the largest >> level.
-        gl.tex_image_2d::<u8>(
-            GL_TEXTURE_2D,
-            0,
-            GL_RGBA as GLint,
-            MAX_TEXTURE_SIZE,
-            1,
-            0,
-            GL_RGBA,
-            GL_UNSIGNED_BYTE,
-            &[],
-        );
-        assert_eq!(gl.get_error(), GL_NO_ERROR);
-        gl.tex_image_2d::<u8>(
-            GL_TEXTURE_2D,
-            1,
-            GL_RGBA as GLint,
-            MAX_TEXTURE_SIZE,
-            1,
-            0,
-            GL_RGBA,
-            GL_UNSIGNED_BYTE,
-            &[],
-        );
-        assert_eq!(gl.get_error(), GL_INVALID_VALUE);
-        gl.tex_image_2d::<u8>(
-            GL_TEXTURE_2D,
-            2,
-            GL_RGBA as GLint,
-            1,
-            MAX_TEXTURE_SIZE / 2,
-            0,
-            GL_RGBA,
-            GL_UNSIGNED_BYTE,
-            &[],
-        );
-        assert_eq!(gl.get_error(), GL_INVALID_VALUE);
+        let define = |gl: &mut Gl, level: GLint, w: GLsizei, h: GLsizei| {
+            gl.tex_image_2d::<u8>(GL_TEXTURE_2D, level, GL_RGBA as GLint, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, &[]);
+            gl.get_error()
+        };
+        assert_eq!(define(&mut gl, 0, MAX_TEXTURE_SIZE, 1), GL_NO_ERROR);
+        assert_eq!(define(&mut gl, 1, MAX_TEXTURE_SIZE, 1), GL_INVALID_VALUE);
+        assert_eq!(define(&mut gl, 2, 1, MAX_TEXTURE_SIZE / 2), GL_INVALID_VALUE);
         let mut depth = [-1];
         gl.get_tex_level_parameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_DEPTH_SIZE, &mut depth);
         assert_eq!((gl.get_error(), depth[0]), (GL_NO_ERROR, 0));

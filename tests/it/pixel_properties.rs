@@ -182,6 +182,25 @@ fn a_copy_reads_what_was_drawn_before_it_and_not_after() {
     assert_eq!(window.color_at(0, 0), Some([0.0, 0.0, 1.0, 1.0]));
 }
 
+/// An 8 × 8 context whose window coordinates are its object coordinates, as the stencil tests'
+/// OSMesa programs set it up.
+fn pixel_window() -> Gl {
+    let mut gl = Gl::new(8, 8);
+    gl.matrix_mode(GL_PROJECTION);
+    gl.load_identity();
+    gl.ortho(0.0, 8.0, 0.0, 8.0, -1.0, 1.0);
+    gl.matrix_mode(GL_MODELVIEW);
+    gl.load_identity();
+    gl
+}
+
+/// The stencil buffer the CPU rasteriser leaves after `gl`'s frame, rows top first.
+fn stencil_after(gl: &mut Gl) -> Vec<u8> {
+    let mut canvas = gleval::render::soft::Canvas::new(8, 8);
+    canvas.draw_frame(gl.frame());
+    canvas.stencil().to_vec()
+}
+
 /// `glDrawPixels(GL_STENCIL_INDEX)` as Mesa 22.3 on llvmpipe does it, measured with an OSMesa
 /// program (8 × 8, 8 stencil bits) making these calls and reading the stencil buffer back: the
 /// low 8 bits of each index, truncated (−1 → 255, 1000 → 232, 300.0 → 44); the write mask and
@@ -192,11 +211,7 @@ fn a_copy_reads_what_was_drawn_before_it_and_not_after() {
 /// as Mesa's own stencil copy, takes both from the second (not reproduced: marked below).
 #[test]
 fn stencil_draws_are_mesas() {
-    let mut gl = Gl::new(8, 8);
-    gl.matrix_mode(GL_PROJECTION);
-    gl.load_identity();
-    gl.ortho(0.0, 8.0, 0.0, 8.0, -1.0, 1.0);
-    gl.matrix_mode(GL_MODELVIEW);
+    let mut gl = pixel_window();
     gl.clear_stencil(0);
     gl.clear(GL_STENCIL_BUFFER_BIT);
     gl.pixel_storei(GL_UNPACK_ALIGNMENT, 1);
@@ -240,8 +255,6 @@ fn stencil_draws_are_mesas() {
     gl.raster_pos2i(6, 6);
     gl.draw_pixels(2, 2, GL_STENCIL_INDEX, GL_FLOAT, &floats);
     assert_eq!(gl.get_error(), GL_NO_ERROR);
-    let mut canvas = gleval::render::soft::Canvas::new(8, 8);
-    canvas.draw_frame(gl.frame());
     // Rows top to bottom, as Mesa's program printed them.
     #[rustfmt::skip]
     let mesa = [
@@ -254,7 +267,7 @@ fn stencil_draws_are_mesas() {
         3, 250, 3, 250, 3, 250, 3, 250,
         1, 2, 1, 2, 1, 2, 1, 2,
     ];
-    assert_eq!(canvas.stencil().to_vec(), mesa);
+    assert_eq!(stencil_after(&mut gl), mesa);
 }
 
 /// `glCopyPixels(GL_STENCIL)` as Mesa 22.3 on llvmpipe does it, measured with an OSMesa
@@ -263,12 +276,7 @@ fn stencil_draws_are_mesas() {
 /// and offset do not, the zoom covers its rectangle. The expected buffers are Mesa's.
 #[test]
 fn stencil_copies_are_mesas() {
-    let mut gl = Gl::new(8, 8);
-    gl.matrix_mode(GL_PROJECTION);
-    gl.load_identity();
-    gl.ortho(0.0, 8.0, 0.0, 8.0, -1.0, 1.0);
-    gl.matrix_mode(GL_MODELVIEW);
-    gl.load_identity();
+    let mut gl = pixel_window();
     let clear_source = |gl: &mut Gl| {
         gl.clear_stencil(0);
         gl.clear(GL_STENCIL_BUFFER_BIT);
@@ -301,11 +309,7 @@ fn stencil_copies_are_mesas() {
     copy(&mut gl, 2, 2);
     gl.disable(GL_SCISSOR_TEST);
     assert_eq!(gl.get_error(), GL_NO_ERROR);
-    let stencil = |gl: &mut Gl| {
-        let mut canvas = gleval::render::soft::Canvas::new(8, 8);
-        canvas.draw_frame(gl.frame());
-        canvas.stencil().to_vec()
-    };
+    let stencil = |gl: &mut Gl| stencil_after(gl);
     // Rows top to bottom, as Mesa's program printed them.
     #[rustfmt::skip]
     let mesa = [
