@@ -13,7 +13,7 @@ use super::consts::*;
 use super::lists::ListCommand;
 use super::pixel_commands::PixelCommand;
 use super::pixels::PixelStore;
-use super::texture::{base_format, target_index, TexLevel, MAX_TEXTURE_SIZE};
+use super::texture::{base_format, fits_level, strip_border, target_index, TexLevel, MAX_TEXTURE_SIZE};
 
 /// The base format of a `glCopyTexImage` internal format: the named colour formats of
 /// `glTexImage` (Mesa 22 refuses the component counts 1 to 4 here: `GL_INVALID_ENUM`,
@@ -104,26 +104,22 @@ impl Gl {
             return self.set_error(GL_INVALID_ENUM);
         }
         let max_level = MAX_TEXTURE_SIZE.ilog2() as GLint;
-        if !(0..=max_level).contains(&call.level) || call.border != 0 {
-            // Mesa takes border 1 in a compatibility context, which gleval's textures lack.
+        if !(0..=max_level).contains(&call.level) || !(0..=1).contains(&call.border) {
             return self.set_error(GL_INVALID_VALUE);
         }
         let Some(base) = copy_base_format(call.internalformat) else { return self.set_error(GL_INVALID_ENUM) };
         let [x, y, width, height] = call.rect;
-        if !(0..=MAX_TEXTURE_SIZE).contains(&width) || !(0..=MAX_TEXTURE_SIZE).contains(&height) {
+        if width < 0 || height < 0 || !fits_level(call.dims, call.level, (width, height), call.border) {
             return self.set_error(GL_INVALID_VALUE);
         }
         let (w, h) = (width as usize, height as usize);
         let texels = self.window_texels([x, y], (w, h), base == GL_DEPTH_COMPONENT);
+        // The border's texels are read and dropped, as Mesa keeps a texture's inside only.
+        let (texels, w, h) = strip_border(call.dims, texels, (w, h), call.border as usize);
         let base = if base == GL_DEPTH_COMPONENT { GL_LUMINANCE } else { base };
-        let object = self.bound_object_mut(call.dims);
-        let level = call.level as usize;
-        if object.levels.len() <= level {
-            object.levels.resize(level + 1, None);
-            object.formats.resize(level + 1, 0);
-        }
-        object.levels[level] = Some(TexLevel { width: w as u32, height: h as u32, texels });
-        object.formats[level] = base;
+        let image = TexLevel { width: w as u32, height: h as u32, texels };
+        let internal = call.internalformat as GLint;
+        self.bound_object_mut(call.dims).define_level(call.level as usize, Some(image), base, internal);
         self.image_changed(call.dims);
     }
 

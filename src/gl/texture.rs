@@ -150,8 +150,8 @@ pub(super) struct TextureObject {
 
 impl TextureObject {
     /// Sets level `level` (`None`: undefined, as a proxy too large for its level is), with its
-    /// base and internal formats.
-    fn define_level(&mut self, level: usize, image: Option<TexLevel>, base: GLenum, internal: GLint) {
+    /// base and internal formats (and border 0).
+    pub(super) fn define_level(&mut self, level: usize, image: Option<TexLevel>, base: GLenum, internal: GLint) {
         if self.levels.len() <= level {
             self.levels.resize(level + 1, None);
             self.formats.resize(level + 1, 0);
@@ -159,6 +159,7 @@ impl TextureObject {
         self.levels[level] = image;
         self.formats[level] = base;
         self.extra.set_internal(level, internal);
+        self.extra.set_border(level, 0);
     }
 
     /// `glPrioritizeTextures`: `GL_TEXTURE_PRIORITY`, clamped to [0, 1].
@@ -217,11 +218,32 @@ pub(super) fn proxy_index(target: GLenum) -> Option<usize> {
     }
 }
 
-/// Whether a `width` × `height` image fits `level` (Mesa's `_mesa_legal_texture_dimensions`:
-/// each side at most the largest texture's side at that level).
-fn fits_level(level: GLint, width: GLsizei, height: GLsizei) -> bool {
-    let largest = MAX_TEXTURE_SIZE >> level;
-    width <= largest && height <= largest
+/// Whether a `width` × `height` image with `border` fits `level` (Mesa's
+/// `_mesa_legal_texture_dimensions`: each side holds its two border texels, and its inside is
+/// at most the largest texture's side at that level; a 1D image has no border above or below).
+pub(super) fn fits_level(dims: u8, level: GLint, (width, height): (GLsizei, GLsizei), border: GLint) -> bool {
+    let largest = i64::from(MAX_TEXTURE_SIZE >> level);
+    let inside = |side: GLsizei, border: GLint| (0..=largest).contains(&(i64::from(side) - 2 * i64::from(border)));
+    inside(width, border) && inside(height, if dims == 1 { 0 } else { border })
+}
+
+/// An image's texels without its border (GL 1.1 §3.8.1): Mesa's gallium drivers keep the
+/// inside only (`strip_texture_border`, measured on llvmpipe: a 6 × 6 image with border 1 is a
+/// 4 × 4 level whose `GL_TEXTURE_BORDER` is 0, and the border is never sampled). The texels,
+/// width and height of the inside.
+pub(super) fn strip_border(
+    dims: u8,
+    texels: Vec<[u8; 4]>,
+    (w, h): (usize, usize),
+    border: usize,
+) -> (Vec<[u8; 4]>, usize, usize) {
+    if border == 0 {
+        return (texels, w, h);
+    }
+    let rows = if dims == 1 { 0..h } else { border..h - border };
+    let (inner_w, inner_h) = (w - 2 * border, rows.len());
+    let inside = rows.flat_map(|row| texels[row * w + border..][..inner_w].to_vec()).collect();
+    (inside, inner_w, inner_h)
 }
 
 /// The base internal format of an `internalformat` argument (GL 1.1 table 3.15, with GL 1.0's
@@ -341,7 +363,8 @@ impl Gl {
     /// Mesa's order (checked against Mesa 22 in `tests/reference/calls/cases/textures.calls`):
     /// target (`GL_INVALID_ENUM`), level, sizes, border (`GL_INVALID_VALUE`), format and type
     /// (`GL_INVALID_ENUM`), internal format (`GL_INVALID_VALUE`), a slice shorter than the
-    /// image (`GL_INVALID_VALUE`). Only border 0 is taken.
+    /// image (`GL_INVALID_VALUE`). A border (0 or 1) is stripped, as
+    /// Mesa's gallium drivers strip it: the level is the inside, its border 0; a proxy keeps it.
     #[allow(clippy::too_many_arguments)]
     pub fn tex_image_2d<P: bytemuck::Pod>(
         &mut self,
@@ -408,23 +431,26 @@ impl Gl {
             return self.set_error(GL_INVALID_ENUM);
         }
         let max_level = MAX_TEXTURE_SIZE.ilog2() as GLint;
-        if !(0..=max_level).contains(&level) || width < 0 || height < 0 || border != 0 {
+        if !(0..=max_level).contains(&level) || width < 0 || height < 0 || !(0..=1).contains(&border) {
             return self.set_error(GL_INVALID_VALUE);
         }
         if !self.check_image_format(format, type_) {
             return;
         }
         let Some(base) = base_format(internalformat) else { return self.set_error(GL_INVALID_VALUE) };
-        // Too large for its level: an error, or for a proxy, a proxy level of nothing (GL 1.1
-        // §3.8.1: "no error is generated"), as Mesa's `teximage` answers after the checks above.
-        let fits = fits_level(level, width, height);
+        // Too large for its level (or too small for its border): an error, or for a proxy, a
+        // proxy level of nothing (GL 1.1 §3.8.1: "no error is generated"), as Mesa's
+        // `teximage` answers after the checks above.
+        let fits = fits_level(dims, level, (width, height), border);
         if !fits && !proxy {
             return self.set_error(GL_INVALID_VALUE);
         }
         if proxy {
+            // A proxy keeps the sizes and border as given (Mesa strips real images only).
             let image = fits.then(|| TexLevel { width: width as u32, height: height as u32, texels: Vec::new() });
             let object = &mut self.textures.proxies[usize::from(dims - 1)];
-            return object.define_level(level as usize, image, base, internalformat);
+            object.define_level(level as usize, image, base, internalformat);
+            return object.extra.set_border(level as usize, if fits { border } else { 0 });
         }
         let (w, h) = (width as usize, height as usize);
         let texels = if bytes.is_empty() {
@@ -435,6 +461,7 @@ impl Gl {
                 None => return self.set_error(GL_INVALID_VALUE),
             }
         };
+        let (texels, w, h) = strip_border(dims, texels, (w, h), border as usize);
         let image = TexLevel { width: w as u32, height: h as u32, texels };
         self.bound_object_mut(dims).define_level(level as usize, Some(image), base, internalformat);
         self.image_changed(dims);
@@ -875,6 +902,54 @@ mod tests {
         let mut depth = [-1];
         gl.get_tex_level_parameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_DEPTH_SIZE, &mut depth);
         assert_eq!((gl.get_error(), depth[0]), (GL_NO_ERROR, 0));
+    }
+
+    #[test]
+    fn borders_are_stripped_as_mesa_strips_them() {
+        // Measured on Mesa 22.3 (llvmpipe, OSMesa): a 6 × 6 RGBA image with border 1 whose
+        // inside texel (x, y) is (40x, 40y, 100) and whose border is red.
+        let image: Vec<u8> = (0..36)
+            .flat_map(|i| {
+                let (x, y) = (i % 6, i / 6);
+                let border = x == 0 || y == 0 || x == 5 || y == 5;
+                if border {
+                    [255, 0, 0, 255]
+                } else {
+                    [40 * x as u8, 40 * y as u8, 100, 255]
+                }
+            })
+            .collect();
+        let mut gl = Gl::new(4, 4);
+        gl.pixel_storei(GL_UNPACK_ALIGNMENT, 1);
+        let level = |gl: &mut Gl, target: GLenum, pname: GLenum| {
+            let mut v = [-1];
+            gl.get_tex_level_parameteriv(target, 0, pname, &mut v);
+            v[0]
+        };
+        let rgba = GL_RGBA as GLint;
+        gl.tex_image_2d(GL_TEXTURE_2D, 0, rgba, 6, 6, 1, GL_RGBA, GL_UNSIGNED_BYTE, &image);
+        assert_eq!(gl.get_error(), GL_NO_ERROR);
+        let sizes = |gl: &mut Gl, target| {
+            [GL_TEXTURE_WIDTH, GL_TEXTURE_HEIGHT, GL_TEXTURE_BORDER].map(|p| level(gl, target, p))
+        };
+        assert_eq!(sizes(&mut gl, GL_TEXTURE_2D), [4, 4, 0]);
+        let texels = gl.bound_levels(2)[0].as_ref().unwrap().texels.clone();
+        assert_eq!((texels[0], texels[15]), ([40, 40, 100, 255], [160, 160, 100, 255]));
+        for (w, h, border, error) in
+            [(5, 5, 1, GL_NO_ERROR), (1, 1, 1, GL_INVALID_VALUE), (2, 2, 1, GL_NO_ERROR), (0, 0, 1, GL_INVALID_VALUE)]
+        {
+            gl.tex_image_2d(GL_TEXTURE_2D, 0, rgba, w, h, border, GL_RGBA, GL_UNSIGNED_BYTE, &image);
+            assert_eq!(gl.get_error(), error, "{w} × {h}");
+        }
+        assert_eq!(level(&mut gl, GL_TEXTURE_2D, GL_TEXTURE_WIDTH), 0, "2 × 2 with border 1 is empty");
+        gl.tex_image_2d(GL_TEXTURE_2D, 0, rgba, 4, 4, 2, GL_RGBA, GL_UNSIGNED_BYTE, &image);
+        assert_eq!(gl.get_error(), GL_INVALID_VALUE);
+        gl.tex_image_1d(GL_TEXTURE_1D, 0, rgba, 6, 1, GL_RGBA, GL_UNSIGNED_BYTE, &image);
+        assert_eq!((gl.get_error(), sizes(&mut gl, GL_TEXTURE_1D)), (GL_NO_ERROR, [4, 1, 0]));
+        gl.tex_image_2d::<u8>(GL_PROXY_TEXTURE_2D, 0, rgba, 6, 6, 1, GL_RGBA, GL_UNSIGNED_BYTE, &[]);
+        assert_eq!(sizes(&mut gl, GL_PROXY_TEXTURE_2D), [6, 6, 1], "a proxy keeps its border");
+        gl.copy_tex_image_2d(GL_TEXTURE_2D, 0, GL_RGBA, 0, 0, 4, 4, 1);
+        assert_eq!((gl.get_error(), sizes(&mut gl, GL_TEXTURE_2D)), (GL_NO_ERROR, [2, 2, 0]));
     }
 
     #[test]

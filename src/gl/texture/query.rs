@@ -22,11 +22,14 @@ pub(super) struct ObjectExtras {
     /// `GL_TEXTURE_PRIORITY`, clamped to [0, 1]; `glPrioritizeTextures` sets it too.
     pub(crate) priority: f32,
     internal_formats: Vec<GLint>,
+    /// Each level's `GL_TEXTURE_BORDER`: 0 but for a proxy given a border (a texture's border
+    /// is stripped, [`super::strip_border`]).
+    borders: Vec<GLint>,
 }
 
 impl Default for ObjectExtras {
     fn default() -> Self {
-        Self { border_color: [0.0; 4], priority: 1.0, internal_formats: Vec::new() }
+        Self { border_color: [0.0; 4], priority: 1.0, internal_formats: Vec::new(), borders: Vec::new() }
     }
 }
 
@@ -47,6 +50,14 @@ impl ObjectExtras {
             self.internal_formats.resize(level + 1, 1);
         }
         self.internal_formats[level] = internal;
+    }
+
+    /// Records the border a level keeps.
+    pub(super) fn set_border(&mut self, level: usize, border: GLint) {
+        if self.borders.len() <= level {
+            self.borders.resize(level + 1, 0);
+        }
+        self.borders[level] = border;
     }
 }
 
@@ -241,7 +252,7 @@ impl Gl {
         let value = match pname {
             GL_TEXTURE_WIDTH => defined.map_or(0, |d| d.width as GLint),
             GL_TEXTURE_HEIGHT => defined.map_or(0, |d| d.height as GLint),
-            GL_TEXTURE_BORDER => 0,
+            GL_TEXTURE_BORDER => defined.map_or(0, |_| object.extra.borders.get(l).copied().unwrap_or(0)),
             GL_TEXTURE_INTERNAL_FORMAT => internal,
             GL_TEXTURE_RED_SIZE => sizes[0],
             GL_TEXTURE_GREEN_SIZE => sizes[1],
