@@ -12,9 +12,8 @@ struct Fragment {
     format: u32,
     // GL_CLAMP in s and t: 0 not, 1 with nearest filtering, 2 with linear filtering. The
     // coordinate is clamped to [0, 1] before filtering (GL 1.1 §3.8.6), so linear filtering at
-    // the edge mixes in the border colour (transparent black, GL's initial one); the sampler
-    // clamps to the edge, and the share of the filter that falls outside is replaced by the
-    // border here.
+    // the edge mixes in the border colour (`border_color`); the sampler clamps to the edge,
+    // and the share of the filter that falls outside is replaced by the border here.
     clamp_s: u32,
     clamp_t: u32,
     color: vec4<f32>,
@@ -38,6 +37,8 @@ struct Fragment {
     pad2: u32,
     pad3: u32,
     stipple_rows: array<vec4<u32>, 8>,
+    // GL_TEXTURE_BORDER_COLOR, clamped to [0, 1].
+    border_color: vec4<f32>,
 };
 
 // The fragment's colour after texturing and fog: `tex` the interpolated (s, t, r, q), `fog`
@@ -49,7 +50,7 @@ fn fragment_ops(color_in: vec4<f32>, tex: vec4<f32>, fog: f32) -> vec4<f32> {
     let st = tex.xy / q;
     let clamped = vec2<bool>(env.clamp_s != 0u, env.clamp_t != 0u);
     let coord = select(st, clamp(st, vec2<f32>(0.0), vec2<f32>(1.0)), clamped);
-    let texel = textureSample(tex_image, tex_sampler, coord) * inside_border(coord);
+    let texel = mix(env.border_color, textureSample(tex_image, tex_sampler, coord), inside_border(coord));
     var color = color_in;
     if env.mode != 0u {
         color = apply_env(color, texel);

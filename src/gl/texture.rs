@@ -92,6 +92,9 @@ pub struct BoundTexture {
     pub env_mode: GLenum,
     /// `GL_TEXTURE_ENV_COLOR`, for `GL_BLEND`.
     pub env_color: [f32; 4],
+    /// `GL_TEXTURE_BORDER_COLOR`, clamped to [0, 1]: what a linear filter at a `GL_CLAMP` edge
+    /// mixes in (GL 1.1 §3.8.6; the border texels are stripped, as in Mesa).
+    pub border_color: [f32; 4],
     /// The top of the texture matrix stack.
     pub matrix: Mat4,
     /// A `GL_TEXTURE_1D` texture (t is not used).
@@ -111,6 +114,7 @@ impl BoundTexture {
             params: TexParams { min_filter: GL_NEAREST, ..TexParams::default() },
             env_mode: GL_REPLACE,
             env_color: [0.0; 4],
+            border_color: [0.0; 4],
             matrix: Mat4::IDENTITY,
             one_d: false,
             generate: None,
@@ -125,6 +129,7 @@ impl PartialEq for BoundTexture {
             && self.params == other.params
             && self.env_mode == other.env_mode
             && self.env_color == other.env_color
+            && self.border_color == other.border_color
             && self.matrix == other.matrix
             && self.one_d == other.one_d
             && self.generate == other.generate
@@ -683,6 +688,7 @@ impl Gl {
             params: object.params,
             env_mode,
             env_color,
+            border_color: object.extra.sampling().0.map(|c| c.clamp(0.0, 1.0)),
             matrix,
             one_d: dims == 1,
             generate,

@@ -188,6 +188,8 @@ pub(crate) struct GpuFragment {
     pub pad3: u32,
     /// The stipple's 32 rows, four to a vector.
     pub stipple_rows: [[u32; 4]; 8],
+    /// `GL_TEXTURE_BORDER_COLOR`, which a linear filter at a `GL_CLAMP` edge mixes in.
+    pub border_color: [f32; 4],
 }
 
 #[cfg(test)]
@@ -288,7 +290,8 @@ mod tests {
                 height,
                 pad2,
                 pad3,
-                stipple_rows
+                stipple_rows,
+                border_color
             }
         );
     }

@@ -70,6 +70,7 @@ impl GpuFragment {
         let clamp_t = if texture.one_d { 0 } else { clamp(texture.params.wrap_t) };
         (self.clamp_s, self.clamp_t) = (clamp(texture.params.wrap_s), clamp_t);
         self.color = texture.env_color;
+        self.border_color = texture.border_color;
     }
 }
 

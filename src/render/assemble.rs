@@ -248,6 +248,7 @@ fn fragment_bucket(state: &DrawState, smooth: Smooth, polygon_stipple: Option<[u
     if let Some(t) = &state.texture {
         (t.key, t.base_format, t.env_mode, t.one_d).hash(&mut h);
         bits(&t.env_color, &mut h);
+        bits(&t.border_color, &mut h);
     }
     if let Some(f) = &state.fog {
         f.mode.hash(&mut h);

@@ -62,6 +62,8 @@ mod operations;
 mod outline;
 #[path = "../../examples/picking.rs"]
 pub(crate) mod picking;
+#[path = "../../examples/pixel_types.rs"]
+mod pixel_types;
 #[path = "../../examples/pixelmap.rs"]
 mod pixelmap;
 #[path = "../../examples/quadrics.rs"]
@@ -182,6 +184,13 @@ fn copied_and_zoomed_pixels_match_mesa() {
 #[test]
 fn pixel_maps_and_transfer_match_mesa() {
     check_with("pixelmap", pixelmap::app, |_| PIXEL_THRESHOLD);
+}
+
+/// Every client type and GL 1.2's packed types, depth and stencil images, textured pixel
+/// rectangles, intensity, bordered and colour-index textures (`PixelTypes.c`).
+#[test]
+fn pixel_types_and_textures_match_mesa() {
+    check_with("pixeltypes", pixel_types::app, |_| PIXEL_THRESHOLD);
 }
 
 /// Textures copied from the window as drawn so far (`CopyTex.c`).

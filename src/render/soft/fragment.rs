@@ -71,8 +71,8 @@ impl<'a> Program<'a> {
 }
 
 /// The texel for (s, t, r, q): s/q and t/q, clamped to [0, 1] under `GL_CLAMP`, filtered, and
-/// with a linear filter at a `GL_CLAMP` edge the share falling on the border (transparent
-/// black) taken out, as `inside_border` does in `fragment.wgsl`.
+/// with a linear filter at a `GL_CLAMP` edge the share falling on the border given the border
+/// colour, as `inside_border` does in `fragment.wgsl`.
 fn texel(texture: &BoundTexture, sampler: &Sampler<'_>, tex: [f32; 4], slope: &TexSlope) -> [f32; 4] {
     let project = |t: [f32; 4]| {
         let q = if t[3] != 0.0 { t[3] } else { 1.0 };
@@ -105,7 +105,7 @@ fn texel(texture: &BoundTexture, sampler: &Sampler<'_>, tex: [f32; 4], slope: &T
         }
     };
     let share = inside(coord[0], base.width, clamp_s) * inside(coord[1], base.height, clamp_t);
-    sample.map(|c| c * share)
+    std::array::from_fn(|k| texture.border_color[k] + (sample[k] - texture.border_color[k]) * share)
 }
 
 /// GL's texture functions: `cf` the fragment's colour, `texel` the texture's, by base format.
