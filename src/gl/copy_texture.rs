@@ -109,7 +109,7 @@ impl Gl {
         }
         let Some(base) = copy_base_format(call.internalformat) else { return self.set_error(GL_INVALID_ENUM) };
         let [x, y, width, height] = call.rect;
-        if width < 0 || height < 0 || !fits_level(call.dims, call.level, (width, height), call.border) {
+        if !fits_level(call.dims, call.level, (width, height), call.border) {
             return self.set_error(GL_INVALID_VALUE);
         }
         let (w, h) = (width as usize, height as usize);
@@ -119,7 +119,7 @@ impl Gl {
         let base = if base == GL_DEPTH_COMPONENT { GL_LUMINANCE } else { base };
         let image = TexLevel { width: w as u32, height: h as u32, texels };
         let internal = call.internalformat as GLint;
-        self.bound_object_mut(call.dims).define_level(call.level as usize, Some(image), base, internal);
+        self.bound_object_mut(call.dims).define_level(call.level as usize, Some(image), (base, internal), 0);
         self.image_changed(call.dims);
     }
 

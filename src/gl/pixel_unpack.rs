@@ -164,77 +164,85 @@ pub(crate) fn to_rgba(format: GLenum, c: &[f32]) -> [f32; 4] {
 #[must_use]
 pub(crate) fn unpack_image(
     store: PixelStore,
-    (width, height): (GLsizei, GLsizei),
+    size: (GLsizei, GLsizei),
     format: GLenum,
     type_: GLenum,
     data: &[u8],
 ) -> Option<Vec<[f32; 4]>> {
-    let (Ok(w), Ok(h)) = (usize::try_from(width), usize::try_from(height)) else { return Some(Vec::new()) };
-    let Some(n) = format_components(format) else { return Some(Vec::new()) };
+    let mut out = Vec::new();
+    unpack_each(store, size, format, type_, data, |c| out.push(c))?;
+    Some(out)
+}
+
+/// [`unpack_image`] handing each pixel to `emit` as it is read, for a caller that keeps the
+/// pixels in another form (a texture's bytes) and need not hold the floats of a whole image.
+/// `None` when `data` is shorter than the image (then nothing is emitted).
+pub(crate) fn unpack_each(
+    store: PixelStore,
+    (width, height): (GLsizei, GLsizei),
+    format: GLenum,
+    type_: GLenum,
+    data: &[u8],
+    mut emit: impl FnMut([f32; 4]),
+) -> Option<()> {
+    let (Ok(w), Ok(h)) = (usize::try_from(width), usize::try_from(height)) else { return Some(()) };
+    let Some(n) = format_components(format) else { return Some(()) };
     if w == 0 || h == 0 || format_and_type_error(format, type_).is_some() {
-        return Some(Vec::new());
+        return Some(());
     }
     if type_ == GL_BITMAP {
         let bits = super::bitmap::unpack_bitmap(store, width, height, data)?;
-        return Some(bits.into_iter().map(|set| [f32::from(u8::from(set)), 0.0, 0.0, 1.0]).collect());
+        bits.into_iter().for_each(|set| emit([f32::from(u8::from(set)), 0.0, 0.0, 1.0]));
+        return Some(());
     }
-    if let Some(p) = packed(type_) {
-        return unpack_packed(store, (w, h), format, p, data);
-    }
-    let Some(size) = element_size(type_) else { return Some(Vec::new()) };
-    let stride = store.row_stride(w, n, size);
-    let first = store.first_byte(stride, n * size);
-    if data.len() < first + (h - 1) * stride + w * n * size {
+    // One element a pixel for a packed type, `n` of them otherwise.
+    let (packed, size, per_pixel) = match packed(type_) {
+        Some(p) => (Some(p), p.size, 1),
+        None => match element_size(type_) {
+            Some(size) => (None, size, n),
+            None => return Some(()),
+        },
+    };
+    let stride = store.row_stride(w, per_pixel, size);
+    let first = store.first_byte(stride, per_pixel * size);
+    if data.len() < first + (h - 1) * stride + w * per_pixel * size {
         return None;
     }
     let swap = store.swap_bytes && size > 1;
     let index = is_index(format);
-    let mut out = Vec::with_capacity(w * h);
     let mut c = [0.0f32; 4];
     for row in 0..h {
-        let row_bytes = &data[first + row * stride..][..w * n * size];
-        for pixel in row_bytes.chunks_exact(n * size) {
-            for (value, bytes) in c.iter_mut().zip(pixel.chunks_exact(size)) {
-                *value = element(type_, bytes, swap, index);
+        let row_bytes = &data[first + row * stride..][..w * per_pixel * size];
+        for pixel in row_bytes.chunks_exact(per_pixel * size) {
+            match packed {
+                Some(p) => {
+                    p.components(packed_value(pixel, swap), &mut c);
+                    emit(to_rgba(format, &c[..p.bits.len()]));
+                }
+                None => {
+                    for (value, bytes) in c.iter_mut().zip(pixel.chunks_exact(size)) {
+                        *value = element(type_, bytes, swap, index);
+                    }
+                    emit(to_rgba(format, &c[..n]));
+                }
             }
-            out.push(to_rgba(format, &c[..n]));
         }
     }
-    Some(out)
+    Some(())
 }
 
-/// [`unpack_image`] for a packed type: one element a pixel.
-fn unpack_packed(
-    store: PixelStore,
-    (w, h): (usize, usize),
-    format: GLenum,
-    p: Packed,
-    data: &[u8],
-) -> Option<Vec<[f32; 4]>> {
-    let stride = store.row_stride(w, 1, p.size);
-    let first = store.first_byte(stride, p.size);
-    if data.len() < first + (h - 1) * stride + w * p.size {
-        return None;
+/// A packed pixel's one element (1, 2 or 4 bytes, in client byte order unless `swap`).
+fn packed_value(bytes: &[u8], swap: bool) -> u32 {
+    let mut b = [0u8; 4];
+    b[..bytes.len()].copy_from_slice(bytes);
+    if swap {
+        b[..bytes.len()].reverse();
     }
-    let mut out = Vec::with_capacity(w * h);
-    let mut c = [0.0f32; 4];
-    for row in 0..h {
-        for bytes in data[first + row * stride..][..w * p.size].chunks_exact(p.size) {
-            let mut b = [0u8; 4];
-            b[..p.size].copy_from_slice(bytes);
-            if store.swap_bytes {
-                b[..p.size].reverse();
-            }
-            let value = match p.size {
-                1 => u32::from(b[0]),
-                2 => u32::from(u16::from_ne_bytes([b[0], b[1]])),
-                _ => u32::from_ne_bytes(b),
-            };
-            p.components(value, &mut c);
-            out.push(to_rgba(format, &c[..p.bits.len()]));
-        }
+    match bytes.len() {
+        1 => u32::from(b[0]),
+        2 => u32::from(u16::from_ne_bytes([b[0], b[1]])),
+        _ => u32::from_ne_bytes(b),
     }
-    Some(out)
 }
 
 #[cfg(test)]

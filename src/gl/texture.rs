@@ -10,7 +10,7 @@
 
 use super::consts::*;
 use super::lists::ListCommand;
-use super::pixel_unpack::{format_and_type_error, format_components, unpack_image};
+use super::pixel_unpack::{format_and_type_error, format_components, unpack_each};
 use super::texgen::{TexGen, TexGenState};
 use super::types::*;
 use super::Gl;
@@ -155,16 +155,21 @@ pub(super) struct TextureObject {
 
 impl TextureObject {
     /// Sets level `level` (`None`: undefined, as a proxy too large for its level is), with its
-    /// base and internal formats (and border 0).
-    pub(super) fn define_level(&mut self, level: usize, image: Option<TexLevel>, base: GLenum, internal: GLint) {
+    /// base and internal formats and the border it keeps (0 but for a proxy).
+    pub(super) fn define_level(
+        &mut self,
+        level: usize,
+        image: Option<TexLevel>,
+        (base, internal): (GLenum, GLint),
+        border: GLint,
+    ) {
         if self.levels.len() <= level {
             self.levels.resize(level + 1, None);
             self.formats.resize(level + 1, 0);
         }
         self.levels[level] = image;
         self.formats[level] = base;
-        self.extra.set_internal(level, internal);
-        self.extra.set_border(level, 0);
+        self.extra.set_level_format(level, internal, border);
     }
 
     /// `glPrioritizeTextures`: `GL_TEXTURE_PRIORITY`, clamped to [0, 1].
@@ -454,8 +459,7 @@ impl Gl {
             // A proxy keeps the sizes and border as given (Mesa strips real images only).
             let image = fits.then(|| TexLevel { width: width as u32, height: height as u32, texels: Vec::new() });
             let object = &mut self.textures.proxies[usize::from(dims - 1)];
-            object.define_level(level as usize, image, base, internalformat);
-            return object.extra.set_border(level as usize, if fits { border } else { 0 });
+            return object.define_level(level as usize, image, (base, internalformat), if fits { border } else { 0 });
         }
         let (w, h) = (width as usize, height as usize);
         let texels = if bytes.is_empty() {
@@ -468,7 +472,7 @@ impl Gl {
         };
         let (texels, w, h) = strip_border(dims, texels, (w, h), border as usize);
         let image = TexLevel { width: w as u32, height: h as u32, texels };
-        self.bound_object_mut(dims).define_level(level as usize, Some(image), base, internalformat);
+        self.bound_object_mut(dims).define_level(level as usize, Some(image), (base, internalformat), 0);
         self.image_changed(dims);
     }
 
@@ -785,17 +789,17 @@ impl Gl {
         h: usize,
         bytes: &[u8],
     ) -> Option<Vec<[u8; 4]>> {
-        let image = unpack_image(self.unpack_store(), (w as GLsizei, h as GLsizei), format, type_, bytes)?;
         let transfer = self.color_transfer();
         let byte = |x: f32| (x.clamp(0.0, 1.0) * 255.0).round() as u8;
-        let texel = |c: [f32; 4]| {
+        let mut texels = Vec::with_capacity(w * h);
+        unpack_each(self.unpack_store(), (w as GLsizei, h as GLsizei), format, type_, bytes, |c| {
             let c = match format {
                 GL_COLOR_INDEX => self.index_to_rgba(c[0]),
                 _ => transfer.as_ref().map_or(c, |t| t.apply(c)),
             };
-            c.map(byte)
-        };
-        Some(image.into_iter().map(texel).collect())
+            texels.push(c.map(byte));
+        })?;
+        Some(texels)
     }
 }
 

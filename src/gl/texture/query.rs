@@ -13,7 +13,8 @@ use super::super::Gl;
 use super::{proxy_index, target_index, TextureObject, MAX_TEXTURE_SIZE};
 
 /// A texture object's parameters beyond [`super::TexParams`], and each level's internal format
-/// as the program gave it (what `GL_TEXTURE_INTERNAL_FORMAT` reports).
+/// as the program gave it and its border (what `GL_TEXTURE_INTERNAL_FORMAT` and
+/// `GL_TEXTURE_BORDER` report).
 #[derive(Clone, Debug, PartialEq)]
 pub(super) struct ObjectExtras {
     /// `GL_TEXTURE_BORDER_COLOR`, as given (reported clamped to [0, 1], as Mesa does for an
@@ -21,15 +22,14 @@ pub(super) struct ObjectExtras {
     border_color: [f32; 4],
     /// `GL_TEXTURE_PRIORITY`, clamped to [0, 1]; `glPrioritizeTextures` sets it too.
     pub(crate) priority: f32,
-    internal_formats: Vec<GLint>,
-    /// Each level's `GL_TEXTURE_BORDER`: 0 but for a proxy given a border (a texture's border
-    /// is stripped, [`super::strip_border`]).
-    borders: Vec<GLint>,
+    /// Each level's internal format and border: the border 0 but for a proxy given one (a
+    /// texture's border is stripped, [`super::strip_border`]).
+    level_formats: Vec<(GLint, GLint)>,
 }
 
 impl Default for ObjectExtras {
     fn default() -> Self {
-        Self { border_color: [0.0; 4], priority: 1.0, internal_formats: Vec::new(), borders: Vec::new() }
+        Self { border_color: [0.0; 4], priority: 1.0, level_formats: Vec::new() }
     }
 }
 
@@ -44,20 +44,12 @@ impl ObjectExtras {
         (self.border_color, self.priority) = (border_color, priority);
     }
 
-    /// Records the internal format a level was defined with.
-    pub(super) fn set_internal(&mut self, level: usize, internal: GLint) {
-        if self.internal_formats.len() <= level {
-            self.internal_formats.resize(level + 1, 1);
+    /// Records the internal format a level was defined with and the border it keeps.
+    pub(super) fn set_level_format(&mut self, level: usize, internal: GLint, border: GLint) {
+        if self.level_formats.len() <= level {
+            self.level_formats.resize(level + 1, (1, 0));
         }
-        self.internal_formats[level] = internal;
-    }
-
-    /// Records the border a level keeps.
-    pub(super) fn set_border(&mut self, level: usize, border: GLint) {
-        if self.borders.len() <= level {
-            self.borders.resize(level + 1, 0);
-        }
-        self.borders[level] = border;
+        self.level_formats[level] = (internal, border);
     }
 }
 
@@ -247,12 +239,15 @@ impl Gl {
         }
         let l = level as usize;
         let defined = object.levels.get(l).and_then(Option::as_ref);
-        let internal = defined.map_or(GL_RGBA as GLint, |_| object.extra.internal_formats.get(l).copied().unwrap_or(1));
+        let (internal, border) = match defined {
+            Some(_) => object.extra.level_formats.get(l).copied().unwrap_or((1, 0)),
+            None => (GL_RGBA as GLint, 0),
+        };
         let sizes = defined.map_or([0; 6], |_| component_sizes(object.formats[l]));
         let value = match pname {
             GL_TEXTURE_WIDTH => defined.map_or(0, |d| d.width as GLint),
             GL_TEXTURE_HEIGHT => defined.map_or(0, |d| d.height as GLint),
-            GL_TEXTURE_BORDER => defined.map_or(0, |_| object.extra.borders.get(l).copied().unwrap_or(0)),
+            GL_TEXTURE_BORDER => border,
             GL_TEXTURE_INTERNAL_FORMAT => internal,
             GL_TEXTURE_RED_SIZE => sizes[0],
             GL_TEXTURE_GREEN_SIZE => sizes[1],
