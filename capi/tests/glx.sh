@@ -25,7 +25,7 @@ cc -std=gnu99 -O1 -Wall -o "$out/calls" "$here/glx/calls.c" -lGL -lEGL -lX11 -lp
 cc -std=gnu99 -O1 -Wall -o "$out/fuzz" "$here/glx/fuzz.c" -lGL -lEGL -lX11 -lpthread
 
 display=:$(( $$ % 400 + 100 ))
-Xvfb "$display" -screen 0 640x480x24 -nolisten tcp >/dev/null 2>&1 &
+Xvfb "$display" -screen 0 640x480x24 -nolisten tcp -noreset >/dev/null 2>&1 &
 xvfb=$!
 trap 'kill $xvfb 2>/dev/null || true' EXIT
 sleep 1

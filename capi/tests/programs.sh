@@ -49,10 +49,12 @@ done
 mkdir -p "$out"
 rm -f "$out"/*.png "$out"/*.log
 
-# Our own Xvfb on the first free display from one of this run's own (the process id).
+# Our own Xvfb on the first free display from one of this run's own (the process id). With
+# -noreset: an X server resets when its last client leaves, and refuses connections while it
+# does (measured: 423 of 2000 back-to-back XOpenDisplay calls fail without it, none with it).
 n=$(( $$ % 300 + 900 ))
 while [ -e "/tmp/.X$n-lock" ] || [ -e "/tmp/.X11-unix/X$n" ]; do n=$((n + 1)); done
-Xvfb ":$n" -screen 0 1280x1024x24 -nolisten tcp >"$out/xvfb.log" 2>&1 &
+Xvfb ":$n" -screen 0 1280x1024x24 -nolisten tcp -noreset >"$out/xvfb.log" 2>&1 &
 xvfb=$!
 prog=
 trap 'kill $prog $xvfb 2>/dev/null || true' EXIT

@@ -12,7 +12,7 @@ run_in_xvfb() {
   mkdir -p "$out"
   pictures="$root/tests/reference/pictures"
   "$root/capi/glevalcc" -std=gnu99 -O1 -w -I"$pictures" -o "$out/$2" "$pictures/$1" -lm
-  Xvfb "$4" -screen 0 640x480x24 >/dev/null 2>&1 &
+  Xvfb "$4" -screen 0 640x480x24 -noreset >/dev/null 2>&1 &
   xvfb=$!
   prog=
   trap 'kill $prog $xvfb 2>/dev/null || true' EXIT

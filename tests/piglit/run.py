@@ -80,12 +80,14 @@ class Xvfb:
         if not needed or os.environ.get("DISPLAY"):
             return
         # A display number of this run's own (from the process id), where no other X server
-        # holds the lock: two runs at once never share (or end) one server.
+        # holds the lock: two runs at once never share (or end) one server. -noreset: a server
+        # resets when its last client leaves and refuses connections meanwhile, so a test that
+        # connects just after the previous one left could not open its display.
         start = 200 + os.getpid() % 600
         for n in range(start, start + 50):
             if os.path.exists(f"/tmp/.X{n}-lock") or os.path.exists(f"/tmp/.X11-unix/X{n}"):
                 continue
-            self.proc = subprocess.Popen(["Xvfb", f":{n}", "-screen", "0", "1280x1024x24", "-nolisten", "tcp"],
+            self.proc = subprocess.Popen(["Xvfb", f":{n}", "-screen", "0", "1280x1024x24", "-nolisten", "tcp", "-noreset"],
                                          stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
             for _ in range(100):
                 if os.path.exists(f"/tmp/.X11-unix/X{n}"):

@@ -15,7 +15,7 @@ cp "$src" "$work/program.c"
 cc -std=gnu99 -O1 -w -I"$here" -o "$work/freeglut" "$work/program.c" "$here/fgmain.c" -lglut -lGLU -lGL -lm
 cc -std=gnu99 -O1 -w -I"$pictures" -o "$work/osmesa" "$work/program.c" "$pictures/glut_osmesa.c" \
   -lOSMesa -lGLU -lGL -lz -lm
-Xvfb :97 -screen 0 1280x1024x24 >/dev/null 2>&1 &
+Xvfb :97 -screen 0 1280x1024x24 -noreset >/dev/null 2>&1 &
 xvfb=$!
 sleep 2
 DISPLAY=:97 OUT="$work/freeglut.ppm" "$work/freeglut"

@@ -16,7 +16,7 @@ src="$root/tests/reference/glut/Events.c"
 cc -w -o "$work/freeglut" "$src" -lglut -lGL
 GLEVAL_PROFILE=${GLEVAL_PROFILE:-debug} "$root/capi/glevalcc" -w -o "$work/gleval" "$src"
 cc -o "$work/wm_close" "$here/wm_close.c" -lX11
-Xvfb :94 -screen 0 800x600x24 >/dev/null 2>&1 &
+Xvfb :94 -screen 0 800x600x24 -noreset >/dev/null 2>&1 &
 xvfb=$!
 sleep 2
 drive() {

@@ -11,7 +11,7 @@ out="$here/../../tests/reference/glut/shapes.txt"
 work=$(mktemp -d)
 cc -shared -fPIC -O1 -o "$work/arrays_dump.so" "$here/arrays_dump.c" -ldl
 cc -O1 -o "$work/shapes_dump" "$here/shapes_dump.c" -lglut -lGL
-Xvfb :96 -screen 0 640x480x24 >/dev/null 2>&1 &
+Xvfb :96 -screen 0 640x480x24 -noreset >/dev/null 2>&1 &
 xvfb=$!
 sleep 2
 {

@@ -14,7 +14,7 @@ work=$(mktemp -d)
 src="$root/tests/reference/glut/Windows.c"
 cc -w -o "$work/freeglut" "$src" -lglut -lGL
 GLEVAL_PROFILE=${GLEVAL_PROFILE:-debug} "$root/capi/glevalcc" -w -o "$work/gleval" "$src"
-Xvfb :95 -screen 0 800x600x24 >/dev/null 2>&1 &
+Xvfb :95 -screen 0 800x600x24 -noreset >/dev/null 2>&1 &
 xvfb=$!
 sleep 2
 DISPLAY=:95 "$work/freeglut" > "$work/freeglut.log" &
