@@ -29,6 +29,7 @@
 
 use super::client_memory::{to_bytes, ArrayElement, ClientPointer};
 use super::consts::*;
+use super::get::{put_flag, row, Kind, StateVar};
 use super::lists::ListCommand;
 use super::types::*;
 use super::variants::GlComponent;
@@ -626,65 +627,33 @@ impl Gl {
             self.arrays.arrays = *arrays;
         }
     }
-
-    /// The arrays' `glGet` answers (GL 1.1 table 6.6), the edge flag and the client stack.
-    pub(crate) fn arrays_query(&self, pname: GLenum, out: &mut [f64]) -> Option<usize> {
-        let a = &self.arrays;
-        let value = match pname {
-            GL_EDGE_FLAG => f64::from(u8::from(a.edge_flag)),
-            GL_CLIENT_ATTRIB_STACK_DEPTH => a.saved.len() as f64,
-            GL_MAX_CLIENT_ATTRIB_STACK_DEPTH => super::pixels::MAX_CLIENT_ATTRIB_STACK_DEPTH as f64,
-            _ => {
-                let (which, field) = array_field(pname)?;
-                let s = a.get(which);
-                match field {
-                    Field::Enabled => f64::from(u8::from(s.enabled)),
-                    Field::Size => f64::from(s.size),
-                    Field::Type => f64::from(s.type_),
-                    Field::Stride => f64::from(s.stride),
-                }
-            }
-        };
-        *out.first_mut()? = value;
-        Some(1)
-    }
 }
 
-enum Field {
-    Enabled,
-    Size,
-    Type,
-    Stride,
+/// `glGet` of an array's size, type or stride (GL 1.1 table 6.6; the enables are capabilities).
+macro_rules! array_row {
+    ($name:expr, $which:ident . $field:ident) => {
+        row($name, 1, Kind::Int, |gl, o| o[0] = f64::from(gl.arrays.get(Which::$which).$field))
+    };
 }
 
-/// The array and field a `glGet` name of table 6.6 asks for.
-fn array_field(pname: GLenum) -> Option<(Which, Field)> {
-    use Field::*;
-    use Which::*;
-    Some(match pname {
-        GL_VERTEX_ARRAY => (Vertex, Enabled),
-        GL_VERTEX_ARRAY_SIZE => (Vertex, Size),
-        GL_VERTEX_ARRAY_TYPE => (Vertex, Type),
-        GL_VERTEX_ARRAY_STRIDE => (Vertex, Stride),
-        GL_NORMAL_ARRAY => (Normal, Enabled),
-        GL_NORMAL_ARRAY_TYPE => (Normal, Type),
-        GL_NORMAL_ARRAY_STRIDE => (Normal, Stride),
-        GL_COLOR_ARRAY => (Color, Enabled),
-        GL_COLOR_ARRAY_SIZE => (Color, Size),
-        GL_COLOR_ARRAY_TYPE => (Color, Type),
-        GL_COLOR_ARRAY_STRIDE => (Color, Stride),
-        GL_INDEX_ARRAY => (Index, Enabled),
-        GL_INDEX_ARRAY_TYPE => (Index, Type),
-        GL_INDEX_ARRAY_STRIDE => (Index, Stride),
-        GL_TEXTURE_COORD_ARRAY => (TexCoord, Enabled),
-        GL_TEXTURE_COORD_ARRAY_SIZE => (TexCoord, Size),
-        GL_TEXTURE_COORD_ARRAY_TYPE => (TexCoord, Type),
-        GL_TEXTURE_COORD_ARRAY_STRIDE => (TexCoord, Stride),
-        GL_EDGE_FLAG_ARRAY => (EdgeFlag, Enabled),
-        GL_EDGE_FLAG_ARRAY_STRIDE => (EdgeFlag, Stride),
-        _ => return None,
-    })
-}
+/// The arrays' `glGet` rows, and the current edge flag's (table 6.3), which lives here.
+pub(crate) static GET_ROWS: &[StateVar] = &[
+    row(GL_EDGE_FLAG, 1, Kind::Bool, |gl, o| put_flag(o, gl.arrays.edge_flag)),
+    array_row!(GL_VERTEX_ARRAY_SIZE, Vertex.size),
+    array_row!(GL_VERTEX_ARRAY_TYPE, Vertex.type_),
+    array_row!(GL_VERTEX_ARRAY_STRIDE, Vertex.stride),
+    array_row!(GL_NORMAL_ARRAY_TYPE, Normal.type_),
+    array_row!(GL_NORMAL_ARRAY_STRIDE, Normal.stride),
+    array_row!(GL_COLOR_ARRAY_SIZE, Color.size),
+    array_row!(GL_COLOR_ARRAY_TYPE, Color.type_),
+    array_row!(GL_COLOR_ARRAY_STRIDE, Color.stride),
+    array_row!(GL_INDEX_ARRAY_TYPE, Index.type_),
+    array_row!(GL_INDEX_ARRAY_STRIDE, Index.stride),
+    array_row!(GL_TEXTURE_COORD_ARRAY_SIZE, TexCoord.size),
+    array_row!(GL_TEXTURE_COORD_ARRAY_TYPE, TexCoord.type_),
+    array_row!(GL_TEXTURE_COORD_ARRAY_STRIDE, TexCoord.stride),
+    array_row!(GL_EDGE_FLAG_ARRAY_STRIDE, EdgeFlag.stride),
+];
 
 #[cfg(test)]
 mod tests {

@@ -9,6 +9,7 @@
 //! index into the raster position of an RGBA context).
 
 use super::consts::*;
+use super::get::{row, Kind, StateVar};
 use super::lists::ListCommand;
 use super::pixel_commands::PixelCommand;
 use super::types::*;
@@ -129,22 +130,16 @@ impl Gl {
         }
         self.color_index.mask = mask;
     }
-
-    /// `glGet` of the colour-index state (see the module docs).
-    pub(crate) fn color_index_query(&self, pname: GLenum, out: &mut [f64]) -> Option<usize> {
-        let index = &self.color_index;
-        let value = match pname {
-            GL_CURRENT_INDEX => f64::from(index.current),
-            GL_INDEX_CLEAR_VALUE => f64::from(index.clear as GLint),
-            GL_INDEX_WRITEMASK => f64::from(index.mask as GLint),
-            GL_INDEX_MODE | GL_INDEX_BITS => 0.0,
-            GL_RGBA_MODE | GL_CURRENT_RASTER_INDEX => 1.0,
-            _ => return None,
-        };
-        *out.first_mut()? = value;
-        Some(1)
-    }
 }
+
+/// `glGet` of the colour-index state (see the module docs; the modes and `GL_INDEX_BITS` are
+/// limits in `get/table.rs`). The clear value and mask read as signed (Mesa's `TYPE_INT`).
+pub(crate) static GET_ROWS: &[StateVar] = &[
+    row(GL_CURRENT_INDEX, 1, Kind::Float, |gl, o| o[0] = f64::from(gl.color_index.current)),
+    row(GL_CURRENT_RASTER_INDEX, 1, Kind::Float, |_, o| o[0] = 1.0),
+    row(GL_INDEX_CLEAR_VALUE, 1, Kind::Float, |gl, o| o[0] = f64::from(gl.color_index.clear as GLint)),
+    row(GL_INDEX_WRITEMASK, 1, Kind::Int, |gl, o| o[0] = f64::from(gl.color_index.mask as GLint)),
+];
 
 #[cfg(test)]
 mod tests {

@@ -143,7 +143,7 @@ impl Gl {
         }
         // Mesa buffers what a GL_COMPILE_AND_EXECUTE list draws and runs it when the list
         // ends: its primitives reach the feedback buffer after glEndList, so they are held.
-        let compiling = self.list_query(GL_LIST_INDEX).is_some_and(|i| i != 0.0);
+        let compiling = self.compiling_list();
         let result = match self.feedback.mode {
             GL_SELECT => self.finish_select(),
             GL_FEEDBACK if compiling => {
@@ -197,17 +197,6 @@ impl Gl {
             self.evaluate_pending_meshes();
             let value = [[token, 0.0, 0.0, 0.0]; 3];
             self.feedback.raster_tokens.push((self.frame.commands.len(), GL_PASS_THROUGH_TOKEN, value));
-        }
-    }
-
-    /// The feedback buffer's `glGet` answers: `GL_FEEDBACK_BUFFER_SIZE`, `_TYPE`, and
-    /// `GL_RENDER_MODE`.
-    pub(crate) fn feedback_query(&self, pname: GLenum) -> Option<f64> {
-        match pname {
-            GL_FEEDBACK_BUFFER_SIZE => Some(self.feedback.size as f64),
-            GL_FEEDBACK_BUFFER_TYPE => Some(f64::from(self.feedback.kind)),
-            GL_RENDER_MODE => Some(f64::from(self.feedback.mode)),
-            _ => None,
         }
     }
 

@@ -8,6 +8,7 @@
 //! `glGet` names.
 
 use super::consts::*;
+use super::get::{put, put_enum, put_flag, row, Kind, StateVar};
 use super::types::*;
 use super::Gl;
 
@@ -217,43 +218,6 @@ impl Gl {
         }
     }
 
-    /// `glGet` names of the fragment stages and buffers (GL 1.1 tables 6.15–6.17, 6.22, 6.26).
-    pub(crate) fn fragments_query(&self, pname: GLenum, out: &mut [f64]) -> Option<usize> {
-        let f = &self.fragments;
-        let s = &f.stencil;
-        let flag = |b: bool| f64::from(u8::from(b));
-        let one = |v: f64| -> Option<Vec<f64>> { Some(vec![v]) };
-        let values = match pname {
-            GL_STENCIL_FUNC => one(f64::from(s.func)),
-            GL_STENCIL_REF => one(f64::from(s.reference.clamp(0, self.stencil_max() as GLint))),
-            // Unsigned: a mask above 2³¹ − 1 reads as 2³¹ − 1 in glGetIntegerv (measured).
-            GL_STENCIL_VALUE_MASK => one(f64::from(s.value_mask)),
-            GL_STENCIL_FAIL => one(f64::from(s.ops[0])),
-            GL_STENCIL_PASS_DEPTH_FAIL => one(f64::from(s.ops[1])),
-            GL_STENCIL_PASS_DEPTH_PASS => one(f64::from(s.ops[2])),
-            GL_STENCIL_WRITEMASK => one(f64::from(s.write_mask)),
-            GL_STENCIL_CLEAR_VALUE => one(f64::from(f.clear_stencil)),
-            GL_STENCIL_BITS => one(f64::from(f.config.stencil_bits)),
-            GL_ACCUM_RED_BITS | GL_ACCUM_GREEN_BITS | GL_ACCUM_BLUE_BITS | GL_ACCUM_ALPHA_BITS => {
-                one(f64::from(f.config.accum_bits))
-            }
-            GL_ACCUM_CLEAR_VALUE => Some(f.clear_accum.iter().map(|&c| f64::from(c)).collect()),
-            GL_DEPTH_WRITEMASK => one(flag(f.depth_write)),
-            GL_COLOR_WRITEMASK => Some(f.color_write.iter().map(|&b| flag(b)).collect()),
-            GL_SCISSOR_BOX => Some(f.scissor.iter().map(|&c| f64::from(c)).collect()),
-            GL_LOGIC_OP_MODE => one(f64::from(f.logic_op)),
-            GL_DRAW_BUFFER => one(f64::from(f.draw_buffer)),
-            GL_READ_BUFFER => one(f64::from(f.read_buffer)),
-            GL_DOUBLEBUFFER => one(flag(f.config.double)),
-            GL_STEREO => one(0.0),
-            _ => None,
-        }?;
-        for (o, v) in out.iter_mut().zip(&values) {
-            *o = *v;
-        }
-        Some(values.len())
-    }
-
     /// Records a buffer swap in a double-buffered context (`glutSwapBuffers`); nothing in a
     /// single-buffered one. Inside `begin`/`end` GL would end the primitive's frame: ignored.
     pub fn record_swap_buffers(&mut self) {
@@ -298,6 +262,35 @@ impl Gl {
         }
     }
 }
+
+/// The fragment stages' and buffers' `glGet` rows (GL 1.1 tables 6.12, 6.13 and 6.19). The
+/// stencil reference reads clamped to the buffer's range; the value mask is unsigned, so one
+/// above 2³¹ − 1 reads as 2³¹ − 1 in `glGetIntegerv` (measured).
+pub(crate) static GET_ROWS: &[StateVar] = &[
+    row(GL_SCISSOR_BOX, 4, Kind::Int, |gl, o| put(o, &gl.fragments.scissor)),
+    row(GL_STENCIL_FUNC, 1, Kind::Int, |gl, o| put_enum(o, gl.fragments.stencil.func)),
+    row(GL_STENCIL_VALUE_MASK, 1, Kind::Int, |gl, o| o[0] = f64::from(gl.fragments.stencil.value_mask)),
+    row(GL_STENCIL_REF, 1, Kind::Int, |gl, o| {
+        o[0] = f64::from(gl.fragments.stencil.reference.clamp(0, gl.stencil_max() as GLint))
+    }),
+    row(GL_STENCIL_FAIL, 1, Kind::Int, |gl, o| put_enum(o, gl.fragments.stencil.ops[0])),
+    row(GL_STENCIL_PASS_DEPTH_FAIL, 1, Kind::Int, |gl, o| put_enum(o, gl.fragments.stencil.ops[1])),
+    row(GL_STENCIL_PASS_DEPTH_PASS, 1, Kind::Int, |gl, o| put_enum(o, gl.fragments.stencil.ops[2])),
+    row(GL_LOGIC_OP_MODE, 1, Kind::Int, |gl, o| put_enum(o, gl.fragments.logic_op)),
+    row(GL_DRAW_BUFFER, 1, Kind::Int, |gl, o| put_enum(o, gl.fragments.draw_buffer)),
+    row(GL_READ_BUFFER, 1, Kind::Int, |gl, o| put_enum(o, gl.fragments.read_buffer)),
+    row(GL_COLOR_WRITEMASK, 4, Kind::Bool, |gl, o| put(o, &gl.fragments.color_write.map(u8::from))),
+    row(GL_DEPTH_WRITEMASK, 1, Kind::Bool, |gl, o| put_flag(o, gl.fragments.depth_write)),
+    row(GL_STENCIL_WRITEMASK, 1, Kind::Int, |gl, o| o[0] = f64::from(gl.fragments.stencil.write_mask)),
+    row(GL_STENCIL_CLEAR_VALUE, 1, Kind::Int, |gl, o| o[0] = f64::from(gl.fragments.clear_stencil)),
+    row(GL_ACCUM_CLEAR_VALUE, 4, Kind::Normalized, |gl, o| put(o, &gl.fragments.clear_accum)),
+    row(GL_DOUBLEBUFFER, 1, Kind::Bool, |gl, o| put_flag(o, gl.fragments.config.double)),
+    row(GL_STENCIL_BITS, 1, Kind::Int, |gl, o| o[0] = f64::from(gl.fragments.config.stencil_bits)),
+    row(GL_ACCUM_RED_BITS, 1, Kind::Int, |gl, o| o[0] = f64::from(gl.fragments.config.accum_bits)),
+    row(GL_ACCUM_GREEN_BITS, 1, Kind::Int, |gl, o| o[0] = f64::from(gl.fragments.config.accum_bits)),
+    row(GL_ACCUM_BLUE_BITS, 1, Kind::Int, |gl, o| o[0] = f64::from(gl.fragments.config.accum_bits)),
+    row(GL_ACCUM_ALPHA_BITS, 1, Kind::Int, |gl, o| o[0] = f64::from(gl.fragments.config.accum_bits)),
+];
 
 #[cfg(test)]
 mod tests {

@@ -4,6 +4,7 @@
 //! (checked against OSMesa: an unknown mode or target → `GL_INVALID_ENUM`).
 
 use super::consts::*;
+use super::get::{put_enum, row, Kind, StateVar};
 use super::lists::ListCommand;
 use super::types::*;
 use super::Gl;
@@ -43,12 +44,23 @@ impl Gl {
             _ => self.set_error(GL_INVALID_ENUM),
         }
     }
-
-    /// `glGet` of a hint target.
-    pub(crate) fn hint_query(&self, pname: GLenum) -> Option<f64> {
-        self.hints.get(pname).map(f64::from)
-    }
 }
+
+/// `glGet` of a hint (GL 1.1 table 6.16).
+macro_rules! hint_row {
+    ($target:expr) => {
+        row($target, 1, Kind::Int, |gl, o| put_enum(o, gl.hints.get($target).unwrap_or(0)))
+    };
+}
+
+/// The hints' `glGet` rows.
+pub(crate) static GET_ROWS: &[StateVar] = &[
+    hint_row!(GL_PERSPECTIVE_CORRECTION_HINT),
+    hint_row!(GL_POINT_SMOOTH_HINT),
+    hint_row!(GL_LINE_SMOOTH_HINT),
+    hint_row!(GL_POLYGON_SMOOTH_HINT),
+    hint_row!(GL_FOG_HINT),
+];
 
 #[cfg(test)]
 mod tests {

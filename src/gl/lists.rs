@@ -19,6 +19,7 @@
 use super::bitmap::BitmapCall;
 use super::consts::*;
 use super::frame::Call;
+use super::get::{put_enum, row, Kind, StateVar};
 use super::mesh_job::MeshJob;
 use super::pixels::PixelStore;
 use super::types::*;
@@ -378,18 +379,9 @@ impl Gl {
         self.lists.base = base;
     }
 
-    /// The list `glGet(GL_LIST_INDEX)`, `GL_LIST_MODE`, `GL_LIST_BASE` and
-    /// `GL_MAX_LIST_NESTING` report.
-    pub(crate) fn list_query(&self, pname: GLenum) -> Option<f64> {
-        let compiling = self.lists.compiling.as_ref();
-        let value = match pname {
-            GL_LIST_INDEX => compiling.map_or(0, |c| c.name),
-            GL_LIST_MODE => compiling.map_or(0, |c| if c.execute { GL_COMPILE_AND_EXECUTE } else { GL_COMPILE }),
-            GL_LIST_BASE => self.lists.base,
-            GL_MAX_LIST_NESTING => MAX_LIST_NESTING as u32,
-            _ => return None,
-        };
-        Some(f64::from(value))
+    /// Whether a list is being compiled (`glNewList` without its `glEndList` yet).
+    pub(crate) fn compiling_list(&self) -> bool {
+        self.lists.compiling.is_some()
     }
 
     fn execute_list(&mut self, name: GLuint) {
@@ -554,6 +546,17 @@ fn list_offset(type_: GLenum, b: &[u8]) -> i32 {
         _ => big(b),
     }
 }
+
+/// The lists' `glGet` rows (GL 1.1 table 6.20): the list being compiled (0 and 0 when none)
+/// and the base.
+pub(crate) static GET_ROWS: &[StateVar] = &[
+    row(GL_LIST_BASE, 1, Kind::Int, |gl, o| put_enum(o, gl.lists.base)),
+    row(GL_LIST_INDEX, 1, Kind::Int, |gl, o| put_enum(o, gl.lists.compiling.as_ref().map_or(0, |c| c.name))),
+    row(GL_LIST_MODE, 1, Kind::Int, |gl, o| {
+        let mode = |c: &Compiling| if c.execute { GL_COMPILE_AND_EXECUTE } else { GL_COMPILE };
+        put_enum(o, gl.lists.compiling.as_ref().map_or(0, mode))
+    }),
+];
 
 #[cfg(test)]
 mod tests {

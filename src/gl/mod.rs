@@ -430,18 +430,6 @@ impl Gl {
         }
     }
 
-    /// The areas' own `glGet` answers (`AREA_query(&self, pname, out: &mut [f64]) ->
-    /// Option<usize>` functions): for the names the state table (`get/table.rs`) sends to a hook,
-    /// or does not list. Each writes its values into `out` (16 long, `get::MAX_VALUES`) and says
-    /// how many, `None` for a name that is not its; chain them here as
-    /// `self.stencil_query(pname, out).or_else(|| self.arrays_query(pname, out))`.
-    fn query(&self, pname: GLenum, out: &mut [f64]) -> Option<usize> {
-        self.arrays_query(pname, out)
-            .or_else(|| self.select_query(pname, out))
-            .or_else(|| self.pixels_query(pname, out))
-            .or_else(|| self.fragments_query(pname, out))
-    }
-
     /// Records `code` unless an earlier error is still pending (GL's sticky flag; Mesa's `_mesa_error`).
     pub(crate) fn set_error(&mut self, code: GLenum) {
         if self.error == GL_NO_ERROR {

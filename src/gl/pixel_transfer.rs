@@ -11,6 +11,7 @@
 //! `gl_pixel_attrib` holds no maps; measured: a map set between push and pop stays).
 
 use super::consts::*;
+use super::get::{int_limit, limit, put_flag, row, Kind, StateVar};
 use super::lists::ListCommand;
 use super::pixel_commands::PixelCommand;
 use super::types::*;
@@ -338,37 +339,6 @@ impl Gl {
         })
     }
 
-    /// `glGet` of the pixel transfer and zoom state (GL 1.1 table 6.17 and 6.18): the values,
-    /// the map sizes and `GL_MAX_PIXEL_MAP_TABLE`.
-    pub(crate) fn pixel_transfer_query(&self, pname: GLenum, out: &mut [f64]) -> Option<usize> {
-        let mode = &self.pixel_state.mode;
-        let value = match pname {
-            GL_MAP_COLOR => f64::from(u8::from(mode.map_color)),
-            GL_MAP_STENCIL => f64::from(u8::from(mode.map_stencil)),
-            GL_INDEX_SHIFT => f64::from(mode.index_shift),
-            GL_INDEX_OFFSET => f64::from(mode.index_offset),
-            GL_DEPTH_SCALE => f64::from(mode.depth.scale),
-            GL_DEPTH_BIAS => f64::from(mode.depth.bias),
-            GL_ZOOM_X => f64::from(mode.zoom[0]),
-            GL_ZOOM_Y => f64::from(mode.zoom[1]),
-            GL_MAX_PIXEL_MAP_TABLE => MAX_PIXEL_MAP_TABLE as f64,
-            GL_PIXEL_MAP_I_TO_I_SIZE..=GL_PIXEL_MAP_A_TO_A_SIZE => {
-                self.pixel_state.maps[(pname - GL_PIXEL_MAP_I_TO_I_SIZE) as usize].len() as f64
-            }
-            _ => match scale_or_bias(pname)? {
-                (false, k) => f64::from(mode.scale[k]),
-                (true, k) => f64::from(mode.bias[k]),
-            },
-        };
-        *out.first_mut()? = value;
-        Some(1)
-    }
-
-    /// The pixel area's `glGet` names: transfer, zoom and maps, and the colour-index state.
-    pub(crate) fn pixels_query(&self, pname: GLenum, out: &mut [f64]) -> Option<usize> {
-        self.pixel_transfer_query(pname, out).or_else(|| self.color_index_query(pname, out))
-    }
-
     /// What `glPushAttrib` saves of the pixel area, whatever the mask.
     pub(crate) fn pixel_attrib(&self) -> PixelAttrib {
         (self.pixel_state.mode, self.color_index)
@@ -404,6 +374,53 @@ fn scale_or_bias(pname: GLenum) -> Option<(bool, usize)> {
         _ => return None,
     })
 }
+
+/// `glGet` of a transfer value: `GL_PIXEL_MODE_BIT`'s fields (GL 1.1 table 6.17).
+macro_rules! mode_row {
+    ($name:expr, $kind:ident, $($field:tt)+) => {
+        row($name, 1, Kind::$kind, |gl, o| o[0] = f64::from(gl.pixel_state.mode.$($field)+))
+    };
+}
+
+/// `glGet` of a map's size (GL 1.1 table 6.18).
+macro_rules! map_size_row {
+    ($name:expr) => {
+        row($name, 1, Kind::Int, |gl, o| {
+            o[0] = gl.pixel_state.maps[($name - GL_PIXEL_MAP_I_TO_I_SIZE) as usize].len() as f64
+        })
+    };
+}
+
+/// The pixel transfer, zoom and map rows of `glGet`.
+pub(crate) static GET_ROWS: &[StateVar] = &[
+    row(GL_MAP_COLOR, 1, Kind::Bool, |gl, o| put_flag(o, gl.pixel_state.mode.map_color)),
+    row(GL_MAP_STENCIL, 1, Kind::Bool, |gl, o| put_flag(o, gl.pixel_state.mode.map_stencil)),
+    mode_row!(GL_INDEX_SHIFT, Int, index_shift),
+    mode_row!(GL_INDEX_OFFSET, Int, index_offset),
+    mode_row!(GL_RED_SCALE, Float, scale[0]),
+    mode_row!(GL_GREEN_SCALE, Float, scale[1]),
+    mode_row!(GL_BLUE_SCALE, Float, scale[2]),
+    mode_row!(GL_ALPHA_SCALE, Float, scale[3]),
+    mode_row!(GL_DEPTH_SCALE, Float, depth.scale),
+    mode_row!(GL_RED_BIAS, Float, bias[0]),
+    mode_row!(GL_GREEN_BIAS, Float, bias[1]),
+    mode_row!(GL_BLUE_BIAS, Float, bias[2]),
+    mode_row!(GL_ALPHA_BIAS, Float, bias[3]),
+    mode_row!(GL_DEPTH_BIAS, Float, depth.bias),
+    mode_row!(GL_ZOOM_X, Float, zoom[0]),
+    mode_row!(GL_ZOOM_Y, Float, zoom[1]),
+    map_size_row!(GL_PIXEL_MAP_I_TO_I_SIZE),
+    map_size_row!(GL_PIXEL_MAP_S_TO_S_SIZE),
+    map_size_row!(GL_PIXEL_MAP_I_TO_R_SIZE),
+    map_size_row!(GL_PIXEL_MAP_I_TO_G_SIZE),
+    map_size_row!(GL_PIXEL_MAP_I_TO_B_SIZE),
+    map_size_row!(GL_PIXEL_MAP_I_TO_A_SIZE),
+    map_size_row!(GL_PIXEL_MAP_R_TO_R_SIZE),
+    map_size_row!(GL_PIXEL_MAP_G_TO_G_SIZE),
+    map_size_row!(GL_PIXEL_MAP_B_TO_B_SIZE),
+    map_size_row!(GL_PIXEL_MAP_A_TO_A_SIZE),
+    int_limit!(GL_MAX_PIXEL_MAP_TABLE, MAX_PIXEL_MAP_TABLE),
+];
 
 #[cfg(test)]
 mod tests {

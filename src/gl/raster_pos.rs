@@ -8,6 +8,7 @@
 //! `GL_LIGHTING` on, GL lights the raster colour; gleval keeps the current colour.
 
 use super::consts::*;
+use super::get::{put, put_flag, row, Kind, StateVar};
 use super::lists::ListCommand;
 use super::types::*;
 use super::Gl;
@@ -211,30 +212,16 @@ impl Gl {
         self.raster_pos.window[0] += dx;
         self.raster_pos.window[1] += dy;
     }
-
-    /// The raster position's `glGet` answers.
-    pub(crate) fn raster_pos_query(&self, pname: GLenum, out: &mut [f64; 4]) -> Option<usize> {
-        let r = &self.raster_pos;
-        let four = |out: &mut [f64; 4], v: [f32; 4]| {
-            *out = v.map(f64::from);
-            Some(4)
-        };
-        match pname {
-            GL_CURRENT_RASTER_POSITION => four(out, r.window),
-            GL_CURRENT_RASTER_COLOR => four(out, r.color.map(|c| c.clamp(0.0, 1.0))),
-            GL_CURRENT_RASTER_TEXTURE_COORDS => four(out, r.tex_coord),
-            GL_CURRENT_RASTER_POSITION_VALID | GL_CURRENT_RASTER_DISTANCE => {
-                out[0] = if pname == GL_CURRENT_RASTER_DISTANCE {
-                    f64::from(r.distance)
-                } else {
-                    f64::from(u8::from(r.valid))
-                };
-                Some(1)
-            }
-            _ => None,
-        }
-    }
 }
+
+/// The raster position's `glGet` rows (GL 1.1 table 6.3; the colour reads clamped, as Mesa's).
+pub(crate) static GET_ROWS: &[StateVar] = &[
+    row(GL_CURRENT_RASTER_POSITION, 4, Kind::Float, |gl, o| put(o, &gl.raster_pos.window)),
+    row(GL_CURRENT_RASTER_DISTANCE, 1, Kind::Float, |gl, o| o[0] = f64::from(gl.raster_pos.distance)),
+    row(GL_CURRENT_RASTER_COLOR, 4, Kind::Normalized, |gl, o| put(o, &gl.raster_pos.color.map(|c| c.clamp(0.0, 1.0)))),
+    row(GL_CURRENT_RASTER_TEXTURE_COORDS, 4, Kind::Float, |gl, o| put(o, &gl.raster_pos.tex_coord)),
+    row(GL_CURRENT_RASTER_POSITION_VALID, 1, Kind::Bool, |gl, o| put_flag(o, gl.raster_pos.valid)),
+];
 
 #[cfg(test)]
 mod tests {

@@ -15,6 +15,7 @@
 
 use super::consts::*;
 use super::feedback_prims::FeedbackPrimitive;
+use super::get::{int_limit, limit, row, Kind, StateVar};
 use super::lists::ListCommand;
 use super::types::*;
 use super::Gl;
@@ -240,19 +241,14 @@ impl Gl {
             self.set_error(GL_STACK_UNDERFLOW);
         }
     }
-
-    /// Selection's and the render mode's `glGet` answers.
-    pub(crate) fn select_query(&self, pname: GLenum, out: &mut [f64]) -> Option<usize> {
-        let value = match pname {
-            GL_SELECTION_BUFFER_SIZE => self.select.size as f64,
-            GL_NAME_STACK_DEPTH => self.select.names.len() as f64,
-            GL_MAX_NAME_STACK_DEPTH => MAX_NAME_STACK_DEPTH as f64,
-            _ => self.feedback_query(pname)?,
-        };
-        *out.first_mut()? = value;
-        Some(1)
-    }
 }
+
+/// Selection's `glGet` rows (GL 1.1 tables 6.18 and 6.20).
+pub(crate) static GET_ROWS: &[StateVar] = &[
+    row(GL_SELECTION_BUFFER_SIZE, 1, Kind::Int, |gl, o| o[0] = gl.select.size as f64),
+    row(GL_NAME_STACK_DEPTH, 1, Kind::Int, |gl, o| o[0] = gl.select.names.len() as f64),
+    int_limit!(GL_MAX_NAME_STACK_DEPTH, MAX_NAME_STACK_DEPTH),
+];
 
 #[cfg(test)]
 mod tests {

@@ -9,6 +9,7 @@
 //! per version and samples it with GL's filters and wrap modes.
 
 use super::consts::*;
+use super::get::{int_limit, limit, put_enum, row, Kind, StateVar};
 use super::lists::ListCommand;
 use super::pixel_unpack::{format_and_type_error, format_components, unpack_each};
 use super::texgen::{TexGen, TexGenState};
@@ -724,16 +725,6 @@ impl Gl {
         self.touch_state();
     }
 
-    /// `glGetIntegerv(GL_TEXTURE_BINDING_1D/2D)`.
-    pub(crate) fn texture_query(&self, pname: GLenum) -> Option<f64> {
-        match pname {
-            GL_TEXTURE_BINDING_1D => Some(f64::from(self.textures.bound[0])),
-            GL_TEXTURE_BINDING_2D => Some(f64::from(self.textures.bound[1])),
-            GL_MAX_TEXTURE_SIZE => Some(f64::from(MAX_TEXTURE_SIZE)),
-            _ => None,
-        }
-    }
-
     pub(super) fn bound_object(&self, dims: u8) -> &TextureObject {
         let t = usize::from(dims - 1);
         match self.textures.bound[t] {
@@ -825,6 +816,13 @@ fn complete_chain(levels: &[Option<TexLevel>], formats: &[GLenum], params: &TexP
     }
     Some(Arc::new(chain))
 }
+
+/// The texture bindings' `glGet` rows (GL 1.1 table 6.9) and the size limit.
+pub(crate) static GET_ROWS: &[StateVar] = &[
+    row(GL_TEXTURE_BINDING_1D, 1, Kind::Int, |gl, o| put_enum(o, gl.textures.bound[0])),
+    row(GL_TEXTURE_BINDING_2D, 1, Kind::Int, |gl, o| put_enum(o, gl.textures.bound[1])),
+    int_limit!(GL_MAX_TEXTURE_SIZE, MAX_TEXTURE_SIZE),
+];
 
 #[cfg(test)]
 mod tests {

@@ -124,20 +124,7 @@ def run_one(piglit, gl, platform, timeout, argv, concurrent):
         command = [os.path.join(ROOT, "capi", "gleval-run")] + command
     if not os.path.isfile(os.path.join(piglit, "bin", argv[0])):
         return "missing", 0.0, f"{argv[0]}: not in the package\n"
-    result = attempt(command, env, timeout)
-    # About one start in thirty under gleval with two tests at once, waffle's XOpenDisplay
-    # fails right after connecting (never seen on Mesa, nor one test at a time; cause not
-    # found, docs/conformance.md): such a start is tried again, up to three times, and noted.
-    for _ in range(3):
-        if "XOpenDisplay failed" not in result[2]:
-            break
-        time.sleep(1)
-        retried = attempt(command, env, timeout)
-        result = retried[0], retried[1], "(retried after: XOpenDisplay failed)\n" + retried[2]
-    if "XOpenDisplay failed" in result[2]:
-        # Never connected: the test did not run (not a result of the GL under test).
-        return "noconnect", result[1], result[2]
-    return result
+    return attempt(command, env, timeout)
 
 
 def attempt(command, env, timeout):
@@ -279,7 +266,7 @@ def expected(args):
     return 0
 
 
-KINDS = ["pass", "fail", "skip", "warn", "crash", "timeout", "missing", "noconnect"]
+KINDS = ["pass", "fail", "skip", "warn", "crash", "timeout", "missing"]
 
 
 def check(args):
@@ -294,9 +281,7 @@ def check(args):
         if len(fields) > 1:
             expected[fields[0]] = dict(zip(header[1:], fields[1:]))
     got = read(args.results)
-    lost = [n for n, e in expected.items() if e.get(args.column) == "pass" and got.get(n) not in ("pass", "noconnect")]
-    for n in [n for n, r in got.items() if r == "noconnect"]:
-        print(f"NOT RUN (waffle's XOpenDisplay failed on every try): {n}")
+    lost = [n for n, e in expected.items() if e.get(args.column) == "pass" and got.get(n) != "pass"]
     # A crash or a hang is a defect whatever the test.
     broken = [n for n, r in got.items() if r.startswith("crash") or r == "timeout"]
     broken = [n for n in broken if expected.get(n, {}).get(args.column) != got[n]]

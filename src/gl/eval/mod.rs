@@ -10,6 +10,7 @@ mod target;
 pub use target::{MapTarget, Slot};
 
 use super::consts::*;
+use super::get::{put, row, Kind, StateVar};
 use super::types::*;
 use crate::gl::lists::ListCommand;
 pub(crate) use map::Map;
@@ -179,21 +180,18 @@ impl EvalState {
             &self.map2[slot as usize]
         }
     }
-
-    /// `glGet` of the grid state; `None` for other names.
-    pub fn grid_query(&self, pname: GLenum, out: &mut [f64; 4]) -> Option<usize> {
-        let (u, v) = self.grid2;
-        let values: &[f64] = match pname {
-            GL_MAP1_GRID_DOMAIN => &[self.grid1.a.into(), self.grid1.b.into()],
-            GL_MAP1_GRID_SEGMENTS => &[self.grid1.n.into()],
-            GL_MAP2_GRID_DOMAIN => &[u.a.into(), u.b.into(), v.a.into(), v.b.into()],
-            GL_MAP2_GRID_SEGMENTS => &[u.n.into(), v.n.into()],
-            _ => return None,
-        };
-        out[..values.len()].copy_from_slice(values);
-        Some(values.len())
-    }
 }
+
+/// The grids' `glGet` rows (GL 1.1 table 6.15; the maps themselves through `glGetMap`).
+pub(crate) static GET_ROWS: &[StateVar] = &[
+    row(GL_MAP1_GRID_DOMAIN, 2, Kind::Float, |gl, o| put(o, &[gl.eval.grid1.a, gl.eval.grid1.b])),
+    row(GL_MAP2_GRID_DOMAIN, 4, Kind::Float, |gl, o| {
+        let (u, v) = gl.eval.grid2;
+        put(o, &[u.a, u.b, v.a, v.b])
+    }),
+    row(GL_MAP1_GRID_SEGMENTS, 1, Kind::Int, |gl, o| o[0] = f64::from(gl.eval.grid1.n)),
+    row(GL_MAP2_GRID_SEGMENTS, 2, Kind::Int, |gl, o| put(o, &[gl.eval.grid2.0.n, gl.eval.grid2.1.n])),
+];
 
 impl super::Gl {
     /// `glMapGrid1f`: `un` < 1 → `GL_INVALID_VALUE`. A zero-length or reversed domain is allowed.

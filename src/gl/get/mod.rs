@@ -1,14 +1,14 @@
 //! `glGetBooleanv`, `glGetIntegerv`, `glGetFloatv`, `glGetDoublev` (GL 1.1 spec §6.1.2):
 //! every variant reads the one table of state variables in [`table`] (name, count, how Mesa
-//! stores it, where it lives), then the capabilities `glIsEnabled` knows, then the areas' own
-//! answers ([`Gl::query`](super::Gl)); each converts as Mesa 22.3's `main/get.c` does.
+//! stores it, where it lives; rows kept beside the state they read), then the capabilities
+//! `glIsEnabled` knows; each converts as Mesa 22.3's `main/get.c` does.
 
 mod table;
 
 use super::consts::*;
 use super::types::*;
 use super::Gl;
-pub(crate) use table::{Kind, Source, StateVar, STATE};
+pub(crate) use table::{int_limit, limit, put, put_enum, put_flag, row, rows, Kind, StateVar};
 
 /// The most values one `glGet` name has (a matrix).
 pub(crate) const MAX_VALUES: usize = 16;
@@ -124,21 +124,36 @@ impl Gl {
         Some(a)
     }
 
-    /// The table's row, then a capability, then the areas' answers.
+    /// The name's row, else the capability of that name.
     fn lookup(&self, pname: GLenum) -> Option<Answer> {
         let mut values = [0.0; MAX_VALUES];
-        let row = STATE.iter().find(|v| v.name == pname);
-        if let Some(StateVar { count, kind, source: Source::Read(read), .. }) = row {
+        if let Some(StateVar { count, kind, read, .. }) = rows().find(|v| v.name == pname) {
             read(self, &mut values);
             return Some(Answer { values, count: *count, kind: *kind });
         }
-        if row.is_none() && self.is_capability(pname) {
+        if self.is_capability(pname) {
             values[0] = f64::from(u8::from(self.capability(pname)));
             return Some(Answer { values, count: 1, kind: Kind::Bool });
         }
-        let count = self.query(pname, &mut values)?;
-        // A name the areas answer without a row converts as a float (integers are unchanged).
-        let kind = row.map_or(Kind::Float, |r| r.kind);
-        Some(Answer { values, count, kind })
+        None
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn each_name_has_one_row_and_is_no_capability() {
+        let gl = Gl::new(4, 4);
+        let mut names: Vec<GLenum> = rows().map(|r| r.name).collect();
+        for r in rows() {
+            assert!(r.count >= 1 && r.count <= MAX_VALUES, "{:#x}", r.name);
+            assert!(!gl.is_capability(r.name), "{:#x} is a row and a capability", r.name);
+        }
+        let all = names.len();
+        names.sort_unstable();
+        names.dedup();
+        assert_eq!(names.len(), all, "a name with two rows");
     }
 }
