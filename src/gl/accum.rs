@@ -20,12 +20,12 @@ impl Gl {
         if !matches!(op, GL_ACCUM | GL_LOAD | GL_ADD | GL_MULT | GL_RETURN) {
             return self.set_error(GL_INVALID_ENUM);
         }
-        if self.fragments.config.accum_bits == 0 {
+        if self.server.fragments.config.accum_bits == 0 {
             return self.set_error(GL_INVALID_OPERATION);
         }
         let tests = self.fragment_tests();
-        let read = self.buffers_of(self.fragments.read_buffer);
-        self.frame.commands.push(Command::Accum { op, value, tests, read });
+        let read = self.buffers_of(self.server.fragments.read_buffer);
+        self.recorder.frame.commands.push(Command::Accum { op, value, tests, read });
     }
 
     /// `glClearAccum`: the value `glClear(GL_ACCUM_BUFFER_BIT)` writes, each component clamped
@@ -34,7 +34,7 @@ impl Gl {
         if self.compiled_fragment(FragmentCall::ClearAccum([red, green, blue, alpha])) {
             return;
         }
-        self.fragments.clear_accum = [red, green, blue, alpha].map(|c| c.clamp(-1.0, 1.0));
+        self.server.fragments.clear_accum = [red, green, blue, alpha].map(|c| c.clamp(-1.0, 1.0));
     }
 }
 

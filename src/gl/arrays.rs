@@ -397,7 +397,7 @@ impl Gl {
         if !which.accepts_size(size) {
             return self.set_error(GL_INVALID_VALUE);
         }
-        let array = &mut self.arrays.arrays[which as usize];
+        let array = &mut self.client.arrays.arrays[which as usize];
         (array.size, array.type_, array.stride, array.pointer) = (size, type_, stride, pointer);
     }
 
@@ -416,7 +416,7 @@ impl Gl {
         if self.reject_inside_begin_end() {
             return;
         }
-        if !self.arrays.set_enabled(array, on) {
+        if !self.client.arrays.set_enabled(array, on) {
             self.set_error(GL_INVALID_ENUM);
         }
     }
@@ -427,12 +427,12 @@ impl Gl {
         if self.compiled(|| ListCommand::EdgeFlag(flag)) {
             return;
         }
-        self.arrays.edge_flag = flag == GL_TRUE;
+        self.client.arrays.edge_flag = flag == GL_TRUE;
     }
 
     /// The current edge flag, which each vertex issued takes.
     pub(crate) fn edge_flag_value(&self) -> bool {
-        self.arrays.edge_flag
+        self.client.arrays.edge_flag
     }
 
     /// `glEdgeFlagv(flag)`: `flag` needs one value.
@@ -445,7 +445,7 @@ impl Gl {
     /// `glArrayElement(i)`: element `i` of every enabled array, as the immediate calls (allowed
     /// inside `begin`/`end`; compiled into lists as those calls).
     pub fn array_element(&mut self, i: GLint) {
-        match self.arrays.element(i64::from(i)) {
+        match self.client.arrays.element(i64::from(i)) {
             Some(e) => self.issue(&e, false),
             None => self.set_error(GL_INVALID_VALUE),
         }
@@ -530,15 +530,15 @@ impl Gl {
 
     /// Begin, the elements, end; the current values are restored after.
     fn draw_indexed(&mut self, mode: GLenum, indices: Vec<i64>) {
-        let elements: Option<Vec<Element>> = indices.into_iter().map(|i| self.arrays.element(i)).collect();
+        let elements: Option<Vec<Element>> = indices.into_iter().map(|i| self.client.arrays.element(i)).collect();
         let Some(elements) = elements else { return self.set_error(GL_INVALID_VALUE) };
-        let (current, edge_flag) = (self.current, self.arrays.edge_flag);
+        let (current, edge_flag) = (self.server.current, self.client.arrays.edge_flag);
         self.begin(mode);
         for e in &elements {
             self.issue(e, true);
         }
         self.end();
-        (self.current, self.arrays.edge_flag) = (current, edge_flag);
+        (self.server.current, self.client.arrays.edge_flag) = (current, edge_flag);
     }
 
     /// `glInterleavedArrays(format, stride, pointer)`: sets the vertex, and as the format says
@@ -566,7 +566,7 @@ impl Gl {
                 (a.size, a.type_, a.stride, a.pointer) = (size, type_, stride, at(offset));
             }
         };
-        let [vertex, normal, color, index, tex, edge] = &mut self.arrays.arrays;
+        let [vertex, normal, color, index, tex, edge] = &mut self.client.arrays.arrays;
         edge.enabled = false;
         index.enabled = false;
         set(tex, layout.tex > 0, layout.tex, GL_FLOAT, 0);
@@ -586,7 +586,7 @@ impl Gl {
             return None;
         }
         let which = Which::ALL.into_iter().find(|w| w.pointer_name() == pname)?;
-        self.arrays.get(which).pointer.clone()
+        self.client.arrays.get(which).pointer.clone()
     }
 
     /// The error `glGetPointerv(pname)` raises now (inside `begin`/`end`, then an unknown
@@ -617,14 +617,14 @@ impl Gl {
 
     /// `glPushClientAttrib`'s vertex-array half: saves the arrays when `mask` asks.
     pub(crate) fn push_client_arrays(&mut self, mask: GLbitfield) {
-        let saved = (mask & GL_CLIENT_VERTEX_ARRAY_BIT != 0).then(|| Box::new(self.arrays.arrays.clone()));
-        self.arrays.saved.push(saved);
+        let saved = (mask & GL_CLIENT_VERTEX_ARRAY_BIT != 0).then(|| Box::new(self.client.arrays.arrays.clone()));
+        self.client.arrays.saved.push(saved);
     }
 
     /// `glPopClientAttrib`'s vertex-array half.
     pub(crate) fn pop_client_arrays(&mut self) {
-        if let Some(Some(arrays)) = self.arrays.saved.pop() {
-            self.arrays.arrays = *arrays;
+        if let Some(Some(arrays)) = self.client.arrays.saved.pop() {
+            self.client.arrays.arrays = *arrays;
         }
     }
 }
@@ -632,13 +632,13 @@ impl Gl {
 /// `glGet` of an array's size, type or stride (GL 1.1 table 6.6; the enables are capabilities).
 macro_rules! array_row {
     ($name:expr, $which:ident . $field:ident) => {
-        row($name, 1, Kind::Int, |gl, o| o[0] = f64::from(gl.arrays.get(Which::$which).$field))
+        row($name, 1, Kind::Int, |gl, o| o[0] = f64::from(gl.client.arrays.get(Which::$which).$field))
     };
 }
 
 /// The arrays' `glGet` rows, and the current edge flag's (table 6.3), which lives here.
 pub(crate) static GET_ROWS: &[StateVar] = &[
-    row(GL_EDGE_FLAG, 1, Kind::Bool, |gl, o| put_flag(o, gl.arrays.edge_flag)),
+    row(GL_EDGE_FLAG, 1, Kind::Bool, |gl, o| put_flag(o, gl.client.arrays.edge_flag)),
     array_row!(GL_VERTEX_ARRAY_SIZE, Vertex.size),
     array_row!(GL_VERTEX_ARRAY_TYPE, Vertex.type_),
     array_row!(GL_VERTEX_ARRAY_STRIDE, Vertex.stride),

@@ -3,11 +3,12 @@
 //! with the enables GL files under it. GLU saves `GL_EVAL_BIT` around its drawing
 //! (`glcurveval.cc`, `glsurfeval.cc`); GLUT's teapot saves `GL_ENABLE_BIT | GL_EVAL_BIT`.
 //!
-//! Kept: current (colour, normal, texture coordinates), point, line, polygon, lighting, fog,
-//! polygon stipple, depth buffer, viewport, transform, enable, colour buffer (clear colour, blending, alpha
-//! test), evaluator, list (base) and texture (unit 0's bindings and environment). Groups of
-//! state this façade does not have (stencil, accumulation, pixel modes, scissor, hints) are
-//! accepted and keep nothing.
+//! Kept: every group of GL 1.1's table 6.1: current (colour, normal, texture coordinates, index),
+//! point, line, polygon, polygon stipple, lighting, fog, depth buffer, viewport, transform,
+//! enable, colour buffer (clear colour, blending, alpha test, logic op, masks, draw buffer),
+//! stencil, accumulation, scissor, pixel mode (transfer, zoom, read buffer), hint, evaluator,
+//! list (base) and texture (unit 0's bindings and environment); each area saves and restores
+//! its part (`fragments_attrib`, `pixel_attrib`, `texture_attrib`).
 
 use super::consts::*;
 use super::eval::EvalAttrib;
@@ -134,7 +135,7 @@ fn enables_of(mask: GLbitfield) -> Vec<GLenum> {
 impl Gl {
     /// `GL_ATTRIB_STACK_DEPTH`.
     pub(crate) fn attrib_stack_depth(&self) -> usize {
-        self.attrib_stack.entries.len()
+        self.server.attrib_stack.entries.len()
     }
 
     /// `glPushAttrib(mask)`: saves the groups of `mask`. A full stack → `GL_STACK_OVERFLOW`
@@ -143,11 +144,11 @@ impl Gl {
         if self.compiled(|| ListCommand::PushAttrib(mask)) || self.reject_inside_begin_end() {
             return;
         }
-        if self.attrib_stack.entries.len() >= MAX_ATTRIB_STACK_DEPTH {
+        if self.server.attrib_stack.entries.len() >= MAX_ATTRIB_STACK_DEPTH {
             return self.set_error(GL_STACK_OVERFLOW);
         }
         let saved = self.save_groups(mask);
-        self.attrib_stack.entries.push(saved);
+        self.server.attrib_stack.entries.push(saved);
     }
 
     /// `glPopAttrib`: restores the groups the matching push saved. An empty stack →
@@ -156,7 +157,7 @@ impl Gl {
         if self.compiled(|| ListCommand::PopAttrib) || self.reject_inside_begin_end() {
             return;
         }
-        let Some(saved) = self.attrib_stack.entries.pop() else {
+        let Some(saved) = self.server.attrib_stack.entries.pop() else {
             return self.set_error(GL_STACK_UNDERFLOW);
         };
         self.restore_saved(saved);
@@ -172,9 +173,9 @@ impl Gl {
 
     /// Restores what [`Gl::save_groups`] saved, as `glPopAttrib` does.
     fn restore_saved(&mut self, saved: Saved) {
-        let (materials, tracking) = (self.lighting.materials, self.caps.is_on(GL_COLOR_MATERIAL));
+        let (materials, tracking) = (self.server.lighting.materials, self.server.caps.is_on(GL_COLOR_MATERIAL));
         self.restore_groups(saved);
-        if !tracking && self.caps.is_on(GL_COLOR_MATERIAL) {
+        if !tracking && self.server.caps.is_on(GL_COLOR_MATERIAL) {
             // Mesa's pop enables it through glEnable, which copies the colour.
             self.color_material_enabled();
         }
@@ -185,7 +186,7 @@ impl Gl {
     /// The groups of `mask` as they are now.
     fn save_groups(&mut self, mask: GLbitfield) -> Saved {
         self.flush_current();
-        let r = &self.raster;
+        let r = &self.server.raster;
         let raster = RasterValues {
             point_size: r.point_size,
             line_width: r.line_width,
@@ -199,20 +200,20 @@ impl Gl {
             viewport: (r.viewport, r.depth_range),
             clear_color: r.clear_color,
         };
-        let enables = enables_of(mask).into_iter().map(|cap| (cap, self.caps.is_on(cap))).collect();
+        let enables = enables_of(mask).into_iter().map(|cap| (cap, self.server.caps.is_on(cap))).collect();
         Saved {
             mask,
-            current: self.current,
+            current: self.server.current,
             raster,
-            lighting: (mask & GL_LIGHTING_BIT != 0).then(|| self.lighting.clone()),
-            fragment: self.fragment_ops,
-            matrix_mode: self.matrices.mode(),
+            lighting: (mask & GL_LIGHTING_BIT != 0).then(|| self.server.lighting.clone()),
+            fragment: self.server.fragment_ops,
+            matrix_mode: self.server.matrices.mode(),
             // The evaluator group holds the map enables and GL_AUTO_NORMAL, which
             // GL_ENABLE_BIT saves too.
-            eval: (mask & (GL_EVAL_BIT | GL_ENABLE_BIT) != 0).then(|| self.eval.attrib()),
+            eval: (mask & (GL_EVAL_BIT | GL_ENABLE_BIT) != 0).then(|| self.server.eval.attrib()),
             list_base: self.list_base_value(),
             texture: self.texture_attrib(),
-            hints: self.hints,
+            hints: self.server.hints,
             fragments: self.fragments_attrib(),
             enables,
             pixels: self.pixel_attrib(),
@@ -223,9 +224,9 @@ impl Gl {
         self.restore_pixel_attrib(saved.mask, saved.pixels);
         let (mask, v) = (saved.mask, saved.raster);
         let has = |bit: GLbitfield| mask & bit != 0;
-        let r = &mut self.raster;
+        let r = &mut self.server.raster;
         if has(GL_CURRENT_BIT) {
-            self.current = saved.current;
+            self.server.current = saved.current;
         }
         if has(GL_POINT_BIT) {
             r.point_size = v.point_size;
@@ -251,24 +252,25 @@ impl Gl {
         }
         if has(GL_COLOR_BUFFER_BIT) {
             r.clear_color = v.clear_color;
-            (self.fragment_ops.blend, self.fragment_ops.alpha) = (saved.fragment.blend, saved.fragment.alpha);
+            (self.server.fragment_ops.blend, self.server.fragment_ops.alpha) =
+                (saved.fragment.blend, saved.fragment.alpha);
         }
         if has(GL_FOG_BIT) {
-            self.fragment_ops.fog = saved.fragment.fog;
-            self.fragment_ops.fog_index = saved.fragment.fog_index;
+            self.server.fragment_ops.fog = saved.fragment.fog;
+            self.server.fragment_ops.fog_index = saved.fragment.fog_index;
         }
         if let Some(lighting) = saved.lighting {
-            self.lighting = lighting;
+            self.server.lighting = lighting;
         }
         if has(GL_TRANSFORM_BIT) {
-            self.matrices.set_mode(saved.matrix_mode);
-            self.raster.clip_planes = v.clip_planes;
+            self.server.matrices.set_mode(saved.matrix_mode);
+            self.server.raster.clip_planes = v.clip_planes;
         }
         if has(GL_LIST_BIT) {
             self.set_list_base_value(saved.list_base);
         }
         if has(GL_HINT_BIT) {
-            self.hints = saved.hints;
+            self.server.hints = saved.hints;
         }
         if has(GL_TEXTURE_BIT) {
             self.restore_texture_attrib(saved.texture);
@@ -276,11 +278,11 @@ impl Gl {
         self.restore_fragments(mask, &saved.fragments);
         if let Some(eval) = saved.eval {
             // GL_ENABLE_BIT alone restores the map enables and GL_AUTO_NORMAL, not the grids.
-            let eval = if has(GL_EVAL_BIT) { eval } else { eval.enables_with_grids_of(&self.eval.attrib()) };
-            self.eval.restore(eval);
+            let eval = if has(GL_EVAL_BIT) { eval } else { eval.enables_with_grids_of(&self.server.eval.attrib()) };
+            self.server.eval.restore(eval);
         }
         for (cap, on) in saved.enables {
-            self.caps.set(cap, on);
+            self.server.caps.set(cap, on);
         }
     }
 }
@@ -307,12 +309,12 @@ mod tests {
         // Not saved: the depth test (GL_DEPTH_BUFFER_BIT, GL_ENABLE_BIT).
         gl.enable(GL_DEPTH_TEST);
         gl.pop_attrib();
-        assert_eq!(gl.current.color, [0.5, 0.25, 0.125, 1.0]);
+        assert_eq!(gl.server.current.color, [0.5, 0.25, 0.125, 1.0]);
         assert_eq!((gl.is_enabled(GL_LIGHTING), gl.is_enabled(GL_LIGHT3)), (GL_TRUE, GL_FALSE));
-        assert_eq!(gl.lighting.lights[0].diffuse.to_array(), [0.1, 0.2, 0.3, 1.0]);
-        assert_eq!(gl.raster.shade_model, GL_SMOOTH);
-        assert_eq!(gl.raster.viewport, [0, 0, 10, 10]);
-        assert_eq!(gl.raster.polygon_mode, [GL_FILL, GL_FILL]);
+        assert_eq!(gl.server.lighting.lights[0].diffuse.to_array(), [0.1, 0.2, 0.3, 1.0]);
+        assert_eq!(gl.server.raster.shade_model, GL_SMOOTH);
+        assert_eq!(gl.server.raster.viewport, [0, 0, 10, 10]);
+        assert_eq!(gl.server.raster.polygon_mode, [GL_FILL, GL_FILL]);
         assert_eq!((gl.is_enabled(GL_CULL_FACE), gl.is_enabled(GL_DEPTH_TEST)), (GL_FALSE, GL_TRUE));
         assert_eq!(gl.get_error(), GL_NO_ERROR);
     }
@@ -326,7 +328,7 @@ mod tests {
         gl.polygon_stipple(&[0x0F; 128]);
         gl.enable(GL_POLYGON_STIPPLE);
         gl.pop_attrib();
-        assert_eq!(gl.raster.polygon_stipple, [u32::MAX; 32]);
+        assert_eq!(gl.server.raster.polygon_stipple, [u32::MAX; 32]);
         assert_eq!(gl.is_enabled(GL_POLYGON_STIPPLE), GL_TRUE);
         assert_eq!(gl.get_error(), GL_NO_ERROR);
     }

@@ -92,10 +92,10 @@ impl Gl {
             return self.set_error(GL_INVALID_VALUE);
         }
         let Some(bits) = bits else { return self.set_error(GL_INVALID_VALUE) };
-        if !self.raster_pos.valid {
+        if !self.server.raster_pos.valid {
             return;
         }
-        let [xr, yr, z, _] = self.raster_pos.window;
+        let [xr, yr, z, _] = self.server.raster_pos.window;
         let x0 = (xr + BITMAP_EPSILON - call.origin.0).floor() as i32;
         let y0 = (yr + BITMAP_EPSILON - call.origin.1).floor() as i32;
         let w = width as usize;
@@ -105,7 +105,7 @@ impl Gl {
             // such pixels lie off the window either way.
             [x0.saturating_add(i), y0.saturating_add(j)]
         });
-        let color = self.raster_pos.color.map(|c| c.clamp(0.0, 1.0));
+        let color = self.server.raster_pos.color.map(|c| c.clamp(0.0, 1.0));
         let fragments: Vec<_> = pixels.map(|p| (p, color, z)).collect();
         if !self.feedback_raster_token(GL_BITMAP_TOKEN) {
             self.record_fragments(&fragments);
@@ -155,19 +155,19 @@ impl Gl {
             return self.set_error(code);
         }
         let Some(rgba) = rgba else { return self.set_error(GL_INVALID_VALUE) };
-        if !self.raster_pos.valid || self.feedback_raster_token(GL_DRAW_PIXEL_TOKEN) || rgba.is_empty() {
+        if !self.server.raster_pos.valid || self.feedback_raster_token(GL_DRAW_PIXEL_TOKEN) || rgba.is_empty() {
             return;
         }
         if format == GL_STENCIL_INDEX {
             return self.draw_stencil((width, height), rgba);
         }
-        let [xr, yr, z, _] = self.raster_pos.window;
+        let [xr, yr, z, _] = self.server.raster_pos.window;
         let origin = [xr.round() as i32, yr.round() as i32];
         let transfer = self.draw_color_transfer();
         let (w, h) = (width as usize, height as usize);
         let window = (self.width().max(0) as u32, self.height().max(0) as u32);
         let depth = self.depth_transfer();
-        let raster_color = self.raster_pos.color.map(|c| c.clamp(0.0, 1.0));
+        let raster_color = self.server.raster_pos.color.map(|c| c.clamp(0.0, 1.0));
         let fragments: Vec<_> = zoomed_pixels(origin, self.zoom(), (w, h), window)
             .map(|((i, j), (x, y))| {
                 let c = rgba[j * w + i];
@@ -191,19 +191,19 @@ impl Gl {
     fn record_fragments(&mut self, fragments: &[([i32; 2], [f32; 4], f32)]) {
         let (w, h) = (self.width(), self.height());
         let inside = |p: &[i32; 2]| (0..w).contains(&p[0]) && (0..h).contains(&p[1]);
-        let first = self.frame.vertices.len();
+        let first = self.recorder.frame.vertices.len();
         for &(p, color, z) in fragments.iter().filter(|(p, _, _)| inside(p)) {
             let position = [p[0] as f32 + 0.5, p[1] as f32 + 0.5, 2.0 * z - 1.0, 1.0];
-            let tex_coord = self.raster_pos.tex_coord;
-            self.frame.vertices.push(Vertex { position, color, tex_coord, ..self.current_vertex(position) });
+            let tex_coord = self.server.raster_pos.tex_coord;
+            self.recorder.frame.vertices.push(Vertex { position, color, tex_coord, ..self.current_vertex(position) });
         }
-        let count = self.frame.vertices.len() - first;
+        let count = self.recorder.frame.vertices.len() - first;
         if count == 0 {
             return;
         }
         let state = self.window_state();
-        self.frame.primitives.push(Primitive { mode: GL_POINTS, first, count, state });
-        self.frame.commands.push(Command::Draw(self.frame.primitives.len() - 1));
+        self.recorder.frame.primitives.push(Primitive { mode: GL_POINTS, first, count, state });
+        self.recorder.frame.commands.push(Command::Draw(self.recorder.frame.primitives.len() - 1));
     }
 
     /// The index of a draw state that puts window coordinates on their pixels: the current state
@@ -229,11 +229,11 @@ impl Gl {
         state.lighting = None;
         state.point_size = 1.0;
         state.shade_model = GL_FLAT;
-        match self.frame.states.last() {
-            Some(last) if *last == state => self.frame.states.len() - 1,
+        match self.recorder.frame.states.last() {
+            Some(last) if *last == state => self.recorder.frame.states.len() - 1,
             _ => {
-                self.frame.states.push(state);
-                self.frame.states.len() - 1
+                self.recorder.frame.states.push(state);
+                self.recorder.frame.states.len() - 1
             }
         }
     }

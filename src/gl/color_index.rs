@@ -47,7 +47,7 @@ impl Gl {
         if self.compiled(|| ListCommand::Pixels(PixelCommand::Index(c))) {
             return;
         }
-        self.color_index.current = c;
+        self.server.color_index.current = c;
     }
 
     /// `glIndexd`: as [`Gl::indexf`] (stored as a float, as Mesa does).
@@ -112,7 +112,7 @@ impl Gl {
         if self.compiled(|| ListCommand::Pixels(PixelCommand::ClearIndex(c))) || self.reject_inside_begin_end() {
             return;
         }
-        self.color_index.clear = to_uint(c);
+        self.server.color_index.clear = to_uint(c);
     }
 
     /// A `glClearIndex(c)` replayed from a display list as Mesa 22 replays it: its list node
@@ -128,17 +128,17 @@ impl Gl {
         if self.compiled(|| ListCommand::Pixels(PixelCommand::IndexMask(mask))) || self.reject_inside_begin_end() {
             return;
         }
-        self.color_index.mask = mask;
+        self.server.color_index.mask = mask;
     }
 }
 
 /// `glGet` of the colour-index state (see the module docs; the modes and `GL_INDEX_BITS` are
 /// limits in `get/table.rs`). The clear value and mask read as signed (Mesa's `TYPE_INT`).
 pub(crate) static GET_ROWS: &[StateVar] = &[
-    row(GL_CURRENT_INDEX, 1, Kind::Float, |gl, o| o[0] = f64::from(gl.color_index.current)),
+    row(GL_CURRENT_INDEX, 1, Kind::Float, |gl, o| o[0] = f64::from(gl.server.color_index.current)),
     row(GL_CURRENT_RASTER_INDEX, 1, Kind::Float, |_, o| o[0] = 1.0),
-    row(GL_INDEX_CLEAR_VALUE, 1, Kind::Float, |gl, o| o[0] = f64::from(gl.color_index.clear as GLint)),
-    row(GL_INDEX_WRITEMASK, 1, Kind::Int, |gl, o| o[0] = f64::from(gl.color_index.mask as GLint)),
+    row(GL_INDEX_CLEAR_VALUE, 1, Kind::Float, |gl, o| o[0] = f64::from(gl.server.color_index.clear as GLint)),
+    row(GL_INDEX_WRITEMASK, 1, Kind::Int, |gl, o| o[0] = f64::from(gl.server.color_index.mask as GLint)),
 ];
 
 #[cfg(test)]

@@ -60,8 +60,8 @@ pub(crate) struct ColorMaterialSync {
 impl Gl {
     /// The tracked parameters of `face` (bits) while `GL_COLOR_MATERIAL` is on, else 0.
     pub(crate) fn tracked_bits(&self, face: usize) -> u8 {
-        let (tracked_face, mode) = self.lighting.color_material;
-        let on = self.caps.is_on(GL_COLOR_MATERIAL) && face_indices(tracked_face).contains(&face);
+        let (tracked_face, mode) = self.server.lighting.color_material;
+        let on = self.server.caps.is_on(GL_COLOR_MATERIAL) && face_indices(tracked_face).contains(&face);
         if on {
             parameter_bits(mode)
         } else {
@@ -73,7 +73,7 @@ impl Gl {
     pub(crate) fn note_pending_material(&mut self, face: GLenum, pname: GLenum) {
         if !self.inside_begin_end() {
             for &f in face_indices(face) {
-                self.color_material_sync.pending[f] |= parameter_bits(pname);
+                self.server.color_material_sync.pending[f] |= parameter_bits(pname);
             }
         }
     }
@@ -83,8 +83,8 @@ impl Gl {
     /// set between stays), and the pop flushes.
     pub(crate) fn land_pending_materials(&mut self, before: [Material; 2]) {
         for (f, old) in before.iter().enumerate() {
-            let pending = self.color_material_sync.pending[f];
-            let m = &mut self.lighting.materials[f];
+            let pending = self.server.color_material_sync.pending[f];
+            let m = &mut self.server.lighting.materials[f];
             for (bit, slot, value) in [
                 (1, &mut m.ambient, old.ambient),
                 (2, &mut m.diffuse, old.diffuse),
@@ -104,80 +104,82 @@ impl Gl {
 
     /// Mesa's `FLUSH_CURRENT`: waiting materials have landed.
     pub(crate) fn flush_current(&mut self) {
-        self.color_material_sync.pending = [0; 2];
+        self.server.color_material_sync.pending = [0; 2];
     }
 
     /// Whether recorded primitives take the vertex colour as the tracked material.
     pub(crate) fn color_material_tracks(&self) -> bool {
-        self.caps.is_on(GL_COLOR_MATERIAL) && !self.color_material_sync.desynced
+        self.server.caps.is_on(GL_COLOR_MATERIAL) && !self.server.color_material_sync.desynced
     }
 
     /// `glEnable(GL_COLOR_MATERIAL)` turned tracking on: the colour is copied, then the waiting
     /// materials land over it.
     pub(crate) fn color_material_enabled(&mut self) {
-        let pending = self.color_material_sync.pending;
+        let pending = self.server.color_material_sync.pending;
         let kept = (0..2).any(|f| pending[f] & self.tracked_bits(f) != 0);
         self.copy_color_to_material(pending);
-        self.color_material_sync.desynced = kept;
+        self.server.color_material_sync.desynced = kept;
     }
 
     /// `glColorMaterial` changed what is tracked while tracking: a flush, then the copy.
     pub(crate) fn color_material_changed(&mut self) {
-        if self.caps.is_on(GL_COLOR_MATERIAL) {
+        if self.server.caps.is_on(GL_COLOR_MATERIAL) {
             self.flush_current();
             self.copy_color_to_material([0; 2]);
-            self.color_material_sync.desynced = false;
+            self.server.color_material_sync.desynced = false;
         }
     }
 
     /// The current colour was set (from `old`).
     pub(crate) fn color_set(&mut self, old: [f32; 4]) {
-        if !self.caps.is_on(GL_COLOR_MATERIAL) {
+        if !self.server.caps.is_on(GL_COLOR_MATERIAL) {
             return;
         }
-        if let Some(p) = self.open_primitive {
-            if self.color_material_sync.desynced {
+        if let Some(p) = self.recorder.open_primitive {
+            if self.server.color_material_sync.desynced {
                 self.track_in_primitive(p);
             }
-        } else if old != self.current.color {
+        } else if old != self.server.current.color {
             self.copy_color_to_material([0; 2]);
-            self.color_material_sync.desynced = false;
+            self.server.color_material_sync.desynced = false;
         }
     }
 
     /// `glBegin` (or an evaluator's primitive) starts: a flush.
     pub(crate) fn color_material_begin(&mut self) {
         self.flush_current();
-        self.color_material_sync.begin_color = self.current.color;
+        self.server.color_material_sync.begin_color = self.server.current.color;
     }
 
     /// `glEnd`: the material follows the colour if the primitive changed it.
     pub(crate) fn color_material_end(&mut self) {
-        if self.caps.is_on(GL_COLOR_MATERIAL) && self.current.color != self.color_material_sync.begin_color {
+        if self.server.caps.is_on(GL_COLOR_MATERIAL)
+            && self.server.current.color != self.server.color_material_sync.begin_color
+        {
             self.copy_color_to_material([0; 2]);
-            self.color_material_sync.desynced = false;
+            self.server.color_material_sync.desynced = false;
         }
     }
 
     /// A `glColor` inside a primitive drawn while desynced: the whole primitive takes its vertex
     /// colours as the material, as Mesa's vertex buffer then carries the colour per vertex.
     fn track_in_primitive(&mut self, p: usize) {
-        let state = self.frame.primitives[p].state;
-        if self.frame.states[state].color_material {
+        let state = self.recorder.frame.primitives[p].state;
+        if self.recorder.frame.states[state].color_material {
             return;
         }
-        let mut tracking = self.frame.states[state].clone();
+        let mut tracking = self.recorder.frame.states[state].clone();
         tracking.color_material = true;
-        self.frame.states.push(tracking);
-        self.frame.primitives[p].state = self.frame.states.len() - 1;
+        self.recorder.frame.states.push(tracking);
+        self.recorder.frame.primitives[p].state = self.recorder.frame.states.len() - 1;
     }
 
     /// Copies the current colour into the tracked parameters, except the `kept` ones.
     fn copy_color_to_material(&mut self, kept: [u8; 2]) {
-        let color = Vec4::from_array(self.current.color);
+        let color = Vec4::from_array(self.server.current.color);
         for f in 0..2 {
             let bits = self.tracked_bits(f) & !kept[f];
-            let m = &mut self.lighting.materials[f];
+            let m = &mut self.server.lighting.materials[f];
             for (bit, slot) in [(1, &mut m.ambient), (2, &mut m.diffuse), (4, &mut m.specular), (8, &mut m.emission)] {
                 if bits & bit != 0 {
                     *slot = color;

@@ -122,10 +122,11 @@ impl Gl {
         if !self.window_has(type_) {
             return self.set_error(GL_INVALID_OPERATION);
         }
-        if !self.raster_pos.valid || width == 0 || height == 0 || self.feedback_raster_token(GL_COPY_PIXEL_TOKEN) {
+        if !self.server.raster_pos.valid || width == 0 || height == 0 || self.feedback_raster_token(GL_COPY_PIXEL_TOKEN)
+        {
             return;
         }
-        let [xr, yr, depth, _] = self.raster_pos.window;
+        let [xr, yr, depth, _] = self.server.raster_pos.window;
         let (zoom, color_transfer) = (self.zoom(), self.draw_color_transfer());
         let tests = self.capability(GL_DEPTH_TEST) || self.capability(GL_BLEND) || self.capability(GL_ALPHA_TEST);
         let copy = PixelCopy {
@@ -134,15 +135,15 @@ impl Gl {
             zoom,
             buffer: type_,
             depth,
-            color: self.raster_pos.color.map(|c| c.clamp(0.0, 1.0)),
+            color: self.server.raster_pos.color.map(|c| c.clamp(0.0, 1.0)),
             blit: type_ == GL_COLOR && zoom == [1.0, 1.0] && color_transfer.is_none() && !tests,
             color_transfer,
             depth_transfer: self.depth_transfer(),
             state: self.window_state(),
             stencil_values: None,
         };
-        self.frame.pixel_copies.push(copy);
-        self.frame.commands.push(Command::CopyPixels(self.frame.pixel_copies.len() - 1));
+        self.recorder.frame.pixel_copies.push(copy);
+        self.recorder.frame.commands.push(Command::CopyPixels(self.recorder.frame.pixel_copies.len() - 1));
     }
 
     /// `glDrawPixels` of stencil indices once unpacked: each index truncated to its low 8 bits
@@ -153,22 +154,22 @@ impl Gl {
     pub(crate) fn draw_stencil(&mut self, (width, height): (GLsizei, GLsizei), indices: &[[f32; 4]]) {
         let low_bits = |index: f32| if index.is_finite() { (index.trunc() as i64 & 0xFF) as u8 } else { 0 };
         let values: Vec<u8> = indices.iter().map(|c| low_bits(c[0])).collect();
-        let [xr, yr, depth, _] = self.raster_pos.window;
+        let [xr, yr, depth, _] = self.server.raster_pos.window;
         let copy = PixelCopy {
             source: [0, 0, width, height],
             origin: [xr.round() as i32, yr.round() as i32],
             zoom: self.zoom(),
             buffer: GL_STENCIL,
             depth,
-            color: self.raster_pos.color.map(|c| c.clamp(0.0, 1.0)),
+            color: self.server.raster_pos.color.map(|c| c.clamp(0.0, 1.0)),
             blit: false,
             color_transfer: None,
             depth_transfer: self.depth_transfer(),
             state: self.window_state(),
             stencil_values: Some(Arc::new(values)),
         };
-        self.frame.pixel_copies.push(copy);
-        self.frame.commands.push(Command::CopyPixels(self.frame.pixel_copies.len() - 1));
+        self.recorder.frame.pixel_copies.push(copy);
+        self.recorder.frame.commands.push(Command::CopyPixels(self.recorder.frame.pixel_copies.len() - 1));
     }
 
     /// Whether the window has the buffer `glCopyPixels` names: colour and depth always (both

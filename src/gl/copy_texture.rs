@@ -250,7 +250,7 @@ impl Gl {
         };
         let _ = residences;
         let names = textures.get(..count);
-        let known = |name: &GLuint| *name != 0 && self.textures.objects.contains_key(name);
+        let known = |name: &GLuint| *name != 0 && self.server.textures.objects.contains_key(name);
         if names.is_some_and(|names| names.iter().all(known)) {
             GL_TRUE
         } else {
@@ -277,7 +277,7 @@ impl Gl {
             return self.set_error(GL_INVALID_VALUE);
         };
         for (name, &priority) in names.iter().zip(values) {
-            if let Some(object) = self.textures.objects.get_mut(name) {
+            if let Some(object) = self.server.textures.objects.get_mut(name) {
                 object.set_priority(priority);
             }
         }

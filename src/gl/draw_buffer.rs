@@ -34,7 +34,7 @@ impl Gl {
             return;
         }
         match buffers_named(mode) {
-            Ok(_) => self.fragments.draw_buffer = mode,
+            Ok(_) => self.server.fragments.draw_buffer = mode,
             Err(e) => return self.set_error(e),
         }
         self.touch_state();
@@ -46,7 +46,7 @@ impl Gl {
             return;
         }
         match buffers_named(mode) {
-            Ok(_) => self.fragments.read_buffer = mode,
+            Ok(_) => self.server.fragments.read_buffer = mode,
             Err(e) => self.set_error(e),
         }
     }
@@ -58,12 +58,12 @@ impl Gl {
     /// reads its front buffer whatever is named).
     #[must_use]
     pub fn reads_back_buffer(&self) -> bool {
-        self.buffers_of(self.fragments.read_buffer) & super::fragments::BACK_BUFFER != 0
+        self.buffers_of(self.server.fragments.read_buffer) & super::fragments::BACK_BUFFER != 0
     }
 
     pub(crate) fn buffers_of(&self, mode: GLenum) -> u8 {
         let bits = buffers_named(mode).unwrap_or(0);
-        if self.fragments.config.double || bits == 0 {
+        if self.server.fragments.config.double || bits == 0 {
             bits
         } else {
             FRONT_BUFFER

@@ -91,12 +91,12 @@ impl Gl {
         if self.reject_inside_begin_end() {
             return GL_FALSE;
         }
-        let on = if let Some(on) = self.eval.is_enabled(cap) {
+        let on = if let Some(on) = self.server.eval.is_enabled(cap) {
             on
-        } else if let Some(on) = self.arrays.is_enabled(cap) {
+        } else if let Some(on) = self.client.arrays.is_enabled(cap) {
             on
         } else if Caps::known(cap) {
-            self.caps.is_on(cap)
+            self.server.caps.is_on(cap)
         } else {
             self.set_error(GL_INVALID_ENUM);
             return GL_FALSE;
@@ -115,12 +115,12 @@ impl Gl {
         if self.reject_inside_begin_end() {
             return;
         }
-        if self.eval.set_enabled(cap, on) || self.arrays.set_enabled(cap, on) {
+        if self.server.eval.set_enabled(cap, on) || self.client.arrays.set_enabled(cap, on) {
             return;
         }
         if Caps::known(cap) {
-            let was_on = self.caps.is_on(cap);
-            self.caps.set(cap, on);
+            let was_on = self.server.caps.is_on(cap);
+            self.server.caps.set(cap, on);
             self.touch_state();
             if cap == GL_COLOR_MATERIAL && on && !was_on {
                 self.color_material_enabled();
@@ -132,12 +132,16 @@ impl Gl {
 
     /// Whether `cap` is a capability `glIsEnabled` takes (evaluator maps included).
     pub(crate) fn is_capability(&self, cap: GLenum) -> bool {
-        self.eval.is_enabled(cap).is_some() || Caps::known(cap)
+        self.server.eval.is_enabled(cap).is_some() || Caps::known(cap)
     }
 
     /// Whether a non-evaluator capability is on (for the renderer).
     #[must_use]
     pub fn capability(&self, cap: GLenum) -> bool {
-        self.eval.is_enabled(cap).or_else(|| self.arrays.is_enabled(cap)).unwrap_or_else(|| self.caps.is_on(cap))
+        self.server
+            .eval
+            .is_enabled(cap)
+            .or_else(|| self.client.arrays.is_enabled(cap))
+            .unwrap_or_else(|| self.server.caps.is_on(cap))
     }
 }

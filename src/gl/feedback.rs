@@ -113,7 +113,7 @@ impl Gl {
         if let Some(error) = self.feedback_buffer_error(size, type_) {
             return self.set_error(error);
         }
-        (self.feedback.size, self.feedback.kind) = (size as usize, type_);
+        (self.client.feedback.size, self.client.feedback.kind) = (size as usize, type_);
     }
 
     /// The error `glFeedbackBuffer(size, type)` raises now, in Mesa's order (inside
@@ -121,7 +121,7 @@ impl Gl {
     /// the buffer: what a binding that keeps the caller's buffer asks before it does.
     #[must_use]
     pub fn feedback_buffer_error(&self, size: GLsizei, type_: GLenum) -> Option<GLenum> {
-        if self.inside_begin_end() || self.feedback.mode == GL_FEEDBACK {
+        if self.inside_begin_end() || self.client.feedback.mode == GL_FEEDBACK {
             Some(GL_INVALID_OPERATION)
         } else if size < 0 {
             Some(GL_INVALID_VALUE)
@@ -144,15 +144,15 @@ impl Gl {
         // Mesa buffers what a GL_COMPILE_AND_EXECUTE list draws and runs it when the list
         // ends: its primitives reach the feedback buffer after glEndList, so they are held.
         let compiling = self.compiling_list();
-        let result = match self.feedback.mode {
+        let result = match self.client.feedback.mode {
             GL_SELECT => self.finish_select(),
             GL_FEEDBACK if compiling => {
-                self.feedback.held = true;
-                self.feedback.values.clear();
+                self.client.feedback.held = true;
+                self.client.feedback.values.clear();
                 0
             }
             GL_FEEDBACK => {
-                self.feedback.held = false;
+                self.client.feedback.held = false;
                 self.finish_feedback()
             }
             _ => 0,
@@ -161,13 +161,13 @@ impl Gl {
             GL_RENDER => {}
             GL_SELECT => self.start_select(),
             GL_FEEDBACK => {
-                if self.feedback.size == 0 {
+                if self.client.feedback.size == 0 {
                     self.set_error(GL_INVALID_OPERATION);
                 }
-                if !self.feedback.held {
+                if !self.client.feedback.held {
                     self.evaluate_pending_meshes();
-                    self.feedback.start = self.frame.commands.len();
-                    self.feedback.raster_tokens.clear();
+                    self.client.feedback.start = self.recorder.frame.commands.len();
+                    self.client.feedback.raster_tokens.clear();
                 }
             }
             _ => {
@@ -175,7 +175,7 @@ impl Gl {
                 return 0;
             }
         }
-        self.feedback.mode = mode;
+        self.client.feedback.mode = mode;
         result
     }
 
@@ -183,7 +183,7 @@ impl Gl {
     /// `glGetIntegerv(GL_RENDER_MODE)` answers, without its begin/end check).
     #[must_use]
     pub fn render_mode_value(&self) -> GLenum {
-        self.feedback.mode
+        self.client.feedback.mode
     }
 
     /// `glPassThrough(token)`: in feedback mode, a `GL_PASS_THROUGH_TOKEN` and `token` among
@@ -193,10 +193,10 @@ impl Gl {
         if self.compiled(|| super::lists::ListCommand::PassThrough(token)) || self.reject_inside_begin_end() {
             return;
         }
-        if self.feedback.mode == GL_FEEDBACK {
+        if self.client.feedback.mode == GL_FEEDBACK {
             self.evaluate_pending_meshes();
             let value = [[token, 0.0, 0.0, 0.0]; 3];
-            self.feedback.raster_tokens.push((self.frame.commands.len(), GL_PASS_THROUGH_TOKEN, value));
+            self.client.feedback.raster_tokens.push((self.recorder.frame.commands.len(), GL_PASS_THROUGH_TOKEN, value));
         }
     }
 
@@ -204,22 +204,22 @@ impl Gl {
     /// a binding that keeps the caller's buffer knows from it whether the call took.
     #[must_use]
     pub fn feedback_buffer_spec(&self) -> (usize, GLenum) {
-        (self.feedback.size, self.feedback.kind)
+        (self.client.feedback.size, self.client.feedback.kind)
     }
 
     /// The values the last feedback pass wrote (at most the buffer's size).
     #[must_use]
     pub fn feedback_values(&self) -> &[GLfloat] {
-        &self.feedback.values
+        &self.client.feedback.values
     }
 
     /// Takes what was drawn in feedback mode out of the frame and writes its tokens; the count
     /// `glRenderMode` returns.
     fn finish_feedback(&mut self) -> GLint {
         self.evaluate_pending_meshes();
-        let start = self.feedback.start.min(self.frame.commands.len());
-        let commands: Vec<Command> = self.frame.commands.drain(start..).collect();
-        let mut tokens = std::mem::take(&mut self.feedback.raster_tokens).into_iter().peekable();
+        let start = self.client.feedback.start.min(self.recorder.frame.commands.len());
+        let commands: Vec<Command> = self.recorder.frame.commands.drain(start..).collect();
+        let mut tokens = std::mem::take(&mut self.client.feedback.raster_tokens).into_iter().peekable();
         let mut values = Vec::new();
         for (k, command) in commands.into_iter().enumerate() {
             while let Some((_, token, vertex)) = tokens.next_if(|t| t.0 <= start + k) {
@@ -232,10 +232,10 @@ impl Gl {
         for (_, token, vertex) in tokens {
             self.feedback_raster(&mut values, token, vertex);
         }
-        let overflow = values.len() > self.feedback.size;
-        values.truncate(self.feedback.size);
+        let overflow = values.len() > self.client.feedback.size;
+        values.truncate(self.client.feedback.size);
         let count = values.len();
-        self.feedback.values = values;
+        self.client.feedback.values = values;
         if overflow {
             -1
         } else {
@@ -247,12 +247,12 @@ impl Gl {
     /// `token` and the raster position as a vertex instead of drawing (GL 1.1 §5.3); true
     /// when it did.
     pub(crate) fn feedback_raster_token(&mut self, token: GLenum) -> bool {
-        if self.feedback.mode != GL_FEEDBACK {
+        if self.client.feedback.mode != GL_FEEDBACK {
             return false;
         }
-        let r = &self.raster_pos;
+        let r = &self.server.raster_pos;
         let vertex = [r.window, r.color.map(|c| c.clamp(0.0, 1.0)), r.tex_coord];
-        self.feedback.raster_tokens.push((self.frame.commands.len(), token, vertex));
+        self.client.feedback.raster_tokens.push((self.recorder.frame.commands.len(), token, vertex));
         true
     }
 
@@ -262,8 +262,8 @@ impl Gl {
         if token == GL_PASS_THROUGH_TOKEN {
             return out.push(window[0]);
         }
-        let (four, with_color, with_texture) = layout(self.feedback.kind).unwrap_or_default();
-        let position = match self.feedback.kind {
+        let (four, with_color, with_texture) = layout(self.client.feedback.kind).unwrap_or_default();
+        let position = match self.client.feedback.kind {
             GL_2D => 2,
             _ if four => 4,
             _ => 3,
@@ -282,14 +282,14 @@ impl Gl {
         let mut out = Vec::new();
         match *command {
             Command::Draw(i) => {
-                let p = self.frame.primitives[i];
-                let Some(state) = self.frame.states.get(p.state) else { return out };
-                let hidden = self.frame.hidden_edges_of(&p);
-                out = feedback_prims::report(p.mode, state, self.frame.vertices_of(&p), &hidden);
+                let p = self.recorder.frame.primitives[i];
+                let Some(state) = self.recorder.frame.states.get(p.state) else { return out };
+                let hidden = self.recorder.frame.hidden_edges_of(&p);
+                out = feedback_prims::report(p.mode, state, self.recorder.frame.vertices_of(&p), &hidden);
             }
             Command::Mesh(i) => {
-                let mesh = &self.frame.meshes[i];
-                let Some(state) = self.frame.states.get(mesh.state) else { return out };
+                let mesh = &self.recorder.frame.meshes[i];
+                let Some(state) = self.recorder.frame.states.get(mesh.state) else { return out };
                 let grid = mesh.evaluated();
                 for (mode, indices) in mesh.primitives() {
                     let vertices: Vec<Vertex> = indices.iter().map(|&k| grid.vertex(k)).collect();
@@ -324,8 +324,8 @@ impl Gl {
     /// One vertex as the buffer type lays it out: window x, y (z, w), colour, texcoord.
     fn feedback_vertex(&self, out: &mut Vec<GLfloat>, v: &FeedbackVertex) {
         let FeedbackVertex { window, .. } = *v;
-        let (four, color, texture) = layout(self.feedback.kind).unwrap_or_default();
-        let position = match self.feedback.kind {
+        let (four, color, texture) = layout(self.client.feedback.kind).unwrap_or_default();
+        let position = match self.client.feedback.kind {
             GL_2D => 2,
             _ if four => 4,
             _ => 3,

@@ -62,7 +62,7 @@ impl Gl {
         if !blend_factor(sfactor) || !blend_factor(dfactor) {
             return self.set_error(GL_INVALID_ENUM);
         }
-        self.fragment_ops.blend = [sfactor, dfactor];
+        self.server.fragment_ops.blend = [sfactor, dfactor];
         self.touch_state();
     }
 
@@ -75,7 +75,7 @@ impl Gl {
         if !(GL_NEVER..=GL_ALWAYS).contains(&func) {
             return self.set_error(GL_INVALID_ENUM);
         }
-        self.fragment_ops.alpha = (func, reference.clamp(0.0, 1.0));
+        self.server.fragment_ops.alpha = (func, reference.clamp(0.0, 1.0));
         self.touch_state();
     }
 
@@ -101,7 +101,7 @@ impl Gl {
         let Some(values) = params.get(..Self::fog_param_count(pname)) else {
             return self.set_error(GL_INVALID_VALUE);
         };
-        let fog = &mut self.fragment_ops.fog;
+        let fog = &mut self.server.fragment_ops.fog;
         match pname {
             GL_FOG_MODE => match values[0] as GLenum {
                 mode @ (GL_LINEAR | GL_EXP | GL_EXP2) => fog.mode = mode,
@@ -112,7 +112,7 @@ impl Gl {
             GL_FOG_START => fog.start = values[0],
             GL_FOG_END => fog.end = values[0],
             GL_FOG_COLOR => fog.color = std::array::from_fn(|i| values[i].clamp(0.0, 1.0)),
-            GL_FOG_INDEX => self.fragment_ops.fog_index = values[0],
+            GL_FOG_INDEX => self.server.fragment_ops.fog_index = values[0],
             _ => return self.set_error(GL_INVALID_ENUM),
         }
         self.touch_state();
@@ -130,17 +130,17 @@ impl Gl {
 
     /// The blend factors while `GL_BLEND` is on.
     pub(crate) fn enabled_blend(&self) -> Option<[GLenum; 2]> {
-        self.capability(GL_BLEND).then_some(self.fragment_ops.blend)
+        self.capability(GL_BLEND).then_some(self.server.fragment_ops.blend)
     }
 
     /// The alpha test while `GL_ALPHA_TEST` is on.
     pub(crate) fn enabled_alpha_test(&self) -> Option<(GLenum, f32)> {
-        self.capability(GL_ALPHA_TEST).then_some(self.fragment_ops.alpha)
+        self.capability(GL_ALPHA_TEST).then_some(self.server.fragment_ops.alpha)
     }
 
     /// The fog while `GL_FOG` is on.
     pub(crate) fn enabled_fog(&self) -> Option<Fog> {
-        self.capability(GL_FOG).then_some(self.fragment_ops.fog)
+        self.capability(GL_FOG).then_some(self.server.fragment_ops.fog)
     }
 }
 

@@ -189,14 +189,14 @@ impl Gl {
     /// The framebuffer's buffers (see [`BufferConfig`]).
     #[must_use]
     pub fn buffer_config(&self) -> BufferConfig {
-        self.fragments.config
+        self.server.fragments.config
     }
 
     /// Gives the context the buffers of `config` (what GLUT's display mode or OSMesa's
     /// creation asked for); the draw and read buffers become GL's initial ones for it (the back
     /// buffer of a double-buffered window, else the front).
     pub fn set_buffer_config(&mut self, config: BufferConfig) {
-        let f = &mut self.fragments;
+        let f = &mut self.server.fragments;
         f.config = config;
         let initial = if config.double { GL_BACK } else { GL_FRONT };
         (f.draw_buffer, f.read_buffer) = (initial, initial);
@@ -205,7 +205,7 @@ impl Gl {
 
     /// The per-fragment state primitives, clears and accumulations are drawn with now.
     pub(crate) fn fragment_tests(&self) -> FragmentTests {
-        let f = &self.fragments;
+        let f = &self.server.fragments;
         let has_stencil = f.config.stencil_bits > 0;
         FragmentTests {
             scissor: self.capability(GL_SCISSOR_TEST).then_some(f.scissor),
@@ -221,26 +221,26 @@ impl Gl {
     /// Records a buffer swap in a double-buffered context (`glutSwapBuffers`); nothing in a
     /// single-buffered one. Inside `begin`/`end` GL would end the primitive's frame: ignored.
     pub fn record_swap_buffers(&mut self) {
-        if self.fragments.config.double && !self.inside_begin_end() {
-            self.frame.commands.push(super::frame::Command::SwapBuffers);
+        if self.server.fragments.config.double && !self.inside_begin_end() {
+            self.recorder.frame.commands.push(super::frame::Command::SwapBuffers);
         }
     }
 
     /// The largest stencil value, 2^bits − 1 (0 without a stencil buffer).
     pub(crate) fn stencil_max(&self) -> u32 {
-        (1u32 << self.fragments.config.stencil_bits) - 1
+        (1u32 << self.server.fragments.config.stencil_bits) - 1
     }
 
     /// What `glPushAttrib` keeps of this area (all of it; `restore_fragments` picks by group).
     pub(crate) fn fragments_attrib(&self) -> PerFragment {
-        self.fragments
+        self.server.fragments
     }
 
     /// `glPopAttrib` of this area's values: colour buffer (colour mask, logic op, draw buffer),
     /// depth buffer (depth mask), stencil buffer, accumulation buffer, scissor, pixel mode (read
     /// buffer) groups. The enables come back with `attrib.rs`'s.
     pub(crate) fn restore_fragments(&mut self, mask: GLbitfield, saved: &PerFragment) {
-        let f = &mut self.fragments;
+        let f = &mut self.server.fragments;
         let has = |bit: GLbitfield| mask & bit != 0;
         if has(GL_COLOR_BUFFER_BIT) {
             (f.color_write, f.logic_op, f.draw_buffer) = (saved.color_write, saved.logic_op, saved.draw_buffer);
@@ -267,29 +267,29 @@ impl Gl {
 /// stencil reference reads clamped to the buffer's range; the value mask is unsigned, so one
 /// above 2³¹ − 1 reads as 2³¹ − 1 in `glGetIntegerv` (measured).
 pub(crate) static GET_ROWS: &[StateVar] = &[
-    row(GL_SCISSOR_BOX, 4, Kind::Int, |gl, o| put(o, &gl.fragments.scissor)),
-    row(GL_STENCIL_FUNC, 1, Kind::Int, |gl, o| put_enum(o, gl.fragments.stencil.func)),
-    row(GL_STENCIL_VALUE_MASK, 1, Kind::Int, |gl, o| o[0] = f64::from(gl.fragments.stencil.value_mask)),
+    row(GL_SCISSOR_BOX, 4, Kind::Int, |gl, o| put(o, &gl.server.fragments.scissor)),
+    row(GL_STENCIL_FUNC, 1, Kind::Int, |gl, o| put_enum(o, gl.server.fragments.stencil.func)),
+    row(GL_STENCIL_VALUE_MASK, 1, Kind::Int, |gl, o| o[0] = f64::from(gl.server.fragments.stencil.value_mask)),
     row(GL_STENCIL_REF, 1, Kind::Int, |gl, o| {
-        o[0] = f64::from(gl.fragments.stencil.reference.clamp(0, gl.stencil_max() as GLint))
+        o[0] = f64::from(gl.server.fragments.stencil.reference.clamp(0, gl.stencil_max() as GLint))
     }),
-    row(GL_STENCIL_FAIL, 1, Kind::Int, |gl, o| put_enum(o, gl.fragments.stencil.ops[0])),
-    row(GL_STENCIL_PASS_DEPTH_FAIL, 1, Kind::Int, |gl, o| put_enum(o, gl.fragments.stencil.ops[1])),
-    row(GL_STENCIL_PASS_DEPTH_PASS, 1, Kind::Int, |gl, o| put_enum(o, gl.fragments.stencil.ops[2])),
-    row(GL_LOGIC_OP_MODE, 1, Kind::Int, |gl, o| put_enum(o, gl.fragments.logic_op)),
-    row(GL_DRAW_BUFFER, 1, Kind::Int, |gl, o| put_enum(o, gl.fragments.draw_buffer)),
-    row(GL_READ_BUFFER, 1, Kind::Int, |gl, o| put_enum(o, gl.fragments.read_buffer)),
-    row(GL_COLOR_WRITEMASK, 4, Kind::Bool, |gl, o| put(o, &gl.fragments.color_write.map(u8::from))),
-    row(GL_DEPTH_WRITEMASK, 1, Kind::Bool, |gl, o| put_flag(o, gl.fragments.depth_write)),
-    row(GL_STENCIL_WRITEMASK, 1, Kind::Int, |gl, o| o[0] = f64::from(gl.fragments.stencil.write_mask)),
-    row(GL_STENCIL_CLEAR_VALUE, 1, Kind::Int, |gl, o| o[0] = f64::from(gl.fragments.clear_stencil)),
-    row(GL_ACCUM_CLEAR_VALUE, 4, Kind::Normalized, |gl, o| put(o, &gl.fragments.clear_accum)),
-    row(GL_DOUBLEBUFFER, 1, Kind::Bool, |gl, o| put_flag(o, gl.fragments.config.double)),
-    row(GL_STENCIL_BITS, 1, Kind::Int, |gl, o| o[0] = f64::from(gl.fragments.config.stencil_bits)),
-    row(GL_ACCUM_RED_BITS, 1, Kind::Int, |gl, o| o[0] = f64::from(gl.fragments.config.accum_bits)),
-    row(GL_ACCUM_GREEN_BITS, 1, Kind::Int, |gl, o| o[0] = f64::from(gl.fragments.config.accum_bits)),
-    row(GL_ACCUM_BLUE_BITS, 1, Kind::Int, |gl, o| o[0] = f64::from(gl.fragments.config.accum_bits)),
-    row(GL_ACCUM_ALPHA_BITS, 1, Kind::Int, |gl, o| o[0] = f64::from(gl.fragments.config.accum_bits)),
+    row(GL_STENCIL_FAIL, 1, Kind::Int, |gl, o| put_enum(o, gl.server.fragments.stencil.ops[0])),
+    row(GL_STENCIL_PASS_DEPTH_FAIL, 1, Kind::Int, |gl, o| put_enum(o, gl.server.fragments.stencil.ops[1])),
+    row(GL_STENCIL_PASS_DEPTH_PASS, 1, Kind::Int, |gl, o| put_enum(o, gl.server.fragments.stencil.ops[2])),
+    row(GL_LOGIC_OP_MODE, 1, Kind::Int, |gl, o| put_enum(o, gl.server.fragments.logic_op)),
+    row(GL_DRAW_BUFFER, 1, Kind::Int, |gl, o| put_enum(o, gl.server.fragments.draw_buffer)),
+    row(GL_READ_BUFFER, 1, Kind::Int, |gl, o| put_enum(o, gl.server.fragments.read_buffer)),
+    row(GL_COLOR_WRITEMASK, 4, Kind::Bool, |gl, o| put(o, &gl.server.fragments.color_write.map(u8::from))),
+    row(GL_DEPTH_WRITEMASK, 1, Kind::Bool, |gl, o| put_flag(o, gl.server.fragments.depth_write)),
+    row(GL_STENCIL_WRITEMASK, 1, Kind::Int, |gl, o| o[0] = f64::from(gl.server.fragments.stencil.write_mask)),
+    row(GL_STENCIL_CLEAR_VALUE, 1, Kind::Int, |gl, o| o[0] = f64::from(gl.server.fragments.clear_stencil)),
+    row(GL_ACCUM_CLEAR_VALUE, 4, Kind::Normalized, |gl, o| put(o, &gl.server.fragments.clear_accum)),
+    row(GL_DOUBLEBUFFER, 1, Kind::Bool, |gl, o| put_flag(o, gl.server.fragments.config.double)),
+    row(GL_STENCIL_BITS, 1, Kind::Int, |gl, o| o[0] = f64::from(gl.server.fragments.config.stencil_bits)),
+    row(GL_ACCUM_RED_BITS, 1, Kind::Int, |gl, o| o[0] = f64::from(gl.server.fragments.config.accum_bits)),
+    row(GL_ACCUM_GREEN_BITS, 1, Kind::Int, |gl, o| o[0] = f64::from(gl.server.fragments.config.accum_bits)),
+    row(GL_ACCUM_BLUE_BITS, 1, Kind::Int, |gl, o| o[0] = f64::from(gl.server.fragments.config.accum_bits)),
+    row(GL_ACCUM_ALPHA_BITS, 1, Kind::Int, |gl, o| o[0] = f64::from(gl.server.fragments.config.accum_bits)),
 ];
 
 #[cfg(test)]

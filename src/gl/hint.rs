@@ -40,7 +40,7 @@ impl Gl {
         }
         let known_mode = matches!(mode, GL_FASTEST | GL_NICEST | GL_DONT_CARE);
         match TARGETS.iter().position(|&t| t == target) {
-            Some(i) if known_mode => self.hints.0[i] = mode,
+            Some(i) if known_mode => self.server.hints.0[i] = mode,
             _ => self.set_error(GL_INVALID_ENUM),
         }
     }
@@ -49,7 +49,7 @@ impl Gl {
 /// `glGet` of a hint (GL 1.1 table 6.16).
 macro_rules! hint_row {
     ($target:expr) => {
-        row($target, 1, Kind::Int, |gl, o| put_enum(o, gl.hints.get($target).unwrap_or(0)))
+        row($target, 1, Kind::Int, |gl, o| put_enum(o, gl.server.hints.get($target).unwrap_or(0)))
     };
 }
 

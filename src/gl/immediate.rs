@@ -22,7 +22,7 @@ impl Gl {
             self.set_error(GL_INVALID_ENUM);
             return;
         }
-        self.frame.calls.push(Call::Begin(mode));
+        self.recorder.frame.calls.push(Call::Begin(mode));
         self.open_primitive_raw(mode);
     }
 
@@ -35,31 +35,31 @@ impl Gl {
             self.set_error(GL_INVALID_OPERATION);
             return;
         }
-        self.frame.calls.push(Call::End);
-        self.open_primitive = None;
+        self.recorder.frame.calls.push(Call::End);
+        self.recorder.open_primitive = None;
         self.color_material_end();
     }
 
     /// Begins a primitive on behalf of the evaluators (not logged as a user call).
     pub(crate) fn open_primitive_raw(&mut self, mode: GLenum) {
         self.color_material_begin();
-        let first = self.frame.vertices.len();
+        let first = self.recorder.frame.vertices.len();
         let state = self.current_state_index();
-        self.frame.primitives.push(Primitive { mode, first, count: 0, state });
-        let index = self.frame.primitives.len() - 1;
-        self.frame.commands.push(super::frame::Command::Draw(index));
-        self.open_primitive = Some(index);
+        self.recorder.frame.primitives.push(Primitive { mode, first, count: 0, state });
+        let index = self.recorder.frame.primitives.len() - 1;
+        self.recorder.frame.commands.push(super::frame::Command::Draw(index));
+        self.recorder.open_primitive = Some(index);
     }
 
     /// Adds a finished vertex to the open primitive; outside `begin`/`end` a vertex only
     /// moves the current position, so nothing is recorded.
     pub(crate) fn emit_vertex(&mut self, v: Vertex) {
-        if let Some(p) = self.open_primitive {
+        if let Some(p) = self.recorder.open_primitive {
             if !self.edge_flag_value() {
-                self.frame.hidden_edges.push(self.frame.vertices.len());
+                self.recorder.frame.hidden_edges.push(self.recorder.frame.vertices.len());
             }
-            self.frame.vertices.push(v);
-            self.frame.primitives[p].count += 1;
+            self.recorder.frame.vertices.push(v);
+            self.recorder.frame.primitives[p].count += 1;
         }
     }
 
@@ -67,26 +67,31 @@ impl Gl {
     /// (GL 1.1 §2.13.2: each vertex is lit with the material current when it is issued):
     /// recorded as a [`MaterialChange`] naming the state the following vertices are lit with.
     pub(crate) fn note_material_change(&mut self) {
-        let Some(p) = self.open_primitive else { return };
+        let Some(p) = self.recorder.open_primitive else { return };
         let state = self.current_state_index();
-        let vertex = self.frame.primitives[p].count;
+        let vertex = self.recorder.frame.primitives[p].count;
         let change = MaterialChange { primitive: p, vertex, state };
-        match self.frame.material_changes.last_mut() {
+        match self.recorder.frame.material_changes.last_mut() {
             Some(last) if last.primitive == p && last.vertex == vertex => *last = change,
-            _ => self.frame.material_changes.push(change),
+            _ => self.recorder.frame.material_changes.push(change),
         }
     }
 
     /// The vertex that `glVertex4f(x, y, z, w)` issues now, with the current attributes.
     pub(crate) fn current_vertex(&self, position: [f32; 4]) -> Vertex {
-        Vertex { position, color: self.current.color, normal: self.current.normal, tex_coord: self.current.tex_coord }
+        Vertex {
+            position,
+            color: self.server.current.color,
+            normal: self.server.current.normal,
+            tex_coord: self.server.current.tex_coord,
+        }
     }
 
     fn vertex(&mut self, position: [f32; 4]) {
         if self.compiled(|| ListCommand::Immediate(Call::Vertex(position))) {
             return;
         }
-        self.frame.calls.push(Call::Vertex(position));
+        self.recorder.frame.calls.push(Call::Vertex(position));
         let v = self.current_vertex(position);
         self.emit_vertex(v);
     }
@@ -147,8 +152,8 @@ impl Gl {
         if self.compiled(|| ListCommand::Immediate(Call::Color([r, g, b, a]))) {
             return;
         }
-        let old = std::mem::replace(&mut self.current.color, [r, g, b, a]);
-        self.frame.calls.push(Call::Color(self.current.color));
+        let old = std::mem::replace(&mut self.server.current.color, [r, g, b, a]);
+        self.recorder.frame.calls.push(Call::Color(self.server.current.color));
         self.color_set(old);
     }
 
@@ -177,8 +182,8 @@ impl Gl {
         if self.compiled(|| ListCommand::Immediate(Call::Normal([x, y, z]))) {
             return;
         }
-        self.current.normal = [x, y, z];
-        self.frame.calls.push(Call::Normal(self.current.normal));
+        self.server.current.normal = [x, y, z];
+        self.recorder.frame.calls.push(Call::Normal(self.server.current.normal));
     }
 
     /// `glNormal3fv`: `v` needs 3 values.
@@ -208,8 +213,8 @@ impl Gl {
         if self.compiled(|| ListCommand::Immediate(Call::TexCoord([s, t, r, q]))) {
             return;
         }
-        self.current.tex_coord = [s, t, r, q];
-        self.frame.calls.push(Call::TexCoord(self.current.tex_coord));
+        self.server.current.tex_coord = [s, t, r, q];
+        self.recorder.frame.calls.push(Call::TexCoord(self.server.current.tex_coord));
     }
 
     /// `glTexCoord2fv`: `v` needs 2 values.

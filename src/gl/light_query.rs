@@ -118,7 +118,7 @@ impl Gl {
             return None;
         }
         let index = light.checked_sub(GL_LIGHT0).filter(|i| *i < 8);
-        let Some(v) = index.and_then(|i| light_value(&self.lighting.lights[i as usize], pname)) else {
+        let Some(v) = index.and_then(|i| light_value(&self.server.lighting.lights[i as usize], pname)) else {
             self.set_error(GL_INVALID_ENUM);
             return None;
         };
@@ -157,7 +157,7 @@ impl Gl {
             }
         };
         self.flush_current();
-        let Some(v) = material_value(&self.lighting.materials[f], pname) else {
+        let Some(v) = material_value(&self.server.lighting.materials[f], pname) else {
             self.set_error(GL_INVALID_ENUM);
             return None;
         };

@@ -184,8 +184,8 @@ impl Gl {
         if invalid {
             return self.set_error(GL_INVALID_VALUE);
         }
-        let modelview = self.matrices.modelview();
-        let l = &mut self.lighting.lights[index];
+        let modelview = self.server.matrices.modelview();
+        let l = &mut self.server.lighting.lights[index];
         match pname {
             GL_AMBIENT => l.ambient = vec4_from(params),
             GL_DIFFUSE => l.diffuse = vec4_from(params),
@@ -232,7 +232,7 @@ impl Gl {
             // While tracking, Mesa drops a glMaterial of a tracked parameter (`vbo`'s material
             // call masks them out).
             let bits = color_material_bits(pname) & !self.tracked_bits(f);
-            let m = &mut self.lighting.materials[f];
+            let m = &mut self.server.lighting.materials[f];
             if pname == GL_SHININESS {
                 m.shininess = params[0];
                 continue;
@@ -268,9 +268,9 @@ impl Gl {
             return self.set_error(GL_INVALID_VALUE);
         }
         match pname {
-            GL_LIGHT_MODEL_AMBIENT => self.lighting.model_ambient = vec4_from(params),
-            GL_LIGHT_MODEL_LOCAL_VIEWER => self.lighting.local_viewer = params[0] != 0.0,
-            _ => self.lighting.two_side = params[0] != 0.0,
+            GL_LIGHT_MODEL_AMBIENT => self.server.lighting.model_ambient = vec4_from(params),
+            GL_LIGHT_MODEL_LOCAL_VIEWER => self.server.lighting.local_viewer = params[0] != 0.0,
+            _ => self.server.lighting.two_side = params[0] != 0.0,
         }
         self.touch_state();
     }
@@ -293,11 +293,11 @@ impl Gl {
         if !face_ok || !mode_ok {
             return self.set_error(GL_INVALID_ENUM);
         }
-        if self.lighting.color_material == (face, mode) {
+        if self.server.lighting.color_material == (face, mode) {
             // Mesa returns early: no flush, no copy (a waiting glMaterial still lands).
             return;
         }
-        self.lighting.color_material = (face, mode);
+        self.server.lighting.color_material = (face, mode);
         self.touch_state();
         self.color_material_changed();
     }
@@ -313,7 +313,7 @@ impl Gl {
         if mode != GL_FLAT && mode != GL_SMOOTH {
             return self.set_error(GL_INVALID_ENUM);
         }
-        self.raster.shade_model = mode;
+        self.server.raster.shade_model = mode;
         self.touch_state();
     }
 }

@@ -13,7 +13,7 @@ impl Gl {
         if self.compiled_fragment(FragmentCall::DepthMask(flag)) {
             return;
         }
-        self.fragments.depth_write = flag != GL_FALSE;
+        self.server.fragments.depth_write = flag != GL_FALSE;
         self.touch_state();
     }
 
@@ -22,7 +22,7 @@ impl Gl {
         if self.compiled_fragment(FragmentCall::ColorMask([red, green, blue, alpha])) {
             return;
         }
-        self.fragments.color_write = [red, green, blue, alpha].map(|c| c != GL_FALSE);
+        self.server.fragments.color_write = [red, green, blue, alpha].map(|c| c != GL_FALSE);
         self.touch_state();
     }
 
@@ -35,7 +35,7 @@ impl Gl {
         if width < 0 || height < 0 {
             return self.set_error(GL_INVALID_VALUE);
         }
-        self.fragments.scissor = [x, y, width, height];
+        self.server.fragments.scissor = [x, y, width, height];
         self.touch_state();
     }
 
@@ -48,7 +48,7 @@ impl Gl {
         if !(GL_CLEAR..=GL_SET).contains(&opcode) {
             return self.set_error(GL_INVALID_ENUM);
         }
-        self.fragments.logic_op = opcode;
+        self.server.fragments.logic_op = opcode;
         self.touch_state();
     }
 }

@@ -105,7 +105,7 @@ impl Gl {
             return;
         }
         match mode {
-            GL_MODELVIEW..=GL_TEXTURE => self.matrices.mode = (mode - GL_MODELVIEW) as usize,
+            GL_MODELVIEW..=GL_TEXTURE => self.server.matrices.mode = (mode - GL_MODELVIEW) as usize,
             _ => self.set_error(GL_INVALID_ENUM),
         }
     }
@@ -115,7 +115,7 @@ impl Gl {
         if self.reject_inside_begin_end() {
             return;
         }
-        f(self.matrices.top());
+        f(self.server.matrices.top());
         self.touch_state();
     }
 
@@ -151,7 +151,7 @@ impl Gl {
     /// coordinates (`glClipPlane`, `glTexGen`'s `GL_EYE_PLANE`; GL 1.1 §2.11): the row vector
     /// (p₁ p₂ p₃ p₄) M⁻¹, which is (M⁻¹)ᵀ times the column.
     pub(crate) fn plane_to_eye(&self, plane: glam::Vec4) -> glam::Vec4 {
-        self.matrices.modelview().inverse().transpose() * plane
+        self.server.matrices.modelview().inverse().transpose() * plane
     }
 
     /// `glLoadMatrixd`: as [`Gl::load_matrixf`], the values cast to float (Mesa keeps floats).
@@ -169,12 +169,12 @@ impl Gl {
     /// `glGetFloatv(GL_MODELVIEW_MATRIX)` for GLU, which loads its sampling matrices so
     /// (`glrenderer.cc`). Unlike `glGet`, it records no error inside `begin`/`end`.
     pub(crate) fn modelview_matrix(&self) -> Mat4 {
-        self.matrices.modelview()
+        self.server.matrices.modelview()
     }
 
     /// `glGetFloatv(GL_PROJECTION_MATRIX)` for GLU (see [`Gl::modelview_matrix`]).
     pub(crate) fn projection_matrix(&self) -> Mat4 {
-        self.matrices.projection()
+        self.server.matrices.projection()
     }
 
     /// `glPushMatrix`: `GL_STACK_OVERFLOW` when the stack is full.
@@ -185,12 +185,12 @@ impl Gl {
         if self.reject_inside_begin_end() {
             return;
         }
-        let mode = self.matrices.mode;
-        let top = self.matrices.top().to_owned();
-        if self.matrices.stacks[mode].len() >= DEPTHS[mode] {
+        let mode = self.server.matrices.mode;
+        let top = self.server.matrices.top().to_owned();
+        if self.server.matrices.stacks[mode].len() >= DEPTHS[mode] {
             return self.set_error(GL_STACK_OVERFLOW);
         }
-        self.matrices.stacks[mode].push(top);
+        self.server.matrices.stacks[mode].push(top);
     }
 
     /// `glPopMatrix`: `GL_STACK_UNDERFLOW` when only one matrix is left.
@@ -201,7 +201,7 @@ impl Gl {
         if self.reject_inside_begin_end() {
             return;
         }
-        let stack = &mut self.matrices.stacks[self.matrices.mode];
+        let stack = &mut self.server.matrices.stacks[self.server.matrices.mode];
         if stack.len() <= 1 {
             return self.set_error(GL_STACK_UNDERFLOW);
         }

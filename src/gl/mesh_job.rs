@@ -185,6 +185,15 @@ fn with_scratch_rows(n: usize, f: impl FnOnce(&mut [Row<f32>])) {
     });
 }
 
+/// Small CPU meshes recorded but not yet evaluated: each job with its mesh's index in
+/// `frame.meshes`, and their grid points in all (evaluated as one batch past a threshold, or
+/// when the frame is looked at).
+#[derive(Debug, Default)]
+pub(crate) struct PendingMeshes {
+    pub jobs: Vec<(usize, MeshJob)>,
+    pub points: usize,
+}
+
 /// An enabled map sampled by a mesh.
 #[derive(Clone, Debug, PartialEq)]
 pub struct MapSample {

@@ -144,80 +144,59 @@ impl Default for Current {
 /// ```
 #[derive(Debug)]
 pub struct Gl {
-    width: i32,
-    height: i32,
-    error: GLenum,
-    /// Index in `frame.primitives` of the primitive being built between begin and end.
-    open_primitive: Option<usize>,
-    pub(crate) current: Current,
-    caps: enable::Caps,
-    pub(crate) eval: eval::EvalState,
-    /// `glPushAttrib`'s stack.
-    attrib_stack: attrib::AttribStack,
-    active_texture: GLenum,
-    pub(crate) matrices: matrix::MatrixStacks,
-    lighting: lighting::Lighting,
-    pub(crate) raster: raster::RasterState,
-    /// The current raster position, where bitmaps and pixels are drawn.
-    raster_pos: raster_pos::RasterPos,
-    /// Index in `frame.states` of a snapshot of the current state, if still valid.
-    state_index: Option<usize>,
-    frame: Frame,
-    /// Vertex buffers of a recycled frame's meshes, reused by the next meshes (no page faults).
-    vertex_pool: Vec<GridVertices>,
-    /// Small CPU meshes recorded but not yet evaluated (see `Gl::record_mesh`), with their
-    /// index in `frame.meshes` and their total grid points.
-    pub(crate) pending_meshes: (Vec<(usize, MeshJob)>, usize),
-    /// What GLUT's calls made inside callbacks ask of the window (redisplay, timers, idle, title).
-    pub(crate) glut: crate::glut::GlutState,
-    tessellator: Tessellator,
-    /// `glRenderMode(GL_FEEDBACK)` and its buffer.
-    feedback: feedback::Feedback,
+    /// GL's server state, one struct per attribute group (GL 1.1 spec §6.2).
+    pub(crate) server: ServerState,
+    /// The client's state: arrays, pixel store, and the feedback and selection buffers.
+    client: ClientState,
+    /// The frame being recorded and what builds it.
+    pub(crate) recorder: Recorder,
     /// Display lists, and the one being compiled.
     lists: lists::Lists,
-    /// Texture objects and unit 0's environment.
-    textures: texture::Textures,
-    /// `glTexGen`'s modes and planes.
-    tex_gen: texgen::TexGen,
-    /// What Mesa's deferred `glMaterial` leaves of `GL_COLOR_MATERIAL`'s tracking.
-    color_material_sync: color_material::ColorMaterialSync,
-    /// `glHint`'s requests.
-    hints: hint::Hints,
-    /// Blending, the alpha test and fog.
-    fragment_ops: fragment::FragmentOps,
-    /// Stencil, accumulation, write masks, scissor, logic op, draw and read buffers.
-    fragments: fragments::PerFragment,
-    /// How client memory is laid out for images and bitmaps (`glPixelStore`).
-    pixel_stores: pixels::PixelStores,
-    /// `glPixelTransfer`, `glPixelMap` and `glPixelZoom`.
-    pixel_state: pixel_transfer::PixelState,
-    /// The colour-index calls' state (an RGBA context keeps it and draws nothing with it).
-    color_index: color_index::ColorIndex,
-    /// What reads the window mid-frame (`glCopyTexImage`).
-    window_reader: window_read::Reader,
-    /// GLU NURBS objects, indexed by their handles: the one import from `gl` into `glu`, since
+    /// GLU's objects, one handle table per kind: the one import from `gl` into `glu`, since
     /// GLU's calls are methods of `Gl` (the porting rule).
-    pub(crate) nurbs: Vec<Option<crate::glu::NurbsObject>>,
-    /// GLU tessellator objects, indexed by their handles (`None` once deleted, or while one
-    /// of its calls runs).
-    pub(crate) tessellators: Vec<Option<crate::glu::TessObject>>,
-    /// The client's vertex arrays and the current edge flag.
-    arrays: arrays::VertexArrays,
-    /// Selection mode: its buffer, the name stack and the hit being gathered.
-    select: select::Selection,
-    /// GLU quadric objects, indexed by their handles (as `nurbs`).
-    pub(crate) quadrics: Vec<Option<crate::glu::quadric::QuadricObject>>,
+    pub(crate) glu: crate::glu::GluObjects,
+    /// What GLUT's calls made inside callbacks ask of the window (redisplay, timers, idle, title).
+    pub(crate) glut: crate::glut::GlutState,
+    /// GL's error flag: the first error since the last `glGetError`.
+    error: GLenum,
 }
 
-impl Gl {
-    /// A context for a drawable of `width` × `height` pixels, in GL's initial state.
-    #[must_use]
-    pub fn new(width: i32, height: i32) -> Self {
+/// GL's server state (GL 1.1 spec §6.2, tables 6.3–6.20): what `glPushAttrib` saves.
+#[derive(Debug)]
+pub(crate) struct ServerState {
+    pub(crate) current: Current,
+    pub(super) caps: enable::Caps,
+    pub(crate) eval: eval::EvalState,
+    /// `glPushAttrib`'s stack.
+    pub(super) attrib_stack: attrib::AttribStack,
+    pub(super) active_texture: GLenum,
+    pub(crate) matrices: matrix::MatrixStacks,
+    pub(super) lighting: lighting::Lighting,
+    pub(crate) raster: raster::RasterState,
+    /// The current raster position, where bitmaps and pixels are drawn.
+    pub(super) raster_pos: raster_pos::RasterPos,
+    /// Texture objects and unit 0's environment.
+    pub(super) textures: texture::Textures,
+    /// `glTexGen`'s modes and planes.
+    pub(super) tex_gen: texgen::TexGen,
+    /// What Mesa's deferred `glMaterial` leaves of `GL_COLOR_MATERIAL`'s tracking.
+    pub(super) color_material_sync: color_material::ColorMaterialSync,
+    /// `glHint`'s requests.
+    pub(super) hints: hint::Hints,
+    /// Blending, the alpha test and fog.
+    pub(super) fragment_ops: fragment::FragmentOps,
+    /// Stencil, accumulation, write masks, scissor, logic op, draw and read buffers.
+    pub(super) fragments: fragments::PerFragment,
+    /// `glPixelTransfer`, `glPixelMap` and `glPixelZoom`.
+    pub(super) pixel_state: pixel_transfer::PixelState,
+    /// The colour-index calls' state (an RGBA context keeps it and draws nothing with it).
+    pub(super) color_index: color_index::ColorIndex,
+}
+
+impl ServerState {
+    /// GL's initial state for a `width` × `height` drawable.
+    fn new(width: i32, height: i32) -> Self {
         Self {
-            width,
-            height,
-            error: GL_NO_ERROR,
-            open_primitive: None,
             current: Current::default(),
             caps: enable::Caps::default(),
             eval: eval::EvalState::default(),
@@ -227,48 +206,99 @@ impl Gl {
             lighting: lighting::Lighting::default(),
             raster: raster::RasterState::new(width, height),
             raster_pos: raster_pos::RasterPos::default(),
+            textures: texture::Textures::default(),
+            tex_gen: texgen::TexGen::default(),
+            color_material_sync: color_material::ColorMaterialSync::default(),
+            hints: hint::Hints::default(),
+            fragment_ops: fragment::FragmentOps::default(),
+            fragments: fragments::PerFragment::new(width, height),
+            pixel_state: pixel_transfer::PixelState::default(),
+            color_index: color_index::ColorIndex::default(),
+        }
+    }
+}
+
+/// The client's state (GL 1.1 spec §6.1.13, what `glPushClientAttrib` saves, with the feedback
+/// and selection buffers, which GL keeps on the client side too).
+#[derive(Debug, Default)]
+struct ClientState {
+    /// How client memory is laid out for images and bitmaps (`glPixelStore`).
+    pixel_stores: pixels::PixelStores,
+    /// The client's vertex arrays and the current edge flag.
+    arrays: arrays::VertexArrays,
+    /// `glRenderMode(GL_FEEDBACK)` and its buffer.
+    feedback: feedback::Feedback,
+    /// Selection mode: its buffer, the name stack and the hit being gathered.
+    select: select::Selection,
+}
+
+/// The recording: the frame, the primitive open between `begin` and `end`, and what the
+/// frame's meshes are evaluated with.
+#[derive(Debug)]
+pub(crate) struct Recorder {
+    pub(super) width: i32,
+    pub(super) height: i32,
+    /// Index in `frame.primitives` of the primitive being built between begin and end.
+    pub(super) open_primitive: Option<usize>,
+    /// Index in `frame.states` of a snapshot of the current state, if still valid.
+    pub(super) state_index: Option<usize>,
+    pub(super) frame: Frame,
+    /// Vertex buffers of a recycled frame's meshes, reused by the next meshes (no page faults).
+    pub(super) vertex_pool: Vec<GridVertices>,
+    /// Small CPU meshes recorded but not yet evaluated (see `Gl::record_mesh`).
+    pub(super) pending_meshes: mesh_job::PendingMeshes,
+    pub(super) tessellator: Tessellator,
+    /// What reads the window mid-frame (`glCopyTexImage`).
+    pub(super) window_reader: window_read::Reader,
+}
+
+impl Recorder {
+    fn new(width: i32, height: i32) -> Self {
+        Self {
+            width,
+            height,
+            open_primitive: None,
             state_index: None,
             frame: Frame::default(),
             vertex_pool: Vec::new(),
-            pending_meshes: (Vec::new(), 0),
-            glut: crate::glut::GlutState::default(),
+            pending_meshes: mesh_job::PendingMeshes::default(),
             tessellator: Tessellator::Cpu,
-            feedback: feedback::Feedback::default(),
-            lists: lists::Lists::default(),
-            pixel_stores: pixels::PixelStores::default(),
-            pixel_state: pixel_transfer::PixelState::default(),
-            color_index: color_index::ColorIndex::default(),
             window_reader: window_read::Reader::default(),
-            textures: texture::Textures::default(),
-            tex_gen: texgen::TexGen::default(),
-            hints: hint::Hints::default(),
-            color_material_sync: color_material::ColorMaterialSync::default(),
-            fragment_ops: fragment::FragmentOps::default(),
-            fragments: fragments::PerFragment::new(width, height),
-            nurbs: Vec::new(),
-            tessellators: Vec::new(),
-            arrays: arrays::VertexArrays::default(),
-            select: select::Selection::default(),
-            quadrics: Vec::new(),
+        }
+    }
+}
+
+impl Gl {
+    /// A context for a drawable of `width` × `height` pixels, in GL's initial state.
+    #[must_use]
+    pub fn new(width: i32, height: i32) -> Self {
+        Self {
+            server: ServerState::new(width, height),
+            client: ClientState::default(),
+            recorder: Recorder::new(width, height),
+            lists: lists::Lists::default(),
+            glu: crate::glu::GluObjects::default(),
+            glut: crate::glut::GlutState::default(),
+            error: GL_NO_ERROR,
         }
     }
 
     /// The drawable's width in pixels.
     #[must_use]
     pub fn width(&self) -> i32 {
-        self.width
+        self.recorder.width
     }
 
     /// The drawable's height in pixels.
     #[must_use]
     pub fn height(&self) -> i32 {
-        self.height
+        self.recorder.height
     }
 
     /// Sets the drawable size that `glutGet` reports (the window was resized).
     pub fn set_window_size(&mut self, width: i32, height: i32) {
-        self.width = width;
-        self.height = height;
+        self.recorder.width = width;
+        self.recorder.height = height;
     }
 
     /// What has been drawn so far (small meshes still pending are evaluated first, hence
@@ -276,38 +306,38 @@ impl Gl {
     #[must_use]
     pub fn frame(&mut self) -> &Frame {
         self.evaluate_pending_meshes();
-        &self.frame
+        &self.recorder.frame
     }
 
     /// Where `glEvalMesh` grids are evaluated from now on.
     pub fn set_tessellator(&mut self, tessellator: Tessellator) {
-        self.tessellator = tessellator;
+        self.recorder.tessellator = tessellator;
     }
 
     /// The tessellator in use.
     #[must_use]
     pub fn tessellator(&self) -> Tessellator {
-        self.tessellator
+        self.recorder.tessellator
     }
 
     /// Takes the recorded frame, leaving an empty one (the GL state is kept).
     pub fn take_frame(&mut self) -> Frame {
         self.evaluate_pending_meshes();
-        self.state_index = None;
-        std::mem::take(&mut self.frame)
+        self.recorder.state_index = None;
+        std::mem::take(&mut self.recorder.frame)
     }
 
     /// Gives a frame taken with [`Gl::take_frame`] back once it is drawn: its buffers are reused
     /// by the frames recorded next, so a render loop does not allocate (and fault in) fresh
     /// memory for every frame.
     pub fn recycle_frame(&mut self, mut frame: Frame) {
-        self.vertex_pool.clear();
+        self.recorder.vertex_pool.clear();
         for mesh in frame.meshes.drain(..) {
             if let MeshVertices::Evaluated(vertices) = mesh.vertices {
-                self.vertex_pool.push(vertices);
+                self.recorder.vertex_pool.push(vertices);
             }
         }
-        if self.frame.commands.is_empty() && self.frame.states.is_empty() {
+        if self.recorder.frame.commands.is_empty() && self.recorder.frame.states.is_empty() {
             frame.vertices.clear();
             frame.primitives.clear();
             frame.calls.clear();
@@ -316,65 +346,65 @@ impl Gl {
             frame.material_changes.clear();
             frame.hidden_edges.clear();
             frame.pixel_copies.clear();
-            self.frame = frame;
+            self.recorder.frame = frame;
         }
     }
 
     /// A vertex buffer from the recycled pool (empty if none is left).
     pub(crate) fn pooled_vertices(&mut self) -> GridVertices {
-        self.vertex_pool.pop().unwrap_or_default()
+        self.recorder.vertex_pool.pop().unwrap_or_default()
     }
 
     /// Marks the draw state as changed: the next primitive records a new snapshot.
     pub(crate) fn touch_state(&mut self) {
-        self.state_index = None;
+        self.recorder.state_index = None;
     }
 
     /// The index of the current draw state in the frame, recording it if needed.
     pub(crate) fn current_state_index(&mut self) -> usize {
-        if let Some(i) = self.state_index {
+        if let Some(i) = self.recorder.state_index {
             return i;
         }
         let texture = self.bound_texture();
         let state = self.snapshot(texture);
-        self.frame.states.push(state);
-        let i = self.frame.states.len() - 1;
-        self.state_index = Some(i);
+        self.recorder.frame.states.push(state);
+        let i = self.recorder.frame.states.len() - 1;
+        self.recorder.state_index = Some(i);
         i
     }
 
     fn snapshot(&self, texture: Option<texture::BoundTexture>) -> DrawState {
-        let r = &self.raster;
-        let lighting = self.caps.is_on(GL_LIGHTING).then(|| {
-            let mut l = self.lighting.clone();
+        let r = &self.server.raster;
+        let lighting = self.server.caps.is_on(GL_LIGHTING).then(|| {
+            let mut l = self.server.lighting.clone();
             for (i, light) in l.lights.iter_mut().enumerate() {
-                light.enabled = self.caps.is_on(GL_LIGHT0 + i as GLenum);
+                light.enabled = self.server.caps.is_on(GL_LIGHT0 + i as GLenum);
             }
             l
         });
         DrawState {
-            modelview: self.matrices.modelview(),
-            projection: self.matrices.projection(),
+            modelview: self.server.matrices.modelview(),
+            projection: self.server.matrices.projection(),
             viewport: r.viewport,
             depth_range: r.depth_range,
             lighting,
             color_material: self.color_material_tracks(),
-            normalize: self.caps.is_on(GL_NORMALIZE),
-            rescale_normal: self.caps.is_on(GL_RESCALE_NORMAL),
+            normalize: self.server.caps.is_on(GL_NORMALIZE),
+            rescale_normal: self.server.caps.is_on(GL_RESCALE_NORMAL),
             shade_model: r.shade_model,
             point_size: r.point_size,
             line_width: r.line_width,
             polygon_mode: r.polygon_mode,
             front_face: r.front_face,
-            cull_face: self.caps.is_on(GL_CULL_FACE).then_some(r.cull_face),
-            depth_test: self.caps.is_on(GL_DEPTH_TEST).then_some(r.depth_func),
+            cull_face: self.server.caps.is_on(GL_CULL_FACE).then_some(r.cull_face),
+            depth_test: self.server.caps.is_on(GL_DEPTH_TEST).then_some(r.depth_func),
             texture,
             blend: self.enabled_blend(),
             alpha_test: self.enabled_alpha_test(),
             fog: self.enabled_fog(),
             line_stipple: self.enabled_line_stipple(),
-            point_smooth: self.caps.is_on(GL_POINT_SMOOTH),
-            line_smooth: self.caps.is_on(GL_LINE_SMOOTH),
+            point_smooth: self.server.caps.is_on(GL_POINT_SMOOTH),
+            line_smooth: self.server.caps.is_on(GL_LINE_SMOOTH),
             polygon_offset: self.enabled_polygon_offset(),
             clip_planes: self.enabled_clip_planes(),
             polygon_stipple: self.enabled_polygon_stipple(),
@@ -401,7 +431,7 @@ impl Gl {
             self.set_error(GL_INVALID_ENUM);
             return;
         }
-        self.active_texture = texture;
+        self.server.active_texture = texture;
     }
 
     /// `glGetString`: who implements this GL (`GL_VENDOR` "gleval"), on what (`GL_RENDERER`:
@@ -416,7 +446,7 @@ impl Gl {
         }
         match name {
             GL_VENDOR => Some("gleval"),
-            GL_RENDERER => Some(match self.tessellator {
+            GL_RENDERER => Some(match self.recorder.tessellator {
                 Tessellator::Cpu => "gleval (CPU tessellator, wgpu rasteriser)",
                 Tessellator::Gpu => "gleval (WGSL tessellator, wgpu rasteriser)",
             }),
@@ -440,7 +470,7 @@ impl Gl {
     /// Whether a `begin` is open (no `end` yet): where GL forbids most calls.
     #[must_use]
     pub fn inside_begin_end(&self) -> bool {
-        self.open_primitive.is_some()
+        self.recorder.open_primitive.is_some()
     }
 
     /// For calls GL forbids between `begin` and `end`: records `GL_INVALID_OPERATION` and

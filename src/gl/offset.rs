@@ -38,7 +38,7 @@ impl Gl {
         if self.compiled(|| ListCommand::PolygonOffset(factor, units)) || self.reject_inside_begin_end() {
             return;
         }
-        self.raster.polygon_offset = (factor, units);
+        self.server.raster.polygon_offset = (factor, units);
         self.touch_state();
     }
 
@@ -54,7 +54,7 @@ impl Gl {
     pub(crate) fn enabled_polygon_offset(&self) -> Option<PolygonOffset> {
         let modes =
             [GL_POLYGON_OFFSET_POINT, GL_POLYGON_OFFSET_LINE, GL_POLYGON_OFFSET_FILL].map(|c| self.capability(c));
-        let (factor, units) = self.raster.polygon_offset;
+        let (factor, units) = self.server.raster.polygon_offset;
         modes.contains(&true).then_some(PolygonOffset { factor, units, modes })
     }
 }

@@ -162,7 +162,7 @@ impl Gl {
         {
             return;
         }
-        self.pixel_state.mode.zoom = [xfactor, yfactor];
+        self.server.pixel_state.mode.zoom = [xfactor, yfactor];
     }
 
     /// `glPixelTransferf`: `GL_MAP_COLOR` and `GL_MAP_STENCIL` (on when not 0), `GL_INDEX_SHIFT`
@@ -173,7 +173,7 @@ impl Gl {
         {
             return;
         }
-        let mode = &mut self.pixel_state.mode;
+        let mode = &mut self.server.pixel_state.mode;
         match pname {
             GL_MAP_COLOR => mode.map_color = param != 0.0,
             GL_MAP_STENCIL => mode.map_stencil = param != 0.0,
@@ -213,7 +213,7 @@ impl Gl {
         }
         let Some(values) = values.get(..size) else { return self.set_error(GL_INVALID_VALUE) };
         let Some(index) = map_index(map) else { return self.set_error(GL_INVALID_ENUM) };
-        self.pixel_state.maps[index] = match map {
+        self.server.pixel_state.maps[index] = match map {
             GL_PIXEL_MAP_S_TO_S => values.iter().map(|v| v.round()).collect(),
             GL_PIXEL_MAP_I_TO_I => values.to_vec(),
             _ => values.iter().map(|v| v.clamp(0.0, 1.0)).collect(),
@@ -274,7 +274,7 @@ impl Gl {
             return;
         }
         let Some(index) = map_index(map) else { return self.set_error(GL_INVALID_ENUM) };
-        let values = &self.pixel_state.maps[index];
+        let values = &self.server.pixel_state.maps[index];
         let Some(out) = out.get_mut(..values.len()) else { return self.set_error(GL_INVALID_VALUE) };
         for (o, &v) in out.iter_mut().zip(values) {
             *o = convert(map, v);
@@ -285,18 +285,18 @@ impl Gl {
     /// hands [`Gl::get_pixel_mapfv`] as the slice's length.
     #[must_use]
     pub fn pixel_map_size(&self, map: GLenum) -> usize {
-        map_index(map).map_or(0, |i| self.pixel_state.maps[i].len())
+        map_index(map).map_or(0, |i| self.server.pixel_state.maps[i].len())
     }
 
     /// The colour transfer a draw, read or copy made now applies; `None` when it changes
     /// nothing (Mesa's `_ImageTransferState` without its colour bits).
     pub(crate) fn color_transfer(&self) -> Option<Arc<ColorTransfer>> {
-        let mode = &self.pixel_state.mode;
+        let mode = &self.server.pixel_state.mode;
         let identity = mode.scale == [1.0; 4] && mode.bias == [0.0; 4];
         if identity && !mode.map_color {
             return None;
         }
-        let maps = mode.map_color.then(|| std::array::from_fn(|k| self.pixel_state.maps[6 + k].clone()));
+        let maps = mode.map_color.then(|| std::array::from_fn(|k| self.server.pixel_state.maps[6 + k].clone()));
         Some(Arc::new(ColorTransfer { scale: mode.scale, bias: mode.bias, maps, texture_lookup: false }))
     }
 
@@ -318,12 +318,12 @@ impl Gl {
 
     /// The depth transfer in force.
     pub(crate) fn depth_transfer(&self) -> DepthTransfer {
-        self.pixel_state.mode.depth
+        self.server.pixel_state.mode.depth
     }
 
     /// `glPixelZoom`'s factors.
     pub(crate) fn zoom(&self) -> [f32; 2] {
-        self.pixel_state.mode.zoom
+        self.server.pixel_state.mode.zoom
     }
 
     /// How a `GL_COLOR_INDEX` pixel of `glDrawPixels` becomes RGBA in an RGBA context: through
@@ -334,14 +334,14 @@ impl Gl {
     pub(crate) fn index_to_rgba(&self, index: f32) -> [f32; 4] {
         let i = if index.is_finite() { index.trunc() as i64 } else { 0 };
         std::array::from_fn(|k| {
-            let map = &self.pixel_state.maps[2 + k];
+            let map = &self.server.pixel_state.maps[2 + k];
             map[i.rem_euclid(map.len() as i64) as usize]
         })
     }
 
     /// What `glPushAttrib` saves of the pixel area, whatever the mask.
     pub(crate) fn pixel_attrib(&self) -> PixelAttrib {
-        (self.pixel_state.mode, self.color_index)
+        (self.server.pixel_state.mode, self.server.color_index)
     }
 
     /// Restores the groups of `mask` from what [`Gl::pixel_attrib`] saved: `GL_PIXEL_MODE_BIT`
@@ -349,13 +349,13 @@ impl Gl {
     /// clear index and the index mask (measured on Mesa).
     pub(crate) fn restore_pixel_attrib(&mut self, mask: GLbitfield, (mode, index): PixelAttrib) {
         if mask & GL_PIXEL_MODE_BIT != 0 {
-            self.pixel_state.mode = mode;
+            self.server.pixel_state.mode = mode;
         }
         if mask & GL_CURRENT_BIT != 0 {
-            self.color_index.current = index.current;
+            self.server.color_index.current = index.current;
         }
         if mask & GL_COLOR_BUFFER_BIT != 0 {
-            (self.color_index.clear, self.color_index.mask) = (index.clear, index.mask);
+            (self.server.color_index.clear, self.server.color_index.mask) = (index.clear, index.mask);
         }
     }
 }
@@ -378,7 +378,7 @@ fn scale_or_bias(pname: GLenum) -> Option<(bool, usize)> {
 /// `glGet` of a transfer value: `GL_PIXEL_MODE_BIT`'s fields (GL 1.1 table 6.17).
 macro_rules! mode_row {
     ($name:expr, $kind:ident, $($field:tt)+) => {
-        row($name, 1, Kind::$kind, |gl, o| o[0] = f64::from(gl.pixel_state.mode.$($field)+))
+        row($name, 1, Kind::$kind, |gl, o| o[0] = f64::from(gl.server.pixel_state.mode.$($field)+))
     };
 }
 
@@ -386,15 +386,15 @@ macro_rules! mode_row {
 macro_rules! map_size_row {
     ($name:expr) => {
         row($name, 1, Kind::Int, |gl, o| {
-            o[0] = gl.pixel_state.maps[($name - GL_PIXEL_MAP_I_TO_I_SIZE) as usize].len() as f64
+            o[0] = gl.server.pixel_state.maps[($name - GL_PIXEL_MAP_I_TO_I_SIZE) as usize].len() as f64
         })
     };
 }
 
 /// The pixel transfer, zoom and map rows of `glGet`.
 pub(crate) static GET_ROWS: &[StateVar] = &[
-    row(GL_MAP_COLOR, 1, Kind::Bool, |gl, o| put_flag(o, gl.pixel_state.mode.map_color)),
-    row(GL_MAP_STENCIL, 1, Kind::Bool, |gl, o| put_flag(o, gl.pixel_state.mode.map_stencil)),
+    row(GL_MAP_COLOR, 1, Kind::Bool, |gl, o| put_flag(o, gl.server.pixel_state.mode.map_color)),
+    row(GL_MAP_STENCIL, 1, Kind::Bool, |gl, o| put_flag(o, gl.server.pixel_state.mode.map_stencil)),
     mode_row!(GL_INDEX_SHIFT, Int, index_shift),
     mode_row!(GL_INDEX_OFFSET, Int, index_offset),
     mode_row!(GL_RED_SCALE, Float, scale[0]),

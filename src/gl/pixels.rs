@@ -76,8 +76,10 @@ impl Gl {
             return;
         }
         let (store, field) = match pname {
-            GL_UNPACK_SWAP_BYTES..=GL_UNPACK_ALIGNMENT => (&mut self.pixel_stores.unpack, pname - GL_UNPACK_SWAP_BYTES),
-            GL_PACK_SWAP_BYTES..=GL_PACK_ALIGNMENT => (&mut self.pixel_stores.pack, pname - GL_PACK_SWAP_BYTES),
+            GL_UNPACK_SWAP_BYTES..=GL_UNPACK_ALIGNMENT => {
+                (&mut self.client.pixel_stores.unpack, pname - GL_UNPACK_SWAP_BYTES)
+            }
+            GL_PACK_SWAP_BYTES..=GL_PACK_ALIGNMENT => (&mut self.client.pixel_stores.pack, pname - GL_PACK_SWAP_BYTES),
             _ => return self.set_error(GL_INVALID_ENUM),
         };
         let count = usize::try_from(param).ok();
@@ -111,7 +113,7 @@ impl Gl {
 
     /// `GL_CLIENT_ATTRIB_STACK_DEPTH`.
     pub(crate) fn client_attrib_stack_depth(&self) -> usize {
-        self.pixel_stores.saved.len()
+        self.client.pixel_stores.saved.len()
     }
 
     /// `glPushClientAttrib(mask)`: saves the pixel-store modes when `mask` has
@@ -121,7 +123,7 @@ impl Gl {
         if self.reject_inside_begin_end() {
             return;
         }
-        let stores = &mut self.pixel_stores;
+        let stores = &mut self.client.pixel_stores;
         if stores.saved.len() >= MAX_CLIENT_ATTRIB_STACK_DEPTH {
             return self.set_error(GL_STACK_OVERFLOW);
         }
@@ -136,30 +138,32 @@ impl Gl {
         if self.reject_inside_begin_end() {
             return;
         }
-        let popped = self.pixel_stores.saved.pop();
+        let popped = self.client.pixel_stores.saved.pop();
         if popped.is_some() {
             self.pop_client_arrays();
         }
         match popped {
             None => self.set_error(GL_STACK_UNDERFLOW),
-            Some(Some((unpack, pack))) => (self.pixel_stores.unpack, self.pixel_stores.pack) = (unpack, pack),
+            Some(Some((unpack, pack))) => {
+                (self.client.pixel_stores.unpack, self.client.pixel_stores.pack) = (unpack, pack)
+            }
             Some(None) => {}
         }
     }
 
     /// The unpack modes images, bitmaps and textures are read with.
     pub(crate) fn unpack_store(&self) -> PixelStore {
-        self.pixel_stores.unpack
+        self.client.pixel_stores.unpack
     }
 
     /// The pack modes images are written with (GLU's `gluScaleImage` writes with them too).
     pub(crate) fn pack_store(&self) -> PixelStore {
-        self.pixel_stores.pack
+        self.client.pixel_stores.pack
     }
 
     /// `glGetIntegerv(GL_UNPACK_ALIGNMENT)`, which GLU saves around its own unpacking.
     pub(crate) fn unpack_alignment(&self) -> GLint {
-        self.pixel_stores.unpack.alignment as GLint
+        self.client.pixel_stores.unpack.alignment as GLint
     }
 }
 
@@ -167,9 +171,9 @@ impl Gl {
     /// Runs `f` with `store` as the unpack modes, then restores the client's (a display list
     /// replays an image with the modes it was compiled with).
     pub(crate) fn with_unpack_store(&mut self, store: PixelStore, f: impl FnOnce(&mut Gl)) {
-        let saved = std::mem::replace(&mut self.pixel_stores.unpack, store);
+        let saved = std::mem::replace(&mut self.client.pixel_stores.unpack, store);
         f(self);
-        self.pixel_stores.unpack = saved;
+        self.client.pixel_stores.unpack = saved;
     }
 }
 
@@ -209,7 +213,7 @@ mod tests {
         assert_eq!(gl.unpack_store().alignment, 8, "the vertex-array group does not hold the pixel stores");
         gl.pop_client_attrib();
         assert_eq!(gl.unpack_store().alignment, 2);
-        assert!(!gl.pixel_stores.pack.lsb_first);
+        assert!(!gl.client.pixel_stores.pack.lsb_first);
         gl.pop_client_attrib();
         assert_eq!(gl.get_error(), GL_STACK_UNDERFLOW);
         for _ in 0..=MAX_CLIENT_ATTRIB_STACK_DEPTH {
@@ -231,6 +235,6 @@ mod tests {
         gl.pixel_storef(GL_PACK_ALIGNMENT, 8.0);
         assert_eq!(gl.get_error(), GL_NO_ERROR);
         assert_eq!(gl.unpack_store().alignment, 1);
-        assert_eq!(gl.pixel_stores.pack.alignment, 8);
+        assert_eq!(gl.client.pixel_stores.pack.alignment, 8);
     }
 }

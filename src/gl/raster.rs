@@ -71,7 +71,7 @@ impl Gl {
             return self.set_error(GL_INVALID_VALUE);
         }
         let (width, height) = (width.min(MAX_VIEWPORT_DIMS), height.min(MAX_VIEWPORT_DIMS));
-        self.raster.viewport = [x, y, width, height];
+        self.server.raster.viewport = [x, y, width, height];
         self.touch_state();
     }
 
@@ -83,7 +83,7 @@ impl Gl {
         if self.reject_inside_begin_end() {
             return;
         }
-        self.raster.depth_range = [near.clamp(0.0, 1.0) as f32, far.clamp(0.0, 1.0) as f32];
+        self.server.raster.depth_range = [near.clamp(0.0, 1.0) as f32, far.clamp(0.0, 1.0) as f32];
         self.touch_state();
     }
 
@@ -98,7 +98,7 @@ impl Gl {
         if size.is_nan() || size <= 0.0 {
             return self.set_error(GL_INVALID_VALUE);
         }
-        self.raster.point_size = size;
+        self.server.raster.point_size = size;
         self.touch_state();
     }
 
@@ -113,7 +113,7 @@ impl Gl {
         if width.is_nan() || width <= 0.0 {
             return self.set_error(GL_INVALID_VALUE);
         }
-        self.raster.line_width = width;
+        self.server.raster.line_width = width;
         self.touch_state();
     }
 
@@ -129,9 +129,9 @@ impl Gl {
             return self.set_error(GL_INVALID_ENUM);
         }
         match face {
-            GL_FRONT => self.raster.polygon_mode[0] = mode,
-            GL_BACK => self.raster.polygon_mode[1] = mode,
-            GL_FRONT_AND_BACK => self.raster.polygon_mode = [mode, mode],
+            GL_FRONT => self.server.raster.polygon_mode[0] = mode,
+            GL_BACK => self.server.raster.polygon_mode[1] = mode,
+            GL_FRONT_AND_BACK => self.server.raster.polygon_mode = [mode, mode],
             _ => return self.set_error(GL_INVALID_ENUM),
         }
         self.touch_state();
@@ -140,13 +140,13 @@ impl Gl {
     /// `glGetIntegerv(GL_VIEWPORT)` for GLU, which loads its sampling matrices so
     /// (`glrenderer.cc`). Unlike `glGet`, it records no error inside `begin`/`end`.
     pub(crate) fn viewport_box(&self) -> [GLint; 4] {
-        self.raster.viewport
+        self.server.raster.viewport
     }
 
     /// `glGetIntegerv(GL_POLYGON_MODE)` for GLU: the front and back modes, which GLU saves
     /// around a surface and puts back with `glPolygonMode` (`glsurfeval.cc`).
     pub(crate) fn polygon_modes(&self) -> [GLenum; 2] {
-        self.raster.polygon_mode
+        self.server.raster.polygon_mode
     }
 
     /// `glFrontFace`: `GL_CW` or `GL_CCW`.
@@ -160,7 +160,7 @@ impl Gl {
         if mode != GL_CW && mode != GL_CCW {
             return self.set_error(GL_INVALID_ENUM);
         }
-        self.raster.front_face = mode;
+        self.server.raster.front_face = mode;
         self.touch_state();
     }
 
@@ -175,7 +175,7 @@ impl Gl {
         if !matches!(mode, GL_FRONT | GL_BACK | GL_FRONT_AND_BACK) {
             return self.set_error(GL_INVALID_ENUM);
         }
-        self.raster.cull_face = mode;
+        self.server.raster.cull_face = mode;
         self.touch_state();
     }
 
@@ -190,7 +190,7 @@ impl Gl {
         if !(GL_NEVER..=GL_ALWAYS).contains(&func) {
             return self.set_error(GL_INVALID_ENUM);
         }
-        self.raster.depth_func = func;
+        self.server.raster.depth_func = func;
         self.touch_state();
     }
 
@@ -202,7 +202,7 @@ impl Gl {
         if self.reject_inside_begin_end() {
             return;
         }
-        self.raster.clear_color = [r, g, b, a].map(|c| c.clamp(0.0, 1.0));
+        self.server.raster.clear_color = [r, g, b, a].map(|c| c.clamp(0.0, 1.0));
     }
 
     /// `glClearDepth` (clamped to [0, 1]).
@@ -213,7 +213,7 @@ impl Gl {
         if self.reject_inside_begin_end() {
             return;
         }
-        self.raster.clear_depth = depth.clamp(0.0, 1.0) as f32;
+        self.server.raster.clear_depth = depth.clamp(0.0, 1.0) as f32;
     }
 
     /// `glClear`: bits other than colour, depth, stencil and accum → `GL_INVALID_VALUE`.
@@ -229,9 +229,10 @@ impl Gl {
         if mask & !known != 0 {
             return self.set_error(GL_INVALID_VALUE);
         }
-        let (color, depth) = (self.raster.clear_color, self.raster.clear_depth);
-        let (stencil, accum, tests) = (self.fragments.clear_stencil, self.fragments.clear_accum, self.fragment_tests());
-        self.frame.commands.push(Command::Clear { mask, color, depth, stencil, accum, tests });
+        let (color, depth) = (self.server.raster.clear_color, self.server.raster.clear_depth);
+        let (stencil, accum, tests) =
+            (self.server.fragments.clear_stencil, self.server.fragments.clear_accum, self.fragment_tests());
+        self.recorder.frame.commands.push(Command::Clear { mask, color, depth, stencil, accum, tests });
     }
 
     /// `glFlush`: the recording is already complete; nothing to do.

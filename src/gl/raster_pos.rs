@@ -79,10 +79,10 @@ impl Transform {
 impl Gl {
     fn raster_transform(&self) -> Transform {
         Transform {
-            modelview: self.matrices.modelview(),
-            projection: self.matrices.projection(),
-            viewport: self.raster.viewport,
-            depth_range: self.raster.depth_range,
+            modelview: self.server.matrices.modelview(),
+            projection: self.server.matrices.projection(),
+            viewport: self.server.raster.viewport,
+            depth_range: self.server.raster.depth_range,
             clip_planes: self.enabled_clip_planes(),
         }
     }
@@ -93,13 +93,15 @@ impl Gl {
         }
         self.flush_current();
         let Some((window, distance)) = self.raster_transform().project(p) else {
-            self.raster_pos.valid = false;
+            self.server.raster_pos.valid = false;
             return;
         };
         // The raster texture coordinates are the current ones through the texture matrix
         // (GL 1.1 §2.12), as a vertex's are.
-        let tex_coord = (self.matrices.texture() * glam::Vec4::from_array(self.current.tex_coord)).to_array();
-        self.raster_pos = RasterPos { window, valid: true, color: self.current.color, tex_coord, distance };
+        let tex_coord =
+            (self.server.matrices.texture() * glam::Vec4::from_array(self.server.current.tex_coord)).to_array();
+        self.server.raster_pos =
+            RasterPos { window, valid: true, color: self.server.current.color, tex_coord, distance };
     }
 
     /// `glRasterPos2f` (z = 0, w = 1). Inside `begin`/`end` → `GL_INVALID_OPERATION`.
@@ -196,31 +198,33 @@ impl Gl {
             return;
         }
         self.flush_current();
-        let [near, far] = self.raster.depth_range;
+        let [near, far] = self.server.raster.depth_range;
         let z = near + z.clamp(0.0, 1.0) * (far - near);
-        self.raster_pos = RasterPos {
+        self.server.raster_pos = RasterPos {
             window: [x, y, z, 1.0],
             valid: true,
-            color: self.current.color,
-            tex_coord: self.current.tex_coord,
+            color: self.server.current.color,
+            tex_coord: self.server.current.tex_coord,
             distance: 0.0,
         };
     }
 
     /// Moves a valid raster position by (dx, dy) window pixels (`glBitmap`'s advance).
     pub(crate) fn advance_raster_pos(&mut self, dx: f32, dy: f32) {
-        self.raster_pos.window[0] += dx;
-        self.raster_pos.window[1] += dy;
+        self.server.raster_pos.window[0] += dx;
+        self.server.raster_pos.window[1] += dy;
     }
 }
 
 /// The raster position's `glGet` rows (GL 1.1 table 6.3; the colour reads clamped, as Mesa's).
 pub(crate) static GET_ROWS: &[StateVar] = &[
-    row(GL_CURRENT_RASTER_POSITION, 4, Kind::Float, |gl, o| put(o, &gl.raster_pos.window)),
-    row(GL_CURRENT_RASTER_DISTANCE, 1, Kind::Float, |gl, o| o[0] = f64::from(gl.raster_pos.distance)),
-    row(GL_CURRENT_RASTER_COLOR, 4, Kind::Normalized, |gl, o| put(o, &gl.raster_pos.color.map(|c| c.clamp(0.0, 1.0)))),
-    row(GL_CURRENT_RASTER_TEXTURE_COORDS, 4, Kind::Float, |gl, o| put(o, &gl.raster_pos.tex_coord)),
-    row(GL_CURRENT_RASTER_POSITION_VALID, 1, Kind::Bool, |gl, o| put_flag(o, gl.raster_pos.valid)),
+    row(GL_CURRENT_RASTER_POSITION, 4, Kind::Float, |gl, o| put(o, &gl.server.raster_pos.window)),
+    row(GL_CURRENT_RASTER_DISTANCE, 1, Kind::Float, |gl, o| o[0] = f64::from(gl.server.raster_pos.distance)),
+    row(GL_CURRENT_RASTER_COLOR, 4, Kind::Normalized, |gl, o| {
+        put(o, &gl.server.raster_pos.color.map(|c| c.clamp(0.0, 1.0)))
+    }),
+    row(GL_CURRENT_RASTER_TEXTURE_COORDS, 4, Kind::Float, |gl, o| put(o, &gl.server.raster_pos.tex_coord)),
+    row(GL_CURRENT_RASTER_POSITION_VALID, 1, Kind::Bool, |gl, o| put_flag(o, gl.server.raster_pos.valid)),
 ];
 
 #[cfg(test)]

@@ -109,7 +109,7 @@ impl Gl {
         if w == 0 || h == 0 {
             return Some(0);
         }
-        let store = self.pixel_stores.pack;
+        let store = self.client.pixel_stores.pack;
         let stride = store.row_stride(w, n, size);
         let first = store.first_byte(stride, n * size);
         first.checked_add((h - 1).checked_mul(stride)?)?.checked_add(w * n * size)
@@ -211,7 +211,7 @@ impl Gl {
         at: impl Fn(i32, i32) -> Option<[f32; 4]>,
         out: &mut [u8],
     ) {
-        let store = self.pixel_stores.pack;
+        let store = self.client.pixel_stores.pack;
         let n = format_size(format).unwrap_or(1);
         let stride = store.row_stride(w, n, size);
         let first = store.first_byte(stride, n * size);

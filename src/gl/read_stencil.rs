@@ -43,7 +43,7 @@ impl Gl {
             return self.set_error(GL_INVALID_VALUE);
         }
         let Some(size) = type_size(type_) else { return self.set_error(GL_INVALID_ENUM) };
-        if self.fragments.config.stencil_bits == 0 {
+        if self.server.fragments.config.stencil_bits == 0 {
             return self.set_error(GL_INVALID_OPERATION);
         }
         let needed = self.packed_image_len(width, height, GL_STENCIL_INDEX, type_).unwrap_or(usize::MAX);
@@ -55,7 +55,7 @@ impl Gl {
         }
         let (ww, wh) = (self.width(), self.height());
         let Some(stencil) = window(self.frame()) else { return self.set_error(GL_OUT_OF_MEMORY) };
-        let store = self.pixel_stores.pack;
+        let store = self.client.pixel_stores.pack;
         let (w, h) = (width as usize, height as usize);
         let stride = store.row_stride(w, 1, size);
         let first = store.first_byte(stride, size);

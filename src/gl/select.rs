@@ -112,7 +112,7 @@ impl Gl {
         if let Some(error) = self.select_buffer_error(size) {
             return self.set_error(error);
         }
-        let s = &mut self.select;
+        let s = &mut self.client.select;
         let size = size as usize;
         (s.size, s.hit, s.wanted) = (size, None, 0);
         s.written.clear();
@@ -122,38 +122,38 @@ impl Gl {
     /// buffer knows from it whether the call took.
     #[must_use]
     pub fn select_buffer_size(&self) -> usize {
-        self.select.size
+        self.client.select.size
     }
 
     /// The values the last selection pass wrote (at most the buffer's size): hit records of
     /// (name count, minimum depth, maximum depth, names…).
     #[must_use]
     pub fn select_values(&self) -> &[GLuint] {
-        &self.select.values
+        &self.client.select.values
     }
 
     /// The complete hit records of the last selection pass, in the order written
     /// ([`Gl::select_values`] read as GL 1.1 §5.2 lays them out); a record a buffer too small
     /// cut short is left out.
     pub fn select_hits(&self) -> impl Iterator<Item = SelectHit<'_>> {
-        hit_records(&self.select.values)
+        hit_records(&self.client.select.values)
     }
 
     /// Entering selection mode (from `render_mode`): without a buffer → `GL_INVALID_OPERATION`,
     /// the mode changes all the same (as Mesa).
     pub(crate) fn start_select(&mut self) {
-        if self.select.size == 0 {
+        if self.client.select.size == 0 {
             self.set_error(GL_INVALID_OPERATION);
         }
         self.evaluate_pending_meshes();
-        self.select.start = self.frame.commands.len();
+        self.client.select.start = self.recorder.frame.commands.len();
     }
 
     /// Leaving selection mode: the last hit record, and the number of hits (−1 when the buffer
     /// overflowed); the name stack empties.
     pub(crate) fn finish_select(&mut self) -> GLint {
         self.gather_hits();
-        let s = &mut self.select;
+        let s = &mut self.client.select;
         s.write_hit_record();
         let result = if s.wanted > s.size { -1 } else { s.hits };
         s.values = std::mem::take(&mut s.written);
@@ -165,8 +165,8 @@ impl Gl {
     /// Tests the primitives drawn since the last time for hits, and takes them out of the frame.
     fn gather_hits(&mut self) {
         self.evaluate_pending_meshes();
-        let start = self.select.start.min(self.frame.commands.len());
-        let commands: Vec<_> = self.frame.commands.drain(start..).collect();
+        let start = self.client.select.start.min(self.recorder.frame.commands.len());
+        let commands: Vec<_> = self.recorder.frame.commands.drain(start..).collect();
         for command in &commands {
             for prim in self.command_primitives(command) {
                 let vertices = match &prim {
@@ -176,8 +176,8 @@ impl Gl {
                 };
                 for v in vertices {
                     let z = v.window[2];
-                    let (min, max) = self.select.hit.unwrap_or((1.0, 0.0));
-                    self.select.hit = Some((min.min(z), max.max(z)));
+                    let (min, max) = self.client.select.hit.unwrap_or((1.0, 0.0));
+                    self.client.select.hit = Some((min.min(z), max.max(z)));
                 }
             }
         }
@@ -199,8 +199,8 @@ impl Gl {
     /// `glInitNames`: empties the name stack (writing the pending hit record).
     pub fn init_names(&mut self) {
         if self.name_call(ListCommand::InitNames) {
-            self.select.write_hit_record();
-            self.select.names.clear();
+            self.client.select.write_hit_record();
+            self.client.select.names.clear();
         }
     }
 
@@ -210,11 +210,11 @@ impl Gl {
         if !self.name_call(ListCommand::LoadName(name)) {
             return;
         }
-        if self.select.names.is_empty() {
+        if self.client.select.names.is_empty() {
             return self.set_error(GL_INVALID_OPERATION);
         }
-        self.select.write_hit_record();
-        if let Some(top) = self.select.names.last_mut() {
+        self.client.select.write_hit_record();
+        if let Some(top) = self.client.select.names.last_mut() {
             *top = name;
         }
     }
@@ -224,11 +224,11 @@ impl Gl {
         if !self.name_call(ListCommand::PushName(name)) {
             return;
         }
-        self.select.write_hit_record();
-        if self.select.names.len() >= MAX_NAME_STACK_DEPTH {
+        self.client.select.write_hit_record();
+        if self.client.select.names.len() >= MAX_NAME_STACK_DEPTH {
             return self.set_error(GL_STACK_OVERFLOW);
         }
-        self.select.names.push(name);
+        self.client.select.names.push(name);
     }
 
     /// `glPopName`: an empty stack → `GL_STACK_UNDERFLOW`.
@@ -236,8 +236,8 @@ impl Gl {
         if !self.name_call(ListCommand::PopName) {
             return;
         }
-        self.select.write_hit_record();
-        if self.select.names.pop().is_none() {
+        self.client.select.write_hit_record();
+        if self.client.select.names.pop().is_none() {
             self.set_error(GL_STACK_UNDERFLOW);
         }
     }
@@ -245,8 +245,8 @@ impl Gl {
 
 /// Selection's `glGet` rows (GL 1.1 tables 6.18 and 6.20).
 pub(crate) static GET_ROWS: &[StateVar] = &[
-    row(GL_SELECTION_BUFFER_SIZE, 1, Kind::Int, |gl, o| o[0] = gl.select.size as f64),
-    row(GL_NAME_STACK_DEPTH, 1, Kind::Int, |gl, o| o[0] = gl.select.names.len() as f64),
+    row(GL_SELECTION_BUFFER_SIZE, 1, Kind::Int, |gl, o| o[0] = gl.client.select.size as f64),
+    row(GL_NAME_STACK_DEPTH, 1, Kind::Int, |gl, o| o[0] = gl.client.select.names.len() as f64),
     int_limit!(GL_MAX_NAME_STACK_DEPTH, MAX_NAME_STACK_DEPTH),
 ];
 

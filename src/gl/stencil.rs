@@ -34,7 +34,7 @@ impl Gl {
         if !(GL_NEVER..=GL_ALWAYS).contains(&func) {
             return self.set_error(GL_INVALID_ENUM);
         }
-        let s = &mut self.fragments.stencil;
+        let s = &mut self.server.fragments.stencil;
         (s.func, s.reference, s.value_mask) = (func, reference, mask);
         self.touch_state();
     }
@@ -50,7 +50,7 @@ impl Gl {
         if ![fail, zfail, zpass].into_iter().all(stencil_op_known) {
             return self.set_error(GL_INVALID_ENUM);
         }
-        self.fragments.stencil.ops = [fail, zfail, zpass];
+        self.server.fragments.stencil.ops = [fail, zfail, zpass];
         self.touch_state();
     }
 
@@ -59,7 +59,7 @@ impl Gl {
         if self.compiled_fragment(FragmentCall::StencilMask(mask)) {
             return;
         }
-        self.fragments.stencil.write_mask = mask;
+        self.server.fragments.stencil.write_mask = mask;
         self.touch_state();
     }
 
@@ -69,7 +69,7 @@ impl Gl {
         if self.compiled_fragment(FragmentCall::ClearStencil(s)) {
             return;
         }
-        self.fragments.clear_stencil = s;
+        self.server.fragments.clear_stencil = s;
     }
 }
 

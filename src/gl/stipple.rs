@@ -20,7 +20,7 @@ impl Gl {
         if self.compiled(|| ListCommand::LineStipple(factor, pattern)) || self.reject_inside_begin_end() {
             return;
         }
-        self.raster.line_stipple = (factor.clamp(1, MAX_STIPPLE_FACTOR), pattern);
+        self.server.raster.line_stipple = (factor.clamp(1, MAX_STIPPLE_FACTOR), pattern);
         self.touch_state();
     }
 
@@ -38,19 +38,19 @@ impl Gl {
     /// Sets the unpacked mask (`None`: the client's data was too short).
     pub(crate) fn set_polygon_stipple(&mut self, rows: Option<[u32; 32]>) {
         let Some(rows) = rows else { return self.set_error(GL_INVALID_VALUE) };
-        self.raster.polygon_stipple = rows;
+        self.server.raster.polygon_stipple = rows;
         self.touch_state();
     }
 
     /// The mask while `GL_POLYGON_STIPPLE` is on: row y (from the window's bottom, modulo 32)
     /// has bit x set where fragments are kept.
     pub(crate) fn enabled_polygon_stipple(&self) -> Option<[u32; 32]> {
-        self.capability(GL_POLYGON_STIPPLE).then_some(self.raster.polygon_stipple)
+        self.capability(GL_POLYGON_STIPPLE).then_some(self.server.raster.polygon_stipple)
     }
 
     /// The stipple while `GL_LINE_STIPPLE` is on: (factor, pattern).
     pub(crate) fn enabled_line_stipple(&self) -> Option<(i32, u16)> {
-        self.capability(GL_LINE_STIPPLE).then_some(self.raster.line_stipple)
+        self.capability(GL_LINE_STIPPLE).then_some(self.server.raster.line_stipple)
     }
 }
 
@@ -67,9 +67,9 @@ mod tests {
     fn the_factor_is_clamped_and_nothing_is_an_error() {
         let mut gl = Gl::new(4, 4);
         gl.line_stipple(0, 0x00FF);
-        assert_eq!(gl.raster.line_stipple, (1, 0x00FF));
+        assert_eq!(gl.server.raster.line_stipple, (1, 0x00FF));
         gl.line_stipple(1000, 1);
-        assert_eq!(gl.raster.line_stipple, (256, 1));
+        assert_eq!(gl.server.raster.line_stipple, (256, 1));
         assert_eq!(gl.get_error(), GL_NO_ERROR);
         assert_eq!(gl.enabled_line_stipple(), None);
         gl.enable(GL_LINE_STIPPLE);
@@ -84,8 +84,8 @@ mod tests {
         mask[0] = 0x80;
         mask[4 * 31 + 3] = 0x01;
         gl.polygon_stipple(&mask);
-        assert_eq!(gl.raster.polygon_stipple[0], 1);
-        assert_eq!(gl.raster.polygon_stipple[31], 1 << 31);
+        assert_eq!(gl.server.raster.polygon_stipple[0], 1);
+        assert_eq!(gl.server.raster.polygon_stipple[31], 1 << 31);
         assert_eq!(gl.get_error(), GL_NO_ERROR);
         gl.polygon_stipple(&mask[..127]);
         assert_eq!(gl.get_error(), GL_INVALID_VALUE);

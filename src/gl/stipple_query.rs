@@ -10,7 +10,7 @@ impl Gl {
     /// Bytes `glGetPolygonStipple` writes under the current pack modes.
     #[must_use]
     pub fn polygon_stipple_len(&self) -> usize {
-        let store = self.pixel_stores.pack;
+        let store = self.client.pixel_stores.pack;
         let stride = store.bitmap_row_stride(32);
         store.skip_rows * stride + 31 * stride + (store.skip_pixels + 32).div_ceil(8)
     }
@@ -25,9 +25,9 @@ impl Gl {
         if mask.len() < self.polygon_stipple_len() {
             return self.set_error(GL_INVALID_VALUE);
         }
-        let store = self.pixel_stores.pack;
+        let store = self.client.pixel_stores.pack;
         let stride = store.bitmap_row_stride(32);
-        for (y, row) in self.raster.polygon_stipple.iter().enumerate() {
+        for (y, row) in self.server.raster.polygon_stipple.iter().enumerate() {
             // Mesa packs each row into a cleared buffer and copies its bytes: the skipped bits
             // of the first byte and the unused bits of the last are written as 0.
             let start = (store.skip_rows + y) * stride;

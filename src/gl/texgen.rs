@@ -136,10 +136,10 @@ impl Gl {
                 if !mode_allowed(index, mode) {
                     return self.set_error(GL_INVALID_ENUM);
                 }
-                self.tex_gen.coords[index].mode = mode;
+                self.server.tex_gen.coords[index].mode = mode;
             }
-            GL_OBJECT_PLANE => self.tex_gen.coords[index].object_plane = Vec4::from_slice(values),
-            GL_EYE_PLANE => self.tex_gen.coords[index].eye_plane = self.plane_to_eye(Vec4::from_slice(values)),
+            GL_OBJECT_PLANE => self.server.tex_gen.coords[index].object_plane = Vec4::from_slice(values),
+            GL_EYE_PLANE => self.server.tex_gen.coords[index].eye_plane = self.plane_to_eye(Vec4::from_slice(values)),
             _ => return self.set_error(GL_INVALID_ENUM),
         }
         self.touch_state();
@@ -179,7 +179,7 @@ impl Gl {
             return;
         }
         let Some(index) = coord_index(coord) else { return self.set_error(GL_INVALID_ENUM) };
-        let c = self.tex_gen.coords[index];
+        let c = self.server.tex_gen.coords[index];
         let values = match pname {
             GL_TEXTURE_GEN_MODE => vec![c.mode as GLfloat],
             GL_OBJECT_PLANE => c.object_plane.to_array().to_vec(),
@@ -237,7 +237,7 @@ impl Gl {
     pub(crate) fn tex_gen_state(&self) -> Option<TexGenState> {
         let caps = [GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q];
         let enabled = caps.map(|cap| self.capability(cap));
-        enabled.contains(&true).then_some(TexGenState { gen: self.tex_gen, enabled })
+        enabled.contains(&true).then_some(TexGenState { gen: self.server.tex_gen, enabled })
     }
 }
 

@@ -302,9 +302,9 @@ impl Gl {
             return self.set_error(GL_INVALID_VALUE);
         }
         for name in &mut textures[..count] {
-            self.textures.max_name += 1;
-            *name = self.textures.max_name;
-            self.textures.objects.insert(*name, TextureObject::default());
+            self.server.textures.max_name += 1;
+            *name = self.server.textures.max_name;
+            self.server.textures.objects.insert(*name, TextureObject::default());
         }
     }
 
@@ -317,8 +317,8 @@ impl Gl {
         }
         let Some(t) = target_index(target) else { return self.set_error(GL_INVALID_ENUM) };
         if texture != 0 {
-            let next_key = &mut self.textures.next_key;
-            let object = self.textures.objects.entry(texture).or_default();
+            let next_key = &mut self.server.textures.next_key;
+            let object = self.server.textures.objects.entry(texture).or_default();
             match object.dims {
                 0 => {
                     object.dims = t as u8 + 1;
@@ -328,9 +328,9 @@ impl Gl {
                 d if usize::from(d) != t + 1 => return self.set_error(GL_INVALID_OPERATION),
                 _ => {}
             }
-            self.textures.max_name = self.textures.max_name.max(texture);
+            self.server.textures.max_name = self.server.textures.max_name.max(texture);
         }
-        self.textures.bound[t] = texture;
+        self.server.textures.bound[t] = texture;
         self.touch_state();
     }
 
@@ -343,8 +343,8 @@ impl Gl {
         let Ok(count) = usize::try_from(n) else { return self.set_error(GL_INVALID_VALUE) };
         let Some(names) = textures.get(..count) else { return self.set_error(GL_INVALID_VALUE) };
         for &name in names.iter().filter(|&&name| name != 0) {
-            if self.textures.objects.remove(&name).is_some() {
-                for bound in &mut self.textures.bound {
+            if self.server.textures.objects.remove(&name).is_some() {
+                for bound in &mut self.server.textures.bound {
                     if *bound == name {
                         *bound = 0;
                     }
@@ -360,7 +360,7 @@ impl Gl {
         if self.reject_inside_begin_end() {
             return GL_FALSE;
         }
-        let bound = self.textures.objects.get(&texture).is_some_and(|o| o.dims != 0);
+        let bound = self.server.textures.objects.get(&texture).is_some_and(|o| o.dims != 0);
         if bound {
             GL_TRUE
         } else {
@@ -459,7 +459,7 @@ impl Gl {
         if proxy {
             // A proxy keeps the sizes and border as given (Mesa strips real images only).
             let image = fits.then(|| TexLevel { width: width as u32, height: height as u32, texels: Vec::new() });
-            let object = &mut self.textures.proxies[usize::from(dims - 1)];
+            let object = &mut self.server.textures.proxies[usize::from(dims - 1)];
             return object.define_level(level as usize, image, (base, internalformat), if fits { border } else { 0 });
         }
         let (w, h) = (width as usize, height as usize);
@@ -640,7 +640,7 @@ impl Gl {
         if target != GL_TEXTURE_ENV || pname != GL_TEXTURE_ENV_MODE || !known {
             return self.set_error(GL_INVALID_ENUM);
         }
-        self.textures.env_mode = mode;
+        self.server.textures.env_mode = mode;
         self.touch_state();
     }
 
@@ -663,7 +663,7 @@ impl Gl {
             return self.set_error(GL_INVALID_ENUM);
         }
         let Some(color) = self.needs::<4>(params) else { return };
-        self.textures.env_color = color.map(|c| c.clamp(0.0, 1.0));
+        self.server.textures.env_color = color.map(|c| c.clamp(0.0, 1.0));
         self.touch_state();
     }
 
@@ -678,9 +678,9 @@ impl Gl {
         } else {
             return None;
         };
-        let matrix = self.matrices.texture();
+        let matrix = self.server.matrices.texture();
         let generate = self.tex_gen_state();
-        let (env_mode, env_color) = (self.textures.env_mode, self.textures.env_color);
+        let (env_mode, env_color) = (self.server.textures.env_mode, self.server.textures.env_color);
         let object = self.bound_object_mut(dims);
         let levels = object
             .complete
@@ -707,29 +707,35 @@ impl Gl {
             let object = self.bound_object(dims);
             (object.params, object.extra.sampling())
         });
-        (self.textures.bound, self.textures.env_mode, self.textures.env_color, self.tex_gen, objects)
+        (
+            self.server.textures.bound,
+            self.server.textures.env_mode,
+            self.server.textures.env_color,
+            self.server.tex_gen,
+            objects,
+        )
     }
 
     /// Restores what [`Gl::texture_attrib`] saved (a binding whose object was deleted since
     /// falls back to the default texture).
     pub(crate) fn restore_texture_attrib(&mut self, (bound, env_mode, env_color, tex_gen, objects): TextureAttrib) {
-        self.tex_gen = tex_gen;
-        let exists = |name: GLuint| name == 0 || self.textures.objects.contains_key(&name);
-        self.textures.bound = bound.map(|name| if exists(name) { name } else { 0 });
+        self.server.tex_gen = tex_gen;
+        let exists = |name: GLuint| name == 0 || self.server.textures.objects.contains_key(&name);
+        self.server.textures.bound = bound.map(|name| if exists(name) { name } else { 0 });
         for (dims, (params, sampling)) in [1, 2].into_iter().zip(objects) {
             let object = self.bound_object_mut(dims);
             (object.params, object.complete) = (params, None);
             object.extra.set_sampling(sampling);
         }
-        (self.textures.env_mode, self.textures.env_color) = (env_mode, env_color);
+        (self.server.textures.env_mode, self.server.textures.env_color) = (env_mode, env_color);
         self.touch_state();
     }
 
     pub(super) fn bound_object(&self, dims: u8) -> &TextureObject {
         let t = usize::from(dims - 1);
-        match self.textures.bound[t] {
-            0 => &self.textures.defaults[t],
-            name => &self.textures.objects[&name],
+        match self.server.textures.bound[t] {
+            0 => &self.server.textures.defaults[t],
+            name => &self.server.textures.objects[&name],
         }
     }
 
@@ -742,16 +748,16 @@ impl Gl {
 
     pub(super) fn bound_object_mut(&mut self, dims: u8) -> &mut TextureObject {
         let t = usize::from(dims - 1);
-        match self.textures.bound[t] {
-            0 => &mut self.textures.defaults[t],
-            name => self.textures.objects.get_mut(&name).expect("a bound texture exists"),
+        match self.server.textures.bound[t] {
+            0 => &mut self.server.textures.defaults[t],
+            name => self.server.textures.objects.get_mut(&name).expect("a bound texture exists"),
         }
     }
 
     /// A level of the bound object changed: a new key (the renderer uploads again) and chain.
     pub(super) fn image_changed(&mut self, dims: u8) {
-        let key = self.textures.next_key;
-        self.textures.next_key += 1;
+        let key = self.server.textures.next_key;
+        self.server.textures.next_key += 1;
         let object = self.bound_object_mut(dims);
         object.key = key;
         object.complete = None;
@@ -819,8 +825,8 @@ fn complete_chain(levels: &[Option<TexLevel>], formats: &[GLenum], params: &TexP
 
 /// The texture bindings' `glGet` rows (GL 1.1 table 6.9) and the size limit.
 pub(crate) static GET_ROWS: &[StateVar] = &[
-    row(GL_TEXTURE_BINDING_1D, 1, Kind::Int, |gl, o| put_enum(o, gl.textures.bound[0])),
-    row(GL_TEXTURE_BINDING_2D, 1, Kind::Int, |gl, o| put_enum(o, gl.textures.bound[1])),
+    row(GL_TEXTURE_BINDING_1D, 1, Kind::Int, |gl, o| put_enum(o, gl.server.textures.bound[0])),
+    row(GL_TEXTURE_BINDING_2D, 1, Kind::Int, |gl, o| put_enum(o, gl.server.textures.bound[1])),
     int_limit!(GL_MAX_TEXTURE_SIZE, MAX_TEXTURE_SIZE),
 ];
 

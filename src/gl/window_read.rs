@@ -73,16 +73,16 @@ impl std::fmt::Debug for Reader {
 impl Gl {
     /// Installs the reader GL calls when it reads the window mid-frame (see the module docs).
     pub fn set_window_reader(&mut self, reader: impl FnMut(&Frame, u32, u32) -> Option<WindowImage> + 'static) {
-        self.window_reader = Reader(Some(Box::new(reader)));
+        self.recorder.window_reader = Reader(Some(Box::new(reader)));
     }
 
     /// The window with everything recorded so far drawn, through the installed reader (a blank
     /// window without one).
     pub(crate) fn read_window(&mut self) -> Option<WindowImage> {
         let (w, h) = (self.width().max(1) as u32, self.height().max(1) as u32);
-        let Some(mut reader) = self.window_reader.0.take() else { return Some(WindowImage::blank(w, h)) };
+        let Some(mut reader) = self.recorder.window_reader.0.take() else { return Some(WindowImage::blank(w, h)) };
         let image = reader(self.frame(), w, h);
-        self.window_reader.0 = Some(reader);
+        self.recorder.window_reader.0 = Some(reader);
         image
     }
 }

@@ -270,7 +270,7 @@ impl Gl {
             draw(self);
             self.pop_attrib();
         } else {
-            let [x, y, z] = self.current.normal;
+            let [x, y, z] = self.server.current.normal;
             draw(self);
             self.normal3f(x, y, z);
         }
@@ -371,7 +371,7 @@ mod tests {
         gl.end_list();
         gl.normal3f(0.0, 0.0, 0.25);
         gl.call_list(list);
-        assert_eq!(gl.current.normal, [0.0, 0.0, 0.25]);
+        assert_eq!(gl.server.current.normal, [0.0, 0.0, 0.25]);
         assert_eq!(gl.frame().vertices.len(), 36);
         assert_eq!(gl.get_error(), GL_NO_ERROR);
     }
@@ -382,7 +382,7 @@ mod tests {
         gl.normal3f(0.0, 0.6, 0.8);
         gl.glut_solid_torus(0.2, 1.0, 8, 8);
         gl.glut_wire_cube(1.0);
-        assert_eq!(gl.current.normal, [0.0, 0.6, 0.8]);
+        assert_eq!(gl.server.current.normal, [0.0, 0.6, 0.8]);
         let before = gl.frame().vertices.len();
         gl.glut_solid_sphere(1.0, 0, 5);
         gl.glut_wire_sphere(1.0, -3, 5);

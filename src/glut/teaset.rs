@@ -178,7 +178,7 @@ impl Gl {
             let (r, c) = ((k % (n * n)) / n, k % n);
             (r as f32 / (n as f32 - 1.0), c as f32 / (n as f32 - 1.0))
         };
-        let [s0, t0, r0, q0] = self.current.tex_coord;
+        let [s0, t0, r0, q0] = self.server.current.tex_coord;
         self.drawing_shape(|gl| {
             gl.begin(GL_TRIANGLES);
             for p in 0..patches {

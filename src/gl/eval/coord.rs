@@ -36,13 +36,13 @@ impl Gl {
         if self.compiled(|| ListCommand::EvalCoord1(u)) {
             return;
         }
-        let act = self.eval.active(1);
+        let act = self.server.eval.active(1);
         let Some(vertex_slot) = act.vertex else {
             return;
         };
         let mut v = self.current_vertex([0.0, 0.0, 0.0, 1.0]);
         for slot in act.attributes().chain([vertex_slot]) {
-            let m = self.eval.map(1, slot);
+            let m = self.server.eval.map(1, slot);
             let p = horner(&m.points, slot.components(), m.uorder, m.norm_u(u));
             v.set_attribute(slot, p);
         }
@@ -67,20 +67,20 @@ impl Gl {
         if self.compiled(|| ListCommand::EvalCoord2(u, v)) {
             return;
         }
-        let act = self.eval.active(2);
+        let act = self.server.eval.active(2);
         let Some(vertex_slot) = act.vertex else {
             return;
         };
         let mut out = self.current_vertex([0.0, 0.0, 0.0, 1.0]);
         for slot in act.attributes() {
-            let m = self.eval.map(2, slot);
+            let m = self.server.eval.map(2, slot);
             let p = horner_patch(&m.points, slot.components(), m.uorder, m.vorder, m.norm_u(u), m.norm_v(v));
             out.set_attribute(slot, p);
         }
-        let m = self.eval.map(2, vertex_slot);
+        let m = self.server.eval.map(2, vertex_slot);
         let k = vertex_slot.components();
         let (uu, vv) = (m.norm_u(u), m.norm_v(v));
-        if self.eval.auto_normal {
+        if self.server.eval.auto_normal {
             let s = patch_with_partials(&m.points, k, m.uorder, m.vorder, uu, vv);
             out.normal = auto_normal(k, s.point, s.du, s.dv);
             out.set_attribute(vertex_slot, s.point);

@@ -225,7 +225,7 @@ impl Gl {
         }
         let order = order as usize;
         let slot = MapTarget::from_enum(target).map_or(Slot::Vertex3, |t| t.slot);
-        let map = &mut self.eval.map1[slot as usize];
+        let map = &mut self.server.eval.map1[slot as usize];
         // The old map's storage is reused: programs drawing many curves redefine the map each time.
         let mut packed = std::mem::take(&mut map.points);
         packed.clear();
@@ -250,7 +250,7 @@ impl Gl {
             self.set_error(GL_INVALID_VALUE);
             return None;
         }
-        if self.active_texture != GL_TEXTURE0 {
+        if self.server.active_texture != GL_TEXTURE0 {
             self.set_error(GL_INVALID_OPERATION);
             return None;
         }
@@ -283,7 +283,7 @@ impl Gl {
         let (uo, vo) = (a.uorder as usize, a.vorder as usize);
         let (us, vs) = (a.ustride as usize, a.vstride as usize);
         let slot = MapTarget::from_enum(target).map_or(Slot::Vertex3, |t| t.slot);
-        let map = &mut self.eval.map2[slot as usize];
+        let map = &mut self.server.eval.map2[slot as usize];
         // The old map's storage is reused: programs drawing many patches redefine the map each time.
         let mut packed = std::mem::take(&mut map.points);
         packed.clear();
@@ -321,7 +321,7 @@ impl Gl {
             self.set_error(GL_INVALID_VALUE);
             return None;
         }
-        if self.active_texture != GL_TEXTURE0 {
+        if self.server.active_texture != GL_TEXTURE0 {
             self.set_error(GL_INVALID_OPERATION);
             return None;
         }

@@ -6,6 +6,7 @@
 use super::Grid;
 use crate::gl::consts::*;
 use crate::gl::lists::ListCommand;
+use crate::gl::mesh_job::PendingMeshes;
 use crate::gl::types::*;
 use crate::gl::{Command, Gl, GridMesh, MapSample, MeshJob, MeshMode, MeshVertices, Tessellator};
 
@@ -44,7 +45,7 @@ impl Gl {
             GL_LINE => MeshMode::CurveLines,
             _ => return self.set_error(GL_INVALID_ENUM),
         };
-        let act = self.eval.active(1);
+        let act = self.server.eval.active(1);
         if act.vertex.is_none() {
             return;
         }
@@ -52,12 +53,12 @@ impl Gl {
         if !self.reserve_vertices(n) {
             return;
         }
-        let grid = self.eval.grid1;
+        let grid = self.server.eval.grid1;
         let maps = act
             .attributes()
             .chain(act.vertex)
             .map(|slot| {
-                let m = self.eval.map(1, slot);
+                let m = self.server.eval.map(1, slot);
                 let us = grid_params(&grid, i1, i2, |u| m.norm_u(u));
                 MapSample { slot, uorder: m.uorder, vorder: 1, points: m.points.clone(), us, vs: vec![0.0] }
             })
@@ -84,7 +85,7 @@ impl Gl {
             GL_FILL => MeshMode::Fill,
             _ => return self.set_error(GL_INVALID_ENUM),
         };
-        let act = self.eval.active(2);
+        let act = self.server.eval.active(2);
         if act.vertex.is_none() {
             return;
         }
@@ -100,12 +101,12 @@ impl Gl {
             // and a mesh of 2³⁰ empty columns would cost gigabytes to assemble.
             return;
         }
-        let (gu, gv) = self.eval.grid2;
+        let (gu, gv) = self.server.eval.grid2;
         let maps = act
             .attributes()
             .chain(act.vertex)
             .map(|slot| {
-                let m = self.eval.map(2, slot);
+                let m = self.server.eval.map(2, slot);
                 MapSample {
                     slot,
                     uorder: m.uorder,
@@ -117,13 +118,13 @@ impl Gl {
             })
             .collect();
         let template = self.current_vertex([0.0, 0.0, 0.0, 1.0]);
-        let job = MeshJob { maps, auto_normal: self.eval.auto_normal, template, nu, nv, scattered: false };
+        let job = MeshJob { maps, auto_normal: self.server.eval.auto_normal, template, nu, nv, scattered: false };
         self.record_mesh(mesh_mode, job);
     }
 
     /// Checks the size limit; false (with `GL_OUT_OF_MEMORY`) if too large.
     fn reserve_vertices(&mut self, n: usize) -> bool {
-        if n > MAX_MESH_VERTICES || self.frame.meshes.try_reserve(1).is_err() {
+        if n > MAX_MESH_VERTICES || self.recorder.frame.meshes.try_reserve(1).is_err() {
             self.set_error(GL_OUT_OF_MEMORY);
             return false;
         }
@@ -140,7 +141,7 @@ impl Gl {
     fn record_mesh(&mut self, mode: MeshMode, job: MeshJob) {
         let (nu, nv) = (job.nu, job.nv);
         let mut pending = None;
-        let vertices = if self.tessellator == Tessellator::Gpu && self.gpu_draws(mode) {
+        let vertices = if self.recorder.tessellator == Tessellator::Gpu && self.gpu_draws(mode) {
             MeshVertices::Deferred(vec![job])
         } else if job.len() < crate::tess::MIN_POINTS_PER_THREAD && !job.scattered {
             pending = Some(job);
@@ -151,11 +152,11 @@ impl Gl {
             MeshVertices::Evaluated(vertices)
         };
         let state = self.current_state_index();
-        self.frame.meshes.push(GridMesh { mode, nu, nv, state, vertices, triangles: Vec::new() });
-        let index = self.frame.meshes.len() - 1;
-        self.frame.commands.push(Command::Mesh(index));
+        self.recorder.frame.meshes.push(GridMesh { mode, nu, nv, state, vertices, triangles: Vec::new() });
+        let index = self.recorder.frame.meshes.len() - 1;
+        self.recorder.frame.commands.push(Command::Mesh(index));
         if let Some(job) = pending {
-            let (jobs, points) = &mut self.pending_meshes;
+            let PendingMeshes { jobs, points } = &mut self.recorder.pending_meshes;
             *points += job.len();
             jobs.push((index, job));
             if *points >= PENDING_BATCH_POINTS {
@@ -168,13 +169,13 @@ impl Gl {
     /// the cores (each mesh on one).
     pub(crate) fn evaluate_pending_meshes(&mut self) {
         use rayon::prelude::*;
-        let (jobs, points) = &mut self.pending_meshes;
+        let PendingMeshes { jobs, points } = &mut self.recorder.pending_meshes;
         let Some(&(first, _)) = jobs.first() else { return };
         *points = 0;
         // Each job with its mesh's buffer: jobs are in the order of their (increasing) indices.
         let mut work = Vec::with_capacity(jobs.len());
         let mut next = jobs.iter().peekable();
-        for (index, mesh) in self.frame.meshes.iter_mut().enumerate().skip(first) {
+        for (index, mesh) in self.recorder.frame.meshes.iter_mut().enumerate().skip(first) {
             let Some((wanted, job)) = next.peek() else { break };
             if *wanted == index {
                 if let MeshVertices::Evaluated(vertices) = &mut mesh.vertices {
@@ -197,9 +198,9 @@ impl Gl {
         let nu = jobs.iter().map(MeshJob::len).sum();
         let state = self.current_state_index();
         let vertices = MeshVertices::Deferred(jobs);
-        self.frame.meshes.push(GridMesh { mode: MeshMode::Triangles, nu, nv: 1, state, vertices, triangles });
-        let index = self.frame.meshes.len() - 1;
-        self.frame.commands.push(Command::Mesh(index));
+        self.recorder.frame.meshes.push(GridMesh { mode: MeshMode::Triangles, nu, nv: 1, state, vertices, triangles });
+        let index = self.recorder.frame.meshes.len() - 1;
+        self.recorder.frame.commands.push(Command::Mesh(index));
     }
 
     /// Whether the GPU mesh pipeline draws `mode` in the current state exactly as GL does:
@@ -218,7 +219,7 @@ impl Gl {
         if state || smooth {
             return false;
         }
-        let r = &self.raster;
+        let r = &self.server.raster;
         match mode {
             MeshMode::Fill | MeshMode::Triangles => r.polygon_mode == [GL_FILL, GL_FILL],
             MeshMode::CurveLines | MeshMode::SurfaceLines => r.line_width.round() <= 1.0,

@@ -184,13 +184,13 @@ impl EvalState {
 
 /// The grids' `glGet` rows (GL 1.1 table 6.15; the maps themselves through `glGetMap`).
 pub(crate) static GET_ROWS: &[StateVar] = &[
-    row(GL_MAP1_GRID_DOMAIN, 2, Kind::Float, |gl, o| put(o, &[gl.eval.grid1.a, gl.eval.grid1.b])),
+    row(GL_MAP1_GRID_DOMAIN, 2, Kind::Float, |gl, o| put(o, &[gl.server.eval.grid1.a, gl.server.eval.grid1.b])),
     row(GL_MAP2_GRID_DOMAIN, 4, Kind::Float, |gl, o| {
-        let (u, v) = gl.eval.grid2;
+        let (u, v) = gl.server.eval.grid2;
         put(o, &[u.a, u.b, v.a, v.b])
     }),
-    row(GL_MAP1_GRID_SEGMENTS, 1, Kind::Int, |gl, o| o[0] = f64::from(gl.eval.grid1.n)),
-    row(GL_MAP2_GRID_SEGMENTS, 2, Kind::Int, |gl, o| put(o, &[gl.eval.grid2.0.n, gl.eval.grid2.1.n])),
+    row(GL_MAP1_GRID_SEGMENTS, 1, Kind::Int, |gl, o| o[0] = f64::from(gl.server.eval.grid1.n)),
+    row(GL_MAP2_GRID_SEGMENTS, 2, Kind::Int, |gl, o| put(o, &[gl.server.eval.grid2.0.n, gl.server.eval.grid2.1.n])),
 ];
 
 impl super::Gl {
@@ -206,7 +206,7 @@ impl super::Gl {
             self.set_error(GL_INVALID_VALUE);
             return;
         }
-        self.eval.grid1 = Grid::new(un, u1, u2);
+        self.server.eval.grid1 = Grid::new(un, u1, u2);
     }
 
     /// `glMapGrid1d` (cast to float, as Mesa stores grids).
@@ -226,7 +226,7 @@ impl super::Gl {
             self.set_error(GL_INVALID_VALUE);
             return;
         }
-        self.eval.grid2 = (Grid::new(un, u1, u2), Grid::new(vn, v1, v2));
+        self.server.eval.grid2 = (Grid::new(un, u1, u2), Grid::new(vn, v1, v2));
     }
 
     /// `glMapGrid2d` (cast to float).
@@ -239,7 +239,7 @@ impl super::Gl {
         if self.compiled(|| ListCommand::EvalPoint1(i)) {
             return;
         }
-        let u = self.eval.grid1.param(i.into());
+        let u = self.server.eval.grid1.param(i.into());
         self.eval_coord1f(u);
     }
 
@@ -248,7 +248,7 @@ impl super::Gl {
         if self.compiled(|| ListCommand::EvalPoint2(i, j)) {
             return;
         }
-        let (gu, gv) = self.eval.grid2;
+        let (gu, gv) = self.server.eval.grid2;
         self.eval_coord2f(gu.param(i.into()), gv.param(j.into()));
     }
 }

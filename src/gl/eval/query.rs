@@ -17,7 +17,7 @@ impl Gl {
         match query {
             GL_ORDER => dims,
             GL_DOMAIN => 2 * dims,
-            GL_COEFF => self.eval.map(t.dims, t.slot).points.len(),
+            GL_COEFF => self.server.eval.map(t.dims, t.slot).points.len(),
             _ => 0,
         }
     }
@@ -62,7 +62,7 @@ impl Gl {
             self.set_error(GL_INVALID_ENUM);
             return None;
         };
-        let map = self.eval.map(t.dims, t.slot);
+        let map = self.server.eval.map(t.dims, t.slot);
         let values = match (query, t.dims) {
             (GL_COEFF, _) => map.points.clone(),
             (GL_ORDER, 1) => vec![map.uorder as f32],

@@ -227,7 +227,7 @@ impl Gl {
         }
         let object: &TextureObject = match (target_index(target), proxy_index(target)) {
             (Some(t), _) => self.bound_object(t as u8 + 1),
-            (_, Some(p)) => &self.textures.proxies[p],
+            (_, Some(p)) => &self.server.textures.proxies[p],
             _ => {
                 self.set_error(GL_INVALID_ENUM);
                 return None;
@@ -288,8 +288,8 @@ impl Gl {
             return None;
         }
         let values = match (target, pname) {
-            (GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE) => vec![self.textures.env_mode as f32],
-            (GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR) => self.textures.env_color.to_vec(),
+            (GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE) => vec![self.server.textures.env_mode as f32],
+            (GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR) => self.server.textures.env_color.to_vec(),
             _ => {
                 self.set_error(GL_INVALID_ENUM);
                 return None;

@@ -13,7 +13,7 @@ use crate::glu::model::props::SamplingMatrices;
 impl Gl {
     /// The object behind a handle; `None` once deleted (GLU's calls then do nothing).
     pub(super) fn nurbs(&mut self, nobj: GLUnurbs) -> Option<&mut NurbsObject> {
-        self.nurbs.get_mut(nobj.0).and_then(Option::as_mut)
+        self.glu.nurbs.get_mut(nobj.0)
     }
 
     /// Runs `f` with the object taken out of the context, so that it may draw through `self`.
@@ -22,25 +22,20 @@ impl Gl {
         nobj: GLUnurbs,
         f: impl FnOnce(&mut Gl, &mut NurbsObject) -> R,
     ) -> Option<R> {
-        let mut obj = self.nurbs.get_mut(nobj.0)?.take()?;
+        let mut obj = self.glu.nurbs.take(nobj.0)?;
         let r = f(self, &mut obj);
-        if let Some(slot) = self.nurbs.get_mut(nobj.0) {
-            *slot = Some(obj);
-        }
+        self.glu.nurbs.put_back(nobj.0, obj);
         Some(r)
     }
 
     /// `gluNewNurbsRenderer`: a new NURBS object with GLU's default properties.
     pub fn glu_new_nurbs_renderer(&mut self) -> GLUnurbs {
-        self.nurbs.push(Some(NurbsObject::new()));
-        GLUnurbs(self.nurbs.len() - 1)
+        GLUnurbs(self.glu.nurbs.insert(NurbsObject::new()))
     }
 
     /// `gluDeleteNurbsRenderer`. Later calls with the handle do nothing.
     pub fn glu_delete_nurbs_renderer(&mut self, nobj: GLUnurbs) {
-        if let Some(slot) = self.nurbs.get_mut(nobj.0) {
-            *slot = None;
-        }
+        self.glu.nurbs.remove(nobj.0);
     }
 
     /// `gluNurbsProperty`. An unknown property → `GLU_INVALID_ENUM`; a bad display mode or

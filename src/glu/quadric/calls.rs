@@ -57,7 +57,7 @@ impl QuadricSink for Gl {
 
 impl Gl {
     fn quadric(&mut self, q: GLUquadric) -> Option<&mut QuadricObject> {
-        self.quadrics.get_mut(q.0).and_then(Option::as_mut)
+        self.glu.quadrics.get_mut(q.0)
     }
 
     /// Runs `draw` with the object's modes and GL as the sink; its error goes to the callback.
@@ -79,15 +79,12 @@ impl Gl {
 
     /// `gluNewQuadric`: a quadric in GLU's initial modes ([`Quadric::DEFAULT`]), no callback.
     pub fn glu_new_quadric(&mut self) -> GLUquadric {
-        self.quadrics.push(Some(QuadricObject::default()));
-        GLUquadric(self.quadrics.len() - 1)
+        GLUquadric(self.glu.quadrics.insert(QuadricObject::default()))
     }
 
     /// `gluDeleteQuadric`. Later calls with the handle do nothing.
     pub fn glu_delete_quadric(&mut self, q: GLUquadric) {
-        if let Some(slot) = self.quadrics.get_mut(q.0) {
-            *slot = None;
-        }
+        self.glu.quadrics.remove(q.0);
     }
 
     /// `gluQuadricCallback(q, GLU_ERROR, f)`: `None` removes the callback. Another `which` is

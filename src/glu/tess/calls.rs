@@ -18,11 +18,9 @@ use std::rc::Rc;
 impl Gl {
     /// Runs `f` on tessellator `t` with the context at hand.
     fn with_tess(&mut self, t: GLUtesselator, f: impl FnOnce(&mut TessObject, &mut Self)) {
-        let Some(mut obj) = self.tessellators.get_mut(t.0).and_then(Option::take) else { return };
+        let Some(mut obj) = self.glu.tessellators.take(t.0) else { return };
         f(&mut obj, self);
-        if let Some(slot) = self.tessellators.get_mut(t.0) {
-            *slot = Some(obj);
-        }
+        self.glu.tessellators.put_back(t.0, obj);
     }
 
     /// `gluNewTess`: a tessellator with the odd winding rule, no normal, no callbacks.
@@ -52,8 +50,7 @@ impl Gl {
     /// assert_eq!(*seen.borrow(), [vec![GL_TRIANGLE_STRIP], vec![0; 9], vec![GL_TRIANGLES], vec![0; 3]].concat());
     /// ```
     pub fn glu_new_tess(&mut self) -> GLUtesselator {
-        self.tessellators.push(Some(TessObject::new()));
-        GLUtesselator(self.tessellators.len() - 1)
+        GLUtesselator(self.glu.tessellators.insert(TessObject::new()))
     }
 
     /// `gluDeleteTess`: a polygon still open is ended as GLU ends it (errors reported, the
@@ -65,8 +62,8 @@ impl Gl {
             ended = true;
         });
         // Not from inside the object's own callbacks: the object is busy then.
-        if let (true, Some(slot)) = (ended, self.tessellators.get_mut(t.0)) {
-            *slot = None;
+        if ended {
+            self.glu.tessellators.remove(t.0);
         }
     }
 
