@@ -16,11 +16,11 @@
 //! |---|---|
 //! | [`math`] | Bezier, B-spline and NURBS curves and patches, knots, the flat-slice kernels |
 //! | [`tess`] | grids and trimmed domains into meshes; mesh export |
-//! | [`gl`] | the GL 1.x state machine: errors, immediate mode, matrices, lighting, evaluators, the recorded [`gl::Frame`] |
+//! | [`gl`] | the GL 1.x state machine: errors, immediate mode, matrices, lighting (the per-vertex shading that feedback and both rasterisers share), evaluators, the recorded [`gl::Frame`] |
 //! | [`glu`] | GLU: projections and the NURBS object (sampling, trimming, display modes, callbacks) |
 //! | [`glut`] | GLUT's constants and the state behind its `Gl` methods |
 //! | [`gll`], [`data`] | the textbook's `gll.h` helpers (public API only); demo data (the teapot) |
-//! | [`render`] | drawing a frame: the CPU vertex stage and primitive assembly; the CPU rasteriser ([`render::soft`], headless pictures with no device); PNG; the wgpu [`render::Renderer`] |
+//! | [`render`] | drawing a frame: primitive assembly (clipping, wide lines, points, viewports); the CPU rasteriser ([`render::soft`], headless pictures with no device); PNG; the wgpu [`render::Renderer`] |
 //! | `gpu` (crate-private) | wgpu: the device and read-back, the one WGSL evaluator, the rasterisers behind `Renderer` |
 //! | `app` | the GLUT-like `App`: a window, or a headless PNG |
 //!

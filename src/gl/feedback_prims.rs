@@ -19,9 +19,9 @@
 
 use super::consts::*;
 use super::frame::DrawState;
+use super::shade::Shader;
 use super::types::*;
 use super::vertex::Vertex;
-use crate::render::shade::Shader;
 use glam::Vec4;
 
 /// A vertex as feedback reports it: window x, y, z and clip w, colour, texture coordinate.

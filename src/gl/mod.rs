@@ -48,6 +48,7 @@ mod raster_pos;
 mod read_pixels;
 mod read_stencil;
 mod select;
+pub(crate) mod shade;
 mod stencil;
 mod stipple;
 mod stipple_query;

@@ -8,10 +8,10 @@
 //! (widened along the minor axis) and square points, which wgpu does not have, as quads.
 
 use super::corner::Corner;
-use super::shade::{ShadedVertex, Shader};
 use super::stipple::Stipple;
 use super::{clip, offset, smooth};
 use crate::gl::consts::*;
+use crate::gl::shade::{ShadedVertex, Shader};
 use crate::gl::types::GLenum;
 use crate::gl::{BoundTexture, Command, DrawState, Fog, FragmentTests, Frame, MeshVertices, Vertex};
 use glam::Vec4;

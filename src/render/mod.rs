@@ -1,5 +1,6 @@
 //! Drawing a recorded [`Frame`](crate::gl::Frame): the CPU stages, always available and
-//! testable without a GPU: GL's per-vertex lighting, primitive assembly (wide lines, square
+//! testable without a GPU: primitive assembly (its vertices lit by `gl`'s shading, which
+//! feedback and selection share) (wide lines, square
 //! points, viewports, depth range), the image metric the conformance tests score pictures with,
 //! and PNG output. The wgpu side (the `Renderer`, the GPU evaluator) lives in the crate's
 //! `gpu` module (feature `gpu`); its public types are re-exported here, their one documented
@@ -15,7 +16,6 @@ mod device_select;
 mod image;
 mod offset;
 pub mod pixel_copy;
-pub(crate) mod shade;
 mod smooth;
 pub mod soft;
 mod stipple;

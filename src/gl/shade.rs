@@ -1,8 +1,10 @@
 //! GL 1.x per-vertex lighting (GL 1.1 spec §2.13.1), evaluated on the CPU in `f32`, in eye
-//! coordinates, with GL's defaults. This is the colour each vertex carries to the rasteriser.
+//! coordinates, with GL's defaults. This is the colour each vertex carries to the rasteriser,
+//! and the one feedback and selection report: both rasterisers (`render::assemble`) and
+//! feedback (`feedback_prims`) light their vertices here.
 
-use crate::gl::consts::*;
-use crate::gl::{DrawState, Lighting, Material, Vertex};
+use super::consts::*;
+use super::{DrawState, Lighting, Material, Vertex};
 use glam::{Mat3, Vec3, Vec4, Vec4Swizzles};
 
 /// Per-primitive constants derived from a [`DrawState`] once.
