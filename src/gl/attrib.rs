@@ -45,7 +45,6 @@ const LIGHTING_ENABLES: &[GLenum] = &[
     GL_LIGHT0 + 7,
 ];
 const FOG_ENABLES: &[GLenum] = &[GL_FOG];
-const DEPTH_ENABLES: &[GLenum] = &[GL_DEPTH_TEST];
 const TRANSFORM_ENABLES: &[GLenum] = &[
     GL_NORMALIZE,
     GL_RESCALE_NORMAL,
@@ -62,7 +61,7 @@ const COLOR_ENABLES: &[GLenum] = &[GL_BLEND, GL_ALPHA_TEST, GL_DITHER];
 const TEXTURE_ENABLES: &[GLenum] =
     &[GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q];
 
-/// The raster values of the point, line, polygon, lighting (shade model), depth, viewport and
+/// The raster values of the point, line, polygon, lighting (shade model), viewport and
 /// colour buffer groups.
 #[derive(Clone, Copy, Debug, PartialEq)]
 struct RasterValues {
@@ -74,7 +73,6 @@ struct RasterValues {
     clip_planes: [[f32; 4]; super::clip::MAX_CLIP_PLANES],
     polygon_stipple: [u32; 32],
     shade_model: GLenum,
-    depth: (GLenum, f32),
     viewport: ([i32; 4], [f32; 2]),
     clear_color: [f32; 4],
 }
@@ -87,6 +85,7 @@ struct Saved {
     raster: RasterValues,
     lighting: Option<Lighting>,
     fragment: FragmentOps,
+    depth: super::depth::Depth,
     matrix_mode: usize,
     eval: Option<EvalAttrib>,
     list_base: GLuint,
@@ -113,7 +112,7 @@ fn enables_of(mask: GLbitfield) -> Vec<GLenum> {
         (GL_POLYGON_BIT, POLYGON_ENABLES),
         (GL_LIGHTING_BIT, LIGHTING_ENABLES),
         (GL_FOG_BIT, FOG_ENABLES),
-        (GL_DEPTH_BUFFER_BIT, DEPTH_ENABLES),
+        (GL_DEPTH_BUFFER_BIT, super::depth::DEPTH_ENABLES),
         (GL_TRANSFORM_BIT, TRANSFORM_ENABLES),
         (GL_COLOR_BUFFER_BIT, COLOR_ENABLES),
         (GL_TEXTURE_BIT, TEXTURE_ENABLES),
@@ -196,7 +195,6 @@ impl Gl {
             clip_planes: r.clip_planes,
             polygon_stipple: r.polygon_stipple,
             shade_model: r.shade_model,
-            depth: (r.depth_func, r.clear_depth),
             viewport: (r.viewport, r.depth_range),
             clear_color: r.clear_color,
         };
@@ -207,6 +205,7 @@ impl Gl {
             raster,
             lighting: (mask & GL_LIGHTING_BIT != 0).then(|| self.server.lighting.clone()),
             fragment: self.server.fragment_ops,
+            depth: self.server.depth,
             matrix_mode: self.server.matrices.mode(),
             // The evaluator group holds the map enables and GL_AUTO_NORMAL, which
             // GL_ENABLE_BIT saves too.
@@ -245,7 +244,7 @@ impl Gl {
             r.shade_model = v.shade_model;
         }
         if has(GL_DEPTH_BUFFER_BIT) {
-            (r.depth_func, r.clear_depth) = v.depth;
+            self.server.depth = saved.depth;
         }
         if has(GL_VIEWPORT_BIT) {
             (r.viewport, r.depth_range) = v.viewport;

@@ -23,8 +23,9 @@ use super::types::*;
 use super::Gl;
 use glam::Vec4;
 
-/// The material parameters as bits, per face.
-fn parameter_bits(pname: GLenum) -> u8 {
+/// A material name's parameters as bits (ambient 1, diffuse 2, specular 4, emission 8,
+/// shininess 16): what `GL_COLOR_MATERIAL` tracks and what a `glMaterial` sets.
+pub(super) fn material_bits(pname: GLenum) -> u8 {
     match pname {
         GL_AMBIENT => 1,
         GL_DIFFUSE => 2,
@@ -63,7 +64,7 @@ impl Gl {
         let (tracked_face, mode) = self.server.lighting.color_material;
         let on = self.server.caps.is_on(GL_COLOR_MATERIAL) && face_indices(tracked_face).contains(&face);
         if on {
-            parameter_bits(mode)
+            material_bits(mode)
         } else {
             0
         }
@@ -73,7 +74,7 @@ impl Gl {
     pub(crate) fn note_pending_material(&mut self, face: GLenum, pname: GLenum) {
         if !self.inside_begin_end() {
             for &f in face_indices(face) {
-                self.server.color_material_sync.pending[f] |= parameter_bits(pname);
+                self.server.color_material_sync.pending[f] |= material_bits(pname);
             }
         }
     }

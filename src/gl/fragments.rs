@@ -1,6 +1,5 @@
 //! The per-fragment stages after the fragment's colour and the buffers they write (GL 1.1
-//! spec §4.1–4.2): the scissor test, the stencil test, the depth buffer's write mask, the colour
-//! write mask, the logic op, which colour buffers are drawn and read (front, back), and the
+//! spec §4.1–4.2): the scissor test, the stencil test, the colour write mask, the logic op, which colour buffers are drawn and read (front, back), and the
 //! accumulation buffer. The values live in `PerFragment`; a recorded primitive's
 //! [`DrawState`](super::DrawState) carries them as [`FragmentTests`], and both rasterisers apply
 //! them. The calls are in `stencil.rs`, `accum.rs`, `masks.rs` and `draw_buffer.rs`; this file
@@ -115,7 +114,6 @@ pub(crate) struct PerFragment {
     pub stencil: Stencil,
     pub clear_stencil: GLint,
     pub clear_accum: [f32; 4],
-    pub depth_write: bool,
     pub color_write: [bool; 4],
     pub scissor: [i32; 4],
     pub logic_op: GLenum,
@@ -131,7 +129,6 @@ impl PerFragment {
             stencil: Stencil::default(),
             clear_stencil: 0,
             clear_accum: [0.0; 4],
-            depth_write: true,
             color_write: [true; 4],
             scissor: [0, 0, width, height],
             logic_op: GL_COPY,
@@ -150,7 +147,6 @@ pub(crate) enum FragmentCall {
     ClearStencil(GLint),
     Accum(GLenum, GLfloat),
     ClearAccum([GLfloat; 4]),
-    DepthMask(GLboolean),
     ColorMask([GLboolean; 4]),
     Scissor([GLint; 4]),
     LogicOp(GLenum),
@@ -177,7 +173,6 @@ impl Gl {
             C::ClearStencil(s) => self.clear_stencil(s),
             C::Accum(op, value) => self.accum(op, value),
             C::ClearAccum([r, g, b, a]) => self.clear_accum(r, g, b, a),
-            C::DepthMask(flag) => self.depth_mask(flag),
             C::ColorMask([r, g, b, a]) => self.color_mask(r, g, b, a),
             C::Scissor([x, y, w, h]) => self.scissor(x, y, w, h),
             C::LogicOp(op) => self.logic_op(op),
@@ -211,7 +206,7 @@ impl Gl {
             scissor: self.capability(GL_SCISSOR_TEST).then_some(f.scissor),
             stencil: (has_stencil && self.capability(GL_STENCIL_TEST)).then_some(f.stencil),
             stencil_write_mask: f.stencil.write_mask,
-            depth_write: f.depth_write,
+            depth_write: self.server.depth.write,
             color_write: f.color_write,
             logic_op: self.capability(GL_COLOR_LOGIC_OP).then_some(f.logic_op),
             draw_buffers: self.buffers_of(f.draw_buffer),
@@ -245,9 +240,6 @@ impl Gl {
         if has(GL_COLOR_BUFFER_BIT) {
             (f.color_write, f.logic_op, f.draw_buffer) = (saved.color_write, saved.logic_op, saved.draw_buffer);
         }
-        if has(GL_DEPTH_BUFFER_BIT) {
-            f.depth_write = saved.depth_write;
-        }
         if has(GL_STENCIL_BUFFER_BIT) {
             (f.stencil, f.clear_stencil) = (saved.stencil, saved.clear_stencil);
         }
@@ -280,7 +272,6 @@ pub(crate) static GET_ROWS: &[StateVar] = &[
     row(GL_DRAW_BUFFER, 1, Kind::Int, |gl, o| put_enum(o, gl.server.fragments.draw_buffer)),
     row(GL_READ_BUFFER, 1, Kind::Int, |gl, o| put_enum(o, gl.server.fragments.read_buffer)),
     row(GL_COLOR_WRITEMASK, 4, Kind::Bool, |gl, o| put(o, &gl.server.fragments.color_write.map(u8::from))),
-    row(GL_DEPTH_WRITEMASK, 1, Kind::Bool, |gl, o| put_flag(o, gl.server.fragments.depth_write)),
     row(GL_STENCIL_WRITEMASK, 1, Kind::Int, |gl, o| o[0] = f64::from(gl.server.fragments.stencil.write_mask)),
     row(GL_STENCIL_CLEAR_VALUE, 1, Kind::Int, |gl, o| o[0] = f64::from(gl.server.fragments.clear_stencil)),
     row(GL_ACCUM_CLEAR_VALUE, 4, Kind::Normalized, |gl, o| put(o, &gl.server.fragments.clear_accum)),

@@ -2,6 +2,7 @@
 //! §2.13), with GL's initial values. Positions and spot directions are stored in eye
 //! coordinates, transformed by the modelview matrix current when they were set.
 
+use super::color_material::material_bits;
 use super::consts::*;
 use super::lists::ListCommand;
 use super::types::*;
@@ -102,18 +103,6 @@ impl Default for Lighting {
             two_side: false,
             color_material: (GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE),
         }
-    }
-}
-
-/// The bits `GL_COLOR_MATERIAL` tracks of a material name (see `color_material.rs`).
-fn color_material_bits(pname: GLenum) -> u8 {
-    match pname {
-        GL_AMBIENT => 1,
-        GL_DIFFUSE => 2,
-        GL_AMBIENT_AND_DIFFUSE => 3,
-        GL_SPECULAR => 4,
-        GL_EMISSION => 8,
-        _ => 0,
     }
 }
 
@@ -231,7 +220,7 @@ impl Gl {
         for &f in faces {
             // While tracking, Mesa drops a glMaterial of a tracked parameter (`vbo`'s material
             // call masks them out).
-            let bits = color_material_bits(pname) & !self.tracked_bits(f);
+            let bits = material_bits(pname) & !self.tracked_bits(f);
             let m = &mut self.server.lighting.materials[f];
             if pname == GL_SHININESS {
                 m.shininess = params[0];

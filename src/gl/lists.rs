@@ -69,9 +69,7 @@ pub(crate) enum ListCommand {
     PolygonMode(GLenum, GLenum),
     FrontFace(GLenum),
     CullFace(GLenum),
-    DepthFunc(GLenum),
     ClearColor([f32; 4]),
-    ClearDepth(f64),
     Clear(GLbitfield),
     ActiveTexture(GLenum),
     Map1 {
@@ -162,6 +160,7 @@ pub(crate) enum ListCommand {
     Pixels(super::pixel_commands::PixelCommand),
     /// The stencil, accumulation, mask, scissor, logic-op and buffer calls (`gl/fragments.rs`).
     Fragment(super::fragments::FragmentCall),
+    Depth(super::depth::DepthCall),
 }
 
 /// A list being compiled.
@@ -454,9 +453,7 @@ impl Gl {
             C::PolygonMode(face, mode) => self.polygon_mode(*face, *mode),
             C::FrontFace(mode) => self.front_face(*mode),
             C::CullFace(mode) => self.cull_face(*mode),
-            C::DepthFunc(func) => self.depth_func(*func),
             C::ClearColor([r, g, b, a]) => self.clear_color(*r, *g, *b, *a),
-            C::ClearDepth(depth) => self.clear_depth(*depth),
             C::Clear(mask) => self.clear(*mask),
             C::ActiveTexture(unit) => self.active_texture(*unit),
             C::Map1 { target, u, stride, order, points } => self.map1f(*target, u.0, u.1, *stride, *order, points),
@@ -499,6 +496,7 @@ impl Gl {
             C::PushAttrib(mask) => self.push_attrib(*mask),
             C::PopAttrib => self.pop_attrib(),
             C::Fragment(call) => self.replay_fragment_call(*call),
+            C::Depth(call) => self.replay_depth_call(*call),
             C::EmitVertex(v) => self.emit_listed_vertex(*v),
             C::ScatteredMesh(jobs, triangles) => self.record_scattered_mesh(jobs.clone(), triangles.clone()),
             C::RasterPos([x, y, z, w]) => self.raster_pos4f(*x, *y, *z, *w),

@@ -1,6 +1,6 @@
-//! Write masks, the scissor box and the logic op (GL 1.1 spec §4.1.2, §4.1.7, §4.2.2; Mesa
-//! `main/depth.c`, `main/blend.c`, `main/scissor.c`, `main/logicop.c`): `glDepthMask`,
-//! `glColorMask`, `glScissor`, `glLogicOp`.
+//! The colour write mask, the scissor box and the logic op (GL 1.1 spec §4.1.2, §4.1.7,
+//! §4.2.2; Mesa `main/blend.c`, `main/scissor.c`, `main/logicop.c`): `glColorMask`,
+//! `glScissor`, `glLogicOp`. (`glDepthMask` is the depth group's, `depth.rs`.)
 
 use super::consts::*;
 use super::fragments::FragmentCall;
@@ -8,15 +8,6 @@ use super::types::*;
 use super::Gl;
 
 impl Gl {
-    /// `glDepthMask`: whether fragments that pass the depth test write their depth.
-    pub fn depth_mask(&mut self, flag: GLboolean) {
-        if self.compiled_fragment(FragmentCall::DepthMask(flag)) {
-            return;
-        }
-        self.server.fragments.depth_write = flag != GL_FALSE;
-        self.touch_state();
-    }
-
     /// `glColorMask`: which of red, green, blue and alpha draws and clears write.
     pub fn color_mask(&mut self, red: GLboolean, green: GLboolean, blue: GLboolean, alpha: GLboolean) {
         if self.compiled_fragment(FragmentCall::ColorMask([red, green, blue, alpha])) {

@@ -18,6 +18,7 @@ mod color_material;
 pub mod consts;
 mod copy_pixels;
 mod copy_texture;
+mod depth;
 mod draw_buffer;
 mod enable;
 mod eval;
@@ -167,6 +168,8 @@ pub struct Gl {
 pub(crate) struct ServerState {
     pub(crate) current: Current,
     pub(super) caps: enable::Caps,
+    /// The depth buffer group: the test's function, the write mask, the clear value.
+    pub(super) depth: depth::Depth,
     pub(crate) eval: eval::EvalState,
     /// `glPushAttrib`'s stack.
     pub(super) attrib_stack: attrib::AttribStack,
@@ -200,6 +203,7 @@ impl ServerState {
         Self {
             current: Current::default(),
             caps: enable::Caps::default(),
+            depth: depth::Depth::default(),
             eval: eval::EvalState::default(),
             attrib_stack: attrib::AttribStack::default(),
             active_texture: GL_TEXTURE0,
@@ -398,7 +402,7 @@ impl Gl {
             polygon_mode: r.polygon_mode,
             front_face: r.front_face,
             cull_face: self.server.caps.is_on(GL_CULL_FACE).then_some(r.cull_face),
-            depth_test: self.server.caps.is_on(GL_DEPTH_TEST).then_some(r.depth_func),
+            depth_test: self.server.caps.is_on(GL_DEPTH_TEST).then_some(self.server.depth.func),
             texture,
             blend: self.enabled_blend(),
             alpha_test: self.enabled_alpha_test(),

@@ -23,9 +23,7 @@ pub(crate) struct RasterState {
     pub polygon_mode: [GLenum; 2],
     pub front_face: GLenum,
     pub cull_face: GLenum,
-    pub depth_func: GLenum,
     pub clear_color: [f32; 4],
-    pub clear_depth: f32,
     /// `glLineStipple`: the repeat factor (clamped to 1..=256) and the pattern.
     pub line_stipple: (i32, u16),
     /// `glPolygonOffset`: factor and units.
@@ -47,9 +45,7 @@ impl RasterState {
             polygon_mode: [GL_FILL, GL_FILL],
             front_face: GL_CCW,
             cull_face: GL_BACK,
-            depth_func: GL_LESS,
             clear_color: [0.0; 4],
-            clear_depth: 1.0,
             line_stipple: (1, 0xFFFF),
             polygon_offset: (0.0, 0.0),
             clip_planes: [[0.0; 4]; super::clip::MAX_CLIP_PLANES],
@@ -179,21 +175,6 @@ impl Gl {
         self.touch_state();
     }
 
-    /// `glDepthFunc`.
-    pub fn depth_func(&mut self, func: GLenum) {
-        if self.compiled(|| ListCommand::DepthFunc(func)) {
-            return;
-        }
-        if self.reject_inside_begin_end() {
-            return;
-        }
-        if !(GL_NEVER..=GL_ALWAYS).contains(&func) {
-            return self.set_error(GL_INVALID_ENUM);
-        }
-        self.server.raster.depth_func = func;
-        self.touch_state();
-    }
-
     /// `glClearColor` (clamped to [0, 1], as GL 1.x does).
     pub fn clear_color(&mut self, r: GLclampf, g: GLclampf, b: GLclampf, a: GLclampf) {
         if self.compiled(|| ListCommand::ClearColor([r, g, b, a])) {
@@ -203,17 +184,6 @@ impl Gl {
             return;
         }
         self.server.raster.clear_color = [r, g, b, a].map(|c| c.clamp(0.0, 1.0));
-    }
-
-    /// `glClearDepth` (clamped to [0, 1]).
-    pub fn clear_depth(&mut self, depth: GLdouble) {
-        if self.compiled(|| ListCommand::ClearDepth(depth)) {
-            return;
-        }
-        if self.reject_inside_begin_end() {
-            return;
-        }
-        self.server.raster.clear_depth = depth.clamp(0.0, 1.0) as f32;
     }
 
     /// `glClear`: bits other than colour, depth, stencil and accum → `GL_INVALID_VALUE`.
@@ -229,7 +199,7 @@ impl Gl {
         if mask & !known != 0 {
             return self.set_error(GL_INVALID_VALUE);
         }
-        let (color, depth) = (self.server.raster.clear_color, self.server.raster.clear_depth);
+        let (color, depth) = (self.server.raster.clear_color, self.server.depth.clear);
         let (stencil, accum, tests) =
             (self.server.fragments.clear_stencil, self.server.fragments.clear_accum, self.fragment_tests());
         self.recorder.frame.commands.push(Command::Clear { mask, color, depth, stencil, accum, tests });

@@ -85,11 +85,12 @@ fn matrix(o: &mut [f64], m: glam::Mat4) {
 /// Every row: this file's, then those of the modules that keep their state's fields.
 pub(crate) fn rows() -> impl Iterator<Item = &'static StateVar> {
     use super::super::{
-        arrays, color_index, eval, fragments, hint, lists, pixel_transfer, raster_pos, select, texture,
+        arrays, color_index, depth, eval, fragments, hint, lists, pixel_transfer, raster_pos, select, texture,
     };
     [
         STATE,
         raster_pos::GET_ROWS,
+        depth::GET_ROWS,
         arrays::GET_ROWS,
         texture::GET_ROWS,
         fragments::GET_ROWS,
@@ -173,12 +174,10 @@ pub(crate) static STATE: &[StateVar] = &[
     // Table 6.12: pixel operations.
     row(GL_ALPHA_TEST_FUNC, 1, Int, |gl, o| put_enum(o, gl.server.fragment_ops.alpha.0)),
     row(GL_ALPHA_TEST_REF, 1, Normalized, |gl, o| o[0] = gl.server.fragment_ops.alpha.1.into()),
-    row(GL_DEPTH_FUNC, 1, Int, |gl, o| put_enum(o, gl.server.raster.depth_func)),
     row(GL_BLEND_SRC, 1, Int, |gl, o| put_enum(o, gl.server.fragment_ops.blend[0])),
     row(GL_BLEND_DST, 1, Int, |gl, o| put_enum(o, gl.server.fragment_ops.blend[1])),
     // Table 6.13: framebuffer control.
     row(GL_COLOR_CLEAR_VALUE, 4, Normalized, |gl, o| put(o, &gl.server.raster.clear_color)),
-    row(GL_DEPTH_CLEAR_VALUE, 1, Normalized, |gl, o| o[0] = gl.server.raster.clear_depth.into()),
     // Table 6.14: pixels.
     row(GL_UNPACK_SWAP_BYTES, 1, Bool, |gl, o| put_flag(o, gl.client.pixel_stores.unpack.swap_bytes)),
     row(GL_UNPACK_LSB_FIRST, 1, Bool, |gl, o| put_flag(o, gl.client.pixel_stores.unpack.lsb_first)),
