@@ -68,16 +68,22 @@ pub struct Options {
     pub profile: bool,
     /// `--wgpu`: draw headless frames through wgpu rather than the CPU rasteriser.
     pub wgpu: bool,
+    /// GLUT's X options (`-geometry`, `-display`, `-iconic`, `-direct`, `-indirect`, `-sync`,
+    /// `-gldebug`), as `glutInit` takes them.
+    pub glut: crate::glut::XOptions,
 }
 
 impl Options {
-    /// Parses the options [`App::run`] takes out of the program's arguments: `--png PATH` (or
-    /// `--png=PATH`), `--time N`, `--frames N`, `--gpu`, `--wgpu` and `--profile`; anything else is left
-    /// for the program.
+    /// Parses the options [`App::run`] takes out of the program's arguments (its name not
+    /// among them): `--png PATH` (or `--png=PATH`), `--time N`, `--frames N`, `--gpu`, `--wgpu`
+    /// and `--profile`, and GLUT's X options ([`crate::glut::split_init_args`]); anything else
+    /// is left for the program.
     #[must_use]
     pub fn from_args(args: impl IntoIterator<Item = String>) -> Self {
-        let mut out = Self::default();
-        let mut args = args.into_iter();
+        let all: Vec<String> = std::iter::once(String::new()).chain(args).collect();
+        let split = crate::glut::split_init_args(&all);
+        let mut out = Self { glut: split.x, ..Self::default() };
+        let mut args = split.gleval.into_iter();
         while let Some(a) = args.next() {
             if a == "--png" {
                 out.png = args.next();
@@ -139,6 +145,8 @@ pub struct App {
     context: Option<Box<Gl>>,
     /// The callbacks beyond GLUT's first ones.
     more: callbacks::More,
+    /// `-gldebug`: GL errors are reported after each display callback.
+    gl_debug: bool,
 }
 
 impl App {
@@ -173,6 +181,7 @@ impl App {
             extra: Vec::new(),
             context: None,
             more: callbacks::More::default(),
+            gl_debug: false,
         }
     }
 
@@ -582,6 +591,7 @@ impl App {
             self.rasterizer = Rasterizer::Wgpu;
         }
         self.frames = options.frames;
+        self.take_x_options(&options.glut);
         let result = match (options.time, options.png) {
             (Some(frames), _) => self.print_frame_time(frames).map(|()| true),
             (None, Some(path)) if options.profile => self.write_png_profiled(&path).map(|()| true),
@@ -594,6 +604,31 @@ impl App {
                 eprintln!("{e}");
                 std::process::exit(1);
             }
+        }
+    }
+
+    /// GLUT's X options, as freeglut's `glutInit` applies them: `-display` picks the X server
+    /// the window opens on, `-geometry`'s place is where it opens unless the program placed it
+    /// (its size is the program's: `App::new` is `glutInitWindowSize` after `glutInit`, which
+    /// overrides it in freeglut too), `-iconic` and `-direct`/`-indirect` are settings
+    /// `glutGet` reads back, and `-gldebug` reports GL errors after each display callback.
+    fn take_x_options(&mut self, x: &crate::glut::XOptions) {
+        use crate::glut::consts::*;
+        if let Some(display) = &x.display {
+            std::env::set_var("DISPLAY", display);
+        }
+        if self.position.is_none() {
+            self.position = x.position;
+        }
+        if x.iconic {
+            self.context_mut().glut_init_iconic();
+        }
+        if let Some(direct) = x.direct {
+            let mode = if direct { GLUT_FORCE_DIRECT_CONTEXT } else { GLUT_FORCE_INDIRECT_CONTEXT };
+            self.context_mut().glut_set_option(GLUT_DIRECT_RENDERING, mode);
+        }
+        if x.gl_debug {
+            self.gl_debug = true;
         }
     }
 
@@ -649,6 +684,9 @@ impl App {
     pub fn run_display(&mut self, gl: &mut Gl) {
         if let Some(display) = &mut self.display {
             display(gl);
+            if self.gl_debug {
+                gl.glut_report_errors();
+            }
         }
     }
 
@@ -864,5 +902,25 @@ mod tests {
         assert!(app.close_menu(&mut gl));
         assert!(!app.close_menu(&mut gl));
         assert!(log.borrow().iter().all(|entry| !entry.starts_with("menu")));
+    }
+
+    #[test]
+    fn a_rust_program_takes_gluts_x_options() {
+        let args = ["-geometry", "64x48+5+6", "-indirect", "-gldebug", "--png", "x.png", "keep"].map(String::from);
+        let options = Options::from_args(args);
+        assert_eq!(options.png.as_deref(), Some("x.png"));
+        let x = &options.glut;
+        assert_eq!((x.size, x.position, x.direct, x.gl_debug), (Some((64, 48)), Some((5, 6)), Some(false), true));
+        // A display callback that leaves a GL error: -gldebug reports it (and so clears it).
+        let program = || App::new("x", 30, 20).display(|gl| gl.matrix_mode(0x1234));
+        let mut app = program();
+        app.take_x_options(x);
+        assert_eq!((app.placed(), app.size()), (Some((5, 6)), (30, 20)));
+        let mut gl = app.record_frame();
+        assert_eq!(gl.glut_get(GLUT_DIRECT_RENDERING), GLUT_FORCE_INDIRECT_CONTEXT);
+        assert_eq!(gl.get_error(), crate::gl::consts::GL_NO_ERROR);
+        let mut gl = program().record_frame();
+        assert_eq!(gl.glut_get(GLUT_DIRECT_RENDERING), GLUT_TRY_DIRECT_CONTEXT);
+        assert_eq!(gl.get_error(), crate::gl::consts::GL_INVALID_ENUM);
     }
 }

@@ -8,6 +8,7 @@
 //! Callbacks registered before the main loop (`glutDisplayFunc`, `glutSpecialFunc`, ...) are
 //! `App`'s builder methods.
 
+mod args;
 pub mod consts;
 pub mod display_mode;
 pub mod fonts;
@@ -32,6 +33,7 @@ mod teapot;
 mod teaset;
 pub(crate) mod windows;
 
+pub use args::{split_init_args, InitArgs, XOptions};
 pub use menu::{MenuDestroyFn, MenuFn};
 #[cfg(all(feature = "gpu", feature = "png"))]
 pub(crate) use schedule::Schedule;

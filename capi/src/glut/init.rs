@@ -7,6 +7,7 @@ use crate::context::{has_current, with_gl};
 use gleval::app::{App, Options, Pass, Running};
 use gleval::gl::Gl;
 use gleval::glut::consts::*;
+use gleval::glut::{split_init_args, InitArgs, XOptions};
 use std::cell::RefCell;
 use std::ffi::{c_char, c_int, c_uint, CStr};
 
@@ -85,116 +86,33 @@ pub(super) fn new_window(title: &str, sub: Option<(i32, i32, i32, i32)>) -> App 
     })
 }
 
-/// gleval's options and whether each takes a value (`App` parses them: `Options::from_args`).
-const OPTIONS: [(&str, bool); 6] =
-    [("--png", true), ("--time", true), ("--frames", true), ("--gpu", false), ("--wgpu", false), ("--profile", false)];
-
-/// GLUT's X options (GLUT 3 spec §2.1) and whether each takes a value.
-const X_OPTIONS: [(&str, bool); 7] = [
-    ("-display", true),
-    ("-geometry", true),
-    ("-iconic", false),
-    ("-direct", false),
-    ("-indirect", false),
-    ("-sync", false),
-    ("-gldebug", false),
-];
-
-/// How many of `args` (from the first) are one option of `table` with its value; 0 if the
-/// first is not one.
-fn option_len(args: &[String], table: &[(&str, bool)]) -> usize {
-    let Some(first) = args.first() else { return 0 };
-    if first.starts_with("--png=") && table.len() == OPTIONS.len() {
-        return 1;
-    }
-    match table.iter().find(|(name, _)| first == name) {
-        Some((_, true)) => args.len().min(2),
-        Some((_, false)) => 1,
-        None => 0,
-    }
-}
-
-/// Splits the program's arguments into gleval's options, GLUT's X options and the program's
-/// own (which `keep` marks).
-fn split_options(args: Vec<String>) -> (Vec<String>, Vec<String>, Vec<bool>) {
-    let (mut ours, mut x) = (Vec::new(), Vec::new());
-    let mut keep = vec![true; args.len()];
-    let mut i = 1.min(args.len());
-    while i < args.len() {
-        let (n, into) = match option_len(&args[i..], &OPTIONS) {
-            0 => (option_len(&args[i..], &X_OPTIONS), &mut x),
-            n => (n, &mut ours),
-        };
-        if n == 0 {
-            i += 1;
-            continue;
+/// Applies GLUT's X options as freeglut does: before any window, on the settings the windows
+/// take (`App::run` applies the same options to a Rust program's window).
+fn apply_x_options(x: &XOptions) {
+    SETUP.with(|s| {
+        let mut s = s.borrow_mut();
+        if let Some(size) = x.size {
+            s.size = size;
+            s.settings.glut_set_option(GLUT_INIT_WINDOW_WIDTH, size.0);
+            s.settings.glut_set_option(GLUT_INIT_WINDOW_HEIGHT, size.1);
         }
-        into.extend_from_slice(&args[i..i + n]);
-        keep[i..i + n].fill(false);
-        i += n;
-    }
-    (ours, x, keep)
-}
-
-/// A size or a place: two numbers.
-type Pair = Option<(i32, i32)>;
-
-/// `-geometry WxH+X+Y` (each part optional, as X's geometry strings): size and place.
-fn parse_geometry(g: &str) -> (Pair, Pair) {
-    let (size, place) = match g.find(['+', '-']) {
-        Some(at) => g.split_at(at),
-        None => (g, ""),
-    };
-    let size = size.split_once(['x', 'X']).and_then(|(w, h)| Some((w.parse().ok()?, h.parse().ok()?)));
-    let mut numbers = Vec::new();
-    let mut rest = place;
-    while let Some(sign) = rest.chars().next() {
-        let body = &rest[1..];
-        let end = body.find(['+', '-']).unwrap_or(body.len());
-        let Ok(n) = body[..end].parse::<i32>() else { break };
-        numbers.push(if sign == '-' { -n } else { n });
-        rest = &body[end..];
-    }
-    let place = (numbers.len() == 2).then(|| (numbers[0], numbers[1]));
-    (size, place)
-}
-
-/// Applies GLUT's X options as freeglut does.
-fn apply_x_options(x: &[String]) {
-    let mut i = 0;
-    while i < x.len() {
-        let value = x.get(i + 1).cloned().unwrap_or_default();
-        match x[i].as_str() {
-            "-geometry" => {
-                let (size, place) = parse_geometry(&value);
-                SETUP.with(|s| {
-                    let mut s = s.borrow_mut();
-                    if let Some(size) = size {
-                        s.size = size;
-                        s.settings.glut_set_option(GLUT_INIT_WINDOW_WIDTH, size.0);
-                        s.settings.glut_set_option(GLUT_INIT_WINDOW_HEIGHT, size.1);
-                    }
-                    if let Some((px, py)) = place {
-                        s.position = Some((px, py));
-                        s.settings.glut_set_option(GLUT_INIT_WINDOW_X, px);
-                        s.settings.glut_set_option(GLUT_INIT_WINDOW_Y, py);
-                    }
-                });
-                i += 1;
-            }
-            // The X display the windows open on (winit reads it from the environment).
-            "-display" => {
-                std::env::set_var("DISPLAY", &value);
-                i += 1;
-            }
-            "-iconic" => set_glut(Gl::glut_init_iconic),
-            "-direct" => set_glut(|gl| gl.glut_set_option(GLUT_DIRECT_RENDERING, GLUT_FORCE_DIRECT_CONTEXT)),
-            "-indirect" => set_glut(|gl| gl.glut_set_option(GLUT_DIRECT_RENDERING, GLUT_FORCE_INDIRECT_CONTEXT)),
-            "-gldebug" => SETUP.with(|s| s.borrow_mut().gl_debug = true),
-            // X's synchronous mode changes nothing a program can see.
-            _ => {}
+        if let Some((px, py)) = x.position {
+            s.position = Some((px, py));
+            s.settings.glut_set_option(GLUT_INIT_WINDOW_X, px);
+            s.settings.glut_set_option(GLUT_INIT_WINDOW_Y, py);
         }
-        i += 1;
+        s.gl_debug |= x.gl_debug;
+    });
+    // The X display the windows open on (winit reads it from the environment).
+    if let Some(display) = &x.display {
+        std::env::set_var("DISPLAY", display);
+    }
+    if x.iconic {
+        set_glut(Gl::glut_init_iconic);
+    }
+    if let Some(direct) = x.direct {
+        let mode = if direct { GLUT_FORCE_DIRECT_CONTEXT } else { GLUT_FORCE_INDIRECT_CONTEXT };
+        set_glut(|gl| gl.glut_set_option(GLUT_DIRECT_RENDERING, mode));
     }
 }
 
@@ -215,7 +133,7 @@ entry! {
             .map(|i| unsafe { *argv.add(i) })
             .map(|p| if p.is_null() { String::new() } else { unsafe { CStr::from_ptr(p) }.to_string_lossy().into_owned() })
             .collect();
-        let (ours, x, keep) = split_options(strings);
+        let InitArgs { gleval: ours, x, kept: keep } = split_init_args(&strings);
         let mut kept = 0;
         for (i, keep) in keep.into_iter().enumerate() {
             if keep {
@@ -388,35 +306,3 @@ entry! {
     }
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn options_leave_the_programs_arguments() {
-        let args = [
-            "prog",
-            "-v",
-            "--png",
-            "a.png",
-            "--gpu",
-            "x",
-            "--png=b.png",
-            "-iconic",
-            "-geometry",
-            "40x30+5-6",
-            "--frames",
-        ];
-        let (ours, x, keep) = split_options(args.iter().map(|s| s.to_string()).collect());
-        assert_eq!(ours, ["--png", "a.png", "--gpu", "--png=b.png", "--frames"]);
-        assert_eq!(x, ["-iconic", "-geometry", "40x30+5-6"]);
-        assert_eq!(keep, [true, true, false, false, false, true, false, false, false, false, false]);
-    }
-
-    #[test]
-    fn geometry_strings() {
-        assert_eq!(parse_geometry("40x30+5-6"), (Some((40, 30)), Some((5, -6))));
-        assert_eq!(parse_geometry("640x480"), (Some((640, 480)), None));
-        assert_eq!(parse_geometry("+10+20"), (None, Some((10, 20))));
-    }
-}
