@@ -7,10 +7,13 @@
 
 mod callbacks;
 mod compose;
+mod headless;
+mod options;
 pub(crate) mod program;
 mod running;
 
 pub use callbacks::{Int2Fn, Int3Fn, Int4Fn, Int5Fn, IntFn, JoystickFn, VoidFn};
+pub use options::Options;
 pub use running::{Pass, Running};
 
 use crate::gl::{Frame, Gl, Tessellator};
@@ -19,7 +22,9 @@ use crate::glut::popup::{Popup, PopupEvent};
 use crate::glut::state::TimerRequest;
 use crate::glut::windows::WindowRequest;
 use crate::glut::{IdleFn, Schedule};
-use crate::render::{soft, Image, Rasterizer, RenderError, Renderer};
+use crate::render::Rasterizer;
+use headless::window_reader;
+pub(crate) use headless::Headless;
 use program::Program;
 
 type DisplayFn = Box<dyn FnMut(&mut Gl)>;
@@ -49,59 +54,6 @@ impl Redraw {
         } else {
             Self::Nothing
         }
-    }
-}
-
-/// What the command line asked for.
-#[derive(Clone, Debug, Default, PartialEq)]
-pub struct Options {
-    /// `--png PATH`: render one frame to this file and exit.
-    pub png: Option<String>,
-    /// `--time N`: render N headless frames and print the median frame time.
-    pub time: Option<usize>,
-    /// `--gpu`: evaluate `glEvalMesh` grids in the GPU tessellator's compute shader.
-    pub gpu: bool,
-    /// `--frames N`: headless, run the program for N frames (idle and timer callbacks on a
-    /// virtual 60 Hz clock) and render the last.
-    pub frames: Option<usize>,
-    /// `--profile`: with `--png`, print to stderr where the run's time went.
-    pub profile: bool,
-    /// `--wgpu`: draw headless frames through wgpu rather than the CPU rasteriser.
-    pub wgpu: bool,
-    /// GLUT's X options (`-geometry`, `-display`, `-iconic`, `-direct`, `-indirect`, `-sync`,
-    /// `-gldebug`), as `glutInit` takes them.
-    pub glut: crate::glut::XOptions,
-}
-
-impl Options {
-    /// Parses the options [`App::run`] takes out of the program's arguments (its name not
-    /// among them): `--png PATH` (or `--png=PATH`), `--time N`, `--frames N`, `--gpu`, `--wgpu`
-    /// and `--profile`, and GLUT's X options ([`crate::glut::split_init_args`]); anything else
-    /// is left for the program.
-    #[must_use]
-    pub fn from_args(args: impl IntoIterator<Item = String>) -> Self {
-        let all: Vec<String> = std::iter::once(String::new()).chain(args).collect();
-        let split = crate::glut::split_init_args(&all);
-        let mut out = Self { glut: split.x, ..Self::default() };
-        let mut args = split.gleval.into_iter();
-        while let Some(a) = args.next() {
-            if a == "--png" {
-                out.png = args.next();
-            } else if let Some(path) = a.strip_prefix("--png=") {
-                out.png = Some(path.to_owned());
-            } else if a == "--time" {
-                out.time = args.next().and_then(|n| n.parse().ok());
-            } else if a == "--gpu" {
-                out.gpu = true;
-            } else if a == "--frames" {
-                out.frames = args.next().and_then(|n| n.parse().ok());
-            } else if a == "--profile" {
-                out.profile = true;
-            } else if a == "--wgpu" {
-                out.wgpu = true;
-            }
-        }
-        out
     }
 }
 
@@ -607,31 +559,6 @@ impl App {
         }
     }
 
-    /// GLUT's X options, as freeglut's `glutInit` applies them: `-display` picks the X server
-    /// the window opens on, `-geometry`'s place is where it opens unless the program placed it
-    /// (its size is the program's: `App::new` is `glutInitWindowSize` after `glutInit`, which
-    /// overrides it in freeglut too), `-iconic` and `-direct`/`-indirect` are settings
-    /// `glutGet` reads back, and `-gldebug` reports GL errors after each display callback.
-    fn take_x_options(&mut self, x: &crate::glut::XOptions) {
-        use crate::glut::consts::*;
-        if let Some(display) = &x.display {
-            std::env::set_var("DISPLAY", display);
-        }
-        if self.position.is_none() {
-            self.position = x.position;
-        }
-        if x.iconic {
-            self.context_mut().glut_init_iconic();
-        }
-        if let Some(direct) = x.direct {
-            let mode = if direct { GLUT_FORCE_DIRECT_CONTEXT } else { GLUT_FORCE_INDIRECT_CONTEXT };
-            self.context_mut().glut_set_option(GLUT_DIRECT_RENDERING, mode);
-        }
-        if x.gl_debug {
-            self.gl_debug = true;
-        }
-    }
-
     /// Runs init, reshape and display once on a fresh context and returns what was drawn.
     pub fn record_frame(&mut self) -> Gl {
         self.record_frames(1)
@@ -690,118 +617,6 @@ impl App {
         }
     }
 
-    /// Renders the first window headless (the last frame of `--frames N`) with
-    /// [`App::rasterizer`], its subwindows composed in place.
-    pub fn render_image(&mut self) -> Result<Image, RenderError> {
-        let mut renderer = Headless::new(self.rasterizer())?;
-        let frames = self.frames.unwrap_or(1);
-        let mut program = Program::new(std::mem::replace(self, App::new("", 1, 1)));
-        program.run_headless(frames);
-        let image = match program.index(1) {
-            Some(k) => program.render_tree(k, &mut renderer),
-            None => Err(RenderError::Gpu("the program destroyed its first window".into())),
-        };
-        if let Some(k) = program.index(1) {
-            *self = program.slots.swap_remove(k).app;
-        }
-        image
-    }
-
-    /// Runs the program headless and writes each shown top-level window's picture (its
-    /// subwindows composed in place): the first to `path`, window N to `path` with `-N` before
-    /// the extension. Then the loop ends as freeglut's does (every window's close callback);
-    /// true if the program should exit (`GLUT_ACTION_ON_WINDOW_CLOSE` is `GLUT_ACTION_EXIT`).
-    fn write_pngs(self, path: &str) -> Result<bool, Box<dyn std::error::Error>> {
-        let mut renderer = Headless::new(self.rasterizer())?;
-        let frames = self.frames.unwrap_or(1);
-        let mut program = Program::new(self);
-        program.run_headless(frames);
-        let pictures = program.render_windows(&mut renderer)?;
-        for (n, (id, image)) in pictures.iter().enumerate() {
-            crate::render::write_png(compose::png_path(path, *id, n == 0), image)?;
-        }
-        Ok(program.finish())
-    }
-
-    /// Renders `frames` headless frames with one renderer (display callback, assembly,
-    /// rasterisation and read-back each time), after one untimed frame (which compiles wgpu's
-    /// pipelines), and returns the median frame time.
-    pub fn median_frame_time(&mut self, frames: usize) -> Result<std::time::Duration, RenderError> {
-        let mut renderer = Headless::new(self.rasterizer())?;
-        let mut gl = self.context.take().map_or_else(|| self.new_gl(), |made| *made);
-        gl.set_tessellator(self.tessellator);
-        self.run_init(&mut gl);
-        let mut times = Vec::with_capacity(frames.max(1));
-        self.draw_into(&mut gl, self.width, self.height);
-        renderer.render_frame(&gl.take_frame(), self.width as u32, self.height as u32)?;
-        for _ in 0..frames.max(1) {
-            let start = std::time::Instant::now();
-            self.draw_into(&mut gl, self.width, self.height);
-            let frame = gl.take_frame();
-            renderer.render_frame(&frame, self.width as u32, self.height as u32)?;
-            gl.recycle_frame(frame);
-            times.push(start.elapsed());
-        }
-        times.sort();
-        Ok(times[times.len() / 2])
-    }
-
-    fn print_frame_time(mut self, frames: usize) -> Result<(), Box<dyn std::error::Error>> {
-        let median = self.median_frame_time(frames)?;
-        println!("{}: median frame {:.3} ms over {frames} frames", self.title, median.as_secs_f64() * 1e3);
-        Ok(())
-    }
-
-    /// Renders the program headless and writes it as PNG: the first window to `path`, each
-    /// further top-level window to `path` with `-N` (its number) before the extension.
-    pub fn write_png(self, path: &str) -> Result<(), Box<dyn std::error::Error>> {
-        self.write_pngs(path).map(|_| ())
-    }
-
-    /// [`App::write_png`] timing each phase of the run, printed to stderr (`--profile`): the
-    /// program's callbacks, the wgpu instance and adapter, the device with the frame
-    /// rasteriser's shader, the first frame (assembly, pipelines, rasterisation, read-back), a
-    /// second frame of the same picture (what the first cost beyond steady state is pipeline
-    /// creation), and the PNG encoding.
-    fn write_png_profiled(mut self, path: &str) -> Result<(), Box<dyn std::error::Error>> {
-        let start = std::time::Instant::now();
-        let mut lap = start;
-        let mut phase = |name: &str| {
-            let now = std::time::Instant::now();
-            eprintln!("profile: {name:<34} {:8.2} ms", (now - lap).as_secs_f64() * 1e3);
-            lap = now;
-        };
-        let mut gl = self.record_frames(self.frames.unwrap_or(1));
-        phase("program (init, reshape, display)");
-        let (w, h) = (self.width as u32, self.height as u32);
-        if self.rasterizer() == Rasterizer::Cpu {
-            let frame = gl.take_frame();
-            let image = soft::render_frame(&frame, w, h);
-            phase("CPU rasteriser (assembly, drawing)");
-            crate::render::write_png(path, &image)?;
-            phase("PNG encoding and write");
-            eprintln!("profile: {:<34} {:8.2} ms", "total", start.elapsed().as_secs_f64() * 1e3);
-            return Ok(());
-        }
-        let (instance, adapter) = crate::gpu::first_adapter()?;
-        phase("wgpu instance and adapter");
-        let mut renderer = Renderer::with_adapter(instance, adapter)?;
-        phase("device and shader");
-        let frame = gl.take_frame();
-        let image = renderer.render_frame(&frame, w, h)?;
-        phase("first frame (with pipelines)");
-        renderer.render_frame(&frame, w, h)?;
-        phase("same frame again (steady state)");
-        crate::render::write_png(path, &image)?;
-        phase("PNG encoding and write");
-        eprintln!(
-            "profile: {:<34} {:8.2} ms (the repeated frame included)",
-            "total",
-            start.elapsed().as_secs_f64() * 1e3
-        );
-        Ok(())
-    }
-
     #[cfg(feature = "window")]
     fn run_window(self) -> Result<bool, Box<dyn std::error::Error>> {
         crate::window::run(self)
@@ -810,44 +625,6 @@ impl App {
     #[cfg(not(feature = "window"))]
     fn run_window(self) -> Result<bool, Box<dyn std::error::Error>> {
         Err("this build has no window support (feature `window`); run with --png PATH".into())
-    }
-}
-
-/// A headless frame's rasteriser.
-pub(crate) enum Headless {
-    Cpu,
-    Wgpu(Box<Renderer>),
-}
-
-impl Headless {
-    fn new(rasterizer: Rasterizer) -> Result<Self, RenderError> {
-        Ok(match rasterizer {
-            Rasterizer::Cpu => Self::Cpu,
-            Rasterizer::Wgpu => Self::Wgpu(Box::new(Renderer::new()?)),
-        })
-    }
-
-    fn render_frame(&mut self, frame: &Frame, width: u32, height: u32) -> Result<Image, RenderError> {
-        match self {
-            Self::Cpu => Ok(soft::render_frame(frame, width, height)),
-            Self::Wgpu(renderer) => renderer.render_frame(frame, width, height),
-        }
-    }
-}
-
-/// What a context of this program reads the window with mid-frame (`glCopyTexImage`): its
-/// frame so far drawn by the program's headless rasteriser (a wgpu renderer made at the first
-/// read and kept).
-fn window_reader(rasterizer: Rasterizer) -> impl FnMut(&Frame, u32, u32) -> Option<crate::gl::WindowImage> {
-    let mut renderer: Option<Renderer> = None;
-    move |frame, width, height| match rasterizer {
-        Rasterizer::Cpu => Some(soft::render_window(frame, width, height)),
-        Rasterizer::Wgpu => {
-            if renderer.is_none() {
-                renderer = Renderer::new().map_err(|e| eprintln!("gleval: reading the window: {e}")).ok();
-            }
-            renderer.as_mut()?.render_window(frame, width, height, true).ok()
-        }
     }
 }
 

@@ -8,18 +8,23 @@ use crate::app::program::Program;
 use crate::app::{App, Redraw};
 use crate::gl::Gl;
 use crate::glut::consts::*;
-use crate::glut::windows::{WindowFacts, WindowRequest};
-use crate::render::{soft, RenderError, Renderer};
+use crate::glut::windows::WindowRequest;
+use crate::render::soft;
 use std::collections::HashMap;
 use std::error::Error;
-use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
 use winit::application::ApplicationHandler;
 use winit::dpi::{PhysicalPosition, PhysicalSize};
-use winit::event::{ElementState, KeyEvent, Modifiers, MouseButton, MouseScrollDelta, WindowEvent};
+use winit::event::{ElementState, KeyEvent, MouseButton, MouseScrollDelta, WindowEvent};
 use winit::event_loop::{ActiveEventLoop, ControlFlow, EventLoop};
 use winit::keyboard::{Key, NamedKey};
-use winit::window::{CursorIcon, Fullscreen, Window, WindowId};
+use winit::window::{Fullscreen, WindowId};
+
+mod input;
+mod surface;
+
+use input::{cursor_icon, glut_modifiers, key_text, special_key};
+use surface::Gpu;
 
 /// A program whose windowed loop the program drives itself (`glutMainLoopEvent`): each pass
 /// handles the events waiting, runs the callbacks they call for and draws what must be drawn,
@@ -80,147 +85,6 @@ pub(crate) fn run(app: App) -> Result<bool, Box<dyn Error>> {
     }
     let finish = state.program.finish();
     Ok(state.exit || finish)
-}
-
-/// The window and what draws into it.
-struct Gpu {
-    window: Arc<Window>,
-    surface: wgpu::Surface<'static>,
-    config: wgpu::SurfaceConfiguration,
-    renderer: Renderer,
-    depth: wgpu::TextureView,
-    /// Set by wgpu when the device is lost.
-    lost: Arc<Mutex<Option<String>>>,
-}
-
-/// A depth buffer of the surface's size.
-fn depth_view(device: &wgpu::Device, width: u32, height: u32) -> wgpu::TextureView {
-    device
-        .create_texture(&wgpu::TextureDescriptor {
-            label: Some("window depth"),
-            size: wgpu::Extent3d { width, height, depth_or_array_layers: 1 },
-            mip_level_count: 1,
-            sample_count: 1,
-            dimension: wgpu::TextureDimension::D2,
-            format: crate::gpu::DEPTH_FORMAT,
-            usage: wgpu::TextureUsages::RENDER_ATTACHMENT,
-            view_formats: &[],
-        })
-        .create_view(&Default::default())
-}
-
-impl Gpu {
-    /// The window, a surface on it and a renderer on an adapter that can present to it:
-    /// Vulkan first, then GL (or what `WGPU_BACKEND` says).
-    fn new(
-        event_loop: &ActiveEventLoop,
-        title: &str,
-        facts: &WindowFacts,
-        placed: Option<(i32, i32)>,
-    ) -> Result<Self, String> {
-        let (w, h) = (facts.width, facts.height);
-        let mut attributes = Window::default_attributes()
-            .with_title(title)
-            .with_inner_size(PhysicalSize::new(w.max(1) as u32, h.max(1) as u32));
-        if let Some((x, y)) = placed {
-            attributes = attributes.with_position(PhysicalPosition::new(x, y));
-        }
-        let window =
-            Arc::new(event_loop.create_window(attributes).map_err(|e| format!("could not open a window: {e}"))?);
-        let mut tried = Vec::new();
-        for backends in crate::gpu::backend_order() {
-            // EGL (the GL backend) must know the display at instance creation to present to it.
-            let desc = wgpu::InstanceDescriptor { backends, ..wgpu::InstanceDescriptor::new_without_display_handle() }
-                .with_display_handle(Box::new(Arc::clone(&window)));
-            let instance = wgpu::Instance::new(desc);
-            let surface = match instance.create_surface(Arc::clone(&window)) {
-                Ok(surface) => surface,
-                Err(e) => {
-                    tried.push(format!("{backends:?}: no surface ({e})"));
-                    continue;
-                }
-            };
-            let options = wgpu::RequestAdapterOptions { compatible_surface: Some(&surface), ..Default::default() };
-            let adapter = match pollster::block_on(instance.request_adapter(&options)) {
-                Ok(adapter) => adapter,
-                Err(e) => {
-                    tried.push(format!("{backends:?}: {e}"));
-                    continue;
-                }
-            };
-            match Self::configure(Arc::clone(&window), surface, instance, adapter) {
-                Ok(gpu) => return Ok(gpu),
-                Err(e) => tried.push(format!("{backends:?}: {e}")),
-            }
-        }
-        Err(RenderError::NoAdapter(format!("none can present to the window: {}", tried.join("; "))).to_string())
-    }
-
-    fn configure(
-        window: Arc<Window>,
-        surface: wgpu::Surface<'static>,
-        instance: wgpu::Instance,
-        adapter: wgpu::Adapter,
-    ) -> Result<Self, String> {
-        let size = window.inner_size();
-        let caps = surface.get_capabilities(&adapter);
-        // GL writes byte values as they are: prefer 8-bit formats without sRGB encoding.
-        let preferred = [wgpu::TextureFormat::Bgra8Unorm, wgpu::TextureFormat::Rgba8Unorm];
-        let format = preferred
-            .into_iter()
-            .find(|f| caps.formats.contains(f))
-            .or_else(|| caps.formats.iter().copied().find(|f| !f.is_srgb()))
-            .or_else(|| caps.formats.first().copied())
-            .ok_or("the surface offers no formats")?;
-        let mut config = surface
-            .get_default_config(&adapter, size.width.max(1), size.height.max(1))
-            .ok_or("the adapter cannot present to this window")?;
-        config.format = format;
-        // Subwindows are copied into the surface (see `WindowState::compose`).
-        if caps.usages.contains(wgpu::TextureUsages::COPY_DST) {
-            config.usage |= wgpu::TextureUsages::COPY_DST;
-        }
-        config.present_mode = wgpu::PresentMode::Fifo;
-        let renderer = Renderer::with_adapter(instance, adapter).map_err(|e| e.to_string())?;
-        let lost = Arc::new(Mutex::new(None));
-        let sink = Arc::clone(&lost);
-        renderer.device.set_device_lost_callback(move |reason, message| {
-            if let Ok(mut slot) = sink.lock() {
-                slot.get_or_insert(format!("the GPU device was lost ({reason:?}): {message}"));
-            }
-        });
-        surface.configure(&renderer.device, &config);
-        let depth = depth_view(&renderer.device, config.width, config.height);
-        Ok(Self { window, surface, config, renderer, depth, lost })
-    }
-
-    /// Reconfigures the surface and depth buffer for a new size (not while minimised).
-    fn resize(&mut self, size: PhysicalSize<u32>) {
-        if size.width == 0 || size.height == 0 {
-            return;
-        }
-        if (size.width, size.height) != (self.config.width, self.config.height) {
-            self.depth = depth_view(&self.renderer.device, size.width, size.height);
-        }
-        self.config.width = size.width;
-        self.config.height = size.height;
-        self.surface.configure(&self.renderer.device, &self.config);
-    }
-
-    /// Makes a new surface on the window after the old one was lost.
-    fn recreate_surface(&mut self) -> Result<(), String> {
-        self.surface = self
-            .renderer
-            .instance
-            .create_surface(Arc::clone(&self.window))
-            .map_err(|e| format!("could not recreate the lost window surface: {e}"))?;
-        self.surface.configure(&self.renderer.device, &self.config);
-        Ok(())
-    }
-
-    fn lost(&self) -> Option<String> {
-        self.lost.lock().ok().and_then(|slot| slot.clone())
-    }
 }
 
 /// A top-level window on the screen.
@@ -676,32 +540,6 @@ fn write_image(gpu: &Gpu, target: &wgpu::Texture, image: &crate::render::Image, 
     gpu.renderer.queue.submit([]);
 }
 
-/// winit's cursor for a `GLUT_CURSOR_*` shape.
-fn cursor_icon(cursor: i32) -> CursorIcon {
-    match cursor {
-        GLUT_CURSOR_LEFT_ARROW => CursorIcon::Default,
-        GLUT_CURSOR_INFO => CursorIcon::Pointer,
-        GLUT_CURSOR_DESTROY => CursorIcon::NotAllowed,
-        GLUT_CURSOR_HELP => CursorIcon::Help,
-        GLUT_CURSOR_CYCLE => CursorIcon::Progress,
-        GLUT_CURSOR_SPRAY => CursorIcon::Cell,
-        GLUT_CURSOR_WAIT => CursorIcon::Wait,
-        GLUT_CURSOR_TEXT => CursorIcon::Text,
-        GLUT_CURSOR_CROSSHAIR | GLUT_CURSOR_FULL_CROSSHAIR => CursorIcon::Crosshair,
-        GLUT_CURSOR_UP_DOWN => CursorIcon::NsResize,
-        GLUT_CURSOR_LEFT_RIGHT => CursorIcon::EwResize,
-        GLUT_CURSOR_TOP_SIDE => CursorIcon::NResize,
-        GLUT_CURSOR_BOTTOM_SIDE => CursorIcon::SResize,
-        GLUT_CURSOR_LEFT_SIDE => CursorIcon::WResize,
-        GLUT_CURSOR_RIGHT_SIDE => CursorIcon::EResize,
-        GLUT_CURSOR_TOP_LEFT_CORNER => CursorIcon::NwResize,
-        GLUT_CURSOR_TOP_RIGHT_CORNER => CursorIcon::NeResize,
-        GLUT_CURSOR_BOTTOM_RIGHT_CORNER => CursorIcon::SeResize,
-        GLUT_CURSOR_BOTTOM_LEFT_CORNER => CursorIcon::SwResize,
-        _ => CursorIcon::Default,
-    }
-}
-
 impl ApplicationHandler for WindowState {
     fn resumed(&mut self, event_loop: &ActiveEventLoop) {
         if self.started {
@@ -797,68 +635,4 @@ impl ApplicationHandler for WindowState {
         // Drop the surfaces before the windows they were made from.
         self.windows.clear();
     }
-}
-
-/// The `GLUT_KEY_*` code of a key GLUT reports to `glutSpecialFunc`.
-fn special_key(key: &Key) -> Option<i32> {
-    let Key::Named(named) = key else { return None };
-    let function_keys = [
-        NamedKey::F1,
-        NamedKey::F2,
-        NamedKey::F3,
-        NamedKey::F4,
-        NamedKey::F5,
-        NamedKey::F6,
-        NamedKey::F7,
-        NamedKey::F8,
-        NamedKey::F9,
-        NamedKey::F10,
-        NamedKey::F11,
-        NamedKey::F12,
-    ];
-    if let Some(k) = function_keys.iter().position(|f| f == named) {
-        return Some(GLUT_KEY_F1 + k as i32);
-    }
-    Some(match named {
-        NamedKey::ArrowLeft => GLUT_KEY_LEFT,
-        NamedKey::ArrowUp => GLUT_KEY_UP,
-        NamedKey::ArrowRight => GLUT_KEY_RIGHT,
-        NamedKey::ArrowDown => GLUT_KEY_DOWN,
-        NamedKey::PageUp => GLUT_KEY_PAGE_UP,
-        NamedKey::PageDown => GLUT_KEY_PAGE_DOWN,
-        NamedKey::Home => GLUT_KEY_HOME,
-        NamedKey::End => GLUT_KEY_END,
-        NamedKey::Insert => GLUT_KEY_INSERT,
-        _ => return None,
-    })
-}
-
-/// The character a released key typed, as GLUT's keyboard callbacks get it.
-fn key_text(key: &Key) -> Option<&str> {
-    match key {
-        Key::Character(text) => Some(text.as_str()),
-        Key::Named(NamedKey::Enter) => Some("\r"),
-        Key::Named(NamedKey::Backspace) => Some("\u{8}"),
-        Key::Named(NamedKey::Tab) => Some("\t"),
-        Key::Named(NamedKey::Space) => Some(" "),
-        Key::Named(NamedKey::Escape) => Some("\u{1b}"),
-        Key::Named(NamedKey::Delete) => Some("\u{7f}"),
-        _ => None,
-    }
-}
-
-/// `glutGetModifiers`'s bits for the modifier keys held.
-fn glut_modifiers(modifiers: &Modifiers) -> i32 {
-    let state = modifiers.state();
-    let mut bits = 0;
-    if state.shift_key() {
-        bits |= GLUT_ACTIVE_SHIFT;
-    }
-    if state.control_key() {
-        bits |= GLUT_ACTIVE_CTRL;
-    }
-    if state.alt_key() {
-        bits |= GLUT_ACTIVE_ALT;
-    }
-    bits
 }
