@@ -1,7 +1,9 @@
 //! `glClipPlane` / `glGetClipPlane` (GL 1.1 spec §2.11): half-spaces in eye coordinates that
 //! clip every primitive. A plane is given in object coordinates and stored transformed by the
 //! inverse of the modelview matrix current at the call, so later matrix changes do not move
-//! it. The renderer clips against the enabled ones (`render::clip`).
+//! it. The clippers every stage uses are here: [`segment_by`] (Liang–Barsky) and [`polygon_by`]
+//! (Sutherland–Hodgman) over any vertex that can be [`Mix`]ed: the renderer's (`render::clip`,
+//! `render::soft::clip`) and feedback's (`feedback_prims`).
 
 use super::consts::*;
 use super::lists::ListCommand;
@@ -16,6 +18,52 @@ pub(crate) const MAX_CLIP_PLANES: usize = 8;
 pub(crate) fn plane_index(plane: GLenum) -> Option<usize> {
     let i = plane.checked_sub(GL_CLIP_PLANE0)? as usize;
     (i < MAX_CLIP_PLANES).then_some(i)
+}
+
+/// A vertex whose attributes are mixed linearly where a plane cuts an edge.
+pub(crate) trait Mix: Copy {
+    /// The vertex a share `t` of the way to `other`.
+    fn mix(self, other: Self, t: f32) -> Self;
+}
+
+/// Cuts the segment by each distance function (inside where ≥ 0), both ends at once
+/// (Liang–Barsky's parameter interval on [0, 1]).
+pub(crate) fn segment_by<V: Mix, F: Fn(&V) -> f32>(
+    a: V,
+    b: V,
+    distances: impl IntoIterator<Item = F>,
+) -> Option<(V, V)> {
+    let (mut t0, mut t1) = (0.0f32, 1.0f32);
+    for d in distances {
+        let (da, db) = (d(&a), d(&b));
+        if da < 0.0 && db < 0.0 {
+            return None;
+        }
+        if da < 0.0 {
+            t0 = t0.max(da / (da - db));
+        } else if db < 0.0 {
+            t1 = t1.min(da / (da - db));
+        }
+    }
+    // An end inside every plane stays as it is (Mesa's clipper copies it).
+    (t0 <= t1).then(|| (if t0 > 0.0 { a.mix(b, t0) } else { a }, if t1 < 1.0 { a.mix(b, t1) } else { b }))
+}
+
+/// One Sutherland–Hodgman step: the vertices inside (`distance` ≥ 0), and a new vertex where
+/// an edge crosses.
+pub(crate) fn polygon_by<V: Mix>(poly: &[V], distance: impl Fn(&V) -> f32) -> Vec<V> {
+    let mut out = Vec::with_capacity(poly.len() + 1);
+    for (k, &c) in poly.iter().enumerate() {
+        let next = poly[(k + 1) % poly.len()];
+        let (dc, dn) = (distance(&c), distance(&next));
+        if dc >= 0.0 {
+            out.push(c);
+        }
+        if (dc >= 0.0) != (dn >= 0.0) {
+            out.push(c.mix(next, dc / (dc - dn)));
+        }
+    }
+    out
 }
 
 impl Gl {

@@ -17,6 +17,7 @@
 //! - a clipped triangle becomes the fan (Lᵢ₋₁, Lᵢ, L0) of its clipped outline L, whose new
 //!   edges along the view volume are hidden and along a user clip plane shown, as Mesa does.
 
+use super::clip::{segment_by, Mix};
 use super::consts::*;
 use super::frame::DrawState;
 use super::shade::Shader;
@@ -49,6 +50,12 @@ struct Stage {
     front: Vec4,
     back: Vec4,
     tex: Vec4,
+}
+
+impl Mix for Stage {
+    fn mix(self, other: Stage, t: f32) -> Stage {
+        self.lerp(other, t)
+    }
 }
 
 impl Stage {
@@ -167,13 +174,14 @@ impl Reporter<'_> {
         FeedbackVertex { window, color: color.to_array(), tex: s.tex.to_array() }
     }
 
-    /// The signed distances of a vertex to the view volume's six planes (Mesa's order: x, −x,
-    /// y, −y, z, −z as w ∓ …), then to the enabled clip planes.
+    /// The signed distances of a vertex to every plane it is clipped by ([`plane_distance`]).
     fn distances(&self, s: &Stage) -> Vec<f32> {
-        let c = s.clip;
-        let mut d = vec![c.w - c.x, c.w + c.x, c.w - c.y, c.w + c.y, c.w + c.z, c.w - c.z];
-        d.extend(self.state.clip_planes.iter().map(|p| Vec4::from_array(*p).dot(s.eye)));
-        d
+        (0..self.planes()).map(|k| plane_distance(self.state, s, k)).collect()
+    }
+
+    /// How many planes clip: the view volume's six and the enabled clip planes.
+    fn planes(&self) -> usize {
+        6 + self.state.clip_planes.len()
     }
 
     fn point(&mut self, s: Stage, front: bool) {
@@ -183,24 +191,11 @@ impl Reporter<'_> {
         }
     }
 
-    /// A line clipped plane by plane (Liang–Barsky on the distances).
+    /// A line clipped plane by plane (Liang–Barsky on the distances, `clip::segment_by`).
     fn line(&mut self, a: Stage, b: Stage, front: bool, reset: bool) {
-        let (da, db) = (self.distances(&a), self.distances(&b));
-        let (mut t0, mut t1) = (0.0f32, 1.0f32);
-        for (&p, &q) in da.iter().zip(&db) {
-            if p < 0.0 && q < 0.0 {
-                return;
-            }
-            if p < 0.0 {
-                t0 = t0.max(p / (p - q));
-            } else if q < 0.0 {
-                t1 = t1.min(p / (p - q));
-            }
-        }
-        if t0 > t1 {
-            return;
-        }
-        let (a2, b2) = (if t0 > 0.0 { a.lerp(b, t0) } else { a }, if t1 < 1.0 { a.lerp(b, t1) } else { b });
+        let state = self.state;
+        let planes = (0..self.planes()).map(|k| move |s: &Stage| plane_distance(state, s, k));
+        let Some((a2, b2)) = segment_by(a, b, planes) else { return };
         let (va, vb) = (self.vertex(&a2, front), self.vertex(&b2, front));
         self.out.push(FeedbackPrimitive::Line(va, vb, reset));
     }
@@ -269,12 +264,12 @@ impl Reporter<'_> {
     /// Sutherland–Hodgman against each plane a vertex is outside of, keeping the first vertex
     /// first and each vertex's outgoing edge flag, as Mesa's `do_clip_tri` does.
     fn clip_polygon(&self, mut list: Vec<Stage>, mut edges: Vec<bool>) -> (Vec<Stage>, Vec<bool>) {
-        let planes = 6 + self.state.clip_planes.len();
+        let planes = self.planes();
         for plane in 0..planes {
             if list.len() < 3 {
                 break;
             }
-            let d: Vec<f32> = list.iter().map(|s| self.distances(s)[plane]).collect();
+            let d: Vec<f32> = list.iter().map(|s| plane_distance(self.state, s, plane)).collect();
             if d.iter().all(|x| *x >= 0.0) {
                 continue;
             }
@@ -302,6 +297,21 @@ impl Reporter<'_> {
             (list, edges) = (out, out_edges);
         }
         (list, edges)
+    }
+}
+
+/// The signed distance of a vertex to plane `k`: the view volume's six first (Mesa's order:
+/// x, −x, y, −y, z, −z as w ∓ …), then the enabled clip planes.
+fn plane_distance(state: &DrawState, s: &Stage, k: usize) -> f32 {
+    let c = s.clip;
+    match k {
+        0 => c.w - c.x,
+        1 => c.w + c.x,
+        2 => c.w - c.y,
+        3 => c.w + c.y,
+        4 => c.w + c.z,
+        5 => c.w - c.z,
+        _ => Vec4::from_array(state.clip_planes[k - 6]).dot(s.eye),
     }
 }
 

@@ -12,7 +12,7 @@ mod attrib;
 mod binding;
 mod bitmap;
 mod client_memory;
-mod clip;
+pub(crate) mod clip;
 mod color_index;
 mod color_material;
 pub mod consts;

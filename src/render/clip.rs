@@ -1,17 +1,12 @@
 //! Clipping by the user's clip planes (GL 1.1 spec §2.11): a point is kept whole or not at all,
 //! a line is cut where it crosses a plane, a polygon is cut into the polygon inside every plane
 //! (Sutherland–Hodgman), its attributes interpolated at the cuts. The view volume is left to
-//! the rasteriser (the GPU's, or `soft::clip` with this file's [`segment_by`] and
-//! [`polygon_by`]), except where stippling needs a line's drawn length (`view_volume`).
+//! the rasteriser (the GPU's, or `soft::clip`), except where stippling needs a line's drawn
+//! length (`view_volume`). The clippers themselves are `gl::clip`'s, which feedback shares.
 
 use super::corner::Corner;
+use crate::gl::clip::{polygon_by, segment_by, Mix};
 use glam::Vec4;
-
-/// A vertex whose attributes are mixed linearly where a plane cuts an edge.
-pub(crate) trait Mix: Copy {
-    /// The vertex a share `t` of the way to `other`.
-    fn mix(self, other: Self, t: f32) -> Self;
-}
 
 impl Mix for Corner {
     fn mix(self, other: Self, t: f32) -> Self {
@@ -42,51 +37,12 @@ pub(crate) fn view_volume(a: Corner, b: Corner) -> Option<(Corner, Corner)> {
     segment_by(a, b, planes)
 }
 
-/// Cuts the segment by each distance function (inside where ≥ 0), both ends at once
-/// (Liang–Barsky's parameter interval on [0, 1]).
-pub(crate) fn segment_by<V: Mix, F: Fn(&V) -> f32>(
-    a: V,
-    b: V,
-    distances: impl IntoIterator<Item = F>,
-) -> Option<(V, V)> {
-    let (mut t0, mut t1) = (0.0f32, 1.0f32);
-    for d in distances {
-        let (da, db) = (d(&a), d(&b));
-        if da < 0.0 && db < 0.0 {
-            return None;
-        }
-        if da < 0.0 {
-            t0 = t0.max(da / (da - db));
-        } else if db < 0.0 {
-            t1 = t1.min(da / (da - db));
-        }
-    }
-    (t0 <= t1).then(|| (a.mix(b, t0), a.mix(b, t1)))
-}
-
 /// The polygon inside every plane (empty or fewer than three corners when nothing is left).
 pub(crate) fn polygon(corners: Vec<Corner>, planes: &[[f32; 4]]) -> Vec<Corner> {
     planes.iter().fold(corners, |poly, p| {
         let plane = Vec4::from_array(*p);
         polygon_by(&poly, |c: &Corner| plane.dot(c.eye))
     })
-}
-
-/// One Sutherland–Hodgman step: the vertices inside (`distance` ≥ 0), and a new vertex where
-/// an edge crosses.
-pub(crate) fn polygon_by<V: Mix>(poly: &[V], distance: impl Fn(&V) -> f32) -> Vec<V> {
-    let mut out = Vec::with_capacity(poly.len() + 1);
-    for (k, &c) in poly.iter().enumerate() {
-        let next = poly[(k + 1) % poly.len()];
-        let (dc, dn) = (distance(&c), distance(&next));
-        if dc >= 0.0 {
-            out.push(c);
-        }
-        if (dc >= 0.0) != (dn >= 0.0) {
-            out.push(c.mix(next, dc / (dc - dn)));
-        }
-    }
-    out
 }
 
 #[cfg(test)]

@@ -3,7 +3,7 @@
 //! attribute of a [`RasterVertex`] is linear in clip space, so a new vertex on a plane is a
 //! plain linear mix of the two it lies between.
 
-use crate::render::clip::{polygon_by, segment_by, Mix};
+use crate::gl::clip::{polygon_by, segment_by, Mix};
 use crate::render::RasterVertex;
 
 /// The six planes as distance functions (inside where ≥ 0).
