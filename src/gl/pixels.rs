@@ -3,6 +3,7 @@
 //! imply (row length, skipped rows and pixels, row alignment).
 
 use super::consts::*;
+use super::get::{put_flag, row, Kind, StateVar};
 use super::types::*;
 use super::Gl;
 
@@ -177,6 +178,25 @@ impl Gl {
     }
 }
 
+/// The pixel store's `glGet` rows (GL 1.1 table 6.14), the same six for each direction.
+macro_rules! pixel_store_rows {
+    ($($dir:ident: $swap:ident $lsb:ident $length:ident $rows:ident $pixels:ident $alignment:ident;)*) => {
+        pub(crate) static GET_ROWS: &[StateVar] = &[$(
+            row($swap, 1, Kind::Bool, |gl, o| put_flag(o, gl.client.pixel_stores.$dir.swap_bytes)),
+            row($lsb, 1, Kind::Bool, |gl, o| put_flag(o, gl.client.pixel_stores.$dir.lsb_first)),
+            row($length, 1, Kind::Int, |gl, o| o[0] = gl.client.pixel_stores.$dir.row_length as f64),
+            row($rows, 1, Kind::Int, |gl, o| o[0] = gl.client.pixel_stores.$dir.skip_rows as f64),
+            row($pixels, 1, Kind::Int, |gl, o| o[0] = gl.client.pixel_stores.$dir.skip_pixels as f64),
+            row($alignment, 1, Kind::Int, |gl, o| o[0] = gl.client.pixel_stores.$dir.alignment as f64),
+        )*];
+    };
+}
+
+pixel_store_rows! {
+    unpack: GL_UNPACK_SWAP_BYTES GL_UNPACK_LSB_FIRST GL_UNPACK_ROW_LENGTH GL_UNPACK_SKIP_ROWS GL_UNPACK_SKIP_PIXELS GL_UNPACK_ALIGNMENT;
+    pack: GL_PACK_SWAP_BYTES GL_PACK_LSB_FIRST GL_PACK_ROW_LENGTH GL_PACK_SKIP_ROWS GL_PACK_SKIP_PIXELS GL_PACK_ALIGNMENT;
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -236,5 +256,38 @@ mod tests {
         assert_eq!(gl.get_error(), GL_NO_ERROR);
         assert_eq!(gl.unpack_store().alignment, 1);
         assert_eq!(gl.client.pixel_stores.pack.alignment, 8);
+    }
+
+    #[test]
+    fn each_store_reads_back_through_its_own_row() {
+        let mut gl = Gl::new(4, 4);
+        let names = [
+            GL_UNPACK_SWAP_BYTES,
+            GL_UNPACK_LSB_FIRST,
+            GL_UNPACK_ROW_LENGTH,
+            GL_UNPACK_SKIP_ROWS,
+            GL_UNPACK_SKIP_PIXELS,
+            GL_UNPACK_ALIGNMENT,
+            GL_PACK_SWAP_BYTES,
+            GL_PACK_LSB_FIRST,
+            GL_PACK_ROW_LENGTH,
+            GL_PACK_SKIP_ROWS,
+            GL_PACK_SKIP_PIXELS,
+            GL_PACK_ALIGNMENT,
+        ];
+        // Flags true; the others distinct (alignments 2 and 8 of the allowed 1, 2, 4, 8).
+        let values = [1, 1, 3, 4, 5, 2, 1, 1, 6, 7, 9, 8];
+        for (&name, &value) in names.iter().zip(&values) {
+            gl.pixel_storei(name, value);
+        }
+        let read: Vec<GLint> = names
+            .iter()
+            .map(|&name| {
+                let mut v = [0];
+                gl.get_integerv(name, &mut v);
+                v[0]
+            })
+            .collect();
+        assert_eq!((read, gl.get_error()), (values.to_vec(), GL_NO_ERROR));
     }
 }

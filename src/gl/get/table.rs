@@ -85,11 +85,12 @@ fn matrix(o: &mut [f64], m: glam::Mat4) {
 /// Every row: this file's, then those of the modules that keep their state's fields.
 pub(crate) fn rows() -> impl Iterator<Item = &'static StateVar> {
     use super::super::{
-        arrays, color_index, depth, eval, fragments, hint, lists, pixel_transfer, raster_pos, select, texture,
+        arrays, color_index, depth, eval, fragments, hint, lists, pixel_transfer, pixels, raster_pos, select, texture,
     };
     [
         STATE,
         raster_pos::GET_ROWS,
+        pixels::GET_ROWS,
         depth::GET_ROWS,
         arrays::GET_ROWS,
         texture::GET_ROWS,
@@ -178,19 +179,6 @@ pub(crate) static STATE: &[StateVar] = &[
     row(GL_BLEND_DST, 1, Int, |gl, o| put_enum(o, gl.server.fragment_ops.blend[1])),
     // Table 6.13: framebuffer control.
     row(GL_COLOR_CLEAR_VALUE, 4, Normalized, |gl, o| put(o, &gl.server.raster.clear_color)),
-    // Table 6.14: pixels.
-    row(GL_UNPACK_SWAP_BYTES, 1, Bool, |gl, o| put_flag(o, gl.client.pixel_stores.unpack.swap_bytes)),
-    row(GL_UNPACK_LSB_FIRST, 1, Bool, |gl, o| put_flag(o, gl.client.pixel_stores.unpack.lsb_first)),
-    row(GL_UNPACK_ROW_LENGTH, 1, Int, |gl, o| o[0] = gl.client.pixel_stores.unpack.row_length as f64),
-    row(GL_UNPACK_SKIP_ROWS, 1, Int, |gl, o| o[0] = gl.client.pixel_stores.unpack.skip_rows as f64),
-    row(GL_UNPACK_SKIP_PIXELS, 1, Int, |gl, o| o[0] = gl.client.pixel_stores.unpack.skip_pixels as f64),
-    row(GL_UNPACK_ALIGNMENT, 1, Int, |gl, o| o[0] = gl.client.pixel_stores.unpack.alignment as f64),
-    row(GL_PACK_SWAP_BYTES, 1, Bool, |gl, o| put_flag(o, gl.client.pixel_stores.pack.swap_bytes)),
-    row(GL_PACK_LSB_FIRST, 1, Bool, |gl, o| put_flag(o, gl.client.pixel_stores.pack.lsb_first)),
-    row(GL_PACK_ROW_LENGTH, 1, Int, |gl, o| o[0] = gl.client.pixel_stores.pack.row_length as f64),
-    row(GL_PACK_SKIP_ROWS, 1, Int, |gl, o| o[0] = gl.client.pixel_stores.pack.skip_rows as f64),
-    row(GL_PACK_SKIP_PIXELS, 1, Int, |gl, o| o[0] = gl.client.pixel_stores.pack.skip_pixels as f64),
-    row(GL_PACK_ALIGNMENT, 1, Int, |gl, o| o[0] = gl.client.pixel_stores.pack.alignment as f64),
     // Tables 6.17–6.19: implementation limits and the framebuffer's configuration (llvmpipe's).
     int_limit!(GL_MAX_LIGHTS, 8),
     int_limit!(GL_MAX_CLIP_PLANES, super::super::clip::MAX_CLIP_PLANES),
