@@ -700,4 +700,23 @@ mod tests {
         assert_eq!(gl.glut_get(GLUT_DIRECT_RENDERING), GLUT_TRY_DIRECT_CONTEXT);
         assert_eq!(gl.get_error(), crate::gl::consts::GL_INVALID_ENUM);
     }
+
+    #[test]
+    fn the_program_state_exists_once_for_every_window() {
+        // Window 2's init makes a program-wide setting; window 1's display, which runs later,
+        // reads it from its own context, which holds the same state.
+        let seen = Rc::new(RefCell::new(Vec::new()));
+        let log = seen.clone();
+        let second = App::new("two", 20, 20)
+            .init(|gl| gl.glut_set_option(GLUT_ACTION_ON_WINDOW_CLOSE, GLUT_ACTION_CONTINUE_EXECUTION));
+        let mut app = App::new("one", 20, 20)
+            .display(move |gl| log.borrow_mut().push(gl.glut_get(GLUT_ACTION_ON_WINDOW_CLOSE)))
+            .window(second);
+        let mut program = program::Program::new(std::mem::replace(&mut app, App::new("", 1, 1)));
+        let (a, b) = (&program.slots[0].gl.glut.program, &program.slots[1].gl.glut.program);
+        assert!(Rc::ptr_eq(a, b));
+        program.run_headless(1);
+        assert_eq!(*seen.borrow(), [GLUT_ACTION_CONTINUE_EXECUTION]);
+        assert_eq!(program.options().action_on_close, GLUT_ACTION_CONTINUE_EXECUTION);
+    }
 }

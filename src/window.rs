@@ -399,7 +399,7 @@ impl WindowState {
             let Some(top) = self.pointer_in.and_then(|w| self.windows.get(&w)).map(|on| on.id) else { return };
             let (k, _, _) = self.hit(top, self.cursor);
             let ignore = self.program.slots[k].facts.ignore_key_repeat;
-            if ignore || self.program.options.key_repeat == GLUT_KEY_REPEAT_OFF {
+            if ignore || self.program.options().key_repeat == GLUT_KEY_REPEAT_OFF {
                 return;
             }
             self.key_callbacks(event_loop, event, false);

@@ -6,10 +6,11 @@
 use super::App;
 use crate::gl::Gl;
 use crate::glut::consts::*;
-use crate::glut::messages::Messages;
 use crate::glut::options::GlutOptions;
+use crate::glut::state::SharedProgram;
 use crate::glut::windows::{WindowFacts, WindowRequest};
 use crate::glut::Schedule;
+use std::rc::Rc;
 
 /// The virtual refresh period of headless runs: a 60 Hz display.
 const HEADLESS_FRAME_MS: f64 = 1000.0 / 60.0;
@@ -38,9 +39,9 @@ pub(crate) struct Slot {
 /// The windows of a running program.
 pub(crate) struct Program {
     pub slots: Vec<Slot>,
-    /// The window GLUT calls go to (`glutSetWindow`; the last window whose callback ran).
-    pub current: i32,
-    pub options: GlutOptions,
+    /// GLUT's program-wide state, the one every window's context holds: the settings, the
+    /// message handlers, the window table, the current window, the clock and the screen.
+    glut: SharedProgram,
     pub schedule: Schedule,
     /// The loop ends: `glutLeaveMainLoop`, or the last window closed.
     pub leave: bool,
@@ -49,9 +50,6 @@ pub(crate) struct Program {
     pub effects: Vec<(i32, WindowRequest)>,
     /// Milliseconds since the loop started (`GLUT_ELAPSED_TIME`; headless, virtual).
     pub now_ms: f64,
-    pub screen: (i32, i32),
-    /// The program's handlers of freeglut's messages.
-    messages: Messages,
 }
 
 impl Program {
@@ -67,7 +65,6 @@ impl Program {
             let mut gl = app.context.take().unwrap_or_else(|| Box::new(app.new_gl()));
             gl.set_tessellator(tessellator);
             gl.glut.window = id;
-            gl.glut.current = id;
             let (x, y) = app.position.unwrap_or((0, 0));
             let facts = WindowFacts {
                 id,
@@ -82,21 +79,20 @@ impl Program {
             };
             slots.push(Slot { facts, app, gl, redisplay: true, reshape: None, z: id, iconic: false });
         }
-        let options = slots.first().map(|s| s.gl.glut.options).unwrap_or_default();
-        let messages = slots.first().map(|s| s.gl.glut.messages.clone()).unwrap_or_default();
-        let mut program = Self {
-            slots,
-            current: 1,
-            options,
-            schedule,
-            leave: false,
-            effects: Vec::new(),
-            now_ms: 0.0,
-            screen,
-            messages,
-        };
+        // One program: the first window's (the C ABI's windows share it already; a Rust
+        // program's windows made apart take the first's settings).
+        let glut: SharedProgram = slots.first().map(|s| Rc::clone(&s.gl.glut.program)).unwrap_or_default();
+        for slot in &mut slots {
+            slot.gl.glut.program = Rc::clone(&glut);
+        }
+        {
+            let mut p = glut.borrow_mut();
+            (p.current, p.screen) = (1, screen);
+        }
+        let mut program = Self { slots, glut, schedule, leave: false, effects: Vec::new(), now_ms: 0.0 };
+        let iconic = program.options().iconic;
         for slot in &mut program.slots {
-            slot.iconic = program.options.iconic && slot.facts.parent == 0;
+            slot.iconic = iconic && slot.facts.parent == 0;
             slot.facts.shown = !slot.iconic;
         }
         program.refresh();
@@ -108,7 +104,7 @@ impl Program {
         self.slots.iter().position(|s| s.facts.id == id)
     }
 
-    /// Every context's copy of the window table and the settings, as they are now.
+    /// The program's window table and clock as they are now, for `glutGet` in every window.
     pub fn refresh(&mut self) {
         let mut facts: Vec<WindowFacts> = self.slots.iter().map(|s| s.facts).collect();
         for f in &mut facts {
@@ -116,20 +112,29 @@ impl Program {
         }
         for slot in &mut self.slots {
             slot.facts.children = facts.iter().find(|f| f.id == slot.facts.id).map_or(0, |f| f.children);
-            let glut = &mut slot.gl.glut;
-            glut.windows.clone_from(&facts);
-            glut.options = self.options;
-            glut.current = self.current;
-            glut.elapsed_ms = self.now_ms as i32;
-            glut.screen = self.screen;
-            glut.messages.clone_from(&self.messages);
         }
+        let mut p = self.glut.borrow_mut();
+        p.windows = facts;
+        p.elapsed_ms = self.now_ms as i32;
+    }
+
+    /// The window GLUT calls go to (`glutSetWindow`; the last window whose callback ran).
+    pub fn current(&self) -> i32 {
+        self.glut.borrow().current
+    }
+
+    fn set_current(&self, id: i32) {
+        self.glut.borrow_mut().current = id;
+    }
+
+    /// The program-wide settings.
+    pub fn options(&self) -> GlutOptions {
+        self.glut.borrow().options
     }
 
     /// Runs a callback of window `k` with that window current, then carries out what it asked.
     pub fn callback<R>(&mut self, k: usize, run: impl FnOnce(&mut App, &mut Gl) -> R) -> R {
-        self.current = self.slots[k].facts.id;
-        self.slots[k].gl.glut.current = self.current;
+        self.set_current(self.slots[k].facts.id);
         let slot = &mut self.slots[k];
         let result = run(&mut slot.app, &mut slot.gl);
         self.absorb(k);
@@ -138,7 +143,7 @@ impl Program {
 
     /// Runs the program-wide callbacks (idle, timers) with the current window's context.
     pub fn run_global(&mut self, run: impl FnOnce(&mut Schedule, &mut Gl, f64) -> bool) -> bool {
-        let Some(k) = self.index(self.current).or(if self.slots.is_empty() { None } else { Some(0) }) else {
+        let Some(k) = self.index(self.current()).or(if self.slots.is_empty() { None } else { Some(0) }) else {
             return false;
         };
         let now = self.now_ms;
@@ -147,13 +152,11 @@ impl Program {
         ran
     }
 
-    /// What the callback that just ran in window `k` changed: the settings, the current window,
-    /// the idle callback and timers, and the requests every context holds.
+    /// What the callback that just ran in window `k` changed: the idle callback and timers,
+    /// and the requests every context holds (the settings and the current window are the
+    /// program's already).
     fn absorb(&mut self, k: usize) {
         if let Some(slot) = self.slots.get_mut(k) {
-            self.options = slot.gl.glut.options;
-            self.messages.clone_from(&slot.gl.glut.messages);
-            self.current = slot.gl.glut.current;
             self.leave |= std::mem::take(&mut slot.gl.glut.leave_main_loop);
             self.schedule.absorb(&mut slot.gl, self.now_ms);
         }
@@ -236,8 +239,8 @@ impl Program {
             self.slots.remove(k);
             self.effects.push((id, WindowRequest::Destroy));
         }
-        if self.current == id {
-            self.current = 0;
+        if self.current() == id {
+            self.set_current(0);
         }
         if !self.slots.iter().any(|s| s.facts.parent == 0) {
             self.leave = true;
@@ -250,7 +253,7 @@ impl Program {
     /// then ends the program (true), `..._GLUTMAINLOOP_RETURNS` ends the loop.
     pub fn close_by_user(&mut self, id: i32) -> bool {
         self.destroy(id);
-        match self.options.action_on_close {
+        match self.options().action_on_close {
             GLUT_ACTION_EXIT => true,
             GLUT_ACTION_GLUTMAINLOOP_RETURNS => {
                 self.leave = true;
@@ -267,7 +270,7 @@ impl Program {
         while let Some(top) = self.slots.iter().find(|s| s.facts.parent == 0).map(|s| s.facts.id) {
             self.destroy(top);
         }
-        self.options.action_on_close == GLUT_ACTION_EXIT
+        self.options().action_on_close == GLUT_ACTION_EXIT
     }
 
     /// The first frame of every window, in the order freeglut 3.4's first pass through its
@@ -388,9 +391,10 @@ impl Program {
 
 impl App {
     /// Before the main loop (the C ABI, between `glutCreateWindow` and `glutMainLoop`): every
-    /// window gets its context if it has none, and every context learns the program's windows,
-    /// that `current` is the current window, and the settings of `current`'s context, so that
-    /// `glutGet`, `glutSetWindow` and the settings answer as they will in the loop.
+    /// window gets its context if it has none, and every context holds the program's state
+    /// (`current`'s), which learns the program's windows and that `current` is the current
+    /// window, so that `glutGet`, `glutSetWindow` and the settings answer as they will in the
+    /// loop.
     pub fn sync_contexts(&mut self, current: i32) {
         let mut facts = Vec::new();
         let count = self.extra.len() as i32 + 1;
@@ -418,18 +422,13 @@ impl App {
         for f in &mut facts {
             f.children = (2..=count).filter(|&c| self.extra[c as usize - 2].0 == f.id).count() as i32;
         }
-        let options = self.window_mut(current).map(|w| {
-            let glut = &w.context_mut().glut;
-            (glut.options, glut.messages.clone())
-        });
+        // One program for them all: `current`'s (the C ABI's windows share one already).
+        let Some(program) = self.window_mut(current).map(|w| Rc::clone(&w.context_mut().glut.program)) else { return };
         for id in 1..=count {
             let gl = self.window_mut(id).expect("numbered above").context_mut();
-            gl.glut.windows.clone_from(&facts);
-            gl.glut.current = current;
-            if let Some((options, messages)) = &options {
-                gl.glut.options = *options;
-                gl.glut.messages.clone_from(messages);
-            }
+            gl.glut.program = Rc::clone(&program);
         }
+        let mut p = program.borrow_mut();
+        (p.windows, p.current) = (facts, current);
     }
 }

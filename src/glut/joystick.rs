@@ -46,8 +46,9 @@ impl Joystick {
 }
 
 impl Gl {
-    fn joystick(&mut self, ident: i32) -> Option<&mut Joystick> {
-        self.glut.options.joysticks.get_mut(usize::try_from(ident).ok()?)
+    fn joystick(&mut self, ident: i32) -> Option<std::cell::RefMut<'_, Joystick>> {
+        let k = usize::try_from(ident).ok()?;
+        std::cell::RefMut::filter_map(self.glut.program_mut(), |p| p.options.joysticks.get_mut(k)).ok()
     }
 
     /// `glutJoystickGetNumAxes(ident)`: 2 (0 for an identifier beyond the two).
@@ -82,7 +83,7 @@ impl Gl {
     /// `glutJoystickSetDeadBand(ident, axis, value)`.
     pub fn glut_joystick_set_dead_band(&mut self, ident: i32, axis: i32, value: f32) {
         let axis = usize::try_from(axis).unwrap_or(AXES);
-        if let Some(slot) = self.joystick(ident).and_then(|j| j.dead_band.get_mut(axis)) {
+        if let Some(slot) = self.joystick(ident).as_mut().and_then(|j| j.dead_band.get_mut(axis)) {
             *slot = value;
         }
     }
@@ -96,7 +97,7 @@ impl Gl {
     /// `glutJoystickSetSaturation(ident, axis, value)`.
     pub fn glut_joystick_set_saturation(&mut self, ident: i32, axis: i32, value: f32) {
         let axis = usize::try_from(axis).unwrap_or(AXES);
-        if let Some(slot) = self.joystick(ident).and_then(|j| j.saturation.get_mut(axis)) {
+        if let Some(slot) = self.joystick(ident).as_mut().and_then(|j| j.saturation.get_mut(axis)) {
             *slot = value;
         }
     }
@@ -104,7 +105,7 @@ impl Gl {
     /// `glutJoystickGetMinRange`/`MaxRange`/`Center(ident, axes)`: the range's value of each
     /// axis into `axes` (as many as both have).
     pub fn glut_joystick_get_range(&mut self, ident: i32, which: JoystickRange, axes: &mut [f32]) {
-        if let Some(j) = self.joystick(ident) {
+        if let Some(mut j) = self.joystick(ident) {
             for (out, value) in axes.iter_mut().zip(j.range(which).iter()) {
                 *out = *value;
             }
@@ -114,7 +115,7 @@ impl Gl {
     /// `glutJoystickSetMinRange`/`MaxRange`/`Center(ident, axes)`: the range's value of each
     /// axis from `axes`.
     pub fn glut_joystick_set_range(&mut self, ident: i32, which: JoystickRange, axes: &[f32]) {
-        if let Some(j) = self.joystick(ident) {
+        if let Some(mut j) = self.joystick(ident) {
             for (slot, value) in j.range(which).iter_mut().zip(axes) {
                 *slot = *value;
             }

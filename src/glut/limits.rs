@@ -69,7 +69,7 @@ pub fn display_mode_from_string(s: &str) -> (u32, Vec<String>) {
 impl Gl {
     /// `glutGameModeString(s)`: the mode `glutGameModeGet` reads back.
     pub fn glut_game_mode_string(&mut self, s: &str) {
-        self.glut.options.game_mode = parse_game_mode(s);
+        self.glut.program_mut().options.game_mode = parse_game_mode(s);
     }
 
     /// `glutEnterGameMode`: the screen's mode cannot change (freeglut on a server without
@@ -86,7 +86,7 @@ impl Gl {
     /// height, depth and rate `glutGameModeString` gave (-1 before); -1 for other names.
     #[must_use]
     pub fn glut_game_mode_get(&self, what: GLenum) -> i32 {
-        let mode = self.glut.options.game_mode;
+        let mode = self.glut.program().options.game_mode;
         match what {
             GLUT_GAME_MODE_ACTIVE | GLUT_GAME_MODE_POSSIBLE | GLUT_GAME_MODE_DISPLAY_CHANGED => 0,
             GLUT_GAME_MODE_WIDTH => mode[0],
@@ -150,15 +150,15 @@ impl Gl {
     /// `glutSetVertexAttribCoord3(attrib)` (freeglut, for shaders of GL 2+): recorded; gleval's
     /// shapes feed GL 1.1's fixed pipeline, which has no generic attributes.
     pub fn glut_set_vertex_attrib_coord3(&mut self, attrib: i32) {
-        self.glut.options.vertex_attribs[0] = attrib;
+        self.glut.program_mut().options.vertex_attribs[0] = attrib;
     }
     /// `glutSetVertexAttribNormal(attrib)`: recorded, as [`Gl::glut_set_vertex_attrib_coord3`].
     pub fn glut_set_vertex_attrib_normal(&mut self, attrib: i32) {
-        self.glut.options.vertex_attribs[1] = attrib;
+        self.glut.program_mut().options.vertex_attribs[1] = attrib;
     }
     /// `glutSetVertexAttribTexCoord2(attrib)`: recorded, as [`Gl::glut_set_vertex_attrib_coord3`].
     pub fn glut_set_vertex_attrib_tex_coord2(&mut self, attrib: i32) {
-        self.glut.options.vertex_attribs[2] = attrib;
+        self.glut.program_mut().options.vertex_attribs[2] = attrib;
     }
 }
 

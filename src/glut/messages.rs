@@ -25,7 +25,9 @@ impl Gl {
     /// A freeglut warning: to the program's warning handler, or to stderr as freeglut prints
     /// it (`freeglut (PROGRAM): MESSAGE`).
     pub fn glut_warning(&self, message: &str) {
-        match &self.glut.messages.warning {
+        // The handler runs with the program's state free: it may call GLUT.
+        let handler = self.glut.program().messages.warning.clone();
+        match handler {
             Some(handler) => handler(message),
             None => eprintln!("freeglut ({}): {message}", program_name()),
         }
@@ -33,13 +35,13 @@ impl Gl {
 
     /// `glutInitWarningFunc`: `Some(f)` receives freeglut's warnings instead of stderr.
     pub fn glut_init_warning_func(&mut self, handler: Option<MessageFn>) {
-        self.glut.messages.warning = handler;
+        self.glut.program_mut().messages.warning = handler;
     }
 
     /// `glutInitErrorFunc`: `Some(f)` receives freeglut's error messages instead of stderr
     /// (gleval's errors are the calls it ignores with a complaint, so the program goes on).
     pub fn glut_init_error_func(&mut self, handler: Option<MessageFn>) {
-        self.glut.messages.error = handler;
+        self.glut.program_mut().messages.error = handler;
     }
 
     /// `glutReportErrors`: every GL error set, each as freeglut reports it

@@ -114,7 +114,7 @@ impl Gl {
     /// The screen's size in pixels that `glutGet(GLUT_SCREEN_WIDTH)` and `GLUT_SCREEN_HEIGHT`
     /// answer (`App::screen_size` sets it for every window of a program).
     pub fn glut_set_screen_size(&mut self, width: i32, height: i32) {
-        self.glut.screen = (width, height);
+        self.glut.program_mut().screen = (width, height);
     }
 
     /// `glutGet`: every name freeglut 3.4 answers on X11. The current window's size, position,
@@ -126,13 +126,14 @@ impl Gl {
     /// for; `GLUT_VERSION` (30400). Other names give -1, as freeglut answers them.
     #[must_use]
     pub fn glut_get(&self, what: GLenum) -> i32 {
-        if let Some(answer) = self.window_query(what).or_else(|| self.glut.options.get(what)) {
+        if let Some(answer) = self.window_query(what).or_else(|| self.glut.program().options.get(what)) {
             return answer;
         }
         let glut = &self.glut;
         let mode = glut.display_mode;
         let bits = |bit: u32, size: i32| if mode & bit != 0 { size } else { 0 };
-        let screen = if glut.screen.0 > 0 { glut.screen } else { (self.width(), self.height()) };
+        let program = glut.program();
+        let screen = if program.screen.0 > 0 { program.screen } else { (self.width(), self.height()) };
         match what {
             GLUT_SCREEN_WIDTH => screen.0,
             GLUT_SCREEN_HEIGHT => screen.1,
@@ -160,7 +161,7 @@ impl Gl {
             | GLUT_WINDOW_FORMAT_ID
             | GLUT_WINDOW_BORDER_WIDTH
             | GLUT_WINDOW_HEADER_HEIGHT => 0,
-            GLUT_ELAPSED_TIME => glut.elapsed_ms,
+            GLUT_ELAPSED_TIME => program.elapsed_ms,
             GLUT_MENU_NUM_ITEMS => self.glut_menu_num_items(),
             _ => -1,
         }

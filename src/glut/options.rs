@@ -116,21 +116,29 @@ impl Gl {
     /// `glutSetOption(what, value)` (freeglut): the settings `glutGet` reads back. Other names
     /// are freeglut's "unknown option" warning.
     pub fn glut_set_option(&mut self, what: GLenum, value: i32) {
-        let o = &mut self.glut.options;
         match what {
-            GLUT_ACTION_ON_WINDOW_CLOSE => o.action_on_close = value,
-            GLUT_RENDERING_CONTEXT => o.rendering_context = value,
-            GLUT_DIRECT_RENDERING => o.direct_rendering = value,
-            GLUT_SKIP_STALE_MOTION_EVENTS => o.skip_stale_motion = value,
-            GLUT_GEOMETRY_VISUALIZE_NORMALS => o.visualize_normals = value,
-            GLUT_STROKE_FONT_DRAW_JOIN_DOTS => o.stroke_join_dots = value,
-            GLUT_ALLOW_NEGATIVE_WINDOW_POSITION => o.allow_negative_position = value,
-            GLUT_INIT_WINDOW_X => o.init_position.0 = value,
-            GLUT_INIT_WINDOW_Y => o.init_position.1 = value,
             GLUT_INIT_WINDOW_WIDTH => self.glut.init_size.0 = value,
             GLUT_INIT_WINDOW_HEIGHT => self.glut.init_size.1 = value,
             GLUT_INIT_DISPLAY_MODE => self.glut.display_mode = value as u32,
-            _ => self.glut_warning(&format!("glutSetOption(): missing enum handle {what}")),
+            _ => {
+                let mut program = self.glut.program_mut();
+                let o = &mut program.options;
+                match what {
+                    GLUT_ACTION_ON_WINDOW_CLOSE => o.action_on_close = value,
+                    GLUT_RENDERING_CONTEXT => o.rendering_context = value,
+                    GLUT_DIRECT_RENDERING => o.direct_rendering = value,
+                    GLUT_SKIP_STALE_MOTION_EVENTS => o.skip_stale_motion = value,
+                    GLUT_GEOMETRY_VISUALIZE_NORMALS => o.visualize_normals = value,
+                    GLUT_STROKE_FONT_DRAW_JOIN_DOTS => o.stroke_join_dots = value,
+                    GLUT_ALLOW_NEGATIVE_WINDOW_POSITION => o.allow_negative_position = value,
+                    GLUT_INIT_WINDOW_X => o.init_position.0 = value,
+                    GLUT_INIT_WINDOW_Y => o.init_position.1 = value,
+                    _ => {
+                        drop(program);
+                        self.glut_warning(&format!("glutSetOption(): missing enum handle {what}"));
+                    }
+                }
+            }
         }
     }
 
@@ -138,7 +146,9 @@ impl Gl {
     /// every window; `_ON` and `_DEFAULT` keep them (freeglut: program-wide).
     pub fn glut_set_key_repeat(&mut self, mode: i32) {
         match mode {
-            GLUT_KEY_REPEAT_OFF | GLUT_KEY_REPEAT_ON | GLUT_KEY_REPEAT_DEFAULT => self.glut.options.key_repeat = mode,
+            GLUT_KEY_REPEAT_OFF | GLUT_KEY_REPEAT_ON | GLUT_KEY_REPEAT_DEFAULT => {
+                self.glut.program_mut().options.key_repeat = mode
+            }
             _ => self.glut_warning(&format!("glutSetKeyRepeat(): invalid glutSetKeyRepeat mode: {mode}")),
         }
     }
@@ -147,12 +157,12 @@ impl Gl {
     /// GL 1.1 with everything later that it has, and runs a program asking for any version
     /// of the compatibility profile.
     pub fn glut_init_context_version(&mut self, major: i32, minor: i32) {
-        self.glut.options.context_version = (major, minor);
+        self.glut.program_mut().options.context_version = (major, minor);
     }
 
     /// `glutInitContextFlags(flags)` (`GLUT_DEBUG`, `GLUT_FORWARD_COMPATIBLE`): recorded.
     pub fn glut_init_context_flags(&mut self, flags: i32) {
-        self.glut.options.context_flags = flags;
+        self.glut.program_mut().options.context_flags = flags;
     }
 
     /// `glutInitContextProfile(profile)`: recorded; a core profile is not one gleval has, and
@@ -161,19 +171,19 @@ impl Gl {
         if profile == GLUT_CORE_PROFILE {
             eprintln!("gleval: a core profile was asked for; the context is GL 1.1 (compatibility)");
         }
-        self.glut.options.context_profile = profile;
+        self.glut.program_mut().options.context_profile = profile;
     }
 
     /// GLUT's `-iconic`: top-level windows start iconified.
     pub fn glut_init_iconic(&mut self) {
-        self.glut.options.iconic = true;
+        self.glut.program_mut().options.iconic = true;
     }
 
-    /// Takes the program-wide settings and message handlers of `other` (a window made
-    /// before the main loop takes those set before it).
+    /// Joins the program of `other`: its settings and message handlers become this context's,
+    /// and stay shared (a window made before the main loop is one more window of the program
+    /// whose settings were made before it).
     pub fn glut_inherit_settings(&mut self, other: &Gl) {
-        self.glut.options = other.glut.options;
-        self.glut.messages.clone_from(&other.glut.messages);
+        self.glut.program = std::rc::Rc::clone(&other.glut.program);
     }
 
     /// `glutDeviceGet(what)`: the input devices, as freeglut on X11 answers them (no joystick,
@@ -181,7 +191,7 @@ impl Gl {
     #[must_use]
     pub fn glut_device_get(&self, what: GLenum) -> i32 {
         let ignore = self.current_window_facts().is_some_and(|f| f.ignore_key_repeat);
-        device_get(&self.glut.options, ignore, what)
+        device_get(&self.glut.program().options, ignore, what)
     }
 
     /// `glutLayerGet(what)`: X11 freeglut has no overlays: none possible, the normal plane in

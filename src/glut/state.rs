@@ -5,12 +5,48 @@ use super::messages::Messages;
 use super::options::GlutOptions;
 use super::windows::{WindowFacts, WindowRequest};
 use super::{IdleFn, TimerFn};
+use std::cell::{Ref, RefCell, RefMut};
+use std::rc::Rc;
 
 /// A timer asked for with `glutTimerFunc`: delay in ms, callback, value.
 pub(crate) type TimerRequest = (u32, TimerFn, i32);
 
+/// What GLUT keeps once for the whole program (freeglut's `fgState` and `fgStructure`): its
+/// settings and message handlers, its windows as the runner last saw them, the current window,
+/// the clock and the screen. Every window's context holds the same one (a context made on its
+/// own has its own), so a setting made in one window's callback is every window's at once.
+#[derive(Clone, Default)]
+pub(crate) struct ProgramState {
+    /// The program-wide settings (`glutSetOption`, `glutSetKeyRepeat`, the context asked for).
+    pub options: GlutOptions,
+    /// The program's handlers of freeglut's messages.
+    pub messages: Messages,
+    /// Every window of the program, as the runner last saw them.
+    pub windows: Vec<WindowFacts>,
+    /// `glutGetWindow`: the window later window calls act on (0: none).
+    pub current: i32,
+    /// `GLUT_ELAPSED_TIME`, set by the runner.
+    pub elapsed_ms: i32,
+    /// The screen's size in pixels, set by the runner (0: headless, the window's).
+    pub screen: (i32, i32),
+}
+
+impl ProgramState {
+    /// The window with this number, if it exists.
+    pub fn facts(&self, id: i32) -> Option<&WindowFacts> {
+        self.windows.iter().find(|w| w.id == id)
+    }
+
+    pub fn facts_mut(&mut self, id: i32) -> Option<&mut WindowFacts> {
+        self.windows.iter_mut().find(|w| w.id == id)
+    }
+}
+
+/// The program's state, shared by its windows' contexts.
+pub(crate) type SharedProgram = Rc<RefCell<ProgramState>>;
+
 /// GLUT's state inside a [`crate::gl::Gl`]: requests made by callbacks (taken by the runner
-/// after each callback) and the facts the runner sets before calling them.
+/// after each callback), and the program's state, which every window's context shares.
 #[derive(Default)]
 pub(crate) struct GlutState {
     /// `glutPostRedisplay` was called.
@@ -26,8 +62,6 @@ pub(crate) struct GlutState {
     /// `glutInitDisplayMode` and `glutInitWindowSize`, for `glutGet`.
     pub display_mode: u32,
     pub init_size: (i32, i32),
-    /// `GLUT_ELAPSED_TIME`, set by the runner.
-    pub elapsed_ms: i32,
     /// `glutIdleFunc`: `Some(new)` when a callback changed it.
     pub idle: Option<Option<IdleFn>>,
     /// `glutTimerFunc` calls not yet scheduled.
@@ -36,30 +70,33 @@ pub(crate) struct GlutState {
     pub menus: Menus,
     /// The window this context belongs to (0: none, a context of its own).
     pub window: i32,
-    /// `glutGetWindow`: the window later window calls act on (0: none).
-    pub current: i32,
-    /// Every window of the program, as the runner last saw them.
-    pub windows: Vec<WindowFacts>,
     /// What callbacks asked of windows, with the window each request is for.
     pub requests: Vec<(i32, WindowRequest)>,
-    /// The program-wide settings (`glutSetOption`, `glutSetKeyRepeat`, the context asked for).
-    pub options: GlutOptions,
-    /// The screen's size in pixels, set by the runner (0: headless, the window's).
-    pub screen: (i32, i32),
     /// `glutLeaveMainLoop` was called.
     pub leave_main_loop: bool,
-    /// The program's handlers of freeglut's messages.
-    pub messages: Messages,
+    /// The program's state (see [`ProgramState`]).
+    pub program: SharedProgram,
 }
 
 impl GlutState {
-    /// The window with this number, if it exists.
-    pub fn facts(&self, id: i32) -> Option<&WindowFacts> {
-        self.windows.iter().find(|w| w.id == id)
+    /// The program's state, to read. Never held across a callback of the program's.
+    pub fn program(&self) -> Ref<'_, ProgramState> {
+        self.program.borrow()
     }
 
-    pub fn facts_mut(&mut self, id: i32) -> Option<&mut WindowFacts> {
-        self.windows.iter_mut().find(|w| w.id == id)
+    /// The program's state, to change. Never held across a callback of the program's.
+    pub fn program_mut(&self) -> RefMut<'_, ProgramState> {
+        self.program.borrow_mut()
+    }
+
+    /// `glutGetWindow`.
+    pub fn current(&self) -> i32 {
+        self.program().current
+    }
+
+    /// The window with this number as the runner last saw it, if it exists.
+    pub fn facts(&self, id: i32) -> Option<WindowFacts> {
+        self.program().facts(id).copied()
     }
 }
 
@@ -72,14 +109,11 @@ impl std::fmt::Debug for GlutState {
             .field("reshape", &self.reshape)
             .field("full_screen", &self.full_screen)
             .field("display_mode", &self.display_mode)
-            .field("elapsed_ms", &self.elapsed_ms)
             .field("idle_changed", &self.idle.is_some())
             .field("timers", &self.timers.len())
             .field("menus", &self.menus)
-            .field("current", &self.current)
-            .field("windows", &self.windows)
             .field("requests", &self.requests)
-            .field("options", &self.options)
+            .field("options", &self.program().options)
             .finish()
     }
 }

@@ -65,27 +65,28 @@ impl Gl {
     /// `glutGetWindow`: the current window's number (0 when there is none).
     #[must_use]
     pub fn glut_get_window(&self) -> i32 {
-        self.glut.current
+        self.glut.current()
     }
 
     /// `glutSetWindow(window)`: later window calls (and, in C, GL calls) go to `window`.
     /// freeglut complains and changes nothing if there is no such window.
     pub fn glut_set_window(&mut self, window: i32) {
         if self.glut.facts(window).is_some() {
-            self.glut.current = window;
+            self.glut.program_mut().current = window;
         } else {
             self.glut_warning(&format!("glutSetWindow(): window ID {window} not found!"));
         }
     }
 
     /// What the current window is, if there is one.
-    pub(crate) fn current_window_facts(&self) -> Option<&WindowFacts> {
-        self.glut.facts(self.glut.current)
+    pub(crate) fn current_window_facts(&self) -> Option<WindowFacts> {
+        self.glut.facts(self.glut.current())
     }
 
     fn request(&mut self, request: WindowRequest) {
-        if self.glut.current != 0 {
-            self.glut.requests.push((self.glut.current, request));
+        let current = self.glut.current();
+        if current != 0 {
+            self.glut.requests.push((current, request));
         }
     }
 
@@ -93,7 +94,8 @@ impl Gl {
     /// context of its own, as in tests), rather than on another made current with
     /// `glutSetWindow`.
     pub(crate) fn acts_on_own_window(&self) -> bool {
-        self.glut.current == 0 || self.glut.current == self.glut.window
+        let current = self.glut.current();
+        current == 0 || current == self.glut.window
     }
 
     /// A request for the current window: kept in this context's own fields when it is this
@@ -152,8 +154,8 @@ impl Gl {
             return self.glut_warning(&format!("glutDestroyWindow(): window ID {window} not found!"));
         }
         self.glut.requests.push((window, WindowRequest::Destroy));
-        if self.glut.current == window {
-            self.glut.current = 0;
+        if self.glut.current() == window {
+            self.glut.program_mut().current = 0;
         }
     }
 
@@ -180,7 +182,9 @@ impl Gl {
     /// `glutSetCursor(cursor)`: the current window's cursor (`GLUT_CURSOR_*`).
     pub fn glut_set_cursor(&mut self, cursor: i32) {
         self.request(WindowRequest::Cursor(cursor));
-        if let Some(facts) = self.glut.facts_mut(self.glut.current) {
+        let mut program = self.glut.program_mut();
+        let current = program.current;
+        if let Some(facts) = program.facts_mut(current) {
             facts.cursor = cursor;
         }
     }
@@ -189,7 +193,9 @@ impl Gl {
     /// events a held key repeats (freeglut: per window).
     pub fn glut_ignore_key_repeat(&mut self, ignore: i32) {
         self.request(WindowRequest::IgnoreKeyRepeat(ignore != 0));
-        if let Some(facts) = self.glut.facts_mut(self.glut.current) {
+        let mut program = self.glut.program_mut();
+        let current = program.current;
+        if let Some(facts) = program.facts_mut(current) {
             facts.ignore_key_repeat = ignore != 0;
         }
     }
@@ -197,7 +203,9 @@ impl Gl {
     /// `glutSetWindowData(data)` (freeglut): a number the program keeps with the current window.
     pub fn glut_set_window_data(&mut self, data: usize) {
         self.request(WindowRequest::Data(data));
-        if let Some(facts) = self.glut.facts_mut(self.glut.current) {
+        let mut program = self.glut.program_mut();
+        let current = program.current;
+        if let Some(facts) = program.facts_mut(current) {
             facts.data = data;
         }
     }
@@ -210,7 +218,7 @@ impl Gl {
 
     /// `glutGet`'s answers about the current window; `None` for the other names.
     pub(crate) fn window_query(&self, what: GLenum) -> Option<i32> {
-        let f = self.current_window_facts().copied().unwrap_or(WindowFacts {
+        let f = self.current_window_facts().unwrap_or(WindowFacts {
             width: self.width(),
             height: self.height(),
             cursor: GLUT_CURSOR_INHERIT,

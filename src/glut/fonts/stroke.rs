@@ -84,7 +84,7 @@ impl Gl {
     pub fn glut_stroke_character(&mut self, font: GlutStrokeFont, c: impl GlutCharacter) {
         let font = font.font();
         if let Some(g) = c.code().and_then(|c| font.glyph(c)) {
-            let join_dots = self.glut.options.stroke_join_dots != 0;
+            let join_dots = self.glut.program().options.stroke_join_dots != 0;
             self.stroke_glyph(font, g, join_dots);
         }
     }
