@@ -370,11 +370,12 @@ impl App {
     /// to the mouse callback.
     pub(crate) fn mouse_button(&mut self, gl: &mut Gl, button: i32, state: i32, x: i32, y: i32) -> Redraw {
         if let Some(popup) = &mut self.popup {
-            let event = if state == GLUT_DOWN { popup.press(x, y) } else { popup.release(&gl.glut.menus, x, y) };
+            let event =
+                if state == GLUT_DOWN { popup.press(x, y) } else { popup.release(&gl.glut.program().menus, x, y) };
             return self.after_menu_event(gl, event);
         }
         if state == GLUT_DOWN {
-            if let Some(menu) = gl.glut.menus.attached(button) {
+            if let Some(menu) = gl.glut_attached_menu(button) {
                 self.run_menu_status(gl, crate::glut::consts::GLUT_MENU_IN_USE, x, y);
                 self.popup = Popup::open(gl, menu, x, y, (gl.width(), gl.height()));
                 self.menu_at = (x, y);
@@ -382,7 +383,7 @@ impl App {
             }
         }
         // The release of the press that opened a menu belongs to the menu, not the program.
-        if state == GLUT_UP && gl.glut.menus.attached(button).is_some() {
+        if state == GLUT_UP && gl.glut_attached_menu(button).is_some() {
             return Redraw::Nothing;
         }
         Redraw::program_if(self.run_mouse(gl, button, state, x, y))

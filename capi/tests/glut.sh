@@ -5,7 +5,8 @@
 #    (tests/reference/glut/windows-*.png, captured by tools/freeglut_check/windows.sh --save);
 # 2. tests/reference/glut/Calls.c: GLUT's X options out of argv, glutGet, GLEW, glutGetProcAddress,
 #    the warning handler, window data, and glutMainLoop returning after the close callback;
-# 3. tests/reference/glut/Events.c runs headless to the end of its loop.
+# 3. tests/reference/glut/Events.c runs headless to the end of its loop;
+# 4. tests/reference/glut/Menus.c: menus are the program's, as freeglut prints them (menus.log).
 #   capi/tests/glut.sh     (after cargo build -p gleval-c)
 set -eu
 here=$(cd "$(dirname "$0")/../.." && pwd)
@@ -21,6 +22,11 @@ python3 "$here/tools/freeglut_check/cmp.py" "$ref/windows-second.png" "$work/w-3
 grep -q '^0 of' "$work/cmp1" && grep -q '^0 of' "$work/cmp2"
 diff "$ref/windows.log" "$work/windows.log"
 echo "glut: Windows.c's windows and callbacks as freeglut's"
+
+$cc -o "$work/menus" "$ref/Menus.c"
+"$work/menus" --png "$work/m.png" > "$work/menus.log" 2>/dev/null
+diff "$ref/menus.log" "$work/menus.log"
+echo "glut: Menus.c's menus are the program's, as freeglut's"
 
 $cc -o "$work/calls" "$ref/Calls.c" -lGLEW
 "$work/calls" -geometry 64x48+5+6 mine -direct -sync -gldebug --png "$work/c.png" > "$work/calls.log"

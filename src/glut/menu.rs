@@ -49,7 +49,9 @@ pub(crate) struct Menu {
     font: Option<GlutBitmapFont>,
 }
 
-/// Every menu of the program, the current one and the menus attached to the mouse buttons.
+/// Every menu of the program and the current one: program-wide, as freeglut's menu ids are
+/// (a menu made in one window can be set, changed and attached in another). Which menu each
+/// mouse button opens is the window's (`GlutState::attached_menus`).
 #[derive(Default)]
 pub(crate) struct Menus {
     /// Menu `id` is `menus[id - 1]`; destroyed menus leave `None` (ids are not reused, as
@@ -57,8 +59,6 @@ pub(crate) struct Menus {
     menus: Vec<Option<Menu>>,
     /// `glutGetMenu`: 0 when there is none.
     current: i32,
-    /// The menu attached to `GLUT_LEFT_BUTTON`, `_MIDDLE_`, `_RIGHT_` (0: none).
-    attached: [i32; 3],
 }
 
 fn complain(call: &str, what: &str) {
@@ -80,12 +80,6 @@ impl Menus {
     /// The font menu `id`'s labels are drawn in (freeglut's default, Helvetica 18).
     pub(crate) fn font(&self, id: i32) -> GlutBitmapFont {
         self.get(id).and_then(|m| m.font).unwrap_or(GLUT_BITMAP_HELVETICA_18)
-    }
-
-    /// The menu attached to a mouse button, if any.
-    pub(crate) fn attached(&self, button: i32) -> Option<i32> {
-        let id = *self.attached.get(usize::try_from(button).ok()?)?;
-        self.get(id).map(|_| id)
     }
 
     /// The current menu for a call that changes it, or a complaint.
@@ -142,7 +136,6 @@ impl std::fmt::Debug for Menus {
         f.debug_struct("Menus")
             .field("menus", &self.menus.iter().map(|m| m.as_ref().map(|m| &m.items)).collect::<Vec<_>>())
             .field("current", &self.current)
-            .field("attached", &self.attached)
             .finish()
     }
 }
@@ -151,7 +144,8 @@ impl Gl {
     /// `glutCreateMenu(func)`: a new, empty menu, made current; returns its id (from 1).
     /// `func(gl, value)` runs when one of its entries is chosen.
     pub fn glut_create_menu(&mut self, func: impl FnMut(&mut Gl, i32) + 'static) -> i32 {
-        let menus = &mut self.glut.menus;
+        let mut program = self.glut.program_mut();
+        let menus = &mut program.menus;
         let menu = Menu { items: Vec::new(), callback: Some(Box::new(func)), data: 0, on_destroy: None, font: None };
         menus.menus.push(Some(menu));
         menus.current = menus.menus.len() as i32;
@@ -160,15 +154,16 @@ impl Gl {
 
     /// `glutSetMenu(menu)`: makes `menu` current (an id that does not exist is ignored).
     pub fn glut_set_menu(&mut self, menu: i32) {
-        if self.glut.menus.valid_sub_menu("glutSetMenu", menu) {
-            self.glut.menus.current = menu;
+        let menus = &mut self.glut.program_mut().menus;
+        if menus.valid_sub_menu("glutSetMenu", menu) {
+            menus.current = menu;
         }
     }
 
     /// `glutGetMenu`: the current menu's id, 0 if there is none.
     #[must_use]
     pub fn glut_get_menu(&self) -> i32 {
-        let menus = &self.glut.menus;
+        let menus = &self.glut.program().menus;
         if menus.get(menus.current).is_some() {
             menus.current
         } else {
@@ -179,21 +174,25 @@ impl Gl {
     /// `glutDestroyMenu(menu)`: the menu is gone; buttons it was attached to open nothing, and
     /// if it was current there is no current menu.
     pub fn glut_destroy_menu(&mut self, menu: i32) {
-        if !self.glut.menus.valid_sub_menu("glutDestroyMenu", menu) {
+        if !self.glut.program().menus.valid_sub_menu("glutDestroyMenu", menu) {
             return;
         }
-        // freeglut runs the menu's destroy callback with the menu current, before it goes.
-        if let Some(mut on_destroy) = self.glut.menus.get_mut(menu).and_then(|m| m.on_destroy.take()) {
-            let previous = self.glut.menus.swap_current(menu);
+        // freeglut runs the menu's destroy callback with the menu current, before it goes (the
+        // program's state free while it runs: it may call GLUT).
+        let on_destroy = self.glut.program_mut().menus.get_mut(menu).and_then(|m| m.on_destroy.take());
+        if let Some(mut on_destroy) = on_destroy {
+            let previous = self.glut.program_mut().menus.swap_current(menu);
             on_destroy(self);
-            self.glut.menus.current = previous;
+            self.glut.program_mut().menus.current = previous;
         }
-        let menus = &mut self.glut.menus;
-        menus.menus[menu as usize - 1] = None;
-        for attached in &mut menus.attached {
+        for attached in &mut self.glut.attached_menus {
             if *attached == menu {
                 *attached = 0;
             }
+        }
+        let menus = &mut self.glut.program_mut().menus;
+        if let Some(slot) = menus.menus.get_mut(menu as usize - 1) {
+            *slot = None;
         }
         if menus.current == menu {
             menus.current = 0;
@@ -202,14 +201,14 @@ impl Gl {
 
     /// `glutMenuDestroyFunc(func)` (freeglut): `func` runs when the current menu is destroyed.
     pub fn glut_menu_destroy_func(&mut self, func: Option<MenuDestroyFn>) {
-        if let Some(menu) = self.glut.menus.current_mut("glutMenuDestroyFunc") {
+        if let Some(menu) = self.glut.program_mut().menus.current_mut("glutMenuDestroyFunc") {
             menu.on_destroy = func;
         }
     }
 
     /// `glutSetMenuData(data)` (freeglut): a number the program keeps with the current menu.
     pub fn glut_set_menu_data(&mut self, data: usize) {
-        if let Some(menu) = self.glut.menus.current_mut("glutSetMenuData") {
+        if let Some(menu) = self.glut.program_mut().menus.current_mut("glutSetMenuData") {
             menu.data = data;
         }
     }
@@ -218,12 +217,13 @@ impl Gl {
     /// current menu).
     #[must_use]
     pub fn glut_get_menu_data(&self) -> usize {
-        self.glut.menus.get(self.glut.menus.current).map_or(0, |m| m.data)
+        let menus = &self.glut.program().menus;
+        menus.get(menus.current).map_or(0, |m| m.data)
     }
 
     /// `glutSetMenuFont(menu, font)` (freeglut): menu `menu`'s labels are drawn in `font`.
     pub fn glut_set_menu_font(&mut self, menu: i32, font: GlutBitmapFont) {
-        match self.glut.menus.get_mut(menu) {
+        match self.glut.program_mut().menus.get_mut(menu) {
             Some(m) => m.font = Some(font),
             None => complain("glutSetMenuFont", &format!("there is no menu {menu}")),
         }
@@ -231,7 +231,7 @@ impl Gl {
 
     /// `glutAddMenuEntry(label, value)`: an entry at the bottom of the current menu.
     pub fn glut_add_menu_entry(&mut self, label: &str, value: i32) {
-        if let Some(menu) = self.glut.menus.current_mut("glutAddMenuEntry") {
+        if let Some(menu) = self.glut.program_mut().menus.current_mut("glutAddMenuEntry") {
             menu.items.push(MenuItem::Entry { label: label.to_owned(), value });
         }
     }
@@ -239,10 +239,11 @@ impl Gl {
     /// `glutAddSubMenu(label, menu)`: an item at the bottom of the current menu that opens
     /// `menu` beside it.
     pub fn glut_add_sub_menu(&mut self, label: &str, menu: i32) {
-        if !self.glut.menus.valid_sub_menu("glutAddSubMenu", menu) {
+        let menus = &mut self.glut.program_mut().menus;
+        if !menus.valid_sub_menu("glutAddSubMenu", menu) {
             return;
         }
-        if let Some(current) = self.glut.menus.current_mut("glutAddSubMenu") {
+        if let Some(current) = menus.current_mut("glutAddSubMenu") {
             current.items.push(MenuItem::SubMenu { label: label.to_owned(), menu });
         }
     }
@@ -250,7 +251,7 @@ impl Gl {
     /// `glutChangeToMenuEntry(item, label, value)`: item `item` (from 1) of the current menu
     /// becomes an entry.
     pub fn glut_change_to_menu_entry(&mut self, item: i32, label: &str, value: i32) {
-        if let Some(slot) = self.glut.menus.item_mut("glutChangeToMenuEntry", item) {
+        if let Some(slot) = self.glut.program_mut().menus.item_mut("glutChangeToMenuEntry", item) {
             *slot = MenuItem::Entry { label: label.to_owned(), value };
         }
     }
@@ -258,10 +259,11 @@ impl Gl {
     /// `glutChangeToSubMenu(item, label, menu)`: item `item` (from 1) of the current menu
     /// becomes a sub-menu item.
     pub fn glut_change_to_sub_menu(&mut self, item: i32, label: &str, menu: i32) {
-        if !self.glut.menus.valid_sub_menu("glutChangeToSubMenu", menu) {
+        let menus = &mut self.glut.program_mut().menus;
+        if !menus.valid_sub_menu("glutChangeToSubMenu", menu) {
             return;
         }
-        if let Some(slot) = self.glut.menus.item_mut("glutChangeToSubMenu", item) {
+        if let Some(slot) = menus.item_mut("glutChangeToSubMenu", item) {
             *slot = MenuItem::SubMenu { label: label.to_owned(), menu };
         }
     }
@@ -269,8 +271,9 @@ impl Gl {
     /// `glutRemoveMenuItem(item)`: item `item` (from 1) leaves the current menu; the ones
     /// below move up.
     pub fn glut_remove_menu_item(&mut self, item: i32) {
-        if self.glut.menus.item_mut("glutRemoveMenuItem", item).is_some() {
-            if let Some(menu) = self.glut.menus.current_mut("glutRemoveMenuItem") {
+        let menus = &mut self.glut.program_mut().menus;
+        if menus.item_mut("glutRemoveMenuItem", item).is_some() {
+            if let Some(menu) = menus.current_mut("glutRemoveMenuItem") {
                 menu.items.remove(item as usize - 1);
             }
         }
@@ -278,19 +281,19 @@ impl Gl {
 
     /// `glutGet(GLUT_MENU_NUM_ITEMS)`'s answer: the items of the current menu.
     pub(crate) fn glut_menu_num_items(&self) -> i32 {
-        self.glut.menus.get(self.glut.menus.current).map_or(0, |m| m.items.len() as i32)
+        let menus = &self.glut.program().menus;
+        menus.get(menus.current).map_or(0, |m| m.items.len() as i32)
     }
 
     /// `glutAttachMenu(button)`: pressing `button` (`GLUT_LEFT_BUTTON`, `_MIDDLE_`, `_RIGHT_`)
     /// in the window opens the current menu; the program's mouse callback no longer sees that
     /// button.
     pub fn glut_attach_menu(&mut self, button: i32) {
-        let menus = &mut self.glut.menus;
-        let current = menus.current;
-        if menus.get(current).is_none() {
+        let current = self.glut.program().menus.current;
+        if self.glut.program().menus.get(current).is_none() {
             return complain("glutAttachMenu", "no current menu");
         }
-        match usize::try_from(button).ok().and_then(|b| menus.attached.get_mut(b)) {
+        match usize::try_from(button).ok().and_then(|b| self.glut.attached_menus.get_mut(b)) {
             Some(slot) => *slot = current,
             None => complain("glutAttachMenu", &format!("{button} is not a mouse button")),
         }
@@ -298,7 +301,7 @@ impl Gl {
 
     /// `glutDetachMenu(button)`: `button` opens no menu any more.
     pub fn glut_detach_menu(&mut self, button: i32) {
-        if let Some(slot) = usize::try_from(button).ok().and_then(|b| self.glut.menus.attached.get_mut(b)) {
+        if let Some(slot) = usize::try_from(button).ok().and_then(|b| self.glut.attached_menus.get_mut(b)) {
             *slot = 0;
         }
     }
@@ -306,14 +309,22 @@ impl Gl {
     /// Runs the callback of `menu` for a chosen entry's `value`, with `menu` current while it
     /// runs, as GLUT does.
     pub(crate) fn run_menu_callback(&mut self, menu: i32, value: i32) {
-        let Some(mut callback) = self.glut.menus.take_callback(menu) else { return };
-        let previous = self.glut.menus.swap_current(menu);
+        // Out of the program's state while it runs: the callback may call GLUT.
+        let Some(mut callback) = self.glut.program_mut().menus.take_callback(menu) else { return };
+        let previous = self.glut.program_mut().menus.swap_current(menu);
         callback(self, value);
+        let mut program = self.glut.program_mut();
         // A callback that chose another menu keeps its choice.
-        if self.glut.menus.current == menu {
-            self.glut.menus.current = previous;
+        if program.menus.current == menu {
+            program.menus.current = previous;
         }
-        self.glut.menus.restore_callback(menu, callback);
+        program.menus.restore_callback(menu, callback);
+    }
+
+    /// The menu the window's `button` opens, if any (one destroyed opens nothing).
+    pub(crate) fn glut_attached_menu(&self, button: i32) -> Option<i32> {
+        let id = *self.glut.attached_menus.get(usize::try_from(button).ok()?)?;
+        self.glut.program().menus.get(id).map(|_| id)
     }
 }
 
@@ -341,7 +352,8 @@ mod tests {
         gl.glut_set_menu(main);
         gl.glut_change_to_menu_entry(2, "c", 3);
         gl.glut_remove_menu_item(1);
-        let items = &gl.glut.menus.get(main).unwrap().items;
+        let program = gl.glut.program();
+        let items = &program.menus.get(main).unwrap().items;
         assert_eq!(items, &[MenuItem::Entry { label: "c".into(), value: 3 }]);
     }
 
@@ -360,11 +372,11 @@ mod tests {
         gl.glut_set_menu(42);
         assert_eq!(gl.glut_get_menu(), menu);
         assert_eq!(gl.glut_menu_num_items(), 0);
-        assert_eq!(gl.glut.menus.attached(GLUT_RIGHT_BUTTON), None);
+        assert_eq!(gl.glut_attached_menu(GLUT_RIGHT_BUTTON), None);
         gl.glut_attach_menu(GLUT_RIGHT_BUTTON);
-        assert_eq!(gl.glut.menus.attached(GLUT_RIGHT_BUTTON), Some(menu));
+        assert_eq!(gl.glut_attached_menu(GLUT_RIGHT_BUTTON), Some(menu));
         gl.glut_destroy_menu(menu);
-        assert_eq!(gl.glut.menus.attached(GLUT_RIGHT_BUTTON), None);
+        assert_eq!(gl.glut_attached_menu(GLUT_RIGHT_BUTTON), None);
         assert_eq!(gl.glut_get_menu(), 0);
         gl.glut_add_menu_entry("after destroy", 1);
         gl.glut_destroy_menu(menu);
@@ -383,10 +395,10 @@ mod tests {
         gl.run_menu_callback(first, 4);
         assert_eq!(*seen.borrow(), [(first, 4)]);
         assert_eq!(gl.glut_get_menu(), second);
-        assert_eq!(gl.glut.menus.get(first).unwrap().items.len(), 1);
+        assert_eq!(gl.glut.program().menus.get(first).unwrap().items.len(), 1);
         // A callback that destroys its own menu.
         let doomed = gl.glut_create_menu(|gl, _| gl.glut_destroy_menu(3));
         gl.run_menu_callback(doomed, 0);
-        assert!(gl.glut.menus.get(doomed).is_none());
+        assert!(gl.glut.program().menus.get(doomed).is_none());
     }
 }

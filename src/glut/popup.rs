@@ -86,7 +86,8 @@ pub(crate) struct Popup {
 impl Popup {
     /// Opens `menu` with its top left corner at the pointer (moved in to fit the window).
     pub(crate) fn open(gl: &Gl, menu: i32, x: i32, y: i32, window: (i32, i32)) -> Option<Self> {
-        let item_height = gl.glut_bitmap_height(gl.glut.menus.font(menu)) + 4;
+        let font = gl.glut.program().menus.font(menu);
+        let item_height = gl.glut_bitmap_height(font) + 4;
         let mut popup = Self { shown: Vec::new(), window, item_height, pressed_at: (x, y), dragged: false };
         let shown = popup.place(gl, menu, x, y)?;
         popup.shown.push(shown);
@@ -95,8 +96,9 @@ impl Popup {
 
     /// A menu laid out at (x, y), moved left and up as far as needed to be inside the window.
     fn place(&self, gl: &Gl, menu: i32, x: i32, y: i32) -> Option<Shown> {
-        let items = &gl.glut.menus.get(menu)?.items;
-        let font = gl.glut.menus.font(menu);
+        let program = gl.glut.program();
+        let items = &program.menus.get(menu)?.items;
+        let font = program.menus.font(menu);
         let widest = items.iter().map(|i| gl.glut_bitmap_length(font, i.label())).max();
         let arrow = if items.iter().any(|i| matches!(i, MenuItem::SubMenu { .. })) { ARROW_ROOM } else { 0 };
         let width = widest.unwrap_or(0) + 2 * PAD + arrow + 2 * BORDER;
@@ -131,10 +133,11 @@ impl Popup {
                 let shown = &mut self.shown[level];
                 shown.highlight = Some(item);
                 let (right, top) = (shown.x + shown.width - BORDER, shown.y + BORDER + item as i32 * self.item_height);
-                let sub = match gl.glut.menus.get(shown.menu).and_then(|m| m.items.get(item)) {
-                    Some(MenuItem::SubMenu { menu, .. }) => self.place(gl, *menu, right, top - BORDER),
+                let sub_menu = match gl.glut.program().menus.get(shown.menu).and_then(|m| m.items.get(item)) {
+                    Some(MenuItem::SubMenu { menu, .. }) => Some(*menu),
                     _ => None,
                 };
+                let sub = sub_menu.and_then(|menu| self.place(gl, menu, right, top - BORDER));
                 self.shown.extend(sub);
             }
             // Off the menus: an open sub-menu stays (with its item lit); otherwise nothing is lit.
@@ -185,8 +188,9 @@ impl Popup {
         overlay.ortho(0.0, f64::from(width), f64::from(height), 0.0, -1.0, 1.0);
         overlay.matrix_mode(GL_MODELVIEW);
         for shown in &self.shown {
-            if let Some(menu) = gl.glut.menus.get(shown.menu) {
-                self.draw_menu(&mut overlay, shown, &menu.items, gl.glut.menus.font(shown.menu));
+            let program = gl.glut.program();
+            if let Some(menu) = program.menus.get(shown.menu) {
+                self.draw_menu(&mut overlay, shown, &menu.items, program.menus.font(shown.menu));
             }
         }
         overlay.take_frame()
@@ -255,7 +259,7 @@ mod tests {
         let (x, y) = centre(&popup, 0, 1);
         assert!(popup.hover(&gl, x, y));
         assert_eq!(popup.shown[0].highlight, Some(1));
-        assert_eq!(popup.release(&gl.glut.menus, x, y), PopupEvent::Chosen { menu: main, value: 2 });
+        assert_eq!(popup.release(&gl.glut.program().menus, x, y), PopupEvent::Chosen { menu: main, value: 2 });
     }
 
     #[test]
@@ -263,7 +267,7 @@ mod tests {
         let (gl, main, sub) = menus();
         let mut popup = Popup::open(&gl, main, 50, 40, (400, 300)).unwrap();
         // Released where it was pressed (on the menu's frame corner, no item): stays open.
-        assert_eq!(popup.release(&gl.glut.menus, 50, 40), PopupEvent::Open);
+        assert_eq!(popup.release(&gl.glut.program().menus, 50, 40), PopupEvent::Open);
         // Over the sub-menu item: the sub-menu opens beside it.
         let (x, y) = centre(&popup, 0, 2);
         popup.hover(&gl, x, y);
@@ -273,7 +277,7 @@ mod tests {
         let (x, y) = centre(&popup, 1, 1);
         popup.hover(&gl, x, y);
         assert_eq!(popup.press(x, y), PopupEvent::Open);
-        assert_eq!(popup.release(&gl.glut.menus, x, y), PopupEvent::Chosen { menu: sub, value: 11 });
+        assert_eq!(popup.release(&gl.glut.program().menus, x, y), PopupEvent::Chosen { menu: sub, value: 11 });
     }
 
     #[test]
@@ -285,7 +289,7 @@ mod tests {
         assert_eq!(popup.press(5, 5), PopupEvent::Closed);
         let mut popup = Popup::open(&gl, main, 10, 10, (400, 300)).unwrap();
         popup.hover(&gl, 300, 250);
-        assert_eq!(popup.release(&gl.glut.menus, 300, 250), PopupEvent::Closed);
+        assert_eq!(popup.release(&gl.glut.program().menus, 300, 250), PopupEvent::Closed);
         assert!(Popup::open(&gl, 99, 0, 0, (400, 300)).is_none());
     }
 

@@ -15,7 +15,7 @@ pub(crate) type TimerRequest = (u32, TimerFn, i32);
 /// settings and message handlers, its windows as the runner last saw them, the current window,
 /// the clock and the screen. Every window's context holds the same one (a context made on its
 /// own has its own), so a setting made in one window's callback is every window's at once.
-#[derive(Clone, Default)]
+#[derive(Default)]
 pub(crate) struct ProgramState {
     /// The program-wide settings (`glutSetOption`, `glutSetKeyRepeat`, the context asked for).
     pub options: GlutOptions,
@@ -29,6 +29,8 @@ pub(crate) struct ProgramState {
     pub elapsed_ms: i32,
     /// The screen's size in pixels, set by the runner (0: headless, the window's).
     pub screen: (i32, i32),
+    /// The menus made with `glutCreateMenu`, and the current one.
+    pub menus: Menus,
 }
 
 impl ProgramState {
@@ -66,8 +68,9 @@ pub(crate) struct GlutState {
     pub idle: Option<Option<IdleFn>>,
     /// `glutTimerFunc` calls not yet scheduled.
     pub timers: Vec<TimerRequest>,
-    /// The menus made with `glutCreateMenu` and the buttons they are attached to.
-    pub menus: Menus,
+    /// The menus attached to `GLUT_LEFT_BUTTON`, `_MIDDLE_`, `_RIGHT_` in this window (0:
+    /// none); the menus themselves are the program's.
+    pub attached_menus: [i32; 3],
     /// The window this context belongs to (0: none, a context of its own).
     pub window: i32,
     /// What callbacks asked of windows, with the window each request is for.
@@ -111,7 +114,7 @@ impl std::fmt::Debug for GlutState {
             .field("display_mode", &self.display_mode)
             .field("idle_changed", &self.idle.is_some())
             .field("timers", &self.timers.len())
-            .field("menus", &self.menus)
+            .field("attached_menus", &self.attached_menus)
             .field("requests", &self.requests)
             .field("options", &self.program().options)
             .finish()
