@@ -1,0 +1,98 @@
+//! Texture parameters and the texture environment (GL 1.1 spec §3.8.3, §3.8.9; Mesa
+//! `main/texparam.c`, `main/texenv.c`): `glTexParameter*` of the bound object, `glTexEnv*` of
+//! unit 0.
+
+use super::target_index;
+use crate::gl::consts::*;
+use crate::gl::lists::ListCommand;
+use crate::gl::types::*;
+use crate::gl::Gl;
+
+impl Gl {
+    /// `glTexParameteri` for `GL_TEXTURE_MIN_FILTER`, `GL_TEXTURE_MAG_FILTER`,
+    /// `GL_TEXTURE_WRAP_S`, `GL_TEXTURE_WRAP_T` and `GL_TEXTURE_WRAP_R` of the bound object. Another target or
+    /// name, or a value the name does not take → `GL_INVALID_ENUM`.
+    pub fn tex_parameteri(&mut self, target: GLenum, pname: GLenum, param: GLint) {
+        if pname == GL_TEXTURE_PRIORITY {
+            // A float parameter: Mesa converts the integer as it is.
+            return self.tex_parameterfv(target, pname, &[param as GLfloat]);
+        }
+        if self.compiled(|| ListCommand::TexParameter(target, pname, param)) || self.reject_inside_begin_end() {
+            return;
+        }
+        let Some(t) = target_index(target) else { return self.set_error(GL_INVALID_ENUM) };
+        let value = param as GLenum;
+        let mipmap_filters = GL_NEAREST_MIPMAP_NEAREST..=GL_LINEAR_MIPMAP_LINEAR;
+        let ok = match pname {
+            GL_TEXTURE_MIN_FILTER => value == GL_NEAREST || value == GL_LINEAR || mipmap_filters.contains(&value),
+            GL_TEXTURE_MAG_FILTER => value == GL_NEAREST || value == GL_LINEAR,
+            GL_TEXTURE_WRAP_S | GL_TEXTURE_WRAP_T | GL_TEXTURE_WRAP_R => {
+                matches!(value, GL_REPEAT | GL_CLAMP | GL_CLAMP_TO_EDGE)
+            }
+            _ => false,
+        };
+        if !ok {
+            return self.set_error(GL_INVALID_ENUM);
+        }
+        let object = self.bound_object_mut(t as u8 + 1);
+        let field = match pname {
+            GL_TEXTURE_MIN_FILTER => &mut object.params.min_filter,
+            GL_TEXTURE_MAG_FILTER => &mut object.params.mag_filter,
+            GL_TEXTURE_WRAP_S => &mut object.params.wrap_s,
+            GL_TEXTURE_WRAP_T => &mut object.params.wrap_t,
+            _ => &mut object.params.wrap_r,
+        };
+        *field = value;
+        // The complete chain depends on whether the filter reads mipmaps.
+        object.complete = None;
+        self.touch_state();
+    }
+
+    /// `glTexParameterf`: as [`Gl::tex_parameterfv`] with one value (an enum passed as a float is
+    /// truncated); the border colour, a vector, is `GL_INVALID_ENUM` here, as in Mesa.
+    pub fn tex_parameterf(&mut self, target: GLenum, pname: GLenum, param: GLfloat) {
+        if pname == GL_TEXTURE_BORDER_COLOR {
+            // Mesa: a vector name in a scalar call.
+            return self.tex_parameteri(target, pname, 0);
+        }
+        self.tex_parameterfv(target, pname, &[param]);
+    }
+
+    /// `glTexEnvi` for `GL_TEXTURE_ENV_MODE`: `GL_MODULATE` (initial), `GL_DECAL`, `GL_BLEND`,
+    /// `GL_REPLACE` or `GL_ADD`. Another target, name or mode → `GL_INVALID_ENUM`.
+    pub fn tex_envi(&mut self, target: GLenum, pname: GLenum, param: GLint) {
+        if self.compiled(|| ListCommand::TexEnv(target, pname, vec![param as f32])) || self.reject_inside_begin_end() {
+            return;
+        }
+        let mode = param as GLenum;
+        let known = matches!(mode, GL_MODULATE | GL_DECAL | GL_BLEND | GL_REPLACE | GL_ADD);
+        if target != GL_TEXTURE_ENV || pname != GL_TEXTURE_ENV_MODE || !known {
+            return self.set_error(GL_INVALID_ENUM);
+        }
+        self.server.textures.env_mode = mode;
+        self.touch_state();
+    }
+
+    /// `glTexEnvf`: as [`Gl::tex_envi`].
+    pub fn tex_envf(&mut self, target: GLenum, pname: GLenum, param: GLfloat) {
+        self.tex_envi(target, pname, param as GLint);
+    }
+
+    /// `glTexEnvfv`: `GL_TEXTURE_ENV_COLOR` (4 values, clamped to [0, 1]) or
+    /// `GL_TEXTURE_ENV_MODE` (the first value). A short slice → `GL_INVALID_VALUE`.
+    pub fn tex_envfv(&mut self, target: GLenum, pname: GLenum, params: &[GLfloat]) {
+        if pname == GL_TEXTURE_ENV_MODE {
+            let Some(&mode) = params.first() else { return self.set_error(GL_INVALID_VALUE) };
+            return self.tex_envi(target, pname, mode as GLint);
+        }
+        if self.compiled(|| ListCommand::TexEnv(target, pname, params.to_vec())) || self.reject_inside_begin_end() {
+            return;
+        }
+        if target != GL_TEXTURE_ENV || pname != GL_TEXTURE_ENV_COLOR {
+            return self.set_error(GL_INVALID_ENUM);
+        }
+        let Some(color) = self.needs::<4>(params) else { return };
+        self.server.textures.env_color = color.map(|c| c.clamp(0.0, 1.0));
+        self.touch_state();
+    }
+}
