@@ -22,8 +22,6 @@ use super::{Current, Gl};
 pub(crate) const MAX_ATTRIB_STACK_DEPTH: usize = 16;
 
 /// The enables GL files under each group besides `GL_ENABLE_BIT` (GL 1.1 tables 6.6–6.19).
-const POINT_ENABLES: &[GLenum] = &[GL_POINT_SMOOTH];
-const LINE_ENABLES: &[GLenum] = &[GL_LINE_SMOOTH, GL_LINE_STIPPLE];
 const POLYGON_ENABLES: &[GLenum] = &[
     GL_CULL_FACE,
     GL_POLYGON_SMOOTH,
@@ -61,13 +59,10 @@ const COLOR_ENABLES: &[GLenum] = &[GL_BLEND, GL_ALPHA_TEST, GL_DITHER];
 const TEXTURE_ENABLES: &[GLenum] =
     &[GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q];
 
-/// The raster values of the point, line, polygon, lighting (shade model), viewport and
+/// The raster values of the polygon, lighting (shade model), viewport and
 /// colour buffer groups.
 #[derive(Clone, Copy, Debug, PartialEq)]
 struct RasterValues {
-    point_size: f32,
-    line_width: f32,
-    line_stipple: (i32, u16),
     polygon: ([GLenum; 2], GLenum, GLenum),
     polygon_offset: (f32, f32),
     clip_planes: [[f32; 4]; super::clip::MAX_CLIP_PLANES],
@@ -86,6 +81,8 @@ struct Saved {
     lighting: Option<Lighting>,
     fragment: FragmentOps,
     depth: super::depth::Depth,
+    point: super::point::Point,
+    line: super::line::Line,
     matrix_mode: usize,
     eval: Option<EvalAttrib>,
     list_base: GLuint,
@@ -107,8 +104,8 @@ pub(crate) struct AttribStack {
 /// The enables the groups of `mask` save (`GL_ENABLE_BIT`: every capability).
 fn enables_of(mask: GLbitfield) -> Vec<GLenum> {
     let groups: [(GLbitfield, &[GLenum]); 12] = [
-        (GL_POINT_BIT, POINT_ENABLES),
-        (GL_LINE_BIT, LINE_ENABLES),
+        (GL_POINT_BIT, super::point::POINT_ENABLES),
+        (GL_LINE_BIT, super::line::LINE_ENABLES),
         (GL_POLYGON_BIT, POLYGON_ENABLES),
         (GL_LIGHTING_BIT, LIGHTING_ENABLES),
         (GL_FOG_BIT, FOG_ENABLES),
@@ -187,9 +184,6 @@ impl Gl {
         self.flush_current();
         let r = &self.server.raster;
         let raster = RasterValues {
-            point_size: r.point_size,
-            line_width: r.line_width,
-            line_stipple: r.line_stipple,
             polygon: (r.polygon_mode, r.front_face, r.cull_face),
             polygon_offset: r.polygon_offset,
             clip_planes: r.clip_planes,
@@ -206,6 +200,8 @@ impl Gl {
             lighting: (mask & GL_LIGHTING_BIT != 0).then(|| self.server.lighting.clone()),
             fragment: self.server.fragment_ops,
             depth: self.server.depth,
+            point: self.server.point,
+            line: self.server.line,
             matrix_mode: self.server.matrices.mode(),
             // The evaluator group holds the map enables and GL_AUTO_NORMAL, which
             // GL_ENABLE_BIT saves too.
@@ -228,10 +224,10 @@ impl Gl {
             self.server.current = saved.current;
         }
         if has(GL_POINT_BIT) {
-            r.point_size = v.point_size;
+            self.server.point = saved.point;
         }
         if has(GL_LINE_BIT) {
-            (r.line_width, r.line_stipple) = (v.line_width, v.line_stipple);
+            self.server.line = saved.line;
         }
         if has(GL_POLYGON_BIT) {
             (r.polygon_mode, r.front_face, r.cull_face) = v.polygon;

@@ -59,9 +59,6 @@ pub(crate) enum ListCommand {
     Frustum([f64; 6]),
     Viewport([i32; 4]),
     DepthRange(f64, f64),
-    PointSize(f32),
-    LineWidth(f32),
-    LineStipple(GLint, GLushort),
     PolygonOffset(f32, f32),
     ClipPlane(GLenum, Vec<f64>),
     /// `glPolygonStipple` with its mask unpacked at compile time (`None`: too short).
@@ -161,6 +158,8 @@ pub(crate) enum ListCommand {
     /// The stencil, accumulation, mask, scissor, logic-op and buffer calls (`gl/fragments.rs`).
     Fragment(super::fragments::FragmentCall),
     Depth(super::depth::DepthCall),
+    Point(super::point::PointCall),
+    Line(super::line::LineCall),
 }
 
 /// A list being compiled.
@@ -440,9 +439,6 @@ impl Gl {
             C::Frustum([l, r, b, t, n, f]) => self.frustum(*l, *r, *b, *t, *n, *f),
             C::Viewport([x, y, w, h]) => self.viewport(*x, *y, *w, *h),
             C::DepthRange(near, far) => self.depth_range(*near, *far),
-            C::PointSize(size) => self.point_size(*size),
-            C::LineWidth(width) => self.line_width(*width),
-            C::LineStipple(factor, pattern) => self.line_stipple(*factor, *pattern),
             C::PolygonOffset(factor, units) => self.polygon_offset(*factor, *units),
             C::ClipPlane(plane, equation) => self.clip_plane(*plane, equation),
             C::PolygonStipple(rows) => {
@@ -497,6 +493,8 @@ impl Gl {
             C::PopAttrib => self.pop_attrib(),
             C::Fragment(call) => self.replay_fragment_call(*call),
             C::Depth(call) => self.replay_depth_call(*call),
+            C::Point(call) => self.replay_point_call(*call),
+            C::Line(call) => self.replay_line_call(*call),
             C::EmitVertex(v) => self.emit_listed_vertex(*v),
             C::ScatteredMesh(jobs, triangles) => self.record_scattered_mesh(jobs.clone(), triangles.clone()),
             C::RasterPos([x, y, z, w]) => self.raster_pos4f(*x, *y, *z, *w),

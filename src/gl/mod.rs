@@ -33,6 +33,7 @@ mod hint;
 mod immediate;
 mod light_query;
 mod lighting;
+mod line;
 pub(crate) mod lists;
 mod masks;
 mod matrix;
@@ -44,6 +45,7 @@ mod pixel_transfer;
 mod pixel_unpack;
 pub mod pixel_zoom;
 mod pixels;
+mod point;
 mod raster;
 mod raster_pos;
 mod read_pixels;
@@ -170,6 +172,10 @@ pub(crate) struct ServerState {
     pub(super) caps: enable::Caps,
     /// The depth buffer group: the test's function, the write mask, the clear value.
     pub(super) depth: depth::Depth,
+    /// The point group: the point size.
+    pub(super) point: point::Point,
+    /// The line group: the width and the stipple.
+    pub(super) line: line::Line,
     pub(crate) eval: eval::EvalState,
     /// `glPushAttrib`'s stack.
     pub(super) attrib_stack: attrib::AttribStack,
@@ -204,6 +210,8 @@ impl ServerState {
             current: Current::default(),
             caps: enable::Caps::default(),
             depth: depth::Depth::default(),
+            point: point::Point::default(),
+            line: line::Line::default(),
             eval: eval::EvalState::default(),
             attrib_stack: attrib::AttribStack::default(),
             active_texture: GL_TEXTURE0,
@@ -397,8 +405,8 @@ impl Gl {
             normalize: self.server.caps.is_on(GL_NORMALIZE),
             rescale_normal: self.server.caps.is_on(GL_RESCALE_NORMAL),
             shade_model: r.shade_model,
-            point_size: r.point_size,
-            line_width: r.line_width,
+            point_size: self.server.point.size,
+            line_width: self.server.line.width,
             polygon_mode: r.polygon_mode,
             front_face: r.front_face,
             cull_face: self.server.caps.is_on(GL_CULL_FACE).then_some(r.cull_face),

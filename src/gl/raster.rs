@@ -17,15 +17,11 @@ pub(crate) struct RasterState {
     pub viewport: [i32; 4],
     pub depth_range: [f32; 2],
     pub shade_model: GLenum,
-    pub point_size: f32,
-    pub line_width: f32,
     /// Front and back polygon modes.
     pub polygon_mode: [GLenum; 2],
     pub front_face: GLenum,
     pub cull_face: GLenum,
     pub clear_color: [f32; 4],
-    /// `glLineStipple`: the repeat factor (clamped to 1..=256) and the pattern.
-    pub line_stipple: (i32, u16),
     /// `glPolygonOffset`: factor and units.
     pub polygon_offset: (f32, f32),
     /// `glClipPlane`: the planes in eye coordinates, as transformed at the call.
@@ -40,13 +36,10 @@ impl RasterState {
             viewport: [0, 0, width, height],
             depth_range: [0.0, 1.0],
             shade_model: GL_SMOOTH,
-            point_size: 1.0,
-            line_width: 1.0,
             polygon_mode: [GL_FILL, GL_FILL],
             front_face: GL_CCW,
             cull_face: GL_BACK,
             clear_color: [0.0; 4],
-            line_stipple: (1, 0xFFFF),
             polygon_offset: (0.0, 0.0),
             clip_planes: [[0.0; 4]; super::clip::MAX_CLIP_PLANES],
             polygon_stipple: [u32::MAX; 32],
@@ -80,36 +73,6 @@ impl Gl {
             return;
         }
         self.server.raster.depth_range = [near.clamp(0.0, 1.0) as f32, far.clamp(0.0, 1.0) as f32];
-        self.touch_state();
-    }
-
-    /// `glPointSize`: `size <= 0` → `GL_INVALID_VALUE`.
-    pub fn point_size(&mut self, size: GLfloat) {
-        if self.compiled(|| ListCommand::PointSize(size)) {
-            return;
-        }
-        if self.reject_inside_begin_end() {
-            return;
-        }
-        if size.is_nan() || size <= 0.0 {
-            return self.set_error(GL_INVALID_VALUE);
-        }
-        self.server.raster.point_size = size;
-        self.touch_state();
-    }
-
-    /// `glLineWidth`: `width <= 0` → `GL_INVALID_VALUE`.
-    pub fn line_width(&mut self, width: GLfloat) {
-        if self.compiled(|| ListCommand::LineWidth(width)) {
-            return;
-        }
-        if self.reject_inside_begin_end() {
-            return;
-        }
-        if width.is_nan() || width <= 0.0 {
-            return self.set_error(GL_INVALID_VALUE);
-        }
-        self.server.raster.line_width = width;
         self.touch_state();
     }
 

@@ -1,8 +1,6 @@
-//! `glLineStipple` (GL 1.1 spec §3.4.2): which fragments of a line are drawn, by a 16-bit
-//! pattern read one bit per `factor` fragments; the renderer cuts stippled lines into their
-//! drawn pieces (`render::stipple`). `glPolygonStipple` (§3.5.6): a 32 × 32 bit mask tiled
+//! `glPolygonStipple` (GL 1.1 spec §3.5.6): a 32 × 32 bit mask tiled
 //! over window coordinates that keeps or drops each fragment of a filled polygon; the raster
-//! shader tests it.
+//! shader tests it. (`glLineStipple` is the line group's, `line.rs`.)
 
 use super::bitmap::unpack_bitmap;
 use super::consts::*;
@@ -10,20 +8,7 @@ use super::lists::ListCommand;
 use super::types::*;
 use super::Gl;
 
-/// GL clamps the repeat factor to [1, 256] (§3.4.2; Mesa `_mesa_LineStipple`).
-const MAX_STIPPLE_FACTOR: GLint = 256;
-
 impl Gl {
-    /// `glLineStipple(factor, pattern)`: no argument is an error, the factor is clamped to
-    /// 1..=256; inside `begin`/`end` → `GL_INVALID_OPERATION`.
-    pub fn line_stipple(&mut self, factor: GLint, pattern: GLushort) {
-        if self.compiled(|| ListCommand::LineStipple(factor, pattern)) || self.reject_inside_begin_end() {
-            return;
-        }
-        self.server.raster.line_stipple = (factor.clamp(1, MAX_STIPPLE_FACTOR), pattern);
-        self.touch_state();
-    }
-
     /// `glPolygonStipple(mask)`: a 32 × 32 bitmap unpacked as `glBitmap` unpacks (the pixel
     /// store's alignment, skips, row length and bit order; first row at the bottom). A `mask`
     /// shorter than that → `GL_INVALID_VALUE`; inside `begin`/`end` → `GL_INVALID_OPERATION`.
@@ -47,11 +32,6 @@ impl Gl {
     pub(crate) fn enabled_polygon_stipple(&self) -> Option<[u32; 32]> {
         self.capability(GL_POLYGON_STIPPLE).then_some(self.server.raster.polygon_stipple)
     }
-
-    /// The stipple while `GL_LINE_STIPPLE` is on: (factor, pattern).
-    pub(crate) fn enabled_line_stipple(&self) -> Option<(i32, u16)> {
-        self.capability(GL_LINE_STIPPLE).then_some(self.server.raster.line_stipple)
-    }
 }
 
 /// 32 × 32 unpacked bits as 32 rows of 32 bits, bit x of row y for pixel (x, y).
@@ -62,19 +42,6 @@ fn stipple_rows(bits: &[bool]) -> [u32; 32] {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn the_factor_is_clamped_and_nothing_is_an_error() {
-        let mut gl = Gl::new(4, 4);
-        gl.line_stipple(0, 0x00FF);
-        assert_eq!(gl.server.raster.line_stipple, (1, 0x00FF));
-        gl.line_stipple(1000, 1);
-        assert_eq!(gl.server.raster.line_stipple, (256, 1));
-        assert_eq!(gl.get_error(), GL_NO_ERROR);
-        assert_eq!(gl.enabled_line_stipple(), None);
-        gl.enable(GL_LINE_STIPPLE);
-        assert_eq!(gl.enabled_line_stipple(), Some((256, 1)));
-    }
 
     #[test]
     fn the_polygon_mask_is_read_as_a_bitmap() {

@@ -222,8 +222,8 @@ impl Gl {
         let r = &self.server.raster;
         match mode {
             MeshMode::Fill | MeshMode::Triangles => r.polygon_mode == [GL_FILL, GL_FILL],
-            MeshMode::CurveLines | MeshMode::SurfaceLines => r.line_width.round() <= 1.0,
-            MeshMode::Points => r.point_size.round() <= 1.0,
+            MeshMode::CurveLines | MeshMode::SurfaceLines => self.server.line.width.round() <= 1.0,
+            MeshMode::Points => self.server.point.size.round() <= 1.0,
         }
     }
 }
