@@ -22,14 +22,6 @@ use super::{Current, Gl};
 pub(crate) const MAX_ATTRIB_STACK_DEPTH: usize = 16;
 
 /// The enables GL files under each group besides `GL_ENABLE_BIT` (GL 1.1 tables 6.6–6.19).
-const POLYGON_ENABLES: &[GLenum] = &[
-    GL_CULL_FACE,
-    GL_POLYGON_SMOOTH,
-    GL_POLYGON_OFFSET_POINT,
-    GL_POLYGON_OFFSET_LINE,
-    GL_POLYGON_OFFSET_FILL,
-    GL_POLYGON_STIPPLE,
-];
 const LIGHTING_ENABLES: &[GLenum] = &[
     GL_LIGHTING,
     GL_COLOR_MATERIAL,
@@ -59,12 +51,10 @@ const COLOR_ENABLES: &[GLenum] = &[GL_BLEND, GL_ALPHA_TEST, GL_DITHER];
 const TEXTURE_ENABLES: &[GLenum] =
     &[GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q];
 
-/// The raster values of the polygon, lighting (shade model), viewport and
+/// The raster values of the lighting (shade model), viewport and
 /// colour buffer groups.
 #[derive(Clone, Copy, Debug, PartialEq)]
 struct RasterValues {
-    polygon: ([GLenum; 2], GLenum, GLenum),
-    polygon_offset: (f32, f32),
     clip_planes: [[f32; 4]; super::clip::MAX_CLIP_PLANES],
     polygon_stipple: [u32; 32],
     shade_model: GLenum,
@@ -83,6 +73,7 @@ struct Saved {
     depth: super::depth::Depth,
     point: super::point::Point,
     line: super::line::Line,
+    polygon: super::polygon::Polygon,
     matrix_mode: usize,
     eval: Option<EvalAttrib>,
     list_base: GLuint,
@@ -106,7 +97,7 @@ fn enables_of(mask: GLbitfield) -> Vec<GLenum> {
     let groups: [(GLbitfield, &[GLenum]); 12] = [
         (GL_POINT_BIT, super::point::POINT_ENABLES),
         (GL_LINE_BIT, super::line::LINE_ENABLES),
-        (GL_POLYGON_BIT, POLYGON_ENABLES),
+        (GL_POLYGON_BIT, super::polygon::POLYGON_ENABLES),
         (GL_LIGHTING_BIT, LIGHTING_ENABLES),
         (GL_FOG_BIT, FOG_ENABLES),
         (GL_DEPTH_BUFFER_BIT, super::depth::DEPTH_ENABLES),
@@ -184,8 +175,6 @@ impl Gl {
         self.flush_current();
         let r = &self.server.raster;
         let raster = RasterValues {
-            polygon: (r.polygon_mode, r.front_face, r.cull_face),
-            polygon_offset: r.polygon_offset,
             clip_planes: r.clip_planes,
             polygon_stipple: r.polygon_stipple,
             shade_model: r.shade_model,
@@ -202,6 +191,7 @@ impl Gl {
             depth: self.server.depth,
             point: self.server.point,
             line: self.server.line,
+            polygon: self.server.polygon,
             matrix_mode: self.server.matrices.mode(),
             // The evaluator group holds the map enables and GL_AUTO_NORMAL, which
             // GL_ENABLE_BIT saves too.
@@ -230,8 +220,7 @@ impl Gl {
             self.server.line = saved.line;
         }
         if has(GL_POLYGON_BIT) {
-            (r.polygon_mode, r.front_face, r.cull_face) = v.polygon;
-            r.polygon_offset = v.polygon_offset;
+            self.server.polygon = saved.polygon;
         }
         if has(GL_POLYGON_STIPPLE_BIT) {
             r.polygon_stipple = v.polygon_stipple;
@@ -309,7 +298,7 @@ mod tests {
         assert_eq!(gl.server.lighting.lights[0].diffuse.to_array(), [0.1, 0.2, 0.3, 1.0]);
         assert_eq!(gl.server.raster.shade_model, GL_SMOOTH);
         assert_eq!(gl.server.raster.viewport, [0, 0, 10, 10]);
-        assert_eq!(gl.server.raster.polygon_mode, [GL_FILL, GL_FILL]);
+        assert_eq!(gl.server.polygon.mode, [GL_FILL, GL_FILL]);
         assert_eq!((gl.is_enabled(GL_CULL_FACE), gl.is_enabled(GL_DEPTH_TEST)), (GL_FALSE, GL_TRUE));
         assert_eq!(gl.get_error(), GL_NO_ERROR);
     }

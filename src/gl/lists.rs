@@ -59,13 +59,9 @@ pub(crate) enum ListCommand {
     Frustum([f64; 6]),
     Viewport([i32; 4]),
     DepthRange(f64, f64),
-    PolygonOffset(f32, f32),
     ClipPlane(GLenum, Vec<f64>),
     /// `glPolygonStipple` with its mask unpacked at compile time (`None`: too short).
     PolygonStipple(Option<[u32; 32]>),
-    PolygonMode(GLenum, GLenum),
-    FrontFace(GLenum),
-    CullFace(GLenum),
     ClearColor([f32; 4]),
     Clear(GLbitfield),
     ActiveTexture(GLenum),
@@ -160,6 +156,7 @@ pub(crate) enum ListCommand {
     Depth(super::depth::DepthCall),
     Point(super::point::PointCall),
     Line(super::line::LineCall),
+    Polygon(super::polygon::PolygonCall),
 }
 
 /// A list being compiled.
@@ -439,16 +436,12 @@ impl Gl {
             C::Frustum([l, r, b, t, n, f]) => self.frustum(*l, *r, *b, *t, *n, *f),
             C::Viewport([x, y, w, h]) => self.viewport(*x, *y, *w, *h),
             C::DepthRange(near, far) => self.depth_range(*near, *far),
-            C::PolygonOffset(factor, units) => self.polygon_offset(*factor, *units),
             C::ClipPlane(plane, equation) => self.clip_plane(*plane, equation),
             C::PolygonStipple(rows) => {
                 if !self.reject_inside_begin_end() {
                     self.set_polygon_stipple(*rows);
                 }
             }
-            C::PolygonMode(face, mode) => self.polygon_mode(*face, *mode),
-            C::FrontFace(mode) => self.front_face(*mode),
-            C::CullFace(mode) => self.cull_face(*mode),
             C::ClearColor([r, g, b, a]) => self.clear_color(*r, *g, *b, *a),
             C::Clear(mask) => self.clear(*mask),
             C::ActiveTexture(unit) => self.active_texture(*unit),
@@ -495,6 +488,7 @@ impl Gl {
             C::Depth(call) => self.replay_depth_call(*call),
             C::Point(call) => self.replay_point_call(*call),
             C::Line(call) => self.replay_line_call(*call),
+            C::Polygon(call) => self.replay_polygon_call(*call),
             C::EmitVertex(v) => self.emit_listed_vertex(*v),
             C::ScatteredMesh(jobs, triangles) => self.record_scattered_mesh(jobs.clone(), triangles.clone()),
             C::RasterPos([x, y, z, w]) => self.raster_pos4f(*x, *y, *z, *w),

@@ -46,6 +46,7 @@ mod pixel_unpack;
 pub mod pixel_zoom;
 mod pixels;
 mod point;
+mod polygon;
 mod raster;
 mod raster_pos;
 mod read_pixels;
@@ -176,6 +177,8 @@ pub(crate) struct ServerState {
     pub(super) point: point::Point,
     /// The line group: the width and the stipple.
     pub(super) line: line::Line,
+    /// The polygon group: modes, facing, culling, offset.
+    pub(super) polygon: polygon::Polygon,
     pub(crate) eval: eval::EvalState,
     /// `glPushAttrib`'s stack.
     pub(super) attrib_stack: attrib::AttribStack,
@@ -212,6 +215,7 @@ impl ServerState {
             depth: depth::Depth::default(),
             point: point::Point::default(),
             line: line::Line::default(),
+            polygon: polygon::Polygon::default(),
             eval: eval::EvalState::default(),
             attrib_stack: attrib::AttribStack::default(),
             active_texture: GL_TEXTURE0,
@@ -407,9 +411,9 @@ impl Gl {
             shade_model: r.shade_model,
             point_size: self.server.point.size,
             line_width: self.server.line.width,
-            polygon_mode: r.polygon_mode,
-            front_face: r.front_face,
-            cull_face: self.server.caps.is_on(GL_CULL_FACE).then_some(r.cull_face),
+            polygon_mode: self.server.polygon.mode,
+            front_face: self.server.polygon.front_face,
+            cull_face: self.server.caps.is_on(GL_CULL_FACE).then_some(self.server.polygon.cull_face),
             depth_test: self.server.caps.is_on(GL_DEPTH_TEST).then_some(self.server.depth.func),
             texture,
             blend: self.enabled_blend(),

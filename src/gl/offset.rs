@@ -1,9 +1,9 @@
-//! `glPolygonOffset` (GL 1.1 spec §3.5.5): a depth offset for polygons drawn filled, as lines
-//! or as points, each mode with its own enable. The renderer adds it to each polygon's window
+//! The polygon offset (GL 1.1 spec §3.5.5; `glPolygonOffset` is the polygon group's,
+//! `polygon.rs`): a depth offset for polygons drawn filled, as lines or as points, each mode
+//! with its own enable. The renderer adds it to each polygon's window
 //! depth (`render::offset`).
 
 use super::consts::*;
-use super::lists::ListCommand;
 use super::types::*;
 use super::Gl;
 
@@ -32,16 +32,6 @@ impl PolygonOffset {
 }
 
 impl Gl {
-    /// `glPolygonOffset(factor, units)`: no value is an error (Mesa stores any float);
-    /// inside `begin`/`end` → `GL_INVALID_OPERATION`.
-    pub fn polygon_offset(&mut self, factor: GLfloat, units: GLfloat) {
-        if self.compiled(|| ListCommand::PolygonOffset(factor, units)) || self.reject_inside_begin_end() {
-            return;
-        }
-        self.server.raster.polygon_offset = (factor, units);
-        self.touch_state();
-    }
-
     /// Whether a clip plane, polygon offset or line stipple is on (the CPU assembler's work).
     pub(crate) fn raster_modes_on(&self) -> bool {
         self.enabled_polygon_offset().is_some()
@@ -54,7 +44,7 @@ impl Gl {
     pub(crate) fn enabled_polygon_offset(&self) -> Option<PolygonOffset> {
         let modes =
             [GL_POLYGON_OFFSET_POINT, GL_POLYGON_OFFSET_LINE, GL_POLYGON_OFFSET_FILL].map(|c| self.capability(c));
-        let (factor, units) = self.server.raster.polygon_offset;
+        let (factor, units) = self.server.polygon.offset;
         modes.contains(&true).then_some(PolygonOffset { factor, units, modes })
     }
 }

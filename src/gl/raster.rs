@@ -17,13 +17,7 @@ pub(crate) struct RasterState {
     pub viewport: [i32; 4],
     pub depth_range: [f32; 2],
     pub shade_model: GLenum,
-    /// Front and back polygon modes.
-    pub polygon_mode: [GLenum; 2],
-    pub front_face: GLenum,
-    pub cull_face: GLenum,
     pub clear_color: [f32; 4],
-    /// `glPolygonOffset`: factor and units.
-    pub polygon_offset: (f32, f32),
     /// `glClipPlane`: the planes in eye coordinates, as transformed at the call.
     pub clip_planes: [[f32; 4]; super::clip::MAX_CLIP_PLANES],
     /// `glPolygonStipple`: row y, bit x for window pixel (x, y) modulo 32.
@@ -36,11 +30,7 @@ impl RasterState {
             viewport: [0, 0, width, height],
             depth_range: [0.0, 1.0],
             shade_model: GL_SMOOTH,
-            polygon_mode: [GL_FILL, GL_FILL],
-            front_face: GL_CCW,
-            cull_face: GL_BACK,
             clear_color: [0.0; 4],
-            polygon_offset: (0.0, 0.0),
             clip_planes: [[0.0; 4]; super::clip::MAX_CLIP_PLANES],
             polygon_stipple: [u32::MAX; 32],
         }
@@ -76,66 +66,10 @@ impl Gl {
         self.touch_state();
     }
 
-    /// `glPolygonMode(face, mode)`.
-    pub fn polygon_mode(&mut self, face: GLenum, mode: GLenum) {
-        if self.compiled(|| ListCommand::PolygonMode(face, mode)) {
-            return;
-        }
-        if self.reject_inside_begin_end() {
-            return;
-        }
-        if !matches!(mode, GL_POINT | GL_LINE | GL_FILL) {
-            return self.set_error(GL_INVALID_ENUM);
-        }
-        match face {
-            GL_FRONT => self.server.raster.polygon_mode[0] = mode,
-            GL_BACK => self.server.raster.polygon_mode[1] = mode,
-            GL_FRONT_AND_BACK => self.server.raster.polygon_mode = [mode, mode],
-            _ => return self.set_error(GL_INVALID_ENUM),
-        }
-        self.touch_state();
-    }
-
     /// `glGetIntegerv(GL_VIEWPORT)` for GLU, which loads its sampling matrices so
     /// (`glrenderer.cc`). Unlike `glGet`, it records no error inside `begin`/`end`.
     pub(crate) fn viewport_box(&self) -> [GLint; 4] {
         self.server.raster.viewport
-    }
-
-    /// `glGetIntegerv(GL_POLYGON_MODE)` for GLU: the front and back modes, which GLU saves
-    /// around a surface and puts back with `glPolygonMode` (`glsurfeval.cc`).
-    pub(crate) fn polygon_modes(&self) -> [GLenum; 2] {
-        self.server.raster.polygon_mode
-    }
-
-    /// `glFrontFace`: `GL_CW` or `GL_CCW`.
-    pub fn front_face(&mut self, mode: GLenum) {
-        if self.compiled(|| ListCommand::FrontFace(mode)) {
-            return;
-        }
-        if self.reject_inside_begin_end() {
-            return;
-        }
-        if mode != GL_CW && mode != GL_CCW {
-            return self.set_error(GL_INVALID_ENUM);
-        }
-        self.server.raster.front_face = mode;
-        self.touch_state();
-    }
-
-    /// `glCullFace`: `GL_FRONT`, `GL_BACK` or `GL_FRONT_AND_BACK`.
-    pub fn cull_face(&mut self, mode: GLenum) {
-        if self.compiled(|| ListCommand::CullFace(mode)) {
-            return;
-        }
-        if self.reject_inside_begin_end() {
-            return;
-        }
-        if !matches!(mode, GL_FRONT | GL_BACK | GL_FRONT_AND_BACK) {
-            return self.set_error(GL_INVALID_ENUM);
-        }
-        self.server.raster.cull_face = mode;
-        self.touch_state();
     }
 
     /// `glClearColor` (clamped to [0, 1], as GL 1.x does).

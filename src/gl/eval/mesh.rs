@@ -219,11 +219,11 @@ impl Gl {
         if state || smooth {
             return false;
         }
-        let r = &self.server.raster;
+        let s = &self.server;
         match mode {
-            MeshMode::Fill | MeshMode::Triangles => r.polygon_mode == [GL_FILL, GL_FILL],
-            MeshMode::CurveLines | MeshMode::SurfaceLines => self.server.line.width.round() <= 1.0,
-            MeshMode::Points => self.server.point.size.round() <= 1.0,
+            MeshMode::Fill | MeshMode::Triangles => s.polygon.mode == [GL_FILL, GL_FILL],
+            MeshMode::CurveLines | MeshMode::SurfaceLines => s.line.width.round() <= 1.0,
+            MeshMode::Points => s.point.size.round() <= 1.0,
         }
     }
 }

@@ -85,8 +85,8 @@ fn matrix(o: &mut [f64], m: glam::Mat4) {
 /// Every row: this file's, then those of the modules that keep their state's fields.
 pub(crate) fn rows() -> impl Iterator<Item = &'static StateVar> {
     use super::super::{
-        arrays, color_index, depth, eval, fragments, hint, line, lists, pixel_transfer, pixels, point, raster_pos,
-        select, texture,
+        arrays, color_index, depth, eval, fragments, hint, line, lists, pixel_transfer, pixels, point, polygon,
+        raster_pos, select, texture,
     };
     [
         STATE,
@@ -95,6 +95,7 @@ pub(crate) fn rows() -> impl Iterator<Item = &'static StateVar> {
         depth::GET_ROWS,
         point::GET_ROWS,
         line::GET_ROWS,
+        polygon::GET_ROWS,
         arrays::GET_ROWS,
         texture::GET_ROWS,
         fragments::GET_ROWS,
@@ -164,11 +165,6 @@ pub(crate) static STATE: &[StateVar] = &[
     row(GL_LIGHT_MODEL_LOCAL_VIEWER, 1, Bool, |gl, o| put_flag(o, gl.server.lighting.local_viewer)),
     row(GL_LIGHT_MODEL_TWO_SIDE, 1, Bool, |gl, o| put_flag(o, gl.server.lighting.two_side)),
     // Table 6.8: rasterisation.
-    row(GL_CULL_FACE_MODE, 1, Int, |gl, o| put_enum(o, gl.server.raster.cull_face)),
-    row(GL_FRONT_FACE, 1, Int, |gl, o| put_enum(o, gl.server.raster.front_face)),
-    row(GL_POLYGON_MODE, 2, Int, |gl, o| put(o, &gl.server.raster.polygon_mode)),
-    row(GL_POLYGON_OFFSET_FACTOR, 1, Float, |gl, o| o[0] = gl.server.raster.polygon_offset.0.into()),
-    row(GL_POLYGON_OFFSET_UNITS, 1, Float, |gl, o| o[0] = gl.server.raster.polygon_offset.1.into()),
     // Table 6.9: textures (parameters and levels through glGetTex*).
     row(GL_ACTIVE_TEXTURE, 1, Int, |gl, o| put_enum(o, gl.server.active_texture)),
     // Table 6.12: pixel operations.
