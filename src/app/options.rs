@@ -63,19 +63,14 @@ impl App {
     /// overrides it in freeglut too), `-iconic` and `-direct`/`-indirect` are settings
     /// `glutGet` reads back, and `-gldebug` reports GL errors after each display callback.
     pub(super) fn take_x_options(&mut self, x: &crate::glut::XOptions) {
-        use crate::glut::consts::*;
         if let Some(display) = &x.display {
             std::env::set_var("DISPLAY", display);
         }
         if self.position.is_none() {
             self.position = x.position;
         }
-        if x.iconic {
-            self.context_mut().glut_init_iconic();
-        }
-        if let Some(direct) = x.direct {
-            let mode = if direct { GLUT_FORCE_DIRECT_CONTEXT } else { GLUT_FORCE_INDIRECT_CONTEXT };
-            self.context_mut().glut_set_option(GLUT_DIRECT_RENDERING, mode);
+        if x.sets_settings() {
+            self.context_mut().glut_take_x_settings(x);
         }
         if x.gl_debug {
             self.gl_debug = true;

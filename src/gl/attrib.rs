@@ -128,7 +128,7 @@ impl Gl {
     /// `glPushAttrib(mask)`: saves the groups of `mask`. A full stack → `GL_STACK_OVERFLOW`
     /// (nothing is saved); inside `begin`/`end` → `GL_INVALID_OPERATION`.
     pub fn push_attrib(&mut self, mask: GLbitfield) {
-        if self.compiled(|| ListCommand::PushAttrib(mask)) || self.reject_inside_begin_end() {
+        if self.compiled_state_call(|| ListCommand::PushAttrib(mask)) {
             return;
         }
         if self.server.attrib_stack.entries.len() >= MAX_ATTRIB_STACK_DEPTH {
@@ -141,7 +141,7 @@ impl Gl {
     /// `glPopAttrib`: restores the groups the matching push saved. An empty stack →
     /// `GL_STACK_UNDERFLOW`; inside `begin`/`end` → `GL_INVALID_OPERATION`.
     pub fn pop_attrib(&mut self) {
-        if self.compiled(|| ListCommand::PopAttrib) || self.reject_inside_begin_end() {
+        if self.compiled_state_call(|| ListCommand::PopAttrib) {
             return;
         }
         let Some(saved) = self.server.attrib_stack.entries.pop() else {

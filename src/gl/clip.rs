@@ -72,7 +72,7 @@ impl Gl {
     /// `GL_INVALID_OPERATION`. Stored as (a b c d)·M⁻¹ with M the modelview, in `f32` as Mesa
     /// stores it.
     pub fn clip_plane(&mut self, plane: GLenum, equation: &[GLdouble]) {
-        if self.compiled(|| ListCommand::ClipPlane(plane, equation.to_vec())) || self.reject_inside_begin_end() {
+        if self.compiled_state_call(|| ListCommand::ClipPlane(plane, equation.to_vec())) {
             return;
         }
         let Some(i) = plane_index(plane) else { return self.set_error(GL_INVALID_ENUM) };

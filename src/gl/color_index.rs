@@ -109,7 +109,7 @@ impl Gl {
     /// none: the picture does not change). Stored as Mesa stores it, as an unsigned integer.
     /// Inside `begin`/`end` → `GL_INVALID_OPERATION`. Compiled into display lists.
     pub fn clear_index(&mut self, c: GLfloat) {
-        if self.compiled(|| ListCommand::Pixels(PixelCommand::ClearIndex(c))) || self.reject_inside_begin_end() {
+        if self.compiled_state_call(|| ListCommand::Pixels(PixelCommand::ClearIndex(c))) {
             return;
         }
         self.server.color_index.clear = to_uint(c);
@@ -125,7 +125,7 @@ impl Gl {
     /// `glIndexMask`: which bits of an index buffer are written (none here: the window is
     /// RGBA). Inside `begin`/`end` → `GL_INVALID_OPERATION`. Compiled into display lists.
     pub fn index_mask(&mut self, mask: GLuint) {
-        if self.compiled(|| ListCommand::Pixels(PixelCommand::IndexMask(mask))) || self.reject_inside_begin_end() {
+        if self.compiled_state_call(|| ListCommand::Pixels(PixelCommand::IndexMask(mask))) {
             return;
         }
         self.server.color_index.mask = mask;

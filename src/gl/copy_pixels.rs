@@ -110,7 +110,7 @@ impl Gl {
     /// display lists.
     pub fn copy_pixels(&mut self, x: GLint, y: GLint, width: GLsizei, height: GLsizei, type_: GLenum) {
         let call = PixelCommand::CopyPixels([x, y, width, height], type_);
-        if self.compiled(|| ListCommand::Pixels(call)) || self.reject_inside_begin_end() {
+        if self.compiled_state_call(|| ListCommand::Pixels(call)) {
             return;
         }
         if width < 0 || height < 0 {

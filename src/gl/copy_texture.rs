@@ -97,7 +97,7 @@ impl Gl {
     }
 
     pub(crate) fn copy_tex_image(&mut self, call: CopyTexImage) {
-        if self.compiled(|| ListCommand::Pixels(PixelCommand::CopyTexImage(call))) || self.reject_inside_begin_end() {
+        if self.compiled_state_call(|| ListCommand::Pixels(PixelCommand::CopyTexImage(call))) {
             return;
         }
         if target_index(call.target) != Some(usize::from(call.dims - 1)) {
@@ -159,8 +159,7 @@ impl Gl {
     }
 
     pub(crate) fn copy_tex_sub_image(&mut self, call: CopyTexSubImage) {
-        if self.compiled(|| ListCommand::Pixels(PixelCommand::CopyTexSubImage(call))) || self.reject_inside_begin_end()
-        {
+        if self.compiled_state_call(|| ListCommand::Pixels(PixelCommand::CopyTexSubImage(call))) {
             return;
         }
         if target_index(call.target) != Some(usize::from(call.dims - 1)) {

@@ -44,16 +44,10 @@ pub(crate) enum DepthCall {
 pub(crate) const DEPTH_ENABLES: &[GLenum] = &[GL_DEPTH_TEST];
 
 impl Gl {
-    /// The gate of the group's calls: compiled into the list being built (false: carry on), or
-    /// `GL_INVALID_OPERATION` inside `begin`/`end`.
-    fn compiled_depth(&mut self, call: DepthCall) -> bool {
-        self.compiled(|| ListCommand::Depth(call)) || self.reject_inside_begin_end()
-    }
-
     /// `glDepthFunc`: the comparison (`GL_NEVER` .. `GL_ALWAYS`, else `GL_INVALID_ENUM`) the
     /// depth test makes while `GL_DEPTH_TEST` is on.
     pub fn depth_func(&mut self, func: GLenum) {
-        if self.compiled_depth(DepthCall::Func(func)) {
+        if self.compiled_state_call(|| ListCommand::Depth(DepthCall::Func(func))) {
             return;
         }
         if !(GL_NEVER..=GL_ALWAYS).contains(&func) {
@@ -65,7 +59,7 @@ impl Gl {
 
     /// `glDepthMask`: whether fragments that pass the depth test write their depth.
     pub fn depth_mask(&mut self, flag: GLboolean) {
-        if self.compiled_depth(DepthCall::Mask(flag)) {
+        if self.compiled_state_call(|| ListCommand::Depth(DepthCall::Mask(flag))) {
             return;
         }
         self.server.depth.write = flag != GL_FALSE;
@@ -75,7 +69,7 @@ impl Gl {
     /// `glClearDepth` (clamped to [0, 1]): what `glClear`'s depth bit writes. No draw reads it,
     /// so the draw state is not touched.
     pub fn clear_depth(&mut self, depth: GLdouble) {
-        if self.compiled_depth(DepthCall::Clear(depth)) {
+        if self.compiled_state_call(|| ListCommand::Depth(DepthCall::Clear(depth))) {
             return;
         }
         self.server.depth.clear = depth.clamp(0.0, 1.0) as f32;

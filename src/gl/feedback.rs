@@ -190,7 +190,7 @@ impl Gl {
     /// the primitives, where the call was made; nothing in the other modes. Compiled into
     /// lists; inside `begin`/`end` → `GL_INVALID_OPERATION`.
     pub fn pass_through(&mut self, token: GLfloat) {
-        if self.compiled(|| super::lists::ListCommand::PassThrough(token)) || self.reject_inside_begin_end() {
+        if self.compiled_state_call(|| super::lists::ListCommand::PassThrough(token)) {
             return;
         }
         if self.client.feedback.mode == GL_FEEDBACK {

@@ -56,7 +56,7 @@ impl Gl {
     /// `glBlendFunc`: the source and destination factors used while `GL_BLEND` is enabled.
     /// A factor GL does not know → `GL_INVALID_ENUM`.
     pub fn blend_func(&mut self, sfactor: GLenum, dfactor: GLenum) {
-        if self.compiled(|| ListCommand::BlendFunc(sfactor, dfactor)) || self.reject_inside_begin_end() {
+        if self.compiled_state_call(|| ListCommand::BlendFunc(sfactor, dfactor)) {
             return;
         }
         if !blend_factor(sfactor) || !blend_factor(dfactor) {
@@ -69,7 +69,7 @@ impl Gl {
     /// `glAlphaFunc`: the comparison (`GL_NEVER` .. `GL_ALWAYS`) and reference (clamped to
     /// [0, 1]) of the alpha test. Another function → `GL_INVALID_ENUM`.
     pub fn alpha_func(&mut self, func: GLenum, reference: GLclampf) {
-        if self.compiled(|| ListCommand::AlphaFunc(func, reference)) || self.reject_inside_begin_end() {
+        if self.compiled_state_call(|| ListCommand::AlphaFunc(func, reference)) {
             return;
         }
         if !(GL_NEVER..=GL_ALWAYS).contains(&func) {
@@ -95,7 +95,7 @@ impl Gl {
     /// values) or `GL_FOG_INDEX` (colour-index mode: kept, not drawn). Another name or mode →
     /// `GL_INVALID_ENUM`; a short slice → `GL_INVALID_VALUE`.
     pub fn fogfv(&mut self, pname: GLenum, params: &[GLfloat]) {
-        if self.compiled(|| ListCommand::Fog(pname, params.to_vec())) || self.reject_inside_begin_end() {
+        if self.compiled_state_call(|| ListCommand::Fog(pname, params.to_vec())) {
             return;
         }
         let Some(values) = params.get(..Self::fog_param_count(pname)) else {

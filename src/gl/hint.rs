@@ -35,7 +35,7 @@ impl Gl {
     /// `GL_PERSPECTIVE_CORRECTION_HINT`, `GL_POINT_SMOOTH_HINT`, `GL_LINE_SMOOTH_HINT`,
     /// `GL_POLYGON_SMOOTH_HINT` or `GL_FOG_HINT`; recorded, with no effect on the picture.
     pub fn hint(&mut self, target: GLenum, mode: GLenum) {
-        if self.compiled(|| ListCommand::Hint(target, mode)) || self.reject_inside_begin_end() {
+        if self.compiled_state_call(|| ListCommand::Hint(target, mode)) {
             return;
         }
         let known_mode = matches!(mode, GL_FASTEST | GL_NICEST | GL_DONT_CARE);

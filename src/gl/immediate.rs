@@ -229,7 +229,7 @@ impl Gl {
     pub fn rectf(&mut self, x1: GLfloat, y1: GLfloat, x2: GLfloat, y2: GLfloat) {
         // One command, as Mesa's `OPCODE_RECTF`: inside `begin`/`end` (directly or from a list
         // called there) it is `GL_INVALID_OPERATION` and draws nothing (GL 1.1 §2.9).
-        if self.compiled(|| super::lists::ListCommand::Rect([x1, y1, x2, y2])) || self.reject_inside_begin_end() {
+        if self.compiled_state_call(|| super::lists::ListCommand::Rect([x1, y1, x2, y2])) {
             return;
         }
         // In GL_COMPILE_AND_EXECUTE the rectangle is recorded once, not also as its vertices.

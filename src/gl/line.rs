@@ -39,15 +39,9 @@ pub(crate) enum LineCall {
 pub(crate) const LINE_ENABLES: &[GLenum] = &[GL_LINE_SMOOTH, GL_LINE_STIPPLE];
 
 impl Gl {
-    /// The gate of the group's calls: compiled into the list being built (false: carry on), or
-    /// `GL_INVALID_OPERATION` inside `begin`/`end`.
-    fn compiled_line(&mut self, call: LineCall) -> bool {
-        self.compiled(|| ListCommand::Line(call)) || self.reject_inside_begin_end()
-    }
-
     /// `glLineWidth`: `width <= 0` (or NaN) → `GL_INVALID_VALUE`.
     pub fn line_width(&mut self, width: GLfloat) {
-        if self.compiled_line(LineCall::Width(width)) {
+        if self.compiled_state_call(|| ListCommand::Line(LineCall::Width(width))) {
             return;
         }
         if width.is_nan() || width <= 0.0 {
@@ -60,7 +54,7 @@ impl Gl {
     /// `glLineStipple(factor, pattern)`: no argument is an error, the factor is clamped to
     /// 1..=256.
     pub fn line_stipple(&mut self, factor: GLint, pattern: GLushort) {
-        if self.compiled_line(LineCall::Stipple(factor, pattern)) {
+        if self.compiled_state_call(|| ListCommand::Line(LineCall::Stipple(factor, pattern))) {
             return;
         }
         self.server.line.stipple = (factor.clamp(1, MAX_STIPPLE_FACTOR), pattern);

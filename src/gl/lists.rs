@@ -197,6 +197,12 @@ impl Gl {
         !list.execute
     }
 
+    /// The gate of a state call: compiled into the list being built (true: the call is done),
+    /// or refused inside `begin`/`end` with `GL_INVALID_OPERATION` (true); false: carry on.
+    pub(crate) fn compiled_state_call(&mut self, command: impl FnOnce() -> ListCommand) -> bool {
+        self.compiled(command) || self.reject_inside_begin_end()
+    }
+
     /// Adds a vertex GLU made (position and attributes evaluated on the surface) to the open
     /// primitive, or to the list being compiled: what GLU's `glNormal3fv`/`glVertex3fv` calls
     /// do for a trimmed surface.

@@ -441,7 +441,7 @@ impl Gl {
 
     /// `glActiveTexture`: selects the texture unit (the evaluators only work on unit 0).
     pub fn active_texture(&mut self, texture: GLenum) {
-        if self.compiled(|| lists::ListCommand::ActiveTexture(texture)) || self.reject_inside_begin_end() {
+        if self.compiled_state_call(|| lists::ListCommand::ActiveTexture(texture)) {
             return;
         }
         if !(GL_TEXTURE0..=GL_TEXTURE31).contains(&texture) {

@@ -158,8 +158,7 @@ impl Gl {
     /// negative ones mirror, 0 draws nothing). Inside `begin`/`end` → `GL_INVALID_OPERATION`.
     /// Compiled into display lists.
     pub fn pixel_zoom(&mut self, xfactor: GLfloat, yfactor: GLfloat) {
-        if self.compiled(|| ListCommand::Pixels(PixelCommand::Zoom(xfactor, yfactor))) || self.reject_inside_begin_end()
-        {
+        if self.compiled_state_call(|| ListCommand::Pixels(PixelCommand::Zoom(xfactor, yfactor))) {
             return;
         }
         self.server.pixel_state.mode.zoom = [xfactor, yfactor];
@@ -169,8 +168,7 @@ impl Gl {
     /// and `GL_INDEX_OFFSET` (truncated to integers, as Mesa's cast), the colour and depth
     /// scales and biases. Another name → `GL_INVALID_ENUM`. Compiled into display lists.
     pub fn pixel_transferf(&mut self, pname: GLenum, param: GLfloat) {
-        if self.compiled(|| ListCommand::Pixels(PixelCommand::Transfer(pname, param))) || self.reject_inside_begin_end()
-        {
+        if self.compiled_state_call(|| ListCommand::Pixels(PixelCommand::Transfer(pname, param))) {
             return;
         }
         let mode = &mut self.server.pixel_state.mode;

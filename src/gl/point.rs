@@ -34,7 +34,7 @@ impl Gl {
     /// `glPointSize`: `size <= 0` (or NaN) → `GL_INVALID_VALUE`; inside `begin`/`end` →
     /// `GL_INVALID_OPERATION`. Compiled into display lists.
     pub fn point_size(&mut self, size: GLfloat) {
-        if self.compiled(|| ListCommand::Point(PointCall::Size(size))) || self.reject_inside_begin_end() {
+        if self.compiled_state_call(|| ListCommand::Point(PointCall::Size(size))) {
             return;
         }
         if size.is_nan() || size <= 0.0 {

@@ -49,16 +49,10 @@ pub(crate) const POLYGON_ENABLES: &[GLenum] = &[
 ];
 
 impl Gl {
-    /// The gate of the group's calls: compiled into the list being built (false: carry on), or
-    /// `GL_INVALID_OPERATION` inside `begin`/`end`.
-    fn compiled_polygon(&mut self, call: PolygonCall) -> bool {
-        self.compiled(|| ListCommand::Polygon(call)) || self.reject_inside_begin_end()
-    }
-
     /// `glPolygonMode(face, mode)`: a mode other than `GL_POINT`, `GL_LINE`, `GL_FILL`, then a
     /// face other than `GL_FRONT`, `GL_BACK`, `GL_FRONT_AND_BACK` → `GL_INVALID_ENUM`.
     pub fn polygon_mode(&mut self, face: GLenum, mode: GLenum) {
-        if self.compiled_polygon(PolygonCall::Mode(face, mode)) {
+        if self.compiled_state_call(|| ListCommand::Polygon(PolygonCall::Mode(face, mode))) {
             return;
         }
         if !matches!(mode, GL_POINT | GL_LINE | GL_FILL) {
@@ -82,7 +76,7 @@ impl Gl {
 
     /// `glFrontFace`: `GL_CW` or `GL_CCW`, else `GL_INVALID_ENUM`.
     pub fn front_face(&mut self, mode: GLenum) {
-        if self.compiled_polygon(PolygonCall::FrontFace(mode)) {
+        if self.compiled_state_call(|| ListCommand::Polygon(PolygonCall::FrontFace(mode))) {
             return;
         }
         if mode != GL_CW && mode != GL_CCW {
@@ -94,7 +88,7 @@ impl Gl {
 
     /// `glCullFace`: `GL_FRONT`, `GL_BACK` or `GL_FRONT_AND_BACK`, else `GL_INVALID_ENUM`.
     pub fn cull_face(&mut self, mode: GLenum) {
-        if self.compiled_polygon(PolygonCall::CullFace(mode)) {
+        if self.compiled_state_call(|| ListCommand::Polygon(PolygonCall::CullFace(mode))) {
             return;
         }
         if !matches!(mode, GL_FRONT | GL_BACK | GL_FRONT_AND_BACK) {
@@ -106,7 +100,7 @@ impl Gl {
 
     /// `glPolygonOffset(factor, units)`: no value is an error (Mesa stores any float).
     pub fn polygon_offset(&mut self, factor: GLfloat, units: GLfloat) {
-        if self.compiled_polygon(PolygonCall::Offset(factor, units)) {
+        if self.compiled_state_call(|| ListCommand::Polygon(PolygonCall::Offset(factor, units))) {
             return;
         }
         self.server.polygon.offset = (factor, units);

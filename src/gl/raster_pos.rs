@@ -88,7 +88,7 @@ impl Gl {
     }
 
     fn raster_pos(&mut self, p: [f32; 4]) {
-        if self.compiled(|| ListCommand::RasterPos(p)) || self.reject_inside_begin_end() {
+        if self.compiled_state_call(|| ListCommand::RasterPos(p)) {
             return;
         }
         self.flush_current();
@@ -194,7 +194,7 @@ impl Gl {
     /// to [0, 1] and mapped into the depth range, w 1, the eye distance 0, the current colour
     /// and texture coordinates (not lit), as Mesa's `window_pos3f` sets them.
     pub fn window_pos3f(&mut self, x: GLfloat, y: GLfloat, z: GLfloat) {
-        if self.compiled(|| ListCommand::WindowPos([x, y, z])) || self.reject_inside_begin_end() {
+        if self.compiled_state_call(|| ListCommand::WindowPos([x, y, z])) {
             return;
         }
         self.flush_current();

@@ -186,7 +186,7 @@ impl Gl {
     /// The common start of the name-stack calls: compiled, rejected inside `begin`/`end`,
     /// ignored outside selection mode; else the hits so far are gathered. True to go on.
     fn name_call(&mut self, command: ListCommand) -> bool {
-        if self.compiled(|| command) || self.reject_inside_begin_end() {
+        if self.compiled_state_call(|| command) {
             return false;
         }
         if self.render_mode_value() != GL_SELECT {

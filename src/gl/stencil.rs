@@ -21,7 +21,7 @@ fn stencil_op_known(op: GLenum) -> bool {
 impl Gl {
     /// Records a fragment call in the list being compiled; true when it must not run now.
     pub(crate) fn compiled_fragment(&mut self, call: FragmentCall) -> bool {
-        self.compiled(|| ListCommand::Fragment(call)) || self.reject_inside_begin_end()
+        self.compiled_state_call(|| ListCommand::Fragment(call))
     }
 
     /// `glStencilFunc(func, ref, mask)`: the comparison (`GL_NEVER` .. `GL_ALWAYS`, else

@@ -14,7 +14,7 @@ impl Gl {
     /// shorter than that → `GL_INVALID_VALUE`; inside `begin`/`end` → `GL_INVALID_OPERATION`.
     pub fn polygon_stipple(&mut self, mask: &[GLubyte]) {
         let rows = unpack_bitmap(self.unpack_store(), 32, 32, mask).map(|bits| stipple_rows(&bits));
-        if self.compiled(|| ListCommand::PolygonStipple(rows)) || self.reject_inside_begin_end() {
+        if self.compiled_state_call(|| ListCommand::PolygonStipple(rows)) {
             return;
         }
         self.set_polygon_stipple(rows);

@@ -126,7 +126,7 @@ impl Gl {
         let Some(values) = params.get(..Self::tex_gen_param_count(pname)) else {
             return self.set_error(GL_INVALID_VALUE);
         };
-        if self.compiled(|| ListCommand::TexGen(coord, pname, values.to_vec())) || self.reject_inside_begin_end() {
+        if self.compiled_state_call(|| ListCommand::TexGen(coord, pname, values.to_vec())) {
             return;
         }
         let Some(index) = coord_index(coord) else { return self.set_error(GL_INVALID_ENUM) };

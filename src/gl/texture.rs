@@ -318,7 +318,7 @@ impl Gl {
     /// `GL_TEXTURE_2D`, creating it on first use. Another target → `GL_INVALID_ENUM`; an
     /// object made for the other target → `GL_INVALID_OPERATION`.
     pub fn bind_texture(&mut self, target: GLenum, texture: GLuint) {
-        if self.compiled(|| ListCommand::BindTexture(target, texture)) || self.reject_inside_begin_end() {
+        if self.compiled_state_call(|| ListCommand::BindTexture(target, texture)) {
             return;
         }
         let Some(t) = target_index(target) else { return self.set_error(GL_INVALID_ENUM) };

@@ -68,6 +68,29 @@ impl XOptions {
     }
 }
 
+impl XOptions {
+    /// Whether an option sets a GLUT setting ([`Gl::glut_take_x_settings`]).
+    #[must_use]
+    pub fn sets_settings(&self) -> bool {
+        self.iconic || self.direct.is_some()
+    }
+}
+
+impl crate::gl::Gl {
+    /// The X options that are GLUT settings `glutGet` reads back, as freeglut's `glutInit`
+    /// takes them: `-iconic`, and `-direct`/`-indirect` as `GLUT_DIRECT_RENDERING`.
+    pub fn glut_take_x_settings(&mut self, x: &XOptions) {
+        use super::consts::*;
+        if x.iconic {
+            self.glut_init_iconic();
+        }
+        if let Some(direct) = x.direct {
+            let mode = if direct { GLUT_FORCE_DIRECT_CONTEXT } else { GLUT_FORCE_INDIRECT_CONTEXT };
+            self.glut_set_option(GLUT_DIRECT_RENDERING, mode);
+        }
+    }
+}
+
 /// `glutInit`'s split of a program's arguments (the first, the program's name, stays).
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct InitArgs {

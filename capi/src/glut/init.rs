@@ -107,13 +107,7 @@ fn apply_x_options(x: &XOptions) {
     if let Some(display) = &x.display {
         std::env::set_var("DISPLAY", display);
     }
-    if x.iconic {
-        set_glut(Gl::glut_init_iconic);
-    }
-    if let Some(direct) = x.direct {
-        let mode = if direct { GLUT_FORCE_DIRECT_CONTEXT } else { GLUT_FORCE_INDIRECT_CONTEXT };
-        set_glut(|gl| gl.glut_set_option(GLUT_DIRECT_RENDERING, mode));
-    }
+    set_glut(|gl| gl.glut_take_x_settings(x));
 }
 
 /// Whether `-gldebug` was given.
