@@ -69,7 +69,7 @@ impl XOptions {
 }
 
 impl XOptions {
-    /// Whether an option sets a GLUT setting ([`Gl::glut_take_x_settings`]).
+    /// Whether an option sets a GLUT setting ([`Gl::glut_take_x_settings`](crate::gl::Gl::glut_take_x_settings)).
     #[must_use]
     pub fn sets_settings(&self) -> bool {
         self.iconic || self.direct.is_some()
