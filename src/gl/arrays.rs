@@ -29,8 +29,8 @@
 
 use super::client_memory::{to_bytes, ArrayElement, ClientPointer};
 use super::consts::*;
-use super::get::{put_flag, row, Kind, StateVar};
 use super::lists::ListCommand;
+use super::state_var::{put_flag, row, Kind, StateVar};
 use super::types::*;
 use super::variants::GlComponent;
 use super::Gl;

@@ -9,9 +9,8 @@
 //! index into the raster position of an RGBA context).
 
 use super::consts::*;
-use super::get::{row, Kind, StateVar};
 use super::lists::ListCommand;
-use super::pixel_commands::PixelCommand;
+use super::state_var::{row, Kind, StateVar};
 use super::types::*;
 use super::Gl;
 
@@ -40,11 +39,31 @@ fn to_uint(c: f32) -> GLuint {
     }
 }
 
+/// A colour-index call as a display list holds it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) enum ColorIndexCall {
+    /// `glIndex*`.
+    Index(GLfloat),
+    /// `glClearIndex`.
+    ClearIndex(GLfloat),
+    /// `glIndexMask`.
+    IndexMask(GLuint),
+}
+
 impl Gl {
+    /// Replays a listed colour-index call.
+    pub(crate) fn replay_color_index_call(&mut self, call: ColorIndexCall) {
+        match call {
+            ColorIndexCall::Index(c) => self.indexf(c),
+            ColorIndexCall::ClearIndex(c) => self.replay_clear_index(c),
+            ColorIndexCall::IndexMask(mask) => self.index_mask(mask),
+        }
+    }
+
     /// `glIndexf`: the current colour index. Allowed between `begin` and `end`; compiled into
     /// display lists.
     pub fn indexf(&mut self, c: GLfloat) {
-        if self.compiled(|| ListCommand::Pixels(PixelCommand::Index(c))) {
+        if self.compiled(|| ListCommand::ColorIndex(ColorIndexCall::Index(c))) {
             return;
         }
         self.server.color_index.current = c;
@@ -109,7 +128,7 @@ impl Gl {
     /// none: the picture does not change). Stored as Mesa stores it, as an unsigned integer.
     /// Inside `begin`/`end` → `GL_INVALID_OPERATION`. Compiled into display lists.
     pub fn clear_index(&mut self, c: GLfloat) {
-        if self.compiled_state_call(|| ListCommand::Pixels(PixelCommand::ClearIndex(c))) {
+        if self.compiled_state_call(|| ListCommand::ColorIndex(ColorIndexCall::ClearIndex(c))) {
             return;
         }
         self.server.color_index.clear = to_uint(c);
@@ -125,7 +144,7 @@ impl Gl {
     /// `glIndexMask`: which bits of an index buffer are written (none here: the window is
     /// RGBA). Inside `begin`/`end` → `GL_INVALID_OPERATION`. Compiled into display lists.
     pub fn index_mask(&mut self, mask: GLuint) {
-        if self.compiled_state_call(|| ListCommand::Pixels(PixelCommand::IndexMask(mask))) {
+        if self.compiled_state_call(|| ListCommand::ColorIndex(ColorIndexCall::IndexMask(mask))) {
             return;
         }
         self.server.color_index.mask = mask;

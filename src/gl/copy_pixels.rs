@@ -13,7 +13,6 @@
 use super::consts::*;
 use super::frame::Command;
 use super::lists::ListCommand;
-use super::pixel_commands::PixelCommand;
 use super::pixel_transfer::{ColorTransfer, DepthTransfer};
 use super::pixel_zoom::zoomed_pixels;
 use super::types::*;
@@ -109,8 +108,7 @@ impl Gl {
     /// position; in feedback mode a `GL_COPY_PIXEL_TOKEN` is returned instead. Compiled into
     /// display lists.
     pub fn copy_pixels(&mut self, x: GLint, y: GLint, width: GLsizei, height: GLsizei, type_: GLenum) {
-        let call = PixelCommand::CopyPixels([x, y, width, height], type_);
-        if self.compiled_state_call(|| ListCommand::Pixels(call)) {
+        if self.compiled_state_call(|| ListCommand::CopyPixels([x, y, width, height], type_)) {
             return;
         }
         if width < 0 || height < 0 {

@@ -11,7 +11,6 @@
 
 use super::consts::*;
 use super::lists::ListCommand;
-use super::pixel_commands::PixelCommand;
 use super::pixels::PixelStore;
 use super::texture::{base_format, fits_level, strip_border, target_index, TexLevel, MAX_TEXTURE_SIZE};
 
@@ -51,6 +50,35 @@ pub(crate) struct CopyTexSubImage {
     pub level: GLint,
     pub offset: [GLint; 2],
     pub rect: [GLint; 4],
+}
+
+/// A call of this file as a display list holds it (GL 1.1 §5.4 compiles every one).
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) enum CopyTextureCall {
+    /// `glCopyTexImage1D/2D`.
+    CopyTexImage(CopyTexImage),
+    /// `glCopyTexSubImage1D/2D`.
+    CopyTexSubImage(CopyTexSubImage),
+    /// `glTexSubImage1D` with the client's bytes and the unpack modes of compile time.
+    TexSubImage1D(TexSubImage1D, PixelStore, Vec<u8>),
+    /// `glPrioritizeTextures`, as (name, priority) pairs.
+    PrioritizeTextures(Vec<(GLuint, GLclampf)>),
+}
+
+impl Gl {
+    /// Replays a listed call of this file.
+    pub(crate) fn replay_copy_texture_call(&mut self, call: &CopyTextureCall) {
+        match call {
+            CopyTextureCall::CopyTexImage(call) => self.copy_tex_image(*call),
+            CopyTextureCall::CopyTexSubImage(call) => self.copy_tex_sub_image(*call),
+            CopyTextureCall::TexSubImage1D(call, store, bytes) => self.replay_tex_sub_image_1d(*call, *store, bytes),
+            CopyTextureCall::PrioritizeTextures(pairs) => {
+                for &(name, priority) in pairs {
+                    self.prioritize_textures(1, &[name], &[priority]);
+                }
+            }
+        }
+    }
 }
 
 impl Gl {
@@ -97,7 +125,7 @@ impl Gl {
     }
 
     pub(crate) fn copy_tex_image(&mut self, call: CopyTexImage) {
-        if self.compiled_state_call(|| ListCommand::Pixels(PixelCommand::CopyTexImage(call))) {
+        if self.compiled_state_call(|| ListCommand::CopyTexture(CopyTextureCall::CopyTexImage(call))) {
             return;
         }
         if target_index(call.target) != Some(usize::from(call.dims - 1)) {
@@ -159,7 +187,7 @@ impl Gl {
     }
 
     pub(crate) fn copy_tex_sub_image(&mut self, call: CopyTexSubImage) {
-        if self.compiled_state_call(|| ListCommand::Pixels(PixelCommand::CopyTexSubImage(call))) {
+        if self.compiled_state_call(|| ListCommand::CopyTexture(CopyTextureCall::CopyTexSubImage(call))) {
             return;
         }
         if target_index(call.target) != Some(usize::from(call.dims - 1)) {
@@ -213,7 +241,7 @@ impl Gl {
         let bytes: &[u8] = bytemuck::cast_slice(pixels);
         let store = self.unpack_store();
         let call = TexSubImage1D { target, level, xoffset, width, format: (format, type_) };
-        if self.compiled(|| ListCommand::Pixels(PixelCommand::TexSubImage1D(call, store, bytes.to_vec())))
+        if self.compiled(|| ListCommand::CopyTexture(CopyTextureCall::TexSubImage1D(call, store, bytes.to_vec())))
             || self.reject_inside_begin_end()
         {
             return;
@@ -266,7 +294,7 @@ impl Gl {
             let count = usize::try_from(n).unwrap_or(0);
             textures.iter().zip(priorities).take(count).map(|(&t, &p)| (t, p)).collect()
         };
-        if self.compiled(|| ListCommand::Pixels(PixelCommand::PrioritizeTextures(pairs())))
+        if self.compiled(|| ListCommand::CopyTexture(CopyTextureCall::PrioritizeTextures(pairs())))
             || self.reject_inside_begin_end()
         {
             return;

@@ -10,8 +10,8 @@
 //! list record and replay, the `glGet` rows and the attribute group, side by side.
 
 use super::consts::*;
-use super::get::{put_enum, put_flag, row, Kind, StateVar};
 use super::lists::ListCommand;
+use super::state_var::{put_enum, put_flag, row, Kind, StateVar};
 use super::types::*;
 use super::Gl;
 

@@ -10,6 +10,7 @@
 
 use super::consts::*;
 use super::fragments::{FragmentCall, BACK_BUFFER, FRONT_BUFFER};
+use super::frame::Command;
 use super::types::*;
 use super::Gl;
 
@@ -28,6 +29,14 @@ fn buffers_named(mode: GLenum) -> Result<u8, GLenum> {
 }
 
 impl Gl {
+    /// Records a buffer swap in a double-buffered context (`glutSwapBuffers`); nothing in a
+    /// single-buffered one. Inside `begin`/`end` GL would end the primitive's frame: ignored.
+    pub fn record_swap_buffers(&mut self) {
+        if self.server.fragments.config.double && !self.inside_begin_end() {
+            self.recorder.frame.commands.push(Command::SwapBuffers);
+        }
+    }
+
     /// `glDrawBuffer`: the colour buffers draws and clears write (see the module's table).
     pub fn draw_buffer(&mut self, mode: GLenum) {
         if self.compiled_fragment(FragmentCall::DrawBuffer(mode)) {

@@ -15,11 +15,10 @@
 
 use super::consts::*;
 use super::feedback_prims::{self, FeedbackPrimitive, FeedbackVertex};
-use super::frame::{Command, DrawState};
+use super::frame::Command;
 use super::types::*;
 use super::vertex::Vertex;
 use super::Gl;
-use glam::Vec4;
 
 /// The feedback state of a context.
 #[derive(Clone, Debug, PartialEq)]
@@ -338,19 +337,6 @@ impl Gl {
             out.extend_from_slice(&v.tex);
         }
     }
-}
-
-/// The texture coordinate GL reports for a vertex: with a texture enabled, generated where
-/// `glTexGen` is on (GL 1.1 §2.10.4) and through the texture matrix; as given without one.
-pub(crate) fn feedback_tex_coord(state: &DrawState, v: &Vertex) -> [GLfloat; 4] {
-    let Some(texture) = &state.texture else { return v.tex_coord };
-    let given = Vec4::from_array(v.tex_coord);
-    let generated = texture.generate.map_or(given, |g| {
-        let object = Vec4::from_array(v.position);
-        let eye = state.modelview * object;
-        g.apply(given, object, eye, state.eye_normal(state.normal_matrix(), v.normal))
-    });
-    (texture.matrix * generated).to_array()
 }
 
 #[cfg(test)]

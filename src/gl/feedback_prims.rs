@@ -122,7 +122,7 @@ pub(crate) fn report(mode: GLenum, state: &DrawState, vertices: &[Vertex], hidde
         .iter()
         .map(|v| {
             let s = shader.shade(v);
-            let tex = Vec4::from_array(super::feedback::feedback_tex_coord(state, v));
+            let tex = Vec4::from_array(feedback_tex_coord(state, v));
             Stage { clip: s.clip, eye: s.eye, front: s.front, back: s.back, tex }
         })
         .collect();
@@ -313,6 +313,19 @@ fn plane_distance(state: &DrawState, s: &Stage, k: usize) -> f32 {
         5 => c.w - c.z,
         _ => Vec4::from_array(state.clip_planes[k - 6]).dot(s.eye),
     }
+}
+
+/// The texture coordinate GL reports for a vertex: with a texture enabled, generated where
+/// `glTexGen` is on (GL 1.1 §2.10.4) and through the texture matrix; as given without one.
+fn feedback_tex_coord(state: &DrawState, v: &Vertex) -> [GLfloat; 4] {
+    let Some(texture) = &state.texture else { return v.tex_coord };
+    let given = Vec4::from_array(v.tex_coord);
+    let generated = texture.generate.map_or(given, |g| {
+        let object = Vec4::from_array(v.position);
+        let eye = state.modelview * object;
+        g.apply(given, object, eye, state.eye_normal(state.normal_matrix(), v.normal))
+    });
+    (texture.matrix * generated).to_array()
 }
 
 #[cfg(test)]

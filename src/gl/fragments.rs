@@ -7,7 +7,7 @@
 //! `glGet` names.
 
 use super::consts::*;
-use super::get::{put, put_enum, put_flag, row, Kind, StateVar};
+use super::state_var::{put, put_enum, put_flag, row, Kind, StateVar};
 use super::types::*;
 use super::Gl;
 
@@ -210,14 +210,6 @@ impl Gl {
             color_write: f.color_write,
             logic_op: self.capability(GL_COLOR_LOGIC_OP).then_some(f.logic_op),
             draw_buffers: self.buffers_of(f.draw_buffer),
-        }
-    }
-
-    /// Records a buffer swap in a double-buffered context (`glutSwapBuffers`); nothing in a
-    /// single-buffered one. Inside `begin`/`end` GL would end the primitive's frame: ignored.
-    pub fn record_swap_buffers(&mut self) {
-        if self.server.fragments.config.double && !self.inside_begin_end() {
-            self.recorder.frame.commands.push(super::frame::Command::SwapBuffers);
         }
     }
 

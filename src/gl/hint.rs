@@ -4,8 +4,8 @@
 //! (checked against OSMesa: an unknown mode or target → `GL_INVALID_ENUM`).
 
 use super::consts::*;
-use super::get::{put_enum, row, Kind, StateVar};
 use super::lists::ListCommand;
+use super::state_var::{put_enum, row, Kind, StateVar};
 use super::types::*;
 use super::Gl;
 

@@ -5,8 +5,8 @@
 //! calls' list records and the `glGet` rows. The pattern of `depth.rs`.
 
 use super::consts::*;
-use super::get::{row, Kind, StateVar};
 use super::lists::ListCommand;
+use super::state_var::{row, Kind, StateVar};
 use super::types::*;
 use super::Gl;
 

@@ -18,10 +18,10 @@
 
 use super::bitmap::BitmapCall;
 use super::consts::*;
+use super::eval::MeshJob;
 use super::frame::Call;
-use super::get::{put_enum, row, Kind, StateVar};
-use super::mesh_job::MeshJob;
 use super::pixels::PixelStore;
+use super::state_var::{put_enum, row, Kind, StateVar};
 use super::types::*;
 use super::vertex::Vertex;
 use super::Gl;
@@ -149,8 +149,14 @@ pub(crate) enum ListCommand {
     PushName(GLuint),
     PopName,
     PassThrough(GLfloat),
-    /// The pixel path's calls (`pixel_commands.rs`).
-    Pixels(super::pixel_commands::PixelCommand),
+    /// `glCopyPixels`: x, y, width, height and the buffer.
+    CopyPixels([GLint; 4], GLenum),
+    /// The texture copies, `glTexSubImage1D` and `glPrioritizeTextures` (`copy_texture.rs`).
+    CopyTexture(super::copy_texture::CopyTextureCall),
+    /// The colour-index calls (`color_index.rs`).
+    ColorIndex(super::color_index::ColorIndexCall),
+    /// The pixel zoom, transfer and maps (`pixel_transfer.rs`).
+    PixelTransfer(super::pixel_transfer::PixelTransferCall),
     /// The stencil, accumulation, mask, scissor, logic-op and buffer calls (`gl/fragments.rs`).
     Fragment(super::fragments::FragmentCall),
     Depth(super::depth::DepthCall),
@@ -501,7 +507,10 @@ impl Gl {
             C::WindowPos([x, y, z]) => self.window_pos3f(*x, *y, *z),
             C::Bitmap(call, bits) => self.draw_bitmap(*call, bits.as_deref()),
             C::DrawPixels(size, format, type_, rgba) => self.draw_rgba(*size, *format, *type_, rgba.as_deref()),
-            C::Pixels(command) => self.execute_pixel_command(command),
+            C::CopyPixels([x, y, w, h], type_) => self.copy_pixels(*x, *y, *w, *h, *type_),
+            C::CopyTexture(call) => self.replay_copy_texture_call(call),
+            C::ColorIndex(call) => self.replay_color_index_call(*call),
+            C::PixelTransfer(call) => self.replay_pixel_transfer_call(call),
             C::CallList(list) => self.call_list(*list),
             C::CallLists(n, type_, names) => self.call_lists(*n, *type_, names),
             C::ListBase(base) => self.list_base(*base),

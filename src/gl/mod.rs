@@ -14,7 +14,6 @@ mod bitmap;
 mod client_memory;
 pub(crate) mod clip;
 mod color_index;
-mod color_material;
 pub mod consts;
 mod copy_pixels;
 mod copy_texture;
@@ -31,16 +30,14 @@ mod get;
 mod grid_vertices;
 mod hint;
 mod immediate;
-mod light_query;
 mod lighting;
 mod line;
 pub(crate) mod lists;
 mod masks;
 mod matrix;
-mod mesh_job;
 mod offset;
 mod param_variants;
-mod pixel_commands;
+mod pixel_pack;
 mod pixel_transfer;
 mod pixel_unpack;
 pub mod pixel_zoom;
@@ -53,6 +50,7 @@ mod read_pixels;
 mod read_stencil;
 mod select;
 pub(crate) mod shade;
+mod state_var;
 mod stencil;
 mod stipple;
 mod stipple_query;
@@ -66,6 +64,7 @@ mod window_read;
 pub use arrays::PointerArg;
 pub use client_memory::{ArrayElement, ClientArray, ClientMemory, ClientPointer};
 pub use copy_pixels::{CopyFragment, PixelCopy};
+pub use eval::{MapSample, MeshJob};
 pub use eval::{MapTarget, Slot};
 pub use fragment::Fog;
 pub use fragments::{BufferConfig, FragmentTests, Stencil};
@@ -73,7 +72,6 @@ pub use frame::{Call, Command, DrawState, Frame, GridMesh, MaterialChange, MeshM
 pub use grid_vertices::GridVertices;
 pub use lighting::{Light, Lighting, Material};
 pub use lists::MAX_LIST_NESTING;
-pub use mesh_job::{MapSample, MeshJob};
 pub use offset::PolygonOffset;
 pub use pixel_transfer::{ColorTransfer, DepthTransfer, MAX_PIXEL_MAP_TABLE};
 pub use select::SelectHit;
@@ -193,7 +191,7 @@ pub(crate) struct ServerState {
     /// `glTexGen`'s modes and planes.
     pub(super) tex_gen: texgen::TexGen,
     /// What Mesa's deferred `glMaterial` leaves of `GL_COLOR_MATERIAL`'s tracking.
-    pub(super) color_material_sync: color_material::ColorMaterialSync,
+    pub(super) color_material_sync: lighting::ColorMaterialSync,
     /// `glHint`'s requests.
     pub(super) hints: hint::Hints,
     /// Blending, the alpha test and fog.
@@ -225,7 +223,7 @@ impl ServerState {
             raster_pos: raster_pos::RasterPos::default(),
             textures: texture::Textures::default(),
             tex_gen: texgen::TexGen::default(),
-            color_material_sync: color_material::ColorMaterialSync::default(),
+            color_material_sync: lighting::ColorMaterialSync::default(),
             hints: hint::Hints::default(),
             fragment_ops: fragment::FragmentOps::default(),
             fragments: fragments::PerFragment::new(width, height),
@@ -263,7 +261,7 @@ pub(crate) struct Recorder {
     /// Vertex buffers of a recycled frame's meshes, reused by the next meshes (no page faults).
     pub(super) vertex_pool: Vec<GridVertices>,
     /// Small CPU meshes recorded but not yet evaluated (see `Gl::record_mesh`).
-    pub(super) pending_meshes: mesh_job::PendingMeshes,
+    pub(super) pending_meshes: eval::PendingMeshes,
     pub(super) tessellator: Tessellator,
     /// What reads the window mid-frame (`glCopyTexImage`).
     pub(super) window_reader: window_read::Reader,
@@ -278,7 +276,7 @@ impl Recorder {
             state_index: None,
             frame: Frame::default(),
             vertex_pool: Vec::new(),
-            pending_meshes: mesh_job::PendingMeshes::default(),
+            pending_meshes: eval::PendingMeshes::default(),
             tessellator: Tessellator::Cpu,
             window_reader: window_read::Reader::default(),
         }

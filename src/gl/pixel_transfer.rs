@@ -11,9 +11,8 @@
 //! `gl_pixel_attrib` holds no maps; measured: a map set between push and pop stays).
 
 use super::consts::*;
-use super::get::{int_limit, limit, put_flag, row, Kind, StateVar};
 use super::lists::ListCommand;
-use super::pixel_commands::PixelCommand;
+use super::state_var::{int_limit, limit, put_flag, row, Kind, StateVar};
 use super::types::*;
 use super::Gl;
 use std::sync::Arc;
@@ -153,12 +152,32 @@ fn clamped_float_to_ushort(x: f32) -> GLushort {
     (x.clamp(0.0, 1.0) * 65535.0).round_ties_even() as GLushort
 }
 
+/// A pixel-mode call as a display list holds it.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) enum PixelTransferCall {
+    /// `glPixelZoom`.
+    Zoom(GLfloat, GLfloat),
+    /// `glPixelTransfer*` (stored as the float call).
+    Transfer(GLenum, GLfloat),
+    /// `glPixelMap*`: map, size, and the values (as floats) copied at compile time.
+    Map(GLenum, GLsizei, Vec<GLfloat>),
+}
+
 impl Gl {
+    /// Replays a listed pixel-mode call.
+    pub(crate) fn replay_pixel_transfer_call(&mut self, call: &PixelTransferCall) {
+        match call {
+            PixelTransferCall::Zoom(x, y) => self.pixel_zoom(*x, *y),
+            PixelTransferCall::Transfer(pname, param) => self.pixel_transferf(*pname, *param),
+            PixelTransferCall::Map(map, size, values) => self.pixel_mapfv(*map, *size, values),
+        }
+    }
+
     /// `glPixelZoom`: the factors `glDrawPixels` and `glCopyPixels` scale pixels by (any value,
     /// negative ones mirror, 0 draws nothing). Inside `begin`/`end` → `GL_INVALID_OPERATION`.
     /// Compiled into display lists.
     pub fn pixel_zoom(&mut self, xfactor: GLfloat, yfactor: GLfloat) {
-        if self.compiled_state_call(|| ListCommand::Pixels(PixelCommand::Zoom(xfactor, yfactor))) {
+        if self.compiled_state_call(|| ListCommand::PixelTransfer(PixelTransferCall::Zoom(xfactor, yfactor))) {
             return;
         }
         self.server.pixel_state.mode.zoom = [xfactor, yfactor];
@@ -168,7 +187,7 @@ impl Gl {
     /// and `GL_INDEX_OFFSET` (truncated to integers, as Mesa's cast), the colour and depth
     /// scales and biases. Another name → `GL_INVALID_ENUM`. Compiled into display lists.
     pub fn pixel_transferf(&mut self, pname: GLenum, param: GLfloat) {
-        if self.compiled_state_call(|| ListCommand::Pixels(PixelCommand::Transfer(pname, param))) {
+        if self.compiled_state_call(|| ListCommand::PixelTransfer(PixelTransferCall::Transfer(pname, param))) {
             return;
         }
         let mode = &mut self.server.pixel_state.mode;
@@ -199,7 +218,7 @@ impl Gl {
     /// integers, `I_TO_I` keeps the values, the others clamp to [0, 1]. Compiled into lists.
     pub fn pixel_mapfv(&mut self, map: GLenum, mapsize: GLsizei, values: &[GLfloat]) {
         let kept = || values[..values.len().min(mapsize.clamp(0, MAX_PIXEL_MAP_TABLE as i32) as usize)].to_vec();
-        if self.compiled(|| ListCommand::Pixels(PixelCommand::Map(map, mapsize, kept())))
+        if self.compiled(|| ListCommand::PixelTransfer(PixelTransferCall::Map(map, mapsize, kept())))
             || self.reject_inside_begin_end()
         {
             return;

@@ -191,7 +191,7 @@ pub(crate) fn unpack_each(
         return Some(());
     }
     if type_ == GL_BITMAP {
-        let bits = super::bitmap::unpack_bitmap(store, width, height, data)?;
+        let bits = unpack_bitmap(store, width, height, data)?;
         bits.into_iter().for_each(|set| emit([f32::from(u8::from(set)), 0.0, 0.0, 1.0]));
         return Some(());
     }
@@ -245,9 +245,70 @@ fn packed_value(bytes: &[u8], swap: bool) -> u32 {
     }
 }
 
+/// Unpacks a `width` × `height` bitmap from `data` as GL reads it with `store` (rows bottom
+/// first, bit order per `GL_UNPACK_LSB_FIRST`, rows and bits skipped, rows aligned): one bool
+/// per pixel, row by row. `None` when `data` is shorter than the bitmap; negative sizes give an
+/// empty image (the call reports them).
+pub(crate) fn unpack_bitmap(store: PixelStore, width: GLsizei, height: GLsizei, data: &[u8]) -> Option<Vec<bool>> {
+    let (Ok(w), Ok(h)) = (usize::try_from(width), usize::try_from(height)) else { return Some(Vec::new()) };
+    if w == 0 || h == 0 {
+        return Some(Vec::new());
+    }
+    let stride = store.bitmap_row_stride(w);
+    let first_row = store.skip_rows * stride;
+    let needed = first_row + (h - 1) * stride + (store.skip_pixels + w).div_ceil(8);
+    if data.len() < needed {
+        return None;
+    }
+    let bit = |row: usize, i: usize| {
+        let b = store.skip_pixels + i;
+        let byte = data[first_row + row * stride + b / 8];
+        let mask = if store.lsb_first { 1 << (b % 8) } else { 0x80 >> (b % 8) };
+        byte & mask != 0
+    };
+    Some((0..h).flat_map(|j| (0..w).map(move |i| bit(j, i))).collect())
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    const MSB: PixelStore =
+        PixelStore { swap_bytes: false, lsb_first: false, row_length: 0, skip_rows: 0, skip_pixels: 0, alignment: 4 };
+
+    fn rows(bits: &[bool], w: usize) -> Vec<String> {
+        bits.chunks(w).map(|r| r.iter().map(|&b| if b { '#' } else { '.' }).collect()).collect()
+    }
+
+    #[test]
+    fn bitmaps_unpack_with_alignment_bit_order_and_skips() {
+        // 10 × 2: rows of 2 bytes, padded to 4 by the default alignment.
+        let data = [0b1000_0000, 0b0100_0000, 0xEE, 0xEE, 0b0000_0001, 0b1100_0000, 0xEE, 0xEE];
+        let bits = unpack_bitmap(MSB, 10, 2, &data).unwrap();
+        assert_eq!(rows(&bits, 10), ["#........#", ".......###"]);
+        let lsb = PixelStore { lsb_first: true, ..MSB };
+        assert_eq!(rows(&unpack_bitmap(lsb, 10, 2, &data).unwrap(), 10), [".......#..", "#........."]);
+        let one = PixelStore { alignment: 1, ..MSB };
+        assert_eq!(rows(&unpack_bitmap(one, 8, 2, &[0xF0, 0x0F]).unwrap(), 8), ["####....", "....####"]);
+        let skipped = PixelStore { skip_rows: 1, skip_pixels: 7, row_length: 16, alignment: 1, ..MSB };
+        assert_eq!(rows(&unpack_bitmap(skipped, 3, 1, &[0, 0, 0b0000_0001, 0b1000_0000]).unwrap(), 3), ["##."]);
+        assert_eq!(unpack_bitmap(MSB, 10, 2, &data[..5]), None, "the last row needs 2 bytes, not 4");
+        assert!(unpack_bitmap(MSB, 10, 2, &data[..6]).is_some());
+        assert_eq!(unpack_bitmap(MSB, 0, 5, &[]), Some(Vec::new()));
+    }
+
+    #[test]
+    fn pixels_unpack_to_rgba() {
+        let one = PixelStore { alignment: 1, ..MSB };
+        let rgb = unpack_image(one, (2, 1), GL_RGB, GL_UNSIGNED_BYTE, &[255, 0, 0, 0, 51, 255]).unwrap();
+        assert_eq!(rgb, [[1.0, 0.0, 0.0, 1.0], [0.0, 0.2, 1.0, 1.0]]);
+        // Rows of 3 luminance bytes are padded to 4.
+        let lum = unpack_image(MSB, (3, 2), GL_LUMINANCE, GL_UNSIGNED_BYTE, &[0, 0, 0, 9, 255, 255, 255]).unwrap();
+        assert_eq!(lum[3], [1.0, 1.0, 1.0, 1.0]);
+        assert_eq!(unpack_image(MSB, (3, 2), GL_LUMINANCE, GL_UNSIGNED_BYTE, &[0; 6]), None);
+        let floats: Vec<u8> = [0.25f32, 0.5, 0.75, 1.0].iter().flat_map(|f| f.to_ne_bytes()).collect();
+        assert_eq!(unpack_image(MSB, (1, 1), GL_RGBA, GL_FLOAT, &floats).unwrap(), [[0.25, 0.5, 0.75, 1.0]]);
+    }
 
     #[test]
     fn integers_normalise_as_mesa_converts_them() {

@@ -3,7 +3,7 @@
 //! imply (row length, skipped rows and pixels, row alignment).
 
 use super::consts::*;
-use super::get::{put_flag, row, Kind, StateVar};
+use super::state_var::{put_flag, row, Kind, StateVar};
 use super::types::*;
 use super::Gl;
 

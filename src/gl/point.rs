@@ -3,8 +3,8 @@
 //! record, its `glGet` row. The pattern of `depth.rs`.
 
 use super::consts::*;
-use super::get::{row, Kind, StateVar};
 use super::lists::ListCommand;
+use super::state_var::{row, Kind, StateVar};
 use super::types::*;
 use super::Gl;
 

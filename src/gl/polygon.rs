@@ -5,8 +5,8 @@
 //! applied, `offset.rs`.)
 
 use super::consts::*;
-use super::get::{put, put_enum, row, Kind, StateVar};
 use super::lists::ListCommand;
+use super::state_var::{put, put_enum, row, Kind, StateVar};
 use super::types::*;
 use super::Gl;
 

@@ -8,8 +8,8 @@
 //! `GL_LIGHTING` on, GL lights the raster colour; gleval keeps the current colour.
 
 use super::consts::*;
-use super::get::{put, put_flag, row, Kind, StateVar};
 use super::lists::ListCommand;
+use super::state_var::{put, put_flag, row, Kind, StateVar};
 use super::types::*;
 use super::Gl;
 use glam::{Mat4, Vec4};

@@ -15,8 +15,8 @@
 
 use super::consts::*;
 use super::feedback_prims::FeedbackPrimitive;
-use super::get::{int_limit, limit, row, Kind, StateVar};
 use super::lists::ListCommand;
+use super::state_var::{int_limit, limit, row, Kind, StateVar};
 use super::types::*;
 use super::Gl;
 

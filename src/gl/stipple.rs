@@ -2,9 +2,9 @@
 //! over window coordinates that keeps or drops each fragment of a filled polygon; the raster
 //! shader tests it. (`glLineStipple` is the line group's, `line.rs`.)
 
-use super::bitmap::unpack_bitmap;
 use super::consts::*;
 use super::lists::ListCommand;
+use super::pixel_unpack::unpack_bitmap;
 use super::types::*;
 use super::Gl;
 

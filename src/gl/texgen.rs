@@ -208,7 +208,7 @@ impl Gl {
         }
         let count = Self::tex_gen_param_count(pname);
         match params.get_mut(..count) {
-            Some(out) => out.iter_mut().zip(values).for_each(|(o, v)| *o = super::light_query::c_int(v)),
+            Some(out) => out.iter_mut().zip(values).for_each(|(o, v)| *o = super::state_var::c_int(v)),
             None => self.set_error(GL_INVALID_VALUE),
         }
     }

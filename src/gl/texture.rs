@@ -13,9 +13,9 @@
 //! environment, `texture/query.rs` `glGetTex*`.
 
 use super::consts::*;
-use super::get::{int_limit, limit, put_enum, row, Kind, StateVar};
 use super::lists::ListCommand;
 use super::pixel_unpack::format_components;
+use super::state_var::{int_limit, limit, put_enum, row, Kind, StateVar};
 use super::texgen::{TexGen, TexGenState};
 use super::types::*;
 use super::Gl;

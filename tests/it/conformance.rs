@@ -257,7 +257,7 @@ fn linespoints_matches_mesa() {
 }
 
 /// GL_COLOR_MATERIAL as Mesa 22.3 does it: the Red Book's set-up lights a sphere with the
-/// glMaterial's diffuse until a glColor changes the colour (`src/gl/color_material.rs`).
+/// glMaterial's diffuse until a glColor changes the colour (`src/gl/lighting/color_material.rs`).
 #[test]
 fn color_material_matches_mesa() {
     check("colormat", colormat::app, 0.0);

@@ -19,6 +19,7 @@ mod glut_shapes;
 mod glut_windows;
 mod gpu_parity;
 mod interactive_demo;
+mod layout;
 mod mesa_calls;
 mod picking_demo;
 mod pixel_properties;

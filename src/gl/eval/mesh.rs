@@ -3,10 +3,10 @@
 //! path and the exact end parameter at i = n. A mesh is recorded as one grid
 //! ([`crate::gl::GridMesh`]), evaluated now by the CPU tessellator or at draw time by the GPU's.
 
+use super::job::PendingMeshes;
 use super::Grid;
 use crate::gl::consts::*;
 use crate::gl::lists::ListCommand;
-use crate::gl::mesh_job::PendingMeshes;
 use crate::gl::types::*;
 use crate::gl::{Command, Gl, GridMesh, MapSample, MeshJob, MeshMode, MeshVertices, Tessellator};
 

@@ -2,15 +2,18 @@
 //! maps with their control points, the enables, `GL_AUTO_NORMAL` and the two grids.
 
 mod coord;
+mod job;
 mod map;
 mod mesh;
 mod query;
 mod target;
 
+pub(crate) use job::PendingMeshes;
+pub use job::{MapSample, MeshJob};
 pub use target::{MapTarget, Slot};
 
 use super::consts::*;
-use super::get::{put, row, Kind, StateVar};
+use super::state_var::{put, row, Kind, StateVar};
 use super::types::*;
 use crate::gl::lists::ListCommand;
 pub(crate) use map::Map;

@@ -3,6 +3,7 @@
 
 use crate::gl::consts::*;
 use crate::gl::types::GLenum;
+use crate::gl::vertex::Vertex;
 
 /// The attribute a map produces; the discriminant is the offset from `GL_MAP1_COLOR_4`
 /// (or `GL_MAP2_COLOR_4`), which is how GL numbers the targets.
@@ -91,4 +92,28 @@ impl MapTarget {
     pub fn components(self) -> usize {
         self.slot.components()
     }
+}
+
+impl Vertex {
+    /// Writes an evaluated attribute (`glEvalCoord`'s result for one map) into the vertex.
+    pub(crate) fn set_attribute(&mut self, slot: Slot, p: [f32; 4]) {
+        match slot {
+            Slot::Color4 => self.color = p,
+            Slot::Normal => self.normal = [p[0], p[1], p[2]],
+            Slot::TexCoord1 | Slot::TexCoord2 | Slot::TexCoord3 | Slot::TexCoord4 => {
+                self.tex_coord = widen(p, slot.components());
+            }
+            Slot::Vertex3 => self.position = widen(p, 3),
+            Slot::Vertex4 => self.position = p,
+            Slot::Index => {}
+        }
+    }
+}
+
+/// Widens a k-component result to GL's 4-vector, filling the missing components with the
+/// defaults (0, 0, 0, 1), as Mesa does when it evaluates into a vector initialised that way.
+fn widen(p: [f32; 4], k: usize) -> [f32; 4] {
+    let mut out = [0.0, 0.0, 0.0, 1.0];
+    out[..k].copy_from_slice(&p[..k]);
+    out
 }

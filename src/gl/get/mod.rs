@@ -6,48 +6,13 @@
 mod table;
 
 use super::consts::*;
+use super::state_var::{Kind, StateVar};
 use super::types::*;
 use super::Gl;
-pub(crate) use table::{int_limit, limit, put, put_enum, put_flag, row, rows, Kind, StateVar};
+use table::rows;
 
 /// The most values one `glGet` name has (a matrix).
 pub(crate) const MAX_VALUES: usize = 16;
-
-/// Mesa's `FLOAT_TO_INT` (`main/macros.h`) for normalised values (colours, normals, the depth
-/// range, and, as Mesa's `TYPE_MATRIX` does, matrices): v · (2³¹ − 1) truncated. A value outside
-/// [−1, 1] overflows C's conversion, which gives `INT_MIN` on the machines Mesa runs on (x86's
-/// "integer indefinite"); so does this.
-pub(crate) fn float_to_int(v: f64) -> GLint {
-    let x = v * f64::from(GLint::MAX);
-    if !(-2_147_483_648.0..2_147_483_648.0).contains(&x) {
-        GLint::MIN
-    } else {
-        x as GLint
-    }
-}
-
-/// Mesa's `IROUND` for floats in `glGetIntegerv`: `(int) lroundf(v)`, halves away from zero,
-/// the 64-bit `long` then cut to 32 bits (a line width of 3·10⁹ reads back as −1294967296 on
-/// Mesa 22.3; measured). Beyond a `long`, x86 gives `LONG_MIN`, whose low half is 0.
-pub(crate) fn iround(v: f64) -> GLint {
-    let r = v.round();
-    if r.abs() < 9.223_372_036_854_776e18 {
-        r as i64 as GLint
-    } else {
-        0
-    }
-}
-
-impl Kind {
-    /// `glGetIntegerv`'s value (Mesa `_mesa_GetIntegerv`).
-    fn to_int(self, v: f64) -> GLint {
-        match self {
-            Kind::Bool | Kind::Int => v as GLint,
-            Kind::Float => iround(v),
-            Kind::Normalized => float_to_int(v),
-        }
-    }
-}
 
 /// One state variable's answer: its values and how they convert.
 struct Answer {

@@ -11,72 +11,8 @@
 //! `glGetDoublev`; the same figures are in `tests/reference/calls/expected/queries.out`).
 
 use super::super::consts::*;
+use super::super::state_var::{int_limit, limit, put, put_enum, put_flag, row, Kind, StateVar};
 use super::super::types::*;
-use super::super::Gl;
-
-/// How Mesa stores a state variable (`main/get.c`'s `TYPE_*`), which decides its conversions.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(crate) enum Kind {
-    /// `TYPE_BOOLEAN`: 0 or 1.
-    Bool,
-    /// `TYPE_INT`, `TYPE_ENUM`: exact in every variant.
-    Int,
-    /// `TYPE_FLOAT`: `glGetIntegerv` rounds (`IROUND`).
-    Float,
-    /// `TYPE_FLOATN`, `TYPE_DOUBLEN`, `TYPE_MATRIX`: `glGetIntegerv` scales by 2³¹ − 1
-    /// (`FLOAT_TO_INT`): colours, normals, the depth range and clear value, the alpha
-    /// reference, and the matrices.
-    Normalized,
-}
-
-/// One state variable: `read` writes its first `count` values.
-#[derive(Clone, Copy)]
-pub(crate) struct StateVar {
-    pub name: GLenum,
-    pub count: usize,
-    pub kind: Kind,
-    pub read: fn(&Gl, &mut [f64]),
-}
-
-/// A row: `glGet(name)` is `count` values of `kind`, written by `read`.
-pub(crate) const fn row(name: GLenum, count: usize, kind: Kind, read: fn(&Gl, &mut [f64])) -> StateVar {
-    StateVar { name, count, kind, read }
-}
-
-/// A constant (an implementation limit).
-macro_rules! limit {
-    ($name:expr, $($v:expr),+) => {
-        $crate::gl::get::row($name, [$($v as f64),+].len(), $crate::gl::get::Kind::Float, |_, o| {
-            let values = [$($v as f64),+];
-            o[..values.len()].copy_from_slice(&values);
-        })
-    };
-}
-
-/// An integer limit.
-macro_rules! int_limit {
-    ($name:expr, $($v:expr),+) => {
-        $crate::gl::get::StateVar { kind: $crate::gl::get::Kind::Int, ..limit!($name, $($v),+) }
-    };
-}
-pub(crate) use {int_limit, limit};
-
-/// Writes `values` as the answer.
-pub(crate) fn put<T: Copy + Into<f64>>(o: &mut [f64], values: &[T]) {
-    for (out, v) in o.iter_mut().zip(values) {
-        *out = (*v).into();
-    }
-}
-
-/// Writes an enum (or any one integer) as the answer.
-pub(crate) fn put_enum(o: &mut [f64], e: GLenum) {
-    o[0] = f64::from(e);
-}
-
-/// Writes a flag as the answer (0 or 1).
-pub(crate) fn put_flag(o: &mut [f64], b: bool) {
-    o[0] = f64::from(u8::from(b));
-}
 
 fn matrix(o: &mut [f64], m: glam::Mat4) {
     put(o, &m.to_cols_array());

@@ -5,8 +5,8 @@
 //! in Mesa's order and its conversions.
 
 use super::super::consts::*;
-use super::super::get::float_to_int;
-use super::super::light_query::c_int;
+use super::super::state_var::c_int;
+use super::super::state_var::float_to_int;
 use super::super::types::*;
 use super::super::variants::GlComponent;
 use super::super::Gl;
@@ -322,7 +322,7 @@ impl Gl {
         if !(0..=MAX_TEXTURE_SIZE.ilog2() as GLint).contains(&level) {
             return self.set_error(GL_INVALID_VALUE);
         }
-        if let Some(error) = super::super::read_pixels::read_format_error(format, type_) {
+        if let Some(error) = super::super::pixel_pack::read_format_error(format, type_) {
             return self.set_error(error);
         }
         let Some(needed) = self.tex_image_len(target, level, format, type_) else { return };

@@ -2,21 +2,12 @@
 //! the integer and scalar forms of `glLight`, `glLightModel` and `glMaterial`, which convert
 //! and call the float vector forms as Mesa's do (so lists, errors and state are theirs).
 
-use super::consts::*;
-use super::get::float_to_int;
-use super::lighting::{Light, Material};
-use super::types::*;
-use super::variants::GlComponent;
-use super::Gl;
-
-/// C's `(GLint) f` on x86: truncation, and `INT_MIN` for what does not fit (NaN included).
-pub(crate) fn c_int(v: f32) -> GLint {
-    if v.is_nan() || !(-2_147_483_648.0..2_147_483_648.0).contains(&v) {
-        GLint::MIN
-    } else {
-        v as GLint
-    }
-}
+use super::super::consts::*;
+use super::super::state_var::{c_int, float_to_int};
+use super::super::types::*;
+use super::super::variants::GlComponent;
+use super::super::Gl;
+use super::{Light, Material};
 
 /// Whether a light or material name is a colour (normalised in the integer forms).
 fn is_color(pname: GLenum) -> bool {
@@ -139,7 +130,7 @@ impl Gl {
         if let Some(v) = self.material_answer(face, pname, params.len()) {
             let color = is_color(pname);
             for (out, x) in params.iter_mut().zip(v) {
-                *out = if color { float_to_int(x.into()) } else { super::get::iround(x.into()) };
+                *out = if color { float_to_int(x.into()) } else { super::super::state_var::iround(x.into()) };
             }
         }
     }

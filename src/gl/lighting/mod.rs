@@ -2,11 +2,15 @@
 //! §2.13), with GL's initial values. Positions and spot directions are stored in eye
 //! coordinates, transformed by the modelview matrix current when they were set.
 
-use super::color_material::material_bits;
+mod color_material;
+mod query;
+
 use super::consts::*;
 use super::lists::ListCommand;
 use super::types::*;
 use super::Gl;
+use color_material::material_bits;
+pub(crate) use color_material::ColorMaterialSync;
 use glam::{Mat3, Vec3, Vec4};
 
 /// One light source (`GL_LIGHTi`).

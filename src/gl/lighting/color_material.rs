@@ -17,10 +17,10 @@
 //!   colour equal to the current one; after it the material follows the colour only if the colour
 //!   at `glEnd` differs from the one at `glBegin`.
 
-use super::consts::*;
-use super::lighting::Material;
-use super::types::*;
-use super::Gl;
+use super::super::consts::*;
+use super::super::types::*;
+use super::super::Gl;
+use super::Material;
 use glam::Vec4;
 
 /// A material name's parameters as bits (ambient 1, diffuse 2, specular 4, emission 8,

@@ -5,9 +5,9 @@
 //! job in the frame and evaluates every job of the frame in one compute dispatch
 //! (the crate's GPU evaluator, `src/gpu/evaluate.rs`). Both read the same numbers, so the CPU result is the GPU's oracle.
 
-use super::eval::Slot;
-use super::vertex::Vertex;
-use super::GridVertices;
+use super::super::vertex::Vertex;
+use super::super::GridVertices;
+use super::target::Slot;
 use crate::math::bezier::{horner_many, Vec4};
 use crate::math::rational::{normalize, normalize_many};
 use crate::tess::{rows_per_band, run_bands, MapView, Row, RowBases, RowKernel};

@@ -1,0 +1,150 @@
+//! Packing GL's pixel values into client memory (GL 1.1 spec §4.3.2 "Conversion of RGBA
+//! values", "Final conversion", "Placement in client memory"; Mesa `main/pack.c`): what
+//! `glReadPixels` and `glGetTexImage` write, under the pack modes. Each component converts as
+//! GL 1.1 table 2.9 inverted (unsigned types scale by 2ᵇ − 1, signed ones map [−1, 1] onto the
+//! range), luminance as R + G + B clamped.
+
+use super::consts::*;
+use super::pixel_unpack::element_size as type_size;
+use super::types::*;
+use super::Gl;
+
+/// The components of one window pixel (floats in [0, 1]) that `format` returns; `None` for a
+/// format that is not a colour format.
+pub(crate) fn components(format: GLenum, [r, g, b, a]: [f32; 4]) -> Option<Vec<f32>> {
+    Some(match format {
+        GL_RED => vec![r],
+        GL_GREEN => vec![g],
+        GL_BLUE => vec![b],
+        GL_ALPHA => vec![a],
+        GL_RGB => vec![r, g, b],
+        GL_RGBA => vec![r, g, b, a],
+        GL_LUMINANCE => vec![(r + g + b).min(1.0)],
+        GL_LUMINANCE_ALPHA => vec![(r + g + b).min(1.0), a],
+        // A depth travels in the red slot (see `Gl::read_pixels`).
+        GL_DEPTH_COMPONENT => vec![r],
+        _ => return None,
+    })
+}
+
+/// Components per pixel of a format glReadPixels takes, the colour ones and those gleval
+/// cannot read.
+pub(crate) fn format_size(format: GLenum) -> Option<usize> {
+    match format {
+        GL_LUMINANCE_ALPHA => Some(2),
+        GL_RGB => Some(3),
+        GL_RGBA => Some(4),
+        GL_RED | GL_GREEN | GL_BLUE | GL_ALPHA | GL_LUMINANCE | GL_COLOR_INDEX | GL_STENCIL_INDEX
+        | GL_DEPTH_COMPONENT => Some(1),
+        _ => None,
+    }
+}
+
+/// One component `c` ∈ [0, 1] as `type_` stores it, native byte order.
+fn encode(c: f32, type_: GLenum) -> Vec<u8> {
+    let c = f64::from(c.clamp(0.0, 1.0));
+    let unsigned = |max: f64| (c * max).round();
+    let signed = |max: f64| ((c * (2.0 * max + 1.0) - 1.0) / 2.0).round();
+    // Mesa's `_mesa_float_to_unorm`: the product in floats, rounded half to even (a colour
+    // biased to 131.5 reads as 132).
+    let unorm = |max: f32| (c as f32 * max).round_ties_even();
+    match type_ {
+        GL_UNSIGNED_BYTE => vec![unorm(255.0) as u8],
+        GL_BYTE => (signed(127.0) as i8).to_ne_bytes().to_vec(),
+        GL_UNSIGNED_SHORT => (unorm(65535.0) as u16).to_ne_bytes().to_vec(),
+        GL_SHORT => (signed(32767.0) as i16).to_ne_bytes().to_vec(),
+        GL_UNSIGNED_INT => (unsigned(4294967295.0) as u32).to_ne_bytes().to_vec(),
+        GL_INT => (signed(2147483647.0) as i32).to_ne_bytes().to_vec(),
+        _ => (c as f32).to_ne_bytes().to_vec(),
+    }
+}
+
+/// The error a colour read of `format` and `type_` gets (`glGetTexImage`'s checks, Mesa's
+/// `_mesa_error_check_format_and_type` order): an unknown format or type `GL_INVALID_ENUM`, a
+/// depth, stencil or colour-index format `GL_INVALID_OPERATION`.
+pub(crate) fn read_format_error(format: GLenum, type_: GLenum) -> Option<GLenum> {
+    if format_size(format).is_none() || type_size(type_).is_none() {
+        return Some(GL_INVALID_ENUM);
+    }
+    let colour = format != GL_DEPTH_COMPONENT && components(format, [0.0; 4]).is_some();
+    (!colour).then_some(GL_INVALID_OPERATION)
+}
+
+/// One depth `d` ∈ [0, 1] as `type_` stores it: Mesa packs depths with truncating conversions
+/// (`FLOAT_TO_UBYTE` and its kin in `_mesa_pack_depth_span`; measured: 0.25 reads as 63).
+fn encode_depth(d: f32, type_: GLenum) -> Vec<u8> {
+    let d = f64::from(d.clamp(0.0, 1.0));
+    let signed = |max: f64| ((d * (2.0 * max + 1.0) - 1.0) / 2.0).trunc();
+    match type_ {
+        GL_UNSIGNED_BYTE => vec![(d * 255.0) as u8],
+        GL_BYTE => (signed(127.0) as i8).to_ne_bytes().to_vec(),
+        GL_UNSIGNED_SHORT => ((d * 65535.0) as u16).to_ne_bytes().to_vec(),
+        GL_SHORT => (signed(32767.0) as i16).to_ne_bytes().to_vec(),
+        GL_UNSIGNED_INT => ((d * 4294967295.0) as u32).to_ne_bytes().to_vec(),
+        GL_INT => (signed(2147483647.0) as i32).to_ne_bytes().to_vec(),
+        _ => (d as f32).to_ne_bytes().to_vec(),
+    }
+}
+
+impl Gl {
+    /// Bytes `glReadPixels` writes for a `width` × `height` rectangle of `format` and `type_`
+    /// under the current pack modes (skips, padded rows, the last row up to its last pixel);
+    /// `None` when GL writes nothing because it rejects the format, type or a negative size.
+    #[must_use]
+    pub fn packed_image_len(&self, width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum) -> Option<usize> {
+        let (w, h) = (usize::try_from(width).ok()?, usize::try_from(height).ok()?);
+        let (n, size) = (format_size(format)?, type_size(type_)?);
+        if w == 0 || h == 0 {
+            return Some(0);
+        }
+        let store = self.client.pixel_stores.pack;
+        let stride = store.row_stride(w, n, size);
+        let first = store.first_byte(stride, n * size);
+        first.checked_add((h - 1).checked_mul(stride)?)?.checked_add(w * n * size)
+    }
+
+    /// Packs a `w` × `h` image of RGBA floats (rows bottom first) as `glReadPixels` would
+    /// (`glGetTexImage`); `out` holds at least [`Gl::packed_image_len`] bytes.
+    pub(crate) fn pack_rgba(
+        &self,
+        rgba: &[[f32; 4]],
+        (w, h): (usize, usize),
+        (format, type_): (GLenum, GLenum),
+        out: &mut [u8],
+    ) {
+        let size = type_size(type_).unwrap_or(1);
+        let at = |x: i32, y: i32| rgba.get(y as usize * w + x as usize).copied();
+        self.pack_rectangle((0, 0), (w, h), (format, type_, size), at, out);
+    }
+
+    /// Writes the rectangle's pixels that lie in the window where the pack modes put them.
+    pub(crate) fn pack_rectangle(
+        &self,
+        (x, y): (GLint, GLint),
+        (w, h): (usize, usize),
+        (format, type_, size): (GLenum, GLenum, usize),
+        at: impl Fn(i32, i32) -> Option<[f32; 4]>,
+        out: &mut [u8],
+    ) {
+        let store = self.client.pixel_stores.pack;
+        let n = format_size(format).unwrap_or(1);
+        let stride = store.row_stride(w, n, size);
+        let first = store.first_byte(stride, n * size);
+        for j in 0..h {
+            for i in 0..w {
+                let (wx, wy) = (x.saturating_add(i as i32), y.saturating_add(j as i32));
+                let Some(rgba) = at(wx, wy) else { continue };
+                let mut offset = first + j * stride + i * n * size;
+                for c in components(format, rgba).unwrap_or_default() {
+                    let mut bytes =
+                        if format == GL_DEPTH_COMPONENT { encode_depth(c, type_) } else { encode(c, type_) };
+                    if store.swap_bytes {
+                        bytes.reverse();
+                    }
+                    out[offset..offset + size].copy_from_slice(&bytes);
+                    offset += size;
+                }
+            }
+        }
+    }
+}
