@@ -7,12 +7,12 @@
 //! point, line, polygon, polygon stipple, lighting, fog, depth buffer, viewport, transform,
 //! enable, colour buffer (clear colour, blending, alpha test, logic op, masks, draw buffer),
 //! stencil, accumulation, scissor, pixel mode (transfer, zoom, read buffer), hint, evaluator,
-//! list (base) and texture (unit 0's bindings and environment); each area saves and restores
-//! its part (`fragments_attrib`, `pixel_attrib`, `texture_attrib`).
+//! list (base) and texture (unit 0's bindings and environment). A group with its own struct is
+//! saved and restored in one piece; the rest through their areas (`pixel_attrib`,
+//! `texture_attrib`, `RasterValues`).
 
 use super::consts::*;
 use super::eval::EvalAttrib;
-use super::fragment::FragmentOps;
 use super::lighting::Lighting;
 use super::lists::ListCommand;
 use super::types::*;
@@ -34,7 +34,6 @@ const LIGHTING_ENABLES: &[GLenum] = &[
     GL_LIGHT0 + 6,
     GL_LIGHT0 + 7,
 ];
-const FOG_ENABLES: &[GLenum] = &[GL_FOG];
 const TRANSFORM_ENABLES: &[GLenum] = &[
     GL_NORMALIZE,
     GL_RESCALE_NORMAL,
@@ -47,19 +46,17 @@ const TRANSFORM_ENABLES: &[GLenum] = &[
     GL_CLIP_PLANE5 + 1,
     GL_CLIP_PLANE5 + 2,
 ];
-const COLOR_ENABLES: &[GLenum] = &[GL_BLEND, GL_ALPHA_TEST, GL_DITHER];
 const TEXTURE_ENABLES: &[GLenum] =
     &[GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q];
 
-/// The raster values of the lighting (shade model), viewport and
-/// colour buffer groups.
+/// The raster values of the lighting (shade model), viewport, transform and polygon stipple
+/// groups.
 #[derive(Clone, Copy, Debug, PartialEq)]
 struct RasterValues {
     clip_planes: [[f32; 4]; super::clip::MAX_CLIP_PLANES],
     polygon_stipple: [u32; 32],
     shade_model: GLenum,
     viewport: ([i32; 4], [f32; 2]),
-    clear_color: [f32; 4],
 }
 
 /// What one `glPushAttrib` saved: the mask, and every group's values (restored by the mask).
@@ -69,7 +66,11 @@ struct Saved {
     current: Current,
     raster: RasterValues,
     lighting: Option<Lighting>,
-    fragment: FragmentOps,
+    color_buffer: super::color_buffer::ColorBuffer,
+    fog: super::fog::FogState,
+    stencil: super::stencil::StencilBuffer,
+    scissor: [GLint; 4],
+    clear_accum: [f32; 4],
     depth: super::depth::Depth,
     point: super::point::Point,
     line: super::line::Line,
@@ -79,7 +80,6 @@ struct Saved {
     list_base: GLuint,
     texture: super::texture::TextureAttrib,
     hints: super::hint::Hints,
-    fragments: super::fragments::PerFragment,
     /// (capability, on) for every enable a group of the mask files.
     enables: Vec<(GLenum, bool)>,
     /// The pixel mode group and the colour-index values of the current and colour-buffer groups.
@@ -94,19 +94,18 @@ pub(crate) struct AttribStack {
 
 /// The enables the groups of `mask` save (`GL_ENABLE_BIT`: every capability).
 fn enables_of(mask: GLbitfield) -> Vec<GLenum> {
-    let groups: [(GLbitfield, &[GLenum]); 12] = [
+    let groups: [(GLbitfield, &[GLenum]); 11] = [
         (GL_POINT_BIT, super::point::POINT_ENABLES),
         (GL_LINE_BIT, super::line::LINE_ENABLES),
         (GL_POLYGON_BIT, super::polygon::POLYGON_ENABLES),
         (GL_LIGHTING_BIT, LIGHTING_ENABLES),
-        (GL_FOG_BIT, FOG_ENABLES),
+        (GL_FOG_BIT, super::fog::FOG_ENABLES),
         (GL_DEPTH_BUFFER_BIT, super::depth::DEPTH_ENABLES),
         (GL_TRANSFORM_BIT, TRANSFORM_ENABLES),
-        (GL_COLOR_BUFFER_BIT, COLOR_ENABLES),
+        (GL_COLOR_BUFFER_BIT, super::color_buffer::COLOR_BUFFER_ENABLES),
         (GL_TEXTURE_BIT, TEXTURE_ENABLES),
-        (GL_STENCIL_BUFFER_BIT, super::fragments::STENCIL_ENABLES),
-        (GL_SCISSOR_BIT, super::fragments::SCISSOR_ENABLES),
-        (GL_COLOR_BUFFER_BIT, super::fragments::COLOR_LOGIC_ENABLES),
+        (GL_STENCIL_BUFFER_BIT, super::stencil::STENCIL_ENABLES),
+        (GL_SCISSOR_BIT, super::scissor::SCISSOR_ENABLES),
     ];
     let all = mask & GL_ENABLE_BIT != 0;
     let mut caps: Vec<GLenum> =
@@ -179,7 +178,6 @@ impl Gl {
             polygon_stipple: r.polygon_stipple,
             shade_model: r.shade_model,
             viewport: (r.viewport, r.depth_range),
-            clear_color: r.clear_color,
         };
         let enables = enables_of(mask).into_iter().map(|cap| (cap, self.server.caps.is_on(cap))).collect();
         Saved {
@@ -187,7 +185,11 @@ impl Gl {
             current: self.server.current,
             raster,
             lighting: (mask & GL_LIGHTING_BIT != 0).then(|| self.server.lighting.clone()),
-            fragment: self.server.fragment_ops,
+            color_buffer: self.server.color_buffer,
+            fog: self.server.fog,
+            stencil: self.server.stencil,
+            scissor: self.server.scissor,
+            clear_accum: self.server.clear_accum,
             depth: self.server.depth,
             point: self.server.point,
             line: self.server.line,
@@ -199,7 +201,6 @@ impl Gl {
             list_base: self.list_base_value(),
             texture: self.texture_attrib(),
             hints: self.server.hints,
-            fragments: self.fragments_attrib(),
             enables,
             pixels: self.pixel_attrib(),
         }
@@ -235,13 +236,19 @@ impl Gl {
             (r.viewport, r.depth_range) = v.viewport;
         }
         if has(GL_COLOR_BUFFER_BIT) {
-            r.clear_color = v.clear_color;
-            (self.server.fragment_ops.blend, self.server.fragment_ops.alpha) =
-                (saved.fragment.blend, saved.fragment.alpha);
+            self.server.color_buffer = saved.color_buffer;
         }
         if has(GL_FOG_BIT) {
-            self.server.fragment_ops.fog = saved.fragment.fog;
-            self.server.fragment_ops.fog_index = saved.fragment.fog_index;
+            self.server.fog = saved.fog;
+        }
+        if has(GL_STENCIL_BUFFER_BIT) {
+            self.server.stencil = saved.stencil;
+        }
+        if has(GL_ACCUM_BUFFER_BIT) {
+            self.server.clear_accum = saved.clear_accum;
+        }
+        if has(GL_SCISSOR_BIT) {
+            self.server.scissor = saved.scissor;
         }
         if let Some(lighting) = saved.lighting {
             self.server.lighting = lighting;
@@ -259,7 +266,6 @@ impl Gl {
         if has(GL_TEXTURE_BIT) {
             self.restore_texture_attrib(saved.texture);
         }
-        self.restore_fragments(mask, &saved.fragments);
         if let Some(eval) = saved.eval {
             // GL_ENABLE_BIT alone restores the map enables and GL_AUTO_NORMAL, not the grids.
             let eval = if has(GL_EVAL_BIT) { eval } else { eval.enables_with_grids_of(&self.server.eval.attrib()) };

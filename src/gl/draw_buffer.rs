@@ -8,9 +8,12 @@
 //! `GL_INVALID_ENUM`. A single-buffered context's back buffer is its one buffer (OSMesa draws
 //! `GL_BACK` into the caller's buffer).
 
+use super::color_buffer::ColorBufferCall;
 use super::consts::*;
-use super::fragments::{FragmentCall, BACK_BUFFER, FRONT_BUFFER};
+use super::fragments::{BACK_BUFFER, FRONT_BUFFER};
 use super::frame::Command;
+use super::lists::ListCommand;
+use super::pixel_transfer::PixelTransferCall;
 use super::types::*;
 use super::Gl;
 
@@ -32,18 +35,18 @@ impl Gl {
     /// Records a buffer swap in a double-buffered context (`glutSwapBuffers`); nothing in a
     /// single-buffered one. Inside `begin`/`end` GL would end the primitive's frame: ignored.
     pub fn record_swap_buffers(&mut self) {
-        if self.server.fragments.config.double && !self.inside_begin_end() {
+        if self.server.framebuffer.double && !self.inside_begin_end() {
             self.recorder.frame.commands.push(Command::SwapBuffers);
         }
     }
 
     /// `glDrawBuffer`: the colour buffers draws and clears write (see the module's table).
     pub fn draw_buffer(&mut self, mode: GLenum) {
-        if self.compiled_fragment(FragmentCall::DrawBuffer(mode)) {
+        if self.compiled_color_buffer_call(ColorBufferCall::DrawBuffer(mode)) {
             return;
         }
         match buffers_named(mode) {
-            Ok(_) => self.server.fragments.draw_buffer = mode,
+            Ok(_) => self.server.color_buffer.draw_buffer = mode,
             Err(e) => return self.set_error(e),
         }
         self.touch_state();
@@ -51,11 +54,11 @@ impl Gl {
 
     /// `glReadBuffer`: the colour buffer `glReadPixels`, `glCopyPixels` and `glAccum` read.
     pub fn read_buffer(&mut self, mode: GLenum) {
-        if self.compiled_fragment(FragmentCall::ReadBuffer(mode)) {
+        if self.compiled_state_call(|| ListCommand::PixelTransfer(PixelTransferCall::ReadBuffer(mode))) {
             return;
         }
         match buffers_named(mode) {
-            Ok(_) => self.server.fragments.read_buffer = mode,
+            Ok(_) => self.server.pixel_state.mode.read_buffer = mode,
             Err(e) => self.set_error(e),
         }
     }
@@ -67,12 +70,12 @@ impl Gl {
     /// reads its front buffer whatever is named).
     #[must_use]
     pub fn reads_back_buffer(&self) -> bool {
-        self.buffers_of(self.server.fragments.read_buffer) & super::fragments::BACK_BUFFER != 0
+        self.buffers_of(self.server.pixel_state.mode.read_buffer) & super::fragments::BACK_BUFFER != 0
     }
 
     pub(crate) fn buffers_of(&self, mode: GLenum) -> u8 {
         let bits = buffers_named(mode).unwrap_or(0);
-        if self.server.fragments.config.double || bits == 0 {
+        if self.server.framebuffer.double || bits == 0 {
             bits
         } else {
             FRONT_BUFFER

@@ -1,13 +1,12 @@
-//! The per-fragment stages after the fragment's colour and the buffers they write (GL 1.1
-//! spec §4.1–4.2): the scissor test, the stencil test, the colour write mask, the logic op, which colour buffers are drawn and read (front, back), and the
-//! accumulation buffer. The values live in `PerFragment`; a recorded primitive's
-//! [`DrawState`](super::DrawState) carries them as [`FragmentTests`], and both rasterisers apply
-//! them. The calls are in `stencil.rs`, `accum.rs`, `masks.rs` and `draw_buffer.rs`; this file
-//! holds their shared state, their display-list record, their attribute groups and their
-//! `glGet` names.
+//! What a draw hands the rasterisers' per-fragment stages (GL 1.1 spec §4.1–4.2): the
+//! [`FragmentTests`] a recorded primitive, clear or accumulation carries (the scissor box, the
+//! stencil test, the write masks, the logic op, the colour buffers written), put together from
+//! the groups that own the values (`scissor.rs`, `stencil.rs`, `depth.rs`, `color_buffer.rs`);
+//! and the framebuffer's shape ([`BufferConfig`]: which buffers the drawable has), with its
+//! `glGet` rows.
 
 use super::consts::*;
-use super::state_var::{put, put_enum, put_flag, row, Kind, StateVar};
+use super::state_var::{put_flag, row, Kind, StateVar};
 use super::types::*;
 use super::Gl;
 
@@ -107,172 +106,53 @@ impl Default for FragmentTests {
     }
 }
 
-/// The fragment stages' values and the framebuffer's shape.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub(crate) struct PerFragment {
-    pub config: BufferConfig,
-    pub stencil: Stencil,
-    pub clear_stencil: GLint,
-    pub clear_accum: [f32; 4],
-    pub color_write: [bool; 4],
-    pub scissor: [i32; 4],
-    pub logic_op: GLenum,
-    pub draw_buffer: GLenum,
-    pub read_buffer: GLenum,
-}
-
-impl PerFragment {
-    /// GL's initial values for a `width` × `height` window (the scissor box is the window).
-    pub fn new(width: i32, height: i32) -> Self {
-        Self {
-            config: BufferConfig::default(),
-            stencil: Stencil::default(),
-            clear_stencil: 0,
-            clear_accum: [0.0; 4],
-            color_write: [true; 4],
-            scissor: [0, 0, width, height],
-            logic_op: GL_COPY,
-            draw_buffer: GL_FRONT,
-            read_buffer: GL_FRONT,
-        }
-    }
-}
-
-/// A fragment call as a display list holds it (one `ListCommand` variant for the area).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub(crate) enum FragmentCall {
-    StencilFunc(GLenum, GLint, GLuint),
-    StencilOp(GLenum, GLenum, GLenum),
-    StencilMask(GLuint),
-    ClearStencil(GLint),
-    Accum(GLenum, GLfloat),
-    ClearAccum([GLfloat; 4]),
-    ColorMask([GLboolean; 4]),
-    Scissor([GLint; 4]),
-    LogicOp(GLenum),
-    DrawBuffer(GLenum),
-    ReadBuffer(GLenum),
-}
-
-/// The enables GL files under the stencil, scissor and colour-buffer groups (GL 1.1 tables
-/// 6.15–6.17), beside those `attrib.rs` lists.
-pub(crate) const STENCIL_ENABLES: &[GLenum] = &[GL_STENCIL_TEST];
-/// See [`STENCIL_ENABLES`].
-pub(crate) const SCISSOR_ENABLES: &[GLenum] = &[GL_SCISSOR_TEST];
-/// See [`STENCIL_ENABLES`].
-pub(crate) const COLOR_LOGIC_ENABLES: &[GLenum] = &[GL_COLOR_LOGIC_OP, GL_INDEX_LOGIC_OP];
-
 impl Gl {
-    /// Replays a listed fragment call.
-    pub(crate) fn replay_fragment_call(&mut self, call: FragmentCall) {
-        use FragmentCall as C;
-        match call {
-            C::StencilFunc(func, reference, mask) => self.stencil_func(func, reference, mask),
-            C::StencilOp(fail, zfail, zpass) => self.stencil_op(fail, zfail, zpass),
-            C::StencilMask(mask) => self.stencil_mask(mask),
-            C::ClearStencil(s) => self.clear_stencil(s),
-            C::Accum(op, value) => self.accum(op, value),
-            C::ClearAccum([r, g, b, a]) => self.clear_accum(r, g, b, a),
-            C::ColorMask([r, g, b, a]) => self.color_mask(r, g, b, a),
-            C::Scissor([x, y, w, h]) => self.scissor(x, y, w, h),
-            C::LogicOp(op) => self.logic_op(op),
-            C::DrawBuffer(mode) => self.draw_buffer(mode),
-            C::ReadBuffer(mode) => self.read_buffer(mode),
-        }
-    }
-
     /// The framebuffer's buffers (see [`BufferConfig`]).
     #[must_use]
     pub fn buffer_config(&self) -> BufferConfig {
-        self.server.fragments.config
+        self.server.framebuffer
     }
 
     /// Gives the context the buffers of `config` (what GLUT's display mode or OSMesa's
     /// creation asked for); the draw and read buffers become GL's initial ones for it (the back
     /// buffer of a double-buffered window, else the front).
     pub fn set_buffer_config(&mut self, config: BufferConfig) {
-        let f = &mut self.server.fragments;
-        f.config = config;
+        self.server.framebuffer = config;
         let initial = if config.double { GL_BACK } else { GL_FRONT };
-        (f.draw_buffer, f.read_buffer) = (initial, initial);
+        self.server.color_buffer.draw_buffer = initial;
+        self.server.pixel_state.mode.read_buffer = initial;
         self.touch_state();
     }
 
     /// The per-fragment state primitives, clears and accumulations are drawn with now.
     pub(crate) fn fragment_tests(&self) -> FragmentTests {
-        let f = &self.server.fragments;
-        let has_stencil = f.config.stencil_bits > 0;
+        let (stencil, colors) = (&self.server.stencil.test, &self.server.color_buffer);
+        let has_stencil = self.server.framebuffer.stencil_bits > 0;
         FragmentTests {
-            scissor: self.capability(GL_SCISSOR_TEST).then_some(f.scissor),
-            stencil: (has_stencil && self.capability(GL_STENCIL_TEST)).then_some(f.stencil),
-            stencil_write_mask: f.stencil.write_mask,
+            scissor: self.capability(GL_SCISSOR_TEST).then_some(self.server.scissor),
+            stencil: (has_stencil && self.capability(GL_STENCIL_TEST)).then_some(*stencil),
+            stencil_write_mask: stencil.write_mask,
             depth_write: self.server.depth.write,
-            color_write: f.color_write,
-            logic_op: self.capability(GL_COLOR_LOGIC_OP).then_some(f.logic_op),
-            draw_buffers: self.buffers_of(f.draw_buffer),
+            color_write: colors.color_write,
+            logic_op: self.capability(GL_COLOR_LOGIC_OP).then_some(colors.logic_op),
+            draw_buffers: self.buffers_of(colors.draw_buffer),
         }
     }
 
     /// The largest stencil value, 2^bits − 1 (0 without a stencil buffer).
     pub(crate) fn stencil_max(&self) -> u32 {
-        (1u32 << self.server.fragments.config.stencil_bits) - 1
-    }
-
-    /// What `glPushAttrib` keeps of this area (all of it; `restore_fragments` picks by group).
-    pub(crate) fn fragments_attrib(&self) -> PerFragment {
-        self.server.fragments
-    }
-
-    /// `glPopAttrib` of this area's values: colour buffer (colour mask, logic op, draw buffer),
-    /// depth buffer (depth mask), stencil buffer, accumulation buffer, scissor, pixel mode (read
-    /// buffer) groups. The enables come back with `attrib.rs`'s.
-    pub(crate) fn restore_fragments(&mut self, mask: GLbitfield, saved: &PerFragment) {
-        let f = &mut self.server.fragments;
-        let has = |bit: GLbitfield| mask & bit != 0;
-        if has(GL_COLOR_BUFFER_BIT) {
-            (f.color_write, f.logic_op, f.draw_buffer) = (saved.color_write, saved.logic_op, saved.draw_buffer);
-        }
-        if has(GL_STENCIL_BUFFER_BIT) {
-            (f.stencil, f.clear_stencil) = (saved.stencil, saved.clear_stencil);
-        }
-        if has(GL_ACCUM_BUFFER_BIT) {
-            f.clear_accum = saved.clear_accum;
-        }
-        if has(GL_SCISSOR_BIT) {
-            f.scissor = saved.scissor;
-        }
-        if has(GL_PIXEL_MODE_BIT) {
-            f.read_buffer = saved.read_buffer;
-        }
+        (1u32 << self.server.framebuffer.stencil_bits) - 1
     }
 }
 
-/// The fragment stages' and buffers' `glGet` rows (GL 1.1 tables 6.12, 6.13 and 6.19). The
-/// stencil reference reads clamped to the buffer's range; the value mask is unsigned, so one
-/// above 2³¹ − 1 reads as 2³¹ − 1 in `glGetIntegerv` (measured).
+/// The framebuffer's `glGet` rows (GL 1.1 table 6.19): what buffers it has.
 pub(crate) static GET_ROWS: &[StateVar] = &[
-    row(GL_SCISSOR_BOX, 4, Kind::Int, |gl, o| put(o, &gl.server.fragments.scissor)),
-    row(GL_STENCIL_FUNC, 1, Kind::Int, |gl, o| put_enum(o, gl.server.fragments.stencil.func)),
-    row(GL_STENCIL_VALUE_MASK, 1, Kind::Int, |gl, o| o[0] = f64::from(gl.server.fragments.stencil.value_mask)),
-    row(GL_STENCIL_REF, 1, Kind::Int, |gl, o| {
-        o[0] = f64::from(gl.server.fragments.stencil.reference.clamp(0, gl.stencil_max() as GLint))
-    }),
-    row(GL_STENCIL_FAIL, 1, Kind::Int, |gl, o| put_enum(o, gl.server.fragments.stencil.ops[0])),
-    row(GL_STENCIL_PASS_DEPTH_FAIL, 1, Kind::Int, |gl, o| put_enum(o, gl.server.fragments.stencil.ops[1])),
-    row(GL_STENCIL_PASS_DEPTH_PASS, 1, Kind::Int, |gl, o| put_enum(o, gl.server.fragments.stencil.ops[2])),
-    row(GL_LOGIC_OP_MODE, 1, Kind::Int, |gl, o| put_enum(o, gl.server.fragments.logic_op)),
-    row(GL_DRAW_BUFFER, 1, Kind::Int, |gl, o| put_enum(o, gl.server.fragments.draw_buffer)),
-    row(GL_READ_BUFFER, 1, Kind::Int, |gl, o| put_enum(o, gl.server.fragments.read_buffer)),
-    row(GL_COLOR_WRITEMASK, 4, Kind::Bool, |gl, o| put(o, &gl.server.fragments.color_write.map(u8::from))),
-    row(GL_STENCIL_WRITEMASK, 1, Kind::Int, |gl, o| o[0] = f64::from(gl.server.fragments.stencil.write_mask)),
-    row(GL_STENCIL_CLEAR_VALUE, 1, Kind::Int, |gl, o| o[0] = f64::from(gl.server.fragments.clear_stencil)),
-    row(GL_ACCUM_CLEAR_VALUE, 4, Kind::Normalized, |gl, o| put(o, &gl.server.fragments.clear_accum)),
-    row(GL_DOUBLEBUFFER, 1, Kind::Bool, |gl, o| put_flag(o, gl.server.fragments.config.double)),
-    row(GL_STENCIL_BITS, 1, Kind::Int, |gl, o| o[0] = f64::from(gl.server.fragments.config.stencil_bits)),
-    row(GL_ACCUM_RED_BITS, 1, Kind::Int, |gl, o| o[0] = f64::from(gl.server.fragments.config.accum_bits)),
-    row(GL_ACCUM_GREEN_BITS, 1, Kind::Int, |gl, o| o[0] = f64::from(gl.server.fragments.config.accum_bits)),
-    row(GL_ACCUM_BLUE_BITS, 1, Kind::Int, |gl, o| o[0] = f64::from(gl.server.fragments.config.accum_bits)),
-    row(GL_ACCUM_ALPHA_BITS, 1, Kind::Int, |gl, o| o[0] = f64::from(gl.server.fragments.config.accum_bits)),
+    row(GL_DOUBLEBUFFER, 1, Kind::Bool, |gl, o| put_flag(o, gl.server.framebuffer.double)),
+    row(GL_STENCIL_BITS, 1, Kind::Int, |gl, o| o[0] = f64::from(gl.server.framebuffer.stencil_bits)),
+    row(GL_ACCUM_RED_BITS, 1, Kind::Int, |gl, o| o[0] = f64::from(gl.server.framebuffer.accum_bits)),
+    row(GL_ACCUM_GREEN_BITS, 1, Kind::Int, |gl, o| o[0] = f64::from(gl.server.framebuffer.accum_bits)),
+    row(GL_ACCUM_BLUE_BITS, 1, Kind::Int, |gl, o| o[0] = f64::from(gl.server.framebuffer.accum_bits)),
+    row(GL_ACCUM_ALPHA_BITS, 1, Kind::Int, |gl, o| o[0] = f64::from(gl.server.framebuffer.accum_bits)),
 ];
 
 #[cfg(test)]

@@ -2,7 +2,7 @@
 //! `end` (from immediate mode or from the evaluators), and a log of the immediate-mode calls.
 //! Tests read it; the renderer draws it.
 
-use super::fragment::Fog;
+use super::fog::Fog;
 use super::fragments::FragmentTests;
 use super::lighting::Lighting;
 use super::offset::PolygonOffset;

@@ -62,7 +62,6 @@ pub(crate) enum ListCommand {
     ClipPlane(GLenum, Vec<f64>),
     /// `glPolygonStipple` with its mask unpacked at compile time (`None`: too short).
     PolygonStipple(Option<[u32; 32]>),
-    ClearColor([f32; 4]),
     Clear(GLbitfield),
     ActiveTexture(GLenum),
     Map1 {
@@ -119,8 +118,6 @@ pub(crate) enum ListCommand {
     TexGen(GLenum, GLenum, Vec<f32>),
     /// `glHint`.
     Hint(GLenum, GLenum),
-    BlendFunc(GLenum, GLenum),
-    AlphaFunc(GLenum, f32),
     Fog(GLenum, Vec<f32>),
     PushAttrib(GLbitfield),
     PopAttrib,
@@ -157,8 +154,14 @@ pub(crate) enum ListCommand {
     ColorIndex(super::color_index::ColorIndexCall),
     /// The pixel zoom, transfer and maps (`pixel_transfer.rs`).
     PixelTransfer(super::pixel_transfer::PixelTransferCall),
-    /// The stencil, accumulation, mask, scissor, logic-op and buffer calls (`gl/fragments.rs`).
-    Fragment(super::fragments::FragmentCall),
+    /// The colour buffer group's calls (`color_buffer.rs`).
+    ColorBuffer(super::color_buffer::ColorBufferCall),
+    /// The stencil buffer group's calls (`stencil.rs`).
+    Stencil(super::stencil::StencilCall),
+    /// `glScissor`: x, y, width, height.
+    Scissor([GLint; 4]),
+    /// `glAccum` and `glClearAccum` (`accum.rs`).
+    Accum(super::accum::AccumCall),
     Depth(super::depth::DepthCall),
     Point(super::point::PointCall),
     Line(super::line::LineCall),
@@ -454,7 +457,6 @@ impl Gl {
                     self.set_polygon_stipple(*rows);
                 }
             }
-            C::ClearColor([r, g, b, a]) => self.clear_color(*r, *g, *b, *a),
             C::Clear(mask) => self.clear(*mask),
             C::ActiveTexture(unit) => self.active_texture(*unit),
             C::Map1 { target, u, stride, order, points } => self.map1f(*target, u.0, u.1, *stride, *order, points),
@@ -491,12 +493,13 @@ impl Gl {
             C::TexEnv(target, pname, params) => self.tex_envfv(*target, *pname, params),
             C::TexGen(coord, pname, params) => self.tex_genfv(*coord, *pname, params),
             C::Hint(target, mode) => self.hint(*target, *mode),
-            C::BlendFunc(s, d) => self.blend_func(*s, *d),
-            C::AlphaFunc(func, reference) => self.alpha_func(*func, *reference),
             C::Fog(pname, params) => self.fogfv(*pname, params),
             C::PushAttrib(mask) => self.push_attrib(*mask),
             C::PopAttrib => self.pop_attrib(),
-            C::Fragment(call) => self.replay_fragment_call(*call),
+            C::ColorBuffer(call) => self.replay_color_buffer_call(*call),
+            C::Stencil(call) => self.replay_stencil_call(*call),
+            C::Scissor([x, y, w, h]) => self.scissor(*x, *y, *w, *h),
+            C::Accum(call) => self.replay_accum_call(*call),
             C::Depth(call) => self.replay_depth_call(*call),
             C::Point(call) => self.replay_point_call(*call),
             C::Line(call) => self.replay_line_call(*call),

@@ -13,6 +13,7 @@ mod binding;
 mod bitmap;
 mod client_memory;
 pub(crate) mod clip;
+mod color_buffer;
 mod color_index;
 pub mod consts;
 mod copy_pixels;
@@ -23,7 +24,7 @@ mod enable;
 mod eval;
 pub mod feedback;
 mod feedback_prims;
-mod fragment;
+mod fog;
 pub mod fragments;
 mod frame;
 mod get;
@@ -33,7 +34,6 @@ mod immediate;
 mod lighting;
 mod line;
 pub(crate) mod lists;
-mod masks;
 mod matrix;
 mod offset;
 mod param_variants;
@@ -48,6 +48,7 @@ mod raster;
 mod raster_pos;
 mod read_pixels;
 mod read_stencil;
+mod scissor;
 mod select;
 pub(crate) mod shade;
 mod state_var;
@@ -66,7 +67,7 @@ pub use client_memory::{ArrayElement, ClientArray, ClientMemory, ClientPointer};
 pub use copy_pixels::{CopyFragment, PixelCopy};
 pub use eval::{MapSample, MeshJob};
 pub use eval::{MapTarget, Slot};
-pub use fragment::Fog;
+pub use fog::Fog;
 pub use fragments::{BufferConfig, FragmentTests, Stencil};
 pub use frame::{Call, Command, DrawState, Frame, GridMesh, MaterialChange, MeshMode, MeshVertices, Primitive};
 pub use grid_vertices::GridVertices;
@@ -194,10 +195,19 @@ pub(crate) struct ServerState {
     pub(super) color_material_sync: lighting::ColorMaterialSync,
     /// `glHint`'s requests.
     pub(super) hints: hint::Hints,
-    /// Blending, the alpha test and fog.
-    pub(super) fragment_ops: fragment::FragmentOps,
-    /// Stencil, accumulation, write masks, scissor, logic op, draw and read buffers.
-    pub(super) fragments: fragments::PerFragment,
+    /// The colour buffer group: alpha test, blending, logic op, colour mask, draw buffer,
+    /// clear colour.
+    pub(super) color_buffer: color_buffer::ColorBuffer,
+    /// The fog group.
+    pub(super) fog: fog::FogState,
+    /// The stencil buffer group: the test, its masks and operations, the clear value.
+    pub(super) stencil: stencil::StencilBuffer,
+    /// The scissor group: the box (x, y, width, height).
+    pub(super) scissor: [GLint; 4],
+    /// The accumulation buffer group: the clear value.
+    pub(super) clear_accum: [f32; 4],
+    /// The drawable's buffers (not an attribute group: no push saves them).
+    pub(super) framebuffer: fragments::BufferConfig,
     /// `glPixelTransfer`, `glPixelMap` and `glPixelZoom`.
     pub(super) pixel_state: pixel_transfer::PixelState,
     /// The colour-index calls' state (an RGBA context keeps it and draws nothing with it).
@@ -225,8 +235,12 @@ impl ServerState {
             tex_gen: texgen::TexGen::default(),
             color_material_sync: lighting::ColorMaterialSync::default(),
             hints: hint::Hints::default(),
-            fragment_ops: fragment::FragmentOps::default(),
-            fragments: fragments::PerFragment::new(width, height),
+            color_buffer: color_buffer::ColorBuffer::default(),
+            fog: fog::FogState::default(),
+            stencil: stencil::StencilBuffer::default(),
+            scissor: [0, 0, width, height],
+            clear_accum: [0.0; 4],
+            framebuffer: fragments::BufferConfig::default(),
             pixel_state: pixel_transfer::PixelState::default(),
             color_index: color_index::ColorIndex::default(),
         }

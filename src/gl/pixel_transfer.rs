@@ -12,7 +12,7 @@
 
 use super::consts::*;
 use super::lists::ListCommand;
-use super::state_var::{int_limit, limit, put_flag, row, Kind, StateVar};
+use super::state_var::{int_limit, limit, put_enum, put_flag, row, Kind, StateVar};
 use super::types::*;
 use super::Gl;
 use std::sync::Arc;
@@ -85,8 +85,8 @@ impl DepthTransfer {
     }
 }
 
-/// What `GL_PIXEL_MODE_BIT` saves of this module: the transfer values and the zoom (Mesa
-/// `gl_pixel_attrib`; the read buffer, also in the group, is the framebuffer's).
+/// What `GL_PIXEL_MODE_BIT` saves: the transfer values, the zoom and the read buffer (Mesa
+/// `gl_pixel_attrib`, with `ReadBuffer` of its `gl_framebuffer`); the maps aside.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) struct PixelMode {
     pub zoom: [f32; 2],
@@ -97,6 +97,8 @@ pub(crate) struct PixelMode {
     index_offset: GLint,
     map_color: bool,
     map_stencil: bool,
+    /// `glReadBuffer`: the name given (see `draw_buffer.rs`).
+    pub read_buffer: GLenum,
 }
 
 impl Default for PixelMode {
@@ -110,6 +112,7 @@ impl Default for PixelMode {
             index_offset: 0,
             map_color: false,
             map_stencil: false,
+            read_buffer: GL_FRONT,
         }
     }
 }
@@ -161,6 +164,8 @@ pub(crate) enum PixelTransferCall {
     Transfer(GLenum, GLfloat),
     /// `glPixelMap*`: map, size, and the values (as floats) copied at compile time.
     Map(GLenum, GLsizei, Vec<GLfloat>),
+    /// `glReadBuffer`.
+    ReadBuffer(GLenum),
 }
 
 impl Gl {
@@ -170,6 +175,7 @@ impl Gl {
             PixelTransferCall::Zoom(x, y) => self.pixel_zoom(*x, *y),
             PixelTransferCall::Transfer(pname, param) => self.pixel_transferf(*pname, *param),
             PixelTransferCall::Map(map, size, values) => self.pixel_mapfv(*map, *size, values),
+            PixelTransferCall::ReadBuffer(mode) => self.read_buffer(*mode),
         }
     }
 
@@ -412,6 +418,7 @@ macro_rules! map_size_row {
 pub(crate) static GET_ROWS: &[StateVar] = &[
     row(GL_MAP_COLOR, 1, Kind::Bool, |gl, o| put_flag(o, gl.server.pixel_state.mode.map_color)),
     row(GL_MAP_STENCIL, 1, Kind::Bool, |gl, o| put_flag(o, gl.server.pixel_state.mode.map_stencil)),
+    row(GL_READ_BUFFER, 1, Kind::Int, |gl, o| put_enum(o, gl.server.pixel_state.mode.read_buffer)),
     mode_row!(GL_INDEX_SHIFT, Int, index_shift),
     mode_row!(GL_INDEX_OFFSET, Int, index_offset),
     mode_row!(GL_RED_SCALE, Float, scale[0]),

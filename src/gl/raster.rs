@@ -1,5 +1,5 @@
 //! Rasterisation state and framebuffer calls: viewport, point size, line width, polygon mode,
-//! face culling, depth function, clear colour and `glClear`.
+//! face culling, depth function and `glClear`.
 
 use super::consts::*;
 use super::frame::Command;
@@ -17,7 +17,6 @@ pub(crate) struct RasterState {
     pub viewport: [i32; 4],
     pub depth_range: [f32; 2],
     pub shade_model: GLenum,
-    pub clear_color: [f32; 4],
     /// `glClipPlane`: the planes in eye coordinates, as transformed at the call.
     pub clip_planes: [[f32; 4]; super::clip::MAX_CLIP_PLANES],
     /// `glPolygonStipple`: row y, bit x for window pixel (x, y) modulo 32.
@@ -30,7 +29,6 @@ impl RasterState {
             viewport: [0, 0, width, height],
             depth_range: [0.0, 1.0],
             shade_model: GL_SMOOTH,
-            clear_color: [0.0; 4],
             clip_planes: [[0.0; 4]; super::clip::MAX_CLIP_PLANES],
             polygon_stipple: [u32::MAX; 32],
         }
@@ -72,17 +70,6 @@ impl Gl {
         self.server.raster.viewport
     }
 
-    /// `glClearColor` (clamped to [0, 1], as GL 1.x does).
-    pub fn clear_color(&mut self, r: GLclampf, g: GLclampf, b: GLclampf, a: GLclampf) {
-        if self.compiled(|| ListCommand::ClearColor([r, g, b, a])) {
-            return;
-        }
-        if self.reject_inside_begin_end() {
-            return;
-        }
-        self.server.raster.clear_color = [r, g, b, a].map(|c| c.clamp(0.0, 1.0));
-    }
-
     /// `glClear`: bits other than colour, depth, stencil and accum → `GL_INVALID_VALUE`.
     /// Records a clear of the whole drawable (no scissor), as GL does.
     pub fn clear(&mut self, mask: GLbitfield) {
@@ -96,9 +83,8 @@ impl Gl {
         if mask & !known != 0 {
             return self.set_error(GL_INVALID_VALUE);
         }
-        let (color, depth) = (self.server.raster.clear_color, self.server.depth.clear);
-        let (stencil, accum, tests) =
-            (self.server.fragments.clear_stencil, self.server.fragments.clear_accum, self.fragment_tests());
+        let (color, depth) = (self.server.color_buffer.clear_color, self.server.depth.clear);
+        let (stencil, accum, tests) = (self.server.stencil.clear, self.server.clear_accum, self.fragment_tests());
         self.recorder.frame.commands.push(Command::Clear { mask, color, depth, stencil, accum, tests });
     }
 

@@ -43,7 +43,7 @@ impl Gl {
             return self.set_error(GL_INVALID_VALUE);
         }
         let Some(size) = type_size(type_) else { return self.set_error(GL_INVALID_ENUM) };
-        if self.server.fragments.config.stencil_bits == 0 {
+        if self.server.framebuffer.stencil_bits == 0 {
             return self.set_error(GL_INVALID_OPERATION);
         }
         let needed = self.packed_image_len(width, height, GL_STENCIL_INDEX, type_).unwrap_or(usize::MAX);

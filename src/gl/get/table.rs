@@ -21,8 +21,8 @@ fn matrix(o: &mut [f64], m: glam::Mat4) {
 /// Every row: this file's, then those of the modules that keep their state's fields.
 pub(crate) fn rows() -> impl Iterator<Item = &'static StateVar> {
     use super::super::{
-        arrays, color_index, depth, eval, fragments, hint, line, lists, pixel_transfer, pixels, point, polygon,
-        raster_pos, select, texture,
+        accum, arrays, color_buffer, color_index, depth, eval, fog, fragments, hint, line, lists, pixel_transfer,
+        pixels, point, polygon, raster_pos, scissor, select, stencil, texture,
     };
     [
         STATE,
@@ -35,6 +35,11 @@ pub(crate) fn rows() -> impl Iterator<Item = &'static StateVar> {
         arrays::GET_ROWS,
         texture::GET_ROWS,
         fragments::GET_ROWS,
+        color_buffer::GET_ROWS,
+        fog::GET_ROWS,
+        stencil::GET_ROWS,
+        scissor::GET_ROWS,
+        accum::GET_ROWS,
         color_index::GET_ROWS,
         pixel_transfer::GET_ROWS,
         eval::GET_ROWS,
@@ -87,12 +92,6 @@ pub(crate) static STATE: &[StateVar] = &[
         put_enum(o, [GL_MODELVIEW, GL_PROJECTION, GL_TEXTURE][gl.server.matrices.mode()])
     }),
     // Table 6.6: colouring.
-    row(GL_FOG_COLOR, 4, Normalized, |gl, o| put(o, &gl.server.fragment_ops.fog.color)),
-    row(GL_FOG_INDEX, 1, Float, |gl, o| o[0] = gl.server.fragment_ops.fog_index.into()),
-    row(GL_FOG_DENSITY, 1, Float, |gl, o| o[0] = gl.server.fragment_ops.fog.density.into()),
-    row(GL_FOG_START, 1, Float, |gl, o| o[0] = gl.server.fragment_ops.fog.start.into()),
-    row(GL_FOG_END, 1, Float, |gl, o| o[0] = gl.server.fragment_ops.fog.end.into()),
-    row(GL_FOG_MODE, 1, Int, |gl, o| put_enum(o, gl.server.fragment_ops.fog.mode)),
     row(GL_SHADE_MODEL, 1, Int, |gl, o| put_enum(o, gl.server.raster.shade_model)),
     // Table 6.7: lighting (materials and lights through glGetMaterial and glGetLight).
     row(GL_COLOR_MATERIAL_PARAMETER, 1, Int, |gl, o| put_enum(o, gl.server.lighting.color_material.1)),
@@ -103,13 +102,6 @@ pub(crate) static STATE: &[StateVar] = &[
     // Table 6.8: rasterisation.
     // Table 6.9: textures (parameters and levels through glGetTex*).
     row(GL_ACTIVE_TEXTURE, 1, Int, |gl, o| put_enum(o, gl.server.active_texture)),
-    // Table 6.12: pixel operations.
-    row(GL_ALPHA_TEST_FUNC, 1, Int, |gl, o| put_enum(o, gl.server.fragment_ops.alpha.0)),
-    row(GL_ALPHA_TEST_REF, 1, Normalized, |gl, o| o[0] = gl.server.fragment_ops.alpha.1.into()),
-    row(GL_BLEND_SRC, 1, Int, |gl, o| put_enum(o, gl.server.fragment_ops.blend[0])),
-    row(GL_BLEND_DST, 1, Int, |gl, o| put_enum(o, gl.server.fragment_ops.blend[1])),
-    // Table 6.13: framebuffer control.
-    row(GL_COLOR_CLEAR_VALUE, 4, Normalized, |gl, o| put(o, &gl.server.raster.clear_color)),
     // Tables 6.17–6.19: implementation limits and the framebuffer's configuration (llvmpipe's).
     int_limit!(GL_MAX_LIGHTS, 8),
     int_limit!(GL_MAX_CLIP_PLANES, super::super::clip::MAX_CLIP_PLANES),

@@ -1,10 +1,12 @@
-//! Per-fragment state: blending (`glBlendFunc`, GL 1.1 spec §4.1.6), the alpha test
-//! (`glAlphaFunc`, §4.1.3) and fog (`glFog`, §3.9). The values live here; a recorded
-//! primitive's [`DrawState`](super::DrawState) carries those that are enabled, and the
-//! rasteriser applies them per fragment (fog, alpha test) or in its blend state.
+//! The fog attribute group (GL 1.1 spec §3.9; table 6.6; Mesa `main/fog.c`): `glFog` in its
+//! forms, in one struct as `GL_FOG_BIT` saves it, with the group's `glGet` rows and its enable.
+//! A recorded primitive's [`DrawState`](super::DrawState) carries the fog while `GL_FOG` is on,
+//! and both rasterisers blend it per fragment. A display list holds the call as
+//! `ListCommand::Fog`.
 
 use super::consts::*;
 use super::lists::ListCommand;
+use super::state_var::{put, put_enum, row, Kind, StateVar};
 use super::types::*;
 use super::Gl;
 
@@ -29,56 +31,20 @@ impl Default for Fog {
     }
 }
 
-/// The fragment operations' values, enabled or not.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub(crate) struct FragmentOps {
-    pub blend: [GLenum; 2],
-    pub alpha: (GLenum, f32),
-    pub fog: Fog,
+/// `GL_FOG_BIT`'s state (its enable aside).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub(crate) struct FogState {
+    /// What an RGBA context draws with.
+    pub params: Fog,
     /// `GL_FOG_INDEX`: colour-index fog, kept for `glGet` and `GL_FOG_BIT` (nothing is drawn in
     /// colour-index mode).
-    pub fog_index: f32,
+    pub index: f32,
 }
 
-impl Default for FragmentOps {
-    fn default() -> Self {
-        Self { blend: [GL_ONE, GL_ZERO], alpha: (GL_ALWAYS, 0.0), fog: Fog::default(), fog_index: 0.0 }
-    }
-}
-
-/// Whether `factor` is a blend factor GL takes (GL 1.1 table 4.1 and 4.2, with GL 1.4's
-/// source colour factors, as Mesa accepts them).
-fn blend_factor(factor: GLenum) -> bool {
-    matches!(factor, GL_ZERO | GL_ONE) || (GL_SRC_COLOR..=GL_SRC_ALPHA_SATURATE).contains(&factor)
-}
+/// The enables GL files under the group (GL 1.1 table 6.6).
+pub(crate) const FOG_ENABLES: &[GLenum] = &[GL_FOG];
 
 impl Gl {
-    /// `glBlendFunc`: the source and destination factors used while `GL_BLEND` is enabled.
-    /// A factor GL does not know → `GL_INVALID_ENUM`.
-    pub fn blend_func(&mut self, sfactor: GLenum, dfactor: GLenum) {
-        if self.compiled_state_call(|| ListCommand::BlendFunc(sfactor, dfactor)) {
-            return;
-        }
-        if !blend_factor(sfactor) || !blend_factor(dfactor) {
-            return self.set_error(GL_INVALID_ENUM);
-        }
-        self.server.fragment_ops.blend = [sfactor, dfactor];
-        self.touch_state();
-    }
-
-    /// `glAlphaFunc`: the comparison (`GL_NEVER` .. `GL_ALWAYS`) and reference (clamped to
-    /// [0, 1]) of the alpha test. Another function → `GL_INVALID_ENUM`.
-    pub fn alpha_func(&mut self, func: GLenum, reference: GLclampf) {
-        if self.compiled_state_call(|| ListCommand::AlphaFunc(func, reference)) {
-            return;
-        }
-        if !(GL_NEVER..=GL_ALWAYS).contains(&func) {
-            return self.set_error(GL_INVALID_ENUM);
-        }
-        self.server.fragment_ops.alpha = (func, reference.clamp(0.0, 1.0));
-        self.touch_state();
-    }
-
     /// Values `glFogfv`/`glFogiv` read for `pname`: 4 for `GL_FOG_COLOR`, else 1 (the first
     /// value is read before the name is checked, as Mesa reads it).
     #[must_use]
@@ -101,7 +67,7 @@ impl Gl {
         let Some(values) = params.get(..Self::fog_param_count(pname)) else {
             return self.set_error(GL_INVALID_VALUE);
         };
-        let fog = &mut self.server.fragment_ops.fog;
+        let fog = &mut self.server.fog.params;
         match pname {
             GL_FOG_MODE => match values[0] as GLenum {
                 mode @ (GL_LINEAR | GL_EXP | GL_EXP2) => fog.mode = mode,
@@ -112,7 +78,7 @@ impl Gl {
             GL_FOG_START => fog.start = values[0],
             GL_FOG_END => fog.end = values[0],
             GL_FOG_COLOR => fog.color = std::array::from_fn(|i| values[i].clamp(0.0, 1.0)),
-            GL_FOG_INDEX => self.server.fragment_ops.fog_index = values[0],
+            GL_FOG_INDEX => self.server.fog.index = values[0],
             _ => return self.set_error(GL_INVALID_ENUM),
         }
         self.touch_state();
@@ -128,45 +94,44 @@ impl Gl {
         self.fogfv(pname, &[param as GLfloat, 0.0, 0.0, 0.0]);
     }
 
-    /// The blend factors while `GL_BLEND` is on.
-    pub(crate) fn enabled_blend(&self) -> Option<[GLenum; 2]> {
-        self.capability(GL_BLEND).then_some(self.server.fragment_ops.blend)
-    }
-
-    /// The alpha test while `GL_ALPHA_TEST` is on.
-    pub(crate) fn enabled_alpha_test(&self) -> Option<(GLenum, f32)> {
-        self.capability(GL_ALPHA_TEST).then_some(self.server.fragment_ops.alpha)
-    }
-
     /// The fog while `GL_FOG` is on.
     pub(crate) fn enabled_fog(&self) -> Option<Fog> {
-        self.capability(GL_FOG).then_some(self.server.fragment_ops.fog)
+        self.capability(GL_FOG).then_some(self.server.fog.params)
     }
 }
+
+/// The group's `glGet` rows.
+pub(crate) static GET_ROWS: &[StateVar] = &[
+    row(GL_FOG_COLOR, 4, Kind::Normalized, |gl, o| put(o, &gl.server.fog.params.color)),
+    row(GL_FOG_INDEX, 1, Kind::Float, |gl, o| o[0] = gl.server.fog.index.into()),
+    row(GL_FOG_DENSITY, 1, Kind::Float, |gl, o| o[0] = gl.server.fog.params.density.into()),
+    row(GL_FOG_START, 1, Kind::Float, |gl, o| o[0] = gl.server.fog.params.start.into()),
+    row(GL_FOG_END, 1, Kind::Float, |gl, o| o[0] = gl.server.fog.params.end.into()),
+    row(GL_FOG_MODE, 1, Kind::Int, |gl, o| put_enum(o, gl.server.fog.params.mode)),
+];
 
 #[cfg(test)]
 mod tests {
     use super::*;
 
     #[test]
-    fn fragment_state_errors() {
+    fn the_group_as_mesa_keeps_it() {
         let mut gl = Gl::new(4, 4);
-        gl.blend_func(GL_SRC_ALPHA, 0x1234);
-        assert_eq!(gl.get_error(), GL_INVALID_ENUM);
-        gl.alpha_func(0x1234, 0.5);
-        assert_eq!(gl.get_error(), GL_INVALID_ENUM);
         gl.fogi(GL_FOG_MODE, GL_LINEAR as i32 + 7);
         assert_eq!(gl.get_error(), GL_INVALID_ENUM);
         gl.fogf(GL_FOG_DENSITY, -1.0);
         assert_eq!(gl.get_error(), GL_INVALID_VALUE);
         gl.fogfv(GL_FOG_COLOR, &[1.0, 0.0]);
         assert_eq!(gl.get_error(), GL_INVALID_VALUE);
-        gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        gl.push_attrib(GL_FOG_BIT);
         gl.fogi(GL_FOG_MODE, GL_LINEAR as i32);
-        gl.enable(GL_BLEND);
+        gl.fogf(GL_FOG_INDEX, 3.0);
         gl.enable(GL_FOG);
-        assert_eq!(gl.enabled_blend(), Some([GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA]));
         assert_eq!(gl.enabled_fog().map(|f| f.mode), Some(GL_LINEAR));
-        assert_eq!(gl.get_error(), GL_NO_ERROR);
+        let mut index = [0.0];
+        gl.get_floatv(GL_FOG_INDEX, &mut index);
+        assert_eq!((index, gl.get_error()), ([3.0], GL_NO_ERROR));
+        gl.pop_attrib();
+        assert_eq!((gl.server.fog, gl.enabled_fog()), (FogState::default(), None));
     }
 }
