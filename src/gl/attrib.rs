@@ -9,12 +9,13 @@
 //! stencil, accumulation, scissor, pixel mode (transfer, zoom, read buffer), hint, evaluator,
 //! list (base) and texture (unit 0's bindings and environment). A group with its own struct is
 //! saved and restored in one piece; the rest through their areas (`pixel_attrib`,
-//! `texture_attrib`, `RasterValues`).
+//! `texture_attrib`).
 
 use super::consts::*;
 use super::eval::EvalAttrib;
 use super::lighting::Lighting;
 use super::lists::ListCommand;
+use super::state_var::{int_limit, row, Kind, StateVar};
 use super::types::*;
 use super::{Current, Gl};
 
@@ -49,22 +50,15 @@ const TRANSFORM_ENABLES: &[GLenum] = &[
 const TEXTURE_ENABLES: &[GLenum] =
     &[GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q];
 
-/// The raster values of the lighting (shade model), viewport, transform and polygon stipple
-/// groups.
-#[derive(Clone, Copy, Debug, PartialEq)]
-struct RasterValues {
-    clip_planes: [[f32; 4]; super::clip::MAX_CLIP_PLANES],
-    polygon_stipple: [u32; 32],
-    shade_model: GLenum,
-    viewport: ([i32; 4], [f32; 2]),
-}
-
 /// What one `glPushAttrib` saved: the mask, and every group's values (restored by the mask).
 #[derive(Clone, Debug)]
 struct Saved {
     mask: GLbitfield,
     current: Current,
-    raster: RasterValues,
+    viewport: super::viewport::Viewport,
+    shade_model: GLenum,
+    clip_planes: [[f32; 4]; super::clip::MAX_CLIP_PLANES],
+    polygon_stipple: [u32; 32],
     lighting: Option<Lighting>,
     color_buffer: super::color_buffer::ColorBuffer,
     fog: super::fog::FogState,
@@ -172,18 +166,14 @@ impl Gl {
     /// The groups of `mask` as they are now.
     fn save_groups(&mut self, mask: GLbitfield) -> Saved {
         self.flush_current();
-        let r = &self.server.raster;
-        let raster = RasterValues {
-            clip_planes: r.clip_planes,
-            polygon_stipple: r.polygon_stipple,
-            shade_model: r.shade_model,
-            viewport: (r.viewport, r.depth_range),
-        };
         let enables = enables_of(mask).into_iter().map(|cap| (cap, self.server.caps.is_on(cap))).collect();
         Saved {
             mask,
             current: self.server.current,
-            raster,
+            viewport: self.server.viewport,
+            shade_model: self.server.shade_model,
+            clip_planes: self.server.clip_planes,
+            polygon_stipple: self.server.polygon_stipple,
             lighting: (mask & GL_LIGHTING_BIT != 0).then(|| self.server.lighting.clone()),
             color_buffer: self.server.color_buffer,
             fog: self.server.fog,
@@ -208,9 +198,8 @@ impl Gl {
 
     fn restore_groups(&mut self, saved: Saved) {
         self.restore_pixel_attrib(saved.mask, saved.pixels);
-        let (mask, v) = (saved.mask, saved.raster);
+        let mask = saved.mask;
         let has = |bit: GLbitfield| mask & bit != 0;
-        let r = &mut self.server.raster;
         if has(GL_CURRENT_BIT) {
             self.server.current = saved.current;
         }
@@ -224,16 +213,16 @@ impl Gl {
             self.server.polygon = saved.polygon;
         }
         if has(GL_POLYGON_STIPPLE_BIT) {
-            r.polygon_stipple = v.polygon_stipple;
+            self.server.polygon_stipple = saved.polygon_stipple;
         }
         if has(GL_LIGHTING_BIT) {
-            r.shade_model = v.shade_model;
+            self.server.shade_model = saved.shade_model;
         }
         if has(GL_DEPTH_BUFFER_BIT) {
             self.server.depth = saved.depth;
         }
         if has(GL_VIEWPORT_BIT) {
-            (r.viewport, r.depth_range) = v.viewport;
+            self.server.viewport = saved.viewport;
         }
         if has(GL_COLOR_BUFFER_BIT) {
             self.server.color_buffer = saved.color_buffer;
@@ -255,7 +244,7 @@ impl Gl {
         }
         if has(GL_TRANSFORM_BIT) {
             self.server.matrices.set_mode(saved.matrix_mode);
-            self.server.raster.clip_planes = v.clip_planes;
+            self.server.clip_planes = saved.clip_planes;
         }
         if has(GL_LIST_BIT) {
             self.set_list_base_value(saved.list_base);
@@ -276,6 +265,12 @@ impl Gl {
         }
     }
 }
+
+/// The attribute stack's `glGet` rows.
+pub(crate) static GET_ROWS: &[StateVar] = &[
+    int_limit!(GL_MAX_ATTRIB_STACK_DEPTH, MAX_ATTRIB_STACK_DEPTH),
+    row(GL_ATTRIB_STACK_DEPTH, 1, Kind::Int, |gl, o| o[0] = gl.attrib_stack_depth() as f64),
+];
 
 #[cfg(test)]
 mod tests {
@@ -302,8 +297,8 @@ mod tests {
         assert_eq!(gl.server.current.color, [0.5, 0.25, 0.125, 1.0]);
         assert_eq!((gl.is_enabled(GL_LIGHTING), gl.is_enabled(GL_LIGHT3)), (GL_TRUE, GL_FALSE));
         assert_eq!(gl.server.lighting.lights[0].diffuse.to_array(), [0.1, 0.2, 0.3, 1.0]);
-        assert_eq!(gl.server.raster.shade_model, GL_SMOOTH);
-        assert_eq!(gl.server.raster.viewport, [0, 0, 10, 10]);
+        assert_eq!(gl.server.shade_model, GL_SMOOTH);
+        assert_eq!(gl.server.viewport.rect, [0, 0, 10, 10]);
         assert_eq!(gl.server.polygon.mode, [GL_FILL, GL_FILL]);
         assert_eq!((gl.is_enabled(GL_CULL_FACE), gl.is_enabled(GL_DEPTH_TEST)), (GL_FALSE, GL_TRUE));
         assert_eq!(gl.get_error(), GL_NO_ERROR);
@@ -318,7 +313,7 @@ mod tests {
         gl.polygon_stipple(&[0x0F; 128]);
         gl.enable(GL_POLYGON_STIPPLE);
         gl.pop_attrib();
-        assert_eq!(gl.server.raster.polygon_stipple, [u32::MAX; 32]);
+        assert_eq!(gl.server.polygon_stipple, [u32::MAX; 32]);
         assert_eq!(gl.is_enabled(GL_POLYGON_STIPPLE), GL_TRUE);
         assert_eq!(gl.get_error(), GL_NO_ERROR);
     }

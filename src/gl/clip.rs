@@ -7,6 +7,7 @@
 
 use super::consts::*;
 use super::lists::ListCommand;
+use super::state_var::{int_limit, StateVar};
 use super::types::*;
 use super::Gl;
 use glam::Vec4;
@@ -80,7 +81,7 @@ impl Gl {
         let eq = [eq[0], eq[1], eq[2], eq[3]];
         let object = Vec4::from_array(eq.map(|c| c as f32));
         let eye = self.plane_to_eye(object);
-        self.server.raster.clip_planes[i] = eye.to_array();
+        self.server.clip_planes[i] = eye.to_array();
         self.touch_state();
     }
 
@@ -92,7 +93,7 @@ impl Gl {
         }
         let Some(i) = plane_index(plane) else { return self.set_error(GL_INVALID_ENUM) };
         let Some(out) = equation.get_mut(..4) else { return self.set_error(GL_INVALID_VALUE) };
-        for (o, c) in out.iter_mut().zip(self.server.raster.clip_planes[i]) {
+        for (o, c) in out.iter_mut().zip(self.server.clip_planes[i]) {
             *o = f64::from(c);
         }
     }
@@ -101,10 +102,13 @@ impl Gl {
     pub(crate) fn enabled_clip_planes(&self) -> Vec<[f32; 4]> {
         (0..MAX_CLIP_PLANES)
             .filter(|&i| self.capability(GL_CLIP_PLANE0 + i as GLenum))
-            .map(|i| self.server.raster.clip_planes[i])
+            .map(|i| self.server.clip_planes[i])
             .collect()
     }
 }
+
+/// The clip planes' limit (the planes answer through `glGetClipPlane`).
+pub(crate) static GET_ROWS: &[StateVar] = &[int_limit!(GL_MAX_CLIP_PLANES, MAX_CLIP_PLANES)];
 
 #[cfg(test)]
 mod tests {

@@ -16,6 +16,7 @@
 use super::consts::*;
 use super::feedback_prims::{self, FeedbackPrimitive, FeedbackVertex};
 use super::frame::Command;
+use super::state_var::{put_enum, row, Kind, StateVar};
 use super::types::*;
 use super::vertex::Vertex;
 use super::Gl;
@@ -69,6 +70,13 @@ fn layout(kind: GLenum) -> Option<(bool, bool, bool)> {
 /// The vertex indices of the tokens GL reports for a primitive of `count` vertices:
 /// (token, indices) in Mesa's order and winding, before clipping and culling (what the Mesa
 /// call-script tests' own feedback emulation reads).
+/// The render mode's and the feedback buffer's `glGet` rows.
+pub(crate) static GET_ROWS: &[StateVar] = &[
+    row(GL_RENDER_MODE, 1, Kind::Int, |gl, o| put_enum(o, gl.render_mode_value())),
+    row(GL_FEEDBACK_BUFFER_SIZE, 1, Kind::Int, |gl, o| o[0] = gl.feedback_buffer_spec().0 as f64),
+    row(GL_FEEDBACK_BUFFER_TYPE, 1, Kind::Int, |gl, o| put_enum(o, gl.feedback_buffer_spec().1)),
+];
+
 #[cfg(test)]
 fn tokens(mode: GLenum, count: usize) -> Vec<(GLenum, Vec<usize>)> {
     let n = count;

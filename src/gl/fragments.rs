@@ -6,7 +6,7 @@
 //! `glGet` rows.
 
 use super::consts::*;
-use super::state_var::{put_flag, row, Kind, StateVar};
+use super::state_var::{int_limit, limit, put_flag, row, Kind, StateVar};
 use super::types::*;
 use super::Gl;
 
@@ -153,6 +153,17 @@ pub(crate) static GET_ROWS: &[StateVar] = &[
     row(GL_ACCUM_GREEN_BITS, 1, Kind::Int, |gl, o| o[0] = f64::from(gl.server.framebuffer.accum_bits)),
     row(GL_ACCUM_BLUE_BITS, 1, Kind::Int, |gl, o| o[0] = f64::from(gl.server.framebuffer.accum_bits)),
     row(GL_ACCUM_ALPHA_BITS, 1, Kind::Int, |gl, o| o[0] = f64::from(gl.server.framebuffer.accum_bits)),
+    int_limit!(GL_SUBPIXEL_BITS, 8),
+    int_limit!(GL_AUX_BUFFERS, 0),
+    StateVar { kind: Kind::Bool, ..limit!(GL_RGBA_MODE, 1) },
+    StateVar { kind: Kind::Bool, ..limit!(GL_INDEX_MODE, 0) },
+    StateVar { kind: Kind::Bool, ..limit!(GL_STEREO, 0) },
+    int_limit!(GL_RED_BITS, 8),
+    int_limit!(GL_GREEN_BITS, 8),
+    int_limit!(GL_BLUE_BITS, 8),
+    int_limit!(GL_ALPHA_BITS, 8),
+    int_limit!(GL_INDEX_BITS, 0),
+    int_limit!(GL_DEPTH_BITS, 24),
 ];
 
 #[cfg(test)]

@@ -6,7 +6,7 @@
 
 use super::consts::*;
 use super::lists::ListCommand;
-use super::state_var::{row, Kind, StateVar};
+use super::state_var::{limit, row, Kind, StateVar};
 use super::types::*;
 use super::Gl;
 
@@ -80,6 +80,9 @@ pub(crate) static GET_ROWS: &[StateVar] = &[
     row(GL_LINE_WIDTH, 1, Kind::Float, |gl, o| o[0] = gl.server.line.width.into()),
     row(GL_LINE_STIPPLE_PATTERN, 1, Kind::Int, |gl, o| o[0] = gl.server.line.stipple.1.into()),
     row(GL_LINE_STIPPLE_REPEAT, 1, Kind::Int, |gl, o| o[0] = gl.server.line.stipple.0.into()),
+    limit!(GL_LINE_WIDTH_RANGE, 1, 255),
+    limit!(GL_LINE_WIDTH_GRANULARITY, 0.1f32),
+    limit!(GL_ALIASED_LINE_WIDTH_RANGE, 1, 255),
 ];
 
 #[cfg(test)]

@@ -21,7 +21,7 @@ use super::consts::*;
 use super::eval::MeshJob;
 use super::frame::Call;
 use super::pixels::PixelStore;
-use super::state_var::{put_enum, row, Kind, StateVar};
+use super::state_var::{int_limit, put_enum, row, Kind, StateVar};
 use super::types::*;
 use super::vertex::Vertex;
 use super::Gl;
@@ -41,11 +41,6 @@ pub(crate) enum ListCommand {
     Rect([f32; 4]),
     Enable(GLenum),
     Disable(GLenum),
-    Light(GLenum, GLenum, Vec<f32>),
-    Material(GLenum, GLenum, Vec<f32>),
-    LightModel(GLenum, Vec<f32>),
-    ColorMaterial(GLenum, GLenum),
-    ShadeModel(GLenum),
     MatrixMode(GLenum),
     LoadIdentity,
     LoadMatrix([f32; 16]),
@@ -57,8 +52,8 @@ pub(crate) enum ListCommand {
     Scale([f32; 3]),
     Ortho([f64; 6]),
     Frustum([f64; 6]),
-    Viewport([i32; 4]),
-    DepthRange(f64, f64),
+    /// The viewport group's calls (`viewport.rs`).
+    Viewport(super::viewport::ViewportCall),
     ClipPlane(GLenum, Vec<f64>),
     /// `glPolygonStipple` with its mask unpacked at compile time (`None`: too short).
     PolygonStipple(Option<[u32; 32]>),
@@ -166,6 +161,9 @@ pub(crate) enum ListCommand {
     Point(super::point::PointCall),
     Line(super::line::LineCall),
     Polygon(super::polygon::PolygonCall),
+
+    /// The lighting group's calls
+    Lighting(super::lighting::LightingCall),
 }
 
 /// A list being compiled.
@@ -433,11 +431,7 @@ impl Gl {
             C::Immediate(Call::TexCoord([s, t, r, q])) => self.tex_coord4f(*s, *t, *r, *q),
             C::Enable(cap) => self.enable(*cap),
             C::Disable(cap) => self.disable(*cap),
-            C::Light(light, pname, params) => self.light_fv(*light, *pname, params),
-            C::Material(face, pname, params) => self.material_fv(*face, *pname, params),
-            C::LightModel(pname, params) => self.light_model_fv(*pname, params),
-            C::ColorMaterial(face, mode) => self.color_material(*face, *mode),
-            C::ShadeModel(mode) => self.shade_model(*mode),
+            C::Lighting(call) => self.replay_lighting_call(call),
             C::MatrixMode(mode) => self.matrix_mode(*mode),
             C::LoadIdentity => self.load_identity(),
             C::LoadMatrix(m) => self.load_matrixf(m),
@@ -449,8 +443,7 @@ impl Gl {
             C::Scale([x, y, z]) => self.scalef(*x, *y, *z),
             C::Ortho([l, r, b, t, n, f]) => self.ortho(*l, *r, *b, *t, *n, *f),
             C::Frustum([l, r, b, t, n, f]) => self.frustum(*l, *r, *b, *t, *n, *f),
-            C::Viewport([x, y, w, h]) => self.viewport(*x, *y, *w, *h),
-            C::DepthRange(near, far) => self.depth_range(*near, *far),
+            C::Viewport(call) => self.replay_viewport_call(*call),
             C::ClipPlane(plane, equation) => self.clip_plane(*plane, equation),
             C::PolygonStipple(rows) => {
                 if !self.reject_inside_begin_end() {
@@ -564,6 +557,7 @@ pub(crate) static GET_ROWS: &[StateVar] = &[
         let mode = |c: &Compiling| if c.execute { GL_COMPILE_AND_EXECUTE } else { GL_COMPILE };
         put_enum(o, gl.lists.compiling.as_ref().map_or(0, mode))
     }),
+    int_limit!(GL_MAX_LIST_NESTING, MAX_LIST_NESTING),
 ];
 
 #[cfg(test)]

@@ -5,6 +5,7 @@
 
 use super::consts::*;
 use super::lists::ListCommand;
+use super::state_var::{int_limit, put, put_enum, row, Kind, StateVar};
 use super::types::*;
 use super::Gl;
 use glam::{Mat4, Vec3, Vec4};
@@ -352,6 +353,27 @@ impl Gl {
         self.translated(-eye_x, -eye_y, -eye_z);
     }
 }
+
+/// Writes a matrix as the answer, column by column.
+fn put_matrix(o: &mut [f64], m: glam::Mat4) {
+    put(o, &m.to_cols_array());
+}
+
+/// The transform group's `glGet` rows (the matrix mode, the matrices and their stacks), and the stacks' limits.
+pub(crate) static GET_ROWS: &[StateVar] = &[
+    row(GL_MODELVIEW_MATRIX, 16, Kind::Normalized, |gl, o| put_matrix(o, gl.server.matrices.modelview())),
+    row(GL_PROJECTION_MATRIX, 16, Kind::Normalized, |gl, o| put_matrix(o, gl.server.matrices.projection())),
+    row(GL_TEXTURE_MATRIX, 16, Kind::Normalized, |gl, o| put_matrix(o, gl.server.matrices.texture())),
+    row(GL_MODELVIEW_STACK_DEPTH, 1, Kind::Int, |gl, o| o[0] = gl.server.matrices.depth(0) as f64),
+    row(GL_PROJECTION_STACK_DEPTH, 1, Kind::Int, |gl, o| o[0] = gl.server.matrices.depth(1) as f64),
+    row(GL_TEXTURE_STACK_DEPTH, 1, Kind::Int, |gl, o| o[0] = gl.server.matrices.depth(2) as f64),
+    row(GL_MATRIX_MODE, 1, Kind::Int, |gl, o| {
+        put_enum(o, [GL_MODELVIEW, GL_PROJECTION, GL_TEXTURE][gl.server.matrices.mode()])
+    }),
+    int_limit!(GL_MAX_MODELVIEW_STACK_DEPTH, DEPTHS[0]),
+    int_limit!(GL_MAX_PROJECTION_STACK_DEPTH, DEPTHS[1]),
+    int_limit!(GL_MAX_TEXTURE_STACK_DEPTH, DEPTHS[2]),
+];
 
 #[cfg(test)]
 mod tests {

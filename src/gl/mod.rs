@@ -11,6 +11,7 @@ mod arrays;
 mod attrib;
 mod binding;
 mod bitmap;
+mod clear;
 mod client_memory;
 pub(crate) mod clip;
 mod color_buffer;
@@ -18,6 +19,7 @@ mod color_index;
 pub mod consts;
 mod copy_pixels;
 mod copy_texture;
+mod current;
 mod depth;
 mod draw_buffer;
 mod enable;
@@ -44,7 +46,6 @@ pub mod pixel_zoom;
 mod pixels;
 mod point;
 mod polygon;
-mod raster;
 mod raster_pos;
 mod read_pixels;
 mod read_stencil;
@@ -60,6 +61,7 @@ mod texture;
 pub mod types;
 mod variants;
 mod vertex;
+mod viewport;
 mod window_read;
 
 pub use arrays::PointerArg;
@@ -83,6 +85,7 @@ pub use vertex::Vertex;
 pub use window_read::{WindowImage, WindowReader};
 
 use consts::*;
+pub(crate) use current::Current;
 use types::*;
 
 /// Where `glEvalMesh` grids are evaluated: chosen with [`Gl::set_tessellator`] (a new [`Gl`]
@@ -112,20 +115,6 @@ impl Tessellator {
             Ok(v) if v.eq_ignore_ascii_case("gpu") => Self::Gpu,
             _ => Self::Cpu,
         }
-    }
-}
-
-/// The current values that a vertex picks up (GL 1.1 spec §2.7).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub(crate) struct Current {
-    pub color: [f32; 4],
-    pub normal: [f32; 3],
-    pub tex_coord: [f32; 4],
-}
-
-impl Default for Current {
-    fn default() -> Self {
-        Self { color: [1.0; 4], normal: [0.0, 0.0, 1.0], tex_coord: [0.0, 0.0, 0.0, 1.0] }
     }
 }
 
@@ -184,7 +173,16 @@ pub(crate) struct ServerState {
     pub(super) active_texture: GLenum,
     pub(crate) matrices: matrix::MatrixStacks,
     pub(super) lighting: lighting::Lighting,
-    pub(crate) raster: raster::RasterState,
+    /// The viewport group: the rectangle and the depth range.
+    pub(super) viewport: viewport::Viewport,
+    /// `glShadeModel` (the lighting group's; `Lighting` is what a lit draw carries).
+    pub(super) shade_model: GLenum,
+    /// `glClipPlane`'s planes in eye coordinates, as transformed at the call (the transform
+    /// group's, with the matrix mode).
+    pub(super) clip_planes: [[f32; 4]; clip::MAX_CLIP_PLANES],
+    /// `glPolygonStipple`, the polygon stipple group: row y, bit x for window pixel (x, y)
+    /// modulo 32.
+    pub(super) polygon_stipple: [u32; 32],
     /// The current raster position, where bitmaps and pixels are drawn.
     pub(super) raster_pos: raster_pos::RasterPos,
     /// Texture objects and unit 0's environment.
@@ -229,7 +227,10 @@ impl ServerState {
             active_texture: GL_TEXTURE0,
             matrices: matrix::MatrixStacks::default(),
             lighting: lighting::Lighting::default(),
-            raster: raster::RasterState::new(width, height),
+            viewport: viewport::Viewport::new(width, height),
+            shade_model: GL_SMOOTH,
+            clip_planes: [[0.0; 4]; clip::MAX_CLIP_PLANES],
+            polygon_stipple: [u32::MAX; 32],
             raster_pos: raster_pos::RasterPos::default(),
             textures: texture::Textures::default(),
             tex_gen: texgen::TexGen::default(),
@@ -403,7 +404,6 @@ impl Gl {
     }
 
     fn snapshot(&self, texture: Option<texture::BoundTexture>) -> DrawState {
-        let r = &self.server.raster;
         let lighting = self.server.caps.is_on(GL_LIGHTING).then(|| {
             let mut l = self.server.lighting.clone();
             for (i, light) in l.lights.iter_mut().enumerate() {
@@ -414,13 +414,13 @@ impl Gl {
         DrawState {
             modelview: self.server.matrices.modelview(),
             projection: self.server.matrices.projection(),
-            viewport: r.viewport,
-            depth_range: r.depth_range,
+            viewport: self.server.viewport.rect,
+            depth_range: self.server.viewport.depth_range,
             lighting,
             color_material: self.color_material_tracks(),
             normalize: self.server.caps.is_on(GL_NORMALIZE),
             rescale_normal: self.server.caps.is_on(GL_RESCALE_NORMAL),
-            shade_model: r.shade_model,
+            shade_model: self.server.shade_model,
             point_size: self.server.point.size,
             line_width: self.server.line.width,
             polygon_mode: self.server.polygon.mode,

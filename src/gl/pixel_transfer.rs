@@ -12,7 +12,7 @@
 
 use super::consts::*;
 use super::lists::ListCommand;
-use super::state_var::{int_limit, limit, put_enum, put_flag, row, Kind, StateVar};
+use super::state_var::{int_limit, put_enum, put_flag, row, Kind, StateVar};
 use super::types::*;
 use super::Gl;
 use std::sync::Arc;

@@ -3,7 +3,7 @@
 //! imply (row length, skipped rows and pixels, row alignment).
 
 use super::consts::*;
-use super::state_var::{put_flag, row, Kind, StateVar};
+use super::state_var::{int_limit, put_flag, row, Kind, StateVar};
 use super::types::*;
 use super::Gl;
 
@@ -196,6 +196,12 @@ pixel_store_rows! {
     unpack: GL_UNPACK_SWAP_BYTES GL_UNPACK_LSB_FIRST GL_UNPACK_ROW_LENGTH GL_UNPACK_SKIP_ROWS GL_UNPACK_SKIP_PIXELS GL_UNPACK_ALIGNMENT;
     pack: GL_PACK_SWAP_BYTES GL_PACK_LSB_FIRST GL_PACK_ROW_LENGTH GL_PACK_SKIP_ROWS GL_PACK_SKIP_PIXELS GL_PACK_ALIGNMENT;
 }
+
+/// The client attribute stack's `glGet` rows.
+pub(crate) static CLIENT_ATTRIB_ROWS: &[StateVar] = &[
+    int_limit!(GL_MAX_CLIENT_ATTRIB_STACK_DEPTH, MAX_CLIENT_ATTRIB_STACK_DEPTH),
+    row(GL_CLIENT_ATTRIB_STACK_DEPTH, 1, Kind::Int, |gl, o| o[0] = gl.client_attrib_stack_depth() as f64),
+];
 
 #[cfg(test)]
 mod tests {

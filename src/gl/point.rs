@@ -4,7 +4,7 @@
 
 use super::consts::*;
 use super::lists::ListCommand;
-use super::state_var::{row, Kind, StateVar};
+use super::state_var::{limit, row, Kind, StateVar};
 use super::types::*;
 use super::Gl;
 
@@ -53,8 +53,12 @@ impl Gl {
 }
 
 /// The group's `glGet` row.
-pub(crate) static GET_ROWS: &[StateVar] =
-    &[row(GL_POINT_SIZE, 1, Kind::Float, |gl, o| o[0] = gl.server.point.size.into())];
+pub(crate) static GET_ROWS: &[StateVar] = &[
+    row(GL_POINT_SIZE, 1, Kind::Float, |gl, o| o[0] = gl.server.point.size.into()),
+    limit!(GL_POINT_SIZE_RANGE, 1, 255),
+    limit!(GL_POINT_SIZE_GRANULARITY, 0.1f32),
+    limit!(GL_ALIASED_POINT_SIZE_RANGE, 1, 255),
+];
 
 #[cfg(test)]
 mod tests {

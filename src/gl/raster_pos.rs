@@ -81,8 +81,8 @@ impl Gl {
         Transform {
             modelview: self.server.matrices.modelview(),
             projection: self.server.matrices.projection(),
-            viewport: self.server.raster.viewport,
-            depth_range: self.server.raster.depth_range,
+            viewport: self.server.viewport.rect,
+            depth_range: self.server.viewport.depth_range,
             clip_planes: self.enabled_clip_planes(),
         }
     }
@@ -198,7 +198,7 @@ impl Gl {
             return;
         }
         self.flush_current();
-        let [near, far] = self.server.raster.depth_range;
+        let [near, far] = self.server.viewport.depth_range;
         let z = near + z.clamp(0.0, 1.0) * (far - near);
         self.server.raster_pos = RasterPos {
             window: [x, y, z, 1.0],

@@ -16,7 +16,7 @@
 use super::consts::*;
 use super::feedback_prims::FeedbackPrimitive;
 use super::lists::ListCommand;
-use super::state_var::{int_limit, limit, row, Kind, StateVar};
+use super::state_var::{int_limit, row, Kind, StateVar};
 use super::types::*;
 use super::Gl;
 

@@ -48,7 +48,7 @@ macro_rules! limit {
 /// An integer limit.
 macro_rules! int_limit {
     ($name:expr, $($v:expr),+) => {
-        $crate::gl::state_var::StateVar { kind: $crate::gl::state_var::Kind::Int, ..limit!($name, $($v),+) }
+        $crate::gl::state_var::StateVar { kind: $crate::gl::state_var::Kind::Int, ..$crate::gl::state_var::limit!($name, $($v),+) }
     };
 }
 pub(crate) use {int_limit, limit};

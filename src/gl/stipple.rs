@@ -23,14 +23,14 @@ impl Gl {
     /// Sets the unpacked mask (`None`: the client's data was too short).
     pub(crate) fn set_polygon_stipple(&mut self, rows: Option<[u32; 32]>) {
         let Some(rows) = rows else { return self.set_error(GL_INVALID_VALUE) };
-        self.server.raster.polygon_stipple = rows;
+        self.server.polygon_stipple = rows;
         self.touch_state();
     }
 
     /// The mask while `GL_POLYGON_STIPPLE` is on: row y (from the window's bottom, modulo 32)
     /// has bit x set where fragments are kept.
     pub(crate) fn enabled_polygon_stipple(&self) -> Option<[u32; 32]> {
-        self.capability(GL_POLYGON_STIPPLE).then_some(self.server.raster.polygon_stipple)
+        self.capability(GL_POLYGON_STIPPLE).then_some(self.server.polygon_stipple)
     }
 }
 
@@ -51,8 +51,8 @@ mod tests {
         mask[0] = 0x80;
         mask[4 * 31 + 3] = 0x01;
         gl.polygon_stipple(&mask);
-        assert_eq!(gl.server.raster.polygon_stipple[0], 1);
-        assert_eq!(gl.server.raster.polygon_stipple[31], 1 << 31);
+        assert_eq!(gl.server.polygon_stipple[0], 1);
+        assert_eq!(gl.server.polygon_stipple[31], 1 << 31);
         assert_eq!(gl.get_error(), GL_NO_ERROR);
         gl.polygon_stipple(&mask[..127]);
         assert_eq!(gl.get_error(), GL_INVALID_VALUE);

@@ -27,7 +27,7 @@ impl Gl {
         }
         let store = self.client.pixel_stores.pack;
         let stride = store.bitmap_row_stride(32);
-        for (y, row) in self.server.raster.polygon_stipple.iter().enumerate() {
+        for (y, row) in self.server.polygon_stipple.iter().enumerate() {
             // Mesa packs each row into a cleared buffer and copies its bytes: the skipped bits
             // of the first byte and the unused bits of the last are written as 0.
             let start = (store.skip_rows + y) * stride;

@@ -15,7 +15,7 @@
 use super::consts::*;
 use super::lists::ListCommand;
 use super::pixel_unpack::format_components;
-use super::state_var::{int_limit, limit, put_enum, row, Kind, StateVar};
+use super::state_var::{int_limit, put_enum, row, Kind, StateVar};
 use super::texgen::{TexGen, TexGenState};
 use super::types::*;
 use super::Gl;
@@ -500,6 +500,7 @@ pub(crate) static GET_ROWS: &[StateVar] = &[
     row(GL_TEXTURE_BINDING_1D, 1, Kind::Int, |gl, o| put_enum(o, gl.server.textures.bound[0])),
     row(GL_TEXTURE_BINDING_2D, 1, Kind::Int, |gl, o| put_enum(o, gl.server.textures.bound[1])),
     int_limit!(GL_MAX_TEXTURE_SIZE, MAX_TEXTURE_SIZE),
+    row(GL_ACTIVE_TEXTURE, 1, Kind::Int, |gl, o| put_enum(o, gl.server.active_texture)),
 ];
 
 #[cfg(test)]

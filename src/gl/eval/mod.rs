@@ -13,7 +13,7 @@ pub use job::{MapSample, MeshJob};
 pub use target::{MapTarget, Slot};
 
 use super::consts::*;
-use super::state_var::{put, row, Kind, StateVar};
+use super::state_var::{int_limit, put, row, Kind, StateVar};
 use super::types::*;
 use crate::gl::lists::ListCommand;
 pub(crate) use map::Map;
@@ -194,6 +194,7 @@ pub(crate) static GET_ROWS: &[StateVar] = &[
     }),
     row(GL_MAP1_GRID_SEGMENTS, 1, Kind::Int, |gl, o| o[0] = f64::from(gl.server.eval.grid1.n)),
     row(GL_MAP2_GRID_SEGMENTS, 2, Kind::Int, |gl, o| put(o, &[gl.server.eval.grid2.0.n, gl.server.eval.grid2.1.n])),
+    int_limit!(GL_MAX_EVAL_ORDER, MAX_EVAL_ORDER),
 ];
 
 impl super::Gl {

@@ -7,6 +7,7 @@ mod query;
 
 use super::consts::*;
 use super::lists::ListCommand;
+use super::state_var::{int_limit, put, put_enum, put_flag, row, Kind, StateVar};
 use super::types::*;
 use super::Gl;
 use color_material::material_bits;
@@ -114,6 +115,30 @@ fn vec4_from(p: &[f32]) -> Vec4 {
     Vec4::new(p[0], p[1], p[2], p[3])
 }
 
+/// The lighting group's calls as a display list holds them.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) enum LightingCall {
+    Light(GLenum, GLenum, Vec<f32>),
+    Material(GLenum, GLenum, Vec<f32>),
+    LightModel(GLenum, Vec<f32>),
+    ColorMaterial(GLenum, GLenum),
+    ShadeModel(GLenum),
+}
+
+impl Gl {
+    /// Replays a listed call of the group.
+    pub(crate) fn replay_lighting_call(&mut self, call: &LightingCall) {
+        use LightingCall as C;
+        match call {
+            C::Light(light, pname, params) => self.light_fv(*light, *pname, params),
+            C::Material(face, pname, params) => self.material_fv(*face, *pname, params),
+            C::LightModel(pname, params) => self.light_model_fv(*pname, params),
+            C::ColorMaterial(face, mode) => self.color_material(*face, *mode),
+            C::ShadeModel(mode) => self.shade_model(*mode),
+        }
+    }
+}
+
 impl Gl {
     /// Values `glLightfv`/`glLightiv` read and `glGetLight*v` write for `pname` (GL 1.1 table
     /// 2.9): 4 for the colours and the position, 3 for the spot direction, 1 for the spot
@@ -154,7 +179,7 @@ impl Gl {
     /// a cutoff outside 0..=90 other than 180, or a negative attenuation → `GL_INVALID_VALUE`.
     /// `params` needs 4 values for colours and positions, 3 for the spot direction, else 1.
     pub fn light_fv(&mut self, light: GLenum, pname: GLenum, params: &[GLfloat]) {
-        if self.compiled(|| ListCommand::Light(light, pname, params.to_vec())) {
+        if self.compiled(|| ListCommand::Lighting(LightingCall::Light(light, pname, params.to_vec()))) {
             return;
         }
         if self.reject_inside_begin_end() {
@@ -205,7 +230,7 @@ impl Gl {
     /// `glMaterialfv` (allowed between begin and end). Bad face or name → `GL_INVALID_ENUM`;
     /// shininess outside 0..=128 → `GL_INVALID_VALUE`.
     pub fn material_fv(&mut self, face: GLenum, pname: GLenum, params: &[GLfloat]) {
-        if self.compiled(|| ListCommand::Material(face, pname, params.to_vec())) {
+        if self.compiled(|| ListCommand::Lighting(LightingCall::Material(face, pname, params.to_vec()))) {
             return;
         }
         let faces: &[usize] = match face {
@@ -250,7 +275,7 @@ impl Gl {
 
     /// `glLightModelfv`: `GL_LIGHT_MODEL_AMBIENT` (4 values), `_LOCAL_VIEWER`, `_TWO_SIDE`.
     pub fn light_model_fv(&mut self, pname: GLenum, params: &[GLfloat]) {
-        if self.compiled(|| ListCommand::LightModel(pname, params.to_vec())) {
+        if self.compiled(|| ListCommand::Lighting(LightingCall::LightModel(pname, params.to_vec()))) {
             return;
         }
         if self.reject_inside_begin_end() {
@@ -275,7 +300,7 @@ impl Gl {
 
     /// `glColorMaterial(face, mode)`.
     pub fn color_material(&mut self, face: GLenum, mode: GLenum) {
-        if self.compiled(|| ListCommand::ColorMaterial(face, mode)) {
+        if self.compiled(|| ListCommand::Lighting(LightingCall::ColorMaterial(face, mode))) {
             return;
         }
         if self.reject_inside_begin_end() {
@@ -297,7 +322,7 @@ impl Gl {
 
     /// `glShadeModel`: `GL_FLAT` or `GL_SMOOTH`.
     pub fn shade_model(&mut self, mode: GLenum) {
-        if self.compiled(|| ListCommand::ShadeModel(mode)) {
+        if self.compiled(|| ListCommand::Lighting(LightingCall::ShadeModel(mode))) {
             return;
         }
         if self.reject_inside_begin_end() {
@@ -306,7 +331,18 @@ impl Gl {
         if mode != GL_FLAT && mode != GL_SMOOTH {
             return self.set_error(GL_INVALID_ENUM);
         }
-        self.server.raster.shade_model = mode;
+        self.server.shade_model = mode;
         self.touch_state();
     }
 }
+
+/// The lighting group's `glGet` rows (lights and materials answer through `glGetLight` and `glGetMaterial`), and the limit.
+pub(crate) static GET_ROWS: &[StateVar] = &[
+    row(GL_SHADE_MODEL, 1, Kind::Int, |gl, o| put_enum(o, gl.server.shade_model)),
+    row(GL_COLOR_MATERIAL_PARAMETER, 1, Kind::Int, |gl, o| put_enum(o, gl.server.lighting.color_material.1)),
+    row(GL_COLOR_MATERIAL_FACE, 1, Kind::Int, |gl, o| put_enum(o, gl.server.lighting.color_material.0)),
+    row(GL_LIGHT_MODEL_AMBIENT, 4, Kind::Normalized, |gl, o| put(o, &gl.server.lighting.model_ambient.to_array())),
+    row(GL_LIGHT_MODEL_LOCAL_VIEWER, 1, Kind::Bool, |gl, o| put_flag(o, gl.server.lighting.local_viewer)),
+    row(GL_LIGHT_MODEL_TWO_SIDE, 1, Kind::Bool, |gl, o| put_flag(o, gl.server.lighting.two_side)),
+    int_limit!(GL_MAX_LIGHTS, 8),
+];

@@ -5,8 +5,7 @@
 //! in Mesa's order and its conversions.
 
 use super::super::consts::*;
-use super::super::state_var::c_int;
-use super::super::state_var::float_to_int;
+use super::super::state_var::{c_int, float_to_int};
 use super::super::types::*;
 use super::super::variants::GlComponent;
 use super::super::Gl;
