@@ -9,6 +9,7 @@ use crate::app::{App, Redraw};
 use crate::gl::Gl;
 use crate::glut::consts::*;
 use crate::glut::windows::WindowRequest;
+use crate::gpu::Attachments;
 use crate::render::soft;
 use std::collections::HashMap;
 use std::error::Error;
@@ -252,7 +253,8 @@ impl WindowState {
         // An open GLUT menu over the picture: a second pass that loads what the first drew.
         if let Some(menu) = slot.app.menu_overlay(&slot.gl) {
             let mut encoder = gpu.renderer.device.create_command_encoder(&Default::default());
-            gpu.renderer.encode_over(&menu, &mut encoder, &view, &gpu.depth, (width, height), gpu.config.format);
+            let target = Attachments::window(&view, &gpu.depth, (width, height), gpu.config.format);
+            gpu.renderer.encode_over(&menu, &mut encoder, &target);
             gpu.renderer.queue.submit([encoder.finish()]);
         }
         gpu.window.pre_present_notify();

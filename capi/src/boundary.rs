@@ -69,11 +69,12 @@ macro_rules! entry {
 }
 
 /// Entry points that pass their scalar arguments straight to the `Gl` method of the same name
-/// (`glVertex3f(x, y, z)` → `gl.vertex3f(x, y, z)`).
+/// (`glVertex3f(x, y, z)` → `gl.vertex3f(x, y, z)`), however many GL's signature has.
 macro_rules! forward {
     ($($name:ident($($a:ident: $t:ty),* $(,)?) $(-> $r:ty)? => $method:ident;)*) => {
         $(entry! {
             #[doc = concat!("`", stringify!($name), "`: `Gl::", stringify!($method), "`.")]
+            #[allow(clippy::too_many_arguments)]
             fn $name($($a: $t),*) $(-> $r)? { $crate::context::with_gl(|gl| gl.$method($($a),*)) }
         })*
     };

@@ -11,6 +11,7 @@
 //! records its error for `eglGetError`; none crashes on a handle that is not one.
 
 use crate::configs::{meets, Config, Criterion, CHANNEL_BITS, CONFIGS, DEPTH_BITS};
+use crate::live_contexts::{ApiContext, Registry as Contexts};
 use crate::surface::{self, Key, Output};
 use crate::x11::{self, Display as XDisplay, Xid};
 use gleval::gl::Gl;
@@ -18,7 +19,6 @@ use std::cell::Cell;
 use std::collections::HashMap;
 use std::ffi::{c_char, c_void, CStr};
 use std::sync::{Mutex, PoisonError};
-use std::thread::ThreadId;
 
 type EGLint = i32;
 type EGLBoolean = u32;
@@ -141,6 +141,12 @@ struct EglContext {
     read: usize,
 }
 
+impl ApiContext for EglContext {
+    fn gl(&mut self) -> &mut Gl {
+        &mut self.gl
+    }
+}
+
 /// An `EGLSurface`.
 #[derive(Clone, Copy)]
 struct EglSurface {
@@ -154,9 +160,6 @@ struct EglSurface {
 #[derive(Default)]
 struct Registry {
     displays: Vec<usize>,
-    contexts: HashMap<usize, Option<ThreadId>>,
-    /// Destroyed while current: freed when released.
-    doomed: Vec<usize>,
     surfaces: HashMap<usize, EglSurface>,
     next_surface: usize,
 }
@@ -173,6 +176,9 @@ thread_local! {
     static API: Cell<EGLenum> = const { Cell::new(EGL_NONE_API) };
     static CURRENT: Cell<*mut EglContext> = const { Cell::new(std::ptr::null_mut()) };
 }
+
+/// Live EGL contexts ([`crate::live_contexts`], as GLX's).
+static CONTEXTS: Contexts<EglContext> = Contexts::new(&CURRENT);
 
 /// Records `error` for `eglGetError` and returns `value`.
 fn fail<T>(error: EGLint, value: T) -> T {
@@ -620,7 +626,7 @@ entry! {
         if API.with(Cell::get) != EGL_OPENGL_API {
             return fail(EGL_BAD_MATCH, std::ptr::null_mut());
         }
-        if !share.is_null() && !registry(|r| r.contexts.contains_key(&(share as usize))) {
+        if !share.is_null() && CONTEXTS.life(share.cast()).is_none() {
             return fail(EGL_BAD_CONTEXT, std::ptr::null_mut());
         }
         // SAFETY: EGL's contract for the list.
@@ -631,8 +637,7 @@ entry! {
         let major = list.iter().find(|(n, _)| *n == EGL_CONTEXT_MAJOR_VERSION).map_or(1, |p| p.1);
         let mut gl = Gl::new(1, 1);
         gl.set_buffer_config(c.buffers());
-        let ctx = Box::into_raw(Box::new(EglContext { gl, config: c, display: handle as usize, major, bound_once: false, draw: 0, read: 0 }));
-        registry(|r| r.contexts.insert(ctx as usize, None));
+        let ctx = CONTEXTS.register(EglContext { gl, config: c, display: handle as usize, major, bound_once: false, draw: 0, read: 0 });
         ok(ctx.cast())
     }
 }
@@ -754,33 +759,6 @@ entry! {
     }
 }
 
-/// Frees a context that is current nowhere.
-fn free_context(ctx: *mut EglContext) {
-    registry(|r| r.contexts.remove(&(ctx as usize)));
-    // SAFETY: made by eglCreateContext and registered until now; current nowhere.
-    let mut owned = unsafe { Box::from_raw(ctx) };
-    crate::context::release_if_current(&mut owned.gl);
-}
-
-/// Releases this thread's current EGL context (freed if it was destroyed meanwhile).
-fn release_current() {
-    let ctx = CURRENT.with(|c| c.replace(std::ptr::null_mut()));
-    if ctx.is_null() {
-        return;
-    }
-    surface::unbind();
-    // SAFETY: current, hence live.
-    crate::context::release_if_current(unsafe { &mut (*ctx).gl });
-    let doomed = registry(|r| {
-        r.contexts.insert(ctx as usize, None);
-        r.doomed.contains(&(ctx as usize))
-    });
-    if doomed {
-        registry(|r| r.doomed.retain(|&d| d != ctx as usize));
-        free_context(ctx);
-    }
-}
-
 entry! {
     /// `eglMakeCurrent`: binds `ctx` to `draw` (gleval reads from `draw`; `read` is checked)
     /// in this thread, or to no surface at all (EGL_KHR_surfaceless_context: nothing is
@@ -797,15 +775,15 @@ entry! {
             if !draw.is_null() || !read.is_null() {
                 return fail(EGL_BAD_MATCH, EGL_FALSE);
             }
-            release_current();
+            CONTEXTS.release_current();
             return ok(EGL_TRUE);
         }
         let ctx: *mut EglContext = ctx.cast();
-        let Some(owner) = registry(|r| r.contexts.get(&(ctx as usize)).copied()) else {
+        let Some(life) = CONTEXTS.life(ctx) else {
             return fail(EGL_BAD_CONTEXT, EGL_FALSE);
         };
         let me = std::thread::current().id();
-        if owner.is_some_and(|t| t != me) {
+        if life.current_in.is_some_and(|t| t != me) {
             return fail(EGL_BAD_ACCESS, EGL_FALSE);
         }
         if draw.is_null() != read.is_null() {
@@ -821,15 +799,13 @@ entry! {
         if surfaces.0.is_some_and(|s| s.config != context.config) {
             return fail(EGL_BAD_MATCH, EGL_FALSE);
         }
-        if CURRENT.with(Cell::get) != ctx {
-            release_current();
+        if CONTEXTS.current() != ctx {
+            CONTEXTS.release_current();
         } else {
             surface::unbind();
         }
-        registry(|r| r.contexts.insert(ctx as usize, Some(me)));
         (context.draw, context.read) = (draw as usize, read as usize);
-        crate::context::make_current(&mut context.gl);
-        CURRENT.with(|c| c.set(ctx));
+        CONTEXTS.make_current(context);
         if !draw.is_null() {
             let first = !context.bound_once;
             context.bound_once = true;
@@ -845,21 +821,17 @@ entry! {
         if let Err(e) = display(handle, true) {
             return fail(e, EGL_FALSE);
         }
-        let Some(owner) = registry(|r| r.contexts.get(&(ctx as usize)).copied()) else {
+        let Some(life) = CONTEXTS.life(ctx.cast()) else {
             return fail(EGL_BAD_CONTEXT, EGL_FALSE);
         };
-        if owner.is_some() {
-            registry(|r| r.doomed.push(ctx as usize));
-        } else {
-            free_context(ctx.cast());
-        }
+        CONTEXTS.destroy(ctx.cast(), life);
         ok(EGL_TRUE)
     }
 }
 
 /// This thread's current context, if it is an EGL one and still current.
 fn current() -> Option<&'static mut EglContext> {
-    let ctx = CURRENT.with(Cell::get);
+    let ctx = CONTEXTS.current();
     // SAFETY: a current context is live until released.
     let ctx = unsafe { ctx.as_mut() }?;
     std::ptr::eq(&ctx.gl, crate::context::current_ptr()).then_some(ctx)
@@ -949,7 +921,7 @@ entry! {
         if let Err(e) = display(handle, true) {
             return fail(e, EGL_FALSE);
         }
-        if !registry(|r| r.contexts.contains_key(&(ctx as usize))) {
+        if CONTEXTS.life(ctx.cast()).is_none() {
             return fail(EGL_BAD_CONTEXT, EGL_FALSE);
         }
         // SAFETY: registered, hence live; only plain fields are read.
@@ -1031,7 +1003,7 @@ entry! {
 entry! {
     /// `eglReleaseThread`: releases this thread's context; the bound API is reset.
     fn eglReleaseThread() -> EGLBoolean {
-        release_current();
+        CONTEXTS.release_current();
         API.with(|a| a.set(EGL_NONE_API));
         ok(EGL_TRUE)
     }

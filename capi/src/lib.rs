@@ -28,6 +28,7 @@ pub mod context;
 mod dl;
 mod egl;
 mod launcher;
+mod live_contexts;
 pub mod memory;
 mod strings;
 mod surface;

@@ -12,6 +12,7 @@ use crate::gl::consts::*;
 use crate::gl::types::*;
 use crate::gl::Gl;
 use crate::glu::consts::{GLU_INVALID_ENUM, GLU_INVALID_VALUE};
+use crate::glu::mipmap_levels::{check_args_and_sides, level_range};
 
 /// An image of `components` bytes a pixel, rows packed (alignment 1).
 struct Image {
@@ -115,20 +116,9 @@ impl Gl {
         if width < 1 || height < 1 {
             return GLU_INVALID_VALUE as GLint;
         }
-        let components = match format {
-            GL_ALPHA | GL_LUMINANCE => 1,
-            GL_LUMINANCE_ALPHA => 2,
-            GL_RGB => 3,
-            GL_RGBA => 4,
-            _ => return GLU_INVALID_ENUM as GLint,
-        };
-        if type_ != GL_UNSIGNED_BYTE {
-            return GLU_INVALID_ENUM as GLint;
-        }
-        let Some(mut image) =
-            self.packed_image(width as usize, height as usize, components, bytemuck::cast_slice(data))
-        else {
-            return GLU_INVALID_VALUE as GLint;
+        let mut image = match self.byte_image(width, height, format, type_, bytemuck::cast_slice(data)) {
+            Ok(image) => image,
+            Err(code) => return code,
         };
         let max = crate::gl::MAX_TEXTURE_SIZE as usize;
         let (w, h) = (nearest_power(image.width).min(max), nearest_power(image.height).min(max));
@@ -172,31 +162,15 @@ impl Gl {
         max_level: GLint,
         data: &[P],
     ) -> GLint {
-        if let Err(code) = super::mipmap_levels::check_mipmap_args(format, type_) {
-            return code;
-        }
-        if width < 1 || height < 1 {
-            return GLU_INVALID_VALUE as GLint;
-        }
-        let log = |n: GLsizei| if n.count_ones() == 1 { n.trailing_zeros() as GLint } else { -1 };
-        let levels = log(width).max(log(height)).saturating_add(user_level);
-        if base_level < 0 || base_level < user_level || max_level < base_level || levels < max_level {
-            return GLU_INVALID_VALUE as GLint;
-        }
-        let components = match format {
-            GL_ALPHA | GL_LUMINANCE => 1,
-            GL_LUMINANCE_ALPHA => 2,
-            GL_RGB => 3,
-            GL_RGBA => 4,
-            _ => return GLU_INVALID_ENUM as GLint,
+        let sides = [width, height];
+        let range = (user_level, base_level, max_level);
+        let levels = match check_args_and_sides(format, type_, &sides).and_then(|()| level_range(&sides, range)) {
+            Ok(levels) => levels,
+            Err(code) => return code,
         };
-        if type_ != GL_UNSIGNED_BYTE {
-            return GLU_INVALID_ENUM as GLint;
-        }
-        let Some(mut image) =
-            self.packed_image(width as usize, height as usize, components, bytemuck::cast_slice(data))
-        else {
-            return GLU_INVALID_VALUE as GLint;
+        let mut image = match self.byte_image(width, height, format, type_, bytemuck::cast_slice(data)) {
+            Ok(image) => image,
+            Err(code) => return code,
         };
         let saved = self.unpack_alignment();
         self.pixel_storei(GL_UNPACK_ALIGNMENT, 1);
@@ -212,6 +186,30 @@ impl Gl {
         }
         self.pixel_storei(GL_UNPACK_ALIGNMENT, saved);
         0
+    }
+
+    /// The client's image for the byte path both 2D builders share: `GLU_INVALID_ENUM` for a
+    /// `format` or `type_` it does not take, `GLU_INVALID_VALUE` for data shorter than the
+    /// image, else the image packed.
+    fn byte_image(
+        &self,
+        width: GLsizei,
+        height: GLsizei,
+        format: GLenum,
+        type_: GLenum,
+        data: &[u8],
+    ) -> Result<Image, GLint> {
+        let components = match format {
+            GL_ALPHA | GL_LUMINANCE => 1,
+            GL_LUMINANCE_ALPHA => 2,
+            GL_RGB => 3,
+            GL_RGBA => 4,
+            _ => return Err(GLU_INVALID_ENUM as GLint),
+        };
+        if type_ != GL_UNSIGNED_BYTE {
+            return Err(GLU_INVALID_ENUM as GLint);
+        }
+        self.packed_image(width as usize, height as usize, components, data).ok_or(GLU_INVALID_VALUE as GLint)
     }
 
     /// The client's image as tightly packed rows, read with the unpack pixel store.

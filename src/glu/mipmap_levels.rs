@@ -31,6 +31,28 @@ pub(super) fn check_mipmap_args(format: GLenum, type_: GLenum) -> Result<(), GLi
     Ok(())
 }
 
+/// `checkMipmapArgs`, then a side below 1 (`GLU_INVALID_VALUE`): the opening that
+/// `gluBuild1DMipmaps`, `gluBuild3DMipmaps` and every `gluBuild*MipmapLevels` share in GLU's
+/// `mipmap.c`.
+pub(super) fn check_args_and_sides(format: GLenum, type_: GLenum, sides: &[GLsizei]) -> Result<(), GLint> {
+    check_mipmap_args(format, type_)?;
+    if sides.iter().any(|&side| side < 1) {
+        return Err(GLU_INVALID_VALUE as GLint);
+    }
+    Ok(())
+}
+
+/// The last level a `gluBuild*MipmapLevels` makes, `user` plus the largest of the sides'
+/// `computeLog`s (as `mipmap.c` takes the larger of the logs), or `GLU_INVALID_VALUE` where
+/// `isLegalLevels` refuses the range `(user, base, max)`.
+pub(super) fn level_range(sides: &[GLsizei], (user, base, max): (GLint, GLint, GLint)) -> Result<GLint, GLint> {
+    let levels = sides.iter().map(|&side| compute_log(side)).fold(-1, GLint::max).saturating_add(user);
+    if !legal_levels(user, base, max, levels) {
+        return Err(GLU_INVALID_VALUE as GLint);
+    }
+    Ok(levels)
+}
+
 /// `computeLog`: log2 of a power of two, -1 for anything else.
 fn compute_log(value: i32) -> i32 {
     if value > 0 && value.count_ones() == 1 {
@@ -78,11 +100,8 @@ impl Gl {
         type_: GLenum,
         data: &[P],
     ) -> GLint {
-        if let Err(code) = check_mipmap_args(format, type_) {
+        if let Err(code) = check_args_and_sides(format, type_, &[width]) {
             return code;
-        }
-        if width < 1 {
-            return GLU_INVALID_VALUE as GLint;
         }
         let power = fitted_power(width);
         let levels = compute_log(power);
@@ -112,17 +131,10 @@ impl Gl {
         max_level: GLint,
         data: &[P],
     ) -> GLint {
-        if let Err(code) = check_mipmap_args(format, type_) {
+        let range = (user_level, base_level, max_level);
+        if let Err(code) = check_args_and_sides(format, type_, &[width]).and_then(|()| level_range(&[width], range)) {
             return code;
         }
-        if width < 1 {
-            return GLU_INVALID_VALUE as GLint;
-        }
-        let levels = compute_log(width).saturating_add(user_level);
-        if !legal_levels(user_level, base_level, max_level, levels) {
-            return GLU_INVALID_VALUE as GLint;
-        }
-        let range = (user_level, base_level, max_level);
         self.build_1d_core(target, internal_format, (width, width), (format, type_), range, bytemuck::cast_slice(data))
     }
 
@@ -188,11 +200,7 @@ impl Gl {
         data: &[P],
     ) -> GLint {
         let _ = (internal_format, data);
-        if let Err(code) = check_3d_args(format, type_, [width, height, depth]) {
-            return code;
-        }
-        self.no_3d_textures(target);
-        0
+        self.load_3d_levels(target, check_3d_args(format, type_, [width, height, depth]))
     }
 
     /// `gluBuild3DMipmapLevels` on a GL 1.1 context (see the module): GLU's checks
@@ -213,33 +221,32 @@ impl Gl {
         data: &[P],
     ) -> GLint {
         let _ = (internal_format, data);
-        if let Err(code) = check_3d_args(format, type_, [width, height, depth]) {
-            return code;
-        }
-        let levels = compute_log(width).max(compute_log(height)).max(compute_log(depth)).saturating_add(user_level);
-        if !legal_levels(user_level, base_level, max_level, levels) {
-            return GLU_INVALID_VALUE as GLint;
-        }
-        self.no_3d_textures(target);
-        0
+        let sides = [width, height, depth];
+        let range = (user_level, base_level, max_level);
+        self.load_3d_levels(
+            target,
+            check_3d_args(format, type_, sides).and_then(|()| level_range(&sides, range)).map(drop),
+        )
     }
 
-    /// What `glTexImage3D` does on a GL 1.1 context: its target is unknown to GL.
-    fn no_3d_textures(&mut self, target: GLenum) {
+    /// Where both 3D builders end once GLU's checks are answered: a refusal's code, or else
+    /// what `glTexImage3D` does on a GL 1.1 context, where its target is unknown to GL, and 0.
+    fn load_3d_levels(&mut self, target: GLenum, checks: Result<(), GLint>) -> GLint {
+        if let Err(code) = checks {
+            return code;
+        }
         // A 1D image call with the 3D target: GL raises GL_INVALID_ENUM for the target
         // before it reads anything, as GL 1.1 does for any texture target it lacks.
         let _ = target;
         self.tex_image_1d(GL_TEXTURE_3D, 0, GL_RGBA as GLint, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, &[0u8; 4]);
+        0
     }
 }
 
 /// The checks the 3D builders share, in GLU's order: format and type, then a side under 1
 /// (`GLU_INVALID_VALUE`), then `GL_BITMAP`, which has no 3D form (`GLU_INVALID_ENUM`).
 fn check_3d_args(format: GLenum, type_: GLenum, sides: [GLsizei; 3]) -> Result<(), GLint> {
-    check_mipmap_args(format, type_)?;
-    if sides.iter().any(|&side| side < 1) {
-        return Err(GLU_INVALID_VALUE as GLint);
-    }
+    check_args_and_sides(format, type_, &sides)?;
     if type_ == GL_BITMAP {
         return Err(GLU_INVALID_ENUM as GLint);
     }

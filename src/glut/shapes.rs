@@ -41,6 +41,13 @@ struct Sphere {
 }
 
 impl Sphere {
+    /// The sphere, or `None` for the sizes freeglut draws nothing for (`slices < 1` or
+    /// `stacks < 2`, `fghGenerateSphere` in `fg_geometry.c`): the check both sphere calls open
+    /// with.
+    fn new(radius: GLdouble, slices: GLint, stacks: GLint) -> Option<Sphere> {
+        (slices >= 1 && stacks >= 2).then_some(Sphere { radius: radius as f32, slices, stacks })
+    }
+
     fn point(&self, i: i32, j: i32) -> Point {
         let n = if i == 0 || i == self.stacks {
             [0.0, 0.0, if i == 0 { 1.0 } else { -1.0 }]
@@ -65,7 +72,13 @@ struct Cone {
 }
 
 impl Cone {
-    fn new(base: f32, height: f32, slices: i32, stacks: i32) -> Cone {
+    /// The cone, or `None` for the sizes freeglut draws nothing for (`slices < 1` or
+    /// `stacks < 1`, `fghGenerateCone` in `fg_geometry.c`).
+    fn new(base: GLdouble, height: GLdouble, slices: GLint, stacks: GLint) -> Option<Cone> {
+        if slices < 1 || stacks < 1 {
+            return None;
+        }
+        let (base, height) = (base as f32, height as f32);
         let (dz, dr) = (height / stacks as f32, base / stacks as f32);
         let mut rings = Vec::with_capacity(stacks as usize + 1);
         let (mut z, mut r) = (0.0f32, base);
@@ -76,7 +89,7 @@ impl Cone {
         }
         let hypot = f64::from(height * height + base * base).sqrt();
         let slope = ((f64::from(height) / hypot) as f32, (f64::from(base) / hypot) as f32);
-        Cone { base, slices, rings, slope }
+        Some(Cone { base, slices, rings, slope })
     }
 
     fn side(&self, i: i32, j: i32) -> Point {
@@ -103,6 +116,12 @@ struct Torus {
 }
 
 impl Torus {
+    /// The torus, or `None` for the sizes freeglut draws nothing for (`sides < 2` or
+    /// `rings < 2`, `fghGenerateTorus` in `fg_geometry.c`).
+    fn new(inner: GLdouble, outer: GLdouble, sides: GLint, rings: GLint) -> Option<Torus> {
+        (sides >= 2 && rings >= 2).then_some(Torus { inner: inner as f32, outer: outer as f32, sides, rings })
+    }
+
     fn point(&self, ring: i32, side: i32) -> Point {
         let (sp, cp) = circle(self.rings, false, ring);
         let (st, ct) = circle(-self.sides, false, side);
@@ -132,10 +151,7 @@ impl Gl {
     /// `glutSolidSphere(radius, slices, stacks)`: one triangle strip a band, lit with the
     /// sphere's normals. Nothing for `slices < 1` or `stacks < 2`.
     pub fn glut_solid_sphere(&mut self, radius: GLdouble, slices: GLint, stacks: GLint) {
-        let sphere = Sphere { radius: radius as f32, slices, stacks };
-        if slices < 1 || stacks < 2 {
-            return;
-        }
+        let Some(sphere) = Sphere::new(radius, slices, stacks) else { return };
         self.drawing_shape(|gl| {
             for i in 0..stacks {
                 let band = (0..=slices).flat_map(|j| [sphere.point(i + 1, j % slices), sphere.point(i, j % slices)]);
@@ -147,10 +163,7 @@ impl Gl {
     /// `glutWireSphere(radius, slices, stacks)`: a line strip a meridian from pole to pole,
     /// then a line loop a parallel.
     pub fn glut_wire_sphere(&mut self, radius: GLdouble, slices: GLint, stacks: GLint) {
-        let sphere = Sphere { radius: radius as f32, slices, stacks };
-        if slices < 1 || stacks < 2 {
-            return;
-        }
+        let Some(sphere) = Sphere::new(radius, slices, stacks) else { return };
         self.drawing_shape(|gl| {
             for j in 0..slices {
                 gl.shape_primitive(GL_LINE_STRIP, (0..=stacks).map(|i| sphere.point(i, j)));
@@ -164,10 +177,7 @@ impl Gl {
     /// `glutSolidCone(base, height, slices, stacks)`: the base as a triangle strip facing down,
     /// then one strip a band of the side. Nothing for `slices < 1` or `stacks < 1`.
     pub fn glut_solid_cone(&mut self, base: GLdouble, height: GLdouble, slices: GLint, stacks: GLint) {
-        if slices < 1 || stacks < 1 {
-            return;
-        }
-        let cone = Cone::new(base as f32, height as f32, slices, stacks);
+        let Some(cone) = Cone::new(base, height, slices, stacks) else { return };
         let centre = ([0.0, 0.0, -1.0], [0.0; 3]);
         self.drawing_shape(|gl| {
             gl.shape_primitive(GL_TRIANGLE_STRIP, (0..=slices).flat_map(|j| [centre, cone.rim(j % slices)]));
@@ -181,10 +191,7 @@ impl Gl {
     /// `glutWireCone(base, height, slices, stacks)`: lines from the rim to the apex, then a
     /// line loop a ring below the apex.
     pub fn glut_wire_cone(&mut self, base: GLdouble, height: GLdouble, slices: GLint, stacks: GLint) {
-        if slices < 1 || stacks < 1 {
-            return;
-        }
-        let cone = Cone::new(base as f32, height as f32, slices, stacks);
+        let Some(cone) = Cone::new(base, height, slices, stacks) else { return };
         self.drawing_shape(|gl| {
             gl.shape_primitive(GL_LINES, (0..slices).flat_map(|j| [cone.side(0, j), cone.side(stacks, j)]));
             for i in 0..stacks {
@@ -196,10 +203,7 @@ impl Gl {
     /// `glutSolidTorus(innerRadius, outerRadius, sides, rings)`: one triangle strip a side,
     /// all the way round the axis. Nothing for `sides < 2` or `rings < 2`.
     pub fn glut_solid_torus(&mut self, inner: GLdouble, outer: GLdouble, sides: GLint, rings: GLint) {
-        let torus = Torus { inner: inner as f32, outer: outer as f32, sides, rings };
-        if sides < 2 || rings < 2 {
-            return;
-        }
+        let Some(torus) = Torus::new(inner, outer, sides, rings) else { return };
         self.drawing_shape(|gl| {
             for i in 0..sides {
                 let strip =
@@ -212,10 +216,7 @@ impl Gl {
     /// `glutWireTorus(innerRadius, outerRadius, sides, rings)`: a line loop around the tube at
     /// each ring, then one around the axis at each side.
     pub fn glut_wire_torus(&mut self, inner: GLdouble, outer: GLdouble, sides: GLint, rings: GLint) {
-        let torus = Torus { inner: inner as f32, outer: outer as f32, sides, rings };
-        if sides < 2 || rings < 2 {
-            return;
-        }
+        let Some(torus) = Torus::new(inner, outer, sides, rings) else { return };
         self.drawing_shape(|gl| {
             for j in 0..rings {
                 gl.shape_primitive(GL_LINE_LOOP, (0..sides).map(|i| torus.point(j, i)));

@@ -42,6 +42,8 @@ pub use device::{Gpu, RenderError};
 pub use evaluate::{evaluate_job_indices, evaluate_jobs, EvaluatedMeshes, Evaluator};
 pub use layout::{GpuMapDesc, GpuMeshJob, EVAL_MESH_WGSL, FRAGMENT_WGSL, MESH_RASTER_WGSL, RASTER_WGSL, VERTEX_BYTES};
 pub use pack::PackedJobs;
+#[cfg(feature = "window")]
+pub(crate) use renderer::Attachments;
 pub use renderer::{tessellate_patches, Renderer};
 pub use timer::PassTimer;
 

@@ -42,12 +42,25 @@ pub struct Renderer {
 
 /// Where a render goes: colour and depth views of a `size` target whose colour is `format`,
 /// drawn upside down with `flip` (see [`Renderer::render_frame`]).
-struct Attachments<'a> {
+pub(crate) struct Attachments<'a> {
     color: &'a wgpu::TextureView,
     depth: &'a wgpu::TextureView,
     size: (u32, u32),
     format: wgpu::TextureFormat,
     flip: bool,
+}
+
+impl<'a> Attachments<'a> {
+    /// A window's surface views, drawn the right way up: what [`Renderer::encode`] draws
+    /// onto, and the GLUT menu pass after it ([`Renderer::encode_over`]).
+    pub(crate) fn window(
+        color: &'a wgpu::TextureView,
+        depth: &'a wgpu::TextureView,
+        size: (u32, u32),
+        format: wgpu::TextureFormat,
+    ) -> Self {
+        Attachments { color, depth, size, format, flip: false }
+    }
 }
 
 impl Renderer {
@@ -193,23 +206,13 @@ impl Renderer {
         size: (u32, u32),
         format: wgpu::TextureFormat,
     ) {
-        let target = Attachments { color, depth, size, format, flip: false };
-        self.encode_onto(frame, encoder, &target, false);
+        self.encode_onto(frame, encoder, &Attachments::window(color, depth, size, format), false);
     }
 
-    /// [`Renderer::encode`] over what `color` and `depth` already hold: no clear unless the
-    /// frame asks for one (a GLUT menu drawn over the program's picture).
-    pub(crate) fn encode_over(
-        &mut self,
-        frame: &Frame,
-        encoder: &mut wgpu::CommandEncoder,
-        color: &wgpu::TextureView,
-        depth: &wgpu::TextureView,
-        size: (u32, u32),
-        format: wgpu::TextureFormat,
-    ) {
-        let target = Attachments { color, depth, size, format, flip: false };
-        self.encode_onto(frame, encoder, &target, true);
+    /// [`Renderer::encode`] over what `target` already holds: no clear unless the frame asks
+    /// for one (a GLUT menu drawn over the program's picture).
+    pub(crate) fn encode_over(&mut self, frame: &Frame, encoder: &mut wgpu::CommandEncoder, target: &Attachments<'_>) {
+        self.encode_onto(frame, encoder, target, true);
     }
 
     fn encode_onto(&mut self, frame: &Frame, encoder: &mut wgpu::CommandEncoder, target: &Attachments<'_>, keep: bool) {

@@ -44,20 +44,37 @@ pub fn basis_funs<S: Scalar>(knots: &[S], order: usize, span: usize, u: S) -> Op
     if !span_fits(knots.len(), order, span) {
         return None;
     }
+    Some(raise_basis(knots, order, span, u, |_, _, _| {}))
+}
+
+/// The triangle of A2.2 BasisFuns, which A2.3 DersBasisFuns runs again recording it as `ndu`:
+/// the basis raised one degree at a time from N_{span,0} = 1, degree j's N_{span−j..=span, j}
+/// in `n[..=j]`. After each degree j, `step(j, n, sums)` sees those values and the knot sums
+/// `sums[..j]` (u_{span+r+1} − u_{span+r+1−j}) that step divided by. Returns degree p's.
+fn raise_basis<S: Scalar>(
+    knots: &[S],
+    order: usize,
+    span: usize,
+    u: S,
+    mut step: impl FnMut(usize, &Basis<S>, &Basis<S>),
+) -> Basis<S> {
     let (mut n, mut left, mut right) = ([S::ZERO; MAX_ORDER], [S::ZERO; MAX_ORDER], [S::ZERO; MAX_ORDER]);
+    let mut sums = [S::ZERO; MAX_ORDER];
     n[0] = S::ONE;
     for j in 1..order {
         left[j] = u - knots[span + 1 - j];
         right[j] = knots[span + j] - u;
         let mut saved = S::ZERO;
         for r in 0..j {
-            let temp = div0(n[r], right[r + 1] + left[j - r]);
+            sums[r] = right[r + 1] + left[j - r];
+            let temp = div0(n[r], sums[r]);
             n[r] = saved + right[r + 1] * temp;
             saved = left[j - r] * temp;
         }
         n[j] = saved;
+        step(j, &n, &sums);
     }
-    Some(n)
+    n
 }
 
 /// The basis functions and their first derivatives at `u`, from the basis one order lower:
@@ -122,20 +139,15 @@ pub fn ders_basis_funs<S: Scalar>(
 fn ndu_table<S: Scalar>(knots: &[S], order: usize, span: usize, u: S) -> Vec<S> {
     let at = |j: usize, r: usize| j * order + r;
     let mut ndu = vec![S::ZERO; order * order];
-    let (mut left, mut right) = ([S::ZERO; MAX_ORDER], [S::ZERO; MAX_ORDER]);
     ndu[0] = S::ONE;
-    for j in 1..order {
-        left[j] = u - knots[span + 1 - j];
-        right[j] = knots[span + j] - u;
-        let mut saved = S::ZERO;
+    raise_basis(knots, order, span, u, |j, n, sums| {
         for r in 0..j {
-            ndu[at(j, r)] = right[r + 1] + left[j - r];
-            let temp = div0(ndu[at(r, j - 1)], ndu[at(j, r)]);
-            ndu[at(r, j)] = saved + right[r + 1] * temp;
-            saved = left[j - r] * temp;
+            ndu[at(j, r)] = sums[r];
         }
-        ndu[at(j, j)] = saved;
-    }
+        for r in 0..=j {
+            ndu[at(r, j)] = n[r];
+        }
+    });
     ndu
 }
 

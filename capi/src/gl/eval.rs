@@ -27,44 +27,49 @@ vector! {
     glEvalCoord2dv(GLdouble; 2) => eval_coord2dv;
 }
 
-entry! {
-    /// `glMap1f`: reads `(order − 1) · stride + k` floats.
-    unsafe fn glMap1f(target: GLenum, u1: GLfloat, u2: GLfloat, stride: GLint, order: GLint, points: *const GLfloat) {
-        let points = unsafe { array(points, Gl::map_points_len(target, &[(stride, order)])) };
-        with_gl(|gl| gl.map1f(target, u1, u2, stride, order, points))
-    }
+/// `glMap1f` and `glMap1d`, alike but for the type: the control points read as GL reads them,
+/// `(order − 1) · stride + k` values (`Gl::map_points_len`).
+macro_rules! map1 {
+    ($($name:ident($t:ty) => $method:ident;)*) => {
+        $(entry! {
+            #[doc = concat!("`", stringify!($name), "`: reads `(order − 1) · stride + k` values.")]
+            unsafe fn $name(target: GLenum, u1: $t, u2: $t, stride: GLint, order: GLint, points: *const $t) {
+                let points = unsafe { array(points, Gl::map_points_len(target, &[(stride, order)])) };
+                with_gl(|gl| gl.$method(target, u1, u2, stride, order, points))
+            }
+        })*
+    };
 }
 
-entry! {
-    /// `glMap1d`: as `glMap1f`.
-    unsafe fn glMap1d(target: GLenum, u1: GLdouble, u2: GLdouble, stride: GLint, order: GLint, points: *const GLdouble) {
-        let points = unsafe { array(points, Gl::map_points_len(target, &[(stride, order)])) };
-        with_gl(|gl| gl.map1d(target, u1, u2, stride, order, points))
-    }
+map1! {
+    glMap1f(GLfloat) => map1f;
+    glMap1d(GLdouble) => map1d;
 }
 
-entry! {
-    /// `glMap2f`: reads `(uorder − 1) · ustride + (vorder − 1) · vstride + k` floats.
-    #[allow(clippy::too_many_arguments)]
-    unsafe fn glMap2f(
-        target: GLenum, u1: GLfloat, u2: GLfloat, ustride: GLint, uorder: GLint,
-        v1: GLfloat, v2: GLfloat, vstride: GLint, vorder: GLint, points: *const GLfloat,
-    ) {
-        let points = unsafe { array(points, Gl::map_points_len(target, &[(ustride, uorder), (vstride, vorder)])) };
-        with_gl(|gl| gl.map2f(target, u1, u2, ustride, uorder, v1, v2, vstride, vorder, points))
-    }
+/// `glMap2f` and `glMap2d`, likewise: `(uorder − 1) · ustride + (vorder − 1) · vstride + k`
+/// values.
+macro_rules! map2 {
+    ($($name:ident($t:ty) => $method:ident;)*) => {
+        $(entry! {
+            #[doc = concat!(
+                "`", stringify!($name), "`: reads `(uorder − 1) · ustride + (vorder − 1) · vstride + k` values."
+            )]
+            #[allow(clippy::too_many_arguments)]
+            unsafe fn $name(
+                target: GLenum, u1: $t, u2: $t, ustride: GLint, uorder: GLint,
+                v1: $t, v2: $t, vstride: GLint, vorder: GLint, points: *const $t,
+            ) {
+                let points =
+                    unsafe { array(points, Gl::map_points_len(target, &[(ustride, uorder), (vstride, vorder)])) };
+                with_gl(|gl| gl.$method(target, u1, u2, ustride, uorder, v1, v2, vstride, vorder, points))
+            }
+        })*
+    };
 }
 
-entry! {
-    /// `glMap2d`: as `glMap2f`.
-    #[allow(clippy::too_many_arguments)]
-    unsafe fn glMap2d(
-        target: GLenum, u1: GLdouble, u2: GLdouble, ustride: GLint, uorder: GLint,
-        v1: GLdouble, v2: GLdouble, vstride: GLint, vorder: GLint, points: *const GLdouble,
-    ) {
-        let points = unsafe { array(points, Gl::map_points_len(target, &[(ustride, uorder), (vstride, vorder)])) };
-        with_gl(|gl| gl.map2d(target, u1, u2, ustride, uorder, v1, v2, vstride, vorder, points))
-    }
+map2! {
+    glMap2f(GLfloat) => map2f;
+    glMap2d(GLdouble) => map2d;
 }
 
 /// `glGetMap{f,d,i}v`: the answer is written where GL writes it, as many values as GL writes.

@@ -14,6 +14,17 @@ forward! {
     glCopyPixels(x: GLint, y: GLint, width: GLsizei, height: GLsizei, type_: GLenum) => copy_pixels;
     glCopyTexSubImage1D(target: GLenum, level: GLint, xoffset: GLint, x: GLint, y: GLint, width: GLsizei)
         => copy_tex_sub_image_1d;
+    glCopyTexImage1D(
+        target: GLenum, level: GLint, internalformat: GLenum, x: GLint, y: GLint, width: GLsizei, border: GLint,
+    ) => copy_tex_image_1d;
+    glCopyTexImage2D(
+        target: GLenum, level: GLint, internalformat: GLenum, x: GLint, y: GLint, width: GLsizei, height: GLsizei,
+        border: GLint,
+    ) => copy_tex_image_2d;
+    glCopyTexSubImage2D(
+        target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, x: GLint, y: GLint, width: GLsizei,
+        height: GLsizei,
+    ) => copy_tex_sub_image_2d;
     glIndexf(c: GLfloat) => indexf;
     glIndexd(c: GLdouble) => indexd;
     glIndexi(c: GLint) => indexi;
@@ -29,38 +40,6 @@ vector! {
     glIndexiv(GLint; 1) => indexiv;
     glIndexsv(GLshort; 1) => indexsv;
     glIndexubv(GLubyte; 1) => indexubv;
-}
-
-entry! {
-    /// `glCopyTexImage1D`: `Gl::copy_tex_image_1d`.
-    #[allow(clippy::too_many_arguments)]
-    fn glCopyTexImage1D(
-        target: GLenum, level: GLint, internalformat: GLenum, x: GLint, y: GLint, width: GLsizei, border: GLint,
-    ) {
-        with_gl(|gl| gl.copy_tex_image_1d(target, level, internalformat, x, y, width, border))
-    }
-}
-
-entry! {
-    /// `glCopyTexImage2D`: `Gl::copy_tex_image_2d`.
-    #[allow(clippy::too_many_arguments)]
-    fn glCopyTexImage2D(
-        target: GLenum, level: GLint, internalformat: GLenum, x: GLint, y: GLint, width: GLsizei, height: GLsizei,
-        border: GLint,
-    ) {
-        with_gl(|gl| gl.copy_tex_image_2d(target, level, internalformat, x, y, width, height, border))
-    }
-}
-
-entry! {
-    /// `glCopyTexSubImage2D`: `Gl::copy_tex_sub_image_2d`.
-    #[allow(clippy::too_many_arguments)]
-    fn glCopyTexSubImage2D(
-        target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, x: GLint, y: GLint, width: GLsizei,
-        height: GLsizei,
-    ) {
-        with_gl(|gl| gl.copy_tex_sub_image_2d(target, level, xoffset, yoffset, x, y, width, height))
-    }
 }
 
 entry! {

@@ -5,20 +5,18 @@
 //!
 //! A context is current in at most one thread (another thread's bind is `BadAccess`); one
 //! destroyed while current lives until it is released, as GLX 1.4 §3.3.7 says. The
-//! registry of live contexts tells a handle that is one from one that is not
-//! (`GLXBadContext`, never a crash).
+//! registry of live contexts ([`crate::live_contexts`], as EGL's) tells a handle that is one
+//! from one that is not (`GLXBadContext`, never a crash).
 
 use super::configs::{config_of_visual, config_or_error, GLX_FBCONFIG_ID, GLX_RENDER_TYPE, GLX_RGBA_TYPE, GLX_SCREEN};
 use super::{glx_error, request, x_error, Bool, GlxError, BAD_ACCESS, BAD_MATCH, BAD_VALUE, FALSE, TRUE};
 use crate::configs::Config;
+use crate::live_contexts::{ApiContext, Registry};
 use crate::surface::{self, Key, Output};
 use crate::x11::{self, Display, XVisualInfo, Xid};
 use gleval::gl::Gl;
 use std::cell::Cell;
-use std::collections::HashMap;
 use std::ffi::{c_int, c_void};
-use std::sync::{Mutex, PoisonError};
-use std::thread::ThreadId;
 
 /// What a `GLXContext` points at.
 pub struct GlxContext {
@@ -31,36 +29,28 @@ pub struct GlxContext {
     read: Xid,
 }
 
-/// What the registry knows of a live context.
-#[derive(Clone, Copy, Default)]
-struct Life {
-    /// The thread it is current in.
-    current_in: Option<ThreadId>,
-    /// Destroyed while current: freed when released.
-    destroyed: bool,
+impl ApiContext for GlxContext {
+    fn gl(&mut self) -> &mut Gl {
+        &mut self.gl
+    }
 }
-
-/// Live contexts by address.
-static CONTEXTS: Mutex<Option<HashMap<usize, Life>>> = Mutex::new(None);
 
 thread_local! {
     /// The GLX context current in this thread.
     static CURRENT: Cell<*mut GlxContext> = const { Cell::new(std::ptr::null_mut()) };
 }
 
-fn registry<R>(f: impl FnOnce(&mut HashMap<usize, Life>) -> R) -> R {
-    let mut guard = CONTEXTS.lock().unwrap_or_else(PoisonError::into_inner);
-    f(guard.get_or_insert_with(HashMap::new))
-}
+/// Live GLX contexts.
+static CONTEXTS: Registry<GlxContext> = Registry::new(&CURRENT);
 
 /// The live context a handle names.
-fn lookup(handle: *mut GlxContext) -> Option<Life> {
-    registry(|r| r.get(&(handle as usize)).copied())
+fn lookup(handle: *mut GlxContext) -> Option<crate::live_contexts::Life> {
+    CONTEXTS.life(handle)
 }
 
 /// The display of the context current in this thread (NULL if none is a GLX context).
 pub(crate) fn current_display() -> *mut Display {
-    let ctx = CURRENT.with(Cell::get);
+    let ctx = CONTEXTS.current();
     // SAFETY: a current context is live (it is freed only once released).
     unsafe { ctx.as_ref() }.map_or(std::ptr::null_mut(), |c| c.display)
 }
@@ -74,37 +64,7 @@ pub(crate) fn current_drawable() -> Xid {
 fn create(display: *mut Display, config: &'static Config) -> *mut GlxContext {
     let mut gl = Gl::new(1, 1);
     gl.set_buffer_config(config.buffers());
-    let ctx = Box::into_raw(Box::new(GlxContext { gl, config, bound_once: false, display, draw: 0, read: 0 }));
-    registry(|r| r.insert(ctx as usize, Life::default()));
-    ctx
-}
-
-/// Frees a context (not current anywhere).
-fn free(ctx: *mut GlxContext) {
-    registry(|r| r.remove(&(ctx as usize)));
-    // SAFETY: made by `create` and registered until now; not current anywhere.
-    let mut owned = unsafe { Box::from_raw(ctx) };
-    crate::context::release_if_current(&mut owned.gl);
-}
-
-/// Releases this thread's current GLX context: its frame lands on its drawable, it is
-/// current nowhere, and freed if it was destroyed meanwhile.
-fn release_current() {
-    let ctx = CURRENT.with(|c| c.replace(std::ptr::null_mut()));
-    if ctx.is_null() {
-        return;
-    }
-    surface::unbind();
-    // SAFETY: current, hence live.
-    crate::context::release_if_current(unsafe { &mut (*ctx).gl });
-    let destroyed = registry(|r| {
-        let life = r.get_mut(&(ctx as usize))?;
-        life.current_in = None;
-        Some(life.destroyed)
-    });
-    if destroyed == Some(true) {
-        free(ctx);
-    }
+    CONTEXTS.register(GlxContext { gl, config, bound_once: false, display, draw: 0, read: 0 })
 }
 
 /// The drawable `id` of `display` made known to gleval's drawables (an X window or pixmap is
@@ -126,7 +86,7 @@ fn make_current(display: *mut Display, draw: Xid, read: Xid, ctx: *mut GlxContex
             x_error(display, BAD_MATCH, draw, minor);
             return FALSE;
         }
-        release_current();
+        CONTEXTS.release_current();
         return TRUE;
     }
     let Some(life) = lookup(ctx) else {
@@ -149,16 +109,14 @@ fn make_current(display: *mut Display, draw: Xid, read: Xid, ctx: *mut GlxContex
         glx_error(display, GlxError::Drawable, if declare_drawable(display, draw) { read } else { draw }, minor);
         return FALSE;
     }
-    if CURRENT.with(Cell::get) != ctx {
-        release_current();
+    if CONTEXTS.current() != ctx {
+        CONTEXTS.release_current();
     }
     // SAFETY: registered, hence live, and current nowhere else.
     let context = unsafe { &mut *ctx };
-    registry(|r| r.entry(ctx as usize).or_default().current_in = Some(me));
     context.display = display;
     (context.draw, context.read) = (draw, read);
-    crate::context::make_current(&mut context.gl);
-    CURRENT.with(|c| c.set(ctx));
+    CONTEXTS.make_current(context);
     if none {
         surface::unbind();
         return TRUE;
@@ -332,11 +290,7 @@ entry! {
             glx_error(display, GlxError::Context, ctx as Xid, request::DESTROY_CONTEXT);
             return;
         };
-        if life.current_in.is_some() {
-            registry(|r| r.entry(ctx as usize).or_default().destroyed = true);
-        } else {
-            free(ctx);
-        }
+        CONTEXTS.destroy(ctx, life);
     }
 }
 
@@ -409,7 +363,7 @@ entry! {
     /// the current GLX context, as PyOpenGL keys GLUT's callbacks, sees each window's own),
     /// NULL if none.
     fn glXGetCurrentContext() -> *mut c_void {
-        let ctx = CURRENT.with(Cell::get);
+        let ctx = CONTEXTS.current();
         let current = crate::context::current_ptr();
         // SAFETY: a current GLX context is live.
         if !ctx.is_null() && std::ptr::eq(unsafe { &(*ctx).gl }, current) {
@@ -421,7 +375,7 @@ entry! {
 
 /// A field of the current GLX context (`None` (0) without one).
 fn current_field(f: impl FnOnce(&GlxContext) -> Xid) -> Xid {
-    let ctx = CURRENT.with(Cell::get);
+    let ctx = CONTEXTS.current();
     // SAFETY: a current context is live.
     unsafe { ctx.as_ref() }.map_or(0, f)
 }

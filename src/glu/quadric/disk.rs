@@ -122,18 +122,24 @@ impl Disk {
         (self.outer - f64::from(self.delta_radius * fraction(j, self.loops))) as f32
     }
 
-    /// The texture coordinate of slice `i` at radius `r`: the disk maps onto the unit square's
-    /// inscribed circle.
-    fn tex(&self, sink: &mut impl QuadricSink, i: i32, r: f32) {
+    /// The vertex of slice `i` at radius `r`, after its texture coordinate when texturing is
+    /// on: the disk maps onto the unit square's inscribed circle. `quad.c` writes this pair out
+    /// at each of its vertices.
+    fn point(&self, sink: &mut impl QuadricSink, i: i32, r: f32) {
+        let (s, c) = (self.sin[i as usize], self.cos[i as usize]);
         if self.q.texture {
             let t = (f64::from(r) / self.outer / 2.0) as f32;
-            let (s, c) = (self.sin[i as usize], self.cos[i as usize]);
             sink.tex_coord([(f64::from(t * s) + 0.5) as f32, (f64::from(t * c) + 0.5) as f32]);
         }
+        sink.vertex([r * s, r * c, 0.0]);
     }
 
-    fn vertex(&self, sink: &mut impl QuadricSink, i: i32, r: f32) {
-        sink.vertex([r * self.sin[i as usize], r * self.cos[i as usize], 0.0]);
+    /// The vertices of spoke `i`, one a loop boundary, outside in: what `GLU_POINT` and
+    /// `GLU_LINE`'s radial lines in `quad.c` both walk.
+    fn along_spoke(&self, sink: &mut impl QuadricSink, i: i32) {
+        for j in 0..=self.loops {
+            self.point(sink, i, self.radius(j));
+        }
     }
 
     /// `GLU_FILL`: a fan at the centre when the inner radius is 0, and a quad strip per loop.
@@ -150,8 +156,7 @@ impl Disk {
             let around: Vec<i32> =
                 if self.q.outside() { (0..=self.slices).rev().collect() } else { (0..=self.slices).collect() };
             for i in around {
-                self.tex(sink, i, r);
-                self.vertex(sink, i, r);
+                self.point(sink, i, r);
             }
             sink.end();
         }
@@ -161,8 +166,7 @@ impl Disk {
             sink.begin(GL_QUAD_STRIP);
             for i in 0..=self.slices {
                 for r in order {
-                    self.tex(sink, i, r);
-                    self.vertex(sink, i, r);
+                    self.point(sink, i, r);
                 }
             }
             sink.end();
@@ -173,11 +177,7 @@ impl Disk {
     fn points(&self, sink: &mut impl QuadricSink) {
         sink.begin(GL_POINTS);
         for i in 0..self.spokes {
-            for j in 0..=self.loops {
-                let r = self.radius(j);
-                self.tex(sink, i, r);
-                self.vertex(sink, i, r);
-            }
+            self.along_spoke(sink, i);
         }
         sink.end();
     }
@@ -201,8 +201,7 @@ impl Disk {
             let r = self.radius(j);
             sink.begin(GL_LINE_STRIP);
             for i in 0..=self.slices {
-                self.tex(sink, i, r);
-                self.vertex(sink, i, r);
+                self.point(sink, i, r);
             }
             sink.end();
             if self.q.draw_style == GLU_SILHOUETTE && self.inner == self.outer {
@@ -215,11 +214,7 @@ impl Disk {
     fn spokes(&self, sink: &mut impl QuadricSink, around: impl Iterator<Item = i32>) {
         for i in around {
             sink.begin(GL_LINE_STRIP);
-            for j in 0..=self.loops {
-                let r = self.radius(j);
-                self.tex(sink, i, r);
-                self.vertex(sink, i, r);
-            }
+            self.along_spoke(sink, i);
             sink.end();
         }
     }

@@ -22,6 +22,29 @@ pub(crate) fn comp_v2_in_y(a: Pt, b: Pt) -> Ordering {
     }
 }
 
+/// The first of `items` whose point is greatest under `cmp`, and the first whose point is
+/// least: the top and bottom vertices GLU's monotone triangulations start from. Each of
+/// `monoTriangulationFun`, `monoTriangulationFunBackend`, `triangulateConvexPoly`,
+/// `sampleMonoPoly` and `monoPolyPart` (`nurbtess`, `internals`) runs this same loop, keeping
+/// the first of equal points as its strict comparisons do.
+pub(crate) fn extremes<T: Copy>(
+    mut items: impl Iterator<Item = T>,
+    point: impl Fn(T) -> Pt,
+    cmp: fn(Pt, Pt) -> Ordering,
+) -> Option<(T, T)> {
+    let first = items.next()?;
+    let (mut top, mut bot) = (first, first);
+    for t in items {
+        if cmp(point(top), point(t)) == Ordering::Less {
+            top = t;
+        }
+        if cmp(point(bot), point(t)) == Ordering::Greater {
+            bot = t;
+        }
+    }
+    Some((top, bot))
+}
+
 /// GLU `reflexChain`: the pending vertices of one side, each new vertex closing a fan over
 /// those it sees convexly.
 pub(crate) struct ReflexChain {
@@ -77,15 +100,7 @@ impl ReflexChain {
 
 /// GLU `monoTriangulationFunBackend(loop, compV2InY)`: the fans covering the loop `lp`.
 pub(super) fn triangulate_loop(arcs: &Arcs, lp: &[ArcId]) -> Vec<Piece> {
-    let (mut top, mut bot) = (lp[0], lp[0]);
-    for &a in &lp[1..] {
-        if comp_v2_in_y(arcs.tail(top), arcs.tail(a)) == Ordering::Less {
-            top = a;
-        }
-        if comp_v2_in_y(arcs.tail(bot), arcs.tail(a)) == Ordering::Greater {
-            bot = a;
-        }
-    }
+    let (top, bot) = extremes(lp.iter().copied(), |a| arcs.tail(a), comp_v2_in_y).expect("a loop has arcs");
     let inner = |a: ArcId| &arcs[a].pts[..arcs[a].pts.len().saturating_sub(1)];
     let mut inc: Vec<Pt> = inner(top).iter().skip(1).copied().collect();
     let mut a = arcs[top].next;

@@ -17,6 +17,7 @@ use crate::glu::evaluation::sampling::Sampler;
 use crate::glu::evaluation::surface::Surface;
 use crate::glu::model::maps::TrimPiece;
 use crate::glu::model::object::NurbsObject;
+use crate::tess::trim::TrimLoop;
 
 thread_local! {
     /// How many trimmed surfaces this thread drew by gleval's own triangulation.
@@ -53,10 +54,22 @@ pub(super) fn draw_trimmed(
         Err(Failure::Error(n)) => return obj.nurbs_error(n),
         Err(Failure::Unsupported) => FALLBACKS.with(|n| n.set(n.get() + 1)), // gleval's own triangulation below
     }
-    let bounds = surface.domain();
+    let region = Region { surface, loops: &trim_loops, domain: surface.domain(), us: &us, vs: &vs };
     if tessellate {
-        tessellate::tessellate_trimmed(gl, obj, surface, &trim_loops, bounds, (&us, &vs));
+        tessellate::tessellate_trimmed(gl, obj, &region);
     } else {
-        render::render_trimmed(gl, obj, surface, &trim_loops, bounds, (&us, &vs));
+        render::render_trimmed(gl, obj, &region);
     }
+}
+
+/// A trimmed surface left to gleval's own triangulation, as both modes take it
+/// ([`render::render_trimmed`], [`tessellate::tessellate_trimmed`]): the surface over its
+/// `domain`, the trim loops as (u, v) polylines, and the sampling grid's lines `us` and `vs`.
+#[derive(Clone, Copy)]
+struct Region<'a> {
+    surface: &'a Surface,
+    loops: &'a [TrimLoop],
+    domain: [f64; 4],
+    us: &'a [f64],
+    vs: &'a [f64],
 }

@@ -5,6 +5,7 @@
 
 use super::domain::BY_CELLS;
 use super::gpu::record_on_gpu;
+use super::Region;
 use crate::gl::consts::*;
 use crate::gl::{Gl, MeshMode, Slot, Tessellator, Vertex};
 use crate::glu::consts::*;
@@ -14,14 +15,8 @@ use crate::glu::model::object::NurbsObject;
 use crate::tess::trim::{triangulate_with, TrimLoop};
 
 /// Draws the trimmed region through GL calls, in the object's display mode.
-pub(super) fn render_trimmed(
-    gl: &mut Gl,
-    obj: &mut NurbsObject,
-    surface: &Surface,
-    loops: &[TrimLoop],
-    domain: [f64; 4],
-    (us, vs): (&[f64], &[f64]),
-) {
+pub(super) fn render_trimmed(gl: &mut Gl, obj: &mut NurbsObject, region: &Region) {
+    let Region { surface, loops, domain, us, vs } = *region;
     let mesh = match triangulate_with(loops, domain, us, vs, &BY_CELLS) {
         Ok(m) => m,
         Err(e) => return obj.nurbs_error(e.glu_number()),

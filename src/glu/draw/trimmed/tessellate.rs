@@ -4,6 +4,7 @@
 
 use super::domain::BY_CELLS;
 use super::values::{LatticeValues, PointValues};
+use super::Region;
 use crate::gl::consts::*;
 use crate::gl::Gl;
 use crate::glu::consts::*;
@@ -11,21 +12,15 @@ use crate::glu::draw::emit::emit_attributes;
 use crate::glu::evaluation::surface::Surface;
 use crate::glu::model::callbacks::StripSink;
 use crate::glu::model::object::NurbsObject;
-use crate::tess::trim::{GridStrip, Lattice, TrimLoop, TrimPlan};
+use crate::tess::trim::{GridStrip, Lattice, TrimPlan};
 
 /// Tessellator mode. The sampling lattice is evaluated on the pool while this thread checks the
 /// loops and splits the region ([`TrimPlan`]); then, when only begin, vertex and end callbacks
 /// are registered, the pool triangulates the band along the loops (cell by cell) while this
 /// thread issues the grid cells wholly inside, a `GL_QUAD_STRIP` per run, as GLU issues its grid
 /// blocks; the band follows as `GL_TRIANGLES`. Each point is evaluated once.
-pub(super) fn tessellate_trimmed(
-    gl: &mut Gl,
-    obj: &mut NurbsObject,
-    surface: &Surface,
-    loops: &[TrimLoop],
-    domain: [f64; 4],
-    (us, vs): (&[f64], &[f64]),
-) {
+pub(super) fn tessellate_trimmed(gl: &mut Gl, obj: &mut NurbsObject, region: &Region) {
+    let Region { surface, loops, domain, us, vs } = *region;
     let lattice = Lattice::lines(domain, us, vs);
     let mut values = None;
     let plan = rayon::in_place_scope(|scope| {

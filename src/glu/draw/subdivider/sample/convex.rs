@@ -6,7 +6,6 @@ use super::tri::xy_mono;
 use super::{Poly, Pt, Stream};
 use crate::glu::draw::subdivider::mono::comp_v2_in_y;
 use crate::glu::draw::subdivider::monotone::area;
-use std::cmp::Ordering;
 
 /// GLU `DBG_isConvex`: no line turns right into the next (each line by its ends only).
 pub(crate) fn is_convex(poly: &Poly) -> bool {
@@ -31,15 +30,7 @@ pub(crate) fn is_u_direction(poly: &Poly) -> bool {
 /// (from its leftmost to its rightmost line) where v is linear or the polygon runs along u,
 /// otherwise between its left and right chains (from its top to its bottom).
 pub(crate) fn triangulate_convex(poly: &Poly, (ulinear, vlinear): (bool, bool), s: &mut Stream) {
-    let (mut top, mut bot) = (0, 0);
-    for t in 1..poly.len() {
-        if comp_v2_in_y(poly.head(top), poly.head(t)) == Ordering::Less {
-            top = t;
-        }
-        if comp_v2_in_y(poly.head(bot), poly.head(t)) == Ordering::Greater {
-            bot = t;
-        }
-    }
+    let (top, bot) = poly.extremes(comp_v2_in_y);
     let mut left = top;
     while left != bot && poly.tail(left)[0] < poly.head(left)[0] {
         left = poly.next(left);

@@ -16,7 +16,7 @@ mod tri;
 
 pub(crate) use crate::glu::draw::slicer::c_int;
 use crate::glu::draw::slicer::Piece;
-use crate::glu::draw::subdivider::mono::{chains, comp_v2_in_y};
+use crate::glu::draw::subdivider::mono::{chains, comp_v2_in_y, extremes};
 use chain::index_strict_below;
 use corners::{down_corners, neck, up_corners, Sides};
 use ends::{comp_bot, comp_top, End};
@@ -56,6 +56,13 @@ impl Poly {
     /// `directedLine::tail`: the line's last point.
     pub fn tail(&self, i: usize) -> Pt {
         *self.lines[i].last().expect("lines have points")
+    }
+
+    /// The lines whose heads are the greatest and the least under `cmp` (the first of equal
+    /// heads; line 0 for both in a polygon of no lines, as GLU's loop leaves them): see
+    /// [`extremes`].
+    pub fn extremes(&self, cmp: fn(Pt, Pt) -> Ordering) -> (usize, usize) {
+        extremes(0..self.len(), |t| self.head(t), cmp).unwrap_or((0, 0))
     }
 
     /// The chains from the head of line `top` down to the head of line `bot`: forwards (the
@@ -136,15 +143,7 @@ pub(crate) fn sample_mono_poly(
             return finish(s, lines.0, Vec::new());
         }
     }
-    let (mut top, mut bot) = (0, 0);
-    for t in 1..poly.len() {
-        if comp_v2_in_y(poly.head(top), poly.head(t)) == Ordering::Less {
-            top = t;
-        }
-        if comp_v2_in_y(poly.head(bot), poly.head(t)) == Ordering::Greater {
-            bot = t;
-        }
-    }
+    let (top, bot) = poly.extremes(comp_v2_in_y);
     let (vmin, vmax) = (grid.v_min, grid.v_max);
     let scale = (lines.1 - 1) as f32;
     let first = c_int((poly.head(top)[1] - vmin) / (vmax - vmin) * scale);

@@ -7,7 +7,7 @@
 
 use super::tri::comp_v2_in_x;
 use super::{Poly, Pt};
-use crate::glu::draw::subdivider::mono::comp_v2_in_y;
+use crate::glu::draw::subdivider::mono::{comp_v2_in_y, extremes};
 use std::cmp::Ordering;
 
 /// A segment of a loop: from `head` to `tail`, with its neighbours in the arena.
@@ -192,17 +192,8 @@ pub(crate) fn mono_poly_part(poly: &Poly) -> Option<Vec<Poly>> {
     if l.fewer_than_four(polygon) {
         return Some(vec![l.poly(polygon)]);
     }
-    let (mut top, mut bot) = (polygon, polygon);
-    let mut t = l.next(polygon);
-    while t != polygon {
-        if comp_v2_in_y(l.head(top), l.head(t)) == Ordering::Less {
-            top = t;
-        }
-        if comp_v2_in_y(l.head(bot), l.head(t)) == Ordering::Greater {
-            bot = t;
-        }
-        t = l.next(t);
-    }
+    let around = std::iter::successors(Some(polygon), |&t| Some(l.next(t)).filter(|&t| t != polygon));
+    let (top, bot) = extremes(around, |t| l.head(t), comp_v2_in_y).expect("the loop has a vertex");
     let u = |l: &Loops, v: usize| l.head(v)[0];
     let left = |a: f32, b: f32| a < b;
     let right = |a: f32, b: f32| a > b;

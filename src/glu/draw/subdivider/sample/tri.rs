@@ -149,15 +149,7 @@ fn is_reflex_x(poly: &Poly, v: usize) -> bool {
 /// GLU `monoTriangulationFun`: the polygon's two chains from its top to its bottom under
 /// `cmp`, triangulated together.
 pub(crate) fn mono_fun(poly: &Poly, cmp: fn(Pt, Pt) -> Ordering, s: &mut Stream) {
-    let (mut top, mut bot) = (0, 0);
-    for t in 1..poly.len() {
-        if cmp(poly.head(top), poly.head(t)) == Ordering::Less {
-            top = t;
-        }
-        if cmp(poly.head(bot), poly.head(t)) == Ordering::Greater {
-            bot = t;
-        }
-    }
+    let (top, bot) = poly.extremes(cmp);
     let (inc, dec) = poly.chains(top, bot);
     if !(inc.is_empty() && dec.is_empty()) {
         chains(poly.head(top), poly.head(bot), (&inc, 0), (&dec, 0), cmp, &mut s.pieces);
