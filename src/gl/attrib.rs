@@ -112,6 +112,24 @@ fn enables_of(mask: GLbitfield) -> Vec<GLenum> {
     caps
 }
 
+/// The attribute stack's calls as a display list holds them.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) enum AttribCall {
+    PushAttrib(GLbitfield),
+    PopAttrib,
+}
+
+impl Gl {
+    /// Replays a listed call of the group.
+    pub(crate) fn replay_attrib_call(&mut self, call: &AttribCall) {
+        use AttribCall as C;
+        match call {
+            C::PushAttrib(mask) => self.push_attrib(*mask),
+            C::PopAttrib => self.pop_attrib(),
+        }
+    }
+}
+
 impl Gl {
     /// `GL_ATTRIB_STACK_DEPTH`.
     pub(crate) fn attrib_stack_depth(&self) -> usize {
@@ -121,7 +139,7 @@ impl Gl {
     /// `glPushAttrib(mask)`: saves the groups of `mask`. A full stack → `GL_STACK_OVERFLOW`
     /// (nothing is saved); inside `begin`/`end` → `GL_INVALID_OPERATION`.
     pub fn push_attrib(&mut self, mask: GLbitfield) {
-        if self.compiled_state_call(|| ListCommand::PushAttrib(mask)) {
+        if self.compiled_state_call(|| ListCommand::Attrib(AttribCall::PushAttrib(mask))) {
             return;
         }
         if self.server.attrib_stack.entries.len() >= MAX_ATTRIB_STACK_DEPTH {
@@ -134,7 +152,7 @@ impl Gl {
     /// `glPopAttrib`: restores the groups the matching push saved. An empty stack →
     /// `GL_STACK_UNDERFLOW`; inside `begin`/`end` → `GL_INVALID_OPERATION`.
     pub fn pop_attrib(&mut self) {
-        if self.compiled_state_call(|| ListCommand::PopAttrib) {
+        if self.compiled_state_call(|| ListCommand::Attrib(AttribCall::PopAttrib)) {
             return;
         }
         let Some(saved) = self.server.attrib_stack.entries.pop() else {

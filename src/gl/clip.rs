@@ -7,6 +7,7 @@
 
 use super::consts::*;
 use super::lists::ListCommand;
+use super::matrix::TransformCall;
 use super::state_var::{int_limit, StateVar};
 use super::types::*;
 use super::Gl;
@@ -73,7 +74,7 @@ impl Gl {
     /// `GL_INVALID_OPERATION`. Stored as (a b c d)·M⁻¹ with M the modelview, in `f32` as Mesa
     /// stores it.
     pub fn clip_plane(&mut self, plane: GLenum, equation: &[GLdouble]) {
-        if self.compiled_state_call(|| ListCommand::ClipPlane(plane, equation.to_vec())) {
+        if self.compiled_state_call(|| ListCommand::Transform(TransformCall::ClipPlane(plane, equation.to_vec()))) {
             return;
         }
         let Some(i) = plane_index(plane) else { return self.set_error(GL_INVALID_ENUM) };

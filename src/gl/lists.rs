@@ -20,7 +20,6 @@ use super::bitmap::BitmapCall;
 use super::consts::*;
 use super::eval::MeshJob;
 use super::frame::Call;
-use super::pixels::PixelStore;
 use super::state_var::{int_limit, put_enum, row, Kind, StateVar};
 use super::types::*;
 use super::vertex::Vertex;
@@ -41,81 +40,14 @@ pub(crate) enum ListCommand {
     Rect([f32; 4]),
     Enable(GLenum),
     Disable(GLenum),
-    MatrixMode(GLenum),
-    LoadIdentity,
-    LoadMatrix([f32; 16]),
-    MultMatrix([f32; 16]),
-    PushMatrix,
-    PopMatrix,
-    Translate([f32; 3]),
-    Rotate([f32; 4]),
-    Scale([f32; 3]),
-    Ortho([f64; 6]),
-    Frustum([f64; 6]),
     /// The viewport group's calls (`viewport.rs`).
     Viewport(super::viewport::ViewportCall),
-    ClipPlane(GLenum, Vec<f64>),
     /// `glPolygonStipple` with its mask unpacked at compile time (`None`: too short).
     PolygonStipple(Option<[u32; 32]>),
     Clear(GLbitfield),
-    ActiveTexture(GLenum),
-    Map1 {
-        target: GLenum,
-        u: (f32, f32),
-        stride: i32,
-        order: i32,
-        points: Vec<f32>,
-    },
-    Map2 {
-        target: GLenum,
-        u: (f32, f32),
-        ustride: i32,
-        uorder: i32,
-        v: (f32, f32),
-        vstride: i32,
-        vorder: i32,
-        points: Vec<f32>,
-    },
-    MapGrid1(i32, f32, f32),
-    MapGrid2(i32, f32, f32, i32, f32, f32),
-    EvalCoord1(f32),
-    EvalCoord2(f32, f32),
-    EvalPoint1(i32),
-    EvalPoint2(i32, i32),
-    EvalMesh1(GLenum, i32, i32),
-    EvalMesh2(GLenum, i32, i32, i32, i32),
-    BindTexture(GLenum, GLuint),
-    /// `glTexImage1D/2D`: the client's bytes with the pixel store of compile time, as GL
-    /// unpacks them then (GL 1.1 §5.4).
-    TexImage {
-        dims: u8,
-        target: GLenum,
-        level: GLint,
-        internalformat: GLint,
-        size: (GLsizei, GLsizei),
-        border: GLint,
-        format: (GLenum, GLenum),
-        image: (PixelStore, Vec<u8>),
-    },
-    TexSubImage {
-        target: GLenum,
-        level: GLint,
-        offset: (GLint, GLint),
-        size: (GLsizei, GLsizei),
-        format: (GLenum, GLenum),
-        image: (PixelStore, Vec<u8>),
-    },
-    TexParameter(GLenum, GLenum, GLint),
-    /// `glTexParameterfv` of `GL_TEXTURE_BORDER_COLOR` or `GL_TEXTURE_PRIORITY`.
-    TexParameterValues(GLenum, GLenum, Vec<GLfloat>),
-    TexEnv(GLenum, GLenum, Vec<f32>),
-    /// `glTexGen*`: coordinate, name and values (the eye plane is transformed when called).
-    TexGen(GLenum, GLenum, Vec<f32>),
     /// `glHint`.
     Hint(GLenum, GLenum),
     Fog(GLenum, Vec<f32>),
-    PushAttrib(GLbitfield),
-    PopAttrib,
     /// A vertex with all its attributes, as GLU issues a trimmed surface's (its
     /// `glNormal`/`glVertex` pairs; see `Gl::emit_listed_vertex`).
     EmitVertex(Vertex),
@@ -136,10 +68,6 @@ pub(crate) enum ListCommand {
     /// An error a draw call raised while it compiled: raised again when the list runs (Mesa's
     /// `_mesa_compile_error`).
     Error(GLenum),
-    InitNames,
-    LoadName(GLuint),
-    PushName(GLuint),
-    PopName,
     PassThrough(GLfloat),
     /// `glCopyPixels`: x, y, width, height and the buffer.
     CopyPixels([GLint; 4], GLenum),
@@ -157,13 +85,26 @@ pub(crate) enum ListCommand {
     Scissor([GLint; 4]),
     /// `glAccum` and `glClearAccum` (`accum.rs`).
     Accum(super::accum::AccumCall),
+    /// The depth buffer group's calls (`depth.rs`).
     Depth(super::depth::DepthCall),
+    /// The point group's calls (`point.rs`).
     Point(super::point::PointCall),
+    /// The line group's calls (`line.rs`).
     Line(super::line::LineCall),
+    /// The polygon group's calls (`polygon.rs`).
     Polygon(super::polygon::PolygonCall),
-
-    /// The lighting group's calls
+    /// The lighting group's calls (`lighting/`).
     Lighting(super::lighting::LightingCall),
+    /// The transform group's calls: the matrices, the matrix mode, the clip planes (`matrix.rs`).
+    Transform(super::matrix::TransformCall),
+    /// The evaluator calls (`eval/`).
+    Eval(super::eval::EvalCall),
+    /// The texture group's calls (`texture.rs`).
+    Texture(super::texture::TextureCall),
+    /// The name stack's calls (`select.rs`).
+    Names(super::select::NameCall),
+    /// `glPushAttrib` and `glPopAttrib` (`attrib.rs`).
+    Attrib(super::attrib::AttribCall),
 }
 
 /// A list being compiled.
@@ -432,63 +373,19 @@ impl Gl {
             C::Enable(cap) => self.enable(*cap),
             C::Disable(cap) => self.disable(*cap),
             C::Lighting(call) => self.replay_lighting_call(call),
-            C::MatrixMode(mode) => self.matrix_mode(*mode),
-            C::LoadIdentity => self.load_identity(),
-            C::LoadMatrix(m) => self.load_matrixf(m),
-            C::MultMatrix(m) => self.mult_matrixf(m),
-            C::PushMatrix => self.push_matrix(),
-            C::PopMatrix => self.pop_matrix(),
-            C::Translate([x, y, z]) => self.translatef(*x, *y, *z),
-            C::Rotate([a, x, y, z]) => self.rotatef(*a, *x, *y, *z),
-            C::Scale([x, y, z]) => self.scalef(*x, *y, *z),
-            C::Ortho([l, r, b, t, n, f]) => self.ortho(*l, *r, *b, *t, *n, *f),
-            C::Frustum([l, r, b, t, n, f]) => self.frustum(*l, *r, *b, *t, *n, *f),
+            C::Transform(call) => self.replay_transform_call(call),
             C::Viewport(call) => self.replay_viewport_call(*call),
-            C::ClipPlane(plane, equation) => self.clip_plane(*plane, equation),
             C::PolygonStipple(rows) => {
                 if !self.reject_inside_begin_end() {
                     self.set_polygon_stipple(*rows);
                 }
             }
             C::Clear(mask) => self.clear(*mask),
-            C::ActiveTexture(unit) => self.active_texture(*unit),
-            C::Map1 { target, u, stride, order, points } => self.map1f(*target, u.0, u.1, *stride, *order, points),
-            C::Map2 { target, u, ustride, uorder, v, vstride, vorder, points } => {
-                self.map2f(*target, u.0, u.1, *ustride, *uorder, v.0, v.1, *vstride, *vorder, points)
-            }
-            C::MapGrid1(n, u1, u2) => self.map_grid1f(*n, *u1, *u2),
-            C::MapGrid2(un, u1, u2, vn, v1, v2) => self.map_grid2f(*un, *u1, *u2, *vn, *v1, *v2),
-            C::EvalCoord1(u) => self.eval_coord1f(*u),
-            C::EvalCoord2(u, v) => self.eval_coord2f(*u, *v),
-            C::EvalPoint1(i) => self.eval_point1(*i),
-            C::EvalPoint2(i, j) => self.eval_point2(*i, *j),
-            C::EvalMesh1(mode, i1, i2) => self.eval_mesh1(*mode, *i1, *i2),
-            C::EvalMesh2(mode, i1, i2, j1, j2) => self.eval_mesh2(*mode, *i1, *i2, *j1, *j2),
-            C::BindTexture(target, texture) => self.bind_texture(*target, *texture),
-            C::TexImage { dims, target, level, internalformat, size, border, format, image } => {
-                self.with_unpack_store(image.0, |gl| {
-                    let (f, t) = *format;
-                    if *dims == 1 {
-                        gl.tex_image_1d(*target, *level, *internalformat, size.0, *border, f, t, &image.1);
-                    } else {
-                        gl.tex_image_2d(*target, *level, *internalformat, size.0, size.1, *border, f, t, &image.1);
-                    }
-                });
-            }
-            C::TexSubImage { target, level, offset, size, format, image } => {
-                self.with_unpack_store(image.0, |gl| {
-                    let (x, y, (f, t)) = (offset.0, offset.1, *format);
-                    gl.tex_sub_image_2d(*target, *level, x, y, size.0, size.1, f, t, &image.1);
-                });
-            }
-            C::TexParameter(target, pname, param) => self.tex_parameteri(*target, *pname, *param),
-            C::TexParameterValues(target, pname, params) => self.tex_parameterfv(*target, *pname, params),
-            C::TexEnv(target, pname, params) => self.tex_envfv(*target, *pname, params),
-            C::TexGen(coord, pname, params) => self.tex_genfv(*coord, *pname, params),
+            C::Texture(call) => self.replay_texture_call(call),
+            C::Eval(call) => self.replay_eval_call(call),
             C::Hint(target, mode) => self.hint(*target, *mode),
             C::Fog(pname, params) => self.fogfv(*pname, params),
-            C::PushAttrib(mask) => self.push_attrib(*mask),
-            C::PopAttrib => self.pop_attrib(),
+            C::Attrib(call) => self.replay_attrib_call(call),
             C::ColorBuffer(call) => self.replay_color_buffer_call(*call),
             C::Stencil(call) => self.replay_stencil_call(*call),
             C::Scissor([x, y, w, h]) => self.scissor(*x, *y, *w, *h),
@@ -512,10 +409,7 @@ impl Gl {
             C::ListBase(base) => self.list_base(*base),
             C::EdgeFlag(flag) => self.edge_flag(*flag),
             C::Error(code) => self.set_error(*code),
-            C::InitNames => self.init_names(),
-            C::LoadName(name) => self.load_name(*name),
-            C::PushName(name) => self.push_name(*name),
-            C::PopName => self.pop_name(),
+            C::Names(call) => self.replay_name_call(call),
             C::PassThrough(token) => self.pass_through(*token),
         }
     }

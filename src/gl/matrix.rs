@@ -96,10 +96,49 @@ fn frustum_matrix(l: f32, r: f32, b: f32, t: f32, n: f32, f: f32) -> Mat4 {
     )
 }
 
+/// The transform group's calls as a display list holds them: the matrices, the matrix mode and
+/// the clip planes.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) enum TransformCall {
+    MatrixMode(GLenum),
+    LoadIdentity,
+    LoadMatrix([f32; 16]),
+    MultMatrix([f32; 16]),
+    PushMatrix,
+    PopMatrix,
+    Translate([f32; 3]),
+    Rotate([f32; 4]),
+    Scale([f32; 3]),
+    Ortho([f64; 6]),
+    Frustum([f64; 6]),
+    ClipPlane(GLenum, Vec<f64>),
+}
+
+impl Gl {
+    /// Replays a listed call of the group.
+    pub(crate) fn replay_transform_call(&mut self, call: &TransformCall) {
+        use TransformCall as C;
+        match call {
+            C::MatrixMode(mode) => self.matrix_mode(*mode),
+            C::LoadIdentity => self.load_identity(),
+            C::LoadMatrix(m) => self.load_matrixf(m),
+            C::MultMatrix(m) => self.mult_matrixf(m),
+            C::PushMatrix => self.push_matrix(),
+            C::PopMatrix => self.pop_matrix(),
+            C::Translate([x, y, z]) => self.translatef(*x, *y, *z),
+            C::Rotate([a, x, y, z]) => self.rotatef(*a, *x, *y, *z),
+            C::Scale([x, y, z]) => self.scalef(*x, *y, *z),
+            C::Ortho([l, r, b, t, n, f]) => self.ortho(*l, *r, *b, *t, *n, *f),
+            C::Frustum([l, r, b, t, n, f]) => self.frustum(*l, *r, *b, *t, *n, *f),
+            C::ClipPlane(plane, equation) => self.clip_plane(*plane, equation),
+        }
+    }
+}
+
 impl Gl {
     /// `glMatrixMode`: `GL_MODELVIEW`, `GL_PROJECTION` or `GL_TEXTURE`; else `GL_INVALID_ENUM`.
     pub fn matrix_mode(&mut self, mode: GLenum) {
-        if self.compiled(|| ListCommand::MatrixMode(mode)) {
+        if self.compiled(|| ListCommand::Transform(TransformCall::MatrixMode(mode))) {
             return;
         }
         if self.reject_inside_begin_end() {
@@ -122,7 +161,7 @@ impl Gl {
 
     /// `glLoadIdentity`.
     pub fn load_identity(&mut self) {
-        if self.compiled(|| ListCommand::LoadIdentity) {
+        if self.compiled(|| ListCommand::Transform(TransformCall::LoadIdentity)) {
             return;
         }
         self.change_matrix(|m| *m = Mat4::IDENTITY);
@@ -131,7 +170,7 @@ impl Gl {
     /// `glLoadMatrixf`: `m` needs 16 values, column-major.
     pub fn load_matrixf(&mut self, m: &[GLfloat]) {
         if let Some(m) = self.needs::<16>(m) {
-            if self.compiled(|| ListCommand::LoadMatrix(m)) {
+            if self.compiled(|| ListCommand::Transform(TransformCall::LoadMatrix(m))) {
                 return;
             }
             self.change_matrix(|top| *top = Mat4::from_cols_array(&m));
@@ -141,7 +180,7 @@ impl Gl {
     /// `glMultMatrixf`: `m` needs 16 values, column-major.
     pub fn mult_matrixf(&mut self, m: &[GLfloat]) {
         if let Some(m) = self.needs::<16>(m) {
-            if self.compiled(|| ListCommand::MultMatrix(m)) {
+            if self.compiled(|| ListCommand::Transform(TransformCall::MultMatrix(m))) {
                 return;
             }
             self.change_matrix(|top| *top *= Mat4::from_cols_array(&m));
@@ -180,7 +219,7 @@ impl Gl {
 
     /// `glPushMatrix`: `GL_STACK_OVERFLOW` when the stack is full.
     pub fn push_matrix(&mut self) {
-        if self.compiled(|| ListCommand::PushMatrix) {
+        if self.compiled(|| ListCommand::Transform(TransformCall::PushMatrix)) {
             return;
         }
         if self.reject_inside_begin_end() {
@@ -196,7 +235,7 @@ impl Gl {
 
     /// `glPopMatrix`: `GL_STACK_UNDERFLOW` when only one matrix is left.
     pub fn pop_matrix(&mut self) {
-        if self.compiled(|| ListCommand::PopMatrix) {
+        if self.compiled(|| ListCommand::Transform(TransformCall::PopMatrix)) {
             return;
         }
         if self.reject_inside_begin_end() {
@@ -212,7 +251,7 @@ impl Gl {
 
     /// `glTranslatef`.
     pub fn translatef(&mut self, x: GLfloat, y: GLfloat, z: GLfloat) {
-        if self.compiled(|| ListCommand::Translate([x, y, z])) {
+        if self.compiled(|| ListCommand::Transform(TransformCall::Translate([x, y, z]))) {
             return;
         }
         self.change_matrix(|m| *m *= Mat4::from_translation(Vec3::new(x, y, z)));
@@ -225,7 +264,7 @@ impl Gl {
 
     /// `glRotatef`: `angle` in degrees about the axis (x, y, z).
     pub fn rotatef(&mut self, angle: GLfloat, x: GLfloat, y: GLfloat, z: GLfloat) {
-        if self.compiled(|| ListCommand::Rotate([angle, x, y, z])) {
+        if self.compiled(|| ListCommand::Transform(TransformCall::Rotate([angle, x, y, z]))) {
             return;
         }
         let r = rotation(angle, x, y, z);
@@ -243,7 +282,7 @@ impl Gl {
 
     /// `glScalef`.
     pub fn scalef(&mut self, x: GLfloat, y: GLfloat, z: GLfloat) {
-        if self.compiled(|| ListCommand::Scale([x, y, z])) {
+        if self.compiled(|| ListCommand::Transform(TransformCall::Scale([x, y, z]))) {
             return;
         }
         self.change_matrix(|m| *m *= Mat4::from_scale(Vec3::new(x, y, z)));
@@ -264,7 +303,7 @@ impl Gl {
         near: GLdouble,
         far: GLdouble,
     ) {
-        if self.compiled(|| ListCommand::Ortho([left, right, bottom, top, near, far])) {
+        if self.compiled(|| ListCommand::Transform(TransformCall::Ortho([left, right, bottom, top, near, far]))) {
             return;
         }
         if self.reject_inside_begin_end() {
@@ -288,7 +327,7 @@ impl Gl {
         near: GLdouble,
         far: GLdouble,
     ) {
-        if self.compiled(|| ListCommand::Frustum([left, right, bottom, top, near, far])) {
+        if self.compiled(|| ListCommand::Transform(TransformCall::Frustum([left, right, bottom, top, near, far]))) {
             return;
         }
         if self.reject_inside_begin_end() {

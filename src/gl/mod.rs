@@ -56,7 +56,6 @@ mod state_var;
 mod stencil;
 mod stipple;
 mod stipple_query;
-mod texgen;
 mod texture;
 pub mod types;
 mod variants;
@@ -78,8 +77,8 @@ pub use lists::MAX_LIST_NESTING;
 pub use offset::PolygonOffset;
 pub use pixel_transfer::{ColorTransfer, DepthTransfer, MAX_PIXEL_MAP_TABLE};
 pub use select::SelectHit;
-pub use texgen::{TexGen, TexGenCoord, TexGenState};
 pub use texture::{BoundTexture, TexLevel, TexParams, MAX_TEXTURE_SIZE};
+pub use texture::{TexGen, TexGenCoord, TexGenState};
 pub use variants::GlComponent;
 pub use vertex::Vertex;
 pub use window_read::{WindowImage, WindowReader};
@@ -188,7 +187,7 @@ pub(crate) struct ServerState {
     /// Texture objects and unit 0's environment.
     pub(super) textures: texture::Textures,
     /// `glTexGen`'s modes and planes.
-    pub(super) tex_gen: texgen::TexGen,
+    pub(super) tex_gen: texture::TexGen,
     /// What Mesa's deferred `glMaterial` leaves of `GL_COLOR_MATERIAL`'s tracking.
     pub(super) color_material_sync: lighting::ColorMaterialSync,
     /// `glHint`'s requests.
@@ -233,7 +232,7 @@ impl ServerState {
             polygon_stipple: [u32::MAX; 32],
             raster_pos: raster_pos::RasterPos::default(),
             textures: texture::Textures::default(),
-            tex_gen: texgen::TexGen::default(),
+            tex_gen: texture::TexGen::default(),
             color_material_sync: lighting::ColorMaterialSync::default(),
             hints: hint::Hints::default(),
             color_buffer: color_buffer::ColorBuffer::default(),
@@ -449,18 +448,6 @@ impl Gl {
             return GL_NO_ERROR;
         }
         std::mem::replace(&mut self.error, GL_NO_ERROR)
-    }
-
-    /// `glActiveTexture`: selects the texture unit (the evaluators only work on unit 0).
-    pub fn active_texture(&mut self, texture: GLenum) {
-        if self.compiled_state_call(|| lists::ListCommand::ActiveTexture(texture)) {
-            return;
-        }
-        if !(GL_TEXTURE0..=GL_TEXTURE31).contains(&texture) {
-            self.set_error(GL_INVALID_ENUM);
-            return;
-        }
-        self.server.active_texture = texture;
     }
 
     /// `glGetString`: who implements this GL (`GL_VENDOR` "gleval"), on what (`GL_RENDERER`:

@@ -88,6 +88,28 @@ impl Selection {
     }
 }
 
+/// The name stack's calls as a display list holds them.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) enum NameCall {
+    InitNames,
+    LoadName(GLuint),
+    PushName(GLuint),
+    PopName,
+}
+
+impl Gl {
+    /// Replays a listed call of the group.
+    pub(crate) fn replay_name_call(&mut self, call: &NameCall) {
+        use NameCall as C;
+        match call {
+            C::InitNames => self.init_names(),
+            C::LoadName(name) => self.load_name(*name),
+            C::PushName(name) => self.push_name(*name),
+            C::PopName => self.pop_name(),
+        }
+    }
+}
+
 impl Gl {
     /// The error `glSelectBuffer(size)` raises now, in Mesa's order (inside `begin`/`end`, a
     /// negative size, selection mode), `None` when it takes the buffer: what a binding that
@@ -198,7 +220,7 @@ impl Gl {
 
     /// `glInitNames`: empties the name stack (writing the pending hit record).
     pub fn init_names(&mut self) {
-        if self.name_call(ListCommand::InitNames) {
+        if self.name_call(ListCommand::Names(NameCall::InitNames)) {
             self.client.select.write_hit_record();
             self.client.select.names.clear();
         }
@@ -207,7 +229,7 @@ impl Gl {
     /// `glLoadName(name)`: replaces the top of the name stack; an empty stack →
     /// `GL_INVALID_OPERATION`.
     pub fn load_name(&mut self, name: GLuint) {
-        if !self.name_call(ListCommand::LoadName(name)) {
+        if !self.name_call(ListCommand::Names(NameCall::LoadName(name))) {
             return;
         }
         if self.client.select.names.is_empty() {
@@ -221,7 +243,7 @@ impl Gl {
 
     /// `glPushName(name)`: a full stack (64 names) → `GL_STACK_OVERFLOW`.
     pub fn push_name(&mut self, name: GLuint) {
-        if !self.name_call(ListCommand::PushName(name)) {
+        if !self.name_call(ListCommand::Names(NameCall::PushName(name))) {
             return;
         }
         self.client.select.write_hit_record();
@@ -233,7 +255,7 @@ impl Gl {
 
     /// `glPopName`: an empty stack → `GL_STACK_UNDERFLOW`.
     pub fn pop_name(&mut self) {
-        if !self.name_call(ListCommand::PopName) {
+        if !self.name_call(ListCommand::Names(NameCall::PopName)) {
             return;
         }
         self.client.select.write_hit_record();

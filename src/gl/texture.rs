@@ -15,14 +15,16 @@
 use super::consts::*;
 use super::lists::ListCommand;
 use super::pixel_unpack::format_components;
+use super::pixels::PixelStore;
 use super::state_var::{int_limit, put_enum, row, Kind, StateVar};
-use super::texgen::{TexGen, TexGenState};
 use super::types::*;
 use super::Gl;
+pub use gen::{TexGen, TexGenCoord, TexGenState};
 use glam::Mat4;
 use std::collections::HashMap;
 use std::sync::Arc;
 
+mod gen;
 mod image;
 mod params;
 mod query;
@@ -296,7 +298,83 @@ fn texture_format(format: GLenum) -> bool {
     format_components(format).is_some() && !matches!(format, GL_STENCIL_INDEX | GL_DEPTH_COMPONENT)
 }
 
+/// The texture group's calls as a display list holds them.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) enum TextureCall {
+    ActiveTexture(GLenum),
+    BindTexture(GLenum, GLuint),
+    /// `glTexImage1D/2D`: the client's bytes with the pixel store of compile time, as GL
+    /// unpacks them then (GL 1.1 §5.4).
+    TexImage {
+        dims: u8,
+        target: GLenum,
+        level: GLint,
+        internalformat: GLint,
+        size: (GLsizei, GLsizei),
+        border: GLint,
+        format: (GLenum, GLenum),
+        image: (PixelStore, Vec<u8>),
+    },
+    TexSubImage {
+        target: GLenum,
+        level: GLint,
+        offset: (GLint, GLint),
+        size: (GLsizei, GLsizei),
+        format: (GLenum, GLenum),
+        image: (PixelStore, Vec<u8>),
+    },
+    TexParameter(GLenum, GLenum, GLint),
+    /// `glTexParameterfv` of `GL_TEXTURE_BORDER_COLOR` or `GL_TEXTURE_PRIORITY`.
+    TexParameterValues(GLenum, GLenum, Vec<GLfloat>),
+    TexEnv(GLenum, GLenum, Vec<f32>),
+    /// `glTexGen*`: coordinate, name and values (the eye plane is transformed when called).
+    TexGen(GLenum, GLenum, Vec<f32>),
+}
+
 impl Gl {
+    /// Replays a listed call of the group.
+    pub(crate) fn replay_texture_call(&mut self, call: &TextureCall) {
+        use TextureCall as C;
+        match call {
+            C::ActiveTexture(unit) => self.active_texture(*unit),
+            C::BindTexture(target, texture) => self.bind_texture(*target, *texture),
+            C::TexImage { dims, target, level, internalformat, size, border, format, image } => {
+                self.with_unpack_store(image.0, |gl| {
+                    let (f, t) = *format;
+                    if *dims == 1 {
+                        gl.tex_image_1d(*target, *level, *internalformat, size.0, *border, f, t, &image.1);
+                    } else {
+                        gl.tex_image_2d(*target, *level, *internalformat, size.0, size.1, *border, f, t, &image.1);
+                    }
+                });
+            }
+            C::TexSubImage { target, level, offset, size, format, image } => {
+                self.with_unpack_store(image.0, |gl| {
+                    let (x, y, (f, t)) = (offset.0, offset.1, *format);
+                    gl.tex_sub_image_2d(*target, *level, x, y, size.0, size.1, f, t, &image.1);
+                });
+            }
+            C::TexParameter(target, pname, param) => self.tex_parameteri(*target, *pname, *param),
+            C::TexParameterValues(target, pname, params) => self.tex_parameterfv(*target, *pname, params),
+            C::TexEnv(target, pname, params) => self.tex_envfv(*target, *pname, params),
+            C::TexGen(coord, pname, params) => self.tex_genfv(*coord, *pname, params),
+        }
+    }
+}
+
+impl Gl {
+    /// `glActiveTexture`: selects the texture unit (the evaluators only work on unit 0).
+    pub fn active_texture(&mut self, texture: GLenum) {
+        if self.compiled_state_call(|| ListCommand::Texture(TextureCall::ActiveTexture(texture))) {
+            return;
+        }
+        if !(GL_TEXTURE0..=GL_TEXTURE31).contains(&texture) {
+            self.set_error(GL_INVALID_ENUM);
+            return;
+        }
+        self.server.active_texture = texture;
+    }
+
     /// `glGenTextures`: `n` unused names into `textures` (short of room → `GL_INVALID_VALUE`,
     /// as is `n` < 0).
     pub fn gen_textures(&mut self, n: GLsizei, textures: &mut [GLuint]) {
@@ -318,7 +396,7 @@ impl Gl {
     /// `GL_TEXTURE_2D`, creating it on first use. Another target → `GL_INVALID_ENUM`; an
     /// object made for the other target → `GL_INVALID_OPERATION`.
     pub fn bind_texture(&mut self, target: GLenum, texture: GLuint) {
-        if self.compiled_state_call(|| ListCommand::BindTexture(target, texture)) {
+        if self.compiled_state_call(|| ListCommand::Texture(TextureCall::BindTexture(target, texture))) {
             return;
         }
         let Some(t) = target_index(target) else { return self.set_error(GL_INVALID_ENUM) };

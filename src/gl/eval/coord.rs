@@ -4,6 +4,7 @@
 
 use super::target::Slot;
 use super::ActiveMaps;
+use super::EvalCall;
 use crate::gl::lists::ListCommand;
 use crate::gl::types::*;
 use crate::gl::Gl;
@@ -33,7 +34,7 @@ impl Gl {
     /// `glEvalCoord1f`: with no `GL_MAP1_VERTEX_3/4` enabled it does nothing; outside
     /// `begin`/`end` the vertex only moves the current position, so nothing is recorded.
     pub fn eval_coord1f(&mut self, u: GLfloat) {
-        if self.compiled(|| ListCommand::EvalCoord1(u)) {
+        if self.compiled(|| ListCommand::Eval(EvalCall::EvalCoord1(u))) {
             return;
         }
         let act = self.server.eval.active(1);
@@ -64,7 +65,7 @@ impl Gl {
     /// `glEvalCoord2f`: evaluates the MAP2 maps; with `GL_AUTO_NORMAL` the vertex map's unit
     /// normal replaces the normal map's value.
     pub fn eval_coord2f(&mut self, u: GLfloat, v: GLfloat) {
-        if self.compiled(|| ListCommand::EvalCoord2(u, v)) {
+        if self.compiled(|| ListCommand::Eval(EvalCall::EvalCoord2(u, v))) {
             return;
         }
         let act = self.server.eval.active(2);

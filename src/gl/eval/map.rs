@@ -2,6 +2,7 @@
 //! `map2()`) and the packed copy of the control points.
 
 use super::target::{MapTarget, Slot};
+use super::EvalCall;
 use crate::gl::consts::*;
 use crate::gl::lists::ListCommand;
 use crate::gl::types::*;
@@ -206,7 +207,7 @@ impl Gl {
     fn map1<T: ControlValue>(&mut self, target: GLenum, u1: f32, u2: f32, stride: i32, order: i32, points: &[T]) {
         if self.compiled(|| {
             let (strides, points) = points_for_list(target, &[(stride, order)], points);
-            ListCommand::Map1 { target, u: (u1, u2), stride: strides[0], order, points }
+            ListCommand::Eval(EvalCall::Map1 { target, u: (u1, u2), stride: strides[0], order, points })
         }) {
             return;
         }
@@ -265,7 +266,16 @@ impl Gl {
         if self.compiled(|| {
             let (strides, points) = points_for_list(target, &[(a.ustride, a.uorder), (a.vstride, a.vorder)], points);
             let (ustride, vstride) = (strides[0], strides[1]);
-            ListCommand::Map2 { target, u: a.u, ustride, uorder: a.uorder, v: a.v, vstride, vorder: a.vorder, points }
+            ListCommand::Eval(EvalCall::Map2 {
+                target,
+                u: a.u,
+                ustride,
+                uorder: a.uorder,
+                v: a.v,
+                vstride,
+                vorder: a.vorder,
+                points,
+            })
         }) {
             return;
         }

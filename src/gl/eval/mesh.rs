@@ -4,6 +4,7 @@
 //! ([`crate::gl::GridMesh`]), evaluated now by the CPU tessellator or at draw time by the GPU's.
 
 use super::job::PendingMeshes;
+use super::EvalCall;
 use super::Grid;
 use crate::gl::consts::*;
 use crate::gl::lists::ListCommand;
@@ -34,7 +35,7 @@ impl Gl {
     /// `GL_LINE_STRIP` over grid lines i1..=i2. Another mode → `GL_INVALID_ENUM`; no vertex map
     /// enabled → nothing at all.
     pub fn eval_mesh1(&mut self, mode: GLenum, i1: GLint, i2: GLint) {
-        if self.compiled(|| ListCommand::EvalMesh1(mode, i1, i2)) {
+        if self.compiled(|| ListCommand::Eval(EvalCall::EvalMesh1(mode, i1, i2))) {
             return;
         }
         if self.reject_inside_begin_end() {
@@ -73,7 +74,7 @@ impl Gl {
     /// `GL_TRIANGLE_STRIP` per row j in j1..j2, alternating (i, j) and (i, j+1): clockwise in
     /// (u, v) when both increase, exactly as Mesa. Every grid point is evaluated once.
     pub fn eval_mesh2(&mut self, mode: GLenum, i1: GLint, i2: GLint, j1: GLint, j2: GLint) {
-        if self.compiled(|| ListCommand::EvalMesh2(mode, i1, i2, j1, j2)) {
+        if self.compiled(|| ListCommand::Eval(EvalCall::EvalMesh2(mode, i1, i2, j1, j2))) {
             return;
         }
         if self.reject_inside_begin_end() {

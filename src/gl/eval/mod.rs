@@ -197,10 +197,61 @@ pub(crate) static GET_ROWS: &[StateVar] = &[
     int_limit!(GL_MAX_EVAL_ORDER, MAX_EVAL_ORDER),
 ];
 
+/// The evaluator calls as a display list holds them.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) enum EvalCall {
+    Map1 {
+        target: GLenum,
+        u: (f32, f32),
+        stride: i32,
+        order: i32,
+        points: Vec<f32>,
+    },
+    Map2 {
+        target: GLenum,
+        u: (f32, f32),
+        ustride: i32,
+        uorder: i32,
+        v: (f32, f32),
+        vstride: i32,
+        vorder: i32,
+        points: Vec<f32>,
+    },
+    MapGrid1(i32, f32, f32),
+    MapGrid2(i32, f32, f32, i32, f32, f32),
+    EvalCoord1(f32),
+    EvalCoord2(f32, f32),
+    EvalPoint1(i32),
+    EvalPoint2(i32, i32),
+    EvalMesh1(GLenum, i32, i32),
+    EvalMesh2(GLenum, i32, i32, i32, i32),
+}
+
+impl super::Gl {
+    /// Replays a listed call of the group.
+    pub(crate) fn replay_eval_call(&mut self, call: &EvalCall) {
+        use EvalCall as C;
+        match call {
+            C::Map1 { target, u, stride, order, points } => self.map1f(*target, u.0, u.1, *stride, *order, points),
+            C::Map2 { target, u, ustride, uorder, v, vstride, vorder, points } => {
+                self.map2f(*target, u.0, u.1, *ustride, *uorder, v.0, v.1, *vstride, *vorder, points)
+            }
+            C::MapGrid1(n, u1, u2) => self.map_grid1f(*n, *u1, *u2),
+            C::MapGrid2(un, u1, u2, vn, v1, v2) => self.map_grid2f(*un, *u1, *u2, *vn, *v1, *v2),
+            C::EvalCoord1(u) => self.eval_coord1f(*u),
+            C::EvalCoord2(u, v) => self.eval_coord2f(*u, *v),
+            C::EvalPoint1(i) => self.eval_point1(*i),
+            C::EvalPoint2(i, j) => self.eval_point2(*i, *j),
+            C::EvalMesh1(mode, i1, i2) => self.eval_mesh1(*mode, *i1, *i2),
+            C::EvalMesh2(mode, i1, i2, j1, j2) => self.eval_mesh2(*mode, *i1, *i2, *j1, *j2),
+        }
+    }
+}
+
 impl super::Gl {
     /// `glMapGrid1f`: `un` < 1 → `GL_INVALID_VALUE`. A zero-length or reversed domain is allowed.
     pub fn map_grid1f(&mut self, un: GLint, u1: GLfloat, u2: GLfloat) {
-        if self.compiled(|| ListCommand::MapGrid1(un, u1, u2)) {
+        if self.compiled(|| ListCommand::Eval(EvalCall::MapGrid1(un, u1, u2))) {
             return;
         }
         if self.reject_inside_begin_end() {
@@ -220,7 +271,7 @@ impl super::Gl {
 
     /// `glMapGrid2f`: `un` < 1 or `vn` < 1 → `GL_INVALID_VALUE`.
     pub fn map_grid2f(&mut self, un: GLint, u1: GLfloat, u2: GLfloat, vn: GLint, v1: GLfloat, v2: GLfloat) {
-        if self.compiled(|| ListCommand::MapGrid2(un, u1, u2, vn, v1, v2)) {
+        if self.compiled(|| ListCommand::Eval(EvalCall::MapGrid2(un, u1, u2, vn, v1, v2))) {
             return;
         }
         if self.reject_inside_begin_end() {
@@ -240,7 +291,7 @@ impl super::Gl {
 
     /// `glEvalPoint1(i)`: `glEvalCoord1f` at grid line `i` (not range-checked; extrapolates).
     pub fn eval_point1(&mut self, i: GLint) {
-        if self.compiled(|| ListCommand::EvalPoint1(i)) {
+        if self.compiled(|| ListCommand::Eval(EvalCall::EvalPoint1(i))) {
             return;
         }
         let u = self.server.eval.grid1.param(i.into());
@@ -249,7 +300,7 @@ impl super::Gl {
 
     /// `glEvalPoint2(i, j)`: `glEvalCoord2f` at grid point (i, j).
     pub fn eval_point2(&mut self, i: GLint, j: GLint) {
-        if self.compiled(|| ListCommand::EvalPoint2(i, j)) {
+        if self.compiled(|| ListCommand::Eval(EvalCall::EvalPoint2(i, j))) {
             return;
         }
         let (gu, gv) = self.server.eval.grid2;

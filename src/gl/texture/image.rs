@@ -2,6 +2,7 @@
 //! `glTexSubImage1D/2D` of the bound texture (proxies, borders, level sizes), each image
 //! unpacked from client memory through the pixel store and the pixel transfer into RGBA8.
 
+use super::TextureCall;
 use super::{
     base_format, fits_level, proxy_index, strip_border, target_index, texture_format, TexLevel, MAX_TEXTURE_SIZE,
 };
@@ -67,15 +68,17 @@ impl Gl {
         bytes: &[u8],
     ) {
         let store = self.unpack_store();
-        if self.compiled(|| ListCommand::TexImage {
-            dims,
-            target,
-            level,
-            internalformat,
-            size: (width, height),
-            border,
-            format: (format, type_),
-            image: (store, bytes.to_vec()),
+        if self.compiled(|| {
+            ListCommand::Texture(TextureCall::TexImage {
+                dims,
+                target,
+                level,
+                internalformat,
+                size: (width, height),
+                border,
+                format: (format, type_),
+                image: (store, bytes.to_vec()),
+            })
         }) || self.reject_inside_begin_end()
         {
             return;
@@ -139,13 +142,15 @@ impl Gl {
     ) {
         let bytes: &[u8] = bytemuck::cast_slice(pixels);
         let store = self.unpack_store();
-        if self.compiled(|| ListCommand::TexSubImage {
-            target,
-            level,
-            offset: (xoffset, yoffset),
-            size: (width, height),
-            format: (format, type_),
-            image: (store, bytes.to_vec()),
+        if self.compiled(|| {
+            ListCommand::Texture(TextureCall::TexSubImage {
+                target,
+                level,
+                offset: (xoffset, yoffset),
+                size: (width, height),
+                format: (format, type_),
+                image: (store, bytes.to_vec()),
+            })
         }) || self.reject_inside_begin_end()
         {
             return;

@@ -3,6 +3,7 @@
 //! unit 0.
 
 use super::target_index;
+use super::TextureCall;
 use crate::gl::consts::*;
 use crate::gl::lists::ListCommand;
 use crate::gl::types::*;
@@ -17,7 +18,7 @@ impl Gl {
             // A float parameter: Mesa converts the integer as it is.
             return self.tex_parameterfv(target, pname, &[param as GLfloat]);
         }
-        if self.compiled_state_call(|| ListCommand::TexParameter(target, pname, param)) {
+        if self.compiled_state_call(|| ListCommand::Texture(TextureCall::TexParameter(target, pname, param))) {
             return;
         }
         let Some(t) = target_index(target) else { return self.set_error(GL_INVALID_ENUM) };
@@ -61,7 +62,7 @@ impl Gl {
     /// `glTexEnvi` for `GL_TEXTURE_ENV_MODE`: `GL_MODULATE` (initial), `GL_DECAL`, `GL_BLEND`,
     /// `GL_REPLACE` or `GL_ADD`. Another target, name or mode → `GL_INVALID_ENUM`.
     pub fn tex_envi(&mut self, target: GLenum, pname: GLenum, param: GLint) {
-        if self.compiled_state_call(|| ListCommand::TexEnv(target, pname, vec![param as f32])) {
+        if self.compiled_state_call(|| ListCommand::Texture(TextureCall::TexEnv(target, pname, vec![param as f32]))) {
             return;
         }
         let mode = param as GLenum;
@@ -85,7 +86,7 @@ impl Gl {
             let Some(&mode) = params.first() else { return self.set_error(GL_INVALID_VALUE) };
             return self.tex_envi(target, pname, mode as GLint);
         }
-        if self.compiled_state_call(|| ListCommand::TexEnv(target, pname, params.to_vec())) {
+        if self.compiled_state_call(|| ListCommand::Texture(TextureCall::TexEnv(target, pname, params.to_vec()))) {
             return;
         }
         if target != GL_TEXTURE_ENV || pname != GL_TEXTURE_ENV_COLOR {

@@ -9,6 +9,7 @@ use super::super::state_var::{c_int, float_to_int};
 use super::super::types::*;
 use super::super::variants::GlComponent;
 use super::super::Gl;
+use super::TextureCall;
 use super::{proxy_index, target_index, TextureObject, MAX_TEXTURE_SIZE};
 
 /// A texture object's parameters beyond [`super::TexParams`], and each level's internal format
@@ -138,7 +139,9 @@ impl Gl {
 
     /// The float-valued parameters, compiled into lists as GL does.
     fn tex_parameter_values(&mut self, target: GLenum, pname: GLenum, params: &[GLfloat]) {
-        let command = || super::super::lists::ListCommand::TexParameterValues(target, pname, params.to_vec());
+        let command = || {
+            super::super::lists::ListCommand::Texture(TextureCall::TexParameterValues(target, pname, params.to_vec()))
+        };
         if self.compiled(command) || self.reject_inside_begin_end() {
             return;
         }

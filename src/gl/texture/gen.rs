@@ -8,10 +8,11 @@
 //! `GL_INVALID_ENUM`, sphere mapping only for s and t, the normal and reflection maps not for q;
 //! the scalar forms also set a plane (its first value, the rest 0), as Mesa's do.
 
-use super::consts::*;
-use super::lists::ListCommand;
-use super::types::*;
-use super::Gl;
+use super::super::consts::*;
+use super::super::lists::ListCommand;
+use super::super::types::*;
+use super::super::Gl;
+use super::TextureCall;
 use glam::{Vec3, Vec4, Vec4Swizzles};
 
 /// The generation state of one coordinate.
@@ -126,7 +127,7 @@ impl Gl {
         let Some(values) = params.get(..Self::tex_gen_param_count(pname)) else {
             return self.set_error(GL_INVALID_VALUE);
         };
-        if self.compiled_state_call(|| ListCommand::TexGen(coord, pname, values.to_vec())) {
+        if self.compiled_state_call(|| ListCommand::Texture(TextureCall::TexGen(coord, pname, values.to_vec()))) {
             return;
         }
         let Some(index) = coord_index(coord) else { return self.set_error(GL_INVALID_ENUM) };
@@ -208,7 +209,7 @@ impl Gl {
         }
         let count = Self::tex_gen_param_count(pname);
         match params.get_mut(..count) {
-            Some(out) => out.iter_mut().zip(values).for_each(|(o, v)| *o = super::state_var::c_int(v)),
+            Some(out) => out.iter_mut().zip(values).for_each(|(o, v)| *o = super::super::state_var::c_int(v)),
             None => self.set_error(GL_INVALID_VALUE),
         }
     }
