@@ -5,7 +5,7 @@
 //! Mesa's truncations and wrapping (`render::accum`).
 
 use super::consts::*;
-use super::frame::Command;
+use super::frame::{Accumulation, Command};
 use super::lists::ListCommand;
 use super::state_var::{put, row, Kind, StateVar};
 use super::types::*;
@@ -34,7 +34,7 @@ impl Gl {
         }
         let tests = self.fragment_tests();
         let read = self.buffers_of(self.server.pixel_state.mode.read_buffer);
-        self.recorder.frame.commands.push(Command::Accum { op, value, tests, read });
+        self.recorder.frame.commands.push(Command::Accum(Accumulation { op, value, tests, read }));
     }
 
     /// `glClearAccum`: the value `glClear(GL_ACCUM_BUFFER_BIT)` writes, each component clamped

@@ -304,7 +304,7 @@ impl Gl {
                 }
             }
             // GL clears and copies only in render mode (a copy gives its token instead).
-            Command::Clear { .. } | Command::CopyPixels(_) | Command::Accum { .. } | Command::SwapBuffers => {}
+            Command::Clear { .. } | Command::CopyPixels(_) | Command::Accum(_) | Command::SwapBuffers => {}
         }
         out
     }

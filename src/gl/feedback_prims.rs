@@ -20,7 +20,7 @@
 use super::clip::{segment_by, Mix};
 use super::consts::*;
 use super::frame::DrawState;
-use super::shade::Shader;
+use super::shade::{ShadedVertex, Shader};
 use super::types::*;
 use super::vertex::Vertex;
 use glam::Vec4;
@@ -40,34 +40,6 @@ pub(crate) enum FeedbackPrimitive {
     /// A line; `reset`: the first of a polygon outline (`GL_LINE_RESET_TOKEN`).
     Line(FeedbackVertex, FeedbackVertex, bool),
     Polygon(Vec<FeedbackVertex>),
-}
-
-/// A vertex between the vertex stage and the window: what clipping interpolates.
-#[derive(Clone, Copy, Debug)]
-struct Stage {
-    clip: Vec4,
-    eye: Vec4,
-    front: Vec4,
-    back: Vec4,
-    tex: Vec4,
-}
-
-impl Mix for Stage {
-    fn mix(self, other: Stage, t: f32) -> Stage {
-        self.lerp(other, t)
-    }
-}
-
-impl Stage {
-    fn lerp(self, other: Stage, t: f32) -> Stage {
-        Stage {
-            clip: self.clip.lerp(other.clip, t),
-            eye: self.eye.lerp(other.eye, t),
-            front: self.front.lerp(other.front, t),
-            back: self.back.lerp(other.back, t),
-            tex: self.tex.lerp(other.tex, t),
-        }
-    }
 }
 
 /// A triangle of the split: vertex indices, which edges (vᵢ → vᵢ₊₁) are the primitive's own,
@@ -118,12 +90,14 @@ fn triangles(mode: GLenum, n: usize) -> Vec<Triangle> {
 /// edge flag is false (empty: all true).
 pub(crate) fn report(mode: GLenum, state: &DrawState, vertices: &[Vertex], hidden: &[bool]) -> Vec<FeedbackPrimitive> {
     let shader = Shader::new(state);
-    let v: Vec<Stage> = vertices
+    let v: Vec<ShadedVertex> = vertices
         .iter()
         .map(|v| {
             let s = shader.shade(v);
-            let tex = Vec4::from_array(feedback_tex_coord(state, v));
-            Stage { clip: s.clip, eye: s.eye, front: s.front, back: s.back, tex }
+            // Without a texture feedback reports the coordinate as given (the vertex stage's is
+            // zero then: no rasteriser reads it).
+            let tex = if state.texture.is_some() { s.tex } else { Vec4::from_array(v.tex_coord) };
+            ShadedVertex { tex, ..s }
         })
         .collect();
     let out = Reporter { state, out: Vec::new() };
@@ -136,7 +110,7 @@ struct Reporter<'a> {
 }
 
 impl Reporter<'_> {
-    fn primitive(mut self, mode: GLenum, v: &[Stage], hidden: &[bool]) -> Vec<FeedbackPrimitive> {
+    fn primitive(mut self, mode: GLenum, v: &[ShadedVertex], hidden: &[bool]) -> Vec<FeedbackPrimitive> {
         let n = v.len();
         match mode {
             GL_POINTS => (0..n).for_each(|i| self.point(v[i], true)),
@@ -160,7 +134,7 @@ impl Reporter<'_> {
     }
 
     /// Window coordinates of a vertex through the viewport and depth range, and its colour.
-    fn vertex(&self, s: &Stage, front: bool) -> FeedbackVertex {
+    fn vertex(&self, s: &ShadedVertex, front: bool) -> FeedbackVertex {
         let [vx, vy, vw, vh] = self.state.viewport.map(|c| c as f32);
         let [near, far] = self.state.depth_range;
         let ndc = s.clip / s.clip.w;
@@ -175,7 +149,7 @@ impl Reporter<'_> {
     }
 
     /// The signed distances of a vertex to every plane it is clipped by ([`plane_distance`]).
-    fn distances(&self, s: &Stage) -> Vec<f32> {
+    fn distances(&self, s: &ShadedVertex) -> Vec<f32> {
         (0..self.planes()).map(|k| plane_distance(self.state, s, k)).collect()
     }
 
@@ -184,7 +158,7 @@ impl Reporter<'_> {
         6 + self.state.clip_planes.len()
     }
 
-    fn point(&mut self, s: Stage, front: bool) {
+    fn point(&mut self, s: ShadedVertex, front: bool) {
         if self.distances(&s).iter().all(|d| *d >= 0.0) {
             let v = self.vertex(&s, front);
             self.out.push(FeedbackPrimitive::Point(v));
@@ -192,9 +166,9 @@ impl Reporter<'_> {
     }
 
     /// A line clipped plane by plane (Liang–Barsky on the distances, `clip::segment_by`).
-    fn line(&mut self, a: Stage, b: Stage, front: bool, reset: bool) {
+    fn line(&mut self, a: ShadedVertex, b: ShadedVertex, front: bool, reset: bool) {
         let state = self.state;
-        let planes = (0..self.planes()).map(|k| move |s: &Stage| plane_distance(state, s, k));
+        let planes = (0..self.planes()).map(|k| move |s: &ShadedVertex| plane_distance(state, s, k));
         let Some((a2, b2)) = segment_by(a, b, planes) else { return };
         let (va, vb) = (self.vertex(&a2, front), self.vertex(&b2, front));
         self.out.push(FeedbackPrimitive::Line(va, vb, reset));
@@ -202,7 +176,7 @@ impl Reporter<'_> {
 
     /// Twice the window-space signed area (counter-clockwise positive); from the homogeneous
     /// determinant when a vertex is behind the eye.
-    fn area(t: &[Stage; 3]) -> f32 {
+    fn area(t: &[ShadedVertex; 3]) -> f32 {
         if t.iter().all(|s| s.clip.w > 0.0) {
             let p: Vec<(f32, f32)> = t.iter().map(|s| (s.clip.x / s.clip.w, s.clip.y / s.clip.w)).collect();
             (p[1].0 - p[0].0) * (p[2].1 - p[0].1) - (p[2].0 - p[0].0) * (p[1].1 - p[0].1)
@@ -212,7 +186,7 @@ impl Reporter<'_> {
         }
     }
 
-    fn triangle(&mut self, t: [Stage; 3], edges: [bool; 3], reset: bool) {
+    fn triangle(&mut self, t: [ShadedVertex; 3], edges: [bool; 3], reset: bool) {
         let front = (Self::area(&t) > 0.0) == (self.state.front_face == GL_CCW);
         if let Some(cull) = self.state.cull_face {
             if cull == GL_FRONT_AND_BACK || (cull == GL_FRONT) == front {
@@ -236,7 +210,7 @@ impl Reporter<'_> {
     }
 
     /// A triangle in its face's polygon mode.
-    fn face(&mut self, mode: GLenum, t: &[Stage; 3], edges: [bool; 3], reset: bool, front: bool) {
+    fn face(&mut self, mode: GLenum, t: &[ShadedVertex; 3], edges: [bool; 3], reset: bool, front: bool) {
         match mode {
             GL_POINT => {
                 for k in 0..3 {
@@ -263,7 +237,7 @@ impl Reporter<'_> {
 
     /// Sutherland–Hodgman against each plane a vertex is outside of, keeping the first vertex
     /// first and each vertex's outgoing edge flag, as Mesa's `do_clip_tri` does.
-    fn clip_polygon(&self, mut list: Vec<Stage>, mut edges: Vec<bool>) -> (Vec<Stage>, Vec<bool>) {
+    fn clip_polygon(&self, mut list: Vec<ShadedVertex>, mut edges: Vec<bool>) -> (Vec<ShadedVertex>, Vec<bool>) {
         let planes = self.planes();
         for plane in 0..planes {
             if list.len() < 3 {
@@ -286,10 +260,10 @@ impl Reporter<'_> {
                 if (dp < 0.0) != (dp_prev < 0.0) {
                     if dp < 0.0 {
                         // Going out: the new edge runs along the plane.
-                        out.push(list[j].lerp(prev, dp / (dp - dp_prev)));
+                        out.push(list[j].mix(prev, dp / (dp - dp_prev)));
                         out_edges.push(user);
                     } else {
-                        out.push(prev.lerp(list[j], dp_prev / (dp_prev - dp)));
+                        out.push(prev.mix(list[j], dp_prev / (dp_prev - dp)));
                         out_edges.push(edges[i]);
                     }
                 }
@@ -302,7 +276,7 @@ impl Reporter<'_> {
 
 /// The signed distance of a vertex to plane `k`: the view volume's six first (Mesa's order:
 /// x, −x, y, −y, z, −z as w ∓ …), then the enabled clip planes.
-fn plane_distance(state: &DrawState, s: &Stage, k: usize) -> f32 {
+fn plane_distance(state: &DrawState, s: &ShadedVertex, k: usize) -> f32 {
     let c = s.clip;
     match k {
         0 => c.w - c.x,
@@ -313,19 +287,6 @@ fn plane_distance(state: &DrawState, s: &Stage, k: usize) -> f32 {
         5 => c.w - c.z,
         _ => Vec4::from_array(state.clip_planes[k - 6]).dot(s.eye),
     }
-}
-
-/// The texture coordinate GL reports for a vertex: with a texture enabled, generated where
-/// `glTexGen` is on (GL 1.1 §2.10.4) and through the texture matrix; as given without one.
-fn feedback_tex_coord(state: &DrawState, v: &Vertex) -> [GLfloat; 4] {
-    let Some(texture) = &state.texture else { return v.tex_coord };
-    let given = Vec4::from_array(v.tex_coord);
-    let generated = texture.generate.map_or(given, |g| {
-        let object = Vec4::from_array(v.position);
-        let eye = state.modelview * object;
-        g.apply(given, object, eye, state.eye_normal(state.normal_matrix(), v.normal))
-    });
-    (texture.matrix * generated).to_array()
 }
 
 #[cfg(test)]

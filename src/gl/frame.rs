@@ -117,6 +117,20 @@ impl DrawState {
     }
 }
 
+/// A `glAccum(op, value)` over the scissor box of `tests`, reading the colour buffer `read`
+/// (front or back bit) and returning into `tests`' draw buffers through its colour mask.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Accumulation {
+    /// `GL_ACCUM`, `GL_LOAD`, `GL_ADD`, `GL_MULT` or `GL_RETURN`.
+    pub op: GLenum,
+    /// The operation's value.
+    pub value: f32,
+    /// Scissor, colour mask and draw buffers.
+    pub tests: FragmentTests,
+    /// The buffer `GL_ACCUM` and `GL_LOAD` read (`FRONT_BUFFER` or `BACK_BUFFER`).
+    pub read: u8,
+}
+
 /// Framebuffer operations and draws, in program order.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Command {
@@ -135,18 +149,8 @@ pub enum Command {
         /// The scissor box, the write masks and the colour buffers the clear reaches.
         tests: FragmentTests,
     },
-    /// `glAccum(op, value)` over the scissor box of `tests`, reading the colour buffer `read`
-    /// (front or back bit) and returning into `tests`' draw buffers through its colour mask.
-    Accum {
-        /// `GL_ACCUM`, `GL_LOAD`, `GL_ADD`, `GL_MULT` or `GL_RETURN`.
-        op: GLenum,
-        /// The operation's value.
-        value: f32,
-        /// Scissor, colour mask and draw buffers.
-        tests: FragmentTests,
-        /// The buffer `GL_ACCUM` and `GL_LOAD` read (`FRONT_BUFFER` or `BACK_BUFFER`).
-        read: u8,
-    },
+    /// `glAccum(op, value)` (see [`Accumulation`]).
+    Accum(Accumulation),
     /// `glutSwapBuffers`: the back buffer becomes the front one (a double-buffered context).
     SwapBuffers,
     /// Draw primitive number `n` of [`Frame::primitives`].
@@ -338,7 +342,7 @@ impl Frame {
         };
         for command in &self.commands {
             match *command {
-                Command::Clear { .. } | Command::CopyPixels(_) | Command::Accum { .. } | Command::SwapBuffers => {
+                Command::Clear { .. } | Command::CopyPixels(_) | Command::Accum(_) | Command::SwapBuffers => {
                     out.commands.push(*command)
                 }
                 Command::Draw(i) => {

@@ -159,6 +159,26 @@ impl Gl {
         self.touch_state();
     }
 
+    /// `glOrtho` and `glFrustum` once listed: the list gate, then (outside `begin`/`end`)
+    /// `GL_INVALID_VALUE` unless `valid`, then the current matrix times `matrix` of the planes
+    /// (left, right, bottom, top, near, far), made in float as Mesa makes it.
+    fn multiply_projection(
+        &mut self,
+        call: TransformCall,
+        valid: bool,
+        matrix: fn(f32, f32, f32, f32, f32, f32) -> Mat4,
+    ) {
+        let (TransformCall::Ortho(planes) | TransformCall::Frustum(planes)) = call else { return };
+        if self.compiled(|| ListCommand::Transform(call)) || self.reject_inside_begin_end() {
+            return;
+        }
+        if !valid {
+            return self.set_error(GL_INVALID_VALUE);
+        }
+        let [l, r, b, t, n, f] = planes.map(|p| p as f32);
+        self.change_matrix(|top| *top *= matrix(l, r, b, t, n, f));
+    }
+
     /// `glLoadIdentity`.
     pub fn load_identity(&mut self) {
         if self.compiled(|| ListCommand::Transform(TransformCall::LoadIdentity)) {
@@ -303,17 +323,9 @@ impl Gl {
         near: GLdouble,
         far: GLdouble,
     ) {
-        if self.compiled(|| ListCommand::Transform(TransformCall::Ortho([left, right, bottom, top, near, far]))) {
-            return;
-        }
-        if self.reject_inside_begin_end() {
-            return;
-        }
-        if left == right || bottom == top || near == far {
-            return self.set_error(GL_INVALID_VALUE);
-        }
-        let m = ortho_matrix(left as f32, right as f32, bottom as f32, top as f32, near as f32, far as f32);
-        self.change_matrix(|top| *top *= m);
+        let planes = [left, right, bottom, top, near, far];
+        let valid = left != right && bottom != top && near != far;
+        self.multiply_projection(TransformCall::Ortho(planes), valid, ortho_matrix);
     }
 
     /// `glFrustum`: `near <= 0`, `far <= 0`, `near == far`, `left == right` or
@@ -327,17 +339,9 @@ impl Gl {
         near: GLdouble,
         far: GLdouble,
     ) {
-        if self.compiled(|| ListCommand::Transform(TransformCall::Frustum([left, right, bottom, top, near, far]))) {
-            return;
-        }
-        if self.reject_inside_begin_end() {
-            return;
-        }
-        if near <= 0.0 || far <= 0.0 || near == far || left == right || top == bottom {
-            return self.set_error(GL_INVALID_VALUE);
-        }
-        let m = frustum_matrix(left as f32, right as f32, bottom as f32, top as f32, near as f32, far as f32);
-        self.change_matrix(|top| *top *= m);
+        let planes = [left, right, bottom, top, near, far];
+        let valid = near > 0.0 && far > 0.0 && near != far && left != right && top != bottom;
+        self.multiply_projection(TransformCall::Frustum(planes), valid, frustum_matrix);
     }
 
     /// `gluOrtho2D`: `glOrtho(left, right, bottom, top, -1, 1)`.

@@ -70,7 +70,9 @@ pub use eval::{MapSample, MeshJob};
 pub use eval::{MapTarget, Slot};
 pub use fog::Fog;
 pub use fragments::{BufferConfig, FragmentTests, Stencil};
-pub use frame::{Call, Command, DrawState, Frame, GridMesh, MaterialChange, MeshMode, MeshVertices, Primitive};
+pub use frame::{
+    Accumulation, Call, Command, DrawState, Frame, GridMesh, MaterialChange, MeshMode, MeshVertices, Primitive,
+};
 pub use grid_vertices::GridVertices;
 pub use lighting::{Light, Lighting, Material};
 pub use lists::MAX_LIST_NESTING;

@@ -1,8 +1,11 @@
-//! GL 1.x per-vertex lighting (GL 1.1 spec §2.13.1), evaluated on the CPU in `f32`, in eye
-//! coordinates, with GL's defaults. This is the colour each vertex carries to the rasteriser,
-//! and the one feedback and selection report: both rasterisers (`render::assemble`) and
-//! feedback (`feedback_prims`) light their vertices here.
+//! The vertex stage (GL 1.1 spec §2.10–2.13): the modelview and projection transforms, texture
+//! coordinate generation and the texture matrix, and per-vertex lighting (§2.13.1, evaluated
+//! on the CPU in `f32`, in eye coordinates, with GL's defaults). It is the one stage every
+//! consumer of a recorded primitive shares: both rasterisers (`render::assemble` builds its
+//! corners from a [`ShadedVertex`]) and feedback and selection (`feedback_prims` clips
+//! [`ShadedVertex`]es itself, as Mesa's draw module does).
 
+use super::clip::Mix;
 use super::consts::*;
 use super::{DrawState, Lighting, Material, Vertex};
 use glam::{Mat3, Vec3, Vec4, Vec4Swizzles};
@@ -25,6 +28,21 @@ pub(crate) struct ShadedVertex {
     pub back: Vec4,
     pub tex: Vec4,
     pub fog: f32,
+}
+
+/// Clipping interpolates every attribute linearly in clip space (GL 1.1 §2.11); the fog
+/// coordinate too (feedback does not report it).
+impl Mix for ShadedVertex {
+    fn mix(self, other: Self, t: f32) -> Self {
+        Self {
+            clip: self.clip.lerp(other.clip, t),
+            eye: self.eye.lerp(other.eye, t),
+            front: self.front.lerp(other.front, t),
+            back: self.back.lerp(other.back, t),
+            tex: self.tex.lerp(other.tex, t),
+            fog: self.fog + (other.fog - self.fog) * t,
+        }
+    }
 }
 
 impl<'a> Shader<'a> {

@@ -42,7 +42,7 @@ pub(crate) fn needs_cpu(frame: &Frame) -> bool {
     states
         || frame.commands.iter().enumerate().any(|(k, command)| match command {
             Command::Clear { mask, tests, .. } => mask & !GL_ACCUM_BUFFER_BIT != 0 && !plain(tests, &mut buffers),
-            Command::Accum { .. } => true,
+            Command::Accum(_) => true,
             Command::SwapBuffers => k != last,
             Command::Draw(_) | Command::Mesh(_) | Command::CopyPixels(_) => false,
         })

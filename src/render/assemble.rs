@@ -13,7 +13,7 @@ use super::{clip, offset, smooth};
 use crate::gl::consts::*;
 use crate::gl::shade::{ShadedVertex, Shader};
 use crate::gl::types::GLenum;
-use crate::gl::{BoundTexture, Command, DrawState, Fog, FragmentTests, Frame, MeshVertices, Vertex};
+use crate::gl::{Accumulation, BoundTexture, Command, DrawState, Fog, FragmentTests, Frame, MeshVertices, Vertex};
 use glam::Vec4;
 
 /// A vertex ready for the rasteriser: clip position (depth already mapped to [0, 1] through
@@ -126,17 +126,8 @@ pub enum Op {
         /// The scissor box, write masks and colour buffers of the clear.
         tests: FragmentTests,
     },
-    /// `glAccum` (see [`Command::Accum`]).
-    Accum {
-        /// The operation.
-        op: GLenum,
-        /// Its value.
-        value: f32,
-        /// Scissor, colour mask, draw buffers.
-        tests: FragmentTests,
-        /// The colour buffer read.
-        read: u8,
-    },
+    /// `glAccum`.
+    Accum(Accumulation),
     /// The back buffer becomes the front one.
     SwapBuffers,
     /// Draw a batch.
@@ -188,7 +179,7 @@ pub fn assemble_frame(frame: &Frame, gpu_meshes: &[usize]) -> DrawList {
             Command::Clear { mask, color, depth, stencil, accum, tests } => {
                 out.clear(mask, (color, depth, stencil, accum), tests)
             }
-            Command::Accum { op, value, tests, read } => out.list.ops.push(Op::Accum { op, value, tests, read }),
+            Command::Accum(accumulation) => out.list.ops.push(Op::Accum(accumulation)),
             Command::SwapBuffers => out.list.ops.push(Op::SwapBuffers),
             Command::Draw(index) => {
                 if let Some(p) = frame.primitives.get(index) {

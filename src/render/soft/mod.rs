@@ -29,7 +29,7 @@ mod tests;
 use super::assemble::{assemble, viewport_in_target, Batch, DrawList, Op, Topology};
 use super::Image;
 use crate::gl::consts::GL_STENCIL;
-use crate::gl::{FragmentTests, Frame, WindowImage};
+use crate::gl::{Accumulation, FragmentTests, Frame, WindowImage};
 use fragment::{Fragment, Program, TexSlope};
 use framebuffer::{ColorWrite, Framebuffer};
 
@@ -83,7 +83,7 @@ impl Canvas {
                         self.fb.clear_accum(rect, *value);
                     }
                 }
-                Op::Accum { op, value, tests, read } => {
+                Op::Accum(Accumulation { op, value, tests, read }) => {
                     if let Some(rect) = self.scissor_rect(tests) {
                         self.fb.accumulate(rect, (*op, *value), *read, tests);
                     }
