@@ -16,7 +16,7 @@
 //! |---|---|
 //! | [`math`] | Bezier, B-spline and NURBS curves and patches, knots, the flat-slice kernels |
 //! | [`tess`] | grids and trimmed domains into meshes; mesh export |
-//! | [`gl`] | the GL 1.x state machine: errors, immediate mode, matrices, lighting (the per-vertex shading that feedback and both rasterisers share), evaluators, the recorded [`gl::Frame`] |
+//! | [`gl`] | the GL 1.x state machine, one module per attribute group (each with its calls, list record, `glGet` rows and enables): errors, immediate mode, the vertex stage that feedback and both rasterisers share, evaluators, the recorded [`gl::Frame`] |
 //! | [`glu`] | GLU: projections and the NURBS object (sampling, trimming, display modes, callbacks) |
 //! | [`glut`] | GLUT's constants and the state behind its `Gl` methods |
 //! | [`gll`], [`data`] | the textbook's `gll.h` helpers (public API only); demo data (the teapot) |
