@@ -20,7 +20,7 @@ pub trait Element: Copy + 'static {
 macro_rules! element {
     ($($t:ty = $zero:expr),*) => { $(impl Element for $t { const STAND_IN: &'static [Self] = &[$zero]; })* };
 }
-element!(f32 = 0.0, f64 = 0.0, i32 = 0, u32 = 0, u8 = 0, i8 = 0, i16 = 0, u16 = 0);
+element!(f32 = 0.0, f64 = 0.0, i32 = 0, u32 = 0, u8 = 0, i8 = 0, i16 = 0, u16 = 0, *const std::ffi::c_void = std::ptr::null());
 
 /// The slice GL reads at `ptr`: `len` elements, or the stand-in when `len` is `None`.
 ///

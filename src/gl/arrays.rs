@@ -475,7 +475,7 @@ impl Gl {
 
     /// A draw call's error: raised now, and compiled into the list being made so that it is
     /// raised again when the list runs (Mesa's `_mesa_compile_error`).
-    fn draw_error(&mut self, code: GLenum) {
+    pub(super) fn draw_error(&mut self, code: GLenum) {
         if !self.compiled(|| ListCommand::Error(code)) {
             self.set_error(code);
         }

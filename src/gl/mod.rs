@@ -7,6 +7,7 @@
 //! bounds. Nothing here panics on bad input.
 
 mod accum;
+mod array_draws;
 mod arrays;
 mod attrib;
 mod binding;
@@ -118,6 +119,10 @@ impl Tessellator {
         }
     }
 }
+
+/// What gleval implements beyond GL 1.1, each extension once it is whole, and nothing more:
+/// `glWindowPos` (`raster_pos.rs`), `glDrawRangeElements` and the multi-draws (`array_draws.rs`).
+const EXTENSIONS: &str = "GL_ARB_window_pos GL_EXT_draw_range_elements GL_EXT_multi_draw_arrays";
 
 /// A GL context without a GPU: GL state plus the recording of what is drawn.
 ///
@@ -454,8 +459,8 @@ impl Gl {
 
     /// `glGetString`: who implements this GL (`GL_VENDOR` "gleval"), on what (`GL_RENDERER`:
     /// the tessellator in use; wgpu draws what is recorded), the version (`GL_VERSION`: "1.1"
-    /// and ours, for the GL 1.1 subset implemented) and the extensions (`GL_EXTENSIONS`:
-    /// `GL_ARB_window_pos`).
+    /// and ours, for the GL 1.1 subset implemented) and the extensions complete beyond it
+    /// (`GL_EXTENSIONS`: `GL_ARB_window_pos GL_EXT_draw_range_elements GL_EXT_multi_draw_arrays`).
     /// Another name → `GL_INVALID_ENUM` and `None` (C's NULL), as inside `begin`/`end`
     /// (`GL_INVALID_OPERATION`).
     pub fn get_string(&mut self, name: GLenum) -> Option<&'static str> {
@@ -469,8 +474,7 @@ impl Gl {
                 Tessellator::Gpu => "gleval (WGSL tessellator, wgpu rasteriser)",
             }),
             GL_VERSION => Some(concat!("1.1 gleval ", env!("CARGO_PKG_VERSION"))),
-            // What gleval implements beyond GL 1.1, and nothing more.
-            GL_EXTENSIONS => Some("GL_ARB_window_pos"),
+            GL_EXTENSIONS => Some(EXTENSIONS),
             _ => {
                 self.set_error(GL_INVALID_ENUM);
                 None
@@ -511,7 +515,10 @@ mod tests {
         let mut gl = Gl::new(4, 4);
         assert_eq!(gl.get_string(GL_VENDOR), Some("gleval"));
         assert!(gl.get_string(GL_VERSION).is_some_and(|v| v.starts_with("1.1 ")));
-        assert_eq!(gl.get_string(GL_EXTENSIONS), Some("GL_ARB_window_pos"));
+        assert_eq!(
+            gl.get_string(GL_EXTENSIONS),
+            Some("GL_ARB_window_pos GL_EXT_draw_range_elements GL_EXT_multi_draw_arrays")
+        );
         assert_eq!(gl.get_error(), GL_NO_ERROR);
         assert_eq!(gl.get_string(0x1234), None);
         assert_eq!(gl.get_error(), GL_INVALID_ENUM);

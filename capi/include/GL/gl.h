@@ -1250,6 +1250,19 @@ GLAPI void GLAPIENTRY glRasterPos4dv(const GLdouble *v);
 GLAPI void GLAPIENTRY glRasterPos4iv(const GLint *v);
 GLAPI void GLAPIENTRY glRasterPos4sv(const GLshort *v);
 
+/* GL 1.2's glDrawRangeElements (GL_EXT_draw_range_elements) and GL 1.4's multi-draws
+ * (GL_EXT_multi_draw_arrays). */
+#define GL_EXT_draw_range_elements 1
+#define GL_EXT_multi_draw_arrays 1
+#define GL_MAX_ELEMENTS_VERTICES_EXT 0x80E8
+#define GL_MAX_ELEMENTS_INDICES_EXT 0x80E9
+GLAPI void GLAPIENTRY glDrawRangeElements(GLenum mode, GLuint start, GLuint end, GLsizei count, GLenum type, const GLvoid *indices);
+GLAPI void GLAPIENTRY glDrawRangeElementsEXT(GLenum mode, GLuint start, GLuint end, GLsizei count, GLenum type, const GLvoid *indices);
+GLAPI void GLAPIENTRY glMultiDrawArrays(GLenum mode, const GLint *first, const GLsizei *count, GLsizei drawcount);
+GLAPI void GLAPIENTRY glMultiDrawArraysEXT(GLenum mode, const GLint *first, const GLsizei *count, GLsizei primcount);
+GLAPI void GLAPIENTRY glMultiDrawElements(GLenum mode, const GLsizei *count, GLenum type, const GLvoid *const *indices, GLsizei drawcount);
+GLAPI void GLAPIENTRY glMultiDrawElementsEXT(GLenum mode, const GLsizei *count, GLenum type, const void *const *indices, GLsizei primcount);
+
 /* GL_ARB_window_pos (core in OpenGL 1.4): the raster position in window coordinates. */
 #define GL_ARB_window_pos 1
 GLAPI void GLAPIENTRY glWindowPos2f(GLfloat x, GLfloat y);

@@ -1,12 +1,13 @@
 //! Vertex arrays: `gl*Pointer`, `glInterleavedArrays`, client state, `glArrayElement`,
-//! `glDrawArrays`, `glDrawElements`, `glGetPointerv`, edge flags.
+//! `glDrawArrays`, `glDrawElements`, GL 1.2's `glDrawRangeElements` and GL 1.4's multi-draws,
+//! `glGetPointerv`, edge flags.
 //!
 //! GL keeps the caller's pointers and reads through them when it draws (GL 1.1 §2.8): each
 //! pointer becomes a [`RawMemory`] that `Gl` reads, at draw time, exactly the elements the draw
 //! call's arguments name (the caller's promise, as in GL).
 
 use crate::context::with_gl;
-use crate::memory::bytes;
+use crate::memory::{array, bytes};
 use gleval::gl::consts::*;
 use gleval::gl::types::*;
 use gleval::gl::{ClientMemory, ClientPointer, Gl};
@@ -115,6 +116,90 @@ entry! {
         let len = Gl::draw_elements_len(count, type_);
         with_gl(|gl| gl.draw_elements(mode, count, type_, unsafe { bytes(indices, len) }))
     }
+}
+
+entry! {
+    /// `glDrawRangeElements` (GL 1.2): `Gl::draw_range_elements` over the `count` indices at
+    /// `indices` (read now).
+    unsafe fn glDrawRangeElements(mode: GLenum, start: GLuint, end: GLuint, count: GLsizei, type_: GLenum, indices: *const c_void) {
+        unsafe { draw_range_elements(mode, start, end, count, type_, indices) }
+    }
+}
+
+entry! {
+    /// `glDrawRangeElementsEXT` (`GL_EXT_draw_range_elements`): `glDrawRangeElements`.
+    unsafe fn glDrawRangeElementsEXT(mode: GLenum, start: GLuint, end: GLuint, count: GLsizei, type_: GLenum, indices: *const c_void) {
+        unsafe { draw_range_elements(mode, start, end, count, type_, indices) }
+    }
+}
+
+/// # Safety
+/// `indices` is NULL or addresses `count` indices of `type_`.
+unsafe fn draw_range_elements(
+    mode: GLenum,
+    start: GLuint,
+    end: GLuint,
+    count: GLsizei,
+    type_: GLenum,
+    indices: *const c_void,
+) {
+    let len = Gl::draw_elements_len(count, type_);
+    with_gl(|gl| gl.draw_range_elements(mode, start, end, count, type_, unsafe { bytes(indices, len) }))
+}
+
+entry! {
+    /// `glMultiDrawArrays` (GL 1.4): `Gl::multi_draw_arrays` over the first `primcount` firsts
+    /// and counts.
+    unsafe fn glMultiDrawArrays(mode: GLenum, first: *const GLint, count: *const GLsizei, primcount: GLsizei) {
+        unsafe { multi_draw_arrays(mode, first, count, primcount) }
+    }
+}
+
+entry! {
+    /// `glMultiDrawArraysEXT` (`GL_EXT_multi_draw_arrays`): `glMultiDrawArrays`.
+    unsafe fn glMultiDrawArraysEXT(mode: GLenum, first: *const GLint, count: *const GLsizei, primcount: GLsizei) {
+        unsafe { multi_draw_arrays(mode, first, count, primcount) }
+    }
+}
+
+/// # Safety
+/// `first` and `count` are NULL or address `primcount` values each.
+unsafe fn multi_draw_arrays(mode: GLenum, first: *const GLint, count: *const GLsizei, primcount: GLsizei) {
+    let n = usize::try_from(primcount).ok();
+    let (first, count) = unsafe { (array(first, n), array(count, n)) };
+    with_gl(|gl| gl.multi_draw_arrays(mode, first, count, primcount))
+}
+
+entry! {
+    /// `glMultiDrawElements` (GL 1.4): `Gl::multi_draw_elements`, each index array read now
+    /// for its count.
+    unsafe fn glMultiDrawElements(mode: GLenum, count: *const GLsizei, type_: GLenum, indices: *const *const c_void, primcount: GLsizei) {
+        unsafe { multi_draw_elements(mode, count, type_, indices, primcount) }
+    }
+}
+
+entry! {
+    /// `glMultiDrawElementsEXT` (`GL_EXT_multi_draw_arrays`): `glMultiDrawElements`.
+    unsafe fn glMultiDrawElementsEXT(mode: GLenum, count: *const GLsizei, type_: GLenum, indices: *const *const c_void, primcount: GLsizei) {
+        unsafe { multi_draw_elements(mode, count, type_, indices, primcount) }
+    }
+}
+
+/// # Safety
+/// `count` and `indices` are NULL or address `primcount` values each, and each `indices[i]`
+/// NULL or `count[i]` indices of `type_`.
+unsafe fn multi_draw_elements(
+    mode: GLenum,
+    count: *const GLsizei,
+    type_: GLenum,
+    indices: *const *const c_void,
+    primcount: GLsizei,
+) {
+    let n = usize::try_from(primcount).ok();
+    let (count, pointers) = unsafe { (array(count, n), array(indices, n)) };
+    let indices: Vec<&[u8]> =
+        pointers.iter().zip(count).map(|(&p, &c)| unsafe { bytes(p, Gl::draw_elements_len(c, type_)) }).collect();
+    with_gl(|gl| gl.multi_draw_elements(mode, count, type_, &indices, primcount))
 }
 
 entry! {

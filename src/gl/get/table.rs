@@ -16,14 +16,15 @@ use super::super::types::*;
 /// Every row, group by group in the order of GL 1.1's state tables.
 pub(crate) fn rows() -> impl Iterator<Item = &'static StateVar> {
     use super::super::{
-        accum, arrays, attrib, clip, color_buffer, color_index, current, depth, eval, feedback, fog, fragments, hint,
-        lighting, line, lists, matrix, pixel_transfer, pixels, point, polygon, raster_pos, scissor, select, stencil,
-        texture, viewport,
+        accum, array_draws, arrays, attrib, clip, color_buffer, color_index, current, depth, eval, feedback, fog,
+        fragments, hint, lighting, line, lists, matrix, pixel_transfer, pixels, point, polygon, raster_pos, scissor,
+        select, stencil, texture, viewport,
     };
     [
         current::GET_ROWS,
         raster_pos::GET_ROWS,
         arrays::GET_ROWS,
+        array_draws::GET_ROWS,
         matrix::GET_ROWS,
         viewport::GET_ROWS,
         clip::GET_ROWS,

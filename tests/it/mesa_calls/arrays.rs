@@ -117,6 +117,13 @@ impl Default for Harness {
 const FEEDBACK_SIZE: i32 = 1 << 22;
 
 impl Harness {
+    /// `n` GLints of client memory from byte `offset` (C's `const GLint *`).
+    fn ints(&self, offset: i32, n: usize) -> Vec<i32> {
+        let bytes = self.mem.to_vec::<u8>();
+        let from = usize::try_from(offset).unwrap_or(0);
+        bytes[from..].chunks_exact(4).take(n).map(|b| i32::from_ne_bytes([b[0], b[1], b[2], b[3]])).collect()
+    }
+
     fn at(&self, offset: i32) -> Option<ClientPointer> {
         usize::try_from(offset).ok().map(|o| self.mem.at_byte(o))
     }
@@ -192,6 +199,27 @@ impl Harness {
                 let bytes = self.mem.to_vec::<u8>();
                 let indices = usize::try_from(offset).map_or(&[][..], |o| &bytes[o..]);
                 gl.draw_elements(mode, count, type_, indices);
+            }
+            "draw_range_elements" => {
+                let (mode, start, end, count, type_, offset) = (a.e(), a.int(), a.int(), a.int(), a.e(), a.int());
+                let bytes = self.mem.to_vec::<u8>();
+                let indices = usize::try_from(offset).map_or(&[][..], |o| &bytes[o..]);
+                gl.draw_range_elements(mode, start as u32, end as u32, count, type_, indices);
+            }
+            "multi_draw_arrays" => {
+                let (mode, firsts, counts, primcount) = (a.e(), a.int(), a.int(), a.int());
+                let n = usize::try_from(primcount).unwrap_or(0);
+                let (first, count) = (self.ints(firsts, n), self.ints(counts, n));
+                gl.multi_draw_arrays(mode, &first, &count, primcount);
+            }
+            "multi_draw_elements" => {
+                let (mode, counts, type_, primcount) = (a.e(), a.int(), a.e(), a.int());
+                let n = usize::try_from(primcount).unwrap_or(0);
+                let count = self.ints(counts, n);
+                let bytes = self.mem.to_vec::<u8>();
+                let offsets: Vec<usize> = (0..n.min(8)).map(|_| a.int() as usize).collect();
+                let indices: Vec<&[u8]> = offsets.iter().map(|&o| &bytes[o..]).collect();
+                gl.multi_draw_elements(mode, &count, type_, &indices, primcount);
             }
             "get_pointerv" => {
                 let pname = a.e();

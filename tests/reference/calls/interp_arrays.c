@@ -101,6 +101,30 @@ static int run_arrays_call(const char *c)
         GLsizei count = arg_int();
         GLenum type = arg_enum();
         glDrawElements(mode, count, type, mem_at(arg_int()));
+    } else if (!strcmp(c, "draw_range_elements")) {
+        GLenum mode = arg_enum();
+        GLuint start = (GLuint)arg_int();
+        GLuint end = (GLuint)arg_int();
+        GLsizei count = arg_int();
+        GLenum type = arg_enum();
+        glDrawRangeElements(mode, start, end, count, type, mem_at(arg_int()));
+    } else if (!strcmp(c, "multi_draw_arrays")) {
+        /* multi_draw_arrays MODE FIRSTS COUNTS PRIMCOUNT: the firsts and counts are GLint
+         * arrays in client memory at those offsets. */
+        GLenum mode = arg_enum();
+        const GLint *first = mem_at(arg_int());
+        const GLsizei *count = mem_at(arg_int());
+        glMultiDrawArrays(mode, first, count, arg_int());
+    } else if (!strcmp(c, "multi_draw_elements")) {
+        /* multi_draw_elements MODE COUNTS TYPE PRIMCOUNT OFFSET...: one index array offset
+         * each (up to 8). */
+        GLenum mode = arg_enum();
+        const GLsizei *count = mem_at(arg_int());
+        GLenum type = arg_enum();
+        GLsizei n = arg_int();
+        const GLvoid *indices[8] = {0};
+        for (GLsizei i = 0; i < n && i < 8; i++) indices[i] = mem_at(arg_int());
+        glMultiDrawElements(mode, count, type, indices, n);
     } else if (!strcmp(c, "get_pointerv")) {
         GLvoid *p = (GLvoid *)&p;   /* not NULL: shows whether GL wrote it */
         glGetPointerv(arg_enum(), &p);
