@@ -226,6 +226,32 @@ impl Gl {
         self.mult_matrixf(&m);
     }
 
+    /// `glLoadTransposeMatrixf` (GL 1.3, `GL_ARB_transpose_matrix`): [`Gl::load_matrixf`] of
+    /// `m` given row by row. Mesa's `_mesa_LoadTransposeMatrixf` transposes first, so a display
+    /// list holds the column-major matrix and a short `m` is `glLoadMatrixf`'s error.
+    pub fn load_transpose_matrixf(&mut self, m: &[GLfloat]) {
+        self.load_matrixf(&transposed(m));
+    }
+
+    /// `glMultTransposeMatrixf` (GL 1.3): [`Gl::mult_matrixf`] of `m` given row by row.
+    pub fn mult_transpose_matrixf(&mut self, m: &[GLfloat]) {
+        self.mult_matrixf(&transposed(m));
+    }
+
+    /// `glLoadTransposeMatrixd` (GL 1.3): as [`Gl::load_transpose_matrixf`], the values cast to
+    /// float (Mesa's `_math_transposefd`).
+    pub fn load_transpose_matrixd(&mut self, m: &[GLdouble]) {
+        let m: Vec<GLfloat> = m.iter().take(16).map(|&v| v as GLfloat).collect();
+        self.load_transpose_matrixf(&m);
+    }
+
+    /// `glMultTransposeMatrixd` (GL 1.3): as [`Gl::mult_transpose_matrixf`], the values cast to
+    /// float.
+    pub fn mult_transpose_matrixd(&mut self, m: &[GLdouble]) {
+        let m: Vec<GLfloat> = m.iter().take(16).map(|&v| v as GLfloat).collect();
+        self.mult_transpose_matrixf(&m);
+    }
+
     /// `glGetFloatv(GL_MODELVIEW_MATRIX)` for GLU, which loads its sampling matrices so
     /// (`glrenderer.cc`). Unlike `glGet`, it records no error inside `begin`/`end`.
     pub(crate) fn modelview_matrix(&self) -> Mat4 {
@@ -397,6 +423,15 @@ impl Gl {
     }
 }
 
+/// A 4 × 4 matrix given row by row, column by column; a slice of another length as it is (the
+/// load or multiply then raises its error).
+fn transposed(m: &[GLfloat]) -> Vec<GLfloat> {
+    if m.len() < 16 {
+        return m.to_vec();
+    }
+    (0..16).map(|i| m[(i % 4) * 4 + i / 4]).collect()
+}
+
 /// Writes a matrix as the answer, column by column.
 fn put_matrix(o: &mut [f64], m: glam::Mat4) {
     put(o, &m.to_cols_array());
@@ -407,6 +442,16 @@ pub(crate) static GET_ROWS: &[StateVar] = &[
     row(GL_MODELVIEW_MATRIX, 16, Kind::Normalized, |gl, o| put_matrix(o, gl.server.matrices.modelview())),
     row(GL_PROJECTION_MATRIX, 16, Kind::Normalized, |gl, o| put_matrix(o, gl.server.matrices.projection())),
     row(GL_TEXTURE_MATRIX, 16, Kind::Normalized, |gl, o| put_matrix(o, gl.server.matrices.texture())),
+    // GL 1.3's transposed forms (Mesa's `TYPE_MATRIX_T`: converted as the matrices are).
+    row(GL_TRANSPOSE_MODELVIEW_MATRIX, 16, Kind::Normalized, |gl, o| {
+        put_matrix(o, gl.server.matrices.modelview().transpose())
+    }),
+    row(GL_TRANSPOSE_PROJECTION_MATRIX, 16, Kind::Normalized, |gl, o| {
+        put_matrix(o, gl.server.matrices.projection().transpose())
+    }),
+    row(GL_TRANSPOSE_TEXTURE_MATRIX, 16, Kind::Normalized, |gl, o| {
+        put_matrix(o, gl.server.matrices.texture().transpose())
+    }),
     row(GL_MODELVIEW_STACK_DEPTH, 1, Kind::Int, |gl, o| o[0] = gl.server.matrices.depth(0) as f64),
     row(GL_PROJECTION_STACK_DEPTH, 1, Kind::Int, |gl, o| o[0] = gl.server.matrices.depth(1) as f64),
     row(GL_TEXTURE_STACK_DEPTH, 1, Kind::Int, |gl, o| o[0] = gl.server.matrices.depth(2) as f64),
@@ -421,6 +466,19 @@ pub(crate) static GET_ROWS: &[StateVar] = &[
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_transpose_matrix_is_given_row_by_row() {
+        let mut gl = Gl::new(4, 4);
+        let rows: Vec<f32> = (1..=16).map(|v| v as f32).collect();
+        gl.load_transpose_matrixf(&rows);
+        let (mut m, mut t) = ([0.0f32; 16], [0.0f32; 16]);
+        gl.get_floatv(GL_MODELVIEW_MATRIX, &mut m);
+        gl.get_floatv(GL_TRANSPOSE_MODELVIEW_MATRIX, &mut t);
+        assert_eq!((m[1], m[4], t), (5.0, 2.0, std::array::from_fn(|i| rows[i])));
+        gl.mult_transpose_matrixd(&[1.0; 15]);
+        assert_eq!(gl.get_error(), GL_INVALID_VALUE, "a short matrix is glMultMatrix's error");
+    }
 
     #[test]
     fn ortho_maps_box_to_ndc() {

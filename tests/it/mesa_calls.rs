@@ -467,6 +467,22 @@ impl Runner {
             "alpha_func" => gl.alpha_func(a.e(), a.f()),
             "fogi" => gl.fogi(a.e(), a.e() as i32),
             "fogf" => gl.fogf(a.e(), a.f()),
+            "load_transpose_matrixf" | "mult_transpose_matrixf" => {
+                let m: Vec<f32> = (0..16).map(|_| a.d() as f32).collect();
+                if cmd.starts_with('l') {
+                    gl.load_transpose_matrixf(&m)
+                } else {
+                    gl.mult_transpose_matrixf(&m)
+                }
+            }
+            "load_transpose_matrixd" | "mult_transpose_matrixd" => {
+                let m: Vec<f64> = (0..16).map(|_| a.d()).collect();
+                if cmd.starts_with('l') {
+                    gl.load_transpose_matrixd(&m)
+                } else {
+                    gl.mult_transpose_matrixd(&m)
+                }
+            }
             "translatef" => gl.translatef(a.f(), a.f(), a.f()),
             "scalef" => gl.scalef(a.f(), a.f(), a.f()),
             "rotatef" => gl.rotatef(a.f(), a.f(), a.f(), a.f()),
@@ -510,6 +526,7 @@ impl Runner {
                 gl.get_clip_plane(a.e(), &mut eq);
                 values.extend(eq.iter().map(|c| c.to_string()));
             }
+            "matrix_mode" => gl.matrix_mode(a.e()),
             "load_identity" => gl.load_identity(),
             "materialf" => gl.material_f(a.e(), a.e(), a.f()),
             "push_attrib" => gl.push_attrib(a.e()),

@@ -1306,6 +1306,16 @@ GLAPI void GLAPIENTRY glRectsv(const GLshort *v1, const GLshort *v2);
 GLAPI void GLAPIENTRY glHint(GLenum target, GLenum mode);
 GLAPI void GLAPIENTRY glLoadMatrixd(const GLdouble *m);
 GLAPI void GLAPIENTRY glMultMatrixd(const GLdouble *m);
+/* GL 1.3's transpose matrices, by their core and GL_ARB_transpose_matrix names (the extension
+ * is not claimed: gleval has no colour matrix, so GL_TRANSPOSE_COLOR_MATRIX is unanswered). */
+GLAPI void GLAPIENTRY glLoadTransposeMatrixf(const GLfloat *m);
+GLAPI void GLAPIENTRY glLoadTransposeMatrixd(const GLdouble *m);
+GLAPI void GLAPIENTRY glMultTransposeMatrixf(const GLfloat *m);
+GLAPI void GLAPIENTRY glMultTransposeMatrixd(const GLdouble *m);
+GLAPI void GLAPIENTRY glLoadTransposeMatrixfARB(const GLfloat *m);
+GLAPI void GLAPIENTRY glLoadTransposeMatrixdARB(const GLdouble *m);
+GLAPI void GLAPIENTRY glMultTransposeMatrixfARB(const GLfloat *m);
+GLAPI void GLAPIENTRY glMultTransposeMatrixdARB(const GLdouble *m);
 GLAPI void GLAPIENTRY glGetDoublev(GLenum pname, GLdouble *params);
 GLAPI void GLAPIENTRY glGetBooleanv(GLenum pname, GLboolean *params);
 

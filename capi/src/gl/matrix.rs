@@ -22,4 +22,12 @@ vector! {
     glMultMatrixf(GLfloat; 16) => mult_matrixf;
     glLoadMatrixd(GLdouble; 16) => load_matrixd;
     glMultMatrixd(GLdouble; 16) => mult_matrixd;
+    glLoadTransposeMatrixf(GLfloat; 16) => load_transpose_matrixf;
+    glLoadTransposeMatrixd(GLdouble; 16) => load_transpose_matrixd;
+    glMultTransposeMatrixf(GLfloat; 16) => mult_transpose_matrixf;
+    glMultTransposeMatrixd(GLdouble; 16) => mult_transpose_matrixd;
+    glLoadTransposeMatrixfARB(GLfloat; 16) => load_transpose_matrixf;
+    glLoadTransposeMatrixdARB(GLdouble; 16) => load_transpose_matrixd;
+    glMultTransposeMatrixfARB(GLfloat; 16) => mult_transpose_matrixf;
+    glMultTransposeMatrixdARB(GLdouble; 16) => mult_transpose_matrixd;
 }

@@ -689,6 +689,14 @@ static void run_call(const char *c)
         GLdouble eq[4] = { 0, 0, 0, 0 };
         glGetClipPlane(arg_enum(), eq);
         for (int i = 0; i < 4; i++) val(" %.9g", eq[i]);
+    } else if (!strncmp(c, "load_transpose_matrix", 21) || !strncmp(c, "mult_transpose_matrix", 21)) {
+        /* load_transpose_matrixf|d, mult_transpose_matrixf|d: 16 values, row by row. */
+        GLfloat mf[16];
+        GLdouble md[16];
+        for (int i = 0; i < 16; i++) mf[i] = (GLfloat)(md[i] = arg_double());
+        int dbl = c[21] == 'd';
+        if (c[0] == 'l') { if (dbl) glLoadTransposeMatrixd(md); else glLoadTransposeMatrixf(mf); }
+        else { if (dbl) glMultTransposeMatrixd(md); else glMultTransposeMatrixf(mf); }
     } else if (!strcmp(c, "translatef")) {
         GLfloat x = arg_float(), y = arg_float();
         glTranslatef(x, y, arg_float());
@@ -698,6 +706,8 @@ static void run_call(const char *c)
     } else if (!strcmp(c, "scalef")) {
         GLfloat x = arg_float(), y = arg_float();
         glScalef(x, y, arg_float());
+    } else if (!strcmp(c, "matrix_mode")) {
+        glMatrixMode(arg_enum());
     } else if (!strcmp(c, "load_identity")) {
         glLoadIdentity();
     } else if (!strcmp(c, "materialf")) {
