@@ -47,7 +47,7 @@ impl Gl {
     /// mode (`GL_INVALID_ENUM`), a negative count (`GL_INVALID_VALUE`); `first` or `count`
     /// shorter than `primcount` → `GL_INVALID_VALUE`.
     pub fn multi_draw_arrays(&mut self, mode: GLenum, first: &[GLint], count: &[GLsizei], primcount: GLsizei) {
-        let Some(n) = self.multi_draw_count(mode, primcount, |_| true) else { return };
+        let Some(n) = self.multi_draw_count(mode, primcount, true) else { return };
         let (Some(first), Some(count)) = (first.get(..n), count.get(..n)) else {
             return self.set_error(GL_INVALID_VALUE);
         };
@@ -71,8 +71,8 @@ impl Gl {
         indices: &[&[T]],
         primcount: GLsizei,
     ) {
-        let index_type = |t| matches!(t, GL_UNSIGNED_BYTE | GL_UNSIGNED_SHORT | GL_UNSIGNED_INT);
-        let Some(n) = self.multi_draw_count(mode, primcount, |_| index_type(type_)) else { return };
+        let index_type = matches!(type_, GL_UNSIGNED_BYTE | GL_UNSIGNED_SHORT | GL_UNSIGNED_INT);
+        let Some(n) = self.multi_draw_count(mode, primcount, index_type) else { return };
         let (Some(count), Some(indices)) = (count.get(..n), indices.get(..n)) else {
             return self.set_error(GL_INVALID_VALUE);
         };
@@ -85,13 +85,14 @@ impl Gl {
     }
 
     /// The multi-draws' first checks in Mesa's order: inside `begin`/`end`, the primitive
-    /// count, the mode and what else `known` says of it; the count as a length when they pass.
-    fn multi_draw_count(&mut self, mode: GLenum, primcount: GLsizei, known: impl Fn(GLenum) -> bool) -> Option<usize> {
+    /// count, then the mode and the index type (`type_known`: `GL_INVALID_ENUM` beside the
+    /// mode); the count as a length when they pass.
+    fn multi_draw_count(&mut self, mode: GLenum, primcount: GLsizei, type_known: bool) -> Option<usize> {
         let error = if self.inside_begin_end() {
             GL_INVALID_OPERATION
         } else if primcount < 0 {
             GL_INVALID_VALUE
-        } else if mode > GL_POLYGON || !known(mode) {
+        } else if mode > GL_POLYGON || !type_known {
             GL_INVALID_ENUM
         } else {
             return usize::try_from(primcount).ok();

@@ -216,14 +216,12 @@ impl Gl {
 
     /// `glLoadMatrixd`: as [`Gl::load_matrixf`], the values cast to float (Mesa keeps floats).
     pub fn load_matrixd(&mut self, m: &[GLdouble]) {
-        let m: Vec<GLfloat> = m.iter().take(16).map(|&v| v as GLfloat).collect();
-        self.load_matrixf(&m);
+        self.load_matrixf(&as_floats(m));
     }
 
     /// `glMultMatrixd`: as [`Gl::mult_matrixf`], the values cast to float.
     pub fn mult_matrixd(&mut self, m: &[GLdouble]) {
-        let m: Vec<GLfloat> = m.iter().take(16).map(|&v| v as GLfloat).collect();
-        self.mult_matrixf(&m);
+        self.mult_matrixf(&as_floats(m));
     }
 
     /// `glLoadTransposeMatrixf` (GL 1.3, `GL_ARB_transpose_matrix`): [`Gl::load_matrixf`] of
@@ -241,15 +239,13 @@ impl Gl {
     /// `glLoadTransposeMatrixd` (GL 1.3): as [`Gl::load_transpose_matrixf`], the values cast to
     /// float (Mesa's `_math_transposefd`).
     pub fn load_transpose_matrixd(&mut self, m: &[GLdouble]) {
-        let m: Vec<GLfloat> = m.iter().take(16).map(|&v| v as GLfloat).collect();
-        self.load_transpose_matrixf(&m);
+        self.load_transpose_matrixf(&as_floats(m));
     }
 
     /// `glMultTransposeMatrixd` (GL 1.3): as [`Gl::mult_transpose_matrixf`], the values cast to
     /// float.
     pub fn mult_transpose_matrixd(&mut self, m: &[GLdouble]) {
-        let m: Vec<GLfloat> = m.iter().take(16).map(|&v| v as GLfloat).collect();
-        self.mult_transpose_matrixf(&m);
+        self.mult_transpose_matrixf(&as_floats(m));
     }
 
     /// `glGetFloatv(GL_MODELVIEW_MATRIX)` for GLU, which loads its sampling matrices so
@@ -421,6 +417,11 @@ impl Gl {
         self.mult_matrixf(&m);
         self.translated(-eye_x, -eye_y, -eye_z);
     }
+}
+
+/// A matrix's first 16 doubles cast to float, as the `d` forms pass them to the `f` ones.
+fn as_floats(m: &[GLdouble]) -> Vec<GLfloat> {
+    m.iter().take(16).map(|&v| v as GLfloat).collect()
 }
 
 /// A 4 × 4 matrix given row by row, column by column; a slice of another length as it is (the
