@@ -254,8 +254,15 @@ static void fragment_call(void) {
     static const GLenum ops[] = {GL_KEEP, GL_ZERO, GL_REPLACE, GL_INCR, GL_DECR, GL_INVERT, 0x8507, 0x8508, 0x1234};
     static const GLenum accums[] = {GL_ACCUM, GL_LOAD, GL_ADD, GL_MULT, GL_RETURN, 0x1234};
     static const GLenum buffers[] = {GL_NONE, GL_FRONT, GL_BACK, GL_FRONT_AND_BACK, GL_RIGHT, GL_AUX0, 0x1234};
-    static const GLenum fcaps[] = {GL_STENCIL_TEST, GL_SCISSOR_TEST, GL_COLOR_LOGIC_OP, GL_POLYGON_SMOOTH};
-    switch (pick(8)) {
+    static const GLenum fcaps[] = {GL_STENCIL_TEST, GL_SCISSOR_TEST, GL_COLOR_LOGIC_OP, GL_POLYGON_SMOOTH, GL_BLEND};
+    static const GLenum factors[] = {GL_ZERO, GL_ONE, GL_SRC_COLOR, GL_DST_ALPHA, GL_SRC_ALPHA_SATURATE,
+        GL_CONSTANT_COLOR, GL_ONE_MINUS_CONSTANT_ALPHA, 0x8005, 0x1234};
+    static const GLenum equations[] = {GL_FUNC_ADD, GL_FUNC_SUBTRACT, GL_FUNC_REVERSE_SUBTRACT, GL_MIN,
+        GL_MAX, GL_LOGIC_OP, 0x1234};
+    switch (pick(9)) {
+    case 7: glBlendFuncSeparate(ANY(factors), ANY(factors), ANY(factors), ANY(factors));
+            glBlendEquationSeparate(ANY(equations), ANY(equations)); glBlendEquation(ANY(equations));
+            glBlendColor(f(), f(), f(), f()); break;
     case 0: glStencilFunc(ANY(funcs), ANY(grids), (GLuint)ANY(grids)); glStencilOp(ANY(ops), ANY(ops), ANY(ops)); break;
     case 1: glStencilMask((GLuint)ANY(grids)); glClearStencil(ANY(grids)); glClear(GL_STENCIL_BUFFER_BIT); break;
     case 2: glAccum(ANY(accums), f()); glClearAccum(f(), f(), f(), f()); break;

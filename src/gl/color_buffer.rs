@@ -1,13 +1,14 @@
 //! The colour buffer attribute group (GL 1.1 spec §4.1.3 the alpha test, §4.1.6 blending,
 //! §4.1.7 the logic op, §4.2.1 the draw buffer, §4.2.2 the colour mask, §4.2.3 the clear
 //! colour; table 6.13; Mesa `main/blend.c`, `main/logicop.c`, `main/clear.c`): `glAlphaFunc`,
-//! `glBlendFunc`, `glLogicOp`, `glColorMask`, `glClearColor`, in one struct as
+//! `glLogicOp`, `glColorMask`, `glClearColor` (blending is `blend.rs`'s), in one struct as
 //! `GL_COLOR_BUFFER_BIT` saves it, with the group's display-list record, its `glGet` rows and
 //! its enables. `glDrawBuffer` sets the group's draw buffer from `draw_buffer.rs`, which names
 //! the buffers; the colour-index mask and clear index are `color_index.rs`'s. A recorded
 //! primitive's [`DrawState`](super::DrawState) carries what is enabled, and both rasterisers
 //! apply it.
 
+use super::blend::{Blend, BlendCall};
 use super::consts::*;
 use super::lists::ListCommand;
 use super::state_var::{put, put_enum, row, Kind, StateVar};
@@ -19,8 +20,8 @@ use super::Gl;
 pub(crate) struct ColorBuffer {
     /// `glAlphaFunc`: the comparison and the reference, clamped to [0, 1].
     pub alpha: (GLenum, f32),
-    /// `glBlendFunc`: the source and destination factors.
-    pub blend: [GLenum; 2],
+    /// Blending's factors, equations and colour.
+    pub blend: Blend,
     /// `glLogicOp`: `GL_CLEAR` .. `GL_SET`.
     pub logic_op: GLenum,
     /// `glColorMask`: red, green, blue, alpha.
@@ -35,7 +36,7 @@ impl Default for ColorBuffer {
     fn default() -> Self {
         Self {
             alpha: (GL_ALWAYS, 0.0),
-            blend: [GL_ONE, GL_ZERO],
+            blend: Blend::default(),
             logic_op: GL_COPY,
             color_write: [true; 4],
             draw_buffer: GL_FRONT,
@@ -48,22 +49,22 @@ impl Default for ColorBuffer {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) enum ColorBufferCall {
     AlphaFunc(GLenum, GLclampf),
-    BlendFunc(GLenum, GLenum),
+    Blend(BlendCall),
     LogicOp(GLenum),
     ColorMask([GLboolean; 4]),
     DrawBuffer(GLenum),
     ClearColor([GLclampf; 4]),
 }
 
+impl From<BlendCall> for ColorBufferCall {
+    fn from(call: BlendCall) -> Self {
+        Self::Blend(call)
+    }
+}
+
 /// The enables GL files under the group (GL 1.1 table 6.13).
 pub(crate) const COLOR_BUFFER_ENABLES: &[GLenum] =
     &[GL_ALPHA_TEST, GL_BLEND, GL_DITHER, GL_COLOR_LOGIC_OP, GL_INDEX_LOGIC_OP];
-
-/// Whether `factor` is a blend factor GL takes (GL 1.1 table 4.1 and 4.2, with GL 1.4's
-/// source colour factors, as Mesa accepts them).
-fn blend_factor(factor: GLenum) -> bool {
-    matches!(factor, GL_ZERO | GL_ONE) || (GL_SRC_COLOR..=GL_SRC_ALPHA_SATURATE).contains(&factor)
-}
 
 impl Gl {
     /// Records a colour buffer call in the list being compiled, or refuses it inside
@@ -82,19 +83,6 @@ impl Gl {
             return self.set_error(GL_INVALID_ENUM);
         }
         self.server.color_buffer.alpha = (func, reference.clamp(0.0, 1.0));
-        self.touch_state();
-    }
-
-    /// `glBlendFunc`: the source and destination factors used while `GL_BLEND` is enabled.
-    /// A factor GL does not know → `GL_INVALID_ENUM`.
-    pub fn blend_func(&mut self, sfactor: GLenum, dfactor: GLenum) {
-        if self.compiled_color_buffer_call(ColorBufferCall::BlendFunc(sfactor, dfactor)) {
-            return;
-        }
-        if !blend_factor(sfactor) || !blend_factor(dfactor) {
-            return self.set_error(GL_INVALID_ENUM);
-        }
-        self.server.color_buffer.blend = [sfactor, dfactor];
         self.touch_state();
     }
 
@@ -133,17 +121,12 @@ impl Gl {
         use ColorBufferCall as C;
         match call {
             C::AlphaFunc(func, reference) => self.alpha_func(func, reference),
-            C::BlendFunc(sfactor, dfactor) => self.blend_func(sfactor, dfactor),
+            C::Blend(call) => self.replay_blend_call(call),
             C::LogicOp(opcode) => self.logic_op(opcode),
             C::ColorMask([r, g, b, a]) => self.color_mask(r, g, b, a),
             C::DrawBuffer(mode) => self.draw_buffer(mode),
             C::ClearColor([r, g, b, a]) => self.clear_color(r, g, b, a),
         }
-    }
-
-    /// The blend factors while `GL_BLEND` is on.
-    pub(crate) fn enabled_blend(&self) -> Option<[GLenum; 2]> {
-        self.capability(GL_BLEND).then_some(self.server.color_buffer.blend)
     }
 
     /// The alpha test while `GL_ALPHA_TEST` is on.
@@ -156,8 +139,6 @@ impl Gl {
 pub(crate) static GET_ROWS: &[StateVar] = &[
     row(GL_ALPHA_TEST_FUNC, 1, Kind::Int, |gl, o| put_enum(o, gl.server.color_buffer.alpha.0)),
     row(GL_ALPHA_TEST_REF, 1, Kind::Normalized, |gl, o| o[0] = gl.server.color_buffer.alpha.1.into()),
-    row(GL_BLEND_SRC, 1, Kind::Int, |gl, o| put_enum(o, gl.server.color_buffer.blend[0])),
-    row(GL_BLEND_DST, 1, Kind::Int, |gl, o| put_enum(o, gl.server.color_buffer.blend[1])),
     row(GL_LOGIC_OP_MODE, 1, Kind::Int, |gl, o| put_enum(o, gl.server.color_buffer.logic_op)),
     row(GL_DRAW_BUFFER, 1, Kind::Int, |gl, o| put_enum(o, gl.server.color_buffer.draw_buffer)),
     row(GL_COLOR_WRITEMASK, 4, Kind::Bool, |gl, o| put(o, &gl.server.color_buffer.color_write.map(u8::from))),
@@ -187,7 +168,8 @@ mod tests {
         gl.logic_op(GL_XOR);
         gl.color_mask(GL_TRUE, GL_FALSE, GL_TRUE, GL_FALSE);
         gl.clear_color(2.0, 0.5, -1.0, 1.0);
-        assert_eq!(gl.enabled_blend(), Some([GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA]));
+        let factors = gl.enabled_blend().map(|b| b.factors);
+        assert_eq!(factors, Some([GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA]));
         let (mut mask, mut clear) = ([0; 4], [0.0; 4]);
         gl.get_integerv(GL_COLOR_WRITEMASK, &mut mask);
         gl.get_floatv(GL_COLOR_CLEAR_VALUE, &mut clear);

@@ -71,8 +71,8 @@ pub struct DrawState {
     pub depth_test: Option<GLenum>,
     /// The texture of unit 0 when a target is enabled and its texture complete.
     pub texture: Option<BoundTexture>,
-    /// Source and destination blend factors when `GL_BLEND` is enabled.
-    pub blend: Option<[GLenum; 2]>,
+    /// Blending when `GL_BLEND` is enabled.
+    pub blend: Option<super::Blend>,
     /// The alpha test's function and reference when `GL_ALPHA_TEST` is enabled.
     pub alpha_test: Option<(GLenum, f32)>,
     /// Fog when `GL_FOG` is enabled.

@@ -12,6 +12,7 @@ mod arrays;
 mod attrib;
 mod binding;
 mod bitmap;
+mod blend;
 mod clear;
 mod client_memory;
 pub(crate) mod clip;
@@ -65,6 +66,7 @@ mod viewport;
 mod window_read;
 
 pub use arrays::PointerArg;
+pub use blend::Blend;
 pub use client_memory::{ArrayElement, ClientArray, ClientMemory, ClientPointer};
 pub use copy_pixels::{CopyFragment, PixelCopy};
 pub use eval::{MapSample, MeshJob};
@@ -121,8 +123,10 @@ impl Tessellator {
 }
 
 /// What gleval implements beyond GL 1.1, each extension once it is whole, and nothing more:
-/// `glWindowPos` (`raster_pos.rs`), `glDrawRangeElements` and the multi-draws (`array_draws.rs`).
-const EXTENSIONS: &str = "GL_ARB_window_pos GL_EXT_draw_range_elements GL_EXT_multi_draw_arrays";
+/// `glWindowPos` (`raster_pos.rs`), blending's constant colour, equations and separate factors
+/// (`blend.rs`), `glDrawRangeElements` and the multi-draws (`array_draws.rs`).
+const EXTENSIONS: &str =
+    "GL_ARB_window_pos GL_EXT_blend_color GL_EXT_blend_equation_separate GL_EXT_blend_func_separate GL_EXT_blend_minmax GL_EXT_blend_subtract GL_EXT_draw_range_elements GL_EXT_multi_draw_arrays";
 
 /// A GL context without a GPU: GL state plus the recording of what is drawn.
 ///
@@ -460,7 +464,8 @@ impl Gl {
     /// `glGetString`: who implements this GL (`GL_VENDOR` "gleval"), on what (`GL_RENDERER`:
     /// the tessellator in use; wgpu draws what is recorded), the version (`GL_VERSION`: "1.1"
     /// and ours, for the GL 1.1 subset implemented) and the extensions complete beyond it
-    /// (`GL_EXTENSIONS`: `GL_ARB_window_pos GL_EXT_draw_range_elements GL_EXT_multi_draw_arrays`).
+    /// (`GL_EXTENSIONS`: `GL_ARB_window_pos`, the five blending extensions of `blend.rs`,
+    /// `GL_EXT_draw_range_elements`, `GL_EXT_multi_draw_arrays`).
     /// Another name → `GL_INVALID_ENUM` and `None` (C's NULL), as inside `begin`/`end`
     /// (`GL_INVALID_OPERATION`).
     pub fn get_string(&mut self, name: GLenum) -> Option<&'static str> {
@@ -515,10 +520,7 @@ mod tests {
         let mut gl = Gl::new(4, 4);
         assert_eq!(gl.get_string(GL_VENDOR), Some("gleval"));
         assert!(gl.get_string(GL_VERSION).is_some_and(|v| v.starts_with("1.1 ")));
-        assert_eq!(
-            gl.get_string(GL_EXTENSIONS),
-            Some("GL_ARB_window_pos GL_EXT_draw_range_elements GL_EXT_multi_draw_arrays")
-        );
+        assert_eq!(gl.get_string(GL_EXTENSIONS), Some(EXTENSIONS));
         assert_eq!(gl.get_error(), GL_NO_ERROR);
         assert_eq!(gl.get_string(0x1234), None);
         assert_eq!(gl.get_error(), GL_INVALID_ENUM);

@@ -7,14 +7,13 @@ use super::device::shader_module;
 use super::layout::RASTER_WGSL;
 use super::raster::{PipelineTests, RasterPipeline};
 use super::textures::{self, TextureCache};
-use crate::gl::consts::*;
 use crate::gl::types::GLenum;
 use crate::render::assemble::{DrawList, Op, RasterVertex, Topology};
 use std::collections::HashMap;
 use wgpu::util::DeviceExt;
 
 /// Pipeline key: topology, depth function, target format, blend factors, stencil and masks.
-pub(crate) type PipelineKey = (Topology, Option<GLenum>, wgpu::TextureFormat, Option<[GLenum; 2]>, PipelineTests);
+pub(crate) type PipelineKey = (Topology, Option<GLenum>, wgpu::TextureFormat, Option<wgpu::BlendState>, PipelineTests);
 
 /// The frame rasteriser's shader and its pipelines, made on first use, and the textures it
 /// samples.
@@ -92,37 +91,10 @@ fn make_pipeline(
         // The CPU culled already; wgpu's defaults, no culling.
         faces: (wgpu::FrontFace::Ccw, None),
         format,
-        blend: blend.map(blend_state),
+        blend,
         tests,
     }
     .build(device)
-}
-
-/// GL's `glBlendFunc` factors (for colour and alpha alike) as a wgpu blend state, adding.
-pub(crate) fn blend_state([source, destination]: [GLenum; 2]) -> wgpu::BlendState {
-    let component = wgpu::BlendComponent {
-        src_factor: blend_factor(source),
-        dst_factor: blend_factor(destination),
-        operation: wgpu::BlendOperation::Add,
-    };
-    wgpu::BlendState { color: component, alpha: component }
-}
-
-fn blend_factor(factor: GLenum) -> wgpu::BlendFactor {
-    use wgpu::BlendFactor as F;
-    match factor {
-        GL_ZERO => F::Zero,
-        GL_SRC_COLOR => F::Src,
-        GL_ONE_MINUS_SRC_COLOR => F::OneMinusSrc,
-        GL_SRC_ALPHA => F::SrcAlpha,
-        GL_ONE_MINUS_SRC_ALPHA => F::OneMinusSrcAlpha,
-        GL_DST_ALPHA => F::DstAlpha,
-        GL_ONE_MINUS_DST_ALPHA => F::OneMinusDstAlpha,
-        GL_DST_COLOR => F::Dst,
-        GL_ONE_MINUS_DST_COLOR => F::OneMinusDst,
-        GL_SRC_ALPHA_SATURATE => F::SrcAlphaSaturated,
-        _ => F::One,
-    }
 }
 
 /// The list's vertices in one vertex buffer (in the target's clip space, upside down with

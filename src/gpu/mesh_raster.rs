@@ -28,7 +28,7 @@ type PipelineKey = (
     wgpu::TextureFormat,
     (wgpu::FrontFace, Option<wgpu::Face>),
     bool,
-    Option<[GLenum; 2]>,
+    Option<wgpu::BlendState>,
     PipelineTests,
 );
 
@@ -246,7 +246,8 @@ fn pipeline_key(draw: &MeshDraw, state: &DrawState, format: wgpu::TextureFormat,
         _ => None,
     };
     let tests = PipelineTests::of(&state.fragment_tests);
-    Some((draw.topology, state.depth_test, format, (front, cull), state.shade_model == GL_FLAT, state.blend, tests))
+    let blend = state.blend.as_ref().and_then(super::blend::wgpu_blend).map(|(state, _)| state);
+    Some((draw.topology, state.depth_test, format, (front, cull), state.shade_model == GL_FLAT, blend, tests))
 }
 
 fn make_pipeline(
@@ -262,7 +263,6 @@ fn make_pipeline(
         attributes: &attributes,
     };
     let entry_points = if flat { ("vs_flat", "fs_flat") } else { ("vs_smooth", "fs_smooth") };
-    let blend = blend.map(super::frame_raster::blend_state);
     RasterPipeline {
         label: "gl mesh raster",
         module,

@@ -22,6 +22,7 @@
 //! is crate-private, with what tests, benchmarks and examples drive re-exported from the
 //! hidden `testing` module.
 
+mod blend;
 mod clear_quads;
 mod device;
 mod draw_uniform;

@@ -308,6 +308,7 @@ impl Renderer {
                 rp.set_scissor_rect(scissor[0], scissor[1], scissor[2], scissor[3]);
                 rp.set_stencil_reference(stencil_reference(&batch.tests));
                 rp.set_pipeline(self.frames.pipeline(pipeline_key(batch, target)));
+                set_blend_constant(rp, batch.blend.as_ref());
                 rp.set_bind_group(0, fragment_group(bind_groups, batch.fragment), &[]);
                 rp.set_vertex_buffer(0, buffer.slice(..));
                 rp.draw(batch.first..batch.first + batch.count, 0..1);
@@ -319,10 +320,18 @@ impl Renderer {
                 let Some(scissor) = draw_rect(state.viewport, tests, target.size, target.flip) else { return };
                 rp.set_scissor_rect(scissor[0], scissor[1], scissor[2], scissor[3]);
                 rp.set_stencil_reference(stencil_reference(tests));
+                set_blend_constant(rp, state.blend.as_ref());
                 let fragment = fragment_group(bind_groups, *fragment);
                 meshes.draw(rp, frame, prepared, (*mesh, fragment), target.format);
             }
         }
+    }
+}
+
+/// The render pass's blend constant for `blend` (see `blend.rs`).
+fn set_blend_constant(rp: &mut wgpu::RenderPass<'_>, blend: Option<&crate::gl::Blend>) {
+    if let Some((_, constant)) = blend.and_then(super::blend::wgpu_blend) {
+        rp.set_blend_constant(constant);
     }
 }
 
@@ -333,7 +342,8 @@ fn fragment_group(bind_groups: &[wgpu::BindGroup], fragment: Option<u32>) -> &wg
 
 /// The frame rasteriser's pipeline for a batch drawn into `target`.
 fn pipeline_key(batch: &Batch, target: &Attachments<'_>) -> PipelineKey {
-    (batch.topology, batch.depth_test, target.format, batch.blend, PipelineTests::of(&batch.tests))
+    let blend = batch.blend.as_ref().and_then(super::blend::wgpu_blend).map(|(state, _)| state);
+    (batch.topology, batch.depth_test, target.format, blend, PipelineTests::of(&batch.tests))
 }
 
 /// The typed API on the GPU tessellator: each patch over a uniform `segments_u` × `segments_v`

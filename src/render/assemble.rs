@@ -75,8 +75,8 @@ pub struct Batch {
     /// The texture, fog and alpha test, as an index into [`DrawList::fragments`]; `None`
     /// when the batch has none of them.
     pub fragment: Option<u32>,
-    /// Source and destination blend factors when blending.
-    pub blend: Option<[GLenum; 2]>,
+    /// Blending's factors, equations and colour, when blending.
+    pub blend: Option<crate::gl::Blend>,
     /// Scissor, stencil, write masks, logic op and draw buffers.
     pub tests: FragmentTests,
 }

@@ -158,6 +158,10 @@ fn call(gl: &mut Gl, a: &mut Args) {
         "glEnable" => gl.enable(a.e()),
         "glDisable" => gl.disable(a.e()),
         "glBlendFunc" => gl.blend_func(a.e(), a.e()),
+        "glBlendFuncSeparate" => gl.blend_func_separate(a.e(), a.e(), a.e(), a.e()),
+        "glBlendEquation" => gl.blend_equation(a.e()),
+        "glBlendEquationSeparate" => gl.blend_equation_separate(a.e(), a.e()),
+        "glBlendColor" => gl.blend_color(a.f(), a.f(), a.f(), a.f()),
         "glAlphaFunc" => gl.alpha_func(a.e(), a.f()),
         "glTexImage1D" => {
             let (target, level, internal, width, border, format, type_) =

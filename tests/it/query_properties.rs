@@ -15,6 +15,7 @@ fn pname() -> impl Strategy<Value = u32> {
         0x3000u32..0x3010,
         0x4000u32..0x4010,
         0x8000u32..0x8100,
+        0x8830u32..0x8840,
         any::<u32>()
     ]
 }
@@ -33,6 +34,7 @@ enum Change {
     TexParameter(u32, u32, Vec<i32>, Vec<f32>),
     Enable(u32),
     Color(f32, f32, f32),
+    Blend([u32; 4], [u32; 2], [f32; 4]),
     Begin,
     End,
 }
@@ -43,6 +45,11 @@ fn ints() -> impl Strategy<Value = Vec<i32>> {
 
 fn floats() -> impl Strategy<Value = Vec<f32>> {
     proptest::collection::vec(value(), 0..6)
+}
+
+/// Blend factors, equations and anything.
+fn blend_enum() -> impl Strategy<Value = u32> {
+    prop_oneof![0u32..2, 0x0300u32..0x030A, 0x8001u32..0x800C, any::<u32>()]
 }
 
 fn change() -> impl Strategy<Value = Change> {
@@ -59,6 +66,12 @@ fn change() -> impl Strategy<Value = Change> {
             .prop_map(|(t, p, i, f)| Change::TexParameter(t, p, i, f)),
         pname().prop_map(Change::Enable),
         (value(), value(), value()).prop_map(|(r, g, b)| Change::Color(r, g, b)),
+        (
+            [blend_enum(), blend_enum(), blend_enum(), blend_enum()],
+            [blend_enum(), blend_enum()],
+            [value(), value(), value(), value()]
+        )
+            .prop_map(|(f, e, c)| Change::Blend(f, e, c)),
         Just(Change::Begin),
         Just(Change::End),
     ]
@@ -86,6 +99,13 @@ fn apply(gl: &mut Gl, c: &Change) {
         }
         Change::Enable(cap) => gl.enable(*cap),
         Change::Color(r, g, b) => gl.color3f(*r, *g, *b),
+        Change::Blend(f, [rgb, alpha], c) => {
+            gl.blend_func_separate(f[0], f[1], f[2], f[3]);
+            gl.blend_func(f[1], f[0]);
+            gl.blend_equation_separate(*rgb, *alpha);
+            gl.blend_equation(*alpha);
+            gl.blend_color(c[0], c[1], c[2], c[3]);
+        }
         Change::Begin => gl.begin(GL_POINTS),
         Change::End => gl.end(),
     }

@@ -7,7 +7,7 @@
 //! which lavapipe steps by Vulkan's rules), and a depth test switched off in the CPU rasteriser
 //! fails the test.
 
-use gleval::gl::Frame;
+use gleval::gl::{Blend, Frame};
 use gleval::prelude::*;
 use gleval::render::{soft, Renderer};
 use gleval::testing::compare::{compare, RgbImage};
@@ -31,8 +31,41 @@ fn shape() -> impl Strategy<Value = Shape> {
     (mode, prop::collection::vec(vertex, 3..9)).prop_map(|(mode, vertices)| Shape { mode, vertices })
 }
 
+/// Blending with any of GL 1.4's factors and equations and a constant colour.
+fn blend() -> impl Strategy<Value = Blend> {
+    let factor = prop::sample::select(vec![
+        GL_ZERO,
+        GL_ONE,
+        GL_SRC_COLOR,
+        GL_ONE_MINUS_SRC_COLOR,
+        GL_SRC_ALPHA,
+        GL_ONE_MINUS_SRC_ALPHA,
+        GL_DST_ALPHA,
+        GL_ONE_MINUS_DST_ALPHA,
+        GL_DST_COLOR,
+        GL_ONE_MINUS_DST_COLOR,
+        GL_SRC_ALPHA_SATURATE,
+        GL_CONSTANT_COLOR,
+        GL_ONE_MINUS_CONSTANT_COLOR,
+        GL_CONSTANT_ALPHA,
+        GL_ONE_MINUS_CONSTANT_ALPHA,
+    ]);
+    let equation = prop::sample::select(vec![GL_FUNC_ADD, GL_FUNC_SUBTRACT, GL_FUNC_REVERSE_SUBTRACT, GL_MIN, GL_MAX]);
+    let classic = Just(Blend {
+        factors: [GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA],
+        ..Blend::default()
+    });
+    let any = (
+        [factor.clone(), factor.clone(), factor.clone(), factor],
+        [equation.clone(), equation],
+        [0.0f32..1.0, 0.0f32..1.0, 0.0f32..1.0, 0.0f32..1.0],
+    )
+        .prop_map(|(factors, equations, color)| Blend { factors, equations, color });
+    prop_oneof![classic, any]
+}
+
 /// The scene's frame: a clear, then the shapes under the given state.
-fn record(shapes: &[Shape], depth: Option<GLenum>, blend: bool, flat: bool) -> Frame {
+fn record(shapes: &[Shape], depth: Option<GLenum>, blend: Option<Blend>, flat: bool) -> Frame {
     let mut gl = Gl::new(W as i32, H as i32);
     gl.viewport(0, 0, W as i32, H as i32);
     gl.clear_color(0.1, 0.2, 0.3, 1.0);
@@ -41,7 +74,11 @@ fn record(shapes: &[Shape], depth: Option<GLenum>, blend: bool, flat: bool) -> F
         gl.enable(GL_DEPTH_TEST);
         gl.depth_func(func);
     }
-    gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    if let Some(b) = blend {
+        gl.blend_func_separate(b.factors[0], b.factors[1], b.factors[2], b.factors[3]);
+        gl.blend_equation_separate(b.equations[0], b.equations[1]);
+        gl.blend_color(b.color[0], b.color[1], b.color[2], b.color[3]);
+    }
     if flat {
         gl.shade_model(GL_FLAT);
     }
@@ -52,7 +89,7 @@ fn record(shapes: &[Shape], depth: Option<GLenum>, blend: bool, flat: bool) -> F
         // loop of two nearly parallel lines, 1.5% of pixels). Against real Mesa such lines
         // are covered by the reference pictures (`stipple`: smooth lines blended).
         let filled = !matches!(s.mode, GL_LINES | GL_LINE_LOOP | GL_POINTS);
-        if blend && filled {
+        if blend.is_some() && filled {
             gl.enable(GL_BLEND);
         } else {
             gl.disable(GL_BLEND);
@@ -77,7 +114,7 @@ fn the_cpu_rasteriser_draws_what_wgpu_draws() {
     let scenes = (
         prop::collection::vec(shape(), 1..6),
         prop::option::of(prop::sample::select(vec![GL_LESS, GL_LEQUAL, GL_GREATER, GL_ALWAYS])),
-        any::<bool>(),
+        prop::option::of(blend()),
         any::<bool>(),
     );
     let cases = std::env::var("PROPTEST_CASES").ok().and_then(|n| n.parse().ok()).unwrap_or(48);
@@ -141,6 +178,67 @@ fn intensity_textures_are_mesas_on_both_rasterisers() {
         if let Some(renderer) = renderer.as_mut() {
             let wgpu = renderer.render_frame(&frame, 4, 4).expect("wgpu renders");
             assert!(close(pixel(&wgpu.pixels)), "wgpu, mode {mode:#x}: {:?}, Mesa {expected:?}", pixel(&wgpu.pixels));
+        }
+    }
+}
+
+/// GL 1.2–2.0's blending (constant colours, the equations, separate RGB and alpha factors and
+/// equations), drawn by both rasterisers, against what Mesa 22.3 (llvmpipe, OSMesa) wrote for
+/// the same calls (`tests/reference/pixels/blend.c` prints these values): a buffer cleared to
+/// (0.2, 0.4, 0.6, 0.8), the constant colour (0.1, 0.3, 0.5, 0.7), a fragment of colour
+/// (0.5, 0.25, 0.9, 0.3). Within 1/255 per channel: llvmpipe blends in 8-bit fixed point.
+#[test]
+fn blend_equations_are_mesas_on_both_rasterisers() {
+    let mut renderer = match Renderer::new() {
+        Ok(r) => Some(r),
+        Err(e) if std::env::var("GLEVAL_REQUIRE_ADAPTER").is_ok_and(|v| v == "1") => panic!("{e}"),
+        Err(_) => None,
+    };
+    let mesa: [([GLenum; 4], [GLenum; 2], [u8; 4]); 7] = [
+        (
+            [GL_CONSTANT_COLOR, GL_ONE_MINUS_CONSTANT_ALPHA, GL_CONSTANT_ALPHA, GL_ONE],
+            [GL_FUNC_ADD; 2],
+            [28, 50, 161, 255],
+        ),
+        ([GL_ONE; 4], [GL_FUNC_REVERSE_SUBTRACT, GL_FUNC_SUBTRACT], [0, 38, 0, 0]),
+        ([GL_ZERO; 4], [GL_MIN, GL_MAX], [51, 64, 153, 204]),
+        ([GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE], [GL_MAX, GL_FUNC_ADD], [128, 102, 230, 255]),
+        ([GL_ONE, GL_SRC_ALPHA_SATURATE, GL_ONE, GL_SRC_ALPHA_SATURATE], [GL_FUNC_ADD; 2], [138, 84, 255, 255]),
+        (
+            [GL_ONE_MINUS_CONSTANT_COLOR, GL_CONSTANT_COLOR, GL_DST_COLOR, GL_ONE_MINUS_DST_ALPHA],
+            [GL_FUNC_SUBTRACT, GL_FUNC_REVERSE_SUBTRACT],
+            [110, 15, 38, 0],
+        ),
+        (
+            [GL_SRC_COLOR, GL_ONE_MINUS_SRC_COLOR, GL_ONE_MINUS_CONSTANT_ALPHA, GL_DST_ALPHA],
+            [GL_FUNC_ADD, GL_MIN],
+            [89, 92, 222, 76],
+        ),
+    ];
+    for (factors, [rgb, alpha], expected) in mesa {
+        let mut gl = Gl::new(4, 4);
+        gl.clear_color(0.2, 0.4, 0.6, 0.8);
+        gl.clear(GL_COLOR_BUFFER_BIT);
+        gl.blend_color(0.1, 0.3, 0.5, 0.7);
+        gl.enable(GL_BLEND);
+        gl.blend_func_separate(factors[0], factors[1], factors[2], factors[3]);
+        gl.blend_equation_separate(rgb, alpha);
+        gl.color4f(0.5, 0.25, 0.9, 0.3);
+        gl.rectf(-1.0, -1.0, 1.0, 1.0);
+        assert_eq!(gl.get_error(), GL_NO_ERROR);
+        let frame = gl.take_frame();
+        let pixel = |pixels: &[u8]| -> [u8; 4] { pixels[(4 + 1) * 4..][..4].try_into().unwrap() };
+        let close = |got: [u8; 4]| got.iter().zip(expected).all(|(&g, e)| g.abs_diff(e) <= 1);
+        let soft = soft::render_frame(&frame, 4, 4);
+        assert!(
+            close(pixel(&soft.pixels)),
+            "CPU, {factors:x?} {rgb:#x} {alpha:#x}: {:?}, Mesa {expected:?}",
+            pixel(&soft.pixels)
+        );
+        if let Some(renderer) = renderer.as_mut() {
+            let wgpu = renderer.render_frame(&frame, 4, 4).expect("wgpu renders");
+            let got = pixel(&wgpu.pixels);
+            assert!(close(got), "wgpu, {factors:x?} {rgb:#x} {alpha:#x}: {got:?}, Mesa {expected:?}");
         }
     }
 }

@@ -1263,6 +1263,30 @@ GLAPI void GLAPIENTRY glMultiDrawArraysEXT(GLenum mode, const GLint *first, cons
 GLAPI void GLAPIENTRY glMultiDrawElements(GLenum mode, const GLsizei *count, GLenum type, const GLvoid *const *indices, GLsizei drawcount);
 GLAPI void GLAPIENTRY glMultiDrawElementsEXT(GLenum mode, const GLsizei *count, GLenum type, const void *const *indices, GLsizei primcount);
 
+/* Blending: GL 1.2's imaging subset's glBlendColor and glBlendEquation (GL_EXT_blend_color,
+ * GL_EXT_blend_minmax, GL_EXT_blend_subtract), GL 1.4's glBlendFuncSeparate
+ * (GL_EXT_blend_func_separate) and GL 2.0's glBlendEquationSeparate
+ * (GL_EXT_blend_equation_separate). */
+#define GL_EXT_blend_color 1
+#define GL_EXT_blend_minmax 1
+#define GL_EXT_blend_subtract 1
+#define GL_EXT_blend_func_separate 1
+#define GL_EXT_blend_equation_separate 1
+#define GL_BLEND_DST_RGB 0x80C8
+#define GL_BLEND_SRC_RGB 0x80C9
+#define GL_BLEND_DST_ALPHA 0x80CA
+#define GL_BLEND_SRC_ALPHA 0x80CB
+#define GL_BLEND_EQUATION_RGB 0x8009
+#define GL_BLEND_EQUATION_ALPHA 0x883D
+GLAPI void GLAPIENTRY glBlendColor(GLclampf red, GLclampf green, GLclampf blue, GLclampf alpha);
+GLAPI void GLAPIENTRY glBlendColorEXT(GLclampf red, GLclampf green, GLclampf blue, GLclampf alpha);
+GLAPI void GLAPIENTRY glBlendEquation(GLenum mode);
+GLAPI void GLAPIENTRY glBlendEquationEXT(GLenum mode);
+GLAPI void GLAPIENTRY glBlendEquationSeparate(GLenum modeRGB, GLenum modeAlpha);
+GLAPI void GLAPIENTRY glBlendEquationSeparateEXT(GLenum modeRGB, GLenum modeAlpha);
+GLAPI void GLAPIENTRY glBlendFuncSeparate(GLenum sfactorRGB, GLenum dfactorRGB, GLenum sfactorAlpha, GLenum dfactorAlpha);
+GLAPI void GLAPIENTRY glBlendFuncSeparateEXT(GLenum sfactorRGB, GLenum dfactorRGB, GLenum sfactorAlpha, GLenum dfactorAlpha);
+
 /* GL_ARB_window_pos (core in OpenGL 1.4): the raster position in window coordinates. */
 #define GL_ARB_window_pos 1
 GLAPI void GLAPIENTRY glWindowPos2f(GLfloat x, GLfloat y);

@@ -7,6 +7,14 @@ use gleval::gl::types::*;
 
 forward! {
     glBlendFunc(sfactor: GLenum, dfactor: GLenum) => blend_func;
+    glBlendFuncSeparate(src_rgb: GLenum, dst_rgb: GLenum, src_alpha: GLenum, dst_alpha: GLenum) => blend_func_separate;
+    glBlendFuncSeparateEXT(src_rgb: GLenum, dst_rgb: GLenum, src_alpha: GLenum, dst_alpha: GLenum) => blend_func_separate;
+    glBlendEquation(mode: GLenum) => blend_equation;
+    glBlendEquationEXT(mode: GLenum) => blend_equation;
+    glBlendEquationSeparate(mode_rgb: GLenum, mode_alpha: GLenum) => blend_equation_separate;
+    glBlendEquationSeparateEXT(mode_rgb: GLenum, mode_alpha: GLenum) => blend_equation_separate;
+    glBlendColor(red: GLclampf, green: GLclampf, blue: GLclampf, alpha: GLclampf) => blend_color;
+    glBlendColorEXT(red: GLclampf, green: GLclampf, blue: GLclampf, alpha: GLclampf) => blend_color;
     glAlphaFunc(func: GLenum, reference: GLclampf) => alpha_func;
     glFogf(pname: GLenum, param: GLfloat) => fogf;
     glFogi(pname: GLenum, param: GLint) => fogi;

@@ -16,9 +16,9 @@ use super::super::types::*;
 /// Every row, group by group in the order of GL 1.1's state tables.
 pub(crate) fn rows() -> impl Iterator<Item = &'static StateVar> {
     use super::super::{
-        accum, array_draws, arrays, attrib, clip, color_buffer, color_index, current, depth, eval, feedback, fog,
-        fragments, hint, lighting, line, lists, matrix, pixel_transfer, pixels, point, polygon, raster_pos, scissor,
-        select, stencil, texture, viewport,
+        accum, array_draws, arrays, attrib, blend, clip, color_buffer, color_index, current, depth, eval, feedback,
+        fog, fragments, hint, lighting, line, lists, matrix, pixel_transfer, pixels, point, polygon, raster_pos,
+        scissor, select, stencil, texture, viewport,
     };
     [
         current::GET_ROWS,
@@ -38,6 +38,7 @@ pub(crate) fn rows() -> impl Iterator<Item = &'static StateVar> {
         stencil::GET_ROWS,
         depth::GET_ROWS,
         color_buffer::GET_ROWS,
+        blend::GET_ROWS,
         color_index::GET_ROWS,
         accum::GET_ROWS,
         fragments::GET_ROWS,

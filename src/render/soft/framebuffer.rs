@@ -5,7 +5,7 @@
 //! stencil buffer. Clears honour the scissor box and the masks (§4.2.3); the accumulation
 //! buffer is `accum.rs`'s.
 
-use super::ops::{logic_op, stencil_op, to_unorm8};
+use super::ops::{blend, logic_op, stencil_op, to_unorm8};
 use crate::gl::consts::*;
 use crate::gl::fragments::{FragmentTests, Stencil, BACK_BUFFER, FRONT_BUFFER};
 use crate::gl::types::GLenum;
@@ -33,7 +33,7 @@ pub(super) struct Framebuffer {
 #[derive(Clone, Copy)]
 pub(super) struct ColorWrite {
     pub color: [f32; 4],
-    pub blend: Option<[GLenum; 2]>,
+    pub blend: Option<crate::gl::Blend>,
     pub tests: FragmentTests,
 }
 
@@ -188,17 +188,13 @@ impl Framebuffer {
         for bit in Self::buffers(w.tests.draw_buffers) {
             let buffer = self.color_mut(bit);
             let dest = buffer[index];
-            let out = match (w.tests.logic_op, w.blend) {
+            let out = match (w.tests.logic_op, &w.blend) {
                 (Some(op), _) => {
                     let s = source.map(to_unorm8);
                     std::array::from_fn(|k| logic_op(op, s[k], dest[k]))
                 }
                 (None, None) => source.map(to_unorm8),
-                (None, Some([sf, df])) => {
-                    let d = dest.map(|c| f32::from(c) / 255.0);
-                    let (fs, fd) = (factor(sf, source, d), factor(df, source, d));
-                    std::array::from_fn(|k| to_unorm8(source[k] * fs[k] + d[k] * fd[k]))
-                }
+                (None, Some(b)) => blend(b, source, dest.map(|c| f32::from(c) / 255.0)).map(to_unorm8),
             };
             buffer[index] = masked(out, dest, w.tests.color_write);
         }
@@ -260,25 +256,5 @@ pub(super) fn compare(func: GLenum, value: f32, reference: f32) -> bool {
         GL_NOTEQUAL => value != reference,
         GL_GEQUAL => value >= reference,
         _ => true,
-    }
-}
-
-/// A blend factor (GL 1.1 spec table 4.1 and 4.2) for source colour `s` and destination `d`.
-fn factor(f: GLenum, s: [f32; 4], d: [f32; 4]) -> [f32; 4] {
-    match f {
-        GL_ZERO => [0.0; 4],
-        GL_SRC_COLOR => s,
-        GL_ONE_MINUS_SRC_COLOR => s.map(|c| 1.0 - c),
-        GL_SRC_ALPHA => [s[3]; 4],
-        GL_ONE_MINUS_SRC_ALPHA => [1.0 - s[3]; 4],
-        GL_DST_ALPHA => [d[3]; 4],
-        GL_ONE_MINUS_DST_ALPHA => [1.0 - d[3]; 4],
-        GL_DST_COLOR => d,
-        GL_ONE_MINUS_DST_COLOR => d.map(|c| 1.0 - c),
-        GL_SRC_ALPHA_SATURATE => {
-            let f = s[3].min(1.0 - d[3]);
-            [f, f, f, 1.0]
-        }
-        _ => [1.0; 4],
     }
 }

@@ -220,7 +220,7 @@ struct Target<'a> {
     map: WindowMap,
     scissor: [u32; 4],
     depth_test: Option<crate::gl::types::GLenum>,
-    blend: Option<[crate::gl::types::GLenum; 2]>,
+    blend: Option<crate::gl::Blend>,
     tests: FragmentTests,
     program: Option<Program<'a>>,
 }

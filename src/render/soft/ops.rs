@@ -1,13 +1,10 @@
 //! Per-fragment arithmetic shared by the CPU rasteriser's stages: the stencil operations (GL
-//! 1.1 spec §4.1.4, with GL 1.4's wrapping ones), the logic ops (§4.1.7, table 4.2) and the
-//! conversion of a colour component into the 8-bit buffer.
+//! 1.1 spec §4.1.4, with GL 1.4's wrapping ones), blending (GL 1.4 §4.1.8), the logic ops
+//! (§4.1.7, table 4.2) and the conversion of a colour component into the 8-bit buffer.
 
 use crate::gl::consts::*;
 use crate::gl::types::GLenum;
-
-/// GL 1.4's wrapping stencil operations (`GL/glext.h`).
-const GL_INCR_WRAP: GLenum = 0x8507;
-const GL_DECR_WRAP: GLenum = 0x8508;
+use crate::gl::Blend;
 
 /// A float colour component in an 8-bit normalised buffer as Mesa converts it (gallium's
 /// `float_to_ubyte`, which llvmpipe's clears, fragment outputs and `glAccum(GL_RETURN)` share):
@@ -59,6 +56,51 @@ pub(super) fn logic_op(op: GLenum, s: u8, d: u8) -> u8 {
         GL_NAND => !(s & d),
         GL_SET => 0xFF,
         _ => s,
+    }
+}
+
+/// Source colour `s` blended with destination `d` (GL 1.4 §4.1.8): the RGB channels by the
+/// first pair of factors and the first equation, alpha by the second pair and equation.
+/// `GL_MIN` and `GL_MAX` ignore the factors.
+pub(super) fn blend(b: &Blend, s: [f32; 4], d: [f32; 4]) -> [f32; 4] {
+    let rgb = (factor(b.factors[0], s, d, b.color), factor(b.factors[1], s, d, b.color));
+    let alpha = (factor(b.factors[2], s, d, b.color), factor(b.factors[3], s, d, b.color));
+    std::array::from_fn(|k| {
+        let ((fs, fd), equation) = if k < 3 { (rgb, b.equations[0]) } else { (alpha, b.equations[1]) };
+        let (s, d) = (s[k], d[k]);
+        let value = match equation {
+            GL_FUNC_SUBTRACT => s * fs[k] - d * fd[k],
+            GL_FUNC_REVERSE_SUBTRACT => d * fd[k] - s * fs[k],
+            GL_MIN => s.min(d),
+            GL_MAX => s.max(d),
+            _ => s * fs[k] + d * fd[k],
+        };
+        value.clamp(0.0, 1.0)
+    })
+}
+
+/// A blend factor (GL 1.4 tables 4.1 and 4.2) for source colour `s`, destination `d` and the
+/// constant colour `c`.
+fn factor(f: GLenum, s: [f32; 4], d: [f32; 4], c: [f32; 4]) -> [f32; 4] {
+    match f {
+        GL_ZERO => [0.0; 4],
+        GL_SRC_COLOR => s,
+        GL_ONE_MINUS_SRC_COLOR => s.map(|x| 1.0 - x),
+        GL_SRC_ALPHA => [s[3]; 4],
+        GL_ONE_MINUS_SRC_ALPHA => [1.0 - s[3]; 4],
+        GL_DST_ALPHA => [d[3]; 4],
+        GL_ONE_MINUS_DST_ALPHA => [1.0 - d[3]; 4],
+        GL_DST_COLOR => d,
+        GL_ONE_MINUS_DST_COLOR => d.map(|x| 1.0 - x),
+        GL_SRC_ALPHA_SATURATE => {
+            let f = s[3].min(1.0 - d[3]);
+            [f, f, f, 1.0]
+        }
+        GL_CONSTANT_COLOR => c,
+        GL_ONE_MINUS_CONSTANT_COLOR => c.map(|x| 1.0 - x),
+        GL_CONSTANT_ALPHA => [c[3]; 4],
+        GL_ONE_MINUS_CONSTANT_ALPHA => [1.0 - c[3]; 4],
+        _ => [1.0; 4],
     }
 }
 

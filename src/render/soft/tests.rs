@@ -16,7 +16,7 @@ fn at(x: f32, y: f32, color: [f32; 4]) -> RasterVertex {
     RasterVertex { clip, color, ..RasterVertex::default() }
 }
 
-fn list(topology: Topology, vertices: Vec<RasterVertex>, blend: Option<[u32; 2]>) -> DrawList {
+fn list(topology: Topology, vertices: Vec<RasterVertex>, blend: Option<crate::gl::Blend>) -> DrawList {
     let batch = Batch {
         viewport: [0, 0, W as i32, H as i32],
         depth_test: None,
@@ -37,7 +37,11 @@ fn red(pixels: &[u8], x: u32, y: u32) -> u8 {
 
 /// Counts how often each pixel is drawn: every fragment adds 1/255 of red.
 fn counts(topology: Topology, vertices: Vec<RasterVertex>) -> Vec<u8> {
-    let image = rasterize(&list(topology, vertices, Some([GL_ONE, GL_ONE])), W, H);
+    let image = rasterize(
+        &list(topology, vertices, Some(crate::gl::Blend { factors: [GL_ONE; 4], ..Default::default() })),
+        W,
+        H,
+    );
     (0..H).flat_map(|y| (0..W).map(move |x| (x, y))).map(|(x, y)| red(&image.pixels, x, y)).collect()
 }
 

@@ -21,6 +21,12 @@ static const struct enum_name query_enums[] = {
     Q(GL_PROJECTION_MATRIX), Q(GL_TEXTURE_MATRIX), Q(GL_VIEWPORT), Q(GL_DEPTH_RANGE),
     Q(GL_TRANSPOSE_MODELVIEW_MATRIX), Q(GL_TRANSPOSE_PROJECTION_MATRIX), Q(GL_TRANSPOSE_TEXTURE_MATRIX),
     Q(GL_MAX_ELEMENTS_VERTICES), Q(GL_MAX_ELEMENTS_INDICES),
+    Q(GL_BLEND_SRC_RGB), Q(GL_BLEND_DST_RGB), Q(GL_BLEND_SRC_ALPHA), Q(GL_BLEND_DST_ALPHA),
+    Q(GL_BLEND_EQUATION), Q(GL_BLEND_EQUATION_ALPHA), Q(GL_BLEND_COLOR), Q(GL_FUNC_ADD),
+    Q(GL_FUNC_SUBTRACT), Q(GL_FUNC_REVERSE_SUBTRACT), Q(GL_MIN), Q(GL_MAX), Q(GL_CONSTANT_COLOR),
+    Q(GL_ONE_MINUS_CONSTANT_COLOR), Q(GL_CONSTANT_ALPHA), Q(GL_ONE_MINUS_CONSTANT_ALPHA),
+    Q(GL_SRC_COLOR), Q(GL_ONE_MINUS_SRC_COLOR), Q(GL_DST_ALPHA), Q(GL_ONE_MINUS_DST_ALPHA),
+    Q(GL_DST_COLOR), Q(GL_ONE_MINUS_DST_COLOR),
     Q(GL_MODELVIEW_STACK_DEPTH), Q(GL_PROJECTION_STACK_DEPTH), Q(GL_TEXTURE_STACK_DEPTH),
     Q(GL_MATRIX_MODE), Q(GL_MODELVIEW), Q(GL_PROJECTION), Q(GL_TEXTURE), Q(GL_FOG_COLOR),
     Q(GL_FOG_INDEX), Q(GL_SHADE_MODEL), Q(GL_FLAT), Q(GL_SMOOTH), Q(GL_COLOR_MATERIAL),
@@ -164,6 +170,8 @@ static const struct qcall calls[] = {
     C(glPixelStorei, "ei"), C(glPixelStoref, "ef"), C(glFrustum, "dddddd"), C(glOrtho, "dddddd"),
     C(glColor4f, "ffff"), C(glNormal3f, "fff"), C(glEnable, "e"), C(glDisable, "e"),
     C(glFeedbackBuffer, "ie-"), C(glRenderMode, "e"), C(glBlendFunc, "ee"), C(glAlphaFunc, "ef"),
+    C(glBlendFuncSeparate, "eeee"), C(glBlendEquation, "e"), C(glBlendEquationSeparate, "ee"),
+    C(glBlendColor, "ffff"),
     C(glTexImage1D, "eieiieeF"), C(glGetLightfv, ">eeF"), C(glGetLightiv, ">eeI"),
     C(glGetMaterialfv, ">eeF"), C(glGetMaterialiv, ">eeI"), C(glGetTexEnvfv, ">eeF"),
     C(glGetTexEnviv, ">eeI"), C(glGetTexParameterfv, ">eeF"), C(glGetTexParameteriv, ">eeI"),
@@ -206,7 +214,7 @@ static void invoke(const char *sig, fn_ptr fn, const struct qargs *x)
     else if (!strcmp(sig, "e")) ((void (*)(GLuint))fn)(u[0]);
     else if (!strcmp(sig, "ee") || !strcmp(sig, "ei")) ((void (*)(GLuint, GLuint))fn)(u[0], u[1]);
     else if (!strcmp(sig, "eei") || !strcmp(sig, "eee")) ((void (*)(GLuint, GLuint, GLuint))fn)(u[0], u[1], u[2]);
-    else if (!strcmp(sig, "iiii")) ((void (*)(GLuint, GLuint, GLuint, GLuint))fn)(u[0], u[1], u[2], u[3]);
+    else if (!strcmp(sig, "iiii") || !strcmp(sig, "eeee")) ((void (*)(GLuint, GLuint, GLuint, GLuint))fn)(u[0], u[1], u[2], u[3]);
     else if (!strcmp(sig, "f")) ((void (*)(GLfloat))fn)(f[0]);
     else if (!strcmp(sig, "ef")) ((void (*)(GLuint, GLfloat))fn)(u[0], f[0]);
     else if (!strcmp(sig, "eef")) ((void (*)(GLuint, GLuint, GLfloat))fn)(u[0], u[1], f[0]);
