@@ -7,7 +7,7 @@
 //! point, line, polygon, polygon stipple, lighting, fog, depth buffer, viewport, transform,
 //! enable, colour buffer (clear colour, blending, alpha test, logic op, masks, draw buffer),
 //! stencil, accumulation, scissor, pixel mode (transfer, zoom, read buffer), hint, evaluator,
-//! list (base) and texture (unit 0's bindings and environment). A group with its own struct is
+//! list (base) and texture (unit 0's bindings and environment); and GL 1.3's multisample group. A group with its own struct is
 //! saved and restored in one piece; the rest through their areas (`pixel_attrib`,
 //! `texture_attrib`).
 
@@ -64,6 +64,7 @@ struct Saved {
     fog: super::fog::FogState,
     stencil: super::stencil::StencilBuffer,
     scissor: [GLint; 4],
+    multisample: super::multisample::Multisample,
     clear_accum: [f32; 4],
     depth: super::depth::Depth,
     point: super::point::Point,
@@ -88,7 +89,7 @@ pub(crate) struct AttribStack {
 
 /// The enables the groups of `mask` save (`GL_ENABLE_BIT`: every capability).
 fn enables_of(mask: GLbitfield) -> Vec<GLenum> {
-    let groups: [(GLbitfield, &[GLenum]); 11] = [
+    let groups: [(GLbitfield, &[GLenum]); 12] = [
         (GL_POINT_BIT, super::point::POINT_ENABLES),
         (GL_LINE_BIT, super::line::LINE_ENABLES),
         (GL_POLYGON_BIT, super::polygon::POLYGON_ENABLES),
@@ -100,6 +101,7 @@ fn enables_of(mask: GLbitfield) -> Vec<GLenum> {
         (GL_TEXTURE_BIT, TEXTURE_ENABLES),
         (GL_STENCIL_BUFFER_BIT, super::stencil::STENCIL_ENABLES),
         (GL_SCISSOR_BIT, super::scissor::SCISSOR_ENABLES),
+        (GL_MULTISAMPLE_BIT, super::multisample::MULTISAMPLE_ENABLES),
     ];
     let all = mask & GL_ENABLE_BIT != 0;
     let mut caps: Vec<GLenum> =
@@ -197,6 +199,7 @@ impl Gl {
             fog: self.server.fog,
             stencil: self.server.stencil,
             scissor: self.server.scissor,
+            multisample: self.server.multisample,
             clear_accum: self.server.clear_accum,
             depth: self.server.depth,
             point: self.server.point,
@@ -256,6 +259,9 @@ impl Gl {
         }
         if has(GL_SCISSOR_BIT) {
             self.server.scissor = saved.scissor;
+        }
+        if has(GL_MULTISAMPLE_BIT) {
+            self.server.multisample = saved.multisample;
         }
         if let Some(lighting) = saved.lighting {
             self.server.lighting = lighting;

@@ -83,6 +83,7 @@ pub(crate) enum ListCommand {
     Stencil(super::stencil::StencilCall),
     /// `glScissor`: x, y, width, height.
     Scissor([GLint; 4]),
+    SampleCoverage(GLclampf, GLboolean),
     /// `glAccum` and `glClearAccum` (`accum.rs`).
     Accum(super::accum::AccumCall),
     /// The depth buffer group's calls (`depth.rs`).
@@ -389,6 +390,7 @@ impl Gl {
             C::ColorBuffer(call) => self.replay_color_buffer_call(*call),
             C::Stencil(call) => self.replay_stencil_call(*call),
             C::Scissor([x, y, w, h]) => self.scissor(*x, *y, *w, *h),
+            C::SampleCoverage(value, invert) => self.sample_coverage(*value, *invert),
             C::Accum(call) => self.replay_accum_call(*call),
             C::Depth(call) => self.replay_depth_call(*call),
             C::Point(call) => self.replay_point_call(*call),

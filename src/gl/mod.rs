@@ -39,6 +39,7 @@ mod lighting;
 mod line;
 pub(crate) mod lists;
 mod matrix;
+mod multisample;
 mod offset;
 mod param_variants;
 mod pixel_pack;
@@ -214,6 +215,8 @@ pub(crate) struct ServerState {
     pub(super) scissor: [GLint; 4],
     /// The accumulation buffer group: the clear value.
     pub(super) clear_accum: [f32; 4],
+    /// The multisample group: `glSampleCoverage`.
+    pub(super) multisample: multisample::Multisample,
     /// The drawable's buffers (not an attribute group: no push saves them).
     pub(super) framebuffer: fragments::BufferConfig,
     /// `glPixelTransfer`, `glPixelMap` and `glPixelZoom`.
@@ -251,6 +254,7 @@ impl ServerState {
             stencil: stencil::StencilBuffer::default(),
             scissor: [0, 0, width, height],
             clear_accum: [0.0; 4],
+            multisample: multisample::Multisample::default(),
             framebuffer: fragments::BufferConfig::default(),
             pixel_state: pixel_transfer::PixelState::default(),
             color_index: color_index::ColorIndex::default(),

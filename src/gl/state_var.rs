@@ -9,7 +9,9 @@ use super::Gl;
 /// How Mesa stores a state variable (`main/get.c`'s `TYPE_*`), which decides its conversions.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum Kind {
-    /// `TYPE_BOOLEAN`: 0 or 1.
+    /// `TYPE_BOOLEAN`: a `GLboolean` as Mesa keeps it (0 or 1, or the byte a call gave, as
+    /// `glSampleCoverage`'s invert): `glGetBooleanv`, `glGetIntegerv` and `glGetDoublev` give
+    /// the byte, `glGetFloatv` 0 or 1.
     Bool,
     /// `TYPE_INT`, `TYPE_ENUM`: exact in every variant.
     Int,

@@ -162,6 +162,7 @@ fn call(gl: &mut Gl, a: &mut Args) {
         "glBlendEquation" => gl.blend_equation(a.e()),
         "glBlendEquationSeparate" => gl.blend_equation_separate(a.e(), a.e()),
         "glBlendColor" => gl.blend_color(a.f(), a.f(), a.f(), a.f()),
+        "glSampleCoverage" => gl.sample_coverage(a.f(), a.int() as GLboolean),
         "glAlphaFunc" => gl.alpha_func(a.e(), a.f()),
         "glTexImage1D" => {
             let (target, level, internal, width, border, format, type_) =

@@ -1287,6 +1287,11 @@ GLAPI void GLAPIENTRY glBlendEquationSeparateEXT(GLenum modeRGB, GLenum modeAlph
 GLAPI void GLAPIENTRY glBlendFuncSeparate(GLenum sfactorRGB, GLenum dfactorRGB, GLenum sfactorAlpha, GLenum dfactorAlpha);
 GLAPI void GLAPIENTRY glBlendFuncSeparateEXT(GLenum sfactorRGB, GLenum dfactorRGB, GLenum sfactorAlpha, GLenum dfactorAlpha);
 
+/* GL 1.3's multisample state (GL_ARB_multisample's call): kept and answered; every gleval
+ * buffer has one sample, so, as GL 1.3 section 3.2.1 says, it changes no fragment. */
+GLAPI void GLAPIENTRY glSampleCoverage(GLclampf value, GLboolean invert);
+GLAPI void GLAPIENTRY glSampleCoverageARB(GLclampf value, GLboolean invert);
+
 /* GL_ARB_window_pos (core in OpenGL 1.4): the raster position in window coordinates. */
 #define GL_ARB_window_pos 1
 GLAPI void GLAPIENTRY glWindowPos2f(GLfloat x, GLfloat y);

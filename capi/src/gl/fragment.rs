@@ -1,4 +1,4 @@
-//! Blending, the alpha test and fog.
+//! Blending, the alpha test, multisample coverage and fog.
 
 use crate::context::with_gl;
 use crate::memory::array;
@@ -16,6 +16,8 @@ forward! {
     glBlendColor(red: GLclampf, green: GLclampf, blue: GLclampf, alpha: GLclampf) => blend_color;
     glBlendColorEXT(red: GLclampf, green: GLclampf, blue: GLclampf, alpha: GLclampf) => blend_color;
     glAlphaFunc(func: GLenum, reference: GLclampf) => alpha_func;
+    glSampleCoverage(value: GLclampf, invert: GLboolean) => sample_coverage;
+    glSampleCoverageARB(value: GLclampf, invert: GLboolean) => sample_coverage;
     glFogf(pname: GLenum, param: GLfloat) => fogf;
     glFogi(pname: GLenum, param: GLint) => fogi;
 }

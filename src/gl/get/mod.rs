@@ -40,7 +40,11 @@ impl Gl {
     pub fn get_floatv(&mut self, pname: GLenum, params: &mut [GLfloat]) {
         if let Some(a) = self.answer(pname, params.len()) {
             for (out, v) in params.iter_mut().zip(&a.values[..a.count]) {
-                *out = *v as GLfloat;
+                *out = match a.kind {
+                    // Mesa's `BOOLEAN_TO_FLOAT`: a flag stored as the byte given reads 1.
+                    Kind::Bool => f32::from(u8::from(*v != 0.0)),
+                    _ => *v as GLfloat,
+                };
             }
         }
     }
@@ -53,11 +57,17 @@ impl Gl {
     }
 
     /// `glGetBooleanv`: as [`Gl::get_integerv`], `GL_TRUE` for every value other than 0 (GL 1.1
-    /// §6.1.2; a NaN is true, as in Mesa).
+    /// §6.1.2; a NaN is true, as in Mesa); a flag as it is kept.
     pub fn get_booleanv(&mut self, pname: GLenum, params: &mut [GLboolean]) {
         if let Some(a) = self.answer(pname, params.len()) {
             for (out, v) in params.iter_mut().zip(&a.values[..a.count]) {
-                *out = if *v != 0.0 { GL_TRUE } else { GL_FALSE };
+                *out = match a.kind {
+                    // Mesa copies a flag's byte as it was given (`glSampleCoverage(v, 7)`
+                    // reads back 7).
+                    Kind::Bool => *v as GLboolean,
+                    _ if *v != 0.0 => GL_TRUE,
+                    _ => GL_FALSE,
+                };
             }
         }
     }

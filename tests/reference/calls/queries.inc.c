@@ -27,6 +27,9 @@ static const struct enum_name query_enums[] = {
     Q(GL_ONE_MINUS_CONSTANT_COLOR), Q(GL_CONSTANT_ALPHA), Q(GL_ONE_MINUS_CONSTANT_ALPHA),
     Q(GL_SRC_COLOR), Q(GL_ONE_MINUS_SRC_COLOR), Q(GL_DST_ALPHA), Q(GL_ONE_MINUS_DST_ALPHA),
     Q(GL_DST_COLOR), Q(GL_ONE_MINUS_DST_COLOR),
+    Q(GL_MULTISAMPLE), Q(GL_SAMPLE_ALPHA_TO_COVERAGE), Q(GL_SAMPLE_ALPHA_TO_ONE),
+    Q(GL_SAMPLE_COVERAGE), Q(GL_SAMPLE_COVERAGE_VALUE), Q(GL_SAMPLE_COVERAGE_INVERT),
+    Q(GL_SAMPLE_BUFFERS), Q(GL_SAMPLES), Q(GL_MULTISAMPLE_BIT),
     Q(GL_MODELVIEW_STACK_DEPTH), Q(GL_PROJECTION_STACK_DEPTH), Q(GL_TEXTURE_STACK_DEPTH),
     Q(GL_MATRIX_MODE), Q(GL_MODELVIEW), Q(GL_PROJECTION), Q(GL_TEXTURE), Q(GL_FOG_COLOR),
     Q(GL_FOG_INDEX), Q(GL_SHADE_MODEL), Q(GL_FLAT), Q(GL_SMOOTH), Q(GL_COLOR_MATERIAL),
@@ -171,7 +174,7 @@ static const struct qcall calls[] = {
     C(glColor4f, "ffff"), C(glNormal3f, "fff"), C(glEnable, "e"), C(glDisable, "e"),
     C(glFeedbackBuffer, "ie-"), C(glRenderMode, "e"), C(glBlendFunc, "ee"), C(glAlphaFunc, "ef"),
     C(glBlendFuncSeparate, "eeee"), C(glBlendEquation, "e"), C(glBlendEquationSeparate, "ee"),
-    C(glBlendColor, "ffff"),
+    C(glBlendColor, "ffff"), C(glSampleCoverage, "fe"),
     C(glTexImage1D, "eieiieeF"), C(glGetLightfv, ">eeF"), C(glGetLightiv, ">eeI"),
     C(glGetMaterialfv, ">eeF"), C(glGetMaterialiv, ">eeI"), C(glGetTexEnvfv, ">eeF"),
     C(glGetTexEnviv, ">eeI"), C(glGetTexParameterfv, ">eeF"), C(glGetTexParameteriv, ">eeI"),
@@ -217,6 +220,7 @@ static void invoke(const char *sig, fn_ptr fn, const struct qargs *x)
     else if (!strcmp(sig, "iiii") || !strcmp(sig, "eeee")) ((void (*)(GLuint, GLuint, GLuint, GLuint))fn)(u[0], u[1], u[2], u[3]);
     else if (!strcmp(sig, "f")) ((void (*)(GLfloat))fn)(f[0]);
     else if (!strcmp(sig, "ef")) ((void (*)(GLuint, GLfloat))fn)(u[0], f[0]);
+    else if (!strcmp(sig, "fe")) ((void (*)(GLfloat, GLuint))fn)(f[0], u[0]);
     else if (!strcmp(sig, "eef")) ((void (*)(GLuint, GLuint, GLfloat))fn)(u[0], u[1], f[0]);
     else if (!strcmp(sig, "fff")) ((void (*)(GLfloat, GLfloat, GLfloat))fn)(f[0], f[1], f[2]);
     else if (!strcmp(sig, "ffff")) ((void (*)(GLfloat, GLfloat, GLfloat, GLfloat))fn)(f[0], f[1], f[2], f[3]);
