@@ -341,7 +341,8 @@ def report(args):
                     path = log_path(logs, name)
                     if os.path.exists(path):
                         why = reason(open(path, errors="replace").read())
-                        break
+                        if why:  # else the next run's log (a timeout may have printed nothing)
+                            break
             out.append(f"| {short(name)} | " + " | ".join(row) + f" | {why} |")
     print("\n".join(out))
     return 0
