@@ -12,11 +12,6 @@ use super::state_var::{put_enum, row, Kind, StateVar};
 use super::types::*;
 use super::Gl;
 
-/// GL 1.4's wrapping operations (`GL/glext.h`), which Mesa takes in every context.
-pub(crate) const GL_INCR_WRAP: GLenum = 0x8507;
-/// See [`GL_INCR_WRAP`].
-pub(crate) const GL_DECR_WRAP: GLenum = 0x8508;
-
 /// Whether `op` is a stencil operation Mesa takes (GL 1.1's six and GL 1.4's wrapping two).
 fn stencil_op_known(op: GLenum) -> bool {
     matches!(op, GL_KEEP | GL_ZERO | GL_REPLACE | GL_INCR | GL_DECR | GL_INVERT | GL_INCR_WRAP | GL_DECR_WRAP)

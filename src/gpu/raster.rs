@@ -144,8 +144,8 @@ fn stencil_op(op: GLenum) -> wgpu::StencilOperation {
         GL_INCR => S::IncrementClamp,
         GL_DECR => S::DecrementClamp,
         GL_INVERT => S::Invert,
-        0x8507 => S::IncrementWrap,
-        0x8508 => S::DecrementWrap,
+        GL_INCR_WRAP => S::IncrementWrap,
+        GL_DECR_WRAP => S::DecrementWrap,
         _ => S::Keep,
     }
 }

@@ -1287,6 +1287,13 @@ GLAPI void GLAPIENTRY glBlendEquationSeparateEXT(GLenum modeRGB, GLenum modeAlph
 GLAPI void GLAPIENTRY glBlendFuncSeparate(GLenum sfactorRGB, GLenum dfactorRGB, GLenum sfactorAlpha, GLenum dfactorAlpha);
 GLAPI void GLAPIENTRY glBlendFuncSeparateEXT(GLenum sfactorRGB, GLenum dfactorRGB, GLenum sfactorAlpha, GLenum dfactorAlpha);
 
+/* GL 1.4's wrapping stencil operations (GL_EXT_stencil_wrap). */
+#define GL_EXT_stencil_wrap 1
+#define GL_INCR_WRAP 0x8507
+#define GL_DECR_WRAP 0x8508
+#define GL_INCR_WRAP_EXT 0x8507
+#define GL_DECR_WRAP_EXT 0x8508
+
 /* GL 1.3's multisample state (GL_ARB_multisample's call): kept and answered; every gleval
  * buffer has one sample, so, as GL 1.3 section 3.2.1 says, it changes no fragment. */
 GLAPI void GLAPIENTRY glSampleCoverage(GLclampf value, GLboolean invert);
