@@ -58,6 +58,50 @@ pub struct TexParams {
     /// `GL_TEXTURE_WRAP_R` (GL 1.2's third coordinate): kept and answered, as Mesa does for
     /// every target, and unused by 1D and 2D textures.
     pub wrap_r: GLenum,
+    /// `GL_TEXTURE_BASE_LEVEL` (GL 1.2): the level a complete texture starts at.
+    pub base_level: i32,
+    /// `GL_TEXTURE_MAX_LEVEL` (GL 1.2): the last level a mipmap chain may use.
+    pub max_level: i32,
+    /// `GL_TEXTURE_MIN_LOD` and `GL_TEXTURE_MAX_LOD` (GL 1.2): the range λ is clamped to.
+    pub lod: LodRange,
+}
+
+/// GL 1.2's LOD clamp (§3.8.7): `GL_TEXTURE_MIN_LOD` and `GL_TEXTURE_MAX_LOD`, compared and
+/// hashed by their bits (the samplers are cached by their parameters).
+#[derive(Clone, Copy, Debug)]
+pub struct LodRange {
+    /// The least λ (initially −1000).
+    pub min: f32,
+    /// The greatest λ (initially 1000).
+    pub max: f32,
+}
+
+impl LodRange {
+    /// λ clamped to the range (GL 1.2 eq. 3.15; a NaN λ stays NaN).
+    #[must_use]
+    pub fn clamp(&self, lambda: f32) -> f32 {
+        if lambda > self.max {
+            self.max
+        } else if lambda < self.min {
+            self.min
+        } else {
+            lambda
+        }
+    }
+}
+
+impl PartialEq for LodRange {
+    fn eq(&self, other: &Self) -> bool {
+        (self.min.to_bits(), self.max.to_bits()) == (other.min.to_bits(), other.max.to_bits())
+    }
+}
+
+impl Eq for LodRange {}
+
+impl std::hash::Hash for LodRange {
+    fn hash<H: std::hash::Hasher>(&self, state: &mut H) {
+        (self.min.to_bits(), self.max.to_bits()).hash(state);
+    }
 }
 
 impl Default for TexParams {
@@ -68,6 +112,9 @@ impl Default for TexParams {
             wrap_s: GL_REPEAT,
             wrap_t: GL_REPEAT,
             wrap_r: GL_REPEAT,
+            base_level: 0,
+            max_level: 1000,
+            lod: LodRange { min: -1000.0, max: 1000.0 },
         }
     }
 }
@@ -89,7 +136,8 @@ pub(crate) type TextureAttrib = ([GLuint; 2], GLenum, [f32; 4], TexGen, [(TexPar
 /// target's bound object, its parameters, unit 0's environment and the texture matrix.
 #[derive(Clone, Debug)]
 pub struct BoundTexture {
-    /// Identifies the object and the version of its images (the renderer's upload cache key).
+    /// Identifies the chain: unique in the process, new whenever the chain is made again (an
+    /// image, the levels or the filter changed), the renderers' upload cache key.
     pub key: u64,
     /// Level 0 and, when the minification filter uses them, every further level down to 1×1.
     pub levels: Arc<Vec<TexLevel>>,
@@ -145,6 +193,13 @@ impl PartialEq for BoundTexture {
     }
 }
 
+/// A key no other texture chain has had, in any context of the process: renderers cache their
+/// uploads by it, and one renderer may draw several contexts' frames. 0 is the blank texture's.
+fn fresh_key() -> u64 {
+    static NEXT: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(1);
+    NEXT.fetch_add(1, std::sync::atomic::Ordering::Relaxed)
+}
+
 /// A texture object.
 #[derive(Clone, Debug, Default)]
 pub(super) struct TextureObject {
@@ -154,7 +209,7 @@ pub(super) struct TextureObject {
     /// The base format of each level.
     pub(super) formats: Vec<GLenum>,
     params: TexParams,
-    /// Unique among all objects and versions: changes whenever an image does.
+    /// The key of the chain last made (see [`BoundTexture::key`]).
     key: u64,
     /// The complete chain, made when first drawn with (dropped when an image changes).
     complete: Option<Option<Arc<Vec<TexLevel>>>>,
@@ -199,7 +254,6 @@ pub(crate) struct Textures {
     bound: [GLuint; 2],
     env_mode: GLenum,
     env_color: [f32; 4],
-    next_key: u64,
     max_name: GLuint,
 }
 
@@ -208,12 +262,11 @@ impl Default for Textures {
         let default = |dims, key| TextureObject { dims, key, ..TextureObject::default() };
         Self {
             objects: HashMap::new(),
-            defaults: [default(1, 1), default(2, 2)],
+            defaults: [default(1, fresh_key()), default(2, fresh_key())],
             proxies: [default(1, 0), default(2, 0)],
             bound: [0, 0],
             env_mode: GL_MODULATE,
             env_color: [0.0; 4],
-            next_key: 3,
             max_name: 0,
         }
     }
@@ -401,13 +454,11 @@ impl Gl {
         }
         let Some(t) = target_index(target) else { return self.set_error(GL_INVALID_ENUM) };
         if texture != 0 {
-            let next_key = &mut self.server.textures.next_key;
             let object = self.server.textures.objects.entry(texture).or_default();
             match object.dims {
                 0 => {
                     object.dims = t as u8 + 1;
-                    object.key = *next_key;
-                    *next_key += 1;
+                    object.key = fresh_key();
                 }
                 d if usize::from(d) != t + 1 => return self.set_error(GL_INVALID_OPERATION),
                 _ => {}
@@ -467,14 +518,17 @@ impl Gl {
         let generate = self.tex_gen_state();
         let (env_mode, env_color) = (self.server.textures.env_mode, self.server.textures.env_color);
         let object = self.bound_object_mut(dims);
-        let levels = object
-            .complete
-            .get_or_insert_with(|| complete_chain(&object.levels, &object.formats, &object.params))
-            .clone()?;
+        if object.complete.is_none() {
+            // A new chain (an image, the levels or the filter changed): a new key, so that a
+            // renderer uploads it again.
+            object.complete = Some(complete_chain(&object.levels, &object.formats, &object.params));
+            object.key = fresh_key();
+        }
+        let levels = object.complete.clone().flatten()?;
         Some(BoundTexture {
             key: object.key,
             levels,
-            base_format: object.formats[0],
+            base_format: object.formats[object.params.base_level as usize],
             params: object.params,
             env_mode,
             env_color,
@@ -539,12 +593,10 @@ impl Gl {
         }
     }
 
-    /// A level of the bound object changed: a new key (the renderer uploads again) and chain.
+    /// A level of the bound object changed: a new chain, under a new key (the renderer uploads
+    /// again).
     pub(super) fn image_changed(&mut self, dims: u8) {
-        let key = self.server.textures.next_key;
-        self.server.textures.next_key += 1;
         let object = self.bound_object_mut(dims);
-        object.key = key;
         object.complete = None;
         self.touch_state();
     }
@@ -553,19 +605,25 @@ impl Gl {
 /// Level 0 and, when the filter uses mipmaps, every level down to 1×1 with the sizes and base
 /// format GL requires (GL 1.1 §3.8.9); `None` when that chain is incomplete.
 fn complete_chain(levels: &[Option<TexLevel>], formats: &[GLenum], params: &TexParams) -> Option<Arc<Vec<TexLevel>>> {
-    let base = levels.first()?.as_ref()?;
+    let first = usize::try_from(params.base_level).ok()?;
+    let base = levels.get(first)?.as_ref()?;
     if base.width == 0 || base.height == 0 {
         return None;
     }
     if !params.uses_mipmaps() {
         return Some(Arc::new(vec![base.clone()]));
     }
-    let count = base.width.max(base.height).ilog2() as usize + 1;
-    let mut chain = Vec::with_capacity(count);
-    for i in 0..count {
-        let level = levels.get(i)?.as_ref()?;
+    // GL 1.2 §3.8.10: levels base..=min(p, max level), p = base + log2 of the largest side; a
+    // maximum below the base leaves the texture incomplete.
+    let last = (first + base.width.max(base.height).ilog2() as usize).min(usize::try_from(params.max_level).ok()?);
+    if last < first {
+        return None;
+    }
+    let mut chain = Vec::with_capacity(last - first + 1);
+    for (i, k) in (first..=last).enumerate() {
+        let level = levels.get(k)?.as_ref()?;
         let (w, h) = ((base.width >> i).max(1), (base.height >> i).max(1));
-        if level.width != w || level.height != h || formats[i] != formats[0] {
+        if level.width != w || level.height != h || formats[k] != formats[first] {
             return None;
         }
         chain.push(level.clone());

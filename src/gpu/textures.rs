@@ -211,8 +211,11 @@ fn sampler(device: &wgpu::Device, params: &TexParams, one_d: bool) -> wgpu::Samp
         mag_filter: filter(params.mag_filter),
         min_filter: min,
         mipmap_filter: mip.unwrap_or(wgpu::MipmapFilterMode::Nearest),
-        // Without a mipmap filter only level 0 is read (the chain then has one level anyway).
-        lod_max_clamp: if mip.is_some() { 32.0 } else { 0.0 },
+        // GL 1.2's LOD clamp, which also decides between magnification and minification, as
+        // Vulkan's does. WebGPU takes no negative bound: below 0 both magnify alike. Without a
+        // mipmap filter the chain has one level, so only the choice of filter is left to it.
+        lod_min_clamp: params.lod.min.clamp(0.0, 32.0),
+        lod_max_clamp: params.lod.max.clamp(params.lod.min.clamp(0.0, 32.0), 32.0),
         ..Default::default()
     })
 }

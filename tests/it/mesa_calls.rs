@@ -232,7 +232,8 @@ fn enum_value(token: &str) -> u32 {
     if let Some(hex) = token.strip_prefix("0x") {
         return u32::from_str_radix(hex, 16).unwrap_or_else(|_| panic!("bad enum {token}"));
     }
-    token.parse().unwrap_or_else(|_| panic!("unknown enum {token}"))
+    // A negative integer where C's interp reads `strtol` into a GLuint.
+    token.parse().or_else(|_| token.parse::<i32>().map(|v| v as u32)).unwrap_or_else(|_| panic!("unknown enum {token}"))
 }
 
 /// Floats as the bytes C's array holds (native byte order).

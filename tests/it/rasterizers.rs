@@ -242,3 +242,80 @@ fn blend_equations_are_mesas_on_both_rasterisers() {
         }
     }
 }
+
+/// GL 1.2's base and maximum levels and LOD clamp, drawn by both rasterisers, against what Mesa
+/// 22.3 (llvmpipe, OSMesa) sampled for the same calls (`tests/reference/pixels/texture_lod.c`
+/// prints these values): a 32 × 32 texture whose six levels are each one colour, modulating
+/// grey (0.5), on a square of `size` pixels, so λ = log2(32 / size) from level 0 (from the base
+/// level's size when the base moves). An incomplete chain (base 3 above maximum 2) leaves the
+/// square untextured.
+#[test]
+fn texture_lod_is_mesas_on_both_rasterisers() {
+    let mut renderer = match Renderer::new() {
+        Ok(r) => Some(r),
+        Err(e) if std::env::var("GLEVAL_REQUIRE_ADAPTER").is_ok_and(|v| v == "1") => panic!("{e}"),
+        Err(_) => None,
+    };
+    const COLOURS: [[u8; 3]; 6] = [[255, 0, 0], [0, 255, 0], [0, 0, 255], [255, 255, 0], [0, 255, 255], [255, 0, 255]];
+    // (size, base level, max level, min LOD, max LOD, min filter, Mesa's centre pixel)
+    let mesa: [(i32, i32, i32, f32, f32, GLenum, [u8; 4]); 9] = [
+        (8, 2, 1000, -1000.0, 1000.0, GL_NEAREST_MIPMAP_NEAREST, [0, 0, 128, 255]),
+        (4, 0, 1, -1000.0, 1000.0, GL_NEAREST_MIPMAP_NEAREST, [0, 128, 0, 255]),
+        (32, 0, 1000, 4.0, 1000.0, GL_NEAREST_MIPMAP_NEAREST, [0, 128, 128, 255]),
+        (4, 0, 1000, -1000.0, 1.0, GL_NEAREST_MIPMAP_NEAREST, [0, 128, 0, 255]),
+        (4, 1, 1000, -1000.0, 1000.0, GL_NEAREST, [0, 128, 0, 255]),
+        (8, 3, 2, -1000.0, 1000.0, GL_NEAREST_MIPMAP_NEAREST, [128, 128, 128, 255]),
+        (32, 0, 1000, 2.5, 1000.0, GL_NEAREST_MIPMAP_LINEAR, [64, 64, 64, 255]),
+        (16, 1, 3, -1000.0, 1000.0, GL_LINEAR_MIPMAP_LINEAR, [0, 128, 0, 255]),
+        (2, 2, 1000, 0.5, 1.5, GL_NEAREST_MIPMAP_LINEAR, [64, 128, 64, 255]),
+    ];
+    for (size, base, max, min_lod, max_lod, min_filter, expected) in mesa {
+        let mut gl = Gl::new(32, 32);
+        gl.pixel_storei(GL_UNPACK_ALIGNMENT, 1);
+        for (level, colour) in COLOURS.iter().enumerate() {
+            let side = 32 >> level;
+            let texels: Vec<u8> = (0..side * side).flat_map(|_| *colour).collect();
+            gl.tex_image_2d(
+                GL_TEXTURE_2D,
+                level as i32,
+                GL_RGB as i32,
+                side,
+                side,
+                0,
+                GL_RGB,
+                GL_UNSIGNED_BYTE,
+                &texels,
+            );
+        }
+        gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST as i32);
+        gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, base);
+        gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, max);
+        gl.tex_parameterf(GL_TEXTURE_2D, GL_TEXTURE_MIN_LOD, min_lod);
+        gl.tex_parameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_LOD, max_lod);
+        gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, min_filter as i32);
+        gl.enable(GL_TEXTURE_2D);
+        gl.color3f(0.5, 0.5, 0.5);
+        gl.viewport(0, 0, size, size);
+        gl.begin(GL_QUADS);
+        for (x, y) in [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)] {
+            gl.tex_coord2f(x, y);
+            gl.vertex2f(2.0 * x - 1.0, 2.0 * y - 1.0);
+        }
+        gl.end();
+        assert_eq!(gl.get_error(), GL_NO_ERROR);
+        let frame = gl.take_frame();
+        // The centre pixel (size / 2, size / 2) in GL's rows, the image's rows top down.
+        let at = |pixels: &[u8]| -> [u8; 4] {
+            let (x, row) = ((size / 2) as usize, (32 - 1 - size / 2) as usize);
+            pixels[(row * 32 + x) * 4..][..4].try_into().unwrap()
+        };
+        let close = |got: [u8; 4]| got.iter().zip(expected).all(|(&g, e)| g.abs_diff(e) <= 1);
+        let case = format!("size {size}, levels {base}..={max}, LOD {min_lod}..={max_lod}, filter {min_filter:#x}");
+        let soft = at(&soft::render_frame(&frame, 32, 32).pixels);
+        assert!(close(soft), "CPU, {case}: {soft:?}, Mesa {expected:?}");
+        if let Some(renderer) = renderer.as_mut() {
+            let wgpu = at(&renderer.render_frame(&frame, 32, 32).expect("wgpu renders").pixels);
+            assert!(close(wgpu), "wgpu, {case}: {wgpu:?}, Mesa {expected:?}");
+        }
+    }
+}

@@ -1287,6 +1287,10 @@ GLAPI void GLAPIENTRY glBlendEquationSeparateEXT(GLenum modeRGB, GLenum modeAlph
 GLAPI void GLAPIENTRY glBlendFuncSeparate(GLenum sfactorRGB, GLenum dfactorRGB, GLenum sfactorAlpha, GLenum dfactorAlpha);
 GLAPI void GLAPIENTRY glBlendFuncSeparateEXT(GLenum sfactorRGB, GLenum dfactorRGB, GLenum sfactorAlpha, GLenum dfactorAlpha);
 
+/* GL 1.2's texture level and LOD range (GL_SGIS_texture_lod): GL_TEXTURE_BASE_LEVEL,
+ * GL_TEXTURE_MAX_LEVEL, GL_TEXTURE_MIN_LOD and GL_TEXTURE_MAX_LOD above. */
+#define GL_SGIS_texture_lod 1
+
 /* GL 1.4's wrapping stencil operations (GL_EXT_stencil_wrap). */
 #define GL_EXT_stencil_wrap 1
 #define GL_INCR_WRAP 0x8507

@@ -11,10 +11,12 @@ use crate::gl::Gl;
 
 impl Gl {
     /// `glTexParameteri` for `GL_TEXTURE_MIN_FILTER`, `GL_TEXTURE_MAG_FILTER`,
-    /// `GL_TEXTURE_WRAP_S`, `GL_TEXTURE_WRAP_T` and `GL_TEXTURE_WRAP_R` of the bound object. Another target or
-    /// name, or a value the name does not take → `GL_INVALID_ENUM`.
+    /// `GL_TEXTURE_WRAP_S`, `GL_TEXTURE_WRAP_T` and `GL_TEXTURE_WRAP_R`, and GL 1.2's
+    /// `GL_TEXTURE_BASE_LEVEL` and `GL_TEXTURE_MAX_LEVEL`, of the bound object. Another target or
+    /// name, or a value the name does not take → `GL_INVALID_ENUM`; a negative level →
+    /// `GL_INVALID_VALUE`.
     pub fn tex_parameteri(&mut self, target: GLenum, pname: GLenum, param: GLint) {
-        if pname == GL_TEXTURE_PRIORITY {
+        if matches!(pname, GL_TEXTURE_PRIORITY | GL_TEXTURE_MIN_LOD | GL_TEXTURE_MAX_LOD) {
             // A float parameter: Mesa converts the integer as it is.
             return self.tex_parameterfv(target, pname, &[param as GLfloat]);
         }
@@ -30,10 +32,14 @@ impl Gl {
             GL_TEXTURE_WRAP_S | GL_TEXTURE_WRAP_T | GL_TEXTURE_WRAP_R => {
                 matches!(value, GL_REPEAT | GL_CLAMP | GL_CLAMP_TO_EDGE)
             }
+            GL_TEXTURE_BASE_LEVEL | GL_TEXTURE_MAX_LEVEL => true,
             _ => false,
         };
         if !ok {
             return self.set_error(GL_INVALID_ENUM);
+        }
+        if matches!(pname, GL_TEXTURE_BASE_LEVEL | GL_TEXTURE_MAX_LEVEL) {
+            return self.set_level_range(t, pname, param);
         }
         let object = self.bound_object_mut(t as u8 + 1);
         let field = match pname {
@@ -45,6 +51,21 @@ impl Gl {
         };
         *field = value;
         // The complete chain depends on whether the filter reads mipmaps.
+        object.complete = None;
+        self.touch_state();
+    }
+
+    /// `GL_TEXTURE_BASE_LEVEL` or `GL_TEXTURE_MAX_LEVEL` of target `t`'s bound object.
+    fn set_level_range(&mut self, t: usize, pname: GLenum, level: GLint) {
+        if level < 0 {
+            return self.set_error(GL_INVALID_VALUE);
+        }
+        let object = self.bound_object_mut(t as u8 + 1);
+        if pname == GL_TEXTURE_BASE_LEVEL {
+            object.params.base_level = level;
+        } else {
+            object.params.max_level = level;
+        }
         object.complete = None;
         self.touch_state();
     }

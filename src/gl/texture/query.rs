@@ -5,7 +5,7 @@
 //! in Mesa's order and its conversions.
 
 use super::super::consts::*;
-use super::super::state_var::{c_int, float_to_int};
+use super::super::state_var::{c_int, float_to_int, iround};
 use super::super::types::*;
 use super::super::variants::GlComponent;
 use super::super::Gl;
@@ -50,6 +50,24 @@ impl ObjectExtras {
             self.level_formats.resize(level + 1, (1, 0));
         }
         self.level_formats[level] = (internal, border);
+    }
+}
+
+/// A level given as a float, as Mesa's `_mesa_TexParameterf` converts it: rounded
+/// half away from zero, saturated to `GLint` (`glTexParameterf(GL_TEXTURE_BASE_LEVEL, 3.75)` is
+/// level 4, -0.5 is -1; measured on Mesa 22.3).
+fn round_level(p: GLfloat) -> GLint {
+    let p = f64::from(p);
+    if p > 0.0 {
+        if p > f64::from(GLint::MAX) {
+            GLint::MAX
+        } else {
+            (p + 0.5) as GLint
+        }
+    } else if p < f64::from(GLint::MIN) {
+        GLint::MIN
+    } else {
+        (p - 0.5) as GLint
     }
 }
 
@@ -111,8 +129,14 @@ impl Gl {
     /// `GL_TEXTURE_PRIORITY` (clamped to [0, 1]). A short slice → `GL_INVALID_VALUE`.
     pub fn tex_parameterfv(&mut self, target: GLenum, pname: GLenum, params: &[GLfloat]) {
         match pname {
-            GL_TEXTURE_BORDER_COLOR | GL_TEXTURE_PRIORITY => self.tex_parameter_values(target, pname, params),
+            GL_TEXTURE_BORDER_COLOR | GL_TEXTURE_PRIORITY | GL_TEXTURE_MIN_LOD | GL_TEXTURE_MAX_LOD => {
+                self.tex_parameter_values(target, pname, params)
+            }
             _ => match params.first() {
+                // Mesa truncates an enum given as a float (9729.75 is GL_LINEAR), and rounds a level.
+                Some(&p) if matches!(pname, GL_TEXTURE_BASE_LEVEL | GL_TEXTURE_MAX_LEVEL) => {
+                    self.tex_parameteri(target, pname, round_level(p))
+                }
                 Some(&p) => self.tex_parameteri(target, pname, p as GLint),
                 None => self.set_error(GL_INVALID_VALUE),
             },
@@ -126,7 +150,7 @@ impl Gl {
                 let v: Vec<f32> = params.iter().take(4).map(|p| p.normalized()).collect();
                 self.tex_parameter_values(target, pname, &v);
             }
-            GL_TEXTURE_PRIORITY => {
+            GL_TEXTURE_PRIORITY | GL_TEXTURE_MIN_LOD | GL_TEXTURE_MAX_LOD => {
                 let v: Vec<f32> = params.iter().take(1).map(|&p| p as f32).collect();
                 self.tex_parameter_values(target, pname, &v);
             }
@@ -149,10 +173,18 @@ impl Gl {
         let needed = Self::tex_parameter_param_count(pname);
         let Some(values) = params.get(..needed) else { return self.set_error(GL_INVALID_VALUE) };
         let extra = &mut self.bound_object_mut(t as u8 + 1).extra;
-        if pname == GL_TEXTURE_BORDER_COLOR {
-            extra.border_color.copy_from_slice(values);
-        } else {
-            extra.priority = values[0].clamp(0.0, 1.0);
+        match pname {
+            GL_TEXTURE_BORDER_COLOR => extra.border_color.copy_from_slice(values),
+            GL_TEXTURE_PRIORITY => extra.priority = values[0].clamp(0.0, 1.0),
+            _ => {
+                let object = self.bound_object_mut(t as u8 + 1);
+                let lod = &mut object.params.lod;
+                if pname == GL_TEXTURE_MIN_LOD {
+                    lod.min = values[0];
+                } else {
+                    lod.max = values[0];
+                }
+            }
         }
         self.touch_state();
     }
@@ -170,9 +202,13 @@ impl Gl {
     /// priority too (Mesa), the rest as they are.
     pub fn get_tex_parameteriv(&mut self, target: GLenum, pname: GLenum, params: &mut [GLint]) {
         if let Some(v) = self.tex_parameter_answer(target, pname, params.len()) {
-            let normalized = matches!(pname, GL_TEXTURE_BORDER_COLOR | GL_TEXTURE_PRIORITY);
             for (out, x) in params.iter_mut().zip(v) {
-                *out = if normalized { float_to_int(x.into()) } else { c_int(x) };
+                *out = match pname {
+                    GL_TEXTURE_BORDER_COLOR | GL_TEXTURE_PRIORITY => float_to_int(x.into()),
+                    // Mesa's IROUND of the float LOD limits.
+                    GL_TEXTURE_MIN_LOD | GL_TEXTURE_MAX_LOD => iround(x.into()),
+                    _ => c_int(x),
+                };
             }
         }
     }
@@ -193,6 +229,10 @@ impl Gl {
             GL_TEXTURE_WRAP_S => vec![p.wrap_s as f32],
             GL_TEXTURE_WRAP_T => vec![p.wrap_t as f32],
             GL_TEXTURE_WRAP_R => vec![p.wrap_r as f32],
+            GL_TEXTURE_BASE_LEVEL => vec![p.base_level as f32],
+            GL_TEXTURE_MAX_LEVEL => vec![p.max_level as f32],
+            GL_TEXTURE_MIN_LOD => vec![p.lod.min],
+            GL_TEXTURE_MAX_LOD => vec![p.lod.max],
             GL_TEXTURE_BORDER_COLOR => object.extra.border_color.map(|c| c.clamp(0.0, 1.0)).to_vec(),
             GL_TEXTURE_PRIORITY => vec![object.extra.priority],
             GL_TEXTURE_RESIDENT => vec![1.0],

@@ -1,5 +1,6 @@
 //! Texture sampling for the CPU rasteriser: GL's filters, wrap modes and mipmap selection
-//! (GL 1.1 spec §3.8.5–3.8.8) as the wgpu sampler of `gpu/textures.rs` does them, so both
+//! (GL 1.1 spec §3.8.5–3.8.8, with GL 1.2's LOD clamp; the levels from the base level on are
+//! the bound texture's) as the wgpu sampler of `gpu/textures.rs` does them, so both
 //! rasterisers read the same texels. `GL_CLAMP` clamps to the edge here; the fragment stage
 //! clamps the coordinate and weighs in the border (`fragment.rs`), as `fragment.wgsl` does.
 
@@ -26,7 +27,8 @@ impl<'a> Sampler<'a> {
         let base = &levels[0];
         let (w, h) = (base.width as f32, base.height as f32);
         let rho = (dx[0] * w).hypot(dx[1] * h).max((dy[0] * w).hypot(dy[1] * h));
-        let lambda = rho.log2();
+        // GL 1.2's LOD clamp decides between magnification and minification too (eq. 3.15).
+        let lambda = params.lod.clamp(rho.log2());
         // Magnification, also where ρ is 0 or not a number (λ is −∞ or NaN).
         if lambda.is_nan() || lambda <= 0.0 {
             return self.filter(base, params.mag_filter, st);
