@@ -257,8 +257,9 @@ fn texture_lod_is_mesas_on_both_rasterisers() {
         Err(_) => None,
     };
     const COLOURS: [[u8; 3]; 6] = [[255, 0, 0], [0, 255, 0], [0, 0, 255], [255, 255, 0], [0, 255, 255], [255, 0, 255]];
-    // (size, base level, max level, min LOD, max LOD, min filter, Mesa's centre pixel)
-    let mesa: [(i32, i32, i32, f32, f32, GLenum, [u8; 4]); 9] = [
+    /// Size, base level, max level, min LOD, max LOD, min filter, Mesa's centre pixel.
+    type Case = (i32, i32, i32, f32, f32, GLenum, [u8; 4]);
+    let mesa: [Case; 9] = [
         (8, 2, 1000, -1000.0, 1000.0, GL_NEAREST_MIPMAP_NEAREST, [0, 0, 128, 255]),
         (4, 0, 1, -1000.0, 1000.0, GL_NEAREST_MIPMAP_NEAREST, [0, 128, 0, 255]),
         (32, 0, 1000, 4.0, 1000.0, GL_NEAREST_MIPMAP_NEAREST, [0, 128, 128, 255]),
