@@ -40,7 +40,7 @@ pub(crate) enum BlendCall {
 }
 
 /// Whether `factor` is a blend factor GL 1.5 takes, as source or destination alike (GL 1.4
-/// table 4.1 and 4.2: GL 1.4 added the colour factors to both sides, and Mesa's desktop GL takes
+/// table 4.1 and 4.2: GL 1.4 added the colour factors to both sides, as `GL_NV_blend_square` did, and Mesa's desktop GL takes
 /// `GL_SRC_ALPHA_SATURATE` as a destination too). Mesa 22.3 also takes the dual-source factors
 /// of `GL_ARB_blend_func_extended` (GL 3.3), which gleval does not claim: `GL_INVALID_ENUM` here,
 /// as GL 1.5 says.

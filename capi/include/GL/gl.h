@@ -1272,6 +1272,7 @@ GLAPI void GLAPIENTRY glMultiDrawElementsEXT(GLenum mode, const GLsizei *count, 
 #define GL_EXT_blend_subtract 1
 #define GL_EXT_blend_func_separate 1
 #define GL_EXT_blend_equation_separate 1
+#define GL_NV_blend_square 1
 #define GL_BLEND_DST_RGB 0x80C8
 #define GL_BLEND_SRC_RGB 0x80C9
 #define GL_BLEND_DST_ALPHA 0x80CA
