@@ -125,7 +125,10 @@ fn fill(target: &mut Target<'_>, mut v: [&RasterVertex; 3]) {
             let covered = (0..3).all(|k| e[k] > 0 || (e[k] == 0 && top_left[k]));
             if covered {
                 let (l, f) = at(e);
-                let depth = l[0] * z[0] + l[1] * z[1] + l[2] * z[2];
+                // From vertex 0 by the other two's differences, as llvmpipe's plane equation
+                // does: a polygon of one depth has that depth at every fragment (the three
+                // weights need not add up to exactly 1 in floats).
+                let depth = z[0] + l[1] * (z[1] - z[0]) + l[2] * (z[2] - z[0]);
                 let slope = if textured {
                     let right = at(std::array::from_fn(|k| e[k] + dx[k] * step)).1;
                     let below = at(std::array::from_fn(|k| e[k] + dy[k] * step)).1;

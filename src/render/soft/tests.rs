@@ -244,3 +244,25 @@ fn pixel_tie_breaking_is_llvmpipe_s() {
     assert_eq!(drawn_box(Topology::Lines, &lines), [9, 39, 9, 39]);
     assert_eq!(drawn_box(Topology::Lines, &[(10.5, 30.5), (40.5, 30.5)]), [10, 39, 30, 30]);
 }
+
+/// A polygon of one window depth has that depth at every fragment, whatever its vertices'
+/// w (piglit's `gl-1.4-polygon-offset` reads depth slopes off a quad facing the eye through a
+/// perspective projection, and finds the slope 0 on Mesa).
+#[test]
+fn a_polygon_of_one_depth_is_flat() {
+    let mut gl = crate::gl::Gl::new(W as i32, H as i32);
+    gl.matrix_mode(GL_PROJECTION);
+    gl.frustum(-1.0, 1.0, -1.0, 1.0, 1.0, 100.0);
+    gl.matrix_mode(GL_MODELVIEW);
+    gl.rotatef(17.0, 0.0, 0.0, 1.0);
+    gl.enable(GL_DEPTH_TEST);
+    gl.begin(GL_QUADS);
+    for (x, y) in [(-4.3, -4.1), (4.7, -4.2), (4.4, 4.5), (-4.2, 4.6)] {
+        gl.vertex3f(x, y, -2.5);
+    }
+    gl.end();
+    let window = super::render_window(&gl.take_frame(), W, H);
+    let drawn: Vec<f32> = window.depth.iter().copied().filter(|&d| d < 1.0).collect();
+    assert_eq!(drawn.len(), (W * H) as usize, "the quad covers the window");
+    assert!(drawn.iter().all(|&d| d == drawn[0]), "depths {:?}", &drawn[..8]);
+}
