@@ -320,3 +320,98 @@ fn texture_lod_is_mesas_on_both_rasterisers() {
         }
     }
 }
+
+/// GL 1.2's `GL_CLAMP_TO_EDGE` beside GL 1.1's `GL_CLAMP` and `GL_REPEAT`, drawn by both
+/// rasterisers, against what Mesa 22.3 (llvmpipe, OSMesa) sampled for the same calls
+/// (`tests/reference/pixels/edge_clamp.c` prints these values): a 2 × 2 texture (red, green /
+/// blue, white) filtered linearly with border colour (1, 0, 1, 1), on an 8 × 8 square whose
+/// coordinates run from −0.5 to 1.5; the diagonal's pixels. Clamping to the edge never mixes in
+/// the border; `GL_CLAMP` does, as Mesa's does. Within 2/255: lavapipe weighs texels in fixed
+/// point.
+#[test]
+fn edge_clamp_is_mesas_on_both_rasterisers() {
+    let mut renderer = match Renderer::new() {
+        Ok(r) => Some(r),
+        Err(e) if std::env::var("GLEVAL_REQUIRE_ADAPTER").is_ok_and(|v| v == "1") => panic!("{e}"),
+        Err(_) => None,
+    };
+    let shared = [[159, 64, 64, 255], [159, 191, 191, 255]];
+    let mesa: [([GLenum; 2], [[u8; 4]; 8]); 4] = [
+        (
+            [GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE],
+            [[255, 0, 0, 255], [255, 0, 0, 255], [255, 0, 0, 255], shared[0], shared[1], [255; 4], [255; 4], [255; 4]],
+        ),
+        (
+            [GL_CLAMP, GL_CLAMP],
+            [
+                [255, 0, 191, 255],
+                [255, 0, 191, 255],
+                [255, 0, 112, 255],
+                shared[0],
+                shared[1],
+                [255, 143, 255, 255],
+                [255, 64, 255, 255],
+                [255, 64, 255, 255],
+            ],
+        ),
+        (
+            [GL_CLAMP_TO_EDGE, GL_CLAMP],
+            [
+                [255, 0, 128, 255],
+                [255, 0, 128, 255],
+                [255, 0, 64, 255],
+                shared[0],
+                shared[1],
+                [255, 191, 255, 255],
+                [255, 128, 255, 255],
+                [255, 128, 255, 255],
+            ],
+        ),
+        (
+            [GL_REPEAT, GL_CLAMP_TO_EDGE],
+            [
+                [64, 191, 0, 255],
+                [64, 191, 0, 255],
+                [191, 64, 0, 255],
+                shared[0],
+                shared[1],
+                [191, 191, 255, 255],
+                [64, 64, 255, 255],
+                [64, 64, 255, 255],
+            ],
+        ),
+    ];
+    for ([wrap_s, wrap_t], expected) in mesa {
+        let mut gl = Gl::new(8, 8);
+        gl.pixel_storei(GL_UNPACK_ALIGNMENT, 1);
+        let texels = [255u8, 0, 0, 0, 255, 0, 0, 0, 255, 255, 255, 255];
+        gl.tex_image_2d(GL_TEXTURE_2D, 0, GL_RGB as i32, 2, 2, 0, GL_RGB, GL_UNSIGNED_BYTE, &texels);
+        gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR as i32);
+        gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR as i32);
+        gl.tex_parameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, &[1.0, 0.0, 1.0, 1.0]);
+        gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE as i32);
+        gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, wrap_s as i32);
+        gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, wrap_t as i32);
+        gl.enable(GL_TEXTURE_2D);
+        gl.begin(GL_QUADS);
+        for (x, y) in [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)] {
+            gl.tex_coord2f(0.5 + x, 0.5 + y);
+            gl.vertex2f(x, y);
+        }
+        gl.end();
+        assert_eq!(gl.get_error(), GL_NO_ERROR);
+        let frame = gl.take_frame();
+        // The diagonal (i, i) in GL's rows; the image's rows run top down.
+        let diagonal = |pixels: &[u8]| -> Vec<[u8; 4]> {
+            (0..8).map(|i| pixels[((7 - i) * 8 + i) * 4..][..4].try_into().unwrap()).collect()
+        };
+        let close =
+            |got: &[[u8; 4]]| got.iter().zip(&expected).all(|(g, e)| g.iter().zip(e).all(|(a, b)| a.abs_diff(*b) <= 2));
+        let soft = diagonal(&soft::render_frame(&frame, 8, 8).pixels);
+        assert!(close(&soft), "CPU, wraps {wrap_s:#x} {wrap_t:#x}: {soft:?}, Mesa {expected:?}");
+        if let Some(renderer) = renderer.as_mut() {
+            let wgpu = diagonal(&renderer.render_frame(&frame, 8, 8).expect("wgpu renders").pixels);
+            assert!(close(&wgpu), "wgpu, wraps {wrap_s:#x} {wrap_t:#x}: {wgpu:?}, Mesa {expected:?}");
+        }
+    }
+}

@@ -1292,6 +1292,11 @@ GLAPI void GLAPIENTRY glBlendFuncSeparateEXT(GLenum sfactorRGB, GLenum dfactorRG
  * GL_TEXTURE_MAX_LEVEL, GL_TEXTURE_MIN_LOD and GL_TEXTURE_MAX_LOD above. */
 #define GL_SGIS_texture_lod 1
 
+/* GL 1.2's GL_CLAMP_TO_EDGE (above), by its extensions' names. */
+#define GL_EXT_texture_edge_clamp 1
+#define GL_SGIS_texture_edge_clamp 1
+#define GL_CLAMP_TO_EDGE_SGIS 0x812F
+
 /* GL 1.4's wrapping stencil operations (GL_EXT_stencil_wrap). */
 #define GL_EXT_stencil_wrap 1
 #define GL_INCR_WRAP 0x8507
