@@ -97,19 +97,29 @@ pub struct DrawState {
 
 impl DrawState {
     /// What normals are transformed by into eye coordinates: the inverse transpose of the
-    /// modelview's upper 3×3 (GL 1.1 §2.10.3).
+    /// modelview's upper 3×3 (GL 1.1 §2.10.3), and with `GL_RESCALE_NORMAL` (GL 1.2 §2.10.3)
+    /// scaled by 1/√(m₃₁² + m₃₂² + m₃₃²), the length of the inverse's third row (Mesa's
+    /// `_NormalScale`): under a uniform scale a unit normal stays unit, under another it does
+    /// not (measured on Mesa 22.3, `rescale_normal.calls`). `GL_NORMALIZE` normalises after.
     #[must_use]
     pub fn normal_matrix(&self) -> Mat3 {
-        Mat3::from_mat4(self.modelview).inverse().transpose()
+        let m = Mat3::from_mat4(self.modelview).inverse().transpose();
+        if self.rescale_normal && !self.normalize {
+            let row = m.z_axis.length();
+            if row > 0.0 {
+                return m * (1.0 / row);
+            }
+        }
+        m
     }
 
     /// A normal in eye coordinates through `normal_matrix` (this state's
     /// [`DrawState::normal_matrix`], computed once per primitive by the caller), made unit length
-    /// when `GL_NORMALIZE` or `GL_RESCALE_NORMAL` asks for it.
+    /// when `GL_NORMALIZE` asks for it.
     #[must_use]
     pub fn eye_normal(&self, normal_matrix: Mat3, normal: [f32; 3]) -> Vec3 {
         let n = normal_matrix * Vec3::from_array(normal);
-        if self.normalize || self.rescale_normal {
+        if self.normalize {
             n.normalize_or_zero()
         } else {
             n

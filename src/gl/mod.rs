@@ -126,10 +126,10 @@ impl Tessellator {
 /// What gleval implements beyond GL 1.1, each extension once it is whole, and nothing more:
 /// `glWindowPos` (`raster_pos.rs`), blending's constant colour, equations and separate factors
 /// (`blend.rs`), `glDrawRangeElements` and the multi-draws (`array_draws.rs`), the wrapping
-/// stencil operations (`stencil.rs`), `GL_CLAMP_TO_EDGE` and the texture level and LOD range
+/// stencil operations (`stencil.rs`), `GL_RESCALE_NORMAL` (`frame.rs`), `GL_CLAMP_TO_EDGE` and the texture level and LOD range
 /// (`texture/params.rs`).
 const EXTENSIONS: &str =
-    "GL_ARB_window_pos GL_EXT_blend_color GL_EXT_blend_equation_separate GL_EXT_blend_func_separate GL_EXT_blend_minmax GL_EXT_blend_subtract GL_EXT_draw_range_elements GL_EXT_multi_draw_arrays GL_EXT_stencil_wrap GL_EXT_texture_edge_clamp GL_NV_blend_square GL_SGIS_texture_edge_clamp GL_SGIS_texture_lod";
+    "GL_ARB_window_pos GL_EXT_blend_color GL_EXT_blend_equation_separate GL_EXT_blend_func_separate GL_EXT_blend_minmax GL_EXT_blend_subtract GL_EXT_draw_range_elements GL_EXT_multi_draw_arrays GL_EXT_rescale_normal GL_EXT_stencil_wrap GL_EXT_texture_edge_clamp GL_NV_blend_square GL_SGIS_texture_edge_clamp GL_SGIS_texture_lod";
 
 /// A GL context without a GPU: GL state plus the recording of what is drawn.
 ///

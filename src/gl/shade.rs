@@ -73,8 +73,8 @@ impl<'a> Shader<'a> {
         ShadedVertex { clip, eye, front, back, tex, fog }
     }
 
-    /// The vertex's normal in eye coordinates, normalised when `GL_NORMALIZE` or
-    /// `GL_RESCALE_NORMAL` asks for it (what lighting and the sphere and normal maps read).
+    /// The vertex's normal in eye coordinates, rescaled by `GL_RESCALE_NORMAL` and normalised
+    /// by `GL_NORMALIZE` (what lighting and the sphere and normal maps read).
     fn eye_normal(&self, v: &Vertex) -> Vec3 {
         self.state.eye_normal(self.normal_matrix, v.normal)
     }

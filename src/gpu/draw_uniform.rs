@@ -62,7 +62,7 @@ pub(crate) fn draw_uniform(state: &DrawState, polygon: bool, (width, height): (u
 
 /// The lighting fields, while `GL_LIGHTING` is on (they stay zero while it is off).
 fn set_lighting(draw: &mut GpuDraw, state: &DrawState, l: &Lighting) {
-    draw.flags = [1.0, flag(l.two_side), flag(l.local_viewer), flag(state.normalize || state.rescale_normal)];
+    draw.flags = [1.0, flag(l.two_side), flag(l.local_viewer), flag(state.normalize)];
     let (face, mode) = l.color_material;
     let on = |f: GLenum| flag(state.color_material && (face == f || face == GL_FRONT_AND_BACK));
     let mode = match mode {

@@ -1292,6 +1292,10 @@ GLAPI void GLAPIENTRY glBlendFuncSeparateEXT(GLenum sfactorRGB, GLenum dfactorRG
  * GL_TEXTURE_MAX_LEVEL, GL_TEXTURE_MIN_LOD and GL_TEXTURE_MAX_LOD above. */
 #define GL_SGIS_texture_lod 1
 
+/* GL 1.2's GL_RESCALE_NORMAL (above), by its extension's name. */
+#define GL_EXT_rescale_normal 1
+#define GL_RESCALE_NORMAL_EXT 0x803A
+
 /* GL 1.2's GL_CLAMP_TO_EDGE (above), by its extensions' names. */
 #define GL_EXT_texture_edge_clamp 1
 #define GL_SGIS_texture_edge_clamp 1
