@@ -262,7 +262,8 @@ static void fragment_call(void) {
     switch (pick(9)) {
     case 7: glBlendFuncSeparate(ANY(factors), ANY(factors), ANY(factors), ANY(factors));
             glBlendEquationSeparate(ANY(equations), ANY(equations)); glBlendEquation(ANY(equations));
-            glBlendColor(f(), f(), f(), f()); break;
+            glBlendColor(f(), f(), f(), f());
+            glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MIN_LOD + pick(4), f()); break;
     case 0: glStencilFunc(ANY(funcs), ANY(grids), (GLuint)ANY(grids)); glStencilOp(ANY(ops), ANY(ops), ANY(ops)); break;
     case 1: glStencilMask((GLuint)ANY(grids)); glClearStencil(ANY(grids)); glClear(GL_STENCIL_BUFFER_BIT); break;
     case 2: glAccum(ANY(accums), f()); glClearAccum(f(), f(), f(), f()); break;

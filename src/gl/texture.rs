@@ -236,6 +236,18 @@ impl TextureObject {
         self.extra.set_level_format(level, internal, border);
     }
 
+    /// New parameters. The complete chain, and with it the key a renderer caches its upload by,
+    /// is made again only when what the chain depends on changed: whether the minification
+    /// filter reads mipmaps, and the level range. A wrap, a filter or an LOD clamp set every
+    /// frame, or a `glPopAttrib(GL_TEXTURE_BIT)`, uploads nothing again.
+    pub(super) fn set_params(&mut self, params: TexParams) {
+        let chain = |p: &TexParams| (p.uses_mipmaps(), p.base_level, p.max_level);
+        if chain(&params) != chain(&self.params) {
+            self.complete = None;
+        }
+        self.params = params;
+    }
+
     /// `glPrioritizeTextures`: `GL_TEXTURE_PRIORITY`, clamped to [0, 1].
     pub(super) fn set_priority(&mut self, priority: f32) {
         self.extra.priority = priority.clamp(0.0, 1.0);
@@ -563,7 +575,7 @@ impl Gl {
         self.server.textures.bound = bound.map(|name| if exists(name) { name } else { 0 });
         for (dims, (params, sampling)) in [1, 2].into_iter().zip(objects) {
             let object = self.bound_object_mut(dims);
-            (object.params, object.complete) = (params, None);
+            object.set_params(params);
             object.extra.set_sampling(sampling);
         }
         (self.server.textures.env_mode, self.server.textures.env_color) = (env_mode, env_color);
@@ -651,6 +663,26 @@ mod tests {
         gl.pixel_storei(GL_UNPACK_ALIGNMENT, 1);
         gl.tex_image_2d(GL_TEXTURE_2D, 0, GL_RGB as i32, 2, 2, 0, GL_RGB, GL_UNSIGNED_BYTE, &texels);
         name[0]
+    }
+
+    #[test]
+    fn a_new_key_only_with_a_new_chain() {
+        let mut gl = Gl::new(4, 4);
+        checker(&mut gl);
+        gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST as i32);
+        gl.enable(GL_TEXTURE_2D);
+        let key = |gl: &mut Gl| gl.bound_texture().map(|t| t.key);
+        let first = key(&mut gl);
+        gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP as i32);
+        gl.tex_parameterf(GL_TEXTURE_2D, GL_TEXTURE_MIN_LOD, 2.0);
+        gl.push_attrib(GL_TEXTURE_BIT);
+        gl.pop_attrib();
+        assert_eq!(key(&mut gl), first, "the same chain, the same upload");
+        gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, 0);
+        assert_eq!(key(&mut gl), first);
+        gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+        let second = key(&mut gl);
+        assert!(second.is_some() && second != first, "a new level range is a new chain");
     }
 
     #[test]

@@ -202,6 +202,9 @@ fn sampler(device: &wgpu::Device, params: &TexParams, one_d: bool) -> wgpu::Samp
         GL_NEAREST_MIPMAP_LINEAR => (wgpu::FilterMode::Nearest, Some(wgpu::MipmapFilterMode::Linear)),
         _ => (wgpu::FilterMode::Linear, Some(wgpu::MipmapFilterMode::Linear)),
     };
+    // A NaN bound clamps nothing, as on the CPU (`LodRange::clamp`); WebGPU takes no NaN.
+    let lod_min = if params.lod.min.is_nan() { 0.0 } else { params.lod.min.clamp(0.0, 32.0) };
+    let lod_max = if params.lod.max.is_nan() { 32.0 } else { params.lod.max.clamp(lod_min, 32.0) };
     let wrap = |w: GLenum| if w == GL_REPEAT { wgpu::AddressMode::Repeat } else { wgpu::AddressMode::ClampToEdge };
     let (u, v) = (wrap(params.wrap_s), if one_d { wgpu::AddressMode::Repeat } else { wrap(params.wrap_t) });
     device.create_sampler(&wgpu::SamplerDescriptor {
@@ -214,8 +217,8 @@ fn sampler(device: &wgpu::Device, params: &TexParams, one_d: bool) -> wgpu::Samp
         // GL 1.2's LOD clamp, which also decides between magnification and minification, as
         // Vulkan's does. WebGPU takes no negative bound: below 0 both magnify alike. Without a
         // mipmap filter the chain has one level, so only the choice of filter is left to it.
-        lod_min_clamp: params.lod.min.clamp(0.0, 32.0),
-        lod_max_clamp: params.lod.max.clamp(params.lod.min.clamp(0.0, 32.0), 32.0),
+        lod_min_clamp: lod_min,
+        lod_max_clamp: lod_max,
         ..Default::default()
     })
 }

@@ -135,6 +135,16 @@ fn the_cpu_rasteriser_draws_what_wgpu_draws() {
     }
 }
 
+/// wgpu's renderer where an adapter exists (lavapipe in CI; `GLEVAL_REQUIRE_ADAPTER=1` makes a
+/// missing one a failure), for the tests that check both rasterisers against Mesa's pixels.
+fn optional_renderer() -> Option<Renderer> {
+    match Renderer::new() {
+        Ok(r) => Some(r),
+        Err(e) if std::env::var("GLEVAL_REQUIRE_ADAPTER").is_ok_and(|v| v == "1") => panic!("{e}"),
+        Err(_) => None,
+    }
+}
+
 /// An intensity texture under each texture function, drawn by both rasterisers, against what
 /// Mesa 22.3 (llvmpipe, OSMesa) drew for the same calls: I = 153/255 with the fragment colour
 /// (0.5, 0.25, 1, 0.5) and the environment colour (0.2, 0.4, 0.8, 0.1). Intensity is I in all
@@ -142,12 +152,7 @@ fn the_cpu_rasteriser_draws_what_wgpu_draws() {
 /// fragment as it is (GL 1.1 tables 3.17 and 3.18).
 #[test]
 fn intensity_textures_are_mesas_on_both_rasterisers() {
-    let renderer = match Renderer::new() {
-        Ok(r) => Some(r),
-        Err(e) if std::env::var("GLEVAL_REQUIRE_ADAPTER").is_ok_and(|v| v == "1") => panic!("{e}"),
-        Err(_) => None,
-    };
-    let mut renderer = renderer;
+    let mut renderer = optional_renderer();
     let mesa = [
         (GL_MODULATE, [76, 38, 153, 76]),
         (GL_DECAL, [128, 64, 255, 128]),
@@ -189,11 +194,7 @@ fn intensity_textures_are_mesas_on_both_rasterisers() {
 /// (0.5, 0.25, 0.9, 0.3). Within 1/255 per channel: llvmpipe blends in 8-bit fixed point.
 #[test]
 fn blend_equations_are_mesas_on_both_rasterisers() {
-    let mut renderer = match Renderer::new() {
-        Ok(r) => Some(r),
-        Err(e) if std::env::var("GLEVAL_REQUIRE_ADAPTER").is_ok_and(|v| v == "1") => panic!("{e}"),
-        Err(_) => None,
-    };
+    let mut renderer = optional_renderer();
     let mesa: [([GLenum; 4], [GLenum; 2], [u8; 4]); 7] = [
         (
             [GL_CONSTANT_COLOR, GL_ONE_MINUS_CONSTANT_ALPHA, GL_CONSTANT_ALPHA, GL_ONE],
@@ -251,11 +252,7 @@ fn blend_equations_are_mesas_on_both_rasterisers() {
 /// square untextured.
 #[test]
 fn texture_lod_is_mesas_on_both_rasterisers() {
-    let mut renderer = match Renderer::new() {
-        Ok(r) => Some(r),
-        Err(e) if std::env::var("GLEVAL_REQUIRE_ADAPTER").is_ok_and(|v| v == "1") => panic!("{e}"),
-        Err(_) => None,
-    };
+    let mut renderer = optional_renderer();
     const COLOURS: [[u8; 3]; 6] = [[255, 0, 0], [0, 255, 0], [0, 0, 255], [255, 255, 0], [0, 255, 255], [255, 0, 255]];
     /// Size, base level, max level, min LOD, max LOD, min filter, Mesa's centre pixel.
     type Case = (i32, i32, i32, f32, f32, GLenum, [u8; 4]);
@@ -330,11 +327,7 @@ fn texture_lod_is_mesas_on_both_rasterisers() {
 /// point.
 #[test]
 fn edge_clamp_is_mesas_on_both_rasterisers() {
-    let mut renderer = match Renderer::new() {
-        Ok(r) => Some(r),
-        Err(e) if std::env::var("GLEVAL_REQUIRE_ADAPTER").is_ok_and(|v| v == "1") => panic!("{e}"),
-        Err(_) => None,
-    };
+    let mut renderer = optional_renderer();
     let shared = [[159, 64, 64, 255], [159, 191, 191, 255]];
     let mesa: [([GLenum; 2], [[u8; 4]; 8]); 4] = [
         (
@@ -413,5 +406,24 @@ fn edge_clamp_is_mesas_on_both_rasterisers() {
             let wgpu = diagonal(&renderer.render_frame(&frame, 8, 8).expect("wgpu renders").pixels);
             assert!(close(&wgpu), "wgpu, wraps {wrap_s:#x} {wrap_t:#x}: {wgpu:?}, Mesa {expected:?}");
         }
+    }
+}
+
+/// LOD bounds that are not numbers reach wgpu's sampler as no bound (WebGPU takes no NaN), and
+/// both rasterisers draw the frame.
+#[test]
+fn lod_bounds_that_are_not_numbers_draw() {
+    let mut gl = Gl::new(4, 4);
+    gl.tex_image_2d(GL_TEXTURE_2D, 0, GL_RGB as i32, 1, 1, 0, GL_RGB, GL_UNSIGNED_BYTE, &[0u8, 255, 0]);
+    gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST as i32);
+    gl.tex_parameterf(GL_TEXTURE_2D, GL_TEXTURE_MIN_LOD, f32::NAN);
+    gl.tex_parameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_LOD, f32::NAN);
+    gl.enable(GL_TEXTURE_2D);
+    gl.rectf(-1.0, -1.0, 1.0, 1.0);
+    let frame = gl.take_frame();
+    let green = |pixels: &[u8]| pixels.chunks_exact(4).all(|p| p == [0, 255, 0, 255]);
+    assert!(green(&soft::render_frame(&frame, 4, 4).pixels));
+    if let Some(mut renderer) = optional_renderer() {
+        assert!(green(&renderer.render_frame(&frame, 4, 4).expect("wgpu renders").pixels));
     }
 }

@@ -42,16 +42,16 @@ impl Gl {
             return self.set_level_range(t, pname, param);
         }
         let object = self.bound_object_mut(t as u8 + 1);
+        let mut params = object.params;
         let field = match pname {
-            GL_TEXTURE_MIN_FILTER => &mut object.params.min_filter,
-            GL_TEXTURE_MAG_FILTER => &mut object.params.mag_filter,
-            GL_TEXTURE_WRAP_S => &mut object.params.wrap_s,
-            GL_TEXTURE_WRAP_T => &mut object.params.wrap_t,
-            _ => &mut object.params.wrap_r,
+            GL_TEXTURE_MIN_FILTER => &mut params.min_filter,
+            GL_TEXTURE_MAG_FILTER => &mut params.mag_filter,
+            GL_TEXTURE_WRAP_S => &mut params.wrap_s,
+            GL_TEXTURE_WRAP_T => &mut params.wrap_t,
+            _ => &mut params.wrap_r,
         };
         *field = value;
-        // The complete chain depends on whether the filter reads mipmaps.
-        object.complete = None;
+        object.set_params(params);
         self.touch_state();
     }
 
@@ -61,12 +61,13 @@ impl Gl {
             return self.set_error(GL_INVALID_VALUE);
         }
         let object = self.bound_object_mut(t as u8 + 1);
+        let mut params = object.params;
         if pname == GL_TEXTURE_BASE_LEVEL {
-            object.params.base_level = level;
+            params.base_level = level;
         } else {
-            object.params.max_level = level;
+            params.max_level = level;
         }
-        object.complete = None;
+        object.set_params(params);
         self.touch_state();
     }
 
