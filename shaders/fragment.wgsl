@@ -1,5 +1,6 @@
 // GL's per-fragment operations before blending, in GL's order: unit 0's texture with GL's
-// texture environment (GL 1.1 spec §3.8.9, tables 3.17 and 3.18; ADD from GL 1.3), fog (§3.9)
+// texture environment (GL 1.1 spec §3.8.9, tables 3.17 and 3.18; ADD from GL 1.3), the colour
+// sum (GL 1.4 §3.9), fog (§3.9)
 // and the alpha test (§4.1.3). Shared by the frame rasteriser (`raster.wgsl`) and the mesh
 // rasteriser (`mesh_raster.wgsl`): each appends this source to its own and declares the
 // bindings it reads, `tex_image`, `tex_sampler` and `env` (a `Fragment`).
@@ -41,10 +42,11 @@ struct Fragment {
     border_color: vec4<f32>,
 };
 
-// The fragment's colour after texturing and fog: `tex` the interpolated (s, t, r, q), `fog`
-// the eye distance. Samples even without a texture (a blank one is bound), so that the sample
+// The fragment's colour after texturing, the colour sum and fog: `secondary` the secondary
+// colour (zero where no sum is made), `tex` the interpolated (s, t, r, q), `fog` the eye
+// distance. Samples even without a texture (a blank one is bound), so that the sample
 // stays in uniform control flow.
-fn fragment_ops(color_in: vec4<f32>, tex: vec4<f32>, fog: f32) -> vec4<f32> {
+fn fragment_ops(color_in: vec4<f32>, secondary: vec4<f32>, tex: vec4<f32>, fog: f32) -> vec4<f32> {
     // (s/q, t/q); GL's first image row is t = 0, uploaded as row 0.
     let q = select(1.0, tex.w, tex.w != 0.0);
     let st = tex.xy / q;
@@ -55,6 +57,7 @@ fn fragment_ops(color_in: vec4<f32>, tex: vec4<f32>, fog: f32) -> vec4<f32> {
     if env.mode != 0u {
         color = apply_env(color, texel);
     }
+    color = vec4<f32>(min(color.rgb + secondary.rgb, vec3<f32>(1.0)), color.a);
     if env.fog_mode != 0u {
         color = vec4<f32>(mix(env.fog_color.rgb, color.rgb, fog_factor(fog)), color.a);
     }

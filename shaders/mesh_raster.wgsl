@@ -36,6 +36,7 @@ struct Draw {
     color_material: vec4<f32>,  // front, back, mode (0 ambient 1 diffuse 2 specular 3 emission 4 both)
     model_ambient: vec4<f32>,
     primitive: vec4<f32>,       // x: 1 for polygons (two-sided lighting applies)
+    color_sum: vec4<f32>,       // rgb: an unlit mesh's secondary colour; w: 1 separate specular
     materials: array<Material, 2>,
     lights: array<Light, 8>,
 };
@@ -51,6 +52,8 @@ struct Smooth {
     @location(1) back: vec4<f32>,
     @location(2) tex: vec4<f32>,
     @location(3) fog: f32,
+    @location(4) front_secondary: vec4<f32>,
+    @location(5) back_secondary: vec4<f32>,
 };
 
 struct Flat {
@@ -59,6 +62,14 @@ struct Flat {
     @location(1) @interpolate(flat) back: vec4<f32>,
     @location(2) tex: vec4<f32>,
     @location(3) fog: f32,
+    @location(4) @interpolate(flat) front_secondary: vec4<f32>,
+    @location(5) @interpolate(flat) back_secondary: vec4<f32>,
+};
+
+// A face's primary colour and the secondary colour the colour sum adds (GL 1.4 §3.9).
+struct FaceColours {
+    primary: vec4<f32>,
+    secondary: vec4<f32>,
 };
 
 fn material(face: u32, color: vec4<f32>) -> Material {
@@ -101,9 +112,12 @@ fn power(x: f32, y: f32) -> f32 {
     return pow(x, y);
 }
 
-fn light_face(face: u32, n: vec3<f32>, position: vec3<f32>, color: vec4<f32>) -> vec4<f32> {
+// The primary and secondary colours of one face: the specular terms go to the secondary colour
+// with GL_SEPARATE_SPECULAR_COLOR (GL 1.2 §2.13.1), else to the primary one.
+fn light_face(face: u32, n: vec3<f32>, position: vec3<f32>, color: vec4<f32>) -> FaceColours {
     let m = material(face, color);
     var sum = m.emission.xyz + m.ambient.xyz * draw.model_ambient.xyz;
+    var specular_sum = vec3<f32>(0.0);
     for (var i = 0u; i < 8u; i++) {
         let light = draw.lights[i];
         if (light.params.x == 0.0) {
@@ -127,6 +141,7 @@ fn light_face(face: u32, n: vec3<f32>, position: vec3<f32>, color: vec4<f32>) ->
         }
         let n_dot_vp = dot(n, vp);
         var c = m.ambient.xyz * light.ambient.xyz;
+        var specular = vec3<f32>(0.0);
         if (n_dot_vp > 0.0) {
             c += n_dot_vp * m.diffuse.xyz * light.diffuse.xyz;
             var eye_dir = vec3<f32>(0.0, 0.0, 1.0);
@@ -135,11 +150,21 @@ fn light_face(face: u32, n: vec3<f32>, position: vec3<f32>, color: vec4<f32>) ->
             }
             let h = safe_normalize(vp + eye_dir);
             let n_dot_h = max(dot(n, h), 0.0);
-            c += power(n_dot_h, m.shininess.x) * m.specular.xyz * light.specular.xyz;
+            specular = power(n_dot_h, m.shininess.x) * m.specular.xyz * light.specular.xyz;
         }
         sum += attenuation * spot * c;
+        specular_sum += attenuation * spot * specular;
     }
-    return clamp(vec4<f32>(sum, m.diffuse.w), vec4<f32>(0.0), vec4<f32>(1.0));
+    var out: FaceColours;
+    if (draw.color_sum.w != 0.0) {
+        out.primary = vec4<f32>(sum, m.diffuse.w);
+        out.secondary = vec4<f32>(clamp(specular_sum, vec3<f32>(0.0), vec3<f32>(1.0)), 0.0);
+    } else {
+        out.primary = vec4<f32>(sum + specular_sum, m.diffuse.w);
+        out.secondary = vec4<f32>(0.0);
+    }
+    out.primary = clamp(out.primary, vec4<f32>(0.0), vec4<f32>(1.0));
+    return out;
 }
 
 struct Lit {
@@ -148,6 +173,8 @@ struct Lit {
     back: vec4<f32>,
     tex: vec4<f32>,
     fog: f32,
+    front_secondary: vec4<f32>,
+    back_secondary: vec4<f32>,
 };
 
 fn vertex_stage(position: vec4<f32>, normal: vec4<f32>, color: vec4<f32>, tex: vec4<f32>) -> Lit {
@@ -171,6 +198,8 @@ fn vertex_stage(position: vec4<f32>, normal: vec4<f32>, color: vec4<f32>, tex: v
         let c = clamp(color, vec4<f32>(0.0), vec4<f32>(1.0));
         out.front = c;
         out.back = c;
+        out.front_secondary = vec4<f32>(draw.color_sum.rgb, 0.0);
+        out.back_secondary = out.front_secondary;
         return out;
     }
     var n = (draw.normal_matrix * vec4<f32>(normal.xyz, 0.0)).xyz;
@@ -181,11 +210,15 @@ fn vertex_stage(position: vec4<f32>, normal: vec4<f32>, color: vec4<f32>, tex: v
     if (eye.w != 0.0) {
         p = eye.xyz / eye.w;
     }
-    out.front = light_face(0u, n, p, color);
-    out.back = out.front;
+    let front = light_face(0u, n, p, color);
+    var back = front;
     if (draw.flags.y != 0.0) {
-        out.back = light_face(1u, -n, p, color);
+        back = light_face(1u, -n, p, color);
     }
+    out.front = front.primary;
+    out.back = back.primary;
+    out.front_secondary = front.secondary;
+    out.back_secondary = back.secondary;
     return out;
 }
 
@@ -197,7 +230,7 @@ fn vs_smooth(
     @location(3) tex: vec4<f32>,
 ) -> Smooth {
     let lit = vertex_stage(position, normal, color, tex);
-    return Smooth(lit.clip, lit.front, lit.back, lit.tex, lit.fog);
+    return Smooth(lit.clip, lit.front, lit.back, lit.tex, lit.fog, lit.front_secondary, lit.back_secondary);
 }
 
 @vertex
@@ -208,7 +241,7 @@ fn vs_flat(
     @location(3) tex: vec4<f32>,
 ) -> Flat {
     let lit = vertex_stage(position, normal, color, tex);
-    return Flat(lit.clip, lit.front, lit.back, lit.tex, lit.fog);
+    return Flat(lit.clip, lit.front, lit.back, lit.tex, lit.fog, lit.front_secondary, lit.back_secondary);
 }
 
 fn face_colour(front: vec4<f32>, back: vec4<f32>, facing: bool) -> vec4<f32> {
@@ -218,10 +251,10 @@ fn face_colour(front: vec4<f32>, back: vec4<f32>, facing: bool) -> vec4<f32> {
     return front;
 }
 
-// The face's colour through texturing, fog and the alpha test (a failing fragment is
-// discarded here: WGSL allows it in a function the fragment stage calls).
-fn shade(front: vec4<f32>, back: vec4<f32>, facing: bool, tex: vec4<f32>, fog: f32) -> vec4<f32> {
-    let color = fragment_ops(face_colour(front, back, facing), tex, fog);
+// The face's colour through texturing, the colour sum, fog and the alpha test (a failing
+// fragment is discarded here: WGSL allows it in a function the fragment stage calls).
+fn shade(front: vec4<f32>, back: vec4<f32>, secondary: vec4<f32>, facing: bool, tex: vec4<f32>, fog: f32) -> vec4<f32> {
+    let color = fragment_ops(face_colour(front, back, facing), secondary, tex, fog);
     if env.alpha_func != 0u && !alpha_passes(color.a) {
         discard;
     }
@@ -230,10 +263,12 @@ fn shade(front: vec4<f32>, back: vec4<f32>, facing: bool, tex: vec4<f32>, fog: f
 
 @fragment
 fn fs_smooth(in: Smooth, @builtin(front_facing) facing: bool) -> @location(0) vec4<f32> {
-    return shade(in.front, in.back, facing, in.tex, in.fog);
+    let secondary = face_colour(in.front_secondary, in.back_secondary, facing);
+    return shade(in.front, in.back, secondary, facing, in.tex, in.fog);
 }
 
 @fragment
 fn fs_flat(in: Flat, @builtin(front_facing) facing: bool) -> @location(0) vec4<f32> {
-    return shade(in.front, in.back, facing, in.tex, in.fog);
+    let secondary = face_colour(in.front_secondary, in.back_secondary, facing);
+    return shade(in.front, in.back, secondary, facing, in.tex, in.fog);
 }

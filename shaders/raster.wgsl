@@ -1,6 +1,7 @@
 // The rasteriser for gleval's assembled frames: GL's fixed-function vertex work (transform,
 // lighting, primitive assembly, wide lines and points) is already done, so a vertex carries its
-// clip-space position, final colour, texture coordinates and fog coordinate. The fragment stage
+// clip-space position, final colour, secondary colour (what the colour sum adds, zero without
+// one), texture coordinates and fog coordinate. The fragment stage
 // is GL's per-fragment work, shared with the mesh rasteriser (`shaders/fragment.wgsl`, appended
 // to this source when the module is made), plus what only this rasteriser draws: the polygon
 // stipple, and smooth points and lines, whose coverage multiplies the alpha before the alpha
@@ -13,22 +14,25 @@
 struct VertexOut {
     @builtin(position) clip: vec4<f32>,
     @location(0) color: vec4<f32>,
-    @location(1) tex: vec4<f32>,
-    @location(2) fog: f32,
-    @location(3) aa: vec4<f32>,
+    @location(1) secondary: vec4<f32>,
+    @location(2) tex: vec4<f32>,
+    @location(3) fog: f32,
+    @location(4) aa: vec4<f32>,
 };
 
 @vertex
 fn vs_main(
     @location(0) clip: vec4<f32>,
     @location(1) color: vec4<f32>,
-    @location(2) tex: vec4<f32>,
-    @location(3) fog: f32,
-    @location(4) aa: vec4<f32>,
+    @location(2) secondary: vec4<f32>,
+    @location(3) tex: vec4<f32>,
+    @location(4) fog: f32,
+    @location(5) aa: vec4<f32>,
 ) -> VertexOut {
     var out: VertexOut;
     out.clip = clip;
     out.color = color;
+    out.secondary = secondary;
     out.tex = tex;
     out.fog = fog;
     out.aa = aa;
@@ -37,7 +41,7 @@ fn vs_main(
 
 @fragment
 fn fs_main(in: VertexOut) -> @location(0) vec4<f32> {
-    var color = fragment_ops(in.color, in.tex, in.fog);
+    var color = fragment_ops(in.color, in.secondary, in.tex, in.fog);
     if env.stipple != 0u && !stipple_keeps(in.clip.xy) {
         discard;
     }

@@ -44,11 +44,20 @@ pub(crate) enum Which {
     Index,
     TexCoord,
     EdgeFlag,
+    /// GL 1.4's secondary colour (`GL_EXT_secondary_color`).
+    SecondaryColor,
 }
 
 impl Which {
-    const ALL: [Which; 6] =
-        [Which::Vertex, Which::Normal, Which::Color, Which::Index, Which::TexCoord, Which::EdgeFlag];
+    const ALL: [Which; 7] = [
+        Which::Vertex,
+        Which::Normal,
+        Which::Color,
+        Which::Index,
+        Which::TexCoord,
+        Which::EdgeFlag,
+        Which::SecondaryColor,
+    ];
 
     fn of_capability(cap: GLenum) -> Option<Which> {
         Self::ALL.into_iter().find(|w| w.capability() == cap)
@@ -62,6 +71,7 @@ impl Which {
             Which::Index => GL_INDEX_ARRAY,
             Which::TexCoord => GL_TEXTURE_COORD_ARRAY,
             Which::EdgeFlag => GL_EDGE_FLAG_ARRAY,
+            Which::SecondaryColor => GL_SECONDARY_COLOR_ARRAY,
         }
     }
 
@@ -73,6 +83,7 @@ impl Which {
             Which::Index => GL_INDEX_ARRAY_POINTER,
             Which::TexCoord => GL_TEXTURE_COORD_ARRAY_POINTER,
             Which::EdgeFlag => GL_EDGE_FLAG_ARRAY_POINTER,
+            Which::SecondaryColor => GL_SECONDARY_COLOR_ARRAY_POINTER,
         }
     }
 
@@ -81,7 +92,7 @@ impl Which {
         let types: &[GLenum] = match self {
             Which::Vertex | Which::TexCoord => &[GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE],
             Which::Normal => &[GL_BYTE, GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE],
-            Which::Color => {
+            Which::Color | Which::SecondaryColor => {
                 &[GL_BYTE, GL_UNSIGNED_BYTE, GL_SHORT, GL_UNSIGNED_SHORT, GL_INT, GL_UNSIGNED_INT, GL_FLOAT, GL_DOUBLE]
             }
             Which::Index => &[GL_UNSIGNED_BYTE, GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE],
@@ -95,7 +106,8 @@ impl Which {
         match self {
             Which::Vertex => (2..=4).contains(&size),
             Which::TexCoord => (1..=4).contains(&size),
-            Which::Color => (3..=4).contains(&size),
+            // Mesa takes 4 for the secondary colour too (measured on Mesa 22.3).
+            Which::Color | Which::SecondaryColor => (3..=4).contains(&size),
             Which::Normal => size == 3,
             Which::Index | Which::EdgeFlag => size == 1,
         }
@@ -197,12 +209,25 @@ fn color(type_: GLenum, b: &[u8]) -> f32 {
     }
 }
 
+/// A secondary colour component: integers as the immediate `glSecondaryColor3*v` forms
+/// convert them, signed c to (2c + 1) / (2ᵇ − 1), which is not what Mesa's colour array does
+/// (measured on Mesa 22.3 through `glArrayElement`: `color_sum.calls`).
+fn secondary_color(type_: GLenum, b: &[u8]) -> f32 {
+    match type_ {
+        GL_BYTE => i8::take(b).normalized(),
+        GL_SHORT => i16::take(b).normalized(),
+        GL_INT => i32::take(b).normalized(),
+        _ => color(type_, b),
+    }
+}
+
 /// What one array element issues.
 #[derive(Clone, Copy, Debug, Default)]
 struct Element {
     edge_flag: Option<bool>,
     tex_coord: Option<[f32; 4]>,
     color: Option<[f32; 4]>,
+    secondary_color: Option<[f32; 4]>,
     normal: Option<[f32; 4]>,
     vertex: Option<[f32; 4]>,
 }
@@ -211,11 +236,11 @@ struct Element {
 /// them.
 #[derive(Clone, Debug, PartialEq)]
 pub(crate) struct VertexArrays {
-    arrays: [ArrayState; 6],
+    arrays: [ArrayState; 7],
     /// `glEdgeFlag`'s current value (Mesa keeps it as a float and reports `== 1.0`).
     pub edge_flag: bool,
     /// One entry per `glPushClientAttrib`: the arrays when `GL_CLIENT_VERTEX_ARRAY_BIT` was set.
-    saved: Vec<Option<Box<[ArrayState; 6]>>>,
+    saved: Vec<Option<Box<[ArrayState; 7]>>>,
 }
 
 impl Default for VertexArrays {
@@ -228,6 +253,7 @@ impl Default for VertexArrays {
                 ArrayState::new(1, GL_FLOAT),
                 ArrayState::new(4, GL_FLOAT),
                 ArrayState::new(1, GL_UNSIGNED_BYTE),
+                ArrayState::new(3, GL_FLOAT),
             ],
             edge_flag: true,
             saved: Vec::new(),
@@ -264,6 +290,9 @@ impl VertexArrays {
         }
         if let Some(a) = on(Which::Color) {
             e.color = Some(a.fetch(i, color)?);
+        }
+        if let Some(a) = on(Which::SecondaryColor) {
+            e.secondary_color = Some(a.fetch(i, secondary_color)?);
         }
         if let Some(a) = on(Which::Index) {
             a.fetch(i, plain)?; // read (as GL does); colour index has no effect in RGBA
@@ -371,6 +400,13 @@ impl Gl {
         self.array_pointer(Which::TexCoord, size, type_, stride, pointer.into_pointer());
     }
 
+    /// `glSecondaryColorPointer(size, type, stride, pointer)` (GL 1.4): 3 (or 4, as Mesa
+    /// takes) of any integer type, `GL_FLOAT` or `GL_DOUBLE`; alpha is not read into the
+    /// secondary colour.
+    pub fn secondary_color_pointer(&mut self, size: GLint, type_: GLenum, stride: GLsizei, pointer: impl PointerArg) {
+        self.array_pointer(Which::SecondaryColor, size, type_, stride, pointer.into_pointer());
+    }
+
     /// `glEdgeFlagPointer(stride, pointer)`: one `GLboolean` per element.
     pub fn edge_flag_pointer(&mut self, stride: GLsizei, pointer: impl PointerArg) {
         self.array_pointer(Which::EdgeFlag, 1, GL_UNSIGNED_BYTE, stride, pointer.into_pointer());
@@ -463,6 +499,10 @@ impl Gl {
         if let Some([r, g, b, a]) = e.color {
             self.color4f(r, g, b, a);
         }
+        if let Some(c) = e.secondary_color {
+            // A size-4 array gives the alpha too, as Mesa reads it (a size-3 one 1).
+            self.secondary_color(c);
+        }
         if let Some([x, y, z, _]) = e.normal {
             self.normal3f(x, y, z);
         }
@@ -525,7 +565,9 @@ impl Gl {
             GL_UNSIGNED_SHORT => i64::from(u16::take(b)),
             _ => i64::from(u32::take(b)),
         };
+        self.recorder.indexed_draw = true;
         self.draw_indexed(mode, bytes.chunks_exact(size).map(index).collect());
+        self.recorder.indexed_draw = false;
     }
 
     /// Begin, the elements, end; the current values are restored after.
@@ -566,7 +608,8 @@ impl Gl {
                 (a.size, a.type_, a.stride, a.pointer) = (size, type_, stride, at(offset));
             }
         };
-        let [vertex, normal, color, index, tex, edge] = &mut self.client.arrays.arrays;
+        // Mesa leaves the secondary colour array as it was (measured on Mesa 22.3).
+        let [vertex, normal, color, index, tex, edge, _] = &mut self.client.arrays.arrays;
         edge.enabled = false;
         index.enabled = false;
         set(tex, layout.tex > 0, layout.tex, GL_FLOAT, 0);
@@ -653,6 +696,9 @@ pub(crate) static GET_ROWS: &[StateVar] = &[
     array_row!(GL_TEXTURE_COORD_ARRAY_TYPE, TexCoord.type_),
     array_row!(GL_TEXTURE_COORD_ARRAY_STRIDE, TexCoord.stride),
     array_row!(GL_EDGE_FLAG_ARRAY_STRIDE, EdgeFlag.stride),
+    array_row!(GL_SECONDARY_COLOR_ARRAY_SIZE, SecondaryColor.size),
+    array_row!(GL_SECONDARY_COLOR_ARRAY_TYPE, SecondaryColor.type_),
+    array_row!(GL_SECONDARY_COLOR_ARRAY_STRIDE, SecondaryColor.stride),
 ];
 
 #[cfg(test)]

@@ -107,7 +107,7 @@ fn enables_of(mask: GLbitfield) -> Vec<GLenum> {
     let mut caps: Vec<GLenum> =
         groups.iter().filter(|(bit, _)| all || mask & bit != 0).flat_map(|(_, caps)| caps.iter().copied()).collect();
     if all {
-        caps.extend(super::enable::KNOWN.iter().copied());
+        caps.extend(super::enable::KNOWN.iter().copied().filter(|c| !super::enable::UNSAVED.contains(c)));
     }
     caps.sort_unstable();
     caps.dedup();

@@ -177,7 +177,13 @@ impl Gl {
             return;
         }
         let state = self.window_state();
-        self.recorder.frame.primitives.push(Primitive { mode: GL_POINTS, first, count, state });
+        self.recorder.frame.primitives.push(Primitive {
+            mode: GL_POINTS,
+            first,
+            count,
+            state,
+            listed_or_indexed: false,
+        });
         self.recorder.frame.commands.push(Command::Draw(self.recorder.frame.primitives.len() - 1));
     }
 

@@ -40,6 +40,7 @@ pub(crate) const KNOWN: &[GLenum] = &[
     GL_POLYGON_OFFSET_POINT,
     GL_POLYGON_STIPPLE,
     GL_RESCALE_NORMAL,
+    GL_COLOR_SUM,
     GL_MULTISAMPLE,
     GL_SAMPLE_ALPHA_TO_COVERAGE,
     GL_SAMPLE_ALPHA_TO_ONE,
@@ -49,11 +50,23 @@ pub(crate) const KNOWN: &[GLenum] = &[
     GL_INDEX_LOGIC_OP,
 ];
 
+/// Capabilities no attribute group saves: Mesa 22.3's `attrib.c` keeps GL 1.4's
+/// `GL_COLOR_SUM` out of `GL_ENABLE_BIT` and `GL_FOG_BIT` alike (measured:
+/// `tests/reference/calls/cases/color_sum.calls`).
+pub(crate) const UNSAVED: &[GLenum] = &[GL_COLOR_SUM];
+
 /// The vertex arrays' client states: `glEnableClientState` sets them, and Mesa's compatibility
 /// profile takes them in `glEnable`, `glDisable` and `glIsEnabled` too (measured on Mesa 22.3).
 /// Client state: `GL_ENABLE_BIT` does not save them (`GL_CLIENT_VERTEX_ARRAY_BIT` does).
-pub(crate) const CLIENT_STATES: &[GLenum] =
-    &[GL_VERTEX_ARRAY, GL_NORMAL_ARRAY, GL_COLOR_ARRAY, GL_INDEX_ARRAY, GL_TEXTURE_COORD_ARRAY, GL_EDGE_FLAG_ARRAY];
+pub(crate) const CLIENT_STATES: &[GLenum] = &[
+    GL_VERTEX_ARRAY,
+    GL_NORMAL_ARRAY,
+    GL_COLOR_ARRAY,
+    GL_INDEX_ARRAY,
+    GL_TEXTURE_COORD_ARRAY,
+    GL_EDGE_FLAG_ARRAY,
+    GL_SECONDARY_COLOR_ARRAY,
+];
 
 impl Caps {
     fn known(cap: GLenum) -> bool {

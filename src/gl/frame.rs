@@ -22,6 +22,10 @@ pub struct Primitive {
     pub count: usize,
     /// Index in [`Frame::states`] of the GL state the primitive is drawn with.
     pub state: usize,
+    /// Drawn from a display list or by `glDrawElements`: llvmpipe's draw module splits such
+    /// quads along v1–v3, where it splits those of `glBegin`/`glEnd` and `glDrawArrays`
+    /// along v0–v2 (measured on Mesa 22.3; see `render::assemble`).
+    pub listed_or_indexed: bool,
 }
 
 /// A `glMaterial` call between `begin` and `end`: from vertex `vertex` of primitive
@@ -55,6 +59,9 @@ pub struct DrawState {
     pub normalize: bool,
     /// `GL_RESCALE_NORMAL` enabled.
     pub rescale_normal: bool,
+    /// GL 1.4's `GL_COLOR_SUM` enabled: without lighting, the vertices' secondary colour is
+    /// added after texturing (with lighting the sum is always made, §3.9).
+    pub color_sum: bool,
     /// `GL_FLAT` or `GL_SMOOTH`.
     pub shade_model: GLenum,
     /// `glPointSize`.
@@ -186,6 +193,8 @@ pub enum Call {
     Normal([f32; 3]),
     /// `glTexCoord*` (s, t, r, q).
     TexCoord([f32; 4]),
+    /// `glSecondaryColor*` (r, g, b, 1; a size-4 array's alpha).
+    SecondaryColor([f32; 4]),
 }
 
 /// Everything drawn since the context was made or the frame last taken.
@@ -257,6 +266,15 @@ pub struct GridMesh {
 }
 
 impl GridMesh {
+    /// The attributes no map evaluates, as they were when the mesh was recorded.
+    #[must_use]
+    pub fn template(&self) -> Vertex {
+        match &self.vertices {
+            MeshVertices::Evaluated(grid) => grid.template,
+            MeshVertices::Deferred(jobs) => jobs.first().map(|j| j.template).unwrap_or_default(),
+        }
+    }
+
     /// The grid's vertices, evaluating a deferred job on the CPU.
     #[must_use]
     pub fn evaluated(&self) -> std::borrow::Cow<'_, super::GridVertices> {
@@ -382,7 +400,7 @@ impl Frame {
         let first = self.vertices.len();
         self.vertices.extend(vertices);
         let count = self.vertices.len() - first;
-        self.primitives.push(Primitive { mode, first, count, state });
+        self.primitives.push(Primitive { mode, first, count, state, listed_or_indexed: false });
         self.commands.push(Command::Draw(self.primitives.len() - 1));
     }
 }

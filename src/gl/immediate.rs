@@ -45,7 +45,8 @@ impl Gl {
         self.color_material_begin();
         let first = self.recorder.frame.vertices.len();
         let state = self.current_state_index();
-        self.recorder.frame.primitives.push(Primitive { mode, first, count: 0, state });
+        let listed_or_indexed = self.recorder.indexed_draw || self.lists_executing();
+        self.recorder.frame.primitives.push(Primitive { mode, first, count: 0, state, listed_or_indexed });
         let index = self.recorder.frame.primitives.len() - 1;
         self.recorder.frame.commands.push(super::frame::Command::Draw(index));
         self.recorder.open_primitive = Some(index);
@@ -84,6 +85,7 @@ impl Gl {
             color: self.server.current.color,
             normal: self.server.current.normal,
             tex_coord: self.server.current.tex_coord,
+            secondary_color: self.server.current.secondary_color,
         }
     }
 
@@ -175,6 +177,29 @@ impl Gl {
     pub fn color3ub(&mut self, r: u8, g: u8, b: u8) {
         let f = |c: u8| f32::from(c) / 255.0;
         self.color4f(f(r), f(g), f(b), 1.0);
+    }
+
+    /// `glSecondaryColor3f` (GL 1.4 §2.7, `GL_EXT_secondary_color`): the colour the colour sum
+    /// adds after texturing when `GL_COLOR_SUM` is enabled and lighting is not (§3.9); alpha 1.
+    /// Allowed between begin and end, compiled into lists.
+    pub fn secondary_color3f(&mut self, r: GLfloat, g: GLfloat, b: GLfloat) {
+        self.secondary_color([r, g, b, 1.0]);
+    }
+
+    /// The secondary colour with an alpha: what a size-4 secondary colour array sets.
+    pub(crate) fn secondary_color(&mut self, rgba: [f32; 4]) {
+        if self.compiled(|| ListCommand::Immediate(Call::SecondaryColor(rgba))) {
+            return;
+        }
+        self.server.current.secondary_color = rgba;
+        self.recorder.frame.calls.push(Call::SecondaryColor(rgba));
+    }
+
+    /// `glSecondaryColor3fv`: `v` needs 3 values.
+    pub fn secondary_color3fv(&mut self, v: &[GLfloat]) {
+        if let Some(v) = self.needs::<3>(v) {
+            self.secondary_color3f(v[0], v[1], v[2]);
+        }
     }
 
     /// `glNormal3f`.

@@ -130,6 +130,13 @@ pub(crate) struct Lists {
 }
 
 impl Gl {
+    /// Whether a display list is being executed (`glCallList`, at any depth).
+    pub(crate) fn lists_executing(&self) -> bool {
+        self.lists.depth > 0
+    }
+}
+
+impl Gl {
     /// Runs `f` with no list being compiled: the calls of a command that is recorded whole
     /// (`glCallList`, `glRect`) are not recorded again in `GL_COMPILE_AND_EXECUTE`.
     pub(crate) fn uncompiled(&mut self, f: impl FnOnce(&mut Self)) {
@@ -371,6 +378,7 @@ impl Gl {
             C::Immediate(Call::Color([r, g, b, a])) => self.color4f(*r, *g, *b, *a),
             C::Immediate(Call::Normal([x, y, z])) => self.normal3f(*x, *y, *z),
             C::Immediate(Call::TexCoord([s, t, r, q])) => self.tex_coord4f(*s, *t, *r, *q),
+            C::Immediate(Call::SecondaryColor(rgba)) => self.secondary_color(*rgba),
             C::Enable(cap) => self.enable(*cap),
             C::Disable(cap) => self.disable(*cap),
             C::Lighting(call) => self.replay_lighting_call(call),

@@ -296,6 +296,8 @@ pub(crate) struct Recorder {
     pub(super) tessellator: Tessellator,
     /// What reads the window mid-frame (`glCopyTexImage`).
     pub(super) window_reader: window_read::Reader,
+    /// A `glDrawElements` is issuing its elements (see [`Primitive::listed_or_indexed`]).
+    pub(super) indexed_draw: bool,
 }
 
 impl Recorder {
@@ -310,6 +312,7 @@ impl Recorder {
             pending_meshes: eval::PendingMeshes::default(),
             tessellator: Tessellator::Cpu,
             window_reader: window_read::Reader::default(),
+            indexed_draw: false,
         }
     }
 }
@@ -436,6 +439,7 @@ impl Gl {
             color_material: self.color_material_tracks(),
             normalize: self.server.caps.is_on(GL_NORMALIZE),
             rescale_normal: self.server.caps.is_on(GL_RESCALE_NORMAL),
+            color_sum: self.server.caps.is_on(GL_COLOR_SUM),
             shade_model: self.server.shade_model,
             point_size: self.server.point.size,
             line_width: self.server.line.width,

@@ -16,9 +16,15 @@ pub(crate) struct Shader<'a> {
     normal_matrix: Mat3,
 }
 
-/// A vertex after the vertex stage: clip-space position, its front and back colours, its
-/// texture coordinates through the texture matrix (zero without a texture) and its fog
-/// coordinate, the eye-space distance |z| (Mesa's default, `GL_EYE_PLANE_ABSOLUTE_NV`).
+/// A vertex after the vertex stage: clip-space position, its front and back colours and
+/// secondary colours, its texture coordinates through the texture matrix (zero without a
+/// texture) and its fog coordinate, the eye-space distance |z| (Mesa's default,
+/// `GL_EYE_PLANE_ABSOLUTE_NV`).
+///
+/// The secondary colour is what the colour sum adds after texturing (GL 1.4 §3.9), zero where
+/// no sum is made: lit, the specular terms with `GL_SEPARATE_SPECULAR_COLOR` (GL 1.2 §2.13.1)
+/// and zero with `GL_SINGLE_COLOR`; unlit, the vertex's `glSecondaryColor` when `GL_COLOR_SUM`
+/// is enabled. So every rasteriser adds it unconditionally.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) struct ShadedVertex {
     pub clip: Vec4,
@@ -26,6 +32,8 @@ pub(crate) struct ShadedVertex {
     pub eye: Vec4,
     pub front: Vec4,
     pub back: Vec4,
+    pub front_secondary: Vec4,
+    pub back_secondary: Vec4,
     pub tex: Vec4,
     pub fog: f32,
 }
@@ -39,6 +47,8 @@ impl Mix for ShadedVertex {
             eye: self.eye.lerp(other.eye, t),
             front: self.front.lerp(other.front, t),
             back: self.back.lerp(other.back, t),
+            front_secondary: self.front_secondary.lerp(other.front_secondary, t),
+            back_secondary: self.back_secondary.lerp(other.back_secondary, t),
             tex: self.tex.lerp(other.tex, t),
             fog: self.fog + (other.fog - self.fog) * t,
         }
@@ -64,13 +74,16 @@ impl<'a> Shader<'a> {
         let fog = eye.z.abs();
         let Some(lighting) = &self.state.lighting else {
             let c = color.clamp(Vec4::ZERO, Vec4::ONE);
-            return ShadedVertex { clip, eye, front: c, back: c, tex, fog };
+            let summed = Vec4::from_array(v.secondary_color).truncate().clamp(Vec3::ZERO, Vec3::ONE).extend(0.0);
+            let s = if self.state.color_sum { summed } else { Vec4::ZERO };
+            return ShadedVertex { clip, eye, front: c, back: c, front_secondary: s, back_secondary: s, tex, fog };
         };
         let n = self.eye_normal(v);
         let position = if eye.w != 0.0 { eye.xyz() / eye.w } else { eye.xyz() };
-        let front = self.light(lighting, 0, n, position, color);
-        let back = if lighting.two_side { self.light(lighting, 1, -n, position, color) } else { front };
-        ShadedVertex { clip, eye, front, back, tex, fog }
+        let (front, front_secondary) = self.light(lighting, 0, n, position, color);
+        let (back, back_secondary) =
+            if lighting.two_side { self.light(lighting, 1, -n, position, color) } else { (front, front_secondary) };
+        ShadedVertex { clip, eye, front, back, front_secondary, back_secondary, tex, fog }
     }
 
     /// The vertex's normal in eye coordinates, rescaled by `GL_RESCALE_NORMAL` and normalised
@@ -99,9 +112,12 @@ impl<'a> Shader<'a> {
         m
     }
 
-    fn light(&self, lighting: &Lighting, face: usize, n: Vec3, position: Vec3, color: Vec4) -> Vec4 {
+    /// The primary and secondary colours of one face (GL 1.2 §2.13.1): the specular terms go
+    /// to the secondary colour with `GL_SEPARATE_SPECULAR_COLOR`, else to the primary one.
+    fn light(&self, lighting: &Lighting, face: usize, n: Vec3, position: Vec3, color: Vec4) -> (Vec4, Vec4) {
         let m = self.material(lighting, face, color);
         let mut sum = m.emission.xyz() + m.ambient.xyz() * lighting.model_ambient.xyz();
+        let mut specular_sum = Vec3::ZERO;
         for light in lighting.lights.iter().filter(|l| l.enabled) {
             let (vp, attenuation) = if light.position.w == 0.0 {
                 (light.position.xyz().normalize_or_zero(), 1.0)
@@ -114,16 +130,20 @@ impl<'a> Shader<'a> {
             let spot = spot_factor(light.spot_cutoff, light.spot_exponent, light.spot_direction, vp);
             let n_dot_vp = n.dot(vp);
             let mut c = m.ambient.xyz() * light.ambient.xyz();
+            let mut specular = Vec3::ZERO;
             if n_dot_vp > 0.0 {
                 c += n_dot_vp * m.diffuse.xyz() * light.diffuse.xyz();
                 let eye_dir = if lighting.local_viewer { -position.normalize_or_zero() } else { Vec3::Z };
                 let h = (vp + eye_dir).normalize_or_zero();
                 let n_dot_h = n.dot(h).max(0.0);
-                c += n_dot_h.powf(m.shininess) * m.specular.xyz() * light.specular.xyz();
+                specular = n_dot_h.powf(m.shininess) * m.specular.xyz() * light.specular.xyz();
             }
             sum += attenuation * spot * c;
+            specular_sum += attenuation * spot * specular;
         }
-        sum.extend(m.diffuse.w).clamp(Vec4::ZERO, Vec4::ONE)
+        let (primary, secondary) =
+            if lighting.separate_specular() { (sum, specular_sum) } else { (sum + specular_sum, Vec3::ZERO) };
+        (primary.extend(m.diffuse.w).clamp(Vec4::ZERO, Vec4::ONE), secondary.clamp(Vec3::ZERO, Vec3::ONE).extend(0.0))
     }
 }
 

@@ -1,4 +1,5 @@
-//! The type variants of GL's per-vertex calls: `glColor3b` … `glColor4usv`, `glNormal3b` …
+//! The type variants of GL's per-vertex calls: `glColor3b` … `glColor4usv`, GL 1.4's
+//! `glSecondaryColor3b` … `glSecondaryColor3usv`, `glNormal3b` …
 //! `glNormal3sv`, `glVertex2i` … `glVertex4sv`, `glTexCoord1d` … `glTexCoord4sv`, the
 //! remaining `glRasterPos` forms and `glRect*v`. Each converts its values and calls the float
 //! form, so lists, errors and state are the float form's.
@@ -105,6 +106,11 @@ impl Gl {
         self.color4f(r.normalized(), g.normalized(), b.normalized(), a.normalized());
     }
 
+    /// `glSecondaryColor3*` of any component type (GL 1.4), converted as `glColor3*`.
+    fn secondary_color3<T: GlComponent>(&mut self, [r, g, b]: [T; 3]) {
+        self.secondary_color3f(r.normalized(), g.normalized(), b.normalized());
+    }
+
     fn normal3<T: GlComponent>(&mut self, [x, y, z]: [T; 3]) {
         self.normal3f(x.normalized(), y.normalized(), z.normalized());
     }
@@ -189,6 +195,16 @@ vector_forms!(color3;
 vector_forms!(color4;
     color4bv(GLbyte; 4); color4sv(GLshort; 4); color4iv(GLint; 4); color4dv(GLdouble; 4);
     color4ubv(GLubyte; 4); color4usv(GLushort; 4); color4uiv(GLuint; 4));
+
+scalar_forms!(secondary_color3;
+    secondary_color3b(GLbyte; r, g, b); secondary_color3s(GLshort; r, g, b);
+    secondary_color3i(GLint; r, g, b); secondary_color3d(GLdouble; r, g, b);
+    secondary_color3ub(GLubyte; r, g, b); secondary_color3us(GLushort; r, g, b);
+    secondary_color3ui(GLuint; r, g, b));
+vector_forms!(secondary_color3;
+    secondary_color3bv(GLbyte; 3); secondary_color3sv(GLshort; 3); secondary_color3iv(GLint; 3);
+    secondary_color3dv(GLdouble; 3); secondary_color3ubv(GLubyte; 3); secondary_color3usv(GLushort; 3);
+    secondary_color3uiv(GLuint; 3));
 
 scalar_forms!(normal3;
     normal3b(GLbyte; x, y, z); normal3s(GLshort; x, y, z); normal3i(GLint; x, y, z);

@@ -2,7 +2,8 @@
 //! the evaluators' business: `eval/target.rs`).
 
 /// One vertex as GL hands it to the rest of the pipeline: object-space position (w not divided),
-/// and the current (or evaluated) colour, normal and texture coordinate of unit 0.
+/// the current (or evaluated) colour, normal and texture coordinate of unit 0, and the current
+/// secondary colour (GL 1.4 §2.7; no evaluator map sets it).
 #[derive(Clone, Copy, Debug, Default, PartialEq, bytemuck::Zeroable)]
 pub struct Vertex {
     /// (x, y, z, w); `vertex3f` gives w = 1; `GL_MAP*_VERTEX_4` passes w through.
@@ -13,4 +14,6 @@ pub struct Vertex {
     pub normal: [f32; 3],
     /// (s, t, r, q).
     pub tex_coord: [f32; 4],
+    /// `glSecondaryColor`'s RGB and 1, not clamped here.
+    pub secondary_color: [f32; 4],
 }

@@ -35,10 +35,16 @@ fn flag(b: bool) -> f32 {
     f32::from(u8::from(b))
 }
 
-/// The draw uniform of a mesh drawn with `state` into a `width` × `height` target.
-#[must_use]
+/// The draw uniform of a mesh drawn with `state` into a `width` × `height` target, whose
+/// vertices' secondary colour is `secondary` (the current one when it was recorded).
 /// With `flip` the target is drawn upside down (the renderer's headless frames).
-pub(crate) fn draw_uniform(state: &DrawState, polygon: bool, (width, height): (u32, u32), flip: bool) -> GpuDraw {
+#[must_use]
+pub(crate) fn draw_uniform(
+    state: &DrawState,
+    (polygon, secondary): (bool, [f32; 4]),
+    (width, height): (u32, u32),
+    flip: bool,
+) -> GpuDraw {
     let normal_matrix = Mat4::from_mat3(state.normal_matrix());
     let [vx, vy, vw, vh] = state.viewport.map(|c| c as f32);
     let (fw, fh) = (width as f32, height as f32);
@@ -54,6 +60,10 @@ pub(crate) fn draw_uniform(state: &DrawState, polygon: bool, (width, height): (u
         primitive: [flag(polygon), 0.0, 0.0, 0.0],
         ..GpuDraw::default()
     };
+    if state.color_sum && state.lighting.is_none() {
+        let [r, g, b, _] = secondary.map(|c| c.clamp(0.0, 1.0));
+        draw.color_sum = [r, g, b, 0.0];
+    }
     if let Some(l) = &state.lighting {
         set_lighting(&mut draw, state, l);
     }
@@ -63,6 +73,7 @@ pub(crate) fn draw_uniform(state: &DrawState, polygon: bool, (width, height): (u
 /// The lighting fields, while `GL_LIGHTING` is on (they stay zero while it is off).
 fn set_lighting(draw: &mut GpuDraw, state: &DrawState, l: &Lighting) {
     draw.flags = [1.0, flag(l.two_side), flag(l.local_viewer), flag(state.normalize)];
+    draw.color_sum = [0.0, 0.0, 0.0, flag(l.separate_specular())];
     let (face, mode) = l.color_material;
     let on = |f: GLenum| flag(state.color_material && (face == f || face == GL_FRONT_AND_BACK));
     let mode = match mode {

@@ -73,8 +73,7 @@ fn make_pipeline(
     layout: &wgpu::PipelineLayout,
     (topology, depth, format, blend, tests): PipelineKey,
 ) -> wgpu::RenderPipeline {
-    let attributes =
-        wgpu::vertex_attr_array![0 => Float32x4, 1 => Float32x4, 2 => Float32x4, 3 => Float32, 4 => Float32x4];
+    let attributes = wgpu::vertex_attr_array![0 => Float32x4, 1 => Float32x4, 2 => Float32x4, 3 => Float32x4, 4 => Float32, 5 => Float32x4];
     let vertex = wgpu::VertexBufferLayout {
         array_stride: std::mem::size_of::<RasterVertex>() as wgpu::BufferAddress,
         step_mode: wgpu::VertexStepMode::Vertex,

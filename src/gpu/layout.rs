@@ -145,6 +145,10 @@ pub(crate) struct GpuDraw {
     pub model_ambient: [f32; 4],
     /// x: 1 for polygons.
     pub primitive: [f32; 4],
+    /// The colour sum (GL 1.4 §3.9): rgb the secondary colour of an unlit mesh (zero without
+    /// `GL_COLOR_SUM`); w 1 with `GL_SEPARATE_SPECULAR_COLOR` (lit: the specular terms are the
+    /// secondary colour).
+    pub color_sum: [f32; 4],
     /// Front and back materials.
     pub materials: [GpuMaterial; 2],
     /// The eight lights.
@@ -319,6 +323,7 @@ mod tests {
                 color_material,
                 model_ambient,
                 primitive,
+                color_sum,
                 materials,
                 lights
             }

@@ -174,7 +174,8 @@ impl MeshRaster {
                 continue;
             }
             let uniform_offset = out.uniforms.len() as u32;
-            let draw = draw_uniform(state, matches!(mesh.mode, MeshMode::Fill | MeshMode::Triangles), size, flip);
+            let polygon = matches!(mesh.mode, MeshMode::Fill | MeshMode::Triangles);
+            let draw = draw_uniform(state, (polygon, mesh.template().secondary_color), size, flip);
             out.uniforms.extend_from_slice(bytemuck::bytes_of(&draw));
             out.uniforms.resize((uniform_offset + stride) as usize, 0);
             let draw = MeshDraw {

@@ -17,8 +17,9 @@ use crate::gl::{Accumulation, BoundTexture, Command, DrawState, Fog, FragmentTes
 use glam::Vec4;
 
 /// A vertex ready for the rasteriser: clip position (depth already mapped to [0, 1] through
-/// `glDepthRange`), the final colour, and the texture coordinates (s, t, r, q) after the
-/// texture matrix (the rasteriser divides by q per fragment).
+/// `glDepthRange`), the final colour and the secondary colour the colour sum adds after
+/// texturing (GL 1.4 §3.9; zero without a sum), and the texture coordinates (s, t, r, q)
+/// after the texture matrix (the rasteriser divides by q per fragment).
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 #[cfg_attr(feature = "gpu", derive(bytemuck::Pod, bytemuck::Zeroable))]
@@ -27,6 +28,8 @@ pub struct RasterVertex {
     pub clip: [f32; 4],
     /// RGBA in [0, 1].
     pub color: [f32; 4],
+    /// The secondary colour's RGB in [0, 1] (alpha unused), added after texturing.
+    pub secondary: [f32; 4],
     /// (s, t, r, q); zero when the batch has no texture.
     pub tex: [f32; 4],
     /// The fog coordinate: eye-space distance.
@@ -190,7 +193,8 @@ pub fn assemble_frame(frame: &Frame, gpu_meshes: &[usize]) -> DrawList {
                             .filter_map(|(vertex, s)| Some((vertex, frame.states.get(s)?)))
                             .collect();
                         let hidden = frame.hidden_edges_of(p);
-                        out.lit_primitive(p.mode, frame.vertices_of(p), state, &materials, &hidden);
+                        let shape = (p.mode, p.listed_or_indexed);
+                        out.lit_primitive(shape, frame.vertices_of(p), state, &materials, &hidden);
                     }
                 }
             }
@@ -279,7 +283,7 @@ impl Assembler {
     }
 
     fn primitive(&mut self, mode: GLenum, vertices: &[crate::gl::Vertex], state: &DrawState) {
-        self.lit_primitive(mode, vertices, state, &[], &[]);
+        self.lit_primitive((mode, false), vertices, state, &[], &[]);
     }
 
     /// A primitive whose vertices from `materials[k].0` on are lit with the lighting of
@@ -287,7 +291,7 @@ impl Assembler {
     /// `hidden[i]`: vertex `i`'s edge flag is false (empty: none is).
     fn lit_primitive(
         &mut self,
-        mode: GLenum,
+        (mode, listed_or_indexed): (GLenum, bool),
         vertices: &[crate::gl::Vertex],
         state: &DrawState,
         materials: &[(usize, &DrawState)],
@@ -299,7 +303,13 @@ impl Assembler {
         let v: Vec<ShadedVertex> = vertices.iter().enumerate().map(|(i, v)| shaders[shader_of(i)].shade(v)).collect();
         let n = v.len();
         let closing_edge_first = mode != GL_POLYGON;
-        let quads = mode == GL_QUADS;
+        // Mesa 22.3 hands llvmpipe's draw module the quads of a display list or of
+        // glDrawElements, and those of any source while a pipeline stage is on (a polygon
+        // stipple, an unfilled face), and it splits them along v1–v3; the quads of
+        // glBegin/glEnd and glDrawArrays reach it as triangles split along v0–v2 (measured:
+        // the diagonal of a quad of four colours, tests/reference/pixels/quads.c).
+        let pipeline = state.polygon_stipple.is_some() || state.polygon_mode != [GL_FILL, GL_FILL];
+        let quads = mode == GL_QUADS && (pipeline || listed_or_indexed);
         let mut ctx = PrimitiveContext {
             out: self,
             state,
@@ -362,6 +372,7 @@ impl Assembler {
         self.list.vertices.extend(corners.iter().map(|c| RasterVertex {
             clip: offset_depth(depth_mapped(c.clip, depth_range), c.depth_offset),
             color: c.color.to_array(),
+            secondary: c.secondary.to_array(),
             tex: c.tex.to_array(),
             fog: c.fog,
             aa: c.aa.to_array(),
@@ -432,9 +443,10 @@ struct PrimitiveContext<'a, 'b> {
     closing_edge_first: bool,
     /// Vertices whose edge flag is false (`glEdgeFlag`); empty when none is.
     hidden: &'b [bool],
-    /// `GL_QUADS`: a quad is filled as (v0, v1, v3), (v1, v2, v3), its diagonal v1–v3, as
-    /// Mesa's draw module splits it (`draw_pt_decompose.h`); the diagonal shows where
-    /// attributes are interpolated across a quad that is no parallelogram.
+    /// `GL_QUADS` as Mesa's draw module takes them (see `lit_primitive`): a quad is filled as
+    /// (v0, v1, v3), (v1, v2, v3), its diagonal v1–v3 (`draw_pt_decompose.h`); other quads as
+    /// a fan from v0. The diagonal shows where attributes
+    /// are interpolated across a quad that is no parallelogram.
     quads: bool,
 }
 
@@ -445,14 +457,16 @@ impl PrimitiveContext<'_, '_> {
 
     /// A point of the point size: one pixel natively, else a square in window space.
     fn point(&mut self, i: usize) {
-        let c = self.corner(i, self.v[i].front);
+        let c = self.corner(i, i, true);
         self.point_at(c);
     }
 
-    /// Vertex `i` as a corner of the colour chosen for it.
-    fn corner(&self, i: usize, color: Vec4) -> Corner {
-        let v = &self.v[i];
-        Corner { clip: v.clip, eye: v.eye, color, tex: v.tex, fog: v.fog, depth_offset: 0.0, aa: Vec4::ZERO }
+    /// Vertex `i` as a corner with the colours of vertex `colours` (itself, or the provoking
+    /// vertex under flat shading), of the front face or the back one.
+    fn corner(&self, i: usize, colours: usize, front: bool) -> Corner {
+        let (v, c) = (&self.v[i], &self.v[colours]);
+        let (color, secondary) = if front { (c.front, c.front_secondary) } else { (c.back, c.back_secondary) };
+        Corner { clip: v.clip, eye: v.eye, color, secondary, tex: v.tex, fog: v.fog, depth_offset: 0.0, aa: Vec4::ZERO }
     }
 
     /// A point is clipped whole when its vertex is outside a clip plane (GL 1.1 §2.11).
@@ -490,11 +504,8 @@ impl PrimitiveContext<'_, '_> {
 
     /// A segment of a line primitive; `provoking` gives its colour under flat shading.
     fn segment(&mut self, a: usize, b: usize, provoking: usize) {
-        let (mut ca, mut cb) = (self.corner(a, self.v[a].front), self.corner(b, self.v[b].front));
-        if self.flat() {
-            ca.color = self.v[provoking].front;
-            cb.color = ca.color;
-        }
+        let colours = |i: usize| if self.flat() { provoking } else { i };
+        let (ca, cb) = (self.corner(a, colours(a), true), self.corner(b, colours(b), true));
         self.line(ca, cb);
     }
 
@@ -586,9 +597,8 @@ impl PrimitiveContext<'_, '_> {
                 return;
             }
         }
-        let colour_of = |i: usize| if front { self.v[i].front } else { self.v[i].back };
-        let corners: Vec<Corner> =
-            idx.iter().map(|&i| self.corner(i, colour_of(if self.flat() { provoking } else { i }))).collect();
+        let colours = |i: usize| if self.flat() { provoking } else { i };
+        let corners: Vec<Corner> = idx.iter().map(|&i| self.corner(i, colours(i), front)).collect();
         let mut corners = clip::polygon(corners, &self.state.clip_planes);
         if corners.len() < 3 {
             return;
@@ -602,8 +612,7 @@ impl PrimitiveContext<'_, '_> {
         let is_hidden = |i: &usize| self.hidden.get(*i).copied().unwrap_or(false);
         if mode != GL_FILL && idx.iter().any(is_hidden) {
             let flags: Vec<bool> = idx.iter().map(|i| !is_hidden(i)).collect();
-            let mut whole: Vec<Corner> =
-                idx.iter().map(|&i| self.corner(i, colour_of(if self.flat() { provoking } else { i }))).collect();
+            let mut whole: Vec<Corner> = idx.iter().map(|&i| self.corner(i, colours(i), front)).collect();
             whole.iter_mut().for_each(|c| c.depth_offset = depth.unwrap_or(0.0));
             return self.flagged(mode, &whole, &flags);
         }

@@ -11,6 +11,8 @@ pub(crate) struct Corner {
     /// Eye coordinates, where clip planes are tested (GL 1.1 §2.11).
     pub eye: Vec4,
     pub color: Vec4,
+    /// The secondary colour the colour sum adds after texturing (zero without one).
+    pub secondary: Vec4,
     pub tex: Vec4,
     pub fog: f32,
     /// Polygon offset in window depth units ([0, 1]), added after the depth range.
@@ -24,7 +26,16 @@ impl Corner {
     #[cfg(test)]
     pub fn at(x: f32, y: f32) -> Corner {
         let p = Vec4::new(x, y, 0.0, 1.0);
-        Corner { clip: p, eye: p, color: Vec4::ONE, tex: Vec4::ZERO, fog: 0.0, depth_offset: 0.0, aa: Vec4::ZERO }
+        Corner {
+            clip: p,
+            eye: p,
+            color: Vec4::ONE,
+            secondary: Vec4::ZERO,
+            tex: Vec4::ZERO,
+            fog: 0.0,
+            depth_offset: 0.0,
+            aa: Vec4::ZERO,
+        }
     }
 
     /// The point a fraction `t` of the way from `self` to `other`, every attribute linear in
@@ -34,6 +45,7 @@ impl Corner {
             clip: self.clip.lerp(other.clip, t),
             eye: self.eye.lerp(other.eye, t),
             color: self.color.lerp(other.color, t),
+            secondary: self.secondary.lerp(other.secondary, t),
             tex: self.tex.lerp(other.tex, t),
             fog: self.fog + (other.fog - self.fog) * t,
             depth_offset: self.depth_offset + (other.depth_offset - self.depth_offset) * t,

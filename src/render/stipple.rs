@@ -81,7 +81,16 @@ mod tests {
 
     fn at(x: f32) -> Corner {
         let p = Vec4::new(x, 0.0, 0.0, 1.0);
-        Corner { clip: p, eye: p, color: Vec4::ONE, tex: Vec4::ZERO, fog: 0.0, depth_offset: 0.0, aa: Vec4::ZERO }
+        Corner {
+            clip: p,
+            eye: p,
+            color: Vec4::ONE,
+            secondary: Vec4::ZERO,
+            tex: Vec4::ZERO,
+            fog: 0.0,
+            depth_offset: 0.0,
+            aa: Vec4::ZERO,
+        }
     }
 
     /// NDC x of window x in a 64-pixel viewport.

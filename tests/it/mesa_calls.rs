@@ -657,22 +657,30 @@ fn typed_call(gl: &mut Gl, a: &mut Args) {
         }};
     }
     match ty.as_str() {
-        "b" => call!(i8, "glColor3" => color3bv, "glColor4" => color4bv, "glNormal3" => normal3bv),
-        "ub" => call!(u8, "glColor3" => color3ubv, "glColor4" => color4ubv),
+        "b" => call!(i8, "glColor3" => color3bv, "glColor4" => color4bv, "glNormal3" => normal3bv,
+            "glSecondaryColor3" => secondary_color3bv),
+        "ub" => call!(u8, "glColor3" => color3ubv, "glColor4" => color4ubv, "glSecondaryColor3" => secondary_color3ubv),
         "s" => call!(i16, "glColor3" => color3sv, "glColor4" => color4sv, "glNormal3" => normal3sv,
+            "glSecondaryColor3" => secondary_color3sv,
             "glVertex2" => vertex2sv, "glVertex3" => vertex3sv, "glVertex4" => vertex4sv,
             "glTexCoord1" => tex_coord1sv, "glTexCoord2" => tex_coord2sv, "glTexCoord3" => tex_coord3sv,
             "glTexCoord4" => tex_coord4sv, "glRasterPos2" => raster_pos2sv, "glRasterPos3" => raster_pos3sv,
             "glRasterPos4" => raster_pos4sv),
-        "us" => call!(u16, "glColor3" => color3usv, "glColor4" => color4usv),
+        "us" => call!(u16, "glColor3" => color3usv, "glColor4" => color4usv,
+            "glSecondaryColor3" => secondary_color3usv),
         "i" => call!(i32, "glColor3" => color3iv, "glColor4" => color4iv, "glNormal3" => normal3iv,
+            "glSecondaryColor3" => secondary_color3iv,
             "glVertex2" => vertex2iv, "glVertex3" => vertex3iv, "glVertex4" => vertex4iv,
             "glTexCoord1" => tex_coord1iv, "glTexCoord2" => tex_coord2iv, "glTexCoord3" => tex_coord3iv,
             "glTexCoord4" => tex_coord4iv, "glRasterPos3" => raster_pos3iv, "glRasterPos4" => raster_pos4iv),
-        "ui" => call!(u32, "glColor3" => color3uiv, "glColor4" => color4uiv),
-        "f" => call!(f32, "glTexCoord1" => tex_coord1fv, "glTexCoord2" => tex_coord2fv,
-            "glTexCoord3" => tex_coord3fv, "glTexCoord4" => tex_coord4fv),
+        "ui" => call!(u32, "glColor3" => color3uiv, "glColor4" => color4uiv,
+            "glSecondaryColor3" => secondary_color3uiv),
+        "f" => {
+            call!(f32, "glSecondaryColor3" => secondary_color3fv, "glTexCoord1" => tex_coord1fv, "glTexCoord2" => tex_coord2fv,
+            "glTexCoord3" => tex_coord3fv, "glTexCoord4" => tex_coord4fv)
+        }
         _ => call!(f64, "glColor3" => color3dv, "glColor4" => color4dv, "glNormal3" => normal3dv,
+            "glSecondaryColor3" => secondary_color3dv,
             "glVertex2" => vertex2dv, "glVertex3" => vertex3dv, "glVertex4" => vertex4dv,
             "glTexCoord1" => tex_coord1dv, "glTexCoord2" => tex_coord2dv, "glTexCoord3" => tex_coord3dv,
             "glTexCoord4" => tex_coord4dv, "glRasterPos4" => raster_pos4dv),

@@ -163,6 +163,7 @@ fn call(gl: &mut Gl, a: &mut Args) {
         "glBlendEquationSeparate" => gl.blend_equation_separate(a.e(), a.e()),
         "glBlendColor" => gl.blend_color(a.f(), a.f(), a.f(), a.f()),
         "glSampleCoverage" => gl.sample_coverage(a.f(), a.int() as GLboolean),
+        "glSecondaryColor3f" => gl.secondary_color3f(a.f(), a.f(), a.f()),
         "glAlphaFunc" => gl.alpha_func(a.e(), a.f()),
         "glTexImage1D" => {
             let (target, level, internal, width, border, format, type_) =

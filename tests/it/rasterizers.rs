@@ -7,7 +7,7 @@
 //! which lavapipe steps by Vulkan's rules), and a depth test switched off in the CPU rasteriser
 //! fails the test.
 
-use gleval::gl::{Blend, Frame};
+use gleval::gl::{Blend, ClientArray, Frame};
 use gleval::prelude::*;
 use gleval::render::{soft, Renderer};
 use gleval::testing::compare::{compare, RgbImage};
@@ -425,5 +425,236 @@ fn lod_bounds_that_are_not_numbers_draw() {
     assert!(green(&soft::render_frame(&frame, 4, 4).pixels));
     if let Some(mut renderer) = optional_renderer() {
         assert!(green(&renderer.render_frame(&frame, 4, 4).expect("wgpu renders").pixels));
+    }
+}
+
+/// The calls of `tests/reference/pixels/color_sum.c`: GL 1.4's colour sum and GL 1.2's
+/// separate specular colour in eleven set-ups (that file lists them).
+fn color_sum_scene(gl: &mut Gl, k: usize) {
+    let quad = |gl: &mut Gl| {
+        gl.begin(GL_QUADS);
+        for (x, y) in [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)] {
+            gl.vertex2f(x, y);
+        }
+        gl.end();
+    };
+    let square = |gl: &mut Gl| {
+        let secondary = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0], [0.5, 0.5, 0.0]];
+        gl.begin(GL_QUADS);
+        for ((x, y), s) in [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)].into_iter().zip(secondary) {
+            gl.secondary_color3fv(&s);
+            gl.vertex2f(x, y);
+        }
+        gl.end();
+    };
+    let lit = |gl: &mut Gl, control: GLenum| {
+        gl.enable(GL_LIGHTING);
+        gl.enable(GL_LIGHT0);
+        gl.material_fv(GL_FRONT_AND_BACK, GL_SPECULAR, &[0.5, 0.25, 0.0, 1.0]);
+        gl.material_f(GL_FRONT_AND_BACK, GL_SHININESS, 0.0);
+        gl.light_model_i(GL_LIGHT_MODEL_COLOR_CONTROL, control as GLint);
+        gl.normal3f(0.0, 0.0, 1.0);
+    };
+    let textured = |gl: &mut Gl| {
+        gl.tex_image_2d(GL_TEXTURE_2D, 0, GL_RGBA as GLint, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, &[128u8, 255, 64, 255]);
+        gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST as GLint);
+        gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST as GLint);
+        gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE as GLint);
+        gl.enable(GL_TEXTURE_2D);
+    };
+    let patch = |gl: &mut Gl| {
+        let points = [-1.0, -1.0, 0.0, 1.0, -1.0, 0.0, -1.0, 1.0, 0.0, 1.0, 1.0, 0.0];
+        gl.map2f(GL_MAP2_VERTEX_3, 0.0, 1.0, 3, 2, 0.0, 1.0, 6, 2, &points);
+        gl.enable(GL_MAP2_VERTEX_3);
+        gl.map_grid2f(4, 0.0, 1.0, 4, 0.0, 1.0);
+        gl.eval_mesh2(GL_FILL, 0, 4, 0, 4);
+    };
+    gl.color4f(0.25, 0.5, 0.125, 0.5);
+    gl.secondary_color3f(0.5, 0.25, 0.5);
+    match k {
+        0 => {
+            gl.enable(GL_COLOR_SUM);
+            quad(gl);
+        }
+        1 => quad(gl),
+        2 => {
+            gl.color4f(1.0, 0.5, 0.5, 1.0);
+            textured(gl);
+            gl.enable(GL_COLOR_SUM);
+            quad(gl);
+        }
+        3..=5 => {
+            textured(gl);
+            lit(gl, if k == 4 { GL_SINGLE_COLOR } else { GL_SEPARATE_SPECULAR_COLOR });
+            if k == 5 {
+                gl.enable(GL_COLOR_SUM);
+            }
+            quad(gl);
+        }
+        6 => {
+            gl.enable(GL_COLOR_SUM);
+            gl.enable(GL_FOG);
+            gl.fogi(GL_FOG_MODE, GL_LINEAR as GLint);
+            gl.fogf(GL_FOG_END, 2.0);
+            gl.fogfv(GL_FOG_COLOR, &[0.0, 0.0, 1.0, 1.0]);
+            gl.begin(GL_QUADS);
+            for (x, y, z) in [(-1.0, -1.0, 0.5), (1.0, -1.0, 0.5), (1.0, 1.0, -0.5), (-1.0, 1.0, -0.5)] {
+                gl.vertex3f(x, y, z);
+            }
+            gl.end();
+        }
+        7 | 8 => {
+            gl.enable(GL_COLOR_SUM);
+            if k == 8 {
+                gl.shade_model(GL_FLAT);
+            }
+            square(gl);
+        }
+        9 => {
+            textured(gl);
+            lit(gl, GL_SEPARATE_SPECULAR_COLOR);
+            patch(gl);
+        }
+        _ => {
+            gl.enable(GL_COLOR_SUM);
+            patch(gl);
+        }
+    }
+}
+
+/// The colour sum on both rasterisers against what Mesa 22.3 (llvmpipe, OSMesa) drew for the
+/// same calls (`tests/reference/pixels/color_sum.c`): the secondary colour is added after
+/// texturing and before fog, lit with `GL_SEPARATE_SPECULAR_COLOR` whether or not
+/// `GL_COLOR_SUM` is on, unlit only with it; flat shading takes the provoking vertex's. Cases 9
+/// and 10 are evaluator patches, which wgpu draws with its mesh rasteriser. Within 1/255.
+#[test]
+fn color_sum_is_mesas_on_both_rasterisers() {
+    let mut renderer = optional_renderer();
+    let same = |p: [u8; 4]| [p; 8];
+    let mesa: [[[u8; 4]; 8]; 11] = [
+        same([191, 191, 159, 128]),
+        same([64, 128, 32, 128]),
+        same([255, 191, 160, 255]),
+        same([235, 255, 54, 255]),
+        same([128, 255, 54, 255]),
+        same([235, 255, 54, 255]),
+        same([143, 143, 183, 128]),
+        [
+            [255, 128, 48, 128],
+            [255, 128, 80, 128],
+            [239, 128, 112, 128],
+            [207, 128, 143, 128],
+            [175, 128, 175, 128],
+            [143, 128, 207, 128],
+            [112, 128, 239, 128],
+            [80, 128, 255, 128],
+        ],
+        same([191, 255, 32, 128]),
+        same([235, 255, 54, 255]),
+        same([191, 191, 159, 128]),
+    ];
+    for (k, expected) in mesa.iter().enumerate() {
+        let mut gl = Gl::new(8, 8);
+        color_sum_scene(&mut gl, k);
+        assert_eq!(gl.get_error(), GL_NO_ERROR);
+        let frame = gl.take_frame();
+        let diagonal = |pixels: &[u8]| -> Vec<[u8; 4]> {
+            (0..8).map(|i| pixels[((7 - i) * 8 + i) * 4..][..4].try_into().unwrap()).collect()
+        };
+        let close =
+            |got: &[[u8; 4]]| got.iter().zip(expected).all(|(g, e)| g.iter().zip(e).all(|(a, b)| a.abs_diff(*b) <= 1));
+        let soft = diagonal(&soft::render_frame(&frame, 8, 8).pixels);
+        assert!(close(&soft), "CPU, case {k}: {soft:?}, Mesa {expected:?}");
+        if let Some(renderer) = renderer.as_mut() {
+            let wgpu = diagonal(&renderer.render_frame(&frame, 8, 8).expect("wgpu renders").pixels);
+            assert!(close(&wgpu), "wgpu, case {k}: {wgpu:?}, Mesa {expected:?}");
+        }
+    }
+}
+
+/// Where a quad is split into triangles, on both rasterisers against Mesa 22.3's pixels for the
+/// same calls (`tests/reference/pixels/quads.c`): along v0–v2 from `glBegin`/`glEnd`,
+/// `glDrawArrays` and `glArrayElement`; along v1–v3 from a display list, `glDrawElements`, and
+/// with a polygon stipple or an unfilled face.
+#[test]
+fn quad_diagonals_are_mesas_on_both_rasterisers() {
+    let mut renderer = optional_renderer();
+    let fan = [
+        [239, 0, 16, 255],
+        [207, 0, 48, 255],
+        [175, 0, 80, 255],
+        [143, 0, 112, 255],
+        [112, 0, 143, 255],
+        [80, 0, 175, 255],
+        [48, 0, 207, 255],
+        [16, 0, 239, 255],
+    ];
+    let split = [
+        [231, 24, 0, 255],
+        [183, 72, 0, 255],
+        [135, 120, 0, 255],
+        [88, 167, 0, 255],
+        [56, 167, 32, 255],
+        [40, 120, 96, 255],
+        [24, 72, 159, 255],
+        [8, 24, 223, 255],
+    ];
+    let mesa = [fan, split, fan, split, fan, split, split];
+    let corners = [[-1.0f32, -1.0], [1.0, -1.0], [1.0, 1.0], [-1.0, 1.0]];
+    let colours = [[1.0f32, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0], [0.5, 0.5, 0.0]];
+    let immediate = |gl: &mut Gl| {
+        gl.begin(GL_QUADS);
+        for (c, p) in colours.iter().zip(&corners) {
+            gl.color3fv(c);
+            gl.vertex2fv(p);
+        }
+        gl.end();
+    };
+    for (k, expected) in mesa.iter().enumerate() {
+        let mut gl = Gl::new(8, 8);
+        let vertices = ClientArray::new(corners.as_flattened());
+        let colour_array = ClientArray::new(colours.as_flattened());
+        gl.vertex_pointer(2, GL_FLOAT, 0, &vertices);
+        gl.color_pointer(3, GL_FLOAT, 0, &colour_array);
+        gl.enable_client_state(GL_VERTEX_ARRAY);
+        gl.enable_client_state(GL_COLOR_ARRAY);
+        match k {
+            0 => immediate(&mut gl),
+            1 => {
+                gl.new_list(1, GL_COMPILE);
+                immediate(&mut gl);
+                gl.end_list();
+                gl.call_list(1);
+            }
+            2 => gl.draw_arrays(GL_QUADS, 0, 4),
+            3 => gl.draw_elements(GL_QUADS, 4, GL_UNSIGNED_BYTE, &[0u8, 1, 2, 3]),
+            4 => {
+                gl.begin(GL_QUADS);
+                (0..4).for_each(|i| gl.array_element(i));
+                gl.end();
+            }
+            5 => {
+                gl.polygon_stipple(&[0xff; 128]);
+                gl.enable(GL_POLYGON_STIPPLE);
+                immediate(&mut gl);
+            }
+            _ => {
+                gl.polygon_mode(GL_BACK, GL_LINE);
+                immediate(&mut gl);
+            }
+        }
+        assert_eq!(gl.get_error(), GL_NO_ERROR);
+        let frame = gl.take_frame();
+        let diagonal = |pixels: &[u8]| -> Vec<[u8; 4]> {
+            (0..8).map(|i| pixels[((7 - i) * 8 + i) * 4..][..4].try_into().unwrap()).collect()
+        };
+        let close =
+            |got: &[[u8; 4]]| got.iter().zip(expected).all(|(g, e)| g.iter().zip(e).all(|(a, b)| a.abs_diff(*b) <= 1));
+        let soft = diagonal(&soft::render_frame(&frame, 8, 8).pixels);
+        assert!(close(&soft), "CPU, case {k}: {soft:?}, Mesa {expected:?}");
+        if let Some(renderer) = renderer.as_mut() {
+            let wgpu = diagonal(&renderer.render_frame(&frame, 8, 8).expect("wgpu renders").pixels);
+            assert!(close(&wgpu), "wgpu, case {k}: {wgpu:?}, Mesa {expected:?}");
+        }
     }
 }

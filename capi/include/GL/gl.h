@@ -1288,6 +1288,49 @@ GLAPI void GLAPIENTRY glBlendEquationSeparateEXT(GLenum modeRGB, GLenum modeAlph
 GLAPI void GLAPIENTRY glBlendFuncSeparate(GLenum sfactorRGB, GLenum dfactorRGB, GLenum sfactorAlpha, GLenum dfactorAlpha);
 GLAPI void GLAPIENTRY glBlendFuncSeparateEXT(GLenum sfactorRGB, GLenum dfactorRGB, GLenum sfactorAlpha, GLenum dfactorAlpha);
 
+/* GL 1.4's secondary colour and colour sum (GL_EXT_secondary_color's names too). */
+#define GL_COLOR_SUM 0x8458
+#define GL_CURRENT_SECONDARY_COLOR 0x8459
+#define GL_SECONDARY_COLOR_ARRAY_SIZE 0x845A
+#define GL_SECONDARY_COLOR_ARRAY_TYPE 0x845B
+#define GL_SECONDARY_COLOR_ARRAY_STRIDE 0x845C
+#define GL_SECONDARY_COLOR_ARRAY_POINTER 0x845D
+#define GL_SECONDARY_COLOR_ARRAY 0x845E
+GLAPI void GLAPIENTRY glSecondaryColor3b(GLbyte red, GLbyte green, GLbyte blue);
+GLAPI void GLAPIENTRY glSecondaryColor3bv(const GLbyte *v);
+GLAPI void GLAPIENTRY glSecondaryColor3d(GLdouble red, GLdouble green, GLdouble blue);
+GLAPI void GLAPIENTRY glSecondaryColor3dv(const GLdouble *v);
+GLAPI void GLAPIENTRY glSecondaryColor3f(GLfloat red, GLfloat green, GLfloat blue);
+GLAPI void GLAPIENTRY glSecondaryColor3fv(const GLfloat *v);
+GLAPI void GLAPIENTRY glSecondaryColor3i(GLint red, GLint green, GLint blue);
+GLAPI void GLAPIENTRY glSecondaryColor3iv(const GLint *v);
+GLAPI void GLAPIENTRY glSecondaryColor3s(GLshort red, GLshort green, GLshort blue);
+GLAPI void GLAPIENTRY glSecondaryColor3sv(const GLshort *v);
+GLAPI void GLAPIENTRY glSecondaryColor3ub(GLubyte red, GLubyte green, GLubyte blue);
+GLAPI void GLAPIENTRY glSecondaryColor3ubv(const GLubyte *v);
+GLAPI void GLAPIENTRY glSecondaryColor3ui(GLuint red, GLuint green, GLuint blue);
+GLAPI void GLAPIENTRY glSecondaryColor3uiv(const GLuint *v);
+GLAPI void GLAPIENTRY glSecondaryColor3us(GLushort red, GLushort green, GLushort blue);
+GLAPI void GLAPIENTRY glSecondaryColor3usv(const GLushort *v);
+GLAPI void GLAPIENTRY glSecondaryColorPointer(GLint size, GLenum type, GLsizei stride, const GLvoid *pointer);
+GLAPI void GLAPIENTRY glSecondaryColor3bEXT(GLbyte red, GLbyte green, GLbyte blue);
+GLAPI void GLAPIENTRY glSecondaryColor3bvEXT(const GLbyte *v);
+GLAPI void GLAPIENTRY glSecondaryColor3dEXT(GLdouble red, GLdouble green, GLdouble blue);
+GLAPI void GLAPIENTRY glSecondaryColor3dvEXT(const GLdouble *v);
+GLAPI void GLAPIENTRY glSecondaryColor3fEXT(GLfloat red, GLfloat green, GLfloat blue);
+GLAPI void GLAPIENTRY glSecondaryColor3fvEXT(const GLfloat *v);
+GLAPI void GLAPIENTRY glSecondaryColor3iEXT(GLint red, GLint green, GLint blue);
+GLAPI void GLAPIENTRY glSecondaryColor3ivEXT(const GLint *v);
+GLAPI void GLAPIENTRY glSecondaryColor3sEXT(GLshort red, GLshort green, GLshort blue);
+GLAPI void GLAPIENTRY glSecondaryColor3svEXT(const GLshort *v);
+GLAPI void GLAPIENTRY glSecondaryColor3ubEXT(GLubyte red, GLubyte green, GLubyte blue);
+GLAPI void GLAPIENTRY glSecondaryColor3ubvEXT(const GLubyte *v);
+GLAPI void GLAPIENTRY glSecondaryColor3uiEXT(GLuint red, GLuint green, GLuint blue);
+GLAPI void GLAPIENTRY glSecondaryColor3uivEXT(const GLuint *v);
+GLAPI void GLAPIENTRY glSecondaryColor3usEXT(GLushort red, GLushort green, GLushort blue);
+GLAPI void GLAPIENTRY glSecondaryColor3usvEXT(const GLushort *v);
+GLAPI void GLAPIENTRY glSecondaryColorPointerEXT(GLint size, GLenum type, GLsizei stride, const GLvoid *pointer);
+
 /* GL 1.2's texture level and LOD range (GL_SGIS_texture_lod): GL_TEXTURE_BASE_LEVEL,
  * GL_TEXTURE_MAX_LEVEL, GL_TEXTURE_MIN_LOD and GL_TEXTURE_MAX_LOD above. */
 #define GL_SGIS_texture_lod 1

@@ -71,6 +71,20 @@ entry! {
 }
 
 entry! {
+    /// `glSecondaryColorPointer` (GL 1.4): `Gl::secondary_color_pointer`.
+    unsafe fn glSecondaryColorPointer(size: GLint, type_: GLenum, stride: GLsizei, ptr: *const c_void) {
+        with_gl(|gl| gl.secondary_color_pointer(size, type_, stride, pointer(ptr)))
+    }
+}
+
+entry! {
+    /// `glSecondaryColorPointerEXT`: `glSecondaryColorPointer`.
+    unsafe fn glSecondaryColorPointerEXT(size: GLint, type_: GLenum, stride: GLsizei, ptr: *const c_void) {
+        with_gl(|gl| gl.secondary_color_pointer(size, type_, stride, pointer(ptr)))
+    }
+}
+
+entry! {
     /// `glIndexPointer`: `Gl::index_pointer`.
     unsafe fn glIndexPointer(type_: GLenum, stride: GLsizei, ptr: *const c_void) {
         with_gl(|gl| gl.index_pointer(type_, stride, pointer(ptr)))

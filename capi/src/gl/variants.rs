@@ -1,4 +1,5 @@
-//! The type variants of the per-vertex calls (`glColor3b` … `glRasterPos4sv`, `glRect*v`):
+//! The type variants of the per-vertex calls (`glColor3b` … `glRasterPos4sv`, `glRect*v`, GL
+//! 1.4's `glSecondaryColor3*` with their `EXT` names):
 //! `Gl`'s converting forms (`src/gl/variants.rs`), forwarded.
 
 use gleval::gl::types::*;
@@ -45,9 +46,41 @@ forward! {
     glRasterPos4i(x: GLint, y: GLint, z: GLint, w: GLint) => raster_pos4i;
     glRasterPos4s(x: GLshort, y: GLshort, z: GLshort, w: GLshort) => raster_pos4s;
     glRects(x1: GLshort, y1: GLshort, x2: GLshort, y2: GLshort) => rects;
+    glSecondaryColor3b(r: GLbyte, g: GLbyte, b: GLbyte) => secondary_color3b;
+    glSecondaryColor3s(r: GLshort, g: GLshort, b: GLshort) => secondary_color3s;
+    glSecondaryColor3i(r: GLint, g: GLint, b: GLint) => secondary_color3i;
+    glSecondaryColor3d(r: GLdouble, g: GLdouble, b: GLdouble) => secondary_color3d;
+    glSecondaryColor3ub(r: GLubyte, g: GLubyte, b: GLubyte) => secondary_color3ub;
+    glSecondaryColor3us(r: GLushort, g: GLushort, b: GLushort) => secondary_color3us;
+    glSecondaryColor3ui(r: GLuint, g: GLuint, b: GLuint) => secondary_color3ui;
+    glSecondaryColor3f(r: GLfloat, g: GLfloat, b: GLfloat) => secondary_color3f;
+    glSecondaryColor3bEXT(r: GLbyte, g: GLbyte, b: GLbyte) => secondary_color3b;
+    glSecondaryColor3sEXT(r: GLshort, g: GLshort, b: GLshort) => secondary_color3s;
+    glSecondaryColor3iEXT(r: GLint, g: GLint, b: GLint) => secondary_color3i;
+    glSecondaryColor3dEXT(r: GLdouble, g: GLdouble, b: GLdouble) => secondary_color3d;
+    glSecondaryColor3ubEXT(r: GLubyte, g: GLubyte, b: GLubyte) => secondary_color3ub;
+    glSecondaryColor3usEXT(r: GLushort, g: GLushort, b: GLushort) => secondary_color3us;
+    glSecondaryColor3uiEXT(r: GLuint, g: GLuint, b: GLuint) => secondary_color3ui;
+    glSecondaryColor3fEXT(r: GLfloat, g: GLfloat, b: GLfloat) => secondary_color3f;
 }
 
 vector! {
+    glSecondaryColor3bv(GLbyte; 3) => secondary_color3bv;
+    glSecondaryColor3sv(GLshort; 3) => secondary_color3sv;
+    glSecondaryColor3iv(GLint; 3) => secondary_color3iv;
+    glSecondaryColor3dv(GLdouble; 3) => secondary_color3dv;
+    glSecondaryColor3ubv(GLubyte; 3) => secondary_color3ubv;
+    glSecondaryColor3usv(GLushort; 3) => secondary_color3usv;
+    glSecondaryColor3uiv(GLuint; 3) => secondary_color3uiv;
+    glSecondaryColor3fv(GLfloat; 3) => secondary_color3fv;
+    glSecondaryColor3bvEXT(GLbyte; 3) => secondary_color3bv;
+    glSecondaryColor3svEXT(GLshort; 3) => secondary_color3sv;
+    glSecondaryColor3ivEXT(GLint; 3) => secondary_color3iv;
+    glSecondaryColor3dvEXT(GLdouble; 3) => secondary_color3dv;
+    glSecondaryColor3ubvEXT(GLubyte; 3) => secondary_color3ubv;
+    glSecondaryColor3usvEXT(GLushort; 3) => secondary_color3usv;
+    glSecondaryColor3uivEXT(GLuint; 3) => secondary_color3uiv;
+    glSecondaryColor3fvEXT(GLfloat; 3) => secondary_color3fv;
     glColor3bv(GLbyte; 3) => color3bv;
     glColor3sv(GLshort; 3) => color3sv;
     glColor3iv(GLint; 3) => color3iv;

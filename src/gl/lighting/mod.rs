@@ -96,6 +96,18 @@ pub struct Lighting {
     pub two_side: bool,
     /// `glColorMaterial` face and mode (used when `GL_COLOR_MATERIAL` is enabled).
     pub color_material: (GLenum, GLenum),
+    /// GL 1.2's `GL_LIGHT_MODEL_COLOR_CONTROL`: `GL_SINGLE_COLOR`, or
+    /// `GL_SEPARATE_SPECULAR_COLOR`, which lights the specular terms into the secondary colour
+    /// that the colour sum adds after texturing (GL 1.2 §2.13.1, §3.9).
+    pub color_control: GLenum,
+}
+
+impl Lighting {
+    /// Whether the specular terms go to the secondary colour.
+    #[must_use]
+    pub fn separate_specular(&self) -> bool {
+        self.color_control == GL_SEPARATE_SPECULAR_COLOR
+    }
 }
 
 impl Default for Lighting {
@@ -107,6 +119,7 @@ impl Default for Lighting {
             local_viewer: false,
             two_side: false,
             color_material: (GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE),
+            color_control: GL_SINGLE_COLOR,
         }
     }
 }
@@ -165,12 +178,13 @@ impl Gl {
     }
 
     /// Values `glLightModelfv`/`glLightModeliv` read for `pname` (GL 1.1 table 2.10): 4 for
-    /// the ambient colour, 1 for the local viewer and two-sided flags; `None` for another name.
+    /// the ambient colour, 1 for the local viewer and two-sided flags and GL 1.2's colour
+    /// control; `None` for another name.
     #[must_use]
     pub fn light_model_param_count(pname: GLenum) -> Option<usize> {
         match pname {
             GL_LIGHT_MODEL_AMBIENT => Some(4),
-            GL_LIGHT_MODEL_LOCAL_VIEWER | GL_LIGHT_MODEL_TWO_SIDE => Some(1),
+            GL_LIGHT_MODEL_LOCAL_VIEWER | GL_LIGHT_MODEL_TWO_SIDE | GL_LIGHT_MODEL_COLOR_CONTROL => Some(1),
             _ => None,
         }
     }
@@ -273,7 +287,9 @@ impl Gl {
         self.material_fv(face, pname, &[param, 0.0, 0.0, 0.0]);
     }
 
-    /// `glLightModelfv`: `GL_LIGHT_MODEL_AMBIENT` (4 values), `_LOCAL_VIEWER`, `_TWO_SIDE`.
+    /// `glLightModelfv`: `GL_LIGHT_MODEL_AMBIENT` (4 values), `_LOCAL_VIEWER`, `_TWO_SIDE`,
+    /// GL 1.2's `_COLOR_CONTROL` (`GL_SINGLE_COLOR` or `GL_SEPARATE_SPECULAR_COLOR`, another
+    /// value `GL_INVALID_ENUM`, as Mesa's `_mesa_LightModelfv`).
     pub fn light_model_fv(&mut self, pname: GLenum, params: &[GLfloat]) {
         if self.compiled(|| ListCommand::Lighting(LightingCall::LightModel(pname, params.to_vec()))) {
             return;
@@ -288,6 +304,12 @@ impl Gl {
         match pname {
             GL_LIGHT_MODEL_AMBIENT => self.server.lighting.model_ambient = vec4_from(params),
             GL_LIGHT_MODEL_LOCAL_VIEWER => self.server.lighting.local_viewer = params[0] != 0.0,
+            GL_LIGHT_MODEL_COLOR_CONTROL => {
+                let control =
+                    [GL_SINGLE_COLOR, GL_SEPARATE_SPECULAR_COLOR].into_iter().find(|&e| e as f32 == params[0]);
+                let Some(control) = control else { return self.set_error(GL_INVALID_ENUM) };
+                self.server.lighting.color_control = control;
+            }
             _ => self.server.lighting.two_side = params[0] != 0.0,
         }
         self.touch_state();
@@ -344,5 +366,6 @@ pub(crate) static GET_ROWS: &[StateVar] = &[
     row(GL_LIGHT_MODEL_AMBIENT, 4, Kind::Normalized, |gl, o| put(o, &gl.server.lighting.model_ambient.to_array())),
     row(GL_LIGHT_MODEL_LOCAL_VIEWER, 1, Kind::Bool, |gl, o| put_flag(o, gl.server.lighting.local_viewer)),
     row(GL_LIGHT_MODEL_TWO_SIDE, 1, Kind::Bool, |gl, o| put_flag(o, gl.server.lighting.two_side)),
+    row(GL_LIGHT_MODEL_COLOR_CONTROL, 1, Kind::Int, |gl, o| put_enum(o, gl.server.lighting.color_control)),
     int_limit!(GL_MAX_LIGHTS, 8),
 ];

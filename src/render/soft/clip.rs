@@ -27,6 +27,7 @@ impl Mix for RasterVertex {
         RasterVertex {
             clip: m4(self.clip, other.clip),
             color: m4(self.color, other.color),
+            secondary: m4(self.secondary, other.secondary),
             tex: m4(self.tex, other.tex),
             fog: self.fog + (other.fog - self.fog) * t,
             aa: m4(self.aa, other.aa),

@@ -14,6 +14,7 @@ use crate::render::assemble::{FragmentState, Smooth};
 #[derive(Clone, Copy, Debug, Default)]
 pub(super) struct Fragment {
     pub color: [f32; 4],
+    pub secondary: [f32; 4],
     pub tex: [f32; 4],
     pub fog: f32,
     pub aa: [f32; 4],
@@ -49,6 +50,7 @@ impl<'a> Program<'a> {
         if let (Some(sampler), Some(texture)) = (&self.sampler, &self.state.texture) {
             color = apply_env(texture, color, texel(texture, sampler, f.tex, slope));
         }
+        color = color_sum(color, f.secondary);
         if let Some(fog) = &self.state.fog {
             let k = fog_factor(fog, f.fog);
             for c in 0..3 {
@@ -165,6 +167,12 @@ fn apply_env(texture: &BoundTexture, cf: [f32; 4], texel: [f32; 4]) -> [f32; 4] 
         }
     }
     [c[0], c[1], c[2], a]
+}
+
+/// The colour sum (GL 1.4 §3.9): the secondary colour's RGB added, clamped; the vertex stage
+/// made the secondary colour zero where GL makes no sum.
+pub(super) fn color_sum([r, g, b, a]: [f32; 4], secondary: [f32; 4]) -> [f32; 4] {
+    [(r + secondary[0]).min(1.0), (g + secondary[1]).min(1.0), (b + secondary[2]).min(1.0), a]
 }
 
 /// GL's fog factor f (the fragment's share), clamped to [0, 1]: C = f·Cf + (1 − f)·Cfog.

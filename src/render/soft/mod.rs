@@ -247,7 +247,7 @@ impl Target<'_> {
                 Some(c) => c,
                 None => return,
             },
-            None => f.color,
+            None => fragment::color_sum(f.color, f.secondary),
         };
         if let Some(s) = &stencil {
             if !self.fb.stencil_passes(index, s) {

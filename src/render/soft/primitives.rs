@@ -24,10 +24,12 @@ const WINDOW_LIMIT: f32 = (1 << 20) as f32;
 /// plane equations give it, where a weighted sum may give 0.8999999 and 229).
 fn mix<const N: usize>(v: &[&RasterVertex; N], weights: [f32; N]) -> Fragment {
     let first = v[0];
-    let mut f = Fragment { color: first.color, tex: first.tex, fog: first.fog, aa: first.aa };
+    let mut f =
+        Fragment { color: first.color, secondary: first.secondary, tex: first.tex, fog: first.fog, aa: first.aa };
     for (v, w) in v.iter().zip(weights).skip(1) {
         for k in 0..4 {
             f.color[k] += (v.color[k] - first.color[k]) * w;
+            f.secondary[k] += (v.secondary[k] - first.secondary[k]) * w;
             f.tex[k] += (v.tex[k] - first.tex[k]) * w;
             f.aa[k] += (v.aa[k] - first.aa[k]) * w;
         }

@@ -170,6 +170,10 @@ impl Harness {
                 let (size, type_, stride, offset) = (a.int(), a.e(), a.int(), a.int());
                 gl.color_pointer(size, type_, stride, self.at(offset));
             }
+            "secondary_color_pointer" => {
+                let (size, type_, stride, offset) = (a.int(), a.e(), a.int(), a.int());
+                gl.secondary_color_pointer(size, type_, stride, self.at(offset));
+            }
             "tex_coord_pointer" => {
                 let (size, type_, stride, offset) = (a.int(), a.e(), a.int(), a.int());
                 gl.tex_coord_pointer(size, type_, stride, self.at(offset));
@@ -223,8 +227,8 @@ impl Harness {
             }
             "get_pointerv" => {
                 let pname = a.e();
+                let known = gl.get_pointerv_error(pname).is_none();
                 let p = gl.get_pointerv(pname);
-                let known = is_pointer_name(pname) && !gl.inside_begin_end();
                 values.push(if known { self.pointer_name(pname, p.as_ref()) } else { "unwritten".into() });
             }
             "push_client_attrib" => gl.push_client_attrib(a.e()),
@@ -298,20 +302,6 @@ impl Harness {
 
 fn write_at(mem: &ClientArray, offset: usize, bytes: &[u8]) -> bool {
     mem.write(offset, bytes)
-}
-
-fn is_pointer_name(pname: u32) -> bool {
-    matches!(
-        pname,
-        GL_VERTEX_ARRAY_POINTER
-            | GL_NORMAL_ARRAY_POINTER
-            | GL_COLOR_ARRAY_POINTER
-            | GL_INDEX_ARRAY_POINTER
-            | GL_TEXTURE_COORD_ARRAY_POINTER
-            | GL_EDGE_FLAG_ARRAY_POINTER
-            | GL_FEEDBACK_BUFFER_POINTER
-            | GL_SELECTION_BUFFER_POINTER
-    )
 }
 
 fn start_feedback(gl: &mut Gl) {

@@ -313,7 +313,7 @@ static int get_count(GLenum pname)
     case GL_MAP2_GRID_SEGMENTS: return 2;
     case GL_CURRENT_RASTER_POSITION: case GL_CURRENT_RASTER_COLOR:
     case GL_CURRENT_RASTER_TEXTURE_COORDS: return 4;
-    case GL_CURRENT_COLOR: case GL_CURRENT_TEXTURE_COORDS: return 4;
+    case GL_CURRENT_COLOR: case GL_CURRENT_TEXTURE_COORDS: case GL_CURRENT_SECONDARY_COLOR: return 4;
     case GL_CURRENT_NORMAL: return 3;
     case GL_COLOR_WRITEMASK: case GL_SCISSOR_BOX: case GL_ACCUM_CLEAR_VALUE: return 4;
     default: return 1;
@@ -338,6 +338,14 @@ static const struct typed_fn typed_fns[] = {
     { "glColor4ubv", 4, "ub", (void (*)(const void *))glColor4ubv },
     { "glColor4usv", 4, "us", (void (*)(const void *))glColor4usv },
     { "glColor4uiv", 4, "ui", (void (*)(const void *))glColor4uiv },
+    { "glSecondaryColor3bv", 3, "b", (void (*)(const void *))glSecondaryColor3bv },
+    { "glSecondaryColor3sv", 3, "s", (void (*)(const void *))glSecondaryColor3sv },
+    { "glSecondaryColor3iv", 3, "i", (void (*)(const void *))glSecondaryColor3iv },
+    { "glSecondaryColor3fv", 3, "f", (void (*)(const void *))glSecondaryColor3fv },
+    { "glSecondaryColor3dv", 3, "d", (void (*)(const void *))glSecondaryColor3dv },
+    { "glSecondaryColor3ubv", 3, "ub", (void (*)(const void *))glSecondaryColor3ubv },
+    { "glSecondaryColor3usv", 3, "us", (void (*)(const void *))glSecondaryColor3usv },
+    { "glSecondaryColor3uiv", 3, "ui", (void (*)(const void *))glSecondaryColor3uiv },
     { "glNormal3bv", 3, "b", (void (*)(const void *))glNormal3bv },
     { "glNormal3sv", 3, "s", (void (*)(const void *))glNormal3sv },
     { "glNormal3iv", 3, "i", (void (*)(const void *))glNormal3iv },

@@ -65,13 +65,15 @@ static int run_arrays_call(const char *c)
 {
     if (!strcmp(c, "client_mem")) {
         set_client_mem();
-    } else if (!strcmp(c, "vertex_pointer") || !strcmp(c, "color_pointer") || !strcmp(c, "tex_coord_pointer")) {
+    } else if (!strcmp(c, "vertex_pointer") || !strcmp(c, "color_pointer") || !strcmp(c, "tex_coord_pointer")
+               || !strcmp(c, "secondary_color_pointer")) {
         GLint size = arg_int();
         GLenum type = arg_enum();
         GLsizei stride = arg_int();
         const GLvoid *p = mem_at(arg_int());
         if (c[0] == 'v') glVertexPointer(size, type, stride, p);
         else if (c[0] == 'c') glColorPointer(size, type, stride, p);
+        else if (c[0] == 's') glSecondaryColorPointer(size, type, stride, p);
         else glTexCoordPointer(size, type, stride, p);
     } else if (!strcmp(c, "normal_pointer") || !strcmp(c, "index_pointer")) {
         GLenum type = arg_enum();
