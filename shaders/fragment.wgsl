@@ -3,7 +3,7 @@
 // sum (GL 1.4 §3.9), fog (§3.9)
 // and the alpha test (§4.1.3). Shared by the frame rasteriser (`raster.wgsl`) and the mesh
 // rasteriser (`mesh_raster.wgsl`): each appends this source to its own and declares the
-// bindings it reads, `tex_image`, `tex_sampler` and `env` (a `Fragment`).
+// bindings it reads, `tex_image`, `tex_image_3d`, `tex_sampler` and `env` (a `Fragment`).
 
 struct Fragment {
     // 0 no texture, 1 MODULATE, 2 DECAL, 3 BLEND, 4 REPLACE, 5 ADD.
@@ -28,14 +28,16 @@ struct Fragment {
     fog_end: f32,
     // 0 none, 1 a smooth point's coverage, 2 a smooth line's.
     coverage: u32,
-    pad1: f32,
+    // 3 for a 3D texture, sampled at (s, t, r) from `tex_image_3d`; else 2.
+    dims: u32,
     fog_color: vec4<f32>,
     // 1 with a polygon stipple (GL 1.1 §3.5.6): row y of the window (from the bottom, modulo
     // 32) keeps the fragments of column x where bit x is set.
     stipple: u32,
     // The target's height in pixels; 0 for a target drawn upside down (see `stipple_keeps`).
     height: u32,
-    pad2: u32,
+    // GL_CLAMP in r, as clamp_s (a 3D texture).
+    clamp_r: u32,
     pad3: u32,
     stipple_rows: array<vec4<u32>, 8>,
     // GL_TEXTURE_BORDER_COLOR, clamped to [0, 1].
@@ -47,12 +49,18 @@ struct Fragment {
 // distance. Samples even without a texture (a blank one is bound), so that the sample
 // stays in uniform control flow.
 fn fragment_ops(color_in: vec4<f32>, secondary: vec4<f32>, tex: vec4<f32>, fog: f32) -> vec4<f32> {
-    // (s/q, t/q); GL's first image row is t = 0, uploaded as row 0.
+    // (s/q, t/q, r/q); GL's first image row is t = 0, uploaded as row 0, its first image r = 0.
     let q = select(1.0, tex.w, tex.w != 0.0);
-    let st = tex.xy / q;
-    let clamped = vec2<bool>(env.clamp_s != 0u, env.clamp_t != 0u);
-    let coord = select(st, clamp(st, vec2<f32>(0.0), vec2<f32>(1.0)), clamped);
-    let texel = mix(env.border_color, textureSample(tex_image, tex_sampler, coord), inside_border(coord));
+    let str = tex.xyz / q;
+    let clamped = vec3<bool>(env.clamp_s != 0u, env.clamp_t != 0u, env.clamp_r != 0u);
+    let coord = select(str, clamp(str, vec3<f32>(0.0), vec3<f32>(1.0)), clamped);
+    // Both images are sampled (a blank one stands for the other), so that each sample stays
+    // in uniform control flow.
+    let flat = textureSample(tex_image, tex_sampler, coord.xy);
+    let solid = textureSample(tex_image_3d, tex_sampler, coord);
+    let three_d = env.dims == 3u;
+    let sampled = select(flat, solid, three_d);
+    let texel = mix(env.border_color, sampled, inside_border(coord, three_d));
     var color = color_in;
     if env.mode != 0u {
         color = apply_env(color, texel);
@@ -66,13 +74,15 @@ fn fragment_ops(color_in: vec4<f32>, secondary: vec4<f32>, tex: vec4<f32>, fog: 
 
 // The share of a linear filter at `coord` that lies on the texture rather than on GL_CLAMP's
 // border (1 away from the edges): the edge texel's weight where the sampler duplicated it.
-fn inside_border(coord: vec2<f32>) -> f32 {
-    let size = vec2<f32>(textureDimensions(tex_image, 0));
+fn inside_border(coord: vec3<f32>, three_d: bool) -> f32 {
+    let flat = vec3<f32>(vec2<f32>(textureDimensions(tex_image, 0)), 1.0);
+    let size = select(flat, vec3<f32>(textureDimensions(tex_image_3d, 0)), three_d);
     let u = coord * size - 0.5;
-    let inside = clamp(min(u + 1.0, size - u), vec2<f32>(0.0), vec2<f32>(1.0));
+    let inside = clamp(min(u + 1.0, size - u), vec3<f32>(0.0), vec3<f32>(1.0));
     let s = select(1.0, inside.x, env.clamp_s == 2u);
     let t = select(1.0, inside.y, env.clamp_t == 2u);
-    return s * t;
+    let r = select(1.0, inside.z, env.clamp_r == 2u && three_d);
+    return s * t * r;
 }
 
 // Whether the polygon stipple keeps the fragment at framebuffer position `p` (y down, pixel

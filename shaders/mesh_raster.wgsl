@@ -45,6 +45,7 @@ struct Draw {
 @group(1) @binding(0) var tex_image: texture_2d<f32>;
 @group(1) @binding(1) var tex_sampler: sampler;
 @group(1) @binding(2) var<uniform> env: Fragment;
+@group(1) @binding(3) var tex_image_3d: texture_3d<f32>;
 
 struct Smooth {
     @builtin(position) clip: vec4<f32>,

@@ -10,6 +10,7 @@
 @group(0) @binding(0) var tex_image: texture_2d<f32>;
 @group(0) @binding(1) var tex_sampler: sampler;
 @group(0) @binding(2) var<uniform> env: Fragment;
+@group(0) @binding(3) var tex_image_3d: texture_3d<f32>;
 
 struct VertexOut {
     @builtin(position) clip: vec4<f32>,

@@ -43,7 +43,7 @@ static const GLenum targets[] = {GL_MAP1_VERTEX_3, GL_MAP1_VERTEX_4, GL_MAP1_COL
 static const GLenum modes[] = {GL_POINT, GL_LINE, GL_FILL, GL_POINTS, GL_LINES, GL_TRIANGLES,
     GL_QUAD_STRIP, GL_POLYGON, 0x1234, 0};
 static const GLenum caps[] = {GL_MAP1_VERTEX_3, GL_MAP2_VERTEX_3, GL_MAP2_NORMAL, GL_AUTO_NORMAL,
-    GL_LIGHTING, GL_LIGHT0, GL_DEPTH_TEST, GL_CULL_FACE, GL_TEXTURE_2D, GL_BLEND, GL_FOG,
+    GL_LIGHTING, GL_LIGHT0, GL_DEPTH_TEST, GL_CULL_FACE, GL_TEXTURE_2D, GL_TEXTURE_3D, GL_BLEND, GL_FOG,
     GL_NORMALIZE, GL_ALPHA_TEST, GL_COLOR_MATERIAL, 0x1234};
 static const GLenum pnames[] = {GL_MAX_EVAL_ORDER, GL_MAP1_GRID_DOMAIN, GL_MAP2_GRID_DOMAIN,
     GL_MAP2_GRID_SEGMENTS, GL_CURRENT_RASTER_POSITION, GL_LIST_BASE, 0x1234};
@@ -306,10 +306,30 @@ static const GLenum pixel_maps[] = {GL_PIXEL_MAP_I_TO_I, GL_PIXEL_MAP_S_TO_S, GL
 static const GLint map_sizes[] = {-1, 0, 1, 2, 3, 7, 64, 256, 257};
 static const GLenum copy_types[] = {GL_COLOR, GL_DEPTH, GL_STENCIL, 0x1234};
 static const GLenum read_formats[] = {GL_RGBA, GL_DEPTH_COMPONENT, GL_LUMINANCE, GL_STENCIL_INDEX};
+/* 3D images of bytes at most 16 on a side, 3 images skipped and 16 rows an image: within buf. */
+static const GLint side3[] = {-1, 0, 1, 2, 3, 16};
+static const GLenum image_modes[] = {GL_UNPACK_IMAGE_HEIGHT, GL_UNPACK_SKIP_IMAGES, GL_PACK_IMAGE_HEIGHT,
+    GL_PACK_SKIP_IMAGES};
+
+static void texture_3d_call(void) {
+    GLint x = ANY(side3), y = ANY(side3), z = ANY(side3), w = ANY(side3), h = ANY(side3), d = ANY(side3);
+    switch (pick(4)) {
+    case 0: glPixelStorei(ANY(image_modes), pick(2) ? ANY(side3) : pick(4) - 1); break;
+    case 1: glTexImage3D(pick(8) ? GL_TEXTURE_3D : GL_PROXY_TEXTURE_3D, ANY(small) % 4, pick(2) ? GL_RGB : GL_LUMINANCE,
+                         w, h, d, pick(3) - 1, pick(2) ? GL_RGB : GL_LUMINANCE, GL_UNSIGNED_BYTE,
+                         pick(4) ? (void *)buf : NULL); break;
+    case 2: glTexSubImage3D(GL_TEXTURE_3D, pick(3) - 1, x, y, z, w, h, d, GL_RGB, GL_UNSIGNED_BYTE,
+                            pick(6) ? (void *)buf : NULL);
+            glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_WRAP_R, pick(2) ? GL_CLAMP : GL_REPEAT); break;
+    default: if (!pick(8)) glCopyTexSubImage3D(GL_TEXTURE_3D, pick(3) - 1, x, y, z, x - 4, y - 4, w, h);
+             glTexCoord3f(f(), f(), f()); break;
+    }
+}
 
 static void pixel_call(void) {
     GLint x = ANY(small) - 8, y = ANY(small) - 8, w = ANY(small), h = ANY(small);
-    switch (pick(8)) {
+    switch (pick(9)) {
+    case 7: texture_3d_call(); break;
     case 0: glPixelZoom(f(), f()); glPixelTransferf(ANY(pixel_pnames), f()); glPixelTransferi(ANY(pixel_pnames), ANY(small)); break;
     case 1: glPixelMapfv(ANY(pixel_maps), ANY(map_sizes), pick(6) ? buf : NULL);
             glPixelMapuiv(ANY(pixel_maps), ANY(map_sizes), pick(6) ? (GLuint *)buf : NULL);

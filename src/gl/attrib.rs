@@ -47,8 +47,15 @@ const TRANSFORM_ENABLES: &[GLenum] = &[
     GL_CLIP_PLANE5 + 1,
     GL_CLIP_PLANE5 + 2,
 ];
-const TEXTURE_ENABLES: &[GLenum] =
-    &[GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q];
+const TEXTURE_ENABLES: &[GLenum] = &[
+    GL_TEXTURE_1D,
+    GL_TEXTURE_2D,
+    GL_TEXTURE_3D,
+    GL_TEXTURE_GEN_S,
+    GL_TEXTURE_GEN_T,
+    GL_TEXTURE_GEN_R,
+    GL_TEXTURE_GEN_Q,
+];
 
 /// What one `glPushAttrib` saved: the mask, and every group's values (restored by the mask).
 #[derive(Clone, Debug)]

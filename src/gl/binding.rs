@@ -68,6 +68,27 @@ impl Gl {
         first.checked_add((h - 1).checked_mul(stride)?)?.checked_add(w * components * size)
     }
 
+    /// Bytes GL reads for a `glTexImage3D` or `glTexSubImage3D` image of `width` × `height` ×
+    /// `depth` with the current unpack modes (GL 1.2 §3.8.1: the images after the skipped ones,
+    /// [`Gl::unpacked_image_len`] each, an image height apart); `None` for a negative size or
+    /// a format or type GL rejects.
+    #[must_use]
+    pub fn unpacked_image_3d_len(
+        &self,
+        (width, height, depth): (GLsizei, GLsizei, GLsizei),
+        format: GLenum,
+        type_: GLenum,
+    ) -> Option<usize> {
+        let image = self.unpacked_image_len(width, height, format, type_)?;
+        let (w, h, d) = (usize::try_from(width).ok()?, usize::try_from(height).ok()?, usize::try_from(depth).ok()?);
+        if image == 0 || d == 0 {
+            return Some(0);
+        }
+        let store = self.unpack_store();
+        let stride = super::pixel_unpack::image_stride(store, (w, h), format, type_)?;
+        (store.skip_images + d - 1).checked_mul(stride)?.checked_add(image)
+    }
+
     /// Bytes GL reads for a `glBitmap` of `width` × `height` bits with the current unpack modes;
     /// `None` for a negative size.
     #[must_use]

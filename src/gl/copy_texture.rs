@@ -1,6 +1,6 @@
 //! Texture images from the window and the other GL 1.1 texture calls of the pixel path (GL 1.1
 //! spec §3.8.2, §3.8.8; Mesa `main/teximage.c`, `texobj.c`): `glCopyTexImage1D/2D`,
-//! `glCopyTexSubImage1D/2D`, `glTexSubImage1D`, `glAreTexturesResident`,
+//! `glCopyTexSubImage1D/2D/3D`, `glAreTexturesResident`,
 //! `glPrioritizeTextures`.
 //!
 //! A copy reads the window as drawn so far, in program order: the context draws what it has
@@ -11,8 +11,7 @@
 
 use super::consts::*;
 use super::lists::ListCommand;
-use super::pixels::PixelStore;
-use super::texture::{base_format, fits_level, strip_border, target_index, TexLevel, MAX_TEXTURE_SIZE};
+use super::texture::{base_format, fits_level, max_level, strip_border, target_index, TexLevel};
 
 /// The base format of a `glCopyTexImage` internal format: the named colour formats of
 /// `glTexImage` (Mesa 22 refuses the component counts 1 to 4 here: `GL_INVALID_ENUM`,
@@ -41,14 +40,14 @@ pub(crate) struct CopyTexImage {
     pub border: GLint,
 }
 
-/// A `glCopyTexSubImage` call: dimensions, target, level, the offset in the level (x, y) and
-/// the window rectangle.
+/// A `glCopyTexSubImage` call: dimensions, target, level, the offset in the level (x, y, and
+/// the image z of a 3D texture) and the window rectangle.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) struct CopyTexSubImage {
     pub dims: u8,
     pub target: GLenum,
     pub level: GLint,
-    pub offset: [GLint; 2],
+    pub offset: [GLint; 3],
     pub rect: [GLint; 4],
 }
 
@@ -57,10 +56,8 @@ pub(crate) struct CopyTexSubImage {
 pub(crate) enum CopyTextureCall {
     /// `glCopyTexImage1D/2D`.
     CopyTexImage(CopyTexImage),
-    /// `glCopyTexSubImage1D/2D`.
+    /// `glCopyTexSubImage1D/2D/3D`.
     CopyTexSubImage(CopyTexSubImage),
-    /// `glTexSubImage1D` with the client's bytes and the unpack modes of compile time.
-    TexSubImage1D(TexSubImage1D, PixelStore, Vec<u8>),
     /// `glPrioritizeTextures`, as (name, priority) pairs.
     PrioritizeTextures(Vec<(GLuint, GLclampf)>),
 }
@@ -71,7 +68,6 @@ impl Gl {
         match call {
             CopyTextureCall::CopyTexImage(call) => self.copy_tex_image(*call),
             CopyTextureCall::CopyTexSubImage(call) => self.copy_tex_sub_image(*call),
-            CopyTextureCall::TexSubImage1D(call, store, bytes) => self.replay_tex_sub_image_1d(*call, *store, bytes),
             CopyTextureCall::PrioritizeTextures(pairs) => {
                 for &(name, priority) in pairs {
                     self.prioritize_textures(1, &[name], &[priority]);
@@ -86,7 +82,7 @@ impl Gl {
     /// rectangle at (`x`, `y`) (see the module docs). Errors, in Mesa's order: inside
     /// `begin`/`end` → `GL_INVALID_OPERATION`; target → `GL_INVALID_ENUM`; level, border →
     /// `GL_INVALID_VALUE`; internal format → `GL_INVALID_ENUM`; sizes (negative or over
-    /// [`MAX_TEXTURE_SIZE`]) → `GL_INVALID_VALUE`. Compiled into display lists.
+    /// [`super::MAX_TEXTURE_SIZE`]) → `GL_INVALID_VALUE`. Compiled into display lists.
     #[allow(clippy::too_many_arguments)]
     pub fn copy_tex_image_2d(
         &mut self,
@@ -131,21 +127,20 @@ impl Gl {
         if target_index(call.target) != Some(usize::from(call.dims - 1)) {
             return self.set_error(GL_INVALID_ENUM);
         }
-        let max_level = MAX_TEXTURE_SIZE.ilog2() as GLint;
-        if !(0..=max_level).contains(&call.level) || !(0..=1).contains(&call.border) {
+        if !(0..=max_level(call.dims)).contains(&call.level) || !(0..=1).contains(&call.border) {
             return self.set_error(GL_INVALID_VALUE);
         }
         let Some(base) = copy_base_format(call.internalformat) else { return self.set_error(GL_INVALID_ENUM) };
         let [x, y, width, height] = call.rect;
-        if !fits_level(call.dims, call.level, (width, height), call.border) {
+        if !fits_level(call.dims, call.level, [width, height, 1], call.border) {
             return self.set_error(GL_INVALID_VALUE);
         }
         let (w, h) = (width as usize, height as usize);
         let texels = self.window_texels([x, y], (w, h), base == GL_DEPTH_COMPONENT);
         // The border's texels are read and dropped, as Mesa keeps a texture's inside only.
-        let (texels, w, h) = strip_border(call.dims, texels, (w, h), call.border as usize);
+        let (texels, [w, h, _]) = strip_border(call.dims, texels, [w, h, 1], call.border as usize);
         let base = if base == GL_DEPTH_COMPONENT { GL_LUMINANCE } else { base };
-        let image = TexLevel { width: w as u32, height: h as u32, texels };
+        let image = TexLevel::flat(w as u32, h as u32, texels);
         let internal = call.internalformat as GLint;
         self.bound_object_mut(call.dims).define_level(call.level as usize, Some(image), (base, internal), 0);
         self.image_changed(call.dims);
@@ -168,7 +163,8 @@ impl Gl {
         width: GLsizei,
         height: GLsizei,
     ) {
-        let call = CopyTexSubImage { dims: 2, target, level, offset: [xoffset, yoffset], rect: [x, y, width, height] };
+        let call =
+            CopyTexSubImage { dims: 2, target, level, offset: [xoffset, yoffset, 0], rect: [x, y, width, height] };
         self.copy_tex_sub_image(call);
     }
 
@@ -182,8 +178,27 @@ impl Gl {
         y: GLint,
         width: GLsizei,
     ) {
-        let call = CopyTexSubImage { dims: 1, target, level, offset: [xoffset, 0], rect: [x, y, width, 1] };
+        let call = CopyTexSubImage { dims: 1, target, level, offset: [xoffset, 0, 0], rect: [x, y, width, 1] };
         self.copy_tex_sub_image(call);
+    }
+
+    /// `glCopyTexSubImage3D` (GL 1.2 §3.8.2): as [`Gl::copy_tex_sub_image_2d`] into image
+    /// `zoffset` of level `level` of the bound 3D texture.
+    #[allow(clippy::too_many_arguments)]
+    pub fn copy_tex_sub_image_3d(
+        &mut self,
+        target: GLenum,
+        level: GLint,
+        xoffset: GLint,
+        yoffset: GLint,
+        zoffset: GLint,
+        x: GLint,
+        y: GLint,
+        width: GLsizei,
+        height: GLsizei,
+    ) {
+        let offset = [xoffset, yoffset, zoffset];
+        self.copy_tex_sub_image(CopyTexSubImage { dims: 3, target, level, offset, rect: [x, y, width, height] });
     }
 
     pub(crate) fn copy_tex_sub_image(&mut self, call: CopyTexSubImage) {
@@ -194,10 +209,9 @@ impl Gl {
             return self.set_error(GL_INVALID_ENUM);
         }
         let [x, y, width, height] = call.rect;
-        let rect = [call.offset[0], call.offset[1], width, height];
-        let Some((ox, oy, w, h)) = self.sub_image_rect(call.dims, call.level, rect) else { return };
-        let texels = self.window_texels([x, y], (w, h), false);
-        self.replace_texels(call.dims, call.level as usize, (ox, oy, w), &texels);
+        let Some(region) = self.sub_image_box(call.dims, call.level, call.offset, [width, height, 1]) else { return };
+        let texels = self.window_texels([x, y], (region.size[0], region.size[1]), false);
+        self.replace_texels(call.dims, call.level as usize, region, &texels);
     }
 
     /// The window's `w` × `h` rectangle at (`x`, `y`) as texels, rows from the bottom, through
@@ -222,39 +236,6 @@ impl Gl {
             c.map(|v| (v.clamp(0.0, 1.0) * 255.0).round() as u8)
         };
         (0..h).flat_map(|j| (0..w).map(move |i| (i, j))).map(|(i, j)| texel(&window, i, j)).collect()
-    }
-
-    /// `glTexSubImage1D`: as [`Gl::tex_sub_image_2d`] for the bound 1D texture (one row at
-    /// `xoffset`). Compiled into display lists with the client's bytes and the unpack modes of
-    /// compile time.
-    #[allow(clippy::too_many_arguments)]
-    pub fn tex_sub_image_1d<P: bytemuck::Pod>(
-        &mut self,
-        target: GLenum,
-        level: GLint,
-        xoffset: GLint,
-        width: GLsizei,
-        format: GLenum,
-        type_: GLenum,
-        pixels: &[P],
-    ) {
-        let bytes: &[u8] = bytemuck::cast_slice(pixels);
-        let store = self.unpack_store();
-        let call = TexSubImage1D { target, level, xoffset, width, format: (format, type_) };
-        if self.compiled(|| ListCommand::CopyTexture(CopyTextureCall::TexSubImage1D(call, store, bytes.to_vec())))
-            || self.reject_inside_begin_end()
-        {
-            return;
-        }
-        self.tex_sub_image(1, target, level, [xoffset, 0, width, 1], (format, type_), bytes);
-    }
-
-    /// Replays a compiled `glTexSubImage1D` with the unpack modes it was compiled with.
-    pub(crate) fn replay_tex_sub_image_1d(&mut self, call: TexSubImage1D, store: PixelStore, bytes: &[u8]) {
-        self.with_unpack_store(store, |gl| {
-            let (format, type_) = call.format;
-            gl.tex_sub_image_1d(call.target, call.level, call.xoffset, call.width, format, type_, bytes);
-        });
     }
 
     /// `glAreTexturesResident`: `GL_TRUE` when every name is a texture object (gleval's
@@ -309,16 +290,6 @@ impl Gl {
             }
         }
     }
-}
-
-/// A `glTexSubImage1D` call's arguments but the pixels.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub(crate) struct TexSubImage1D {
-    pub target: GLenum,
-    pub level: GLint,
-    pub xoffset: GLint,
-    pub width: GLsizei,
-    pub format: (GLenum, GLenum),
 }
 
 #[cfg(test)]

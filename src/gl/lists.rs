@@ -71,7 +71,7 @@ pub(crate) enum ListCommand {
     PassThrough(GLfloat),
     /// `glCopyPixels`: x, y, width, height and the buffer.
     CopyPixels([GLint; 4], GLenum),
-    /// The texture copies, `glTexSubImage1D` and `glPrioritizeTextures` (`copy_texture.rs`).
+    /// The texture copies and `glPrioritizeTextures` (`copy_texture.rs`).
     CopyTexture(super::copy_texture::CopyTextureCall),
     /// The colour-index calls (`color_index.rs`).
     ColorIndex(super::color_index::ColorIndexCall),

@@ -103,6 +103,20 @@ impl Gl {
         first.checked_add((h - 1).checked_mul(stride)?)?.checked_add(w * n * size)
     }
 
+    /// Bytes from one image of a 3D texture to the next under the pack modes, and the images
+    /// skipped before the first (GL 1.2 §6.1.4: each image packed as `glReadPixels` packs one,
+    /// `GL_PACK_IMAGE_HEIGHT` rows apart, after `GL_PACK_SKIP_IMAGES` images).
+    pub(crate) fn packed_image_stride(
+        &self,
+        (width, height): (usize, usize),
+        format: GLenum,
+        type_: GLenum,
+    ) -> Option<(usize, usize)> {
+        let store = self.client.pixel_stores.pack;
+        let row = store.row_stride(width, format_size(format)?, type_size(type_)?);
+        Some((store.image_stride(row, height), store.skip_images))
+    }
+
     /// Packs a `w` × `h` image of RGBA floats (rows bottom first) as `glReadPixels` would
     /// (`glGetTexImage`); `out` holds at least [`Gl::packed_image_len`] bytes.
     pub(crate) fn pack_rgba(

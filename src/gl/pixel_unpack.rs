@@ -231,6 +231,23 @@ pub(crate) fn unpack_each(
     Some(())
 }
 
+/// Bytes from one image of a 3D texture to the next in client memory for images of `width` ×
+/// `height` pixels of `format` and `type_` (GL 1.2 §3.8.1: rows as a 2D image's, and
+/// `GL_UNPACK_IMAGE_HEIGHT` rows an image, or `height` when it is 0); `None` for a format or
+/// type GL rejects.
+pub(crate) fn image_stride(
+    store: PixelStore,
+    (width, height): (usize, usize),
+    format: GLenum,
+    type_: GLenum,
+) -> Option<usize> {
+    let (size, per_pixel) = match packed(type_) {
+        Some(p) => (p.size, 1),
+        None => (element_size(type_)?, format_components(format)?),
+    };
+    Some(store.image_stride(store.row_stride(width, per_pixel, size), height))
+}
+
 /// A packed pixel's one element (1, 2 or 4 bytes, in client byte order unless `swap`).
 fn packed_value(bytes: &[u8], swap: bool) -> u32 {
     let mut b = [0u8; 4];
@@ -273,8 +290,16 @@ pub(crate) fn unpack_bitmap(store: PixelStore, width: GLsizei, height: GLsizei, 
 mod tests {
     use super::*;
 
-    const MSB: PixelStore =
-        PixelStore { swap_bytes: false, lsb_first: false, row_length: 0, skip_rows: 0, skip_pixels: 0, alignment: 4 };
+    const MSB: PixelStore = PixelStore {
+        swap_bytes: false,
+        lsb_first: false,
+        row_length: 0,
+        skip_rows: 0,
+        skip_pixels: 0,
+        alignment: 4,
+        image_height: 0,
+        skip_images: 0,
+    };
 
     fn rows(bits: &[bool], w: usize) -> Vec<String> {
         bits.chunks(w).map(|r| r.iter().map(|&b| if b { '#' } else { '.' }).collect()).collect()

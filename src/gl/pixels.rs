@@ -18,11 +18,24 @@ pub(crate) struct PixelStore {
     pub skip_pixels: usize,
     /// Rows start at multiples of this many bytes: 1, 2, 4 (GL's initial value) or 8.
     pub alignment: usize,
+    /// GL 1.2's rows per image of a 3D texture in memory; 0 means the image's own height.
+    pub image_height: usize,
+    /// GL 1.2's images of a 3D texture skipped before the first.
+    pub skip_images: usize,
 }
 
 impl Default for PixelStore {
     fn default() -> Self {
-        Self { swap_bytes: false, lsb_first: false, row_length: 0, skip_rows: 0, skip_pixels: 0, alignment: 4 }
+        Self {
+            swap_bytes: false,
+            lsb_first: false,
+            row_length: 0,
+            skip_rows: 0,
+            skip_pixels: 0,
+            alignment: 4,
+            image_height: 0,
+            skip_images: 0,
+        }
     }
 }
 
@@ -53,6 +66,14 @@ impl PixelStore {
     pub fn first_byte(&self, row_stride: usize, size: usize) -> usize {
         self.skip_rows * row_stride + self.skip_pixels * size
     }
+
+    /// Bytes from one image of a 3D texture to the next, for images `height` rows tall of
+    /// rows `row_stride` bytes apart (GL 1.2 §3.8.1: `GL_UNPACK_IMAGE_HEIGHT` rows, or the
+    /// image's own height when it is 0).
+    #[must_use]
+    pub fn image_stride(&self, row_stride: usize, height: usize) -> usize {
+        row_stride * if self.image_height > 0 { self.image_height } else { height }
+    }
 }
 
 /// Mesa's `MAX_CLIENT_ATTRIB_STACK_DEPTH` (`main/config.h`).
@@ -76,18 +97,26 @@ impl Gl {
         if self.reject_inside_begin_end() {
             return;
         }
+        // Fields 0..=5 are GL 1.1's six in its order, 6 and 7 GL 1.2's skipped images and
+        // image height.
         let (store, field) = match pname {
             GL_UNPACK_SWAP_BYTES..=GL_UNPACK_ALIGNMENT => {
                 (&mut self.client.pixel_stores.unpack, pname - GL_UNPACK_SWAP_BYTES)
             }
             GL_PACK_SWAP_BYTES..=GL_PACK_ALIGNMENT => (&mut self.client.pixel_stores.pack, pname - GL_PACK_SWAP_BYTES),
+            GL_UNPACK_SKIP_IMAGES | GL_UNPACK_IMAGE_HEIGHT => {
+                (&mut self.client.pixel_stores.unpack, 6 + pname - GL_UNPACK_SKIP_IMAGES)
+            }
+            GL_PACK_SKIP_IMAGES | GL_PACK_IMAGE_HEIGHT => {
+                (&mut self.client.pixel_stores.pack, 6 + pname - GL_PACK_SKIP_IMAGES)
+            }
             _ => return self.set_error(GL_INVALID_ENUM),
         };
         let count = usize::try_from(param).ok();
         let value_ok = match field {
             0 | 1 => true,
-            2..=4 => count.is_some(),
-            _ => matches!(param, 1 | 2 | 4 | 8),
+            5 => matches!(param, 1 | 2 | 4 | 8),
+            _ => count.is_some(),
         };
         if !value_ok {
             return self.set_error(GL_INVALID_VALUE);
@@ -99,7 +128,9 @@ impl Gl {
             2 => store.row_length = count,
             3 => store.skip_rows = count,
             4 => store.skip_pixels = count,
-            _ => store.alignment = count,
+            5 => store.alignment = count,
+            6 => store.skip_images = count,
+            _ => store.image_height = count,
         }
     }
 
@@ -178,9 +209,11 @@ impl Gl {
     }
 }
 
-/// The pixel store's `glGet` rows (GL 1.1 table 6.14), the same six for each direction.
+/// The pixel store's `glGet` rows (GL 1.1 table 6.14 and GL 1.2's two for images), the same
+/// eight for each direction.
 macro_rules! pixel_store_rows {
-    ($($dir:ident: $swap:ident $lsb:ident $length:ident $rows:ident $pixels:ident $alignment:ident;)*) => {
+    ($($dir:ident: $swap:ident $lsb:ident $length:ident $rows:ident $pixels:ident $alignment:ident
+        $images:ident $image_height:ident;)*) => {
         pub(crate) static GET_ROWS: &[StateVar] = &[$(
             row($swap, 1, Kind::Bool, |gl, o| put_flag(o, gl.client.pixel_stores.$dir.swap_bytes)),
             row($lsb, 1, Kind::Bool, |gl, o| put_flag(o, gl.client.pixel_stores.$dir.lsb_first)),
@@ -188,13 +221,17 @@ macro_rules! pixel_store_rows {
             row($rows, 1, Kind::Int, |gl, o| o[0] = gl.client.pixel_stores.$dir.skip_rows as f64),
             row($pixels, 1, Kind::Int, |gl, o| o[0] = gl.client.pixel_stores.$dir.skip_pixels as f64),
             row($alignment, 1, Kind::Int, |gl, o| o[0] = gl.client.pixel_stores.$dir.alignment as f64),
+            row($images, 1, Kind::Int, |gl, o| o[0] = gl.client.pixel_stores.$dir.skip_images as f64),
+            row($image_height, 1, Kind::Int, |gl, o| o[0] = gl.client.pixel_stores.$dir.image_height as f64),
         )*];
     };
 }
 
 pixel_store_rows! {
-    unpack: GL_UNPACK_SWAP_BYTES GL_UNPACK_LSB_FIRST GL_UNPACK_ROW_LENGTH GL_UNPACK_SKIP_ROWS GL_UNPACK_SKIP_PIXELS GL_UNPACK_ALIGNMENT;
-    pack: GL_PACK_SWAP_BYTES GL_PACK_LSB_FIRST GL_PACK_ROW_LENGTH GL_PACK_SKIP_ROWS GL_PACK_SKIP_PIXELS GL_PACK_ALIGNMENT;
+    unpack: GL_UNPACK_SWAP_BYTES GL_UNPACK_LSB_FIRST GL_UNPACK_ROW_LENGTH GL_UNPACK_SKIP_ROWS GL_UNPACK_SKIP_PIXELS GL_UNPACK_ALIGNMENT
+        GL_UNPACK_SKIP_IMAGES GL_UNPACK_IMAGE_HEIGHT;
+    pack: GL_PACK_SWAP_BYTES GL_PACK_LSB_FIRST GL_PACK_ROW_LENGTH GL_PACK_SKIP_ROWS GL_PACK_SKIP_PIXELS GL_PACK_ALIGNMENT
+        GL_PACK_SKIP_IMAGES GL_PACK_IMAGE_HEIGHT;
 }
 
 /// The client attribute stack's `glGet` rows.

@@ -1,5 +1,6 @@
 //! Texture objects, images, parameters and the texture environment of unit 0 (GL 1.1 spec
-//! §3.8; Mesa `main/teximage.c`, `texobj.c`, `texparam.c`, `texenv.c`).
+//! §3.8, with GL 1.2's 3D textures; Mesa `main/teximage.c`, `texobj.c`, `texparam.c`,
+//! `texenv.c`).
 //!
 //! Images are unpacked from client memory with the pixel store ([`super::pixels`]) into RGBA8
 //! levels; the base internal format (`GL_RGB`, `GL_LUMINANCE`, ...) travels beside them, since
@@ -33,15 +34,50 @@ mod query;
 /// minimum is 64). Larger images are `GL_INVALID_VALUE`.
 pub const MAX_TEXTURE_SIZE: i32 = 8192;
 
-/// One mipmap level: RGBA8 texels, row by row from the bottom (GL's first row is t = 0).
+/// The largest 3D texture side: llvmpipe's (Mesa 22.3 answers 2048 for
+/// `GL_MAX_3D_TEXTURE_SIZE`, so levels 0 to 11; measured in `texture_3d.calls`).
+pub const MAX_3D_TEXTURE_SIZE: i32 = 2048;
+
+/// The largest side of a texture of `dims` dimensions.
+pub(in crate::gl) fn max_size(dims: u8) -> i32 {
+    if dims == 3 {
+        MAX_3D_TEXTURE_SIZE
+    } else {
+        MAX_TEXTURE_SIZE
+    }
+}
+
+/// The last level a texture of `dims` dimensions may define (log2 of its largest side).
+pub(in crate::gl) fn max_level(dims: u8) -> GLint {
+    max_size(dims).ilog2() as GLint
+}
+
+/// One mipmap level: RGBA8 texels, row by row from the bottom (GL's first row is t = 0), and
+/// for a 3D texture image by image from the front (r = 0).
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct TexLevel {
     /// Width in texels.
     pub width: u32,
     /// Height in texels (1 for a 1D texture).
     pub height: u32,
+    /// Depth in texels: the images of a 3D texture (1 for a 1D or 2D texture).
+    pub depth: u32,
     /// The texels as GL converted them to RGBA (before the base format picks components).
     pub texels: Vec<[u8; 4]>,
+}
+
+impl TexLevel {
+    /// A level of one image (1D or 2D).
+    #[must_use]
+    pub fn flat(width: u32, height: u32, texels: Vec<[u8; 4]>) -> Self {
+        Self { width, height, depth: 1, texels }
+    }
+
+    /// The texel at column `i`, row `j`, image `k`.
+    #[must_use]
+    pub fn texel(&self, i: usize, j: usize, k: usize) -> [u8; 4] {
+        self.texels[(k * self.height as usize + j) * self.width as usize + i]
+    }
 }
 
 /// `glTexParameter` state of a texture object.
@@ -128,9 +164,21 @@ impl TexParams {
 }
 
 /// What `GL_TEXTURE_BIT` saves: the bindings, the environment mode and colour, `glTexGen`,
-/// and the bound objects' parameters (filters, wraps, border colour, priority), which Mesa
-/// restores into those objects (measured on Mesa 22.3).
-pub(crate) type TextureAttrib = ([GLuint; 2], GLenum, [f32; 4], TexGen, [(TexParams, ([f32; 4], f32)); 2]);
+/// and the parameters (filters, wraps, border colour, priority) of the bound objects and of
+/// each target's default object, which Mesa restores into those objects (measured on Mesa
+/// 22.3: a change to a default texture made while another was bound is undone too,
+/// `texture_3d.calls`).
+#[derive(Clone, Debug)]
+pub(crate) struct TextureAttrib {
+    bound: [GLuint; 3],
+    env: (GLenum, [f32; 4]),
+    tex_gen: TexGen,
+    objects: [ObjectSampling; 3],
+    defaults: [ObjectSampling; 3],
+}
+
+/// An object's parameters, border colour and priority.
+type ObjectSampling = (TexParams, ([f32; 4], f32));
 
 /// The texture a recorded primitive is drawn with: the complete mipmap chain of the enabled
 /// target's bound object, its parameters, unit 0's environment and the texture matrix.
@@ -154,8 +202,9 @@ pub struct BoundTexture {
     pub border_color: [f32; 4],
     /// The top of the texture matrix stack.
     pub matrix: Mat4,
-    /// A `GL_TEXTURE_1D` texture (t is not used).
-    pub one_d: bool,
+    /// 1, 2 or 3: a `GL_TEXTURE_1D` texture (t is not used), `GL_TEXTURE_2D` or
+    /// `GL_TEXTURE_3D` (r is used).
+    pub dims: u8,
     /// `glTexGen`: the coordinates generated per vertex, if any is enabled.
     pub generate: Option<TexGenState>,
 }
@@ -166,14 +215,14 @@ impl BoundTexture {
     pub fn blank() -> Self {
         Self {
             key: 0,
-            levels: Arc::new(vec![TexLevel { width: 1, height: 1, texels: vec![[255; 4]] }]),
+            levels: Arc::new(vec![TexLevel::flat(1, 1, vec![[255; 4]])]),
             base_format: GL_RGBA,
             params: TexParams { min_filter: GL_NEAREST, ..TexParams::default() },
             env_mode: GL_REPLACE,
             env_color: [0.0; 4],
             border_color: [0.0; 4],
             matrix: Mat4::IDENTITY,
-            one_d: false,
+            dims: 2,
             generate: None,
         }
     }
@@ -188,7 +237,7 @@ impl PartialEq for BoundTexture {
             && self.env_color == other.env_color
             && self.border_color == other.border_color
             && self.matrix == other.matrix
-            && self.one_d == other.one_d
+            && self.dims == other.dims
             && self.generate == other.generate
     }
 }
@@ -203,7 +252,7 @@ fn fresh_key() -> u64 {
 /// A texture object.
 #[derive(Clone, Debug, Default)]
 pub(super) struct TextureObject {
-    /// 1 or 2 once bound to `GL_TEXTURE_1D` or `GL_TEXTURE_2D`; 0 before.
+    /// 1, 2 or 3 once bound to `GL_TEXTURE_1D`, `GL_TEXTURE_2D` or `GL_TEXTURE_3D`; 0 before.
     dims: u8,
     pub(super) levels: Vec<Option<TexLevel>>,
     /// The base format of each level.
@@ -258,12 +307,12 @@ impl TextureObject {
 #[derive(Debug)]
 pub(crate) struct Textures {
     pub(super) objects: HashMap<GLuint, TextureObject>,
-    /// The default objects (name 0) of `GL_TEXTURE_1D` and `GL_TEXTURE_2D`.
-    defaults: [TextureObject; 2],
-    /// `GL_PROXY_TEXTURE_1D` and `GL_PROXY_TEXTURE_2D`: levels of sizes and formats only
-    /// (GL 1.1 §3.8.1), never bound or drawn.
-    proxies: [TextureObject; 2],
-    bound: [GLuint; 2],
+    /// The default objects (name 0) of `GL_TEXTURE_1D`, `GL_TEXTURE_2D` and `GL_TEXTURE_3D`.
+    defaults: [TextureObject; 3],
+    /// `GL_PROXY_TEXTURE_1D`, `_2D` and `_3D`: levels of sizes and formats only (GL 1.1
+    /// §3.8.1), never bound or drawn.
+    proxies: [TextureObject; 3],
+    bound: [GLuint; 3],
     env_mode: GLenum,
     env_color: [f32; 4],
     max_name: GLuint,
@@ -274,9 +323,9 @@ impl Default for Textures {
         let default = |dims, key| TextureObject { dims, key, ..TextureObject::default() };
         Self {
             objects: HashMap::new(),
-            defaults: [default(1, fresh_key()), default(2, fresh_key())],
-            proxies: [default(1, 0), default(2, 0)],
-            bound: [0, 0],
+            defaults: [default(1, fresh_key()), default(2, fresh_key()), default(3, fresh_key())],
+            proxies: [default(1, 0), default(2, 0), default(3, 0)],
+            bound: [0; 3],
             env_mode: GL_MODULATE,
             env_color: [0.0; 4],
             max_name: 0,
@@ -284,50 +333,58 @@ impl Default for Textures {
     }
 }
 
-/// 0 for `GL_TEXTURE_1D`, 1 for `GL_TEXTURE_2D`.
+/// 0 for `GL_TEXTURE_1D`, 1 for `GL_TEXTURE_2D`, 2 for `GL_TEXTURE_3D`.
 pub(super) fn target_index(target: GLenum) -> Option<usize> {
     match target {
         GL_TEXTURE_1D => Some(0),
         GL_TEXTURE_2D => Some(1),
+        GL_TEXTURE_3D => Some(2),
         _ => None,
     }
 }
 
-/// 0 for `GL_PROXY_TEXTURE_1D`, 1 for `GL_PROXY_TEXTURE_2D`.
+/// 0 for `GL_PROXY_TEXTURE_1D`, 1 for `_2D`, 2 for `_3D`.
 pub(super) fn proxy_index(target: GLenum) -> Option<usize> {
     match target {
         GL_PROXY_TEXTURE_1D => Some(0),
         GL_PROXY_TEXTURE_2D => Some(1),
+        GL_PROXY_TEXTURE_3D => Some(2),
         _ => None,
     }
 }
 
-/// Whether a `width` × `height` image with `border` fits `level` (Mesa's
+/// Whether an image of `size` (width, height, depth) with `border` fits `level` (Mesa's
 /// `_mesa_legal_texture_dimensions`: each side holds its two border texels, and its inside is
-/// at most the largest texture's side at that level; a 1D image has no border above or below).
-pub(super) fn fits_level(dims: u8, level: GLint, (width, height): (GLsizei, GLsizei), border: GLint) -> bool {
-    let largest = i64::from(MAX_TEXTURE_SIZE >> level);
+/// at most the largest texture's side at that level; a 1D image has no border above or below,
+/// a 1D or 2D one none before or behind).
+pub(super) fn fits_level(dims: u8, level: GLint, size: [GLsizei; 3], border: GLint) -> bool {
+    let largest = i64::from(max_size(dims) >> level);
     let inside = |side: GLsizei, border: GLint| (0..=largest).contains(&(i64::from(side) - 2 * i64::from(border)));
-    inside(width, border) && inside(height, if dims == 1 { 0 } else { border })
+    let bordered = |axis: u8| if dims > axis { border } else { 0 };
+    inside(size[0], border) && inside(size[1], bordered(1)) && inside(size[2], bordered(2))
 }
 
 /// An image's texels without its border (GL 1.1 §3.8.1): Mesa's gallium drivers keep the
 /// inside only (`strip_texture_border`, measured on llvmpipe: a 6 × 6 image with border 1 is a
-/// 4 × 4 level whose `GL_TEXTURE_BORDER` is 0, and the border is never sampled). The texels,
-/// width and height of the inside.
+/// 4 × 4 level whose `GL_TEXTURE_BORDER` is 0, and the border is never sampled; a 3D image
+/// loses its first and last images too). The texels and the inside's size.
 pub(super) fn strip_border(
     dims: u8,
     texels: Vec<[u8; 4]>,
-    (w, h): (usize, usize),
+    [w, h, d]: [usize; 3],
     border: usize,
-) -> (Vec<[u8; 4]>, usize, usize) {
+) -> (Vec<[u8; 4]>, [usize; 3]) {
     if border == 0 {
-        return (texels, w, h);
+        return (texels, [w, h, d]);
     }
     let rows = if dims == 1 { 0..h } else { border..h - border };
-    let (inner_w, inner_h) = (w - 2 * border, rows.len());
-    let inside = rows.flat_map(|row| texels[row * w + border..][..inner_w].to_vec()).collect();
-    (inside, inner_w, inner_h)
+    let images = if dims == 3 { border..d - border } else { 0..d };
+    let (inner_w, inner_h, inner_d) = (w - 2 * border, rows.len(), images.len());
+    let inside = images
+        .flat_map(|k| rows.clone().map(move |row| (k * h + row) * w + border))
+        .flat_map(|start| texels[start..][..inner_w].to_vec())
+        .collect();
+    (inside, [inner_w, inner_h, inner_d])
 }
 
 /// The base internal format of an `internalformat` argument (GL 1.1 table 3.15, with GL 1.0's
@@ -368,23 +425,25 @@ fn texture_format(format: GLenum) -> bool {
 pub(crate) enum TextureCall {
     ActiveTexture(GLenum),
     BindTexture(GLenum, GLuint),
-    /// `glTexImage1D/2D`: the client's bytes with the pixel store of compile time, as GL
+    /// `glTexImage1D/2D/3D`: the client's bytes with the pixel store of compile time, as GL
     /// unpacks them then (GL 1.1 §5.4).
     TexImage {
         dims: u8,
         target: GLenum,
         level: GLint,
         internalformat: GLint,
-        size: (GLsizei, GLsizei),
+        size: [GLsizei; 3],
         border: GLint,
         format: (GLenum, GLenum),
         image: (PixelStore, Vec<u8>),
     },
+    /// `glTexSubImage1D/2D/3D`.
     TexSubImage {
+        dims: u8,
         target: GLenum,
         level: GLint,
-        offset: (GLint, GLint),
-        size: (GLsizei, GLsizei),
+        offset: [GLint; 3],
+        size: [GLsizei; 3],
         format: (GLenum, GLenum),
         image: (PixelStore, Vec<u8>),
     },
@@ -405,18 +464,12 @@ impl Gl {
             C::BindTexture(target, texture) => self.bind_texture(*target, *texture),
             C::TexImage { dims, target, level, internalformat, size, border, format, image } => {
                 self.with_unpack_store(image.0, |gl| {
-                    let (f, t) = *format;
-                    if *dims == 1 {
-                        gl.tex_image_1d(*target, *level, *internalformat, size.0, *border, f, t, &image.1);
-                    } else {
-                        gl.tex_image_2d(*target, *level, *internalformat, size.0, size.1, *border, f, t, &image.1);
-                    }
+                    gl.tex_image(*dims, *target, *level, *internalformat, *size, *border, *format, &image.1);
                 });
             }
-            C::TexSubImage { target, level, offset, size, format, image } => {
+            C::TexSubImage { dims, target, level, offset, size, format, image } => {
                 self.with_unpack_store(image.0, |gl| {
-                    let (x, y, (f, t)) = (offset.0, offset.1, *format);
-                    gl.tex_sub_image_2d(*target, *level, x, y, size.0, size.1, f, t, &image.1);
+                    gl.tex_sub_image_call(*dims, *target, *level, (*offset, *size), *format, &image.1);
                 });
             }
             C::TexParameter(target, pname, param) => self.tex_parameteri(*target, *pname, *param),
@@ -516,10 +569,12 @@ impl Gl {
     }
 
     /// The texture the next primitive is drawn with: the bound object of the enabled target
-    /// (`GL_TEXTURE_2D` before `GL_TEXTURE_1D`, GL 1.1 §3.8.10), if its mipmap chain is
-    /// complete (§3.8.9; an incomplete texture disables texturing).
+    /// (`GL_TEXTURE_3D` before `GL_TEXTURE_2D` before `GL_TEXTURE_1D`, GL 1.2 §3.8.15), if its
+    /// mipmap chain is complete (§3.8.10; an incomplete texture disables texturing).
     pub(crate) fn bound_texture(&mut self) -> Option<BoundTexture> {
-        let dims = if self.capability(GL_TEXTURE_2D) {
+        let dims = if self.capability(GL_TEXTURE_3D) {
+            3
+        } else if self.capability(GL_TEXTURE_2D) {
             2
         } else if self.capability(GL_TEXTURE_1D) {
             1
@@ -546,7 +601,7 @@ impl Gl {
             env_color,
             border_color: object.extra.sampling().0.map(|c| c.clamp(0.0, 1.0)),
             matrix,
-            one_d: dims == 1,
+            dims,
             generate,
         })
     }
@@ -554,31 +609,34 @@ impl Gl {
     /// What `GL_TEXTURE_BIT` saves of unit 0: the bindings, the environment and the
     /// coordinate generation (its enables are saved with the bit's other enables).
     pub(crate) fn texture_attrib(&self) -> TextureAttrib {
-        let objects = [1, 2].map(|dims| {
-            let object = self.bound_object(dims);
-            (object.params, object.extra.sampling())
-        });
-        (
-            self.server.textures.bound,
-            self.server.textures.env_mode,
-            self.server.textures.env_color,
-            self.server.tex_gen,
-            objects,
-        )
+        let sampling = |object: &TextureObject| (object.params, object.extra.sampling());
+        let textures = &self.server.textures;
+        TextureAttrib {
+            bound: textures.bound,
+            env: (textures.env_mode, textures.env_color),
+            tex_gen: self.server.tex_gen,
+            objects: [1, 2, 3].map(|dims| sampling(self.bound_object(dims))),
+            defaults: textures.defaults.each_ref().map(sampling),
+        }
     }
 
     /// Restores what [`Gl::texture_attrib`] saved (a binding whose object was deleted since
     /// falls back to the default texture).
-    pub(crate) fn restore_texture_attrib(&mut self, (bound, env_mode, env_color, tex_gen, objects): TextureAttrib) {
-        self.server.tex_gen = tex_gen;
-        let exists = |name: GLuint| name == 0 || self.server.textures.objects.contains_key(&name);
-        self.server.textures.bound = bound.map(|name| if exists(name) { name } else { 0 });
-        for (dims, (params, sampling)) in [1, 2].into_iter().zip(objects) {
-            let object = self.bound_object_mut(dims);
+    pub(crate) fn restore_texture_attrib(&mut self, saved: TextureAttrib) {
+        let restore = |object: &mut TextureObject, (params, sampling): ObjectSampling| {
             object.set_params(params);
             object.extra.set_sampling(sampling);
+        };
+        self.server.tex_gen = saved.tex_gen;
+        for (object, sampling) in self.server.textures.defaults.iter_mut().zip(saved.defaults) {
+            restore(object, sampling);
         }
-        (self.server.textures.env_mode, self.server.textures.env_color) = (env_mode, env_color);
+        let exists = |name: GLuint| name == 0 || self.server.textures.objects.contains_key(&name);
+        self.server.textures.bound = saved.bound.map(|name| if exists(name) { name } else { 0 });
+        for (dims, sampling) in [1, 2, 3].into_iter().zip(saved.objects) {
+            restore(self.bound_object_mut(dims), sampling);
+        }
+        (self.server.textures.env_mode, self.server.textures.env_color) = saved.env;
         self.touch_state();
     }
 
@@ -590,7 +648,7 @@ impl Gl {
         }
     }
 
-    /// The levels loaded into the bound 1D (`dims` 1) or 2D texture, complete or not (tests of
+    /// The levels loaded into the bound 1D (`dims` 1), 2D or 3D texture, complete or not (tests of
     /// `gluBuild*Mipmap*` read them as `glGetTexImage` would).
     #[cfg(test)]
     pub(crate) fn bound_levels(&mut self, dims: u8) -> Vec<Option<TexLevel>> {
@@ -614,12 +672,12 @@ impl Gl {
     }
 }
 
-/// Level 0 and, when the filter uses mipmaps, every level down to 1×1 with the sizes and base
-/// format GL requires (GL 1.1 §3.8.9); `None` when that chain is incomplete.
+/// Level 0 and, when the filter uses mipmaps, every level down to 1×1(×1) with the sizes and
+/// base format GL requires (GL 1.1 §3.8.9); `None` when that chain is incomplete.
 fn complete_chain(levels: &[Option<TexLevel>], formats: &[GLenum], params: &TexParams) -> Option<Arc<Vec<TexLevel>>> {
     let first = usize::try_from(params.base_level).ok()?;
     let base = levels.get(first)?.as_ref()?;
-    if base.width == 0 || base.height == 0 {
+    if base.width == 0 || base.height == 0 || base.depth == 0 {
         return None;
     }
     if !params.uses_mipmaps() {
@@ -627,15 +685,16 @@ fn complete_chain(levels: &[Option<TexLevel>], formats: &[GLenum], params: &TexP
     }
     // GL 1.2 §3.8.10: levels base..=min(p, max level), p = base + log2 of the largest side; a
     // maximum below the base leaves the texture incomplete.
-    let last = (first + base.width.max(base.height).ilog2() as usize).min(usize::try_from(params.max_level).ok()?);
+    let largest = base.width.max(base.height).max(base.depth);
+    let last = (first + largest.ilog2() as usize).min(usize::try_from(params.max_level).ok()?);
     if last < first {
         return None;
     }
     let mut chain = Vec::with_capacity(last - first + 1);
     for (i, k) in (first..=last).enumerate() {
         let level = levels.get(k)?.as_ref()?;
-        let (w, h) = ((base.width >> i).max(1), (base.height >> i).max(1));
-        if level.width != w || level.height != h || formats[k] != formats[first] {
+        let size = [base.width, base.height, base.depth].map(|side| (side >> i).max(1));
+        if [level.width, level.height, level.depth] != size || formats[k] != formats[first] {
             return None;
         }
         chain.push(level.clone());
@@ -643,11 +702,14 @@ fn complete_chain(levels: &[Option<TexLevel>], formats: &[GLenum], params: &TexP
     Some(Arc::new(chain))
 }
 
-/// The texture bindings' `glGet` rows (GL 1.1 table 6.9) and the size limit.
+/// The texture bindings' `glGet` rows (GL 1.1 table 6.9, GL 1.2's 3D binding) and the size
+/// limits.
 pub(crate) static GET_ROWS: &[StateVar] = &[
     row(GL_TEXTURE_BINDING_1D, 1, Kind::Int, |gl, o| put_enum(o, gl.server.textures.bound[0])),
     row(GL_TEXTURE_BINDING_2D, 1, Kind::Int, |gl, o| put_enum(o, gl.server.textures.bound[1])),
+    row(GL_TEXTURE_BINDING_3D, 1, Kind::Int, |gl, o| put_enum(o, gl.server.textures.bound[2])),
     int_limit!(GL_MAX_TEXTURE_SIZE, MAX_TEXTURE_SIZE),
+    int_limit!(GL_MAX_3D_TEXTURE_SIZE, MAX_3D_TEXTURE_SIZE),
     row(GL_ACTIVE_TEXTURE, 1, Kind::Int, |gl, o| put_enum(o, gl.server.active_texture)),
 ];
 

@@ -182,13 +182,15 @@ pub(crate) struct GpuFragment {
     pub fog_end: f32,
     /// 0 none, 1 a smooth point's coverage, 2 a smooth line's.
     pub coverage: u32,
-    pub pad1: f32,
+    /// 3 for a 3D texture (sampled at (s, t, r) from the 3D binding), else 2.
+    pub dims: u32,
     pub fog_color: [f32; 4],
     /// 1 with a polygon stipple.
     pub stipple: u32,
     /// The target's height in pixels (the stipple counts rows from the bottom).
     pub height: u32,
-    pub pad2: u32,
+    /// `GL_CLAMP` in r (a 3D texture), as `clamp_s`.
+    pub clamp_r: u32,
     pub pad3: u32,
     /// The stipple's 32 rows, four to a vector.
     pub stipple_rows: [[u32; 4]; 8],
@@ -288,11 +290,11 @@ mod tests {
                 fog_start,
                 fog_end,
                 coverage,
-                pad1,
+                dims,
                 fog_color,
                 stipple,
                 height,
-                pad2,
+                clamp_r,
                 pad3,
                 stipple_rows,
                 border_color

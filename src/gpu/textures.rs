@@ -67,29 +67,33 @@ impl GpuFragment {
                 1
             }
         };
-        let clamp_t = if texture.one_d { 0 } else { clamp(texture.params.wrap_t) };
-        (self.clamp_s, self.clamp_t) = (clamp(texture.params.wrap_s), clamp_t);
+        let clamp_t = if texture.dims == 1 { 0 } else { clamp(texture.params.wrap_t) };
+        let clamp_r = if texture.dims == 3 { clamp(texture.params.wrap_r) } else { 0 };
+        (self.clamp_s, self.clamp_t, self.clamp_r) = (clamp(texture.params.wrap_s), clamp_t, clamp_r);
+        self.dims = u32::from(texture.dims.max(2));
         self.color = texture.env_color;
         self.border_color = texture.border_color;
     }
 }
 
-/// The bind group layout of `raster.wgsl`'s group 0: image, sampler, environment.
+/// The bind group layout of `raster.wgsl`'s group 0: the 1D or 2D image, sampler, environment,
+/// the 3D image.
 pub(crate) fn bind_group_layout(device: &wgpu::Device) -> wgpu::BindGroupLayout {
     let fragment = wgpu::ShaderStages::FRAGMENT;
+    let image = |binding, view_dimension| wgpu::BindGroupLayoutEntry {
+        binding,
+        visibility: fragment,
+        ty: wgpu::BindingType::Texture {
+            sample_type: wgpu::TextureSampleType::Float { filterable: true },
+            view_dimension,
+            multisampled: false,
+        },
+        count: None,
+    };
     device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
         label: Some("texture"),
         entries: &[
-            wgpu::BindGroupLayoutEntry {
-                binding: 0,
-                visibility: fragment,
-                ty: wgpu::BindingType::Texture {
-                    sample_type: wgpu::TextureSampleType::Float { filterable: true },
-                    view_dimension: wgpu::TextureViewDimension::D2,
-                    multisampled: false,
-                },
-                count: None,
-            },
+            image(0, wgpu::TextureViewDimension::D2),
             wgpu::BindGroupLayoutEntry {
                 binding: 1,
                 visibility: fragment,
@@ -97,6 +101,7 @@ pub(crate) fn bind_group_layout(device: &wgpu::Device) -> wgpu::BindGroupLayout 
                 count: None,
             },
             super::device::uniform(2, fragment, false),
+            image(3, wgpu::TextureViewDimension::D3),
         ],
     })
 }
@@ -105,7 +110,10 @@ pub(crate) fn bind_group_layout(device: &wgpu::Device) -> wgpu::BindGroupLayout 
 #[derive(Default)]
 pub(crate) struct TextureCache {
     views: HashMap<u64, wgpu::TextureView>,
-    samplers: HashMap<(TexParams, bool), wgpu::Sampler>,
+    /// The blank 3D image bound beside a 1D or 2D texture (and the blank 2D one, under key 0 in
+    /// `views`, beside a 3D texture).
+    blank_3d: Option<wgpu::TextureView>,
+    samplers: HashMap<(TexParams, u8), wgpu::Sampler>,
 }
 
 impl TextureCache {
@@ -123,23 +131,31 @@ impl TextureCache {
         let drawn = |key: u64| key == 0 || fragments.iter().any(|f| f.texture.as_ref().is_some_and(|t| t.key == key));
         self.views.retain(|key, _| drawn(*key));
         let blank = BoundTexture::blank();
+        let blank_2d = self.views.entry(0).or_insert_with(|| upload(device, queue, &blank)).clone();
+        let blank_3d = self.blank_3d.get_or_insert_with(|| upload(device, queue, &blank_3d())).clone();
         let mut groups = Vec::with_capacity(fragments.len() + 1);
         for fragment in fragments.iter().map(Some).chain([None]) {
             let t = fragment.and_then(|f| f.texture.as_ref()).unwrap_or(&blank);
             let view = self.views.entry(t.key).or_insert_with(|| upload(device, queue, t)).clone();
-            let key = (t.params, t.one_d);
-            let sampler = self.samplers.entry(key).or_insert_with(|| sampler(device, &t.params, t.one_d));
+            let images = if t.dims == 3 { (&blank_2d, &view) } else { (&view, &blank_3d) };
+            let key = (t.params, t.dims);
+            let sampler = self.samplers.entry(key).or_insert_with(|| sampler(device, &t.params, t.dims));
             let uniform = fragment.map(|f| GpuFragment::of(f, height)).unwrap_or_default();
-            groups.push(bind_group(device, layout, &view, sampler, uniform));
+            groups.push(bind_group(device, layout, images, sampler, uniform));
         }
         groups
     }
 }
 
+/// A 1×1×1 white 3D texture, for where no 3D texture is drawn.
+fn blank_3d() -> BoundTexture {
+    BoundTexture { dims: 3, ..BoundTexture::blank() }
+}
+
 fn bind_group(
     device: &wgpu::Device,
     layout: &wgpu::BindGroupLayout,
-    view: &wgpu::TextureView,
+    (flat, solid): (&wgpu::TextureView, &wgpu::TextureView),
     sampler: &wgpu::Sampler,
     fragment: GpuFragment,
 ) -> wgpu::BindGroup {
@@ -152,23 +168,26 @@ fn bind_group(
         label: Some("texture"),
         layout,
         entries: &[
-            wgpu::BindGroupEntry { binding: 0, resource: wgpu::BindingResource::TextureView(view) },
+            wgpu::BindGroupEntry { binding: 0, resource: wgpu::BindingResource::TextureView(flat) },
             wgpu::BindGroupEntry { binding: 1, resource: wgpu::BindingResource::Sampler(sampler) },
             wgpu::BindGroupEntry { binding: 2, resource: uniform.as_entire_binding() },
+            wgpu::BindGroupEntry { binding: 3, resource: wgpu::BindingResource::TextureView(solid) },
         ],
     })
 }
 
-/// The texture's levels as an RGBA8 wgpu texture; GL's first row (t = 0) is row 0.
+/// The texture's levels as an RGBA8 wgpu texture (3D for a 3D texture); GL's first row (t = 0)
+/// is row 0, its first image (r = 0) image 0.
 fn upload(device: &wgpu::Device, queue: &wgpu::Queue, texture: &BoundTexture) -> wgpu::TextureView {
     let base = &texture.levels[0];
-    let size = wgpu::Extent3d { width: base.width, height: base.height, depth_or_array_layers: 1 };
+    let size = wgpu::Extent3d { width: base.width, height: base.height, depth_or_array_layers: base.depth };
+    let dimension = if texture.dims == 3 { wgpu::TextureDimension::D3 } else { wgpu::TextureDimension::D2 };
     let gpu = device.create_texture(&wgpu::TextureDescriptor {
         label: Some("gl texture"),
         size,
         mip_level_count: texture.levels.len() as u32,
         sample_count: 1,
-        dimension: wgpu::TextureDimension::D2,
+        dimension,
         format: wgpu::TextureFormat::Rgba8Unorm,
         usage: wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST,
         view_formats: &[],
@@ -182,8 +201,12 @@ fn upload(device: &wgpu::Device, queue: &wgpu::Queue, texture: &BoundTexture) ->
                 aspect: wgpu::TextureAspect::All,
             },
             bytemuck::cast_slice(&level.texels),
-            wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(4 * level.width), rows_per_image: None },
-            wgpu::Extent3d { width: level.width, height: level.height, depth_or_array_layers: 1 },
+            wgpu::TexelCopyBufferLayout {
+                offset: 0,
+                bytes_per_row: Some(4 * level.width),
+                rows_per_image: Some(level.height),
+            },
+            wgpu::Extent3d { width: level.width, height: level.height, depth_or_array_layers: level.depth },
         );
     }
     gpu.create_view(&Default::default())
@@ -191,8 +214,8 @@ fn upload(device: &wgpu::Device, queue: &wgpu::Queue, texture: &BoundTexture) ->
 
 /// GL's filters and wrap modes as a wgpu sampler (GL 1.1 §3.8.5–3.8.8). `GL_CLAMP` clamps to
 /// the edge here; the shader clamps the coordinate and mixes in the border colour, the same on
-/// every backend. A 1D texture ignores t.
-fn sampler(device: &wgpu::Device, params: &TexParams, one_d: bool) -> wgpu::Sampler {
+/// every backend. A 1D texture ignores t; r is wrapped for a 3D texture only.
+fn sampler(device: &wgpu::Device, params: &TexParams, dims: u8) -> wgpu::Sampler {
     let filter = |f: GLenum| if f == GL_NEAREST { wgpu::FilterMode::Nearest } else { wgpu::FilterMode::Linear };
     let (min, mip) = match params.min_filter {
         GL_NEAREST => (wgpu::FilterMode::Nearest, None),
@@ -206,11 +229,13 @@ fn sampler(device: &wgpu::Device, params: &TexParams, one_d: bool) -> wgpu::Samp
     let lod_min = if params.lod.min.is_nan() { 0.0 } else { params.lod.min.clamp(0.0, 32.0) };
     let lod_max = if params.lod.max.is_nan() { 32.0 } else { params.lod.max.clamp(lod_min, 32.0) };
     let wrap = |w: GLenum| if w == GL_REPEAT { wgpu::AddressMode::Repeat } else { wgpu::AddressMode::ClampToEdge };
-    let (u, v) = (wrap(params.wrap_s), if one_d { wgpu::AddressMode::Repeat } else { wrap(params.wrap_t) });
+    let v = if dims == 1 { wgpu::AddressMode::Repeat } else { wrap(params.wrap_t) };
+    let w = if dims == 3 { wrap(params.wrap_r) } else { wgpu::AddressMode::Repeat };
     device.create_sampler(&wgpu::SamplerDescriptor {
         label: Some("gl sampler"),
-        address_mode_u: u,
+        address_mode_u: wrap(params.wrap_s),
         address_mode_v: v,
+        address_mode_w: w,
         mag_filter: filter(params.mag_filter),
         min_filter: min,
         mipmap_filter: mip.unwrap_or(wgpu::MipmapFilterMode::Nearest),

@@ -241,7 +241,7 @@ fn fragment_bucket(state: &DrawState, smooth: Smooth, polygon_stipple: Option<[u
         values.iter().for_each(|v| v.to_bits().hash(h))
     };
     if let Some(t) = &state.texture {
-        (t.key, t.base_format, t.env_mode, t.one_d).hash(&mut h);
+        (t.key, t.base_format, t.env_mode, t.dims).hash(&mut h);
         bits(&t.env_color, &mut h);
         bits(&t.border_color, &mut h);
     }

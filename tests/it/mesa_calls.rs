@@ -448,6 +448,28 @@ impl Runner {
                     gl.tex_image_2d(target, level, p, q, w, h, format, type_, &bytes);
                 }
             }
+            "tex_image_3d" | "tex_sub_image_3d" => {
+                // tex_image_3d: level internalformat width height depth border;
+                // tex_sub_image_3d: level xoffset yoffset zoffset width height depth.
+                let sub = cmd == "tex_sub_image_3d";
+                let (target, level) = (a.e(), a.int());
+                let (offset, internal) = if sub { ([a.int(), a.int(), a.int()], 0) } else { ([0; 3], a.e() as i32) };
+                let (w, h, d) = (a.int(), a.int(), a.int());
+                let border = if sub { 0 } else { a.int() };
+                let (format, type_) = (a.e(), a.e());
+                let numbers = a.floats();
+                let bytes: Vec<u8> = if type_ == GL_FLOAT {
+                    bytemuck_floats(&numbers)
+                } else {
+                    numbers.iter().map(|&x| x as u8).collect()
+                };
+                let [x, y, z] = offset;
+                if sub {
+                    gl.tex_sub_image_3d(target, level, x, y, z, w, h, d, format, type_, &bytes);
+                } else {
+                    gl.tex_image_3d(target, level, internal, w, h, d, border, format, type_, &bytes);
+                }
+            }
             "tex_parameteri" => gl.tex_parameteri(a.e(), a.e(), a.e() as i32),
             "tex_envi" => gl.tex_envi(a.e(), a.e(), a.e() as i32),
             "pixel_storei" => gl.pixel_storei(a.e(), a.int()),
@@ -713,6 +735,8 @@ fn fresh_gl_with(stencil: u8, accum: u8) -> Gl {
     let mut gl = Gl::new(64, 64);
     gl.set_buffer_config(gleval::gl::BufferConfig { stencil_bits: stencil, accum_bits: accum, double: false });
     gl.viewport(0, 0, 2, 2);
+    // The texture copies read the window as drawn, as interp.c's OSMesa buffer.
+    gl.set_window_reader(|frame, w, h| Some(gleval::render::soft::render_window(frame, w, h)));
     gl
 }
 

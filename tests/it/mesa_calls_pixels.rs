@@ -61,6 +61,11 @@ pub(super) fn pixel_call(gl: &mut Gl, cmd: &str, a: &mut Args<'_>, values: &mut 
             let (t, level, xo, yo, x, y, w, h) = (a.e(), a.int(), a.int(), a.int(), a.int(), a.int(), a.int(), a.int());
             gl.copy_tex_sub_image_2d(t, level, xo, yo, x, y, w, h);
         }
+        "copy_tex_sub_image_3d" => {
+            let (t, level, xo, yo, zo) = (a.e(), a.int(), a.int(), a.int(), a.int());
+            let (x, y, w, h) = (a.int(), a.int(), a.int(), a.int());
+            gl.copy_tex_sub_image_3d(t, level, xo, yo, zo, x, y, w, h);
+        }
         "copy_tex_sub_image_1d" => {
             let (t, level, xo, x, y, w) = (a.e(), a.int(), a.int(), a.int(), a.int(), a.int());
             gl.copy_tex_sub_image_1d(t, level, xo, x, y, w);

@@ -658,3 +658,195 @@ fn quad_diagonals_are_mesas_on_both_rasterisers() {
         }
     }
 }
+
+/// GL 1.2's 3D textures drawn by both rasterisers, against what Mesa 22.3 (llvmpipe, OSMesa)
+/// drew for the same calls (`tests/reference/pixels/texture_3d.c` prints these values): a
+/// 2 × 2 × 2 texture of eight colours on an 8 × 8 square at several r, filters and r wraps (r
+/// interpolated across the square in 6 and 7; `GL_CLAMP` mixes in the border colour in 5),
+/// a mipmapped 4 × 4 × 4 texture minified by two (8), and `GL_TEXTURE_3D` before
+/// `GL_TEXTURE_2D` (9); the diagonal's pixels, within 2/255 (lavapipe weighs texels in fixed
+/// point).
+#[test]
+fn texture_3d_is_mesas_on_both_rasterisers() {
+    let mut renderer = optional_renderer();
+    let setups = [
+        (GL_NEAREST, GL_REPEAT, 0.25, 0.25),
+        (GL_NEAREST, GL_REPEAT, 0.75, 0.75),
+        (GL_LINEAR, GL_CLAMP_TO_EDGE, 0.5, 0.5),
+        (GL_LINEAR, GL_CLAMP_TO_EDGE, 0.375, 0.375),
+        (GL_LINEAR, GL_REPEAT, 0.0, 0.0),
+        (GL_LINEAR, GL_CLAMP, 0.0, 0.0),
+        (GL_LINEAR, GL_CLAMP_TO_EDGE, 0.0, 1.0),
+        (GL_NEAREST, GL_REPEAT, 0.0, 1.0),
+    ];
+    let mesa: [[[u8; 4]; 8]; 10] = [
+        [
+            [255, 0, 0, 255],
+            [255, 0, 0, 255],
+            [255, 0, 0, 255],
+            [255, 0, 0, 255],
+            [255, 255, 255, 255],
+            [255, 255, 255, 255],
+            [255, 255, 255, 255],
+            [255, 255, 255, 255],
+        ],
+        [
+            [0, 255, 255, 255],
+            [0, 255, 255, 255],
+            [0, 255, 255, 255],
+            [0, 255, 255, 255],
+            [128, 128, 128, 255],
+            [128, 128, 128, 255],
+            [128, 128, 128, 255],
+            [128, 128, 128, 255],
+        ],
+        [
+            [128, 128, 128, 255],
+            [128, 128, 128, 255],
+            [129, 129, 129, 255],
+            [137, 137, 137, 255],
+            [153, 153, 153, 255],
+            [177, 177, 177, 255],
+            [192, 192, 192, 255],
+            [192, 192, 192, 255],
+        ],
+        [
+            [191, 64, 64, 255],
+            [191, 64, 64, 255],
+            [164, 80, 80, 255],
+            [136, 116, 116, 255],
+            [144, 156, 156, 255],
+            [188, 200, 200, 255],
+            [223, 223, 223, 255],
+            [223, 223, 223, 255],
+        ],
+        [
+            [128, 128, 128, 255],
+            [128, 128, 128, 255],
+            [129, 129, 129, 255],
+            [137, 137, 137, 255],
+            [153, 153, 153, 255],
+            [177, 177, 177, 255],
+            [192, 192, 192, 255],
+            [192, 192, 192, 255],
+        ],
+        [
+            [255, 0, 128, 255],
+            [255, 0, 128, 255],
+            [227, 16, 143, 255],
+            [195, 48, 175, 255],
+            [195, 80, 207, 255],
+            [227, 112, 239, 255],
+            [255, 128, 255, 255],
+            [255, 128, 255, 255],
+        ],
+        [
+            [255, 0, 0, 255],
+            [255, 0, 0, 255],
+            [181, 56, 56, 255],
+            [136, 126, 126, 255],
+            [157, 151, 151, 255],
+            [160, 142, 142, 255],
+            [128, 128, 128, 255],
+            [128, 128, 128, 255],
+        ],
+        [
+            [255, 0, 0, 255],
+            [255, 0, 0, 255],
+            [255, 0, 0, 255],
+            [255, 0, 0, 255],
+            [128, 128, 128, 255],
+            [128, 128, 128, 255],
+            [128, 128, 128, 255],
+            [128, 128, 128, 255],
+        ],
+        [
+            [0, 255, 0, 255],
+            [0, 255, 0, 255],
+            [0, 255, 0, 255],
+            [0, 255, 0, 255],
+            [0, 255, 0, 255],
+            [0, 255, 0, 255],
+            [0, 255, 0, 255],
+            [0, 255, 0, 255],
+        ],
+        [
+            [255, 0, 0, 255],
+            [255, 0, 0, 255],
+            [255, 0, 0, 255],
+            [255, 0, 0, 255],
+            [255, 0, 0, 255],
+            [255, 0, 0, 255],
+            [255, 0, 0, 255],
+            [255, 0, 0, 255],
+        ],
+    ];
+    let square = |gl: &mut Gl, (r0, r1): (f32, f32), st: f32| {
+        gl.begin(GL_QUADS);
+        for (s, t, x, y) in [(0.0, 0.0, -1.0, -1.0), (st, 0.0, 1.0, -1.0), (st, st, 1.0, 1.0), (0.0, st, -1.0, 1.0)] {
+            gl.tex_coord3f(s, t, if s == 0.0 { r0 } else { r1 });
+            gl.vertex2f(x, y);
+        }
+        gl.end();
+    };
+    let mut gl = Gl::new(8, 8);
+    let mut frames = Vec::new();
+    gl.pixel_storei(GL_UNPACK_ALIGNMENT, 1);
+    gl.bind_texture(GL_TEXTURE_3D, 1);
+    let texels =
+        [255u8, 0, 0, 0, 255, 0, 0, 0, 255, 255, 255, 255, 0, 255, 255, 255, 0, 255, 255, 255, 0, 128, 128, 128];
+    gl.tex_image_3d(GL_TEXTURE_3D, 0, GL_RGB as i32, 2, 2, 2, 0, GL_RGB, GL_UNSIGNED_BYTE, &texels);
+    gl.tex_parameteri(GL_TEXTURE_3D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE as i32);
+    gl.tex_parameteri(GL_TEXTURE_3D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE as i32);
+    gl.tex_parameterfv(GL_TEXTURE_3D, GL_TEXTURE_BORDER_COLOR, &[1.0, 0.0, 1.0, 1.0]);
+    gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE as i32);
+    gl.enable(GL_TEXTURE_3D);
+    for (filter, wrap_r, r0, r1) in setups {
+        gl.tex_parameteri(GL_TEXTURE_3D, GL_TEXTURE_MIN_FILTER, filter as i32);
+        gl.tex_parameteri(GL_TEXTURE_3D, GL_TEXTURE_MAG_FILTER, filter as i32);
+        gl.tex_parameteri(GL_TEXTURE_3D, GL_TEXTURE_WRAP_R, wrap_r as i32);
+        square(&mut gl, (r0, r1), 1.0);
+        frames.push(gl.take_frame());
+    }
+    gl.bind_texture(GL_TEXTURE_3D, 2);
+    for (level, colour) in [[255u8, 0, 0], [0, 255, 0], [0, 0, 255]].into_iter().enumerate() {
+        let side = 4 >> level;
+        let image = colour.repeat((side * side * side) as usize);
+        gl.tex_image_3d(
+            GL_TEXTURE_3D,
+            level as i32,
+            GL_RGB as i32,
+            side,
+            side,
+            side,
+            0,
+            GL_RGB,
+            GL_UNSIGNED_BYTE,
+            &image,
+        );
+    }
+    gl.tex_parameteri(GL_TEXTURE_3D, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST as i32);
+    square(&mut gl, (0.5, 0.5), 4.0);
+    frames.push(gl.take_frame());
+    gl.bind_texture(GL_TEXTURE_2D, 3);
+    gl.tex_image_2d(GL_TEXTURE_2D, 0, GL_RGB as i32, 1, 1, 0, GL_RGB, GL_UNSIGNED_BYTE, &[0u8, 0, 255]);
+    gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST as i32);
+    gl.enable(GL_TEXTURE_2D);
+    square(&mut gl, (0.5, 0.5), 1.0);
+    frames.push(gl.take_frame());
+    assert_eq!(gl.get_error(), GL_NO_ERROR);
+    // The diagonal (i, i) in GL's rows; the image's rows run top down.
+    let diagonal = |pixels: &[u8]| -> Vec<[u8; 4]> {
+        (0..8).map(|i| pixels[((7 - i) * 8 + i) * 4..][..4].try_into().unwrap()).collect()
+    };
+    for (k, (frame, expected)) in frames.iter().zip(&mesa).enumerate() {
+        let close =
+            |got: &[[u8; 4]]| got.iter().zip(expected).all(|(g, e)| g.iter().zip(e).all(|(a, b)| a.abs_diff(*b) <= 2));
+        let soft = diagonal(&soft::render_frame(frame, 8, 8).pixels);
+        assert!(close(&soft), "CPU, set-up {k}: {soft:?}, Mesa {expected:?}");
+        if let Some(renderer) = renderer.as_mut() {
+            let wgpu = diagonal(&renderer.render_frame(frame, 8, 8).expect("wgpu renders").pixels);
+            assert!(close(&wgpu), "wgpu, set-up {k}: {wgpu:?}, Mesa {expected:?}");
+        }
+    }
+}

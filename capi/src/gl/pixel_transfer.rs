@@ -25,6 +25,14 @@ forward! {
         target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, x: GLint, y: GLint, width: GLsizei,
         height: GLsizei,
     ) => copy_tex_sub_image_2d;
+    glCopyTexSubImage3D(
+        target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, zoffset: GLint, x: GLint, y: GLint,
+        width: GLsizei, height: GLsizei,
+    ) => copy_tex_sub_image_3d;
+    glCopyTexSubImage3DEXT(
+        target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, zoffset: GLint, x: GLint, y: GLint,
+        width: GLsizei, height: GLsizei,
+    ) => copy_tex_sub_image_3d;
     glIndexf(c: GLfloat) => indexf;
     glIndexd(c: GLdouble) => indexd;
     glIndexi(c: GLint) => indexi;

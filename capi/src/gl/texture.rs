@@ -82,3 +82,58 @@ entry! {
         })
     }
 }
+
+entry! {
+    /// `glTexImage3D` (GL 1.2): reads the images under the unpack modes (image height and
+    /// skipped images included); NULL defines the level without texels.
+    #[allow(clippy::too_many_arguments)]
+    unsafe fn glTexImage3D(
+        target: GLenum, level: GLint, internalformat: GLint, width: GLsizei, height: GLsizei, depth: GLsizei,
+        border: GLint, format: GLenum, type_: GLenum, pixels: *const c_void,
+    ) {
+        with_gl(|gl| {
+            let pixels = unsafe { bytes(pixels, gl.unpacked_image_3d_len((width, height, depth), format, type_)) };
+            gl.tex_image_3d(target, level, internalformat, width, height, depth, border, format, type_, pixels)
+        })
+    }
+}
+
+entry! {
+    /// `glTexImage3DEXT` (`GL_EXT_texture3D`): `glTexImage3D`, its internal format an enum.
+    #[allow(clippy::too_many_arguments)]
+    unsafe fn glTexImage3DEXT(
+        target: GLenum, level: GLint, internalformat: GLenum, width: GLsizei, height: GLsizei, depth: GLsizei,
+        border: GLint, format: GLenum, type_: GLenum, pixels: *const c_void,
+    ) {
+        unsafe {
+            glTexImage3D(target, level, internalformat as GLint, width, height, depth, border, format, type_, pixels)
+        }
+    }
+}
+
+entry! {
+    /// `glTexSubImage3D` (GL 1.2): reads the box's images under the unpack modes.
+    #[allow(clippy::too_many_arguments)]
+    unsafe fn glTexSubImage3D(
+        target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, zoffset: GLint, width: GLsizei,
+        height: GLsizei, depth: GLsizei, format: GLenum, type_: GLenum, pixels: *const c_void,
+    ) {
+        with_gl(|gl| {
+            let pixels = unsafe { bytes(pixels, gl.unpacked_image_3d_len((width, height, depth), format, type_)) };
+            gl.tex_sub_image_3d(target, level, xoffset, yoffset, zoffset, width, height, depth, format, type_, pixels)
+        })
+    }
+}
+
+entry! {
+    /// `glTexSubImage3DEXT` (`GL_EXT_texture3D`): `glTexSubImage3D`.
+    #[allow(clippy::too_many_arguments)]
+    unsafe fn glTexSubImage3DEXT(
+        target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, zoffset: GLint, width: GLsizei,
+        height: GLsizei, depth: GLsizei, format: GLenum, type_: GLenum, pixels: *const c_void,
+    ) {
+        unsafe {
+            glTexSubImage3D(target, level, xoffset, yoffset, zoffset, width, height, depth, format, type_, pixels)
+        }
+    }
+}

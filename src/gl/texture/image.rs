@@ -1,16 +1,23 @@
-//! Texture images (GL 1.1 spec §3.8.1–3.8.2; Mesa `main/teximage.c`): `glTexImage1D/2D` and
-//! `glTexSubImage1D/2D` of the bound texture (proxies, borders, level sizes), each image
-//! unpacked from client memory through the pixel store and the pixel transfer into RGBA8.
+//! Texture images (GL 1.1 spec §3.8.1–3.8.2, GL 1.2's 3D images; Mesa `main/teximage.c`):
+//! `glTexImage1D/2D/3D` and `glTexSubImage2D/3D` of the bound texture (proxies, borders, level
+//! sizes), each image unpacked from client memory through the pixel store and the pixel
+//! transfer into RGBA8.
 
 use super::TextureCall;
-use super::{
-    base_format, fits_level, proxy_index, strip_border, target_index, texture_format, TexLevel, MAX_TEXTURE_SIZE,
-};
+use super::{base_format, fits_level, max_level, proxy_index, strip_border, target_index, texture_format, TexLevel};
 use crate::gl::consts::*;
 use crate::gl::lists::ListCommand;
-use crate::gl::pixel_unpack::{format_and_type_error, unpack_each};
+use crate::gl::pixel_unpack::{format_and_type_error, image_stride, unpack_each};
 use crate::gl::types::*;
 use crate::gl::Gl;
+
+/// A box of texels in a level: its first texel (x, y, z) and its size (width, height, depth);
+/// z is 0 and the depth 1 below 3D, y 0 and the height 1 in 1D.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(in crate::gl) struct TexelBox {
+    pub origin: [usize; 3],
+    pub size: [usize; 3],
+}
 
 impl Gl {
     /// `glTexImage2D`: defines level `level` of the bound 2D texture from `pixels` (any plain
@@ -35,7 +42,7 @@ impl Gl {
         pixels: &[P],
     ) {
         let bytes: &[u8] = bytemuck::cast_slice(pixels);
-        self.tex_image(2, target, level, internalformat, (width, height), border, (format, type_), bytes);
+        self.tex_image(2, target, level, internalformat, [width, height, 1], border, (format, type_), bytes);
     }
 
     /// `glTexImage1D`: as [`Gl::tex_image_2d`] for the bound 1D texture (height 1).
@@ -52,17 +59,40 @@ impl Gl {
         pixels: &[P],
     ) {
         let bytes: &[u8] = bytemuck::cast_slice(pixels);
-        self.tex_image(1, target, level, internalformat, (width, 1), border, (format, type_), bytes);
+        self.tex_image(1, target, level, internalformat, [width, 1, 1], border, (format, type_), bytes);
+    }
+
+    /// `glTexImage3D` (GL 1.2 §3.8.1): as [`Gl::tex_image_2d`] for the bound 3D texture (or
+    /// `GL_PROXY_TEXTURE_3D`), `depth` images read one after the other, each as a 2D image is,
+    /// `GL_UNPACK_IMAGE_HEIGHT` rows apart, after `GL_UNPACK_SKIP_IMAGES` images. Sides up to
+    /// [`super::MAX_3D_TEXTURE_SIZE`]; Mesa's errors in Mesa's order
+    /// (`tests/reference/calls/cases/texture_3d.calls`).
+    #[allow(clippy::too_many_arguments)]
+    pub fn tex_image_3d<P: bytemuck::Pod>(
+        &mut self,
+        target: GLenum,
+        level: GLint,
+        internalformat: GLint,
+        width: GLsizei,
+        height: GLsizei,
+        depth: GLsizei,
+        border: GLint,
+        format: GLenum,
+        type_: GLenum,
+        pixels: &[P],
+    ) {
+        let bytes: &[u8] = bytemuck::cast_slice(pixels);
+        self.tex_image(3, target, level, internalformat, [width, height, depth], border, (format, type_), bytes);
     }
 
     #[allow(clippy::too_many_arguments)]
-    fn tex_image(
+    pub(in crate::gl) fn tex_image(
         &mut self,
         dims: u8,
         target: GLenum,
         level: GLint,
         internalformat: GLint,
-        (width, height): (GLsizei, GLsizei),
+        size: [GLsizei; 3],
         border: GLint,
         (format, type_): (GLenum, GLenum),
         bytes: &[u8],
@@ -74,7 +104,7 @@ impl Gl {
                 target,
                 level,
                 internalformat,
-                size: (width, height),
+                size,
                 border,
                 format: (format, type_),
                 image: (store, bytes.to_vec()),
@@ -83,13 +113,12 @@ impl Gl {
         {
             return;
         }
-        let wanted = if dims == 1 { GL_TEXTURE_1D } else { GL_TEXTURE_2D };
+        let wanted = [GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_3D][usize::from(dims - 1)];
         let proxy = proxy_index(target) == Some(usize::from(dims - 1));
         if target != wanted && !proxy {
             return self.set_error(GL_INVALID_ENUM);
         }
-        let max_level = MAX_TEXTURE_SIZE.ilog2() as GLint;
-        if !(0..=max_level).contains(&level) || width < 0 || height < 0 || !(0..=1).contains(&border) {
+        if !(0..=max_level(dims)).contains(&level) || size.iter().any(|&s| s < 0) || !(0..=1).contains(&border) {
             return self.set_error(GL_INVALID_VALUE);
         }
         if !self.check_image_format(format, type_) {
@@ -99,27 +128,28 @@ impl Gl {
         // Too large for its level (or too small for its border): an error, or for a proxy, a
         // proxy level of nothing (GL 1.1 §3.8.1: "no error is generated"), as Mesa's
         // `teximage` answers after the checks above.
-        let fits = fits_level(dims, level, (width, height), border);
+        let fits = fits_level(dims, level, size, border);
         if !fits && !proxy {
             return self.set_error(GL_INVALID_VALUE);
         }
+        let [w, h, d] = size.map(|s| s as usize);
         if proxy {
             // A proxy keeps the sizes and border as given (Mesa strips real images only).
-            let image = fits.then(|| TexLevel { width: width as u32, height: height as u32, texels: Vec::new() });
+            let image =
+                fits.then(|| TexLevel { width: w as u32, height: h as u32, depth: d as u32, texels: Vec::new() });
             let object = &mut self.server.textures.proxies[usize::from(dims - 1)];
             return object.define_level(level as usize, image, (base, internalformat), if fits { border } else { 0 });
         }
-        let (w, h) = (width as usize, height as usize);
         let texels = if bytes.is_empty() {
-            vec![[0; 4]; w * h]
+            vec![[0; 4]; w * h * d]
         } else {
-            match self.unpack_texels((format, type_), w, h, bytes) {
+            match self.unpack_texels(dims, (format, type_), [w, h, d], bytes) {
                 Some(texels) => texels,
                 None => return self.set_error(GL_INVALID_VALUE),
             }
         };
-        let (texels, w, h) = strip_border(dims, texels, (w, h), border as usize);
-        let image = TexLevel { width: w as u32, height: h as u32, texels };
+        let (texels, [w, h, d]) = strip_border(dims, texels, [w, h, d], border as usize);
+        let image = TexLevel { width: w as u32, height: h as u32, depth: d as u32, texels };
         self.bound_object_mut(dims).define_level(level as usize, Some(image), (base, internalformat), 0);
         self.image_changed(dims);
     }
@@ -140,90 +170,143 @@ impl Gl {
         type_: GLenum,
         pixels: &[P],
     ) {
-        let bytes: &[u8] = bytemuck::cast_slice(pixels);
+        let region = ([xoffset, yoffset, 0], [width, height, 1]);
+        self.tex_sub_image_call(2, target, level, region, (format, type_), bytemuck::cast_slice(pixels));
+    }
+
+    /// `glTexSubImage1D`: as [`Gl::tex_sub_image_2d`] for the bound 1D texture (one row at
+    /// `xoffset`).
+    #[allow(clippy::too_many_arguments)]
+    pub fn tex_sub_image_1d<P: bytemuck::Pod>(
+        &mut self,
+        target: GLenum,
+        level: GLint,
+        xoffset: GLint,
+        width: GLsizei,
+        format: GLenum,
+        type_: GLenum,
+        pixels: &[P],
+    ) {
+        let region = ([xoffset, 0, 0], [width, 1, 1]);
+        self.tex_sub_image_call(1, target, level, region, (format, type_), bytemuck::cast_slice(pixels));
+    }
+
+    /// `glTexSubImage3D` (GL 1.2 §3.8.2): as [`Gl::tex_sub_image_2d`] for a box of the bound 3D
+    /// texture's level, the images read as [`Gl::tex_image_3d`] reads them.
+    #[allow(clippy::too_many_arguments)]
+    pub fn tex_sub_image_3d<P: bytemuck::Pod>(
+        &mut self,
+        target: GLenum,
+        level: GLint,
+        xoffset: GLint,
+        yoffset: GLint,
+        zoffset: GLint,
+        width: GLsizei,
+        height: GLsizei,
+        depth: GLsizei,
+        format: GLenum,
+        type_: GLenum,
+        pixels: &[P],
+    ) {
+        let region = ([xoffset, yoffset, zoffset], [width, height, depth]);
+        self.tex_sub_image_call(3, target, level, region, (format, type_), bytemuck::cast_slice(pixels));
+    }
+
+    /// `glTexSubImage1D/2D/3D` as called: compiled into a display list, or run.
+    pub(in crate::gl) fn tex_sub_image_call(
+        &mut self,
+        dims: u8,
+        target: GLenum,
+        level: GLint,
+        (offset, size): ([GLint; 3], [GLsizei; 3]),
+        format: (GLenum, GLenum),
+        bytes: &[u8],
+    ) {
         let store = self.unpack_store();
         if self.compiled(|| {
             ListCommand::Texture(TextureCall::TexSubImage {
+                dims,
                 target,
                 level,
-                offset: (xoffset, yoffset),
-                size: (width, height),
-                format: (format, type_),
+                offset,
+                size,
+                format,
                 image: (store, bytes.to_vec()),
             })
         }) || self.reject_inside_begin_end()
         {
             return;
         }
-        self.tex_sub_image(2, target, level, [xoffset, yoffset, width, height], (format, type_), bytes);
+        self.tex_sub_image(dims, target, level, (offset, size), format, bytes);
     }
 
-    /// `glTexSubImage1D` and `glTexSubImage2D` once compiled: `rect` is x, y, width, height in
-    /// the level (y 0 and height 1 for a 1D texture).
+    /// `glTexSubImage1D/2D/3D` once compiled: `offset` and `size` the box in the level (y 0
+    /// and height 1 for a 1D texture, z 0 and depth 1 below 3D).
     pub(in crate::gl) fn tex_sub_image(
         &mut self,
         dims: u8,
         target: GLenum,
         level: GLint,
-        rect: [GLint; 4],
+        (offset, size): ([GLint; 3], [GLsizei; 3]),
         (format, type_): (GLenum, GLenum),
         bytes: &[u8],
     ) {
         if target_index(target) != Some(usize::from(dims - 1)) {
             return self.set_error(GL_INVALID_ENUM);
         }
-        let Some((x, y, w, h)) = self.sub_image_rect(dims, level, rect) else { return };
+        let Some(region) = self.sub_image_box(dims, level, offset, size) else { return };
         if !self.check_image_format(format, type_) {
             return;
         }
-        let Some(texels) = self.unpack_texels((format, type_), w, h, bytes) else {
+        let Some(texels) = self.unpack_texels(dims, (format, type_), region.size, bytes) else {
             return self.set_error(GL_INVALID_VALUE);
         };
-        self.replace_texels(dims, level as usize, (x, y, w), &texels);
+        self.replace_texels(dims, level as usize, region, &texels);
     }
 
-    /// Checks a sub-image rectangle against the bound object's level `level`: a level outside
+    /// Checks a sub-image box against the bound object's level `level`: a level outside
     /// 0..=log2(max size) → `GL_INVALID_VALUE`; a level not defined → `GL_INVALID_OPERATION`;
-    /// negative sizes or a rectangle outside the level →
-    /// `GL_INVALID_VALUE`. The rectangle as (x, y, width, height) when it fits.
-    pub(in crate::gl) fn sub_image_rect(
+    /// negative sizes or a box outside the level → `GL_INVALID_VALUE`. The box when it fits.
+    pub(in crate::gl) fn sub_image_box(
         &mut self,
         dims: u8,
         level: GLint,
-        rect: [GLint; 4],
-    ) -> Option<(usize, usize, usize, usize)> {
+        offset: [GLint; 3],
+        size: [GLsizei; 3],
+    ) -> Option<TexelBox> {
         // Mesa checks the level's range before whether it is defined (measured).
-        if !(0..=MAX_TEXTURE_SIZE.ilog2() as GLint).contains(&level) {
+        if !(0..=max_level(dims)).contains(&level) {
             self.set_error(GL_INVALID_VALUE);
             return None;
         }
         let defined = usize::try_from(level)
             .ok()
             .and_then(|l| self.bound_object(dims).levels.get(l).cloned().flatten())
-            .map(|l| (i64::from(l.width), i64::from(l.height)));
-        let Some((lw, lh)) = defined else {
+            .map(|l| [l.width, l.height, l.depth].map(i64::from));
+        let Some(extent) = defined else {
             self.set_error(GL_INVALID_OPERATION);
             return None;
         };
-        let [x, y, w, h] = rect.map(i64::from);
-        if w < 0 || h < 0 || x < 0 || y < 0 || x + w > lw || y + h > lh {
+        let fits = (0..3).all(|k| {
+            let (o, s) = (i64::from(offset[k]), i64::from(size[k]));
+            o >= 0 && s >= 0 && o + s <= extent[k]
+        });
+        if !fits {
             self.set_error(GL_INVALID_VALUE);
             return None;
         }
-        Some((x as usize, y as usize, w as usize, h as usize))
+        Some(TexelBox { origin: offset.map(|o| o as usize), size: size.map(|s| s as usize) })
     }
 
-    /// Writes rows of `w` texels into level `level` of the bound object from (`x`, `y`) on.
-    pub(in crate::gl) fn replace_texels(
-        &mut self,
-        dims: u8,
-        level: usize,
-        (x, y, w): (usize, usize, usize),
-        texels: &[[u8; 4]],
-    ) {
+    /// Writes the box's texels (rows of its width, images of its height) into level `level` of
+    /// the bound object.
+    pub(in crate::gl) fn replace_texels(&mut self, dims: u8, level: usize, region: TexelBox, texels: &[[u8; 4]]) {
         let Some(Some(target)) = self.bound_object_mut(dims).levels.get_mut(level) else { return };
+        let ([x, y, z], [w, h, _]) = (region.origin, region.size);
+        let (width, height) = (target.width as usize, target.height as usize);
         for (row, source) in texels.chunks_exact(w.max(1)).enumerate() {
-            let start = (y + row) * target.width as usize + x;
+            let (j, k) = (row % h.max(1), row / h.max(1));
+            let start = ((z + k) * height + y + j) * width + x;
             target.texels[start..start + w].copy_from_slice(source);
         }
         self.image_changed(dims);
@@ -240,27 +323,38 @@ impl Gl {
         error.is_none()
     }
 
-    /// Unpacks a `w`×`h` texture image from client memory to RGBA8 as GL 1.1 §3.8.1 says:
-    /// as `glDrawPixels` reads it ([`super::pixel_unpack`]), through the pixel transfer (colour
-    /// indices through the index-to-RGBA maps, colours through scale, bias and, with
-    /// `GL_MAP_COLOR`, the colour maps), clamped to [0, 1]. `None` if `bytes` is short.
+    /// Unpacks a texture image of `size` (width, height, depth) from client memory to RGBA8 as
+    /// GL 1.1 §3.8.1 says: as `glDrawPixels` reads it ([`super::pixel_unpack`]), through the
+    /// pixel transfer (colour indices through the index-to-RGBA maps, colours through scale,
+    /// bias and, with `GL_MAP_COLOR`, the colour maps), clamped to [0, 1]. A 3D image's images
+    /// lie [`image_stride`] bytes apart after the skipped ones (GL 1.2; below 3D the image
+    /// modes do nothing). `None` if `bytes` is short.
     fn unpack_texels(
         &self,
+        dims: u8,
         (format, type_): (GLenum, GLenum),
-        w: usize,
-        h: usize,
+        [w, h, d]: [usize; 3],
         bytes: &[u8],
     ) -> Option<Vec<[u8; 4]>> {
         let transfer = self.color_transfer();
         let byte = |x: f32| (x.clamp(0.0, 1.0) * 255.0).round() as u8;
-        let mut texels = Vec::with_capacity(w * h);
-        unpack_each(self.unpack_store(), (w as GLsizei, h as GLsizei), format, type_, bytes, |c| {
-            let c = match format {
-                GL_COLOR_INDEX => self.index_to_rgba(c[0]),
-                _ => transfer.as_ref().map_or(c, |t| t.apply(c)),
-            };
-            texels.push(c.map(byte));
-        })?;
+        let store = self.unpack_store();
+        let (stride, skipped) = if dims == 3 {
+            (image_stride(store, (w, h), format, type_).unwrap_or(0), store.skip_images)
+        } else {
+            (0, 0)
+        };
+        let mut texels = Vec::with_capacity(w * h * d);
+        for k in 0..d {
+            let image = bytes.get((skipped + k) * stride..)?;
+            unpack_each(store, (w as GLsizei, h as GLsizei), format, type_, image, |c| {
+                let c = match format {
+                    GL_COLOR_INDEX => self.index_to_rgba(c[0]),
+                    _ => transfer.as_ref().map_or(c, |t| t.apply(c)),
+                };
+                texels.push(c.map(byte));
+            })?;
+        }
         Some(texels)
     }
 }

@@ -10,7 +10,7 @@ use super::super::types::*;
 use super::super::variants::GlComponent;
 use super::super::Gl;
 use super::TextureCall;
-use super::{proxy_index, target_index, TextureObject, MAX_TEXTURE_SIZE};
+use super::{max_level, proxy_index, target_index, TextureObject};
 
 /// A texture object's parameters beyond [`super::TexParams`], and each level's internal format
 /// as the program gave it and its border (what `GL_TEXTURE_INTERNAL_FORMAT` and
@@ -244,10 +244,10 @@ impl Gl {
         self.room_for(values, room)
     }
 
-    /// `glGetTexLevelParameterfv`: `GL_TEXTURE_WIDTH`, `_HEIGHT`, `_BORDER`,
-    /// `_INTERNAL_FORMAT` (`GL_TEXTURE_COMPONENTS`), and the component sizes of `level` of the
-    /// bound 1D or 2D texture, or of a proxy (`GL_PROXY_TEXTURE_1D`, `_2D`); a level never defined answers 0 (its internal format `GL_RGBA`,
-    /// as Mesa).
+    /// `glGetTexLevelParameterfv`: `GL_TEXTURE_WIDTH`, `_HEIGHT`, `_DEPTH` (GL 1.2),
+    /// `_BORDER`, `_INTERNAL_FORMAT` (`GL_TEXTURE_COMPONENTS`), and the component sizes of
+    /// `level` of the bound 1D, 2D or 3D texture, or of a proxy (`GL_PROXY_TEXTURE_1D`, `_2D`,
+    /// `_3D`); a level never defined answers 0 (its internal format `GL_RGBA`, as Mesa).
     /// Errors in Mesa's order: target (`GL_INVALID_ENUM`), level outside 0..=log2 of the
     /// largest size (`GL_INVALID_VALUE`), name (`GL_INVALID_ENUM`).
     pub fn get_tex_level_parameterfv(&mut self, target: GLenum, level: GLint, pname: GLenum, params: &mut [GLfloat]) {
@@ -267,15 +267,15 @@ impl Gl {
         if self.reject_inside_begin_end() {
             return None;
         }
-        let object: &TextureObject = match (target_index(target), proxy_index(target)) {
-            (Some(t), _) => self.bound_object(t as u8 + 1),
-            (_, Some(p)) => &self.server.textures.proxies[p],
+        let (object, dims): (&TextureObject, u8) = match (target_index(target), proxy_index(target)) {
+            (Some(t), _) => (self.bound_object(t as u8 + 1), t as u8 + 1),
+            (_, Some(p)) => (&self.server.textures.proxies[p], p as u8 + 1),
             _ => {
                 self.set_error(GL_INVALID_ENUM);
                 return None;
             }
         };
-        if !(0..=MAX_TEXTURE_SIZE.ilog2() as GLint).contains(&level) {
+        if !(0..=max_level(dims)).contains(&level) {
             self.set_error(GL_INVALID_VALUE);
             return None;
         }
@@ -289,6 +289,7 @@ impl Gl {
         let value = match pname {
             GL_TEXTURE_WIDTH => defined.map_or(0, |d| d.width as GLint),
             GL_TEXTURE_HEIGHT => defined.map_or(0, |d| d.height as GLint),
+            GL_TEXTURE_DEPTH => defined.map_or(0, |d| d.depth as GLint),
             GL_TEXTURE_BORDER => border,
             GL_TEXTURE_INTERNAL_FORMAT => internal,
             GL_TEXTURE_RED_SIZE => sizes[0],
@@ -341,12 +342,18 @@ impl Gl {
     }
 
     /// Bytes `glGetTexImage` writes for `level` of `target` in `format` and `type_` under the
-    /// pack modes; `None` where it writes nothing (a bad argument, an undefined level).
+    /// pack modes (a 3D level's images one after the other, GL 1.2 §6.1.4, after the skipped
+    /// ones); `None` where it writes nothing (a bad argument, an undefined level).
     #[must_use]
     pub fn tex_image_len(&self, target: GLenum, level: GLint, format: GLenum, type_: GLenum) -> Option<usize> {
         let t = target_index(target)?;
         let l = self.bound_object(t as u8 + 1).levels.get(usize::try_from(level).ok()?)?.as_ref()?;
-        self.packed_image_len(l.width as GLsizei, l.height as GLsizei, format, type_)
+        let image = self.packed_image_len(l.width as GLsizei, l.height as GLsizei, format, type_)?;
+        if t < 2 || image == 0 {
+            return Some(image);
+        }
+        let (stride, skipped) = self.packed_image_stride((l.width as usize, l.height as usize), format, type_)?;
+        Some((skipped + l.depth as usize - 1) * stride + image)
     }
 
     /// `glGetTexImage(target, level, format, type, pixels)`: the level's texels converted to
@@ -361,7 +368,7 @@ impl Gl {
             return;
         }
         let Some(t) = target_index(target) else { return self.set_error(GL_INVALID_ENUM) };
-        if !(0..=MAX_TEXTURE_SIZE.ilog2() as GLint).contains(&level) {
+        if !(0..=max_level(t as u8 + 1)).contains(&level) {
             return self.set_error(GL_INVALID_VALUE);
         }
         if let Some(error) = super::super::pixel_pack::read_format_error(format, type_) {
@@ -386,6 +393,11 @@ impl Gl {
             .map(|[r, g, b, a]| if luminance { [r, 0.0, 0.0, a] } else { [r, g, b, a] })
             .collect();
         let (w, h) = (l.width as usize, l.height as usize);
-        self.pack_rgba(&rgba, (w, h), (format, type_), pixels);
+        // Below 3D the image modes do nothing.
+        let images = if t == 2 { self.packed_image_stride((w, h), format, type_) } else { None };
+        let (stride, skipped) = images.unwrap_or((0, 0));
+        for (k, image) in rgba.chunks_exact((w * h).max(1)).enumerate() {
+            self.pack_rgba(image, (w, h), (format, type_), &mut pixels[(skipped + k) * stride..]);
+        }
     }
 }

@@ -72,29 +72,31 @@ impl<'a> Program<'a> {
     }
 }
 
-/// The texel for (s, t, r, q): s/q and t/q, clamped to [0, 1] under `GL_CLAMP`, filtered, and
-/// with a linear filter at a `GL_CLAMP` edge the share falling on the border given the border
-/// colour, as `inside_border` does in `fragment.wgsl`.
+/// The texel for (s, t, r, q): s/q, t/q (and r/q for a 3D texture), clamped to [0, 1] under
+/// `GL_CLAMP`, filtered, and with a linear filter at a `GL_CLAMP` edge the share falling on the
+/// border given the border colour, as `inside_border` does in `fragment.wgsl`.
 fn texel(texture: &BoundTexture, sampler: &Sampler<'_>, tex: [f32; 4], slope: &TexSlope) -> [f32; 4] {
     let project = |t: [f32; 4]| {
         let q = if t[3] != 0.0 { t[3] } else { 1.0 };
-        [t[0] / q, t[1] / q]
+        [t[0] / q, t[1] / q, t[2] / q]
     };
-    let st = project(tex);
+    let str = project(tex);
     let at = |d: [f32; 4]| {
         let moved = project(std::array::from_fn(|k| tex[k] + d[k]));
-        [moved[0] - st[0], moved[1] - st[1]]
+        std::array::from_fn(|k| moved[k] - str[k])
     };
     let (dx, dy) = (at(slope.dx), at(slope.dy));
     let params = &texture.params;
-    let clamp_s = params.wrap_s == GL_CLAMP;
-    let clamp_t = params.wrap_t == GL_CLAMP && !texture.one_d;
-    let coord =
-        [if clamp_s { st[0].clamp(0.0, 1.0) } else { st[0] }, if clamp_t { st[1].clamp(0.0, 1.0) } else { st[1] }];
+    let clamped = [
+        params.wrap_s == GL_CLAMP,
+        params.wrap_t == GL_CLAMP && texture.dims > 1,
+        params.wrap_r == GL_CLAMP && texture.dims == 3,
+    ];
+    let coord: [f32; 3] = std::array::from_fn(|k| if clamped[k] { str[k].clamp(0.0, 1.0) } else { str[k] });
     let sample = sampler.sample(coord, dx, dy);
     let linear = params.mag_filter == GL_LINEAR
         && matches!(params.min_filter, GL_LINEAR | GL_LINEAR_MIPMAP_NEAREST | GL_LINEAR_MIPMAP_LINEAR);
-    if !linear || !(clamp_s || clamp_t) {
+    if !linear || !clamped.contains(&true) {
         return sample;
     }
     let base = &texture.levels[0];
@@ -106,7 +108,11 @@ fn texel(texture: &BoundTexture, sampler: &Sampler<'_>, tex: [f32; 4], slope: &T
             1.0
         }
     };
-    let share = inside(coord[0], base.width, clamp_s) * inside(coord[1], base.height, clamp_t);
+    let share = [base.width, base.height, base.depth]
+        .into_iter()
+        .enumerate()
+        .map(|(k, size)| inside(coord[k], size, clamped[k]))
+        .product::<f32>();
     std::array::from_fn(|k| texture.border_color[k] + (sample[k] - texture.border_color[k]) * share)
 }
 

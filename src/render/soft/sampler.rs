@@ -1,5 +1,5 @@
 //! Texture sampling for the CPU rasteriser: GL's filters, wrap modes and mipmap selection
-//! (GL 1.1 spec §3.8.5–3.8.8, with GL 1.2's LOD clamp; the levels from the base level on are
+//! (GL 1.1 spec §3.8.5–3.8.8, with GL 1.2's LOD clamp and 3D textures; the levels from the base level on are
 //! the bound texture's) as the wgpu sampler of `gpu/textures.rs` does them, so both
 //! rasterisers read the same texels. `GL_CLAMP` clamps to the edge here; the fragment stage
 //! clamps the coordinate and weighs in the border (`fragment.rs`), as `fragment.wgsl` does.
@@ -18,29 +18,33 @@ impl<'a> Sampler<'a> {
         Self { texture }
     }
 
-    /// The filtered texel at `st` (normalised), given the change of `st` one pixel right
-    /// (`dx`) and one pixel down (`dy`), which choose between magnification and minification
-    /// and the mipmap level (the scale factor ρ of §3.8.5).
-    pub fn sample(&self, st: [f32; 2], dx: [f32; 2], dy: [f32; 2]) -> [f32; 4] {
+    /// The filtered texel at `str` (normalised; r is read for a 3D texture only), given the
+    /// change of the coordinates one pixel right (`dx`) and one pixel down (`dy`), which choose
+    /// between magnification and minification and the mipmap level (the scale factor ρ of
+    /// §3.8.5, GL 1.2 eq. 3.13 with r for a 3D texture).
+    pub fn sample(&self, str: [f32; 3], dx: [f32; 3], dy: [f32; 3]) -> [f32; 4] {
         let params = &self.texture.params;
         let levels = &self.texture.levels;
         let base = &levels[0];
+        // A depth factor of 0 below 3D: hypot(x, 0) is |x| exactly, so 1D and 2D are as before.
+        let d = if self.texture.dims == 3 { base.depth as f32 } else { 0.0 };
         let (w, h) = (base.width as f32, base.height as f32);
-        let rho = (dx[0] * w).hypot(dx[1] * h).max((dy[0] * w).hypot(dy[1] * h));
+        let scale = |v: [f32; 3]| (v[0] * w).hypot(v[1] * h).hypot(v[2] * d);
+        let rho = scale(dx).max(scale(dy));
         // GL 1.2's LOD clamp decides between magnification and minification too (eq. 3.15).
         let lambda = params.lod.clamp(rho.log2());
         // Magnification, also where ρ is 0 or not a number (λ is −∞ or NaN).
         if lambda.is_nan() || lambda <= 0.0 {
-            return self.filter(base, params.mag_filter, st);
+            return self.filter(base, params.mag_filter, str);
         }
         let last = (levels.len() - 1) as f32;
         let lambda = lambda.min(last);
         match params.min_filter {
-            GL_NEAREST | GL_LINEAR => self.filter(base, params.min_filter, st),
+            GL_NEAREST | GL_LINEAR => self.filter(base, params.min_filter, str),
             GL_NEAREST_MIPMAP_NEAREST | GL_LINEAR_MIPMAP_NEAREST => {
                 // The nearest level, halves rounding down (Vulkan's ⌈λ + ½⌉ − 1).
                 let d = ((lambda + 0.5).ceil() - 1.0).max(0.0) as usize;
-                self.filter(&levels[d], level_filter(params.min_filter), st)
+                self.filter(&levels[d], level_filter(params.min_filter), str)
             }
             _ => {
                 let d = lambda.floor();
@@ -48,34 +52,47 @@ impl<'a> Sampler<'a> {
                 let upper = (lower + 1).min(levels.len() - 1);
                 let f = lambda - d;
                 let filter = level_filter(params.min_filter);
-                let (a, b) = (self.filter(&levels[lower], filter, st), self.filter(&levels[upper], filter, st));
+                let (a, b) = (self.filter(&levels[lower], filter, str), self.filter(&levels[upper], filter, str));
                 std::array::from_fn(|k| a[k] + (b[k] - a[k]) * f)
             }
         }
     }
 
-    /// Nearest or linear filtering within one level.
-    fn filter(&self, level: &TexLevel, filter: GLenum, [s, t]: [f32; 2]) -> [f32; 4] {
-        let (w, h) = (level.width as i64, level.height as i64);
-        let wrap_t = if self.texture.one_d { GL_REPEAT } else { self.texture.params.wrap_t };
-        let (wrap_s, wrap_t) = (self.texture.params.wrap_s, wrap_t);
-        let texel = |i: i64, j: i64| {
+    /// Nearest or linear filtering within one level: bilinear within an image, and for a 3D
+    /// texture linear between the two nearest images too (GL 1.2 eq. 3.17).
+    fn filter(&self, level: &TexLevel, filter: GLenum, [s, t, r]: [f32; 3]) -> [f32; 4] {
+        let (w, h, d) = (level.width as i64, level.height as i64, level.depth as i64);
+        let params = &self.texture.params;
+        let wrap_t = if self.texture.dims == 1 { GL_REPEAT } else { params.wrap_t };
+        let (wrap_s, wrap_r) = (params.wrap_s, params.wrap_r);
+        let solid = self.texture.dims == 3;
+        let texel = |i: i64, j: i64, k: i64| {
             let (i, j) = (wrap(i, w, wrap_s), wrap(j, h, wrap_t));
-            level.texels[(j * w + i) as usize].map(|c| f32::from(c) / 255.0)
+            let k = if solid { wrap(k, d, wrap_r) } else { 0 };
+            level.texels[((k * h + j) * w + i) as usize].map(|c| f32::from(c) / 255.0)
         };
-        let (u, v) = (s * w as f32, t * h as f32);
+        let (u, v, x) = (s * w as f32, t * h as f32, r * d as f32);
         if filter == GL_NEAREST {
-            return texel(floor(u), floor(v));
+            return texel(floor(u), floor(v), floor(x));
         }
         let (u, v) = (u - 0.5, v - 0.5);
         let (i, j) = (floor(u), floor(v));
         let (a, b) = (u - u.floor(), v - v.floor());
-        let (t00, t10, t01, t11) = (texel(i, j), texel(i + 1, j), texel(i, j + 1), texel(i + 1, j + 1));
-        std::array::from_fn(|k| {
-            let top = t00[k] + (t10[k] - t00[k]) * a;
-            let bottom = t01[k] + (t11[k] - t01[k]) * a;
-            top + (bottom - top) * b
-        })
+        let bilinear = |k: i64| -> [f32; 4] {
+            let (t00, t10, t01, t11) = (texel(i, j, k), texel(i + 1, j, k), texel(i, j + 1, k), texel(i + 1, j + 1, k));
+            std::array::from_fn(|c| {
+                let top = t00[c] + (t10[c] - t00[c]) * a;
+                let bottom = t01[c] + (t11[c] - t01[c]) * a;
+                top + (bottom - top) * b
+            })
+        };
+        if !solid {
+            return bilinear(0);
+        }
+        let x = x - 0.5;
+        let (k, c) = (floor(x), x - x.floor());
+        let (front, back) = (bilinear(k), bilinear(k + 1));
+        std::array::from_fn(|n| front[n] + (back[n] - front[n]) * c)
     }
 }
 

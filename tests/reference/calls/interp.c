@@ -580,6 +580,24 @@ static void run_call(const char *c)
         if (sub) glTexSubImage2D(target, level, a, b, w, h, format, type, data);
         else glTexImage2D(target, level, a, b, w, h, format, type, data);
         free(f);
+    } else if (!strcmp(c, "tex_image_3d") || !strcmp(c, "tex_sub_image_3d")) {
+        /* as tex_image_2d, with a depth: tex_image_3d T LEVEL INTERNAL W H D BORDER FORMAT TYPE
+         * [..]; tex_sub_image_3d T LEVEL X Y Z W H D FORMAT TYPE [..] */
+        int sub = c[4] == 's';
+        GLenum target = arg_enum();
+        GLint level = arg_int(), internal = 0, border = 0, xyz[3] = { 0, 0, 0 };
+        if (sub) for (int k = 0; k < 3; k++) xyz[k] = arg_int();
+        else internal = (GLint)arg_enum();
+        GLint w = arg_int(), h = arg_int(), d = arg_int();
+        if (!sub) border = arg_int();
+        GLenum format = arg_enum(), type = arg_enum();
+        float *f = arg_array(0, 0, &given);
+        GLubyte bytes[MAX_TOK];
+        for (long i = 0; i < given; i++) bytes[i] = (GLubyte)f[i];
+        const GLvoid *data = f ? (type == GL_FLOAT ? (const GLvoid *)f : (const GLvoid *)bytes) : NULL;
+        if (sub) glTexSubImage3D(target, level, xyz[0], xyz[1], xyz[2], w, h, d, format, type, data);
+        else glTexImage3D(target, level, internal, w, h, d, border, format, type, data);
+        free(f);
     } else if (!strcmp(c, "tex_parameteri")) {
         GLenum target = arg_enum(), pname = arg_enum();
         glTexParameteri(target, pname, (GLint)arg_enum());

@@ -71,6 +71,11 @@ static int run_pixel_call(const char *c)
         GLenum t = arg_enum(); GLint level = arg_int(); GLint xo = arg_int(), yo = arg_int();
         GLint x = arg_int(), y = arg_int(); GLsizei w = arg_int();
         glCopyTexSubImage2D(t, level, xo, yo, x, y, w, arg_int());
+    } else if (!strcmp(c, "copy_tex_sub_image_3d")) {
+        GLenum t = arg_enum(); GLint level = arg_int();
+        GLint xo = arg_int(), yo = arg_int(), zo = arg_int();
+        GLint x = arg_int(), y = arg_int(); GLsizei w = arg_int();
+        glCopyTexSubImage3D(t, level, xo, yo, zo, x, y, w, arg_int());
     } else if (!strcmp(c, "copy_tex_sub_image_1d")) {
         GLenum t = arg_enum(); GLint level = arg_int(); GLint xo = arg_int();
         GLint x = arg_int(), y = arg_int();
