@@ -32,15 +32,45 @@ impl<T> Fallback for *mut T {
 }
 
 /// Runs an entry point's body; a panic becomes `GL_OUT_OF_MEMORY` and the fallback value.
+/// With `GLEVAL_DEBUG` set, a GL error the call raised is named on stderr with the call, as
+/// `MESA_DEBUG` has Mesa do (only the outermost entry point of a nested call reports).
 pub fn guard<R: Fallback>(name: &str, body: impl FnOnce() -> R) -> R {
-    match catch_unwind(AssertUnwindSafe(body)) {
+    let traced = debug_errors() && DEPTH.with(|d| d.replace(d.get() + 1)) == 0;
+    let before = if traced { pending_error() } else { 0 };
+    let value = match catch_unwind(AssertUnwindSafe(body)) {
         Ok(value) => value,
         Err(_) => {
             eprintln!("gleval: {name} failed inside the library (a bug): GL_OUT_OF_MEMORY is set");
             crate::context::out_of_memory();
             R::fallback()
         }
+    };
+    if debug_errors() {
+        DEPTH.with(|d| d.set(d.get().saturating_sub(1)));
     }
+    if traced && before == 0 {
+        let after = pending_error();
+        if after != 0 {
+            eprintln!("gleval: {name}: {}", gleval::gl::error_name(after));
+        }
+    }
+    value
+}
+
+thread_local! {
+    /// How many entry points are running on this thread (one calling another: the EXT names).
+    static DEPTH: std::cell::Cell<u32> = const { std::cell::Cell::new(0) };
+}
+
+/// Whether `GLEVAL_DEBUG` is set (read once).
+fn debug_errors() -> bool {
+    static DEBUG: std::sync::OnceLock<bool> = std::sync::OnceLock::new();
+    *DEBUG.get_or_init(|| std::env::var_os("GLEVAL_DEBUG").is_some_and(|v| !v.is_empty()))
+}
+
+/// The current context's error flag, left as it is (0 without a context).
+fn pending_error() -> u32 {
+    crate::context::with_gl(|gl| gl.pending_error())
 }
 
 /// An `extern "C"` entry point: `#[no_mangle]`, its body under [`guard`]. The `unsafe fn`

@@ -54,3 +54,24 @@ $cc -o "$work/events" "$ref/Events.c"
 "$work/events" --png "$work/e.png" > "$work/events.log"
 tail -2 "$work/events.log" | tr '\n' ' ' | grep -q '^close 1 0 returned 0 0 $'
 echo "glut: Events.c closes its window and returns from glutMainLoop headless"
+
+# GLEVAL_DEBUG names each GL error on stderr with the call that raised it, once for a call
+# that calls another (glTexImage3DEXT), as MESA_DEBUG has Mesa do; without it, nothing.
+cat > "$work/debug.c" <<'END'
+#include <GL/glut.h>
+int main(int argc, char **argv) {
+    glutInit(&argc, argv);
+    glutCreateWindow("debug");
+    glEnable(0x1234);
+    glGetError();
+    glTexImage3DEXT(GL_TEXTURE_2D, 0, GL_RGB, 1, 1, 1, 0, GL_RGB, GL_UNSIGNED_BYTE, 0);
+    glTexImage3DEXT(GL_TEXTURE_3D, 0, GL_RGB, 1, 1, 1, 0, GL_RGB, GL_UNSIGNED_BYTE, 0);
+    return glGetError() != GL_INVALID_ENUM;
+}
+END
+$cc -o "$work/debug" "$work/debug.c"
+GLEVAL_DEBUG=1 "$work/debug" 2> "$work/debug.log"
+printf 'gleval: glEnable: GL_INVALID_ENUM\ngleval: glTexImage3DEXT: GL_INVALID_ENUM\n' | diff - "$work/debug.log"
+"$work/debug" 2> "$work/quiet.log"
+[ ! -s "$work/quiet.log" ]
+echo "glut: GLEVAL_DEBUG names each error and its call"

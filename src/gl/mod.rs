@@ -123,13 +123,28 @@ impl Tessellator {
     }
 }
 
+/// The name of a GL error code (`GL_INVALID_ENUM` ...), "an unknown error" for anything else.
+#[must_use]
+pub fn error_name(code: GLenum) -> &'static str {
+    match code {
+        GL_NO_ERROR => "GL_NO_ERROR",
+        GL_INVALID_ENUM => "GL_INVALID_ENUM",
+        GL_INVALID_VALUE => "GL_INVALID_VALUE",
+        GL_INVALID_OPERATION => "GL_INVALID_OPERATION",
+        GL_STACK_OVERFLOW => "GL_STACK_OVERFLOW",
+        GL_STACK_UNDERFLOW => "GL_STACK_UNDERFLOW",
+        GL_OUT_OF_MEMORY => "GL_OUT_OF_MEMORY",
+        _ => "an unknown error",
+    }
+}
+
 /// What gleval implements beyond GL 1.1, each extension once it is whole, and nothing more:
 /// `glWindowPos` (`raster_pos.rs`), blending's constant colour, equations and separate factors
 /// (`blend.rs`), `glDrawRangeElements` and the multi-draws (`array_draws.rs`), the wrapping
 /// stencil operations (`stencil.rs`), `GL_RESCALE_NORMAL` (`frame.rs`), `GL_CLAMP_TO_EDGE`
-/// and the texture level and LOD range (`texture/params.rs`).
+/// and the texture level and LOD range (`texture/params.rs`), 3D textures (`texture/image.rs`).
 const EXTENSIONS: &str =
-    "GL_ARB_window_pos GL_EXT_blend_color GL_EXT_blend_equation_separate GL_EXT_blend_func_separate GL_EXT_blend_minmax GL_EXT_blend_subtract GL_EXT_draw_range_elements GL_EXT_multi_draw_arrays GL_EXT_rescale_normal GL_EXT_stencil_wrap GL_EXT_texture_edge_clamp GL_NV_blend_square GL_SGIS_texture_edge_clamp GL_SGIS_texture_lod";
+    "GL_ARB_window_pos GL_EXT_blend_color GL_EXT_blend_equation_separate GL_EXT_blend_func_separate GL_EXT_blend_minmax GL_EXT_blend_subtract GL_EXT_draw_range_elements GL_EXT_multi_draw_arrays GL_EXT_rescale_normal GL_EXT_stencil_wrap GL_EXT_texture3D GL_EXT_texture_edge_clamp GL_NV_blend_square GL_SGIS_texture_edge_clamp GL_SGIS_texture_lod";
 
 /// A GL context without a GPU: GL state plus the recording of what is drawn.
 ///
@@ -497,6 +512,13 @@ impl Gl {
     }
 
     /// Records `code` unless an earlier error is still pending (GL's sticky flag; Mesa's `_mesa_error`).
+    /// The error flag as it stands, without clearing it (the C library's `GLEVAL_DEBUG`
+    /// names each error a call raised).
+    #[must_use]
+    pub fn pending_error(&self) -> GLenum {
+        self.error
+    }
+
     pub(crate) fn set_error(&mut self, code: GLenum) {
         if self.error == GL_NO_ERROR {
             self.error = code;
@@ -541,6 +563,7 @@ mod tests {
             "GL_EXT_multi_draw_arrays",
             "GL_EXT_rescale_normal",
             "GL_EXT_stencil_wrap",
+            "GL_EXT_texture3D",
             "GL_EXT_texture_edge_clamp",
             "GL_NV_blend_square",
             "GL_SGIS_texture_edge_clamp",
