@@ -6,7 +6,7 @@
 // bindings it reads, `tex_image`, `tex_image_3d`, `tex_sampler` and `env` (a `Fragment`).
 
 struct Fragment {
-    // 0 no texture, 1 MODULATE, 2 DECAL, 3 BLEND, 4 REPLACE, 5 ADD.
+    // 0 no texture, 1 MODULATE, 2 DECAL, 3 BLEND, 4 REPLACE, 5 ADD, 6 COMBINE.
     mode: u32,
     // The base internal format: 0 ALPHA, 1 LUMINANCE, 2 LUMINANCE_ALPHA, 3 RGB, 4 RGBA,
     // 5 INTENSITY.
@@ -42,6 +42,13 @@ struct Fragment {
     stipple_rows: array<vec4<u32>, 8>,
     // GL_TEXTURE_BORDER_COLOR, clamped to [0, 1].
     border_color: vec4<f32>,
+    // GL 1.3's combiner (mode 6, GL_COMBINE), its RGB and alpha halves: x the function (1
+    // REPLACE, 2 MODULATE, 3 ADD, 4 ADD_SIGNED, 5 INTERPOLATE, 6 SUBTRACT, 7 DOT3_RGB, 8
+    // DOT3_RGBA), y the three sources four bits each (0 the texture, 1 the constant, 2 the
+    // primary colour, 3 zero), z the three operands likewise (0 SRC_COLOR, 1
+    // ONE_MINUS_SRC_COLOR, 2 SRC_ALPHA, 3 ONE_MINUS_SRC_ALPHA), w the scale.
+    combine_rgb: vec4<u32>,
+    combine_alpha: vec4<u32>,
 };
 
 // The fragment's colour after texturing, the colour sum and fog: `secondary` the secondary
@@ -122,8 +129,12 @@ fn alpha_passes(a: f32) -> bool {
     }
 }
 
-// GL's texture functions: Cf, Af the fragment's colour; Ct, At the texture's by base format.
+// GL's texture functions: Cf, Af the fragment's colour; Ct, At the texture's by base format;
+// GL 1.3's combiner for COMBINE.
 fn apply_env(cf: vec4<f32>, texel: vec4<f32>) -> vec4<f32> {
+    if env.mode == 6u {
+        return combine(cf, texture_source(texel));
+    }
     let has_rgb = env.format != 0u;
     let intensity = env.format == 5u;
     let has_alpha = env.format == 0u || env.format == 2u || env.format == 4u || intensity;
@@ -155,5 +166,68 @@ fn apply_env(cf: vec4<f32>, texel: vec4<f32>) -> vec4<f32> {
             if has_alpha { a = select(cf.a * at, min(cf.a + at, 1.0), intensity); }
         }
     }
+    return vec4<f32>(c, a);
+}
+
+// The texel as a combiner source by base format (GL 1.3 table 3.15), as `texture_source` in
+// gl/texture/combine.rs.
+fn texture_source(t: vec4<f32>) -> vec4<f32> {
+    switch env.format {
+        case 0u: { return vec4<f32>(vec3<f32>(0.0), t.a); }
+        case 1u: { return vec4<f32>(vec3<f32>(t.r), 1.0); }
+        case 2u: { return vec4<f32>(vec3<f32>(t.r), t.a); }
+        case 3u: { return vec4<f32>(t.rgb, 1.0); }
+        case 5u: { return vec4<f32>(t.r); }
+        default: { return t; }
+    }
+}
+
+// Combiner argument k of a half: its source through its operand.
+fn combine_argument(half: vec4<u32>, k: u32, cf: vec4<f32>, texel: vec4<f32>) -> vec4<f32> {
+    var c: vec4<f32>;
+    switch (half.y >> (4u * k)) & 15u {
+        case 0u: { c = texel; }
+        case 1u: { c = env.color; }
+        case 2u: { c = cf; }
+        default: { c = vec4<f32>(0.0); }
+    }
+    switch (half.z >> (4u * k)) & 15u {
+        case 0u: { return c; }
+        case 1u: { return 1.0 - c; }
+        case 2u: { return vec4<f32>(c.a); }
+        default: { return vec4<f32>(1.0 - c.a); }
+    }
+}
+
+// A combiner function (GL 1.3 table 3.19) of three arguments, componentwise.
+fn combine_function(f: u32, a0: vec4<f32>, a1: vec4<f32>, a2: vec4<f32>) -> vec4<f32> {
+    switch f {
+        case 1u: { return a0; }
+        case 2u: { return a0 * a1; }
+        case 3u: { return a0 + a1; }
+        case 4u: { return a0 + a1 - 0.5; }
+        case 5u: { return a0 * a2 + a1 * (1.0 - a2); }
+        default: { return a0 - a1; }
+    }
+}
+
+// GL 1.3's combiner (§3.8.13), as `Combine::apply`: PREVIOUS is the primary colour on unit 0.
+fn combine(cf: vec4<f32>, texel: vec4<f32>) -> vec4<f32> {
+    let rgb = env.combine_rgb;
+    let alpha = env.combine_alpha;
+    let r0 = combine_argument(rgb, 0u, cf, texel);
+    let r1 = combine_argument(rgb, 1u, cf, texel);
+    let r2 = combine_argument(rgb, 2u, cf, texel);
+    let a0 = combine_argument(alpha, 0u, cf, texel).a;
+    let a1 = combine_argument(alpha, 1u, cf, texel).a;
+    let a2 = combine_argument(alpha, 2u, cf, texel).a;
+    let a = clamp(combine_function(alpha.x, vec4<f32>(a0), vec4<f32>(a1), vec4<f32>(a2)).a * f32(alpha.w), 0.0, 1.0);
+    if rgb.x >= 7u {
+        // DOT3_RGBA's alpha is the dot product under the alpha scale, as Mesa's.
+        let d = 4.0 * dot(r0.rgb - 0.5, r1.rgb - 0.5);
+        let dot_alpha = clamp(d * f32(alpha.w), 0.0, 1.0);
+        return vec4<f32>(vec3<f32>(clamp(d * f32(rgb.w), 0.0, 1.0)), select(a, dot_alpha, rgb.x == 8u));
+    }
+    let c = clamp(combine_function(rgb.x, r0, r1, r2).rgb * f32(rgb.w), vec3<f32>(0.0), vec3<f32>(1.0));
     return vec4<f32>(c, a);
 }

@@ -83,7 +83,7 @@ pub use lists::MAX_LIST_NESTING;
 pub use offset::PolygonOffset;
 pub use pixel_transfer::{ColorTransfer, DepthTransfer, MAX_PIXEL_MAP_TABLE};
 pub use select::SelectHit;
-pub use texture::{BoundTexture, TexLevel, TexParams, MAX_TEXTURE_SIZE};
+pub use texture::{texture_source, BoundTexture, Combine, Combiner, TexLevel, TexParams, MAX_TEXTURE_SIZE};
 pub use texture::{TexGen, TexGenCoord, TexGenState};
 pub use variants::GlComponent;
 pub use vertex::Vertex;

@@ -20,11 +20,13 @@ use super::pixels::PixelStore;
 use super::state_var::{int_limit, put_enum, row, Kind, StateVar};
 use super::types::*;
 use super::Gl;
+pub use combine::{texture_source, Combine, Combiner};
 pub use gen::{TexGen, TexGenCoord, TexGenState};
 use glam::Mat4;
 use std::collections::HashMap;
 use std::sync::Arc;
 
+mod combine;
 mod gen;
 mod image;
 mod params;
@@ -171,7 +173,7 @@ impl TexParams {
 #[derive(Clone, Debug)]
 pub(crate) struct TextureAttrib {
     bound: [GLuint; 3],
-    env: (GLenum, [f32; 4]),
+    env: (GLenum, [f32; 4], Combine),
     tex_gen: TexGen,
     objects: [ObjectSampling; 3],
     defaults: [ObjectSampling; 3],
@@ -193,8 +195,11 @@ pub struct BoundTexture {
     pub base_format: GLenum,
     /// Filters and wrap modes.
     pub params: TexParams,
-    /// `GL_TEXTURE_ENV_MODE`: `GL_MODULATE`, `GL_DECAL`, `GL_BLEND`, `GL_REPLACE` or `GL_ADD`.
+    /// `GL_TEXTURE_ENV_MODE`: `GL_MODULATE`, `GL_DECAL`, `GL_BLEND`, `GL_REPLACE`, `GL_ADD` or
+    /// `GL_COMBINE`.
     pub env_mode: GLenum,
+    /// The combiner `GL_COMBINE` applies.
+    pub combine: Combine,
     /// `GL_TEXTURE_ENV_COLOR`, for `GL_BLEND`.
     pub env_color: [f32; 4],
     /// `GL_TEXTURE_BORDER_COLOR`, clamped to [0, 1]: what a linear filter at a `GL_CLAMP` edge
@@ -219,6 +224,7 @@ impl BoundTexture {
             base_format: GL_RGBA,
             params: TexParams { min_filter: GL_NEAREST, ..TexParams::default() },
             env_mode: GL_REPLACE,
+            combine: Combine::default(),
             env_color: [0.0; 4],
             border_color: [0.0; 4],
             matrix: Mat4::IDENTITY,
@@ -234,6 +240,7 @@ impl PartialEq for BoundTexture {
             && self.base_format == other.base_format
             && self.params == other.params
             && self.env_mode == other.env_mode
+            && self.combine == other.combine
             && self.env_color == other.env_color
             && self.border_color == other.border_color
             && self.matrix == other.matrix
@@ -315,6 +322,7 @@ pub(crate) struct Textures {
     bound: [GLuint; 3],
     env_mode: GLenum,
     env_color: [f32; 4],
+    combine: Combine,
     max_name: GLuint,
 }
 
@@ -328,6 +336,7 @@ impl Default for Textures {
             bound: [0; 3],
             env_mode: GL_MODULATE,
             env_color: [0.0; 4],
+            combine: Combine::default(),
             max_name: 0,
         }
     }
@@ -583,7 +592,8 @@ impl Gl {
         };
         let matrix = self.server.matrices.texture();
         let generate = self.tex_gen_state();
-        let (env_mode, env_color) = (self.server.textures.env_mode, self.server.textures.env_color);
+        let (env_mode, env_color, combine) =
+            (self.server.textures.env_mode, self.server.textures.env_color, self.server.textures.combine);
         let object = self.bound_object_mut(dims);
         if object.complete.is_none() {
             // A new chain (an image, the levels or the filter changed): a new key, so that a
@@ -598,6 +608,7 @@ impl Gl {
             base_format: object.formats[object.params.base_level as usize],
             params: object.params,
             env_mode,
+            combine,
             env_color,
             border_color: object.extra.sampling().0.map(|c| c.clamp(0.0, 1.0)),
             matrix,
@@ -613,7 +624,7 @@ impl Gl {
         let textures = &self.server.textures;
         TextureAttrib {
             bound: textures.bound,
-            env: (textures.env_mode, textures.env_color),
+            env: (textures.env_mode, textures.env_color, textures.combine),
             tex_gen: self.server.tex_gen,
             objects: [1, 2, 3].map(|dims| sampling(self.bound_object(dims))),
             defaults: textures.defaults.each_ref().map(sampling),
@@ -636,7 +647,8 @@ impl Gl {
         for (dims, sampling) in [1, 2, 3].into_iter().zip(saved.objects) {
             restore(self.bound_object_mut(dims), sampling);
         }
-        (self.server.textures.env_mode, self.server.textures.env_color) = saved.env;
+        let textures = &mut self.server.textures;
+        (textures.env_mode, textures.env_color, textures.combine) = saved.env;
         self.touch_state();
     }
 

@@ -196,6 +196,10 @@ pub(crate) struct GpuFragment {
     pub stipple_rows: [[u32; 4]; 8],
     /// `GL_TEXTURE_BORDER_COLOR`, which a linear filter at a `GL_CLAMP` edge mixes in.
     pub border_color: [f32; 4],
+    /// GL 1.3's combiner, RGB half: function, sources, operands, scale (see `fragment.wgsl`).
+    pub combine_rgb: [u32; 4],
+    /// The combiner's alpha half.
+    pub combine_alpha: [u32; 4],
 }
 
 #[cfg(test)]
@@ -297,7 +301,9 @@ mod tests {
                 clamp_r,
                 pad3,
                 stipple_rows,
-                border_color
+                border_color,
+                combine_rgb,
+                combine_alpha
             }
         );
     }

@@ -6,7 +6,7 @@
 use super::layout::GpuFragment;
 use crate::gl::consts::*;
 use crate::gl::types::GLenum;
-use crate::gl::{BoundTexture, TexParams};
+use crate::gl::{BoundTexture, Combiner, TexParams};
 use crate::render::assemble::{FragmentState, Smooth};
 use std::collections::HashMap;
 use wgpu::util::DeviceExt;
@@ -46,8 +46,11 @@ impl GpuFragment {
             GL_DECAL => 2,
             GL_BLEND => 3,
             GL_REPLACE => 4,
-            _ => 5,
+            GL_ADD => 5,
+            _ => 6,
         };
+        self.combine_rgb = combiner_uniform(&texture.combine.rgb);
+        self.combine_alpha = combiner_uniform(&texture.combine.alpha);
         self.format = match texture.base_format {
             GL_ALPHA => 0,
             GL_LUMINANCE => 1,
@@ -74,6 +77,37 @@ impl GpuFragment {
         self.color = texture.env_color;
         self.border_color = texture.border_color;
     }
+}
+
+/// A combiner half as `fragment.wgsl`'s `Fragment` packs it: function, sources, operands (four
+/// bits each) and scale.
+fn combiner_uniform(half: &Combiner) -> [u32; 4] {
+    let function = match half.function {
+        GL_REPLACE => 1,
+        GL_MODULATE => 2,
+        GL_ADD => 3,
+        GL_ADD_SIGNED => 4,
+        GL_INTERPOLATE => 5,
+        GL_SUBTRACT => 6,
+        GL_DOT3_RGB => 7,
+        _ => 8,
+    };
+    let source = |s: GLenum| match s {
+        GL_TEXTURE | GL_TEXTURE0 => 0,
+        GL_CONSTANT => 1,
+        GL_PRIMARY_COLOR | GL_PREVIOUS => 2,
+        _ => 3,
+    };
+    let operand = |o: GLenum| match o {
+        GL_SRC_COLOR => 0,
+        GL_ONE_MINUS_SRC_COLOR => 1,
+        GL_SRC_ALPHA => 2,
+        _ => 3,
+    };
+    let packed = |f: &dyn Fn(GLenum) -> u32, values: [GLenum; 3]| {
+        values.iter().enumerate().fold(0, |bits, (k, &v)| bits | f(v) << (4 * k))
+    };
+    [function, packed(&source, half.sources), packed(&operand, half.operands), u32::from(half.scale)]
 }
 
 /// The bind group layout of `raster.wgsl`'s group 0: the 1D or 2D image, sampler, environment,

@@ -850,3 +850,97 @@ fn texture_3d_is_mesas_on_both_rasterisers() {
         }
     }
 }
+
+/// GL 1.3's `GL_COMBINE` environment drawn by both rasterisers, against what Mesa 22.3
+/// (llvmpipe, OSMesa) drew for the same calls (`tests/reference/pixels/combine.c` prints these
+/// values): a 1 × 1 texture (0.8, 0.6, 0.4, 0.5) of several base formats, the primary colour
+/// (0.5, 0.25, 1, 0.75), the constant (0.9, 0.8, 0.1, 0.3); each function, source, operand and
+/// scale, DOT3 (whose RGBA form scales its alpha by the alpha scale), the crossbar's
+/// `GL_TEXTURE0`. One pixel each, within 2/255.
+#[test]
+fn combine_is_mesas_on_both_rasterisers() {
+    const T: GLenum = GL_TEXTURE;
+    const K: GLenum = GL_CONSTANT;
+    const P: GLenum = GL_PRIMARY_COLOR;
+    const V: GLenum = GL_PREVIOUS;
+    const SC: GLenum = GL_SRC_COLOR;
+    const MC: GLenum = GL_ONE_MINUS_SRC_COLOR;
+    const SA: GLenum = GL_SRC_ALPHA;
+    const MA: GLenum = GL_ONE_MINUS_SRC_ALPHA;
+    type Half = (GLenum, [GLenum; 3], [GLenum; 3], f32);
+    let setups: [(GLenum, Half, Half); 16] = [
+        (GL_RGBA, (GL_MODULATE, [T, V, K], [SC, SC, SA], 1.0), (GL_MODULATE, [T, V, K], [SA, SA, SA], 1.0)),
+        (GL_RGBA, (GL_REPLACE, [K, V, K], [SC, SC, SA], 1.0), (GL_REPLACE, [K, V, K], [SA, SA, SA], 1.0)),
+        (GL_RGBA, (GL_ADD, [T, P, K], [SC, SC, SA], 1.0), (GL_ADD, [T, P, K], [SA, SA, SA], 1.0)),
+        (GL_RGBA, (GL_ADD_SIGNED, [T, P, K], [SC, SC, SA], 2.0), (GL_ADD_SIGNED, [T, K, K], [SA, SA, SA], 2.0)),
+        (GL_RGBA, (GL_INTERPOLATE, [T, P, K], [SC, SC, SA], 1.0), (GL_INTERPOLATE, [T, P, K], [SA, SA, SA], 1.0)),
+        (GL_RGBA, (GL_SUBTRACT, [T, K, K], [SC, SC, SA], 1.0), (GL_SUBTRACT, [P, T, K], [SA, SA, SA], 4.0)),
+        (GL_RGBA, (GL_DOT3_RGB, [T, K, K], [SC, SC, SA], 1.0), (GL_REPLACE, [P, T, K], [SA, SA, SA], 1.0)),
+        (GL_RGBA, (GL_DOT3_RGBA, [T, T, K], [SC, SC, SA], 1.0), (GL_REPLACE, [P, T, K], [SA, SA, SA], 4.0)),
+        (GL_RGBA, (GL_DOT3_RGB, [T, P, K], [MC, SC, SA], 4.0), (GL_MODULATE, [P, K, K], [MA, SA, SA], 2.0)),
+        (GL_RGBA, (GL_MODULATE, [T, K, K], [MC, SA, SA], 2.0), (GL_MODULATE, [T, K, K], [MA, MA, SA], 1.0)),
+        (GL_RGBA, (GL_INTERPOLATE, [K, P, T], [SC, MC, MA], 1.0), (GL_INTERPOLATE, [K, P, T], [SA, MA, MA], 1.0)),
+        (GL_LUMINANCE, (GL_MODULATE, [T, V, K], [SC, SC, SA], 1.0), (GL_REPLACE, [T, V, K], [SA, SA, SA], 1.0)),
+        (GL_ALPHA, (GL_ADD, [T, V, K], [SC, SC, SA], 1.0), (GL_REPLACE, [T, V, K], [SA, SA, SA], 1.0)),
+        (GL_INTENSITY, (GL_ADD, [T, K, K], [SC, SC, SA], 1.0), (GL_ADD, [T, K, K], [SA, SA, SA], 1.0)),
+        (GL_LUMINANCE_ALPHA, (GL_REPLACE, [T, V, K], [SA, SC, SA], 1.0), (GL_REPLACE, [T, V, K], [MA, SA, SA], 1.0)),
+        (GL_RGB, (GL_REPLACE, [GL_TEXTURE0, V, K], [SC, SC, SA], 1.0), (GL_REPLACE, [GL_TEXTURE0, V, K], [SA, SA, SA], 1.0)),
+    ];
+    let mesa: [[u8; 4]; 16] = [
+        [102, 38, 102, 96],
+        [230, 204, 26, 76],
+        [255, 217, 255, 255],
+        [255, 179, 255, 154],
+        [150, 91, 209, 172],
+        [0, 0, 77, 253],
+        [194, 194, 194, 191],
+        [112, 112, 112, 255],
+        [255, 255, 255, 38],
+        [31, 61, 92, 89],
+        [178, 198, 13, 70],
+        [102, 51, 204, 255],
+        [128, 64, 255, 128],
+        [255, 255, 230, 255],
+        [128, 128, 128, 127],
+        [204, 153, 102, 255],
+    ];
+    let mut renderer = optional_renderer();
+    let texel = [204u8, 153, 102, 128];
+    for (k, ((format, rgb, alpha), expected)) in setups.into_iter().zip(mesa).enumerate() {
+        let mut gl = Gl::new(2, 2);
+        gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST as i32);
+        gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST as i32);
+        gl.tex_envfv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, &[0.9, 0.8, 0.1, 0.3]);
+        gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_COMBINE as i32);
+        gl.enable(GL_TEXTURE_2D);
+        // The texel's components as the format reads them, as combine.c gives them.
+        let (image_format, image) = match format {
+            GL_ALPHA => (GL_ALPHA, vec![texel[3]]),
+            GL_LUMINANCE_ALPHA => (GL_LUMINANCE_ALPHA, vec![texel[0], texel[3]]),
+            GL_LUMINANCE | GL_INTENSITY => (GL_LUMINANCE, vec![texel[0]]),
+            _ => (GL_RGBA, texel.to_vec()),
+        };
+        gl.tex_image_2d(GL_TEXTURE_2D, 0, format as i32, 1, 1, 0, image_format, GL_UNSIGNED_BYTE, &image);
+        gl.tex_envi(GL_TEXTURE_ENV, GL_COMBINE_RGB, rgb.0 as i32);
+        gl.tex_envi(GL_TEXTURE_ENV, GL_COMBINE_ALPHA, alpha.0 as i32);
+        for i in 0..3 {
+            gl.tex_envi(GL_TEXTURE_ENV, GL_SOURCE0_RGB + i as u32, rgb.1[i] as i32);
+            gl.tex_envi(GL_TEXTURE_ENV, GL_SOURCE0_ALPHA + i as u32, alpha.1[i] as i32);
+            gl.tex_envi(GL_TEXTURE_ENV, GL_OPERAND0_RGB + i as u32, rgb.2[i] as i32);
+            gl.tex_envi(GL_TEXTURE_ENV, GL_OPERAND0_ALPHA + i as u32, alpha.2[i] as i32);
+        }
+        gl.tex_envf(GL_TEXTURE_ENV, GL_RGB_SCALE, rgb.3);
+        gl.tex_envf(GL_TEXTURE_ENV, GL_ALPHA_SCALE, alpha.3);
+        gl.color4f(0.5, 0.25, 1.0, 0.75);
+        gl.rectf(-1.0, -1.0, 1.0, 1.0);
+        assert_eq!(gl.get_error(), GL_NO_ERROR, "set-up {k}");
+        let frame = gl.take_frame();
+        let close = |got: &[u8]| got.iter().zip(&expected).all(|(a, b)| a.abs_diff(*b) <= 2);
+        let soft = soft::render_frame(&frame, 2, 2).pixels[8..12].to_vec();
+        assert!(close(&soft), "CPU, set-up {k}: {soft:?}, Mesa {expected:?}");
+        if let Some(renderer) = renderer.as_mut() {
+            let wgpu = renderer.render_frame(&frame, 2, 2).expect("wgpu renders").pixels[8..12].to_vec();
+            assert!(close(&wgpu), "wgpu, set-up {k}: {wgpu:?}, Mesa {expected:?}");
+        }
+    }
+}

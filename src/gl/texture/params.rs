@@ -2,6 +2,7 @@
 //! `main/texparam.c`, `main/texenv.c`): `glTexParameter*` of the bound object, `glTexEnv*` of
 //! unit 0.
 
+use super::combine::is_combine_name;
 use super::target_index;
 use super::TextureCall;
 use crate::gl::consts::*;
@@ -82,13 +83,17 @@ impl Gl {
     }
 
     /// `glTexEnvi` for `GL_TEXTURE_ENV_MODE`: `GL_MODULATE` (initial), `GL_DECAL`, `GL_BLEND`,
-    /// `GL_REPLACE` or `GL_ADD`. Another target, name or mode → `GL_INVALID_ENUM`.
+    /// `GL_REPLACE`, `GL_ADD` or GL 1.3's `GL_COMBINE`, and the combiner's names
+    /// ([`super::Combine`]). Another target, name or mode → `GL_INVALID_ENUM`.
     pub fn tex_envi(&mut self, target: GLenum, pname: GLenum, param: GLint) {
         if self.compiled_state_call(|| ListCommand::Texture(TextureCall::TexEnv(target, pname, vec![param as f32]))) {
             return;
         }
+        if target == GL_TEXTURE_ENV && is_combine_name(pname) {
+            return self.set_combine(pname, param as GLfloat);
+        }
         let mode = param as GLenum;
-        let known = matches!(mode, GL_MODULATE | GL_DECAL | GL_BLEND | GL_REPLACE | GL_ADD);
+        let known = matches!(mode, GL_MODULATE | GL_DECAL | GL_BLEND | GL_REPLACE | GL_ADD | GL_COMBINE);
         if target != GL_TEXTURE_ENV || pname != GL_TEXTURE_ENV_MODE || !known {
             return self.set_error(GL_INVALID_ENUM);
         }
@@ -96,9 +101,20 @@ impl Gl {
         self.touch_state();
     }
 
-    /// `glTexEnvf`: as [`Gl::tex_envi`].
+    /// `glTexEnvf`: as [`Gl::tex_envi`] (a combiner scale as the float it is).
     pub fn tex_envf(&mut self, target: GLenum, pname: GLenum, param: GLfloat) {
+        if is_combine_name(pname) {
+            return self.tex_envfv(target, pname, &[param]);
+        }
         self.tex_envi(target, pname, param as GLint);
+    }
+
+    /// A combiner name set, as Mesa checks it ([`super::Combine`]).
+    fn set_combine(&mut self, pname: GLenum, value: GLfloat) {
+        match self.server.textures.combine.set(pname, value) {
+            Ok(()) => self.touch_state(),
+            Err(error) => self.set_error(error),
+        }
     }
 
     /// `glTexEnvfv`: `GL_TEXTURE_ENV_COLOR` (4 values, clamped to [0, 1]) or
@@ -110,6 +126,10 @@ impl Gl {
         }
         if self.compiled_state_call(|| ListCommand::Texture(TextureCall::TexEnv(target, pname, params.to_vec()))) {
             return;
+        }
+        if target == GL_TEXTURE_ENV && is_combine_name(pname) {
+            let Some(&value) = params.first() else { return self.set_error(GL_INVALID_VALUE) };
+            return self.set_combine(pname, value);
         }
         if target != GL_TEXTURE_ENV || pname != GL_TEXTURE_ENV_COLOR {
             return self.set_error(GL_INVALID_ENUM);

@@ -333,6 +333,7 @@ impl Gl {
         let values = match (target, pname) {
             (GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE) => vec![self.server.textures.env_mode as f32],
             (GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR) => self.server.textures.env_color.to_vec(),
+            (GL_TEXTURE_ENV, p) if super::combine::is_combine_name(p) => vec![self.server.textures.combine.get(p)],
             _ => {
                 self.set_error(GL_INVALID_ENUM);
                 return None;

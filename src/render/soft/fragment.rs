@@ -116,8 +116,13 @@ fn texel(texture: &BoundTexture, sampler: &Sampler<'_>, tex: [f32; 4], slope: &T
     std::array::from_fn(|k| texture.border_color[k] + (sample[k] - texture.border_color[k]) * share)
 }
 
-/// GL's texture functions: `cf` the fragment's colour, `texel` the texture's, by base format.
+/// GL's texture functions: `cf` the fragment's colour, `texel` the texture's, by base format;
+/// GL 1.3's combiner for `GL_COMBINE`.
 fn apply_env(texture: &BoundTexture, cf: [f32; 4], texel: [f32; 4]) -> [f32; 4] {
+    if texture.env_mode == GL_COMBINE {
+        let source = crate::gl::texture_source(texture.base_format, texel);
+        return texture.combine.apply(source, cf, texture.env_color);
+    }
     let format = texture.base_format;
     let has_rgb = format != GL_ALPHA;
     let intensity = format == GL_INTENSITY;
