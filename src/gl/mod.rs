@@ -43,6 +43,7 @@ mod multisample;
 mod offset;
 mod param_variants;
 mod pixel_pack;
+mod pixel_packed;
 mod pixel_transfer;
 mod pixel_unpack;
 pub mod pixel_zoom;
