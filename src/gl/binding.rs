@@ -8,27 +8,10 @@
 //! answer when the implementation could not carry out a call.
 
 use super::consts::*;
+use super::pixel_packed::packed;
 use super::pixel_unpack::{element_size as type_size, format_components};
 use super::types::*;
 use super::Gl;
-
-/// Bytes per pixel of a GL 1.2 packed type (one value holds the whole pixel).
-fn packed_pixel_size(type_: GLenum) -> Option<usize> {
-    match type_ {
-        GL_UNSIGNED_BYTE_3_3_2 | GL_UNSIGNED_BYTE_2_3_3_REV => Some(1),
-        GL_UNSIGNED_SHORT_5_6_5
-        | GL_UNSIGNED_SHORT_5_6_5_REV
-        | GL_UNSIGNED_SHORT_4_4_4_4
-        | GL_UNSIGNED_SHORT_4_4_4_4_REV
-        | GL_UNSIGNED_SHORT_5_5_5_1
-        | GL_UNSIGNED_SHORT_1_5_5_5_REV => Some(2),
-        GL_UNSIGNED_INT_8_8_8_8
-        | GL_UNSIGNED_INT_8_8_8_8_REV
-        | GL_UNSIGNED_INT_10_10_10_2
-        | GL_UNSIGNED_INT_2_10_10_10_REV => Some(4),
-        _ => None,
-    }
-}
 
 /// Bytes per name of a `glCallLists` type (`GL_2_BYTES` .. `GL_4_BYTES` included).
 fn list_name_size(type_: GLenum) -> Option<usize> {
@@ -55,8 +38,8 @@ impl Gl {
             return self.unpacked_bitmap_len(width, height);
         }
         // A packed type is one element a pixel, whatever the format's component count.
-        let (components, size) = match packed_pixel_size(type_) {
-            Some(size) => (format_components(format).map(|_| 1)?, size),
+        let (components, size) = match packed(type_) {
+            Some(p) => (format_components(format).map(|_| 1)?, p.size),
             None => (format_components(format)?, type_size(type_)?),
         };
         if w == 0 || h == 0 {

@@ -43,6 +43,7 @@ mod multisample;
 mod offset;
 mod param_variants;
 mod pixel_pack;
+mod pixel_packed;
 mod pixel_transfer;
 mod pixel_unpack;
 pub mod pixel_zoom;
@@ -83,7 +84,9 @@ pub use lists::MAX_LIST_NESTING;
 pub use offset::PolygonOffset;
 pub use pixel_transfer::{ColorTransfer, DepthTransfer, MAX_PIXEL_MAP_TABLE};
 pub use select::SelectHit;
-pub use texture::{texture_source, BoundTexture, Combine, Combiner, TexLevel, TexParams, MAX_TEXTURE_SIZE};
+pub use texture::{
+    texture_source, BoundTexture, Combine, Combiner, TexLevel, TexParams, MAX_3D_TEXTURE_SIZE, MAX_TEXTURE_SIZE,
+};
 pub use texture::{TexGen, TexGenCoord, TexGenState};
 pub use variants::GlComponent;
 pub use vertex::Vertex;
@@ -142,9 +145,11 @@ pub fn error_name(code: GLenum) -> &'static str {
 /// `glWindowPos` (`raster_pos.rs`), blending's constant colour, equations and separate factors
 /// (`blend.rs`), `glDrawRangeElements` and the multi-draws (`array_draws.rs`), the wrapping
 /// stencil operations (`stencil.rs`), `GL_RESCALE_NORMAL` (`frame.rs`), `GL_CLAMP_TO_EDGE`
-/// and the texture level and LOD range (`texture/params.rs`), 3D textures (`texture/image.rs`).
+/// and the texture level and LOD range (`texture/params.rs`), 3D textures (`texture/image.rs`),
+/// BGRA and the packed pixel types (`pixel_packed.rs`), `GL_ADD` and the combiner with DOT3
+/// (`texture/combine.rs`).
 const EXTENSIONS: &str =
-    "GL_ARB_window_pos GL_EXT_blend_color GL_EXT_blend_equation_separate GL_EXT_blend_func_separate GL_EXT_blend_minmax GL_EXT_blend_subtract GL_EXT_draw_range_elements GL_EXT_multi_draw_arrays GL_EXT_rescale_normal GL_EXT_stencil_wrap GL_EXT_texture3D GL_EXT_texture_edge_clamp GL_NV_blend_square GL_SGIS_texture_edge_clamp GL_SGIS_texture_lod";
+    "GL_ARB_texture_env_add GL_ARB_texture_env_combine GL_ARB_texture_env_dot3 GL_ARB_window_pos GL_EXT_bgra GL_EXT_blend_color GL_EXT_blend_equation_separate GL_EXT_blend_func_separate GL_EXT_blend_minmax GL_EXT_blend_subtract GL_EXT_draw_range_elements GL_EXT_multi_draw_arrays GL_EXT_packed_pixels GL_EXT_rescale_normal GL_EXT_stencil_wrap GL_EXT_texture3D GL_EXT_texture_edge_clamp GL_EXT_texture_env_add GL_EXT_texture_env_combine GL_NV_blend_square GL_SGIS_texture_edge_clamp GL_SGIS_texture_lod";
 
 /// A GL context without a GPU: GL state plus the recording of what is drawn.
 ///
@@ -487,8 +492,9 @@ impl Gl {
     }
 
     /// `glGetString`: who implements this GL (`GL_VENDOR` "gleval"), on what (`GL_RENDERER`:
-    /// the tessellator in use; wgpu draws what is recorded), the version (`GL_VERSION`: "1.1"
-    /// and ours, for the GL 1.1 subset implemented) and the extensions complete beyond it
+    /// the tessellator in use; wgpu draws what is recorded), the version (`GL_VERSION`: "1.2"
+    /// and ours: GL 1.2 is whole, its imaging subset aside, as GL allows) and the extensions
+    /// complete beyond it
     /// (`GL_EXTENSIONS`: each extension that is whole, in `EXTENSIONS`).
     /// Another name → `GL_INVALID_ENUM` and `None` (C's NULL), as inside `begin`/`end`
     /// (`GL_INVALID_OPERATION`).
@@ -502,7 +508,7 @@ impl Gl {
                 Tessellator::Cpu => "gleval (CPU tessellator, wgpu rasteriser)",
                 Tessellator::Gpu => "gleval (WGSL tessellator, wgpu rasteriser)",
             }),
-            GL_VERSION => Some(concat!("1.1 gleval ", env!("CARGO_PKG_VERSION"))),
+            GL_VERSION => Some(concat!("1.2 gleval ", env!("CARGO_PKG_VERSION"))),
             GL_EXTENSIONS => Some(EXTENSIONS),
             _ => {
                 self.set_error(GL_INVALID_ENUM);
@@ -550,10 +556,14 @@ mod tests {
     fn get_string_names_and_errors() {
         let mut gl = Gl::new(4, 4);
         assert_eq!(gl.get_string(GL_VENDOR), Some("gleval"));
-        assert!(gl.get_string(GL_VERSION).is_some_and(|v| v.starts_with("1.1 ")));
+        assert!(gl.get_string(GL_VERSION).is_some_and(|v| v.starts_with("1.2 ")));
         // The claims, spelled out: a new one is a decision, made here as well.
         let claimed = [
+            "GL_ARB_texture_env_add",
+            "GL_ARB_texture_env_combine",
+            "GL_ARB_texture_env_dot3",
             "GL_ARB_window_pos",
+            "GL_EXT_bgra",
             "GL_EXT_blend_color",
             "GL_EXT_blend_equation_separate",
             "GL_EXT_blend_func_separate",
@@ -561,10 +571,13 @@ mod tests {
             "GL_EXT_blend_subtract",
             "GL_EXT_draw_range_elements",
             "GL_EXT_multi_draw_arrays",
+            "GL_EXT_packed_pixels",
             "GL_EXT_rescale_normal",
             "GL_EXT_stencil_wrap",
             "GL_EXT_texture3D",
             "GL_EXT_texture_edge_clamp",
+            "GL_EXT_texture_env_add",
+            "GL_EXT_texture_env_combine",
             "GL_NV_blend_square",
             "GL_SGIS_texture_edge_clamp",
             "GL_SGIS_texture_lod",

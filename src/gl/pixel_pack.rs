@@ -2,10 +2,13 @@
 //! values", "Final conversion", "Placement in client memory"; Mesa `main/pack.c`): what
 //! `glReadPixels` and `glGetTexImage` write, under the pack modes. Each component converts as
 //! GL 1.1 table 2.9 inverted (unsigned types scale by 2ᵇ − 1, signed ones map [−1, 1] onto the
-//! range), luminance as R + G + B clamped.
+//! range), luminance as R + G + B clamped. GL 1.2's `GL_BGR` and `GL_BGRA` write the components
+//! in the other order, and its packed types one element a pixel ([`super::pixel_packed`]),
+//! converted as Mesa 22.3 converts them ([`Source`]).
 
 use super::consts::*;
-use super::pixel_unpack::element_size as type_size;
+use super::pixel_packed::{byte_of, from_unorm8, packed, packed_mismatch, Packed, Source};
+use super::pixel_unpack::element_size;
 use super::types::*;
 use super::Gl;
 
@@ -19,6 +22,8 @@ pub(crate) fn components(format: GLenum, [r, g, b, a]: [f32; 4]) -> Option<Vec<f
         GL_ALPHA => vec![a],
         GL_RGB => vec![r, g, b],
         GL_RGBA => vec![r, g, b, a],
+        GL_BGR => vec![b, g, r],
+        GL_BGRA => vec![b, g, r, a],
         GL_LUMINANCE => vec![(r + g + b).min(1.0)],
         GL_LUMINANCE_ALPHA => vec![(r + g + b).min(1.0), a],
         // A depth travels in the red slot (see `Gl::read_pixels`).
@@ -32,8 +37,8 @@ pub(crate) fn components(format: GLenum, [r, g, b, a]: [f32; 4]) -> Option<Vec<f
 pub(crate) fn format_size(format: GLenum) -> Option<usize> {
     match format {
         GL_LUMINANCE_ALPHA => Some(2),
-        GL_RGB => Some(3),
-        GL_RGBA => Some(4),
+        GL_RGB | GL_BGR => Some(3),
+        GL_RGBA | GL_BGRA => Some(4),
         GL_RED | GL_GREEN | GL_BLUE | GL_ALPHA | GL_LUMINANCE | GL_COLOR_INDEX | GL_STENCIL_INDEX
         | GL_DEPTH_COMPONENT => Some(1),
         _ => None,
@@ -59,10 +64,46 @@ fn encode(c: f32, type_: GLenum) -> Vec<u8> {
     }
 }
 
+/// One 8-bit component `c` (a byte over 255) as `type_` stores it, native byte order, converted
+/// from the byte as integers as Mesa converts a window's or texture's bytes that no pixel
+/// transfer made floats ([`from_unorm8`]; measured: 0 reads as `GL_SHORT` 0 and 1 as 128, 200
+/// as `GL_INT` 0x64646464, where the float conversion gives −1, 128 and 0x6464647F).
+fn encode_unorm8(c: f32, type_: GLenum) -> Vec<u8> {
+    let byte = byte_of(c);
+    match type_ {
+        GL_UNSIGNED_BYTE => vec![byte as u8],
+        GL_BYTE => vec![from_unorm8(byte, 7) as u8],
+        GL_UNSIGNED_SHORT => (from_unorm8(byte, 16) as u16).to_ne_bytes().to_vec(),
+        GL_SHORT => (from_unorm8(byte, 15) as u16).to_ne_bytes().to_vec(),
+        GL_UNSIGNED_INT => from_unorm8(byte, 32).to_ne_bytes().to_vec(),
+        GL_INT => from_unorm8(byte, 31).to_ne_bytes().to_vec(),
+        _ => c.to_ne_bytes().to_vec(),
+    }
+}
+
+/// Bytes per element of a type `glReadPixels` takes: a GL 1.1 type's, or a packed type's one
+/// element a pixel; `None` for `GL_BITMAP` and unknown types.
+fn type_size(type_: GLenum) -> Option<usize> {
+    element_size(type_).or(packed(type_).map(|p| p.size))
+}
+
+/// The elements per pixel and bytes per element `format` and `type_` are packed in: one
+/// element a pixel for a packed type (GL 1.2 §4.3.2), the format's components otherwise.
+fn pixel_shape(format: GLenum, type_: GLenum) -> Option<(usize, usize)> {
+    match packed(type_) {
+        Some(p) => (!packed_mismatch(format, type_)).then_some((1, p.size)),
+        None => Some((format_size(format)?, element_size(type_)?)),
+    }
+}
+
 /// The error a colour read of `format` and `type_` gets (`glGetTexImage`'s checks, Mesa's
-/// `_mesa_error_check_format_and_type` order): an unknown format or type `GL_INVALID_ENUM`, a
-/// depth, stencil or colour-index format `GL_INVALID_OPERATION`.
+/// `_mesa_error_check_format_and_type` order): a packed type the format does not go with
+/// `GL_INVALID_OPERATION` (an unknown format too, measured), an unknown format or type
+/// `GL_INVALID_ENUM`, a depth, stencil or colour-index format `GL_INVALID_OPERATION`.
 pub(crate) fn read_format_error(format: GLenum, type_: GLenum) -> Option<GLenum> {
+    if packed_mismatch(format, type_) {
+        return Some(GL_INVALID_OPERATION);
+    }
     if format_size(format).is_none() || type_size(type_).is_none() {
         return Some(GL_INVALID_ENUM);
     }
@@ -93,7 +134,7 @@ impl Gl {
     #[must_use]
     pub fn packed_image_len(&self, width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum) -> Option<usize> {
         let (w, h) = (usize::try_from(width).ok()?, usize::try_from(height).ok()?);
-        let (n, size) = (format_size(format)?, type_size(type_)?);
+        let (n, size) = pixel_shape(format, type_)?;
         if w == 0 || h == 0 {
             return Some(0);
         }
@@ -113,52 +154,73 @@ impl Gl {
         type_: GLenum,
     ) -> Option<(usize, usize)> {
         let store = self.client.pixel_stores.pack;
-        let row = store.row_stride(width, format_size(format)?, type_size(type_)?);
+        let (n, size) = pixel_shape(format, type_)?;
+        let row = store.row_stride(width, n, size);
         Some((store.image_stride(row, height), store.skip_images))
     }
 
-    /// Packs a `w` × `h` image of RGBA floats (rows bottom first) as `glReadPixels` would
-    /// (`glGetTexImage`); `out` holds at least [`Gl::packed_image_len`] bytes.
+    /// Packs a `w` × `h` image of RGBA floats from `source` (rows bottom first) as
+    /// `glReadPixels` would (`glGetTexImage`); `out` holds at least [`Gl::packed_image_len`]
+    /// bytes.
     pub(crate) fn pack_rgba(
         &self,
         rgba: &[[f32; 4]],
         (w, h): (usize, usize),
-        (format, type_): (GLenum, GLenum),
+        (format, type_, source): (GLenum, GLenum, Source),
         out: &mut [u8],
     ) {
-        let size = type_size(type_).unwrap_or(1);
         let at = |x: i32, y: i32| rgba.get(y as usize * w + x as usize).copied();
-        self.pack_rectangle((0, 0), (w, h), (format, type_, size), at, out);
+        self.pack_rectangle((0, 0), (w, h), (format, type_, source), at, out);
     }
 
     /// Writes the rectangle's pixels that lie in the window where the pack modes put them.
+    /// Nothing is written for a format and type [`Gl::packed_image_len`] rejects.
     pub(crate) fn pack_rectangle(
         &self,
         (x, y): (GLint, GLint),
         (w, h): (usize, usize),
-        (format, type_, size): (GLenum, GLenum, usize),
+        (format, type_, source): (GLenum, GLenum, Source),
         at: impl Fn(i32, i32) -> Option<[f32; 4]>,
         out: &mut [u8],
     ) {
         let store = self.client.pixel_stores.pack;
-        let n = format_size(format).unwrap_or(1);
+        let Some((n, size)) = pixel_shape(format, type_) else { return };
         let stride = store.row_stride(w, n, size);
         let first = store.first_byte(stride, n * size);
         for j in 0..h {
             for i in 0..w {
                 let (wx, wy) = (x.saturating_add(i as i32), y.saturating_add(j as i32));
                 let Some(rgba) = at(wx, wy) else { continue };
-                let mut offset = first + j * stride + i * n * size;
-                for c in components(format, rgba).unwrap_or_default() {
-                    let mut bytes =
-                        if format == GL_DEPTH_COMPONENT { encode_depth(c, type_) } else { encode(c, type_) };
-                    if store.swap_bytes {
-                        bytes.reverse();
-                    }
-                    out[offset..offset + size].copy_from_slice(&bytes);
-                    offset += size;
+                let pixel = &mut out[first + j * stride + i * n * size..][..n * size];
+                let values = components(format, rgba).unwrap_or_default();
+                match packed(type_) {
+                    Some(p) => pack_element(p, &values, (source, store.swap_bytes), pixel),
+                    None => pack_components(&values, (format, type_, source), store.swap_bytes, pixel),
                 }
             }
         }
+    }
+}
+
+/// One pixel of a packed type: its components in one element, its bytes swapped as one
+/// (GL 1.2 §4.3.2: `GL_PACK_SWAP_BYTES` swaps the element's bytes).
+fn pack_element(p: Packed, values: &[f32], (source, swap): (Source, bool), pixel: &mut [u8]) {
+    p.write(p.pack(values, source), swap, pixel);
+}
+
+/// One pixel of a GL 1.1 type: each component its own element, each swapped on its own.
+fn pack_components(values: &[f32], (format, type_, source): (GLenum, GLenum, Source), swap: bool, pixel: &mut [u8]) {
+    let mut offset = 0;
+    for &c in values {
+        let mut bytes = match (format, source) {
+            (GL_DEPTH_COMPONENT, _) => encode_depth(c, type_),
+            (_, Source::Unorm8) => encode_unorm8(c, type_),
+            (_, Source::Float) => encode(c, type_),
+        };
+        if swap {
+            bytes.reverse();
+        }
+        pixel[offset..offset + bytes.len()].copy_from_slice(&bytes);
+        offset += bytes.len();
     }
 }

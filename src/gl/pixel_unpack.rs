@@ -3,13 +3,14 @@
 //! from client memory, element by element, before the pixel transfer.
 //!
 //! Every GL 1.1 type is read (`GL_BITMAP` for indices, the signed and unsigned integers of
-//! 8, 16 and 32 bits, `GL_FLOAT`), with `GL_UNPACK_SWAP_BYTES`, the row length, the skipped
-//! rows and pixels and the row alignment. Colour and depth components become floats as
-//! Mesa 22 converts them (measured: a `GL_BYTE` 1 draws as 1/127, not GL 1.1's 3/255, so
-//! signed values are `max(c / (2^(b−1) − 1), −1)`, unsigned `c / (2^b − 1)`); colour and
-//! stencil indices stay integers.
+//! 8, 16 and 32 bits, `GL_FLOAT`), and GL 1.2's packed types ([`super::pixel_packed`]), with
+//! `GL_UNPACK_SWAP_BYTES`, the row length, the skipped rows and pixels and the row alignment.
+//! Colour and depth components become floats as Mesa 22 converts them (measured: a `GL_BYTE` 1
+//! draws as 1/127, not GL 1.1's 3/255, so signed values are `max(c / (2^(b−1) − 1), −1)`,
+//! unsigned `c / (2^b − 1)`); colour and stencil indices stay integers.
 
 use super::consts::*;
+use super::pixel_packed::{packed, packed_mismatch};
 use super::pixels::PixelStore;
 use super::types::*;
 
@@ -39,68 +40,19 @@ pub(crate) fn element_size(type_: GLenum) -> Option<usize> {
     }
 }
 
-/// A GL 1.2 packed type (GL 1.2 §3.6.4, table 3.8): the bytes of its one element a pixel, the
-/// bits of each component from the first, and whether the first sits in the lowest bits
-/// (`_REV`) rather than the highest.
-#[derive(Clone, Copy)]
-struct Packed {
-    size: usize,
-    bits: &'static [u32],
-    reversed: bool,
-}
-
-fn packed(type_: GLenum) -> Option<Packed> {
-    let (size, bits, reversed): (usize, &'static [u32], bool) = match type_ {
-        GL_UNSIGNED_BYTE_3_3_2 => (1, &[3, 3, 2], false),
-        GL_UNSIGNED_BYTE_2_3_3_REV => (1, &[3, 3, 2], true),
-        GL_UNSIGNED_SHORT_5_6_5 => (2, &[5, 6, 5], false),
-        GL_UNSIGNED_SHORT_5_6_5_REV => (2, &[5, 6, 5], true),
-        GL_UNSIGNED_SHORT_4_4_4_4 => (2, &[4, 4, 4, 4], false),
-        GL_UNSIGNED_SHORT_4_4_4_4_REV => (2, &[4, 4, 4, 4], true),
-        GL_UNSIGNED_SHORT_5_5_5_1 => (2, &[5, 5, 5, 1], false),
-        GL_UNSIGNED_SHORT_1_5_5_5_REV => (2, &[5, 5, 5, 1], true),
-        GL_UNSIGNED_INT_8_8_8_8 => (4, &[8, 8, 8, 8], false),
-        GL_UNSIGNED_INT_8_8_8_8_REV => (4, &[8, 8, 8, 8], true),
-        GL_UNSIGNED_INT_10_10_10_2 => (4, &[10, 10, 10, 2], false),
-        GL_UNSIGNED_INT_2_10_10_10_REV => (4, &[10, 10, 10, 2], true),
-        _ => return None,
-    };
-    Some(Packed { size, bits, reversed })
-}
-
-impl Packed {
-    /// The components of one element, each normalised by its field's largest value.
-    fn components(&self, value: u32, out: &mut [f32; 4]) {
-        let total: u32 = self.bits.iter().sum();
-        let mut shift = if self.reversed { 0 } else { total };
-        for (k, &b) in self.bits.iter().enumerate() {
-            if !self.reversed {
-                shift -= b;
-            }
-            let max = (1u64 << b) - 1;
-            out[k] = (f64::from((value >> shift) & max as u32) / max as f64) as f32;
-            if self.reversed {
-                shift += b;
-            }
-        }
-    }
-}
-
 /// The errors Mesa's `_mesa_error_check_format_and_type` gives a client image's `format` and
-/// `type_` before a call's own checks: an unknown format or type, or `GL_BITMAP` with a
-/// format that is not an index → `GL_INVALID_ENUM`; a packed type whose component count the
-/// format does not have → `GL_INVALID_OPERATION`.
+/// `type_` before a call's own checks: a packed type the format does not go with →
+/// `GL_INVALID_OPERATION` ([`packed_mismatch`], checked first: an unknown format with a packed
+/// type is `GL_INVALID_OPERATION` too, measured in `pack_types.calls`); an unknown format or
+/// type, or `GL_BITMAP` with a format that is not an index → `GL_INVALID_ENUM`.
 #[must_use]
 pub(crate) fn format_and_type_error(format: GLenum, type_: GLenum) -> Option<GLenum> {
-    let known_type = type_ == GL_BITMAP || element_size(type_).is_some() || packed(type_).is_some();
-    if format_components(format).is_none() || !known_type || (type_ == GL_BITMAP && !is_index(format)) {
-        return Some(GL_INVALID_ENUM);
+    if packed_mismatch(format, type_) {
+        return Some(GL_INVALID_OPERATION);
     }
-    let mismatch = packed(type_).is_some_and(|p| match p.bits.len() {
-        3 => format != GL_RGB,
-        _ => !matches!(format, GL_RGBA | GL_BGRA),
-    });
-    mismatch.then_some(GL_INVALID_OPERATION)
+    let known_type = type_ == GL_BITMAP || element_size(type_).is_some() || packed(type_).is_some();
+    let bitmap_mismatch = type_ == GL_BITMAP && !is_index(format);
+    (format_components(format).is_none() || !known_type || bitmap_mismatch).then_some(GL_INVALID_ENUM)
 }
 
 /// Whether a format's values are indices (integers, not normalised).
@@ -216,8 +168,8 @@ pub(crate) fn unpack_each(
         for pixel in row_bytes.chunks_exact(per_pixel * size) {
             match packed {
                 Some(p) => {
-                    p.components(packed_value(pixel, swap), &mut c);
-                    emit(to_rgba(format, &c[..p.bits.len()]));
+                    p.unpack(p.read(pixel, swap), &mut c);
+                    emit(to_rgba(format, &c[..p.components()]));
                 }
                 None => {
                     for (value, bytes) in c.iter_mut().zip(pixel.chunks_exact(size)) {
@@ -246,20 +198,6 @@ pub(crate) fn image_stride(
         None => (element_size(type_)?, format_components(format)?),
     };
     Some(store.image_stride(store.row_stride(width, per_pixel, size), height))
-}
-
-/// A packed pixel's one element (1, 2 or 4 bytes, in client byte order unless `swap`).
-fn packed_value(bytes: &[u8], swap: bool) -> u32 {
-    let mut b = [0u8; 4];
-    b[..bytes.len()].copy_from_slice(bytes);
-    if swap {
-        b[..bytes.len()].reverse();
-    }
-    match bytes.len() {
-        1 => u32::from(b[0]),
-        2 => u32::from(u16::from_ne_bytes([b[0], b[1]])),
-        _ => u32::from_ne_bytes(b),
-    }
 }
 
 /// Unpacks a `width` × `height` bitmap from `data` as GL reads it with `store` (rows bottom

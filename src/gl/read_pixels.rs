@@ -17,7 +17,8 @@
 use super::consts::*;
 use super::frame::Frame;
 use super::pixel_pack::{components, format_size};
-use super::pixel_unpack::element_size as type_size;
+use super::pixel_packed::Source;
+use super::pixel_unpack::format_and_type_error;
 use super::types::*;
 use super::window_read::WindowImage;
 use super::Gl;
@@ -27,8 +28,9 @@ impl Gl {
     /// was recorded and returns the window's buffers. Colours go through the pixel transfer,
     /// depths (`GL_DEPTH_COMPONENT`) through the depth scale and bias. Errors, in
     /// Mesa's order: inside `begin`/`end` (`GL_INVALID_OPERATION`), a negative size
-    /// (`GL_INVALID_VALUE`), an unknown type or `GL_BITMAP` (`GL_INVALID_ENUM`), an unknown
-    /// format (`GL_INVALID_OPERATION`, Mesa's answer), a buffer gleval cannot read (stencil,
+    /// (`GL_INVALID_VALUE`), an unknown format (`GL_INVALID_OPERATION`, Mesa's answer), a
+    /// packed type the format does not go with (`GL_INVALID_OPERATION`), an unknown type or
+    /// `GL_BITMAP` with a colour (`GL_INVALID_ENUM`), a buffer gleval cannot read (stencil,
     /// colour index: `GL_INVALID_OPERATION`), a non-empty `out` shorter than
     /// [`Gl::packed_image_len`] (`GL_INVALID_VALUE`); an empty `out` (C's NULL) writes nothing
     /// and is no error, as in Mesa. Not compiled into lists.
@@ -53,7 +55,12 @@ impl Gl {
         if format_size(format).is_none() {
             return self.set_error(GL_INVALID_OPERATION);
         }
-        let Some(size) = type_size(type_) else { return self.set_error(GL_INVALID_ENUM) };
+        // Then Mesa's `_mesa_error_check_format_and_type`: a packed type with a format it does
+        // not go with GL_INVALID_OPERATION, an unknown type or GL_BITMAP with a colour
+        // GL_INVALID_ENUM (measured, pack_types.calls).
+        if let Some(error) = format_and_type_error(format, type_) {
+            return self.set_error(error);
+        }
         if components(format, [0.0; 4]).is_none() {
             return self.set_error(GL_INVALID_OPERATION);
         }
@@ -67,6 +74,11 @@ impl Gl {
         }
         let Some(image) = window(self.frame()) else { return self.set_error(GL_OUT_OF_MEMORY) };
         let (colors, depths) = (self.color_transfer(), self.depth_transfer());
+        // Mesa packs the window's bytes as integers unless the transfer made them floats, or
+        // the luminance sum did (measured: a red of 43 reads as GL_RED GL_INT 0x15959595, as
+        // GL_LUMINANCE 0x159595A0).
+        let luminance = matches!(format, GL_LUMINANCE | GL_LUMINANCE_ALPHA);
+        let source = if colors.is_some() || luminance { Source::Float } else { Source::Unorm8 };
         let at = |wx: i32, wy: i32| -> Option<[f32; 4]> {
             let (wx, wy) = (i64::from(wx), i64::from(wy));
             if format == GL_DEPTH_COMPONENT {
@@ -75,7 +87,7 @@ impl Gl {
             let c = image.color_at(wx, wy)?;
             Some(colors.as_ref().map_or(c, |t| t.apply(c).map(|v| v.clamp(0.0, 1.0))))
         };
-        self.pack_rectangle((x, y), (width as usize, height as usize), (format, type_, size), at, out);
+        self.pack_rectangle((x, y), (width as usize, height as usize), (format, type_, source), at, out);
     }
 
     /// `glReadPixels` as a ported program calls it: [`Gl::read_pixels`] reading the window
@@ -139,6 +151,38 @@ mod tests {
         let mut lum = [0u8; 1];
         gl.read_pixels((1, 1), (1, 1), GL_LUMINANCE, GL_UNSIGNED_BYTE, |_| Some(window()), &mut lum[..]);
         assert_eq!(lum, [255]);
+    }
+
+    #[test]
+    fn bgra_and_packed_types() {
+        let mut gl = Gl::new(2, 2);
+        gl.pixel_storei(GL_PACK_ALIGNMENT, 1);
+        let mut out = [0u8; 8];
+        // The bottom row: red, green.
+        gl.read_pixels((0, 0), (2, 1), GL_BGRA, GL_UNSIGNED_BYTE, |_| Some(window()), &mut out[..]);
+        assert_eq!(out, [0, 0, 255, 255, 0, 255, 0, 255]);
+        let mut out = [0u8; 4];
+        // 5_6_5: red in bits 15–11, green in 10–5 (GL 1.2 table 3.10).
+        gl.read_pixels((0, 0), (2, 1), GL_RGB, GL_UNSIGNED_SHORT_5_6_5, |_| Some(window()), &mut out[..]);
+        assert_eq!(out[..], [0xF800u16.to_ne_bytes(), 0x07E0u16.to_ne_bytes()].concat());
+        gl.pixel_storei(GL_PACK_SWAP_BYTES, 1);
+        gl.read_pixels((0, 0), (1, 1), GL_RGB, GL_UNSIGNED_SHORT_5_6_5, |_| Some(window()), &mut out[..]);
+        assert_eq!(out[..2], 0x00F8u16.to_ne_bytes());
+        gl.pixel_storei(GL_PACK_SWAP_BYTES, 0);
+        // 2_10_10_10_REV with BGRA: blue in bits 9–0, red in 29–20, alpha in 31–30.
+        gl.read_pixels((0, 0), (1, 1), GL_BGRA, GL_UNSIGNED_INT_2_10_10_10_REV, |_| Some(window()), &mut out[..]);
+        assert_eq!(out, (3u32 << 30 | 0x3FF << 20).to_ne_bytes());
+        assert_eq!(gl.get_error(), GL_NO_ERROR);
+        for (format, type_) in [
+            (GL_BGR, GL_UNSIGNED_BYTE_3_3_2),
+            (GL_RGB, GL_UNSIGNED_INT_8_8_8_8),
+            (GL_LUMINANCE, GL_UNSIGNED_SHORT_5_6_5),
+        ] {
+            gl.read_pixels((0, 0), (1, 1), format, type_, |_| Some(window()), &mut out[..]);
+            assert_eq!(gl.get_error(), GL_INVALID_OPERATION);
+        }
+        assert_eq!(gl.packed_image_len(3, 2, GL_RGBA, GL_UNSIGNED_SHORT_4_4_4_4), Some(12));
+        assert_eq!(gl.packed_image_len(3, 2, GL_RGBA, GL_UNSIGNED_SHORT_5_6_5), None);
     }
 
     #[test]

@@ -6,7 +6,7 @@
 
 use super::consts::*;
 use super::frame::Frame;
-use super::pixel_unpack::element_size as type_size;
+use super::pixel_unpack::{element_size as type_size, format_and_type_error};
 use super::types::*;
 use super::Gl;
 
@@ -25,9 +25,10 @@ impl Gl {
     /// `glReadPixels(x, y, width, height, GL_STENCIL_INDEX, type, pixels)` into `out`: `window`
     /// draws what was recorded and returns the stencil buffer, rows top to bottom. Errors, in
     /// Mesa's order: inside `begin`/`end` (`GL_INVALID_OPERATION`), a negative size
-    /// (`GL_INVALID_VALUE`), an unknown type (`GL_INVALID_ENUM`), no stencil buffer
-    /// (`GL_INVALID_OPERATION`), a non-empty `out` shorter than [`Gl::packed_image_len`]
-    /// (`GL_INVALID_VALUE`). Pixels outside the window are left as they were.
+    /// (`GL_INVALID_VALUE`), a packed type (`GL_INVALID_OPERATION`), an unknown type
+    /// (`GL_INVALID_ENUM`), no stencil buffer (`GL_INVALID_OPERATION`), a non-empty `out`
+    /// shorter than [`Gl::packed_image_len`] (`GL_INVALID_VALUE`). Pixels outside the window are
+    /// left as they were.
     pub fn read_stencil_pixels(
         &mut self,
         (x, y): (GLint, GLint),
@@ -41,6 +42,11 @@ impl Gl {
         }
         if width < 0 || height < 0 {
             return self.set_error(GL_INVALID_VALUE);
+        }
+        // A packed type is GL_INVALID_OPERATION with any index format (Mesa's
+        // `_mesa_error_check_format_and_type`, measured in pack_types.calls).
+        if let Some(error) = format_and_type_error(GL_STENCIL_INDEX, type_) {
+            return self.set_error(error);
         }
         let Some(size) = type_size(type_) else { return self.set_error(GL_INVALID_ENUM) };
         if self.server.framebuffer.stencil_bits == 0 {

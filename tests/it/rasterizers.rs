@@ -884,7 +884,11 @@ fn combine_is_mesas_on_both_rasterisers() {
         (GL_ALPHA, (GL_ADD, [T, V, K], [SC, SC, SA], 1.0), (GL_REPLACE, [T, V, K], [SA, SA, SA], 1.0)),
         (GL_INTENSITY, (GL_ADD, [T, K, K], [SC, SC, SA], 1.0), (GL_ADD, [T, K, K], [SA, SA, SA], 1.0)),
         (GL_LUMINANCE_ALPHA, (GL_REPLACE, [T, V, K], [SA, SC, SA], 1.0), (GL_REPLACE, [T, V, K], [MA, SA, SA], 1.0)),
-        (GL_RGB, (GL_REPLACE, [GL_TEXTURE0, V, K], [SC, SC, SA], 1.0), (GL_REPLACE, [GL_TEXTURE0, V, K], [SA, SA, SA], 1.0)),
+        (
+            GL_RGB,
+            (GL_REPLACE, [GL_TEXTURE0, V, K], [SC, SC, SA], 1.0),
+            (GL_REPLACE, [GL_TEXTURE0, V, K], [SA, SA, SA], 1.0),
+        ),
     ];
     let mesa: [[u8; 4]; 16] = [
         [102, 38, 102, 96],

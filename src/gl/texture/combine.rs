@@ -83,14 +83,18 @@ impl Combine {
         let (slot, ok) = match pname {
             GL_COMBINE_RGB | GL_COMBINE_ALPHA => {
                 let dot3 = !alpha && matches!(v, GL_DOT3_RGB | GL_DOT3_RGBA);
-                let common = matches!(v, GL_REPLACE | GL_MODULATE | GL_ADD | GL_ADD_SIGNED | GL_INTERPOLATE | GL_SUBTRACT);
+                let common =
+                    matches!(v, GL_REPLACE | GL_MODULATE | GL_ADD | GL_ADD_SIGNED | GL_INTERPOLATE | GL_SUBTRACT);
                 (&mut half.function, common || dot3)
             }
             GL_SOURCE0_RGB..=GL_SOURCE2_RGB | GL_SOURCE0_ALPHA..=GL_SOURCE2_ALPHA => {
                 let k = ((pname - GL_SOURCE0_RGB) % 8) as usize;
                 // Mesa's fixed function has 8 units, each a crossbar source.
                 let units = GL_TEXTURE0..=GL_TEXTURE7;
-                (&mut half.sources[k], matches!(v, GL_TEXTURE | GL_CONSTANT | GL_PRIMARY_COLOR | GL_PREVIOUS) || units.contains(&v))
+                (
+                    &mut half.sources[k],
+                    matches!(v, GL_TEXTURE | GL_CONSTANT | GL_PRIMARY_COLOR | GL_PREVIOUS) || units.contains(&v),
+                )
             }
             _ => {
                 let k = ((pname - GL_OPERAND0_RGB) % 8) as usize;
@@ -213,7 +217,12 @@ mod tests {
         c.rgb.scale = 2;
         let s = c.apply(texel, primary, constant);
         assert!((s[1] - (0.6 + 0.25 - 0.5) * 2.0).abs() < 1e-6 && s[0] == 1.0, "scaled and clamped: {s:?}");
-        c.rgb = Combiner { function: GL_DOT3_RGBA, sources: [GL_TEXTURE, GL_CONSTANT, GL_CONSTANT], operands: [GL_SRC_COLOR; 3], scale: 1 };
+        c.rgb = Combiner {
+            function: GL_DOT3_RGBA,
+            sources: [GL_TEXTURE, GL_CONSTANT, GL_CONSTANT],
+            operands: [GL_SRC_COLOR; 3],
+            scale: 1,
+        };
         // 4·((0.8−½)(0.2−½) + (0.6−½)(0.4−½) + (0.4−½)(0.6−½)) = 4·(−0.09 − 0.01 − 0.01) < 0.
         assert_eq!(c.apply(texel, primary, constant), [0.0; 4]);
         c.rgb.sources = [GL_TEXTURE, GL_TEXTURE, GL_CONSTANT];
@@ -223,9 +232,20 @@ mod tests {
 
     #[test]
     fn operands_and_sources_select_as_gl_says() {
-        let mut c = Combine::default();
-        c.rgb = Combiner { function: GL_REPLACE, sources: [GL_CONSTANT; 3], operands: [GL_ONE_MINUS_SRC_ALPHA; 3], scale: 1 };
-        c.alpha = Combiner { function: GL_SUBTRACT, sources: [GL_PRIMARY_COLOR, GL_TEXTURE, GL_TEXTURE], operands: [GL_SRC_ALPHA; 3], scale: 4 };
+        let c = Combine {
+            rgb: Combiner {
+                function: GL_REPLACE,
+                sources: [GL_CONSTANT; 3],
+                operands: [GL_ONE_MINUS_SRC_ALPHA; 3],
+                scale: 1,
+            },
+            alpha: Combiner {
+                function: GL_SUBTRACT,
+                sources: [GL_PRIMARY_COLOR, GL_TEXTURE, GL_TEXTURE],
+                operands: [GL_SRC_ALPHA; 3],
+                scale: 4,
+            },
+        };
         let out = c.apply([0.0, 0.0, 0.0, 0.125], [0.0, 0.0, 0.0, 0.375], [0.0, 0.0, 0.0, 0.25]);
         assert_eq!(out, [0.75, 0.75, 0.75, 1.0]);
         assert_eq!(texture_source(GL_ALPHA, [0.3, 0.3, 0.3, 0.7]), [0.0, 0.0, 0.0, 0.7]);
@@ -242,6 +262,9 @@ mod tests {
         assert_eq!(c.set(GL_OPERAND1_ALPHA, GL_SRC_COLOR as f32), Err(GL_INVALID_ENUM));
         assert_eq!(c.set(GL_RGB_SCALE, 1.5), Err(GL_INVALID_VALUE));
         assert_eq!(c.set(GL_ALPHA_SCALE, 4.0), Ok(()));
-        assert_eq!((c.get(GL_COMBINE_RGB), c.get(GL_SOURCE2_ALPHA), c.get(GL_ALPHA_SCALE)), (GL_DOT3_RGBA as f32, GL_TEXTURE7 as f32, 4.0));
+        assert_eq!(
+            (c.get(GL_COMBINE_RGB), c.get(GL_SOURCE2_ALPHA), c.get(GL_ALPHA_SCALE)),
+            (GL_DOT3_RGBA as f32, GL_TEXTURE7 as f32, 4.0)
+        );
     }
 }

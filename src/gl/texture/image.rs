@@ -65,7 +65,7 @@ impl Gl {
     /// `glTexImage3D` (GL 1.2 §3.8.1): as [`Gl::tex_image_2d`] for the bound 3D texture (or
     /// `GL_PROXY_TEXTURE_3D`), `depth` images read one after the other, each as a 2D image is,
     /// `GL_UNPACK_IMAGE_HEIGHT` rows apart, after `GL_UNPACK_SKIP_IMAGES` images. Sides up to
-    /// [`super::MAX_3D_TEXTURE_SIZE`]; Mesa's errors in Mesa's order
+    /// [`crate::gl::MAX_3D_TEXTURE_SIZE`]; Mesa's errors in Mesa's order
     /// (`tests/reference/calls/cases/texture_3d.calls`).
     #[allow(clippy::too_many_arguments)]
     pub fn tex_image_3d<P: bytemuck::Pod>(

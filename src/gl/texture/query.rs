@@ -5,6 +5,7 @@
 //! in Mesa's order and its conversions.
 
 use super::super::consts::*;
+use super::super::pixel_packed::Source;
 use super::super::state_var::{c_int, float_to_int, iround};
 use super::super::types::*;
 use super::super::variants::GlComponent;
@@ -360,8 +361,8 @@ impl Gl {
     /// `glGetTexImage(target, level, format, type, pixels)`: the level's texels converted to
     /// `format` and `type_` and packed with the pack modes, as `glReadPixels` packs (GL 1.1
     /// §6.1.4). Errors in Mesa's order: target (`GL_INVALID_ENUM`), level (`GL_INVALID_VALUE`),
-    /// format and type (`GL_INVALID_ENUM`; depth, stencil and colour-index formats
-    /// `GL_INVALID_OPERATION`), a non-empty `pixels` shorter than [`Gl::tex_image_len`]
+    /// format and type (`GL_INVALID_ENUM`; a packed type the format does not go with, and
+    /// depth, stencil and colour-index formats `GL_INVALID_OPERATION`), a non-empty `pixels` shorter than [`Gl::tex_image_len`]
     /// (`GL_INVALID_VALUE`). An undefined level, or an empty `pixels` (C's NULL), writes
     /// nothing.
     pub fn get_tex_image(&mut self, target: GLenum, level: GLint, format: GLenum, type_: GLenum, pixels: &mut [u8]) {
@@ -394,11 +395,14 @@ impl Gl {
             .map(|[r, g, b, a]| if luminance { [r, 0.0, 0.0, a] } else { [r, g, b, a] })
             .collect();
         let (w, h) = (l.width as usize, l.height as usize);
-        // Below 3D the image modes do nothing.
+        // Below 3D the image modes do nothing. The texels are bytes and glGetTexImage has no
+        // pixel transfer (measured: a red scale of 0.5 leaves them as they are), so Mesa
+        // converts them as integers.
         let images = if t == 2 { self.packed_image_stride((w, h), format, type_) } else { None };
         let (stride, skipped) = images.unwrap_or((0, 0));
         for (k, image) in rgba.chunks_exact((w * h).max(1)).enumerate() {
-            self.pack_rgba(image, (w, h), (format, type_), &mut pixels[(skipped + k) * stride..]);
+            let out = &mut pixels[(skipped + k) * stride..];
+            self.pack_rgba(image, (w, h), (format, type_, Source::Unorm8), out);
         }
     }
 }
