@@ -14,7 +14,9 @@ struct Fragment {
     // GL_CLAMP in s and t: 0 not, 1 with nearest filtering, 2 with linear filtering. The
     // coordinate is clamped to [0, 1] before filtering (GL 1.1 §3.8.6), so linear filtering at
     // the edge mixes in the border colour (`border_color`); the sampler clamps to the edge,
-    // and the share of the filter that falls outside is replaced by the border here.
+    // and the share of the filter that falls outside is replaced by the border here. GL 1.3's
+    // GL_CLAMP_TO_BORDER: 3 with nearest, 4 with linear filtering (not clamped; outside is
+    // the border).
     clamp_s: u32,
     clamp_t: u32,
     color: vec4<f32>,
@@ -59,7 +61,8 @@ fn fragment_ops(color_in: vec4<f32>, secondary: vec4<f32>, tex: vec4<f32>, fog: 
     // (s/q, t/q, r/q); GL's first image row is t = 0, uploaded as row 0, its first image r = 0.
     let q = select(1.0, tex.w, tex.w != 0.0);
     let str = tex.xyz / q;
-    let clamped = vec3<bool>(env.clamp_s != 0u, env.clamp_t != 0u, env.clamp_r != 0u);
+    let clamp_modes = vec3<u32>(env.clamp_s, env.clamp_t, env.clamp_r);
+    let clamped = (clamp_modes == vec3<u32>(1u)) | (clamp_modes == vec3<u32>(2u));
     let coord = select(str, clamp(str, vec3<f32>(0.0), vec3<f32>(1.0)), clamped);
     // Both images are sampled (a blank one stands for the other), so that each sample stays
     // in uniform control flow.
@@ -79,17 +82,30 @@ fn fragment_ops(color_in: vec4<f32>, secondary: vec4<f32>, tex: vec4<f32>, fog: 
     return color;
 }
 
-// The share of a linear filter at `coord` that lies on the texture rather than on GL_CLAMP's
-// border (1 away from the edges): the edge texel's weight where the sampler duplicated it.
+// The share of the filter at `coord` that lies on the texture rather than on the border of
+// GL_CLAMP or GL_CLAMP_TO_BORDER (1 away from the edges): a linear filter's weight on texels
+// inside (the sampler duplicated the edge texel), a nearest one's 1 or 0.
 fn inside_border(coord: vec3<f32>, three_d: bool) -> f32 {
     let flat = vec3<f32>(vec2<f32>(textureDimensions(tex_image, 0)), 1.0);
     let size = select(flat, vec3<f32>(textureDimensions(tex_image_3d, 0)), three_d);
     let u = coord * size - 0.5;
-    let inside = clamp(min(u + 1.0, size - u), vec3<f32>(0.0), vec3<f32>(1.0));
-    let s = select(1.0, inside.x, env.clamp_s == 2u);
-    let t = select(1.0, inside.y, env.clamp_t == 2u);
-    let r = select(1.0, inside.z, env.clamp_r == 2u && three_d);
+    let linear = clamp(min(u + 1.0, size - u), vec3<f32>(0.0), vec3<f32>(1.0));
+    // GL_CLAMP_TO_BORDER's nearest texel: on the texture or not.
+    let texel = floor(coord * size);
+    let nearest = select(vec3<f32>(0.0), vec3<f32>(1.0), (texel >= vec3<f32>(0.0)) & (texel < size));
+    let s = axis_share(env.clamp_s, linear.x, nearest.x);
+    let t = axis_share(env.clamp_t, linear.y, nearest.y);
+    let r = select(1.0, axis_share(env.clamp_r, linear.z, nearest.z), three_d);
     return s * t * r;
+}
+
+// The share along one axis by its clamp mode (see `Fragment.clamp_s`).
+fn axis_share(mode: u32, linear: f32, nearest: f32) -> f32 {
+    switch mode {
+        case 2u, 4u: { return linear; }
+        case 3u: { return nearest; }
+        default: { return 1.0; }
+    }
 }
 
 // Whether the polygon stipple keeps the fragment at framebuffer position `p` (y down, pixel

@@ -147,9 +147,10 @@ pub fn error_name(code: GLenum) -> &'static str {
 /// stencil operations (`stencil.rs`), `GL_RESCALE_NORMAL` (`frame.rs`), `GL_CLAMP_TO_EDGE`
 /// and the texture level and LOD range (`texture/params.rs`), 3D textures (`texture/image.rs`),
 /// BGRA and the packed pixel types (`pixel_packed.rs`), `GL_ADD` and the combiner with DOT3
-/// (`texture/combine.rs`).
+/// (`texture/combine.rs`), `GL_CLAMP_TO_BORDER` and `GL_MIRRORED_REPEAT`
+/// (`render/soft/sampler.rs`, `shaders/fragment.wgsl`).
 const EXTENSIONS: &str =
-    "GL_ARB_texture_env_add GL_ARB_texture_env_combine GL_ARB_texture_env_dot3 GL_ARB_window_pos GL_EXT_bgra GL_EXT_blend_color GL_EXT_blend_equation_separate GL_EXT_blend_func_separate GL_EXT_blend_minmax GL_EXT_blend_subtract GL_EXT_draw_range_elements GL_EXT_multi_draw_arrays GL_EXT_packed_pixels GL_EXT_rescale_normal GL_EXT_stencil_wrap GL_EXT_texture3D GL_EXT_texture_edge_clamp GL_EXT_texture_env_add GL_EXT_texture_env_combine GL_NV_blend_square GL_SGIS_texture_edge_clamp GL_SGIS_texture_lod";
+    "GL_ARB_texture_border_clamp GL_ARB_texture_env_add GL_ARB_texture_env_combine GL_ARB_texture_env_dot3 GL_ARB_texture_mirrored_repeat GL_ARB_window_pos GL_EXT_bgra GL_EXT_blend_color GL_EXT_blend_equation_separate GL_EXT_blend_func_separate GL_EXT_blend_minmax GL_EXT_blend_subtract GL_EXT_draw_range_elements GL_EXT_multi_draw_arrays GL_EXT_packed_pixels GL_EXT_rescale_normal GL_EXT_stencil_wrap GL_EXT_texture3D GL_EXT_texture_edge_clamp GL_EXT_texture_env_add GL_EXT_texture_env_combine GL_IBM_texture_mirrored_repeat GL_NV_blend_square GL_SGIS_texture_border_clamp GL_SGIS_texture_edge_clamp GL_SGIS_texture_lod";
 
 /// A GL context without a GPU: GL state plus the recording of what is drawn.
 ///
@@ -559,9 +560,11 @@ mod tests {
         assert!(gl.get_string(GL_VERSION).is_some_and(|v| v.starts_with("1.2 ")));
         // The claims, spelled out: a new one is a decision, made here as well.
         let claimed = [
+            "GL_ARB_texture_border_clamp",
             "GL_ARB_texture_env_add",
             "GL_ARB_texture_env_combine",
             "GL_ARB_texture_env_dot3",
+            "GL_ARB_texture_mirrored_repeat",
             "GL_ARB_window_pos",
             "GL_EXT_bgra",
             "GL_EXT_blend_color",
@@ -578,7 +581,9 @@ mod tests {
             "GL_EXT_texture_edge_clamp",
             "GL_EXT_texture_env_add",
             "GL_EXT_texture_env_combine",
+            "GL_IBM_texture_mirrored_repeat",
             "GL_NV_blend_square",
+            "GL_SGIS_texture_border_clamp",
             "GL_SGIS_texture_edge_clamp",
             "GL_SGIS_texture_lod",
         ];

@@ -166,7 +166,8 @@ pub(crate) struct GpuFragment {
     /// 5 `GL_INTENSITY`.
     pub format: u32,
     /// `GL_CLAMP` in s: 0 not, 1 with nearest, 2 with linear filtering (the shader clamps the
-    /// coordinate to [0, 1] and mixes in the border colour).
+    /// coordinate to [0, 1] and mixes in the border colour); `GL_CLAMP_TO_BORDER`: 3 with
+    /// nearest, 4 with linear (the border replaces what lies outside).
     pub clamp_s: u32,
     /// `GL_CLAMP` in t, likewise.
     pub clamp_t: u32,

@@ -61,14 +61,12 @@ impl GpuFragment {
         };
         let linear = texture.params.mag_filter == GL_LINEAR
             && matches!(texture.params.min_filter, GL_LINEAR | GL_LINEAR_MIPMAP_NEAREST | GL_LINEAR_MIPMAP_LINEAR);
-        let clamp = |w: GLenum| {
-            if w != GL_CLAMP {
-                0
-            } else if linear {
-                2
-            } else {
-                1
-            }
+        let clamp = |w: GLenum| match (w, linear) {
+            (GL_CLAMP, false) => 1,
+            (GL_CLAMP, true) => 2,
+            (GL_CLAMP_TO_BORDER, false) => 3,
+            (GL_CLAMP_TO_BORDER, true) => 4,
+            _ => 0,
         };
         let clamp_t = if texture.dims == 1 { 0 } else { clamp(texture.params.wrap_t) };
         let clamp_r = if texture.dims == 3 { clamp(texture.params.wrap_r) } else { 0 };
@@ -246,9 +244,9 @@ fn upload(device: &wgpu::Device, queue: &wgpu::Queue, texture: &BoundTexture) ->
     gpu.create_view(&Default::default())
 }
 
-/// GL's filters and wrap modes as a wgpu sampler (GL 1.1 §3.8.5–3.8.8). `GL_CLAMP` clamps to
-/// the edge here; the shader clamps the coordinate and mixes in the border colour, the same on
-/// every backend. A 1D texture ignores t; r is wrapped for a 3D texture only.
+/// GL's filters and wrap modes as a wgpu sampler (GL 1.1 §3.8.5–3.8.8). `GL_CLAMP` and
+/// `GL_CLAMP_TO_BORDER` clamp to the edge here; the shader clamps the coordinate (`GL_CLAMP`)
+/// and mixes in the border colour, the same on every backend (WebGPU has no border colour). A 1D texture ignores t; r is wrapped for a 3D texture only.
 fn sampler(device: &wgpu::Device, params: &TexParams, dims: u8) -> wgpu::Sampler {
     let filter = |f: GLenum| if f == GL_NEAREST { wgpu::FilterMode::Nearest } else { wgpu::FilterMode::Linear };
     let (min, mip) = match params.min_filter {
@@ -262,7 +260,11 @@ fn sampler(device: &wgpu::Device, params: &TexParams, dims: u8) -> wgpu::Sampler
     // A NaN bound clamps nothing, as on the CPU (`LodRange::clamp`); WebGPU takes no NaN.
     let lod_min = if params.lod.min.is_nan() { 0.0 } else { params.lod.min.clamp(0.0, 32.0) };
     let lod_max = if params.lod.max.is_nan() { 32.0 } else { params.lod.max.clamp(lod_min, 32.0) };
-    let wrap = |w: GLenum| if w == GL_REPEAT { wgpu::AddressMode::Repeat } else { wgpu::AddressMode::ClampToEdge };
+    let wrap = |w: GLenum| match w {
+        GL_REPEAT => wgpu::AddressMode::Repeat,
+        GL_MIRRORED_REPEAT => wgpu::AddressMode::MirrorRepeat,
+        _ => wgpu::AddressMode::ClampToEdge,
+    };
     let v = if dims == 1 { wgpu::AddressMode::Repeat } else { wrap(params.wrap_t) };
     let w = if dims == 3 { wrap(params.wrap_r) } else { wgpu::AddressMode::Repeat };
     device.create_sampler(&wgpu::SamplerDescriptor {

@@ -948,3 +948,117 @@ fn combine_is_mesas_on_both_rasterisers() {
         }
     }
 }
+
+/// GL 1.3's `GL_CLAMP_TO_BORDER` and GL 1.4's `GL_MIRRORED_REPEAT` on both rasterisers, against
+/// what Mesa 22.3 (llvmpipe, OSMesa) drew for the same calls
+/// (`tests/reference/pixels/wrap_modes.c` prints these values): a 2 × 2 texture (red, green /
+/// blue, white) with border colour (1, 0, 1, 1), nearest and linear, on an 8 × 8 square whose
+/// coordinates reach a half (or one and a half) beyond the texture on each side; the diagonal's
+/// pixels, within 2/255.
+#[test]
+fn wrap_modes_are_mesas_on_both_rasterisers() {
+    let setups = [
+        (GL_CLAMP_TO_BORDER, GL_CLAMP_TO_BORDER, GL_NEAREST, 0.5),
+        (GL_CLAMP_TO_BORDER, GL_CLAMP_TO_BORDER, GL_LINEAR, 0.5),
+        (GL_MIRRORED_REPEAT, GL_MIRRORED_REPEAT, GL_NEAREST, 1.5),
+        (GL_MIRRORED_REPEAT, GL_MIRRORED_REPEAT, GL_LINEAR, 1.5),
+        (GL_MIRRORED_REPEAT, GL_CLAMP_TO_BORDER, GL_LINEAR, 0.5),
+        (GL_CLAMP_TO_BORDER, GL_REPEAT, GL_LINEAR, 1.5),
+    ];
+    let mesa: [[[u8; 4]; 8]; 6] = [
+        [
+            [255, 0, 255, 255],
+            [255, 0, 255, 255],
+            [255, 0, 0, 255],
+            [255, 0, 0, 255],
+            [255, 255, 255, 255],
+            [255, 255, 255, 255],
+            [255, 0, 255, 255],
+            [255, 0, 255, 255],
+        ],
+        [
+            [255, 0, 255, 255],
+            [255, 0, 239, 255],
+            [255, 0, 112, 255],
+            [159, 64, 64, 255],
+            [159, 191, 191, 255],
+            [255, 143, 255, 255],
+            [255, 16, 255, 255],
+            [255, 0, 255, 255],
+        ],
+        [
+            [255, 255, 255, 255],
+            [255, 255, 255, 255],
+            [255, 0, 0, 255],
+            [255, 0, 0, 255],
+            [255, 255, 255, 255],
+            [255, 255, 255, 255],
+            [255, 0, 0, 255],
+            [255, 0, 0, 255],
+        ],
+        [
+            [255, 255, 255, 255],
+            [255, 255, 255, 255],
+            [255, 0, 0, 255],
+            [255, 0, 0, 255],
+            [255, 255, 255, 255],
+            [255, 255, 255, 255],
+            [255, 0, 0, 255],
+            [255, 0, 0, 255],
+        ],
+        [
+            [255, 0, 255, 255],
+            [255, 0, 191, 255],
+            [255, 0, 64, 255],
+            [159, 64, 64, 255],
+            [159, 191, 191, 255],
+            [255, 191, 255, 255],
+            [255, 64, 255, 255],
+            [255, 0, 255, 255],
+        ],
+        [
+            [255, 0, 255, 255],
+            [255, 0, 255, 255],
+            [255, 0, 255, 255],
+            [255, 0, 0, 255],
+            [255, 255, 255, 255],
+            [255, 0, 255, 255],
+            [255, 0, 255, 255],
+            [255, 0, 255, 255],
+        ],
+    ];
+    let mut renderer = optional_renderer();
+    for (k, ((wrap_s, wrap_t, filter, reach), expected)) in setups.into_iter().zip(mesa).enumerate() {
+        let mut gl = Gl::new(8, 8);
+        gl.pixel_storei(GL_UNPACK_ALIGNMENT, 1);
+        let texels = [255u8, 0, 0, 0, 255, 0, 0, 0, 255, 255, 255, 255];
+        gl.tex_image_2d(GL_TEXTURE_2D, 0, GL_RGB as i32, 2, 2, 0, GL_RGB, GL_UNSIGNED_BYTE, &texels);
+        gl.tex_parameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, &[1.0, 0.0, 1.0, 1.0]);
+        gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE as i32);
+        gl.enable(GL_TEXTURE_2D);
+        gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, wrap_s as i32);
+        gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, wrap_t as i32);
+        gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter as i32);
+        gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filter as i32);
+        let (lo, hi) = (-reach, 1.0 + reach);
+        gl.begin(GL_QUADS);
+        for (s, t, x, y) in [(lo, lo, -1.0, -1.0), (hi, lo, 1.0, -1.0), (hi, hi, 1.0, 1.0), (lo, hi, -1.0, 1.0)] {
+            gl.tex_coord2f(s, t);
+            gl.vertex2f(x, y);
+        }
+        gl.end();
+        assert_eq!(gl.get_error(), GL_NO_ERROR);
+        let frame = gl.take_frame();
+        let diagonal = |pixels: &[u8]| -> Vec<[u8; 4]> {
+            (0..8).map(|i| pixels[((7 - i) * 8 + i) * 4..][..4].try_into().unwrap()).collect()
+        };
+        let close =
+            |got: &[[u8; 4]]| got.iter().zip(&expected).all(|(g, e)| g.iter().zip(e).all(|(a, b)| a.abs_diff(*b) <= 2));
+        let soft = diagonal(&soft::render_frame(&frame, 8, 8).pixels);
+        assert!(close(&soft), "CPU, set-up {k}: {soft:?}, Mesa {expected:?}");
+        if let Some(renderer) = renderer.as_mut() {
+            let wgpu = diagonal(&renderer.render_frame(&frame, 8, 8).expect("wgpu renders").pixels);
+            assert!(close(&wgpu), "wgpu, set-up {k}: {wgpu:?}, Mesa {expected:?}");
+        }
+    }
+}

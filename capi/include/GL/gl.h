@@ -1444,6 +1444,17 @@ GLAPI void GLAPIENTRY glGetTexGeniv(GLenum coord, GLenum pname, GLint *params);
 #define GL_UNSIGNED_INT_10_10_10_2_EXT 0x8036
 #define GL_EXT_texture3D 1
 
+/* GL 1.3's GL_CLAMP_TO_BORDER and GL 1.4's GL_MIRRORED_REPEAT by their extensions' names. */
+#define GL_ARB_texture_border_clamp 1
+#define GL_SGIS_texture_border_clamp 1
+#define GL_CLAMP_TO_BORDER_ARB 0x812D
+#define GL_CLAMP_TO_BORDER_SGIS 0x812D
+#define GL_ARB_texture_mirrored_repeat 1
+#define GL_IBM_texture_mirrored_repeat 1
+#define GL_MIRRORED_REPEAT 0x8370
+#define GL_MIRRORED_REPEAT_ARB 0x8370
+#define GL_MIRRORED_REPEAT_IBM 0x8370
+
 /* GL 1.3's GL_ADD and GL_COMBINE environments (with DOT3) by their extensions' names. */
 #define GL_ARB_texture_env_add 1
 #define GL_EXT_texture_env_add 1

@@ -11,6 +11,9 @@ use crate::gl::pixel_unpack::{format_and_type_error, image_stride, unpack_each};
 use crate::gl::types::*;
 use crate::gl::Gl;
 
+/// The most bytes a level's texels may take (4 a texel): llvmpipe's limit, about 1.75 GiB.
+const MAX_LEVEL_BYTES: usize = 7 << 28;
+
 /// A box of texels in a level: its first texel (x, y, z) and its size (width, height, depth);
 /// z is 0 and the depth 1 below 3D, y 0 and the height 1 in 1D.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -133,6 +136,13 @@ impl Gl {
             return self.set_error(GL_INVALID_VALUE);
         }
         let [w, h, d] = size.map(|s| s as usize);
+        // Too large for memory: a proxy of nothing, or GL_OUT_OF_MEMORY, as llvmpipe answers
+        // (`llvmpipe_can_create_resource`; measured: 2048³ RGBA does not fit, 1024² × 447
+        // does, about 1.75 GiB).
+        let fits = fits && (w * h * d).checked_mul(4).is_some_and(|bytes| bytes <= MAX_LEVEL_BYTES);
+        if !fits && !proxy {
+            return self.set_error(GL_OUT_OF_MEMORY);
+        }
         if proxy {
             // A proxy keeps the sizes and border as given (Mesa strips real images only).
             let image =
@@ -141,7 +151,12 @@ impl Gl {
             return object.define_level(level as usize, image, (base, internalformat), if fits { border } else { 0 });
         }
         let texels = if bytes.is_empty() {
-            vec![[0; 4]; w * h * d]
+            let mut texels = Vec::new();
+            if texels.try_reserve_exact(w * h * d).is_err() {
+                return self.set_error(GL_OUT_OF_MEMORY);
+            }
+            texels.resize(w * h * d, [0; 4]);
+            texels
         } else {
             match self.unpack_texels(dims, (format, type_), [w, h, d], bytes) {
                 Some(texels) => texels,
@@ -281,7 +296,7 @@ impl Gl {
         }
         let defined = usize::try_from(level)
             .ok()
-            .and_then(|l| self.bound_object(dims).levels.get(l).cloned().flatten())
+            .and_then(|l| self.bound_object(dims).levels.get(l)?.as_ref())
             .map(|l| [l.width, l.height, l.depth].map(i64::from));
         let Some(extent) = defined else {
             self.set_error(GL_INVALID_OPERATION);
@@ -345,8 +360,15 @@ impl Gl {
             (0, 0)
         };
         let mut texels = Vec::with_capacity(w * h * d);
+        // RGBA bytes without a transfer are the texels as they are (c/255 converted back is c):
+        // copied row by row, the common case of large images.
+        let as_they_are = format == GL_RGBA && type_ == GL_UNSIGNED_BYTE && transfer.is_none();
         for k in 0..d {
             let image = bytes.get((skipped + k) * stride..)?;
+            if as_they_are {
+                copy_rgba8(store, (w, h), image, &mut texels)?;
+                continue;
+            }
             unpack_each(store, (w as GLsizei, h as GLsizei), format, type_, image, |c| {
                 let c = match format {
                     GL_COLOR_INDEX => self.index_to_rgba(c[0]),
@@ -357,4 +379,27 @@ impl Gl {
         }
         Some(texels)
     }
+}
+
+/// Appends a `w` × `h` image of RGBA bytes as [`unpack_each`] reads it under `store` (rows
+/// padded to the alignment, rows and pixels skipped); `None` if `image` is short.
+fn copy_rgba8(
+    store: crate::gl::pixels::PixelStore,
+    (w, h): (usize, usize),
+    image: &[u8],
+    texels: &mut Vec<[u8; 4]>,
+) -> Option<()> {
+    if w == 0 || h == 0 {
+        return Some(());
+    }
+    let stride = store.row_stride(w, 4, 1);
+    let first = store.first_byte(stride, 4);
+    if image.len() < first + (h - 1) * stride + 4 * w {
+        return None;
+    }
+    for row in 0..h {
+        let bytes = &image[first + row * stride..][..4 * w];
+        texels.extend(bytes.chunks_exact(4).map(|p| [p[0], p[1], p[2], p[3]]));
+    }
+    Some(())
 }

@@ -12,7 +12,9 @@ use crate::gl::Gl;
 
 impl Gl {
     /// `glTexParameteri` for `GL_TEXTURE_MIN_FILTER`, `GL_TEXTURE_MAG_FILTER`,
-    /// `GL_TEXTURE_WRAP_S`, `GL_TEXTURE_WRAP_T` and `GL_TEXTURE_WRAP_R`, and GL 1.2's
+    /// `GL_TEXTURE_WRAP_S`, `GL_TEXTURE_WRAP_T` and `GL_TEXTURE_WRAP_R` (`GL_REPEAT`,
+    /// `GL_CLAMP`, GL 1.2's `GL_CLAMP_TO_EDGE`, 1.3's `GL_CLAMP_TO_BORDER`, 1.4's
+    /// `GL_MIRRORED_REPEAT`), and GL 1.2's
     /// `GL_TEXTURE_BASE_LEVEL` and `GL_TEXTURE_MAX_LEVEL`, of the bound object. Another target or
     /// name, or a value the name does not take → `GL_INVALID_ENUM`; a negative level →
     /// `GL_INVALID_VALUE`.
@@ -31,7 +33,7 @@ impl Gl {
             GL_TEXTURE_MIN_FILTER => value == GL_NEAREST || value == GL_LINEAR || mipmap_filters.contains(&value),
             GL_TEXTURE_MAG_FILTER => value == GL_NEAREST || value == GL_LINEAR,
             GL_TEXTURE_WRAP_S | GL_TEXTURE_WRAP_T | GL_TEXTURE_WRAP_R => {
-                matches!(value, GL_REPEAT | GL_CLAMP | GL_CLAMP_TO_EDGE)
+                matches!(value, GL_REPEAT | GL_CLAMP | GL_CLAMP_TO_EDGE | GL_CLAMP_TO_BORDER | GL_MIRRORED_REPEAT)
             }
             GL_TEXTURE_BASE_LEVEL | GL_TEXTURE_MAX_LEVEL => true,
             _ => false,

@@ -73,8 +73,9 @@ impl<'a> Program<'a> {
 }
 
 /// The texel for (s, t, r, q): s/q, t/q (and r/q for a 3D texture), clamped to [0, 1] under
-/// `GL_CLAMP`, filtered, and with a linear filter at a `GL_CLAMP` edge the share falling on the
-/// border given the border colour, as `inside_border` does in `fragment.wgsl`.
+/// `GL_CLAMP`, filtered, and with a linear filter at a `GL_CLAMP` edge, or anywhere outside
+/// under GL 1.3's `GL_CLAMP_TO_BORDER`, the share falling on the border given the border
+/// colour, as `inside_border` does in `fragment.wgsl`.
 fn texel(texture: &BoundTexture, sampler: &Sampler<'_>, tex: [f32; 4], slope: &TexSlope) -> [f32; 4] {
     let project = |t: [f32; 4]| {
         let q = if t[3] != 0.0 { t[3] } else { 1.0 };
@@ -87,23 +88,34 @@ fn texel(texture: &BoundTexture, sampler: &Sampler<'_>, tex: [f32; 4], slope: &T
     };
     let (dx, dy) = (at(slope.dx), at(slope.dy));
     let params = &texture.params;
-    let clamped = [
-        params.wrap_s == GL_CLAMP,
-        params.wrap_t == GL_CLAMP && texture.dims > 1,
-        params.wrap_r == GL_CLAMP && texture.dims == 3,
-    ];
+    let wraps = [params.wrap_s, params.wrap_t, params.wrap_r];
+    // The coordinates a texture of these dimensions reads: s, t below 1D's, r in 3D only.
+    let used = |k: usize| k < usize::from(texture.dims);
+    let clamped: [bool; 3] = std::array::from_fn(|k| used(k) && wraps[k] == GL_CLAMP);
+    let bordered: [bool; 3] = std::array::from_fn(|k| used(k) && wraps[k] == GL_CLAMP_TO_BORDER);
     let coord: [f32; 3] = std::array::from_fn(|k| if clamped[k] { str[k].clamp(0.0, 1.0) } else { str[k] });
     let sample = sampler.sample(coord, dx, dy);
     let linear = params.mag_filter == GL_LINEAR
         && matches!(params.min_filter, GL_LINEAR | GL_LINEAR_MIPMAP_NEAREST | GL_LINEAR_MIPMAP_LINEAR);
-    if !linear || !clamped.contains(&true) {
+    if !(clamped.contains(&true) && linear) && !bordered.contains(&true) {
         return sample;
     }
     let base = &texture.levels[0];
-    let inside = |c: f32, size: u32, clamped: bool| {
-        let u = c * size as f32 - 0.5;
-        if clamped {
-            (u + 1.0).min(size as f32 - u).clamp(0.0, 1.0)
+    // The share of the filter on the texture along one axis: a linear filter's weight on
+    // texels inside (the sampler clamped to the edge, so the edge texel stands in for the
+    // border's); for GL_CLAMP_TO_BORDER's nearest filter, whether the texel is inside.
+    let inside = |c: f32, size: u32, k: usize| {
+        let size = size as f32;
+        if linear && (clamped[k] || bordered[k]) {
+            let u = c * size - 0.5;
+            (u + 1.0).min(size - u).clamp(0.0, 1.0)
+        } else if bordered[k] {
+            let i = (c * size).floor();
+            if (0.0..size).contains(&i) {
+                1.0
+            } else {
+                0.0
+            }
         } else {
             1.0
         }
@@ -111,7 +123,7 @@ fn texel(texture: &BoundTexture, sampler: &Sampler<'_>, tex: [f32; 4], slope: &T
     let share = [base.width, base.height, base.depth]
         .into_iter()
         .enumerate()
-        .map(|(k, size)| inside(coord[k], size, clamped[k]))
+        .map(|(k, size)| inside(coord[k], size, k))
         .product::<f32>();
     std::array::from_fn(|k| texture.border_color[k] + (sample[k] - texture.border_color[k]) * share)
 }

@@ -109,12 +109,20 @@ fn floor(x: f32) -> i64 {
     x.floor().clamp(-1e15, 1e15) as i64
 }
 
-/// A texel index wrapped into `0..size`: `GL_REPEAT` repeats, every other mode clamps to
-/// the edge.
+/// A texel index wrapped into `0..size`: `GL_REPEAT` repeats, `GL_MIRRORED_REPEAT` repeats
+/// the texture and its mirror image (GL 1.4 §3.8.7), every other mode clamps to the edge (the
+/// fragment stage weighs in the border for `GL_CLAMP` and `GL_CLAMP_TO_BORDER`).
 fn wrap(i: i64, size: i64, mode: GLenum) -> i64 {
-    if mode == GL_REPEAT {
-        i.rem_euclid(size)
-    } else {
-        i.clamp(0, size - 1)
+    match mode {
+        GL_REPEAT => i.rem_euclid(size),
+        GL_MIRRORED_REPEAT => {
+            let m = i.rem_euclid(2 * size);
+            if m < size {
+                m
+            } else {
+                2 * size - 1 - m
+            }
+        }
+        _ => i.clamp(0, size - 1),
     }
 }
