@@ -97,7 +97,8 @@ fn texel(texture: &BoundTexture, sampler: &Sampler<'_>, tex: [f32; 4], slope: &T
     let sample = sampler.sample(coord, dx, dy);
     let linear = params.mag_filter == GL_LINEAR
         && matches!(params.min_filter, GL_LINEAR | GL_LINEAR_MIPMAP_NEAREST | GL_LINEAR_MIPMAP_LINEAR);
-    if !(clamped.contains(&true) && linear) && !bordered.contains(&true) {
+    let weighs_border = bordered.contains(&true) || (clamped.contains(&true) && linear);
+    if !weighs_border {
         return sample;
     }
     let base = &texture.levels[0];
