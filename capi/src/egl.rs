@@ -593,8 +593,8 @@ entry! {
     }
 }
 
-/// Why a context's attribute list is refused, if it is: gleval makes OpenGL 1.0 and 1.1
-/// compatibility contexts (debug or not).
+/// Why a context's attribute list is refused, if it is: gleval makes compatibility contexts
+/// (debug or not) of OpenGL 1.0 up to the version it implements ([`gleval::gl::VERSION`]).
 fn refuse(list: &[(EGLint, EGLint)]) -> Option<EGLint> {
     let (mut major, mut minor, mut forward) = (1, 0, false);
     for &(name, value) in list {
@@ -611,11 +611,11 @@ fn refuse(list: &[(EGLint, EGLint)]) -> Option<EGLint> {
             _ => return Some(EGL_BAD_ATTRIBUTE),
         }
     }
-    ((major, minor) > (1, 1) || major < 1 || minor < 0 || forward).then_some(EGL_BAD_MATCH)
+    ((major, minor) > gleval::gl::VERSION || major < 1 || minor < 0 || forward).then_some(EGL_BAD_MATCH)
 }
 
 entry! {
-    /// `eglCreateContext`: an OpenGL 1.0 or 1.1 context for `config` (the bound API must be
+    /// `eglCreateContext`: an OpenGL 1.0 to 1.2 context for `config` (the bound API must be
     /// OpenGL: `EGL_BAD_MATCH` otherwise); a higher version or a forward-compatible one →
     /// `EGL_BAD_MATCH`, an attribute EGL has not → `EGL_BAD_ATTRIBUTE`.
     unsafe fn eglCreateContext(handle: *mut c_void, c: *mut c_void, share: *mut c_void, list: *const EGLint) -> *mut c_void {
@@ -1023,9 +1023,11 @@ mod tests {
     use super::*;
 
     #[test]
-    fn contexts_of_versions_above_one_one_are_refused() {
+    fn contexts_of_versions_above_one_two_are_refused() {
         assert_eq!(refuse(&[]), None);
         assert_eq!(refuse(&[(EGL_CONTEXT_MAJOR_VERSION, 1), (EGL_CONTEXT_MINOR_VERSION, 1)]), None);
+        assert_eq!(refuse(&[(EGL_CONTEXT_MAJOR_VERSION, 1), (EGL_CONTEXT_MINOR_VERSION, 2)]), None);
+        assert_eq!(refuse(&[(EGL_CONTEXT_MAJOR_VERSION, 1), (EGL_CONTEXT_MINOR_VERSION, 3)]), Some(EGL_BAD_MATCH));
         assert_eq!(refuse(&[(EGL_CONTEXT_MAJOR_VERSION, 2)]), Some(EGL_BAD_MATCH));
         assert_eq!(refuse(&[(EGL_CONTEXT_OPENGL_FORWARD_COMPATIBLE, 1)]), Some(EGL_BAD_MATCH));
         assert_eq!(refuse(&[(0x1234, 0)]), Some(EGL_BAD_ATTRIBUTE));

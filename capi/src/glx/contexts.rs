@@ -217,7 +217,8 @@ fn version_impossible(major: c_int, minor: c_int) -> bool {
 }
 
 /// Why GLX_ARB_create_context refuses an attribute list, if it does: the error and its
-/// kind. gleval makes compatibility contexts of OpenGL 1.0 and 1.1 (what it implements).
+/// kind. gleval makes compatibility contexts of OpenGL 1.0 up to what it implements
+/// ([`gleval::gl::VERSION`]).
 fn refuse(list: &[(c_int, c_int)]) -> Option<Result<u8, GlxError>> {
     let (mut major, mut minor, mut flags, mut profile) = (1, 0, 0, GLX_CONTEXT_CORE_PROFILE_BIT);
     for &(name, value) in list {
@@ -248,7 +249,7 @@ fn refuse(list: &[(c_int, c_int)]) -> Option<Result<u8, GlxError>> {
         return Some(Err(GlxError::Profile));
     }
     // Above what gleval implements, or a forward-compatible context: no configuration can.
-    if (major, minor) > (1, 1) || flags & GLX_CONTEXT_FORWARD_COMPATIBLE_BIT != 0 {
+    if (major, minor) > gleval::gl::VERSION || flags & GLX_CONTEXT_FORWARD_COMPATIBLE_BIT != 0 {
         return Some(Err(GlxError::FbConfig));
     }
     None
@@ -256,7 +257,7 @@ fn refuse(list: &[(c_int, c_int)]) -> Option<Result<u8, GlxError>> {
 
 entry! {
     /// `glXCreateContextAttribsARB` (GLX_ARB_create_context, _profile): compatibility
-    /// contexts of OpenGL 1.0 and 1.1, debug or not. A version that does not exist →
+    /// contexts of OpenGL 1.0 to 1.2, debug or not. A version that does not exist →
     /// `BadMatch`; one above 1.1 (or a core or ES profile of 3.2 up, or forward-compatible)
     /// → `GLXBadFBConfig`; an attribute or flag it does not know → `BadValue`; a bad profile
     /// mask → `GLXBadProfileARB`.
@@ -411,7 +412,8 @@ mod tests {
         assert_eq!(refuse(&[]), None);
         assert_eq!(refuse(&compat(1, 0)), None);
         assert_eq!(refuse(&compat(1, 1)), None);
-        assert_eq!(refuse(&compat(1, 2)), Some(Err(GlxError::FbConfig)));
+        assert_eq!(refuse(&compat(1, 2)), None);
+        assert_eq!(refuse(&compat(1, 3)), Some(Err(GlxError::FbConfig)));
         assert_eq!(refuse(&compat(3, 3)), Some(Err(GlxError::FbConfig)));
         assert_eq!(refuse(&compat(1, 7)), Some(Ok(BAD_MATCH)));
         assert_eq!(refuse(&compat(2, 5)), Some(Ok(BAD_MATCH)));
