@@ -311,6 +311,19 @@ static const GLint side3[] = {-1, 0, 1, 2, 3, 16};
 static const GLenum image_modes[] = {GL_UNPACK_IMAGE_HEIGHT, GL_UNPACK_SKIP_IMAGES, GL_PACK_IMAGE_HEIGHT,
     GL_PACK_SKIP_IMAGES};
 
+/* GL 1.3's combiner and the wrap modes of 1.3 and 1.4, with names and values of every kind. */
+static const GLenum env_names[] = {GL_TEXTURE_ENV_MODE, GL_COMBINE_RGB, GL_COMBINE_ALPHA, GL_SOURCE0_RGB,
+    GL_SOURCE2_ALPHA, GL_OPERAND1_RGB, GL_OPERAND2_ALPHA, GL_RGB_SCALE, GL_ALPHA_SCALE, 0x1234};
+static const GLenum env_values[] = {GL_COMBINE, GL_MODULATE, GL_DOT3_RGBA, GL_INTERPOLATE, GL_TEXTURE,
+    GL_TEXTURE0 + 3, GL_CONSTANT, GL_PREVIOUS, GL_ONE_MINUS_SRC_COLOR, GL_SRC_ALPHA, 1, 2, 4, 0x1234};
+static const GLenum wraps[] = {GL_CLAMP_TO_BORDER, GL_MIRRORED_REPEAT, GL_CLAMP, GL_REPEAT, 0x1234};
+
+static void combine_call(void) {
+    if (pick(2)) glTexEnvi(GL_TEXTURE_ENV, ANY(env_names), (GLint)ANY(env_values));
+    else glTexEnvf(GL_TEXTURE_ENV, ANY(env_names), f());
+    glTexParameteri(pick(2) ? GL_TEXTURE_2D : GL_TEXTURE_1D, GL_TEXTURE_WRAP_S + pick(2), (GLint)ANY(wraps));
+}
+
 static void texture_3d_call(void) {
     GLint x = ANY(side3), y = ANY(side3), z = ANY(side3), w = ANY(side3), h = ANY(side3), d = ANY(side3);
     switch (pick(4)) {
@@ -329,7 +342,7 @@ static void texture_3d_call(void) {
 static void pixel_call(void) {
     GLint x = ANY(small) - 8, y = ANY(small) - 8, w = ANY(small), h = ANY(small);
     switch (pick(9)) {
-    case 7: texture_3d_call(); break;
+    case 7: if (pick(2)) texture_3d_call(); else combine_call(); break;
     case 0: glPixelZoom(f(), f()); glPixelTransferf(ANY(pixel_pnames), f()); glPixelTransferi(ANY(pixel_pnames), ANY(small)); break;
     case 1: glPixelMapfv(ANY(pixel_maps), ANY(map_sizes), pick(6) ? buf : NULL);
             glPixelMapuiv(ANY(pixel_maps), ANY(map_sizes), pick(6) ? (GLuint *)buf : NULL);
