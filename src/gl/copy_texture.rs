@@ -144,6 +144,7 @@ impl Gl {
         let internal = call.internalformat as GLint;
         self.bound_object_mut(call.dims).define_level(call.level as usize, Some(image), (base, internal), 0);
         self.image_changed(call.dims);
+        self.generate_if_base(call.dims, call.level as usize);
     }
 
     /// `glCopyTexSubImage2D`: replaces the rectangle at (`xoffset`, `yoffset`) of level `level`

@@ -10,16 +10,22 @@ use super::types::*;
 use super::Gl;
 
 /// The targets `glHint` takes, in the order [`Hints`] keeps them.
-const TARGETS: [GLenum; 5] =
-    [GL_PERSPECTIVE_CORRECTION_HINT, GL_POINT_SMOOTH_HINT, GL_LINE_SMOOTH_HINT, GL_POLYGON_SMOOTH_HINT, GL_FOG_HINT];
+const TARGETS: [GLenum; 6] = [
+    GL_PERSPECTIVE_CORRECTION_HINT,
+    GL_POINT_SMOOTH_HINT,
+    GL_LINE_SMOOTH_HINT,
+    GL_POLYGON_SMOOTH_HINT,
+    GL_FOG_HINT,
+    GL_GENERATE_MIPMAP_HINT,
+];
 
 /// The current hints (all initially `GL_DONT_CARE`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(crate) struct Hints([GLenum; 5]);
+pub(crate) struct Hints([GLenum; 6]);
 
 impl Default for Hints {
     fn default() -> Self {
-        Self([GL_DONT_CARE; 5])
+        Self([GL_DONT_CARE; 6])
     }
 }
 
@@ -33,7 +39,8 @@ impl Hints {
 impl Gl {
     /// `glHint(target, mode)`: `mode` is `GL_FASTEST`, `GL_NICEST` or `GL_DONT_CARE` for
     /// `GL_PERSPECTIVE_CORRECTION_HINT`, `GL_POINT_SMOOTH_HINT`, `GL_LINE_SMOOTH_HINT`,
-    /// `GL_POLYGON_SMOOTH_HINT` or `GL_FOG_HINT`; recorded, with no effect on the picture.
+    /// `GL_POLYGON_SMOOTH_HINT`, `GL_FOG_HINT` or GL 1.4's `GL_GENERATE_MIPMAP_HINT`; recorded,
+    /// with no effect on the picture.
     pub fn hint(&mut self, target: GLenum, mode: GLenum) {
         if self.compiled_state_call(|| ListCommand::Hint(target, mode)) {
             return;
@@ -60,6 +67,7 @@ pub(crate) static GET_ROWS: &[StateVar] = &[
     hint_row!(GL_LINE_SMOOTH_HINT),
     hint_row!(GL_POLYGON_SMOOTH_HINT),
     hint_row!(GL_FOG_HINT),
+    hint_row!(GL_GENERATE_MIPMAP_HINT),
 ];
 
 #[cfg(test)]

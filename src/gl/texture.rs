@@ -28,6 +28,7 @@ use std::sync::Arc;
 
 mod combine;
 mod gen;
+mod generate;
 mod image;
 mod params;
 mod query;
@@ -102,6 +103,9 @@ pub struct TexParams {
     pub max_level: i32,
     /// `GL_TEXTURE_MIN_LOD` and `GL_TEXTURE_MAX_LOD` (GL 1.2): the range λ is clamped to.
     pub lod: LodRange,
+    /// `GL_GENERATE_MIPMAP` (GL 1.4): the levels below the base are made again whenever the
+    /// base level's image changes.
+    pub generate_mipmap: bool,
 }
 
 /// GL 1.2's LOD clamp (§3.8.7): `GL_TEXTURE_MIN_LOD` and `GL_TEXTURE_MAX_LOD`, compared and
@@ -153,6 +157,7 @@ impl Default for TexParams {
             base_level: 0,
             max_level: 1000,
             lod: LodRange { min: -1000.0, max: 1000.0 },
+            generate_mipmap: false,
         }
     }
 }

@@ -164,6 +164,7 @@ fn call(gl: &mut Gl, a: &mut Args) {
         "glBlendColor" => gl.blend_color(a.f(), a.f(), a.f(), a.f()),
         "glSampleCoverage" => gl.sample_coverage(a.f(), a.int() as GLboolean),
         "glSecondaryColor3f" => gl.secondary_color3f(a.f(), a.f(), a.f()),
+        "glHint" => gl.hint(a.e(), a.e()),
         "glAlphaFunc" => gl.alpha_func(a.e(), a.f()),
         "glTexImage1D" => {
             let (target, level, internal, width, border, format, type_) =

@@ -1455,6 +1455,13 @@ GLAPI void GLAPIENTRY glGetTexGeniv(GLenum coord, GLenum pname, GLint *params);
 #define GL_MIRRORED_REPEAT_ARB 0x8370
 #define GL_MIRRORED_REPEAT_IBM 0x8370
 
+/* GL 1.4's GL_GENERATE_MIPMAP by its extension's name. */
+#define GL_SGIS_generate_mipmap 1
+#define GL_GENERATE_MIPMAP 0x8191
+#define GL_GENERATE_MIPMAP_HINT 0x8192
+#define GL_GENERATE_MIPMAP_SGIS 0x8191
+#define GL_GENERATE_MIPMAP_HINT_SGIS 0x8192
+
 /* GL 1.3's GL_ADD and GL_COMBINE environments (with DOT3) by their extensions' names. */
 #define GL_ARB_texture_env_add 1
 #define GL_EXT_texture_env_add 1

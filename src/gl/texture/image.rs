@@ -167,6 +167,7 @@ impl Gl {
         let image = TexLevel { width: w as u32, height: h as u32, depth: d as u32, texels };
         self.bound_object_mut(dims).define_level(level as usize, Some(image), (base, internalformat), 0);
         self.image_changed(dims);
+        self.generate_if_base(dims, level as usize);
     }
 
     /// `glTexSubImage2D`: replaces a rectangle of an existing level. Errors: target
@@ -325,6 +326,7 @@ impl Gl {
             target.texels[start..start + w].copy_from_slice(source);
         }
         self.image_changed(dims);
+        self.generate_if_base(dims, level);
     }
 
     /// Checks `format` and `type_` as Mesa does for a colour texture: the image's errors

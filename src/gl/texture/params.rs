@@ -35,7 +35,7 @@ impl Gl {
             GL_TEXTURE_WRAP_S | GL_TEXTURE_WRAP_T | GL_TEXTURE_WRAP_R => {
                 matches!(value, GL_REPEAT | GL_CLAMP | GL_CLAMP_TO_EDGE | GL_CLAMP_TO_BORDER | GL_MIRRORED_REPEAT)
             }
-            GL_TEXTURE_BASE_LEVEL | GL_TEXTURE_MAX_LEVEL => true,
+            GL_TEXTURE_BASE_LEVEL | GL_TEXTURE_MAX_LEVEL | GL_GENERATE_MIPMAP => true,
             _ => false,
         };
         if !ok {
@@ -46,6 +46,12 @@ impl Gl {
         }
         let object = self.bound_object_mut(t as u8 + 1);
         let mut params = object.params;
+        if pname == GL_GENERATE_MIPMAP {
+            // Any value: GL_TRUE unless 0 (measured on Mesa: 7 reads back as 1).
+            params.generate_mipmap = param != 0;
+            object.set_params(params);
+            return self.touch_state();
+        }
         let field = match pname {
             GL_TEXTURE_MIN_FILTER => &mut params.min_filter,
             GL_TEXTURE_MAG_FILTER => &mut params.mag_filter,

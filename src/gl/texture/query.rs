@@ -45,6 +45,11 @@ impl ObjectExtras {
         (self.border_color, self.priority) = (border_color, priority);
     }
 
+    /// The internal format level `level` was defined with.
+    pub(super) fn level_format(&self, level: usize) -> GLint {
+        self.level_formats.get(level).map_or(1, |f| f.0)
+    }
+
     /// Records the internal format a level was defined with and the border it keeps.
     pub(super) fn set_level_format(&mut self, level: usize, internal: GLint, border: GLint) {
         if self.level_formats.len() <= level {
@@ -230,6 +235,7 @@ impl Gl {
             GL_TEXTURE_WRAP_S => vec![p.wrap_s as f32],
             GL_TEXTURE_WRAP_T => vec![p.wrap_t as f32],
             GL_TEXTURE_WRAP_R => vec![p.wrap_r as f32],
+            GL_GENERATE_MIPMAP => vec![f32::from(u8::from(p.generate_mipmap))],
             GL_TEXTURE_BASE_LEVEL => vec![p.base_level as f32],
             GL_TEXTURE_MAX_LEVEL => vec![p.max_level as f32],
             GL_TEXTURE_MIN_LOD => vec![p.lod.min],

@@ -1,0 +1,105 @@
+//! GL 1.4's `GL_GENERATE_MIPMAP` (GL 1.4 spec §3.8.8, `GL_SGIS_generate_mipmap`): when the base
+//! level of a texture that asks for it changes, the levels below it are made again, each from
+//! the one above. GL leaves the filter to the implementation; llvmpipe's (Mesa's
+//! `st_generate_mipmap` through `util_gen_mipmap`, a blit with a linear filter) samples the
+//! level above at each new texel's centre, clamped to the edge, and weighs in 8-bit fixed point
+//! axis by axis, rounding after each (measured: `tests/reference/calls/cases/generate_mipmap.calls`,
+//! where 0, 1, 2, 2 make 2, not the mean's 1).
+
+use super::{TexLevel, TextureObject};
+use crate::gl::Gl;
+
+/// `a` to `b` by `weight` (of 256), as llvmpipe's 8-bit lerp rounds.
+fn lerp8(a: i32, b: i32, weight: i32) -> i32 {
+    a + (((b - a) * weight + 128) >> 8)
+}
+
+/// Where new texel `i` of `to` samples an axis of `from` texels: the two texels and the second's
+/// weight (of 256).
+fn taps(i: usize, from: usize, to: usize) -> (usize, usize, i32) {
+    let u = (i as f32 + 0.5) * from as f32 / to as f32 - 0.5;
+    let first = u.floor();
+    let weight = ((u - first) * 256.0) as i32;
+    let clamp = |k: f32| (k.max(0.0) as usize).min(from - 1);
+    (clamp(first), clamp(first + 1.0), weight)
+}
+
+/// The level below `level`: each side halved (at least 1), filtered as llvmpipe filters.
+pub(super) fn next_level(level: &TexLevel, three_d: bool) -> TexLevel {
+    let (w, h, d) = (level.width as usize, level.height as usize, level.depth as usize);
+    let (nw, nh, nd) = ((w / 2).max(1), (h / 2).max(1), if three_d { (d / 2).max(1) } else { d });
+    let mut texels = Vec::with_capacity(nw * nh * nd);
+    for k in 0..nd {
+        let (k0, k1, wr) = if three_d { taps(k, d, nd) } else { (k, k, 0) };
+        for j in 0..nh {
+            let (j0, j1, wt) = taps(j, h, nh);
+            for i in 0..nw {
+                let (i0, i1, ws) = taps(i, w, nw);
+                let texel = |ii: usize, jj: usize, kk: usize| level.texel(ii, jj, kk);
+                let texel = std::array::from_fn(|c| {
+                    let row = |jj: usize, kk: usize| {
+                        lerp8(i32::from(texel(i0, jj, kk)[c]), i32::from(texel(i1, jj, kk)[c]), ws)
+                    };
+                    let image = |kk: usize| lerp8(row(j0, kk), row(j1, kk), wt);
+                    lerp8(image(k0), image(k1), wr) as u8
+                });
+                texels.push(texel);
+            }
+        }
+    }
+    TexLevel { width: nw as u32, height: nh as u32, depth: nd as u32, texels }
+}
+
+impl TextureObject {
+    /// Makes the levels below the base level again from it, down to 1 × 1 (× 1) or the maximum
+    /// level, with the base's formats, when `GL_GENERATE_MIPMAP` is set and `level` is the
+    /// base.
+    pub(super) fn generate_below(&mut self, level: usize, dims: u8) {
+        let base = usize::try_from(self.params.base_level).unwrap_or(usize::MAX);
+        if !self.params.generate_mipmap || level != base {
+            return;
+        }
+        let Some(Some(mut above)) = self.levels.get(base).cloned() else { return };
+        let (format, internal) = (self.formats[base], self.extra.level_format(base));
+        let last = usize::try_from(self.params.max_level).unwrap_or(0);
+        let mut k = base;
+        while k < last && (above.width > 1 || above.height > 1 || (dims == 3 && above.depth > 1)) {
+            k += 1;
+            let below = next_level(&above, dims == 3);
+            self.define_level(k, Some(below.clone()), (format, internal), 0);
+            above = below;
+        }
+    }
+}
+
+impl Gl {
+    /// After level `level` of the bound `dims`-dimensional texture changed: its mipmaps made
+    /// again if it asks for them and `level` is its base.
+    pub(in crate::gl) fn generate_if_base(&mut self, dims: u8, level: usize) {
+        let object = self.bound_object_mut(dims);
+        if object.params.generate_mipmap {
+            object.generate_below(level, dims);
+            self.image_changed(dims);
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn levels_are_filtered_as_llvmpipe_filters_them() {
+        // Mesa's answers (generate_mipmap.calls): 2 × 2 of red 0, 1 / 2, 2 makes 2 (the rows'
+        // lerps round to 1 and 2 before the column's); 5 × 1 of 0, 100, 200, 50, 250 makes 75,
+        // 100 (the centres at 0.75 and 3.25).
+        let two = TexLevel::flat(2, 2, vec![[0, 0, 1, 1], [1, 1, 0, 0], [2, 1, 2, 1], [2, 2, 1, 3]]);
+        assert_eq!(next_level(&two, false).texels, [[2, 2, 2, 2]]);
+        let five = TexLevel::flat(5, 1, [0u8, 100, 200, 50, 250].map(|v| [v; 4]).to_vec());
+        let below = next_level(&five, false);
+        assert_eq!((below.width, below.texels.clone()), (2, vec![[75; 4], [100; 4]]));
+        let solid = TexLevel { width: 2, height: 1, depth: 2, texels: vec![[0; 4], [1; 4], [2; 4], [2; 4]] };
+        let below = next_level(&solid, true);
+        assert_eq!((below.width, below.height, below.depth, below.texels), (1, 1, 1, vec![[2; 4]]));
+    }
+}
