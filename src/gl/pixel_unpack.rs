@@ -228,16 +228,10 @@ pub(crate) fn unpack_bitmap(store: PixelStore, width: GLsizei, height: GLsizei, 
 mod tests {
     use super::*;
 
-    const MSB: PixelStore = PixelStore {
-        swap_bytes: false,
-        lsb_first: false,
-        row_length: 0,
-        skip_rows: 0,
-        skip_pixels: 0,
-        alignment: 4,
-        image_height: 0,
-        skip_images: 0,
-    };
+    /// GL's initial unpack modes: bits from the most significant, rows of 4-byte alignment.
+    fn msb() -> PixelStore {
+        PixelStore::default()
+    }
 
     fn rows(bits: &[bool], w: usize) -> Vec<String> {
         bits.chunks(w).map(|r| r.iter().map(|&b| if b { '#' } else { '.' }).collect()).collect()
@@ -247,30 +241,30 @@ mod tests {
     fn bitmaps_unpack_with_alignment_bit_order_and_skips() {
         // 10 × 2: rows of 2 bytes, padded to 4 by the default alignment.
         let data = [0b1000_0000, 0b0100_0000, 0xEE, 0xEE, 0b0000_0001, 0b1100_0000, 0xEE, 0xEE];
-        let bits = unpack_bitmap(MSB, 10, 2, &data).unwrap();
+        let bits = unpack_bitmap(msb(), 10, 2, &data).unwrap();
         assert_eq!(rows(&bits, 10), ["#........#", ".......###"]);
-        let lsb = PixelStore { lsb_first: true, ..MSB };
+        let lsb = PixelStore { lsb_first: true, ..msb() };
         assert_eq!(rows(&unpack_bitmap(lsb, 10, 2, &data).unwrap(), 10), [".......#..", "#........."]);
-        let one = PixelStore { alignment: 1, ..MSB };
+        let one = PixelStore { alignment: 1, ..msb() };
         assert_eq!(rows(&unpack_bitmap(one, 8, 2, &[0xF0, 0x0F]).unwrap(), 8), ["####....", "....####"]);
-        let skipped = PixelStore { skip_rows: 1, skip_pixels: 7, row_length: 16, alignment: 1, ..MSB };
+        let skipped = PixelStore { skip_rows: 1, skip_pixels: 7, row_length: 16, alignment: 1, ..msb() };
         assert_eq!(rows(&unpack_bitmap(skipped, 3, 1, &[0, 0, 0b0000_0001, 0b1000_0000]).unwrap(), 3), ["##."]);
-        assert_eq!(unpack_bitmap(MSB, 10, 2, &data[..5]), None, "the last row needs 2 bytes, not 4");
-        assert!(unpack_bitmap(MSB, 10, 2, &data[..6]).is_some());
-        assert_eq!(unpack_bitmap(MSB, 0, 5, &[]), Some(Vec::new()));
+        assert_eq!(unpack_bitmap(msb(), 10, 2, &data[..5]), None, "the last row needs 2 bytes, not 4");
+        assert!(unpack_bitmap(msb(), 10, 2, &data[..6]).is_some());
+        assert_eq!(unpack_bitmap(msb(), 0, 5, &[]), Some(Vec::new()));
     }
 
     #[test]
     fn pixels_unpack_to_rgba() {
-        let one = PixelStore { alignment: 1, ..MSB };
+        let one = PixelStore { alignment: 1, ..msb() };
         let rgb = unpack_image(one, (2, 1), GL_RGB, GL_UNSIGNED_BYTE, &[255, 0, 0, 0, 51, 255]).unwrap();
         assert_eq!(rgb, [[1.0, 0.0, 0.0, 1.0], [0.0, 0.2, 1.0, 1.0]]);
         // Rows of 3 luminance bytes are padded to 4.
-        let lum = unpack_image(MSB, (3, 2), GL_LUMINANCE, GL_UNSIGNED_BYTE, &[0, 0, 0, 9, 255, 255, 255]).unwrap();
+        let lum = unpack_image(msb(), (3, 2), GL_LUMINANCE, GL_UNSIGNED_BYTE, &[0, 0, 0, 9, 255, 255, 255]).unwrap();
         assert_eq!(lum[3], [1.0, 1.0, 1.0, 1.0]);
-        assert_eq!(unpack_image(MSB, (3, 2), GL_LUMINANCE, GL_UNSIGNED_BYTE, &[0; 6]), None);
+        assert_eq!(unpack_image(msb(), (3, 2), GL_LUMINANCE, GL_UNSIGNED_BYTE, &[0; 6]), None);
         let floats: Vec<u8> = [0.25f32, 0.5, 0.75, 1.0].iter().flat_map(|f| f.to_ne_bytes()).collect();
-        assert_eq!(unpack_image(MSB, (1, 1), GL_RGBA, GL_FLOAT, &floats).unwrap(), [[0.25, 0.5, 0.75, 1.0]]);
+        assert_eq!(unpack_image(msb(), (1, 1), GL_RGBA, GL_FLOAT, &floats).unwrap(), [[0.25, 0.5, 0.75, 1.0]]);
     }
 
     #[test]

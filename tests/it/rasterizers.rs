@@ -145,6 +145,29 @@ fn optional_renderer() -> Option<Renderer> {
     }
 }
 
+/// Both rasterisers draw `frame` (8 × 8), and the diagonal (i, i) in GL's rows (the image's
+/// rows run top down) is Mesa's within `tolerance`; `what` names the set-up when it is not.
+fn assert_diagonal_is_mesas(
+    renderer: &mut Option<Renderer>,
+    frame: &Frame,
+    expected: &[[u8; 4]; 8],
+    tolerance: u8,
+    what: &str,
+) {
+    let diagonal = |pixels: &[u8]| -> Vec<[u8; 4]> {
+        (0..8).map(|i| pixels[((7 - i) * 8 + i) * 4..][..4].try_into().unwrap()).collect()
+    };
+    let close = |got: &[[u8; 4]]| {
+        got.iter().zip(expected).all(|(g, e)| g.iter().zip(e).all(|(a, b)| a.abs_diff(*b) <= tolerance))
+    };
+    let soft = diagonal(&soft::render_frame(frame, 8, 8).pixels);
+    assert!(close(&soft), "CPU, {what}: {soft:?}, Mesa {expected:?}");
+    if let Some(renderer) = renderer.as_mut() {
+        let wgpu = diagonal(&renderer.render_frame(frame, 8, 8).expect("wgpu renders").pixels);
+        assert!(close(&wgpu), "wgpu, {what}: {wgpu:?}, Mesa {expected:?}");
+    }
+}
+
 /// An intensity texture under each texture function, drawn by both rasterisers, against what
 /// Mesa 22.3 (llvmpipe, OSMesa) drew for the same calls: I = 153/255 with the fragment colour
 /// (0.5, 0.25, 1, 0.5) and the environment colour (0.2, 0.4, 0.8, 0.1). Intensity is I in all
@@ -394,18 +417,8 @@ fn edge_clamp_is_mesas_on_both_rasterisers() {
         gl.end();
         assert_eq!(gl.get_error(), GL_NO_ERROR);
         let frame = gl.take_frame();
-        // The diagonal (i, i) in GL's rows; the image's rows run top down.
-        let diagonal = |pixels: &[u8]| -> Vec<[u8; 4]> {
-            (0..8).map(|i| pixels[((7 - i) * 8 + i) * 4..][..4].try_into().unwrap()).collect()
-        };
-        let close =
-            |got: &[[u8; 4]]| got.iter().zip(&expected).all(|(g, e)| g.iter().zip(e).all(|(a, b)| a.abs_diff(*b) <= 2));
-        let soft = diagonal(&soft::render_frame(&frame, 8, 8).pixels);
-        assert!(close(&soft), "CPU, wraps {wrap_s:#x} {wrap_t:#x}: {soft:?}, Mesa {expected:?}");
-        if let Some(renderer) = renderer.as_mut() {
-            let wgpu = diagonal(&renderer.render_frame(&frame, 8, 8).expect("wgpu renders").pixels);
-            assert!(close(&wgpu), "wgpu, wraps {wrap_s:#x} {wrap_t:#x}: {wgpu:?}, Mesa {expected:?}");
-        }
+        let what = format!("wraps {wrap_s:#x} {wrap_t:#x}");
+        assert_diagonal_is_mesas(&mut renderer, &frame, &expected, 2, &what);
     }
 }
 
@@ -558,17 +571,7 @@ fn color_sum_is_mesas_on_both_rasterisers() {
         color_sum_scene(&mut gl, k);
         assert_eq!(gl.get_error(), GL_NO_ERROR);
         let frame = gl.take_frame();
-        let diagonal = |pixels: &[u8]| -> Vec<[u8; 4]> {
-            (0..8).map(|i| pixels[((7 - i) * 8 + i) * 4..][..4].try_into().unwrap()).collect()
-        };
-        let close =
-            |got: &[[u8; 4]]| got.iter().zip(expected).all(|(g, e)| g.iter().zip(e).all(|(a, b)| a.abs_diff(*b) <= 1));
-        let soft = diagonal(&soft::render_frame(&frame, 8, 8).pixels);
-        assert!(close(&soft), "CPU, case {k}: {soft:?}, Mesa {expected:?}");
-        if let Some(renderer) = renderer.as_mut() {
-            let wgpu = diagonal(&renderer.render_frame(&frame, 8, 8).expect("wgpu renders").pixels);
-            assert!(close(&wgpu), "wgpu, case {k}: {wgpu:?}, Mesa {expected:?}");
-        }
+        assert_diagonal_is_mesas(&mut renderer, &frame, expected, 1, &format!("case {k}"));
     }
 }
 
@@ -645,17 +648,7 @@ fn quad_diagonals_are_mesas_on_both_rasterisers() {
         }
         assert_eq!(gl.get_error(), GL_NO_ERROR);
         let frame = gl.take_frame();
-        let diagonal = |pixels: &[u8]| -> Vec<[u8; 4]> {
-            (0..8).map(|i| pixels[((7 - i) * 8 + i) * 4..][..4].try_into().unwrap()).collect()
-        };
-        let close =
-            |got: &[[u8; 4]]| got.iter().zip(expected).all(|(g, e)| g.iter().zip(e).all(|(a, b)| a.abs_diff(*b) <= 1));
-        let soft = diagonal(&soft::render_frame(&frame, 8, 8).pixels);
-        assert!(close(&soft), "CPU, case {k}: {soft:?}, Mesa {expected:?}");
-        if let Some(renderer) = renderer.as_mut() {
-            let wgpu = diagonal(&renderer.render_frame(&frame, 8, 8).expect("wgpu renders").pixels);
-            assert!(close(&wgpu), "wgpu, case {k}: {wgpu:?}, Mesa {expected:?}");
-        }
+        assert_diagonal_is_mesas(&mut renderer, &frame, expected, 1, &format!("case {k}"));
     }
 }
 
@@ -835,19 +828,8 @@ fn texture_3d_is_mesas_on_both_rasterisers() {
     square(&mut gl, (0.5, 0.5), 1.0);
     frames.push(gl.take_frame());
     assert_eq!(gl.get_error(), GL_NO_ERROR);
-    // The diagonal (i, i) in GL's rows; the image's rows run top down.
-    let diagonal = |pixels: &[u8]| -> Vec<[u8; 4]> {
-        (0..8).map(|i| pixels[((7 - i) * 8 + i) * 4..][..4].try_into().unwrap()).collect()
-    };
     for (k, (frame, expected)) in frames.iter().zip(&mesa).enumerate() {
-        let close =
-            |got: &[[u8; 4]]| got.iter().zip(expected).all(|(g, e)| g.iter().zip(e).all(|(a, b)| a.abs_diff(*b) <= 2));
-        let soft = diagonal(&soft::render_frame(frame, 8, 8).pixels);
-        assert!(close(&soft), "CPU, set-up {k}: {soft:?}, Mesa {expected:?}");
-        if let Some(renderer) = renderer.as_mut() {
-            let wgpu = diagonal(&renderer.render_frame(frame, 8, 8).expect("wgpu renders").pixels);
-            assert!(close(&wgpu), "wgpu, set-up {k}: {wgpu:?}, Mesa {expected:?}");
-        }
+        assert_diagonal_is_mesas(&mut renderer, frame, expected, 2, &format!("set-up {k}"));
     }
 }
 
@@ -1049,16 +1031,6 @@ fn wrap_modes_are_mesas_on_both_rasterisers() {
         gl.end();
         assert_eq!(gl.get_error(), GL_NO_ERROR);
         let frame = gl.take_frame();
-        let diagonal = |pixels: &[u8]| -> Vec<[u8; 4]> {
-            (0..8).map(|i| pixels[((7 - i) * 8 + i) * 4..][..4].try_into().unwrap()).collect()
-        };
-        let close =
-            |got: &[[u8; 4]]| got.iter().zip(&expected).all(|(g, e)| g.iter().zip(e).all(|(a, b)| a.abs_diff(*b) <= 2));
-        let soft = diagonal(&soft::render_frame(&frame, 8, 8).pixels);
-        assert!(close(&soft), "CPU, set-up {k}: {soft:?}, Mesa {expected:?}");
-        if let Some(renderer) = renderer.as_mut() {
-            let wgpu = diagonal(&renderer.render_frame(&frame, 8, 8).expect("wgpu renders").pixels);
-            assert!(close(&wgpu), "wgpu, set-up {k}: {wgpu:?}, Mesa {expected:?}");
-        }
+        assert_diagonal_is_mesas(&mut renderer, &frame, &expected, 2, &format!("set-up {k}"));
     }
 }
