@@ -64,12 +64,15 @@ fn fragment_ops(color_in: vec4<f32>, secondary: vec4<f32>, tex: vec4<f32>, fog: 
     let clamp_modes = vec3<u32>(env.clamp_s, env.clamp_t, env.clamp_r);
     let clamped = (clamp_modes == vec3<u32>(1u)) | (clamp_modes == vec3<u32>(2u));
     let coord = select(str, clamp(str, vec3<f32>(0.0), vec3<f32>(1.0)), clamped);
-    // Both images are sampled (a blank one stands for the other), so that each sample stays
-    // in uniform control flow.
-    let flat = textureSample(tex_image, tex_sampler, coord.xy);
-    let solid = textureSample(tex_image_3d, tex_sampler, coord);
+    // One image is sampled: `env` is uniform, so the branch keeps the sample in uniform
+    // control flow.
     let three_d = env.dims == 3u;
-    let sampled = select(flat, solid, three_d);
+    var sampled: vec4<f32>;
+    if three_d {
+        sampled = textureSample(tex_image_3d, tex_sampler, coord);
+    } else {
+        sampled = textureSample(tex_image, tex_sampler, coord.xy);
+    }
     let texel = mix(env.border_color, sampled, inside_border(coord, three_d));
     var color = color_in;
     if env.mode != 0u {

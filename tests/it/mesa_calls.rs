@@ -236,6 +236,15 @@ fn enum_value(token: &str) -> u32 {
     token.parse().or_else(|_| token.parse::<i32>().map(|v| v as u32)).unwrap_or_else(|_| panic!("unknown enum {token}"))
 }
 
+/// An image's numbers as interp.c passes them: floats for `GL_FLOAT`, else bytes.
+fn image_bytes(type_: u32, numbers: &[f32]) -> Vec<u8> {
+    if type_ == GL_FLOAT {
+        bytemuck_floats(numbers)
+    } else {
+        numbers.iter().map(|&x| x as u8).collect()
+    }
+}
+
 /// Floats as the bytes C's array holds (native byte order).
 fn bytemuck_floats(values: &[f32]) -> Vec<u8> {
     values.iter().flat_map(|v| v.to_ne_bytes()).collect()
@@ -436,12 +445,7 @@ impl Runner {
                 let p = if sub { a.int() } else { a.e() as i32 };
                 let (q, w, h) = (a.int(), a.int(), a.int());
                 let (format, type_) = (a.e(), a.e());
-                let numbers = a.floats();
-                let bytes: Vec<u8> = if type_ == GL_FLOAT {
-                    bytemuck_floats(&numbers)
-                } else {
-                    numbers.iter().map(|&x| x as u8).collect()
-                };
+                let bytes = image_bytes(type_, &a.floats());
                 if sub {
                     gl.tex_sub_image_2d(target, level, p, q, w, h, format, type_, &bytes);
                 } else {
@@ -457,12 +461,7 @@ impl Runner {
                 let (w, h, d) = (a.int(), a.int(), a.int());
                 let border = if sub { 0 } else { a.int() };
                 let (format, type_) = (a.e(), a.e());
-                let numbers = a.floats();
-                let bytes: Vec<u8> = if type_ == GL_FLOAT {
-                    bytemuck_floats(&numbers)
-                } else {
-                    numbers.iter().map(|&x| x as u8).collect()
-                };
+                let bytes = image_bytes(type_, &a.floats());
                 let [x, y, z] = offset;
                 if sub {
                     gl.tex_sub_image_3d(target, level, x, y, z, w, h, d, format, type_, &bytes);

@@ -65,12 +65,20 @@ pub(super) fn is_combine_name(pname: GLenum) -> bool {
     )
 }
 
+/// Whether a combiner name is of the alpha half.
+fn is_alpha_name(pname: GLenum) -> bool {
+    matches!(
+        pname,
+        GL_COMBINE_ALPHA | GL_SOURCE0_ALPHA..=GL_SOURCE2_ALPHA | GL_OPERAND0_ALPHA..=GL_OPERAND2_ALPHA | GL_ALPHA_SCALE
+    )
+}
+
 impl Combine {
     /// Sets `pname` (a combiner name, [`is_combine_name`]) to `value` as Mesa's `glTexEnvfv`
     /// takes it: an enum truncated from the float, a scale as it is. A value the name does not
     /// take is `GL_INVALID_ENUM`, a scale other than 1, 2 or 4 `GL_INVALID_VALUE`.
     pub(super) fn set(&mut self, pname: GLenum, value: GLfloat) -> Result<(), GLenum> {
-        let alpha = matches!(pname, GL_COMBINE_ALPHA | GL_SOURCE0_ALPHA..=GL_SOURCE2_ALPHA | GL_OPERAND0_ALPHA..=GL_OPERAND2_ALPHA | GL_ALPHA_SCALE);
+        let alpha = is_alpha_name(pname);
         let half = if alpha { &mut self.alpha } else { &mut self.rgb };
         if matches!(pname, GL_RGB_SCALE | GL_ALPHA_SCALE) {
             if ![1.0, 2.0, 4.0].contains(&value) {
@@ -111,7 +119,7 @@ impl Combine {
 
     /// What `glGetTexEnv` answers for a combiner name.
     pub(super) fn get(&self, pname: GLenum) -> GLfloat {
-        let alpha = matches!(pname, GL_COMBINE_ALPHA | GL_SOURCE0_ALPHA..=GL_SOURCE2_ALPHA | GL_OPERAND0_ALPHA..=GL_OPERAND2_ALPHA | GL_ALPHA_SCALE);
+        let alpha = is_alpha_name(pname);
         let half = if alpha { &self.alpha } else { &self.rgb };
         match pname {
             GL_COMBINE_RGB | GL_COMBINE_ALPHA => half.function as GLfloat,

@@ -28,19 +28,18 @@ fn taps(i: usize, from: usize, to: usize) -> (usize, usize, i32) {
 pub(super) fn next_level(level: &TexLevel, three_d: bool) -> TexLevel {
     let (w, h, d) = (level.width as usize, level.height as usize, level.depth as usize);
     let (nw, nh, nd) = ((w / 2).max(1), (h / 2).max(1), if three_d { (d / 2).max(1) } else { d });
+    // Each axis's taps, once per new column, row and image.
+    let axis = |from: usize, to: usize| (0..to).map(|i| taps(i, from, to)).collect::<Vec<_>>();
+    let (columns, rows) = (axis(w, nw), axis(h, nh));
+    let images = if three_d { axis(d, nd) } else { (0..d).map(|k| (k, k, 0)).collect() };
     let mut texels = Vec::with_capacity(nw * nh * nd);
-    for k in 0..nd {
-        let (k0, k1, wr) = if three_d { taps(k, d, nd) } else { (k, k, 0) };
-        for j in 0..nh {
-            let (j0, j1, wt) = taps(j, h, nh);
-            for i in 0..nw {
-                let (i0, i1, ws) = taps(i, w, nw);
-                let texel = |ii: usize, jj: usize, kk: usize| level.texel(ii, jj, kk);
+    for &(k0, k1, wr) in &images {
+        for &(j0, j1, wt) in &rows {
+            for &(i0, i1, ws) in &columns {
                 let texel = std::array::from_fn(|c| {
-                    let row = |jj: usize, kk: usize| {
-                        lerp8(i32::from(texel(i0, jj, kk)[c]), i32::from(texel(i1, jj, kk)[c]), ws)
-                    };
-                    let image = |kk: usize| lerp8(row(j0, kk), row(j1, kk), wt);
+                    let at = |i: usize, j: usize, k: usize| i32::from(level.texel(i, j, k)[c]);
+                    let row = |j: usize, k: usize| lerp8(at(i0, j, k), at(i1, j, k), ws);
+                    let image = |k: usize| lerp8(row(j0, k), row(j1, k), wt);
                     lerp8(image(k0), image(k1), wr) as u8
                 });
                 texels.push(texel);
@@ -59,15 +58,19 @@ impl TextureObject {
         if !self.params.generate_mipmap || level != base {
             return;
         }
-        let Some(Some(mut above)) = self.levels.get(base).cloned() else { return };
-        let (format, internal) = (self.formats[base], self.extra.level_format(base));
+        let Some(Some(top)) = self.levels.get(base) else { return };
         let last = usize::try_from(self.params.max_level).unwrap_or(0);
-        let mut k = base;
-        while k < last && (above.width > 1 || above.height > 1 || (dims == 3 && above.depth > 1)) {
-            k += 1;
-            let below = next_level(&above, dims == 3);
-            self.define_level(k, Some(below.clone()), (format, internal), 0);
-            above = below;
+        let mut below: Vec<TexLevel> = Vec::new();
+        for _ in base..last {
+            let above = below.last().unwrap_or(top);
+            if above.width == 1 && above.height == 1 && (dims != 3 || above.depth == 1) {
+                break;
+            }
+            below.push(next_level(above, dims == 3));
+        }
+        let (format, internal) = (self.formats[base], self.extra.level_format(base));
+        for (k, image) in (base + 1..).zip(below) {
+            self.define_level(k, Some(image), (format, internal), 0);
         }
     }
 }
