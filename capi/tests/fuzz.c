@@ -339,6 +339,23 @@ static void texture_3d_call(void) {
     }
 }
 
+/* The imaging subset (raises GL_INVALID_OPERATION on Mesa and gleval): any names, NULL or not. */
+static void imaging_call(void) {
+    GLenum t = (GLenum)next(), fmt = pick(2) ? GL_RGBA : (GLenum)next();
+    void *p = pick(4) ? (void *)buf : NULL;
+    switch (pick(6)) {
+    case 0: glColorTable(t, fmt, ANY(small), fmt, GL_UNSIGNED_BYTE, p); glGetColorTable(t, fmt, GL_FLOAT, p); break;
+    case 1: glConvolutionFilter2D(t, fmt, ANY(small), ANY(small), fmt, GL_UNSIGNED_BYTE, p);
+            glGetConvolutionParameteriv(t, (GLenum)next(), p); break;
+    case 2: glSeparableFilter2D(t, fmt, ANY(small), ANY(small), fmt, GL_FLOAT, p, p);
+            glGetSeparableFilter(t, fmt, GL_FLOAT, p, p, p); break;
+    case 3: glHistogram(t, ANY(small), fmt, (GLboolean)pick(3)); glGetHistogram(t, GL_TRUE, fmt, GL_FLOAT, p); break;
+    case 4: glMinmax(t, fmt, (GLboolean)pick(3)); glGetMinmaxParameterfv(t, (GLenum)next(), p); glResetMinmax(t); break;
+    default: glCopyColorTable(t, fmt, ANY(small), ANY(small), ANY(small));
+             glCopyConvolutionFilter2D(t, fmt, ANY(small), ANY(small), ANY(small), ANY(small)); break;
+    }
+}
+
 static void pixel_call(void) {
     GLint x = ANY(small) - 8, y = ANY(small) - 8, w = ANY(small), h = ANY(small);
     switch (pick(9)) {
@@ -359,7 +376,8 @@ static void pixel_call(void) {
     case 5: if (pick(8)) break;
             glCopyTexImage1D(GL_TEXTURE_1D, 0, GL_RGBA, x, y, w, 0); glCopyTexSubImage1D(GL_TEXTURE_1D, 0, x, x, y, w);
             glTexSubImage1D(GL_TEXTURE_1D, 0, x, w, GL_RGBA, GL_UNSIGNED_BYTE, pick(6) ? (void *)buf : NULL); break;
-    case 6: if (!pick(8)) glReadPixels(x, y, w, h, ANY(read_formats), GL_FLOAT, pick(6) ? buf : NULL);
+    case 6: if (!pick(16)) imaging_call();
+            if (!pick(8)) glReadPixels(x, y, w, h, ANY(read_formats), GL_FLOAT, pick(6) ? buf : NULL);
             (void)glAreTexturesResident(w, names, (GLboolean *)dbuf); glPrioritizeTextures(w, names, buf); break;
     default: glIndexf(f()); glIndexfv(fp()); glIndexub((GLubyte)pick(256)); glClearIndex(f()); glIndexMask((GLuint)next()); break;
     }

@@ -34,6 +34,7 @@ mod frame;
 mod get;
 mod grid_vertices;
 mod hint;
+mod imaging;
 mod immediate;
 mod lighting;
 mod line;

@@ -166,6 +166,14 @@ fn call(gl: &mut Gl, a: &mut Args) {
         "glSecondaryColor3f" => gl.secondary_color3f(a.f(), a.f(), a.f()),
         "glHint" => gl.hint(a.e(), a.e()),
         "glAlphaFunc" => gl.alpha_func(a.e(), a.f()),
+        "glResetHistogram" => gl.reset_histogram(a.e()),
+        "glResetMinmax" => gl.reset_minmax(a.e()),
+        "glMinmax" => gl.minmax(a.e(), a.e(), a.int() as GLboolean),
+        "glHistogram" => gl.histogram(a.e(), a.int(), a.e(), a.int() as GLboolean),
+        "glConvolutionParameteri" => gl.convolution_parameteri(a.e(), a.e(), a.e() as GLint),
+        "glConvolutionParameterf" => gl.convolution_parameterf(a.e(), a.e(), a.f()),
+        "glConvolutionParameterfv" => gl.convolution_parameterfv(a.e(), a.e(), &a.floats()),
+        "glColorTableParameteriv" => gl.color_table_parameteriv(a.e(), a.e(), &ints(a)),
         "glTexImage1D" => {
             let (target, level, internal, width, border, format, type_) =
                 (a.e(), a.int(), a.e() as i32, a.int(), a.int(), a.e(), a.e());
@@ -220,6 +228,10 @@ fn getv(gl: &mut Gl, a: &mut Args, values: &mut Vec<String>) {
         "glGetTexGeniv" => i!(a.e(), a.e() => get_tex_geniv),
         "glGetTexGendv" => d!(a.e(), a.e() => get_tex_gendv),
         "glGetMapdv" => d!(a.e(), a.e() => get_mapdv),
+        "glGetHistogramParameteriv" => i!(a.e(), a.e() => get_histogram_parameteriv),
+        "glGetMinmaxParameterfv" => f!(a.e(), a.e() => get_minmax_parameterfv),
+        "glGetConvolutionParameteriv" => i!(a.e(), a.e() => get_convolution_parameteriv),
+        "glGetColorTableParameterfv" => f!(a.e(), a.e() => get_color_table_parameterfv),
         "glGetClipPlane" => {
             let plane = a.e();
             let v = measured(d_pattern.0, d_pattern.1, f64::to_bits, |o| gl.get_clip_plane(plane, o));

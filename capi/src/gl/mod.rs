@@ -5,6 +5,7 @@ mod eval;
 mod feedback;
 mod fragment;
 mod fragments;
+mod imaging;
 mod immediate;
 mod lighting;
 mod lists;

@@ -90,6 +90,11 @@ static const struct enum_name query_enums[] = {
     Q(GL_UNSIGNED_SHORT_5_5_5_1), Q(GL_UNSIGNED_SHORT_1_5_5_5_REV), Q(GL_UNSIGNED_INT_8_8_8_8),
     Q(GL_UNSIGNED_INT_10_10_10_2), Q(GL_UNSIGNED_INT_2_10_10_10_REV), Q(GL_RED_BIAS),
     Q(GL_GREEN_BIAS), Q(GL_BLUE_BIAS), Q(GL_ALPHA_BIAS), Q(GL_GREEN_SCALE),
+    Q(GL_HISTOGRAM), Q(GL_PROXY_HISTOGRAM), Q(GL_MINMAX), Q(GL_COLOR_TABLE), Q(GL_CONVOLUTION_1D),
+    Q(GL_CONVOLUTION_2D), Q(GL_SEPARABLE_2D), Q(GL_POST_CONVOLUTION_COLOR_TABLE),
+    Q(GL_POST_COLOR_MATRIX_COLOR_TABLE), Q(GL_CONVOLUTION_BORDER_MODE), Q(GL_REDUCE),
+    Q(GL_CONVOLUTION_FILTER_SCALE), Q(GL_COLOR_TABLE_BIAS), Q(GL_COLOR_TABLE_SCALE), Q(GL_HISTOGRAM_WIDTH),
+    Q(GL_MINMAX_FORMAT), Q(GL_MAX_COLOR_MATRIX_STACK_DEPTH), Q(GL_POST_CONVOLUTION_RED_SCALE),
     { NULL, 0 }
 };
 
@@ -199,6 +204,11 @@ static const struct qcall calls[] = {
     C(glGetTexLevelParameterfv, ">eieF"), C(glGetTexLevelParameteriv, ">eieI"),
     C(glGetTexGenfv, ">eeF"), C(glGetTexGeniv, ">eeI"), C(glGetTexGendv, ">eeD"),
     C(glGetClipPlane, ">eD"), C(glGetMapdv, ">eeD"),
+    C(glResetHistogram, "e"), C(glResetMinmax, "e"), C(glMinmax, "eee"), C(glHistogram, "eeee"),
+    C(glConvolutionParameteri, "eee"), C(glConvolutionParameterf, "eef"),
+    C(glConvolutionParameterfv, "eeF"), C(glColorTableParameteriv, "eeI"),
+    C(glGetHistogramParameteriv, ">eeI"), C(glGetMinmaxParameterfv, ">eeF"),
+    C(glGetConvolutionParameteriv, ">eeI"), C(glGetColorTableParameterfv, ">eeF"),
     { NULL, NULL, NULL }
 };
 
