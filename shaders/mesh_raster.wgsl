@@ -35,7 +35,8 @@ struct Draw {
     flags: vec4<f32>,           // lighting, two-sided, local viewer, normalize
     color_material: vec4<f32>,  // front, back, mode (0 ambient 1 diffuse 2 specular 3 emission 4 both)
     model_ambient: vec4<f32>,
-    primitive: vec4<f32>,       // x: 1 for polygons (two-sided lighting applies)
+    primitive: vec4<f32>,       // x: 1 for polygons (two-sided lighting applies); y: 1 for fog from
+                                // glFogCoord (GL_FOG_COORD_SRC GL_FOG_COORD); z: |glFogCoord|
     color_sum: vec4<f32>,       // rgb: an unlit mesh's secondary colour; w: 1 separate specular
     materials: array<Material, 2>,
     lights: array<Light, 8>,
@@ -183,8 +184,13 @@ fn vertex_stage(position: vec4<f32>, normal: vec4<f32>, color: vec4<f32>, tex: v
     let clip = draw.projection * eye;
     var out: Lit;
     out.tex = draw.texture_matrix * tex;
-    // The fog coordinate: the eye-space distance |z| (Mesa's default, as src/render/shade.rs).
-    out.fog = abs(eye.z);
+    // The fog coordinate: the eye-space distance |z| (Mesa's default, as src/gl/shade.rs), or
+    // GL 1.4's glFogCoord under GL_FOG_COORD_SRC GL_FOG_COORD (primitive.y), the mesh's one.
+    if (draw.primitive.y != 0.0) {
+        out.fog = draw.primitive.z;
+    } else {
+        out.fog = abs(eye.z);
+    }
     // glDepthRange into wgpu's [0, w], then the GL viewport as a clip transform.
     let near = draw.depth_range.x;
     let far = draw.depth_range.y;

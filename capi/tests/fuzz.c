@@ -60,7 +60,7 @@ static const GLint array_sizes[] = {-1, 0, 1, 2, 3, 4, 5};
 static const GLint array_strides[] = {-4, 0, 1, 3, 7, 13, 64, 100};
 static const GLint counts[] = {-1, 0, 1, 2, 3, 4, 7, 50, 500};
 static const GLenum array_caps[] = {GL_VERTEX_ARRAY, GL_NORMAL_ARRAY, GL_COLOR_ARRAY, GL_INDEX_ARRAY,
-    GL_TEXTURE_COORD_ARRAY, GL_EDGE_FLAG_ARRAY, GL_LIGHTING, 0x1234};
+    GL_TEXTURE_COORD_ARRAY, GL_EDGE_FLAG_ARRAY, GL_FOG_COORD_ARRAY, GL_LIGHTING, 0x1234};
 static const GLenum formats[] = {GL_V2F, GL_V3F, GL_C4UB_V2F, GL_C4UB_V3F, GL_C3F_V3F, GL_N3F_V3F,
     GL_C4F_N3F_V3F, GL_T2F_V3F, GL_T4F_V4F, GL_T2F_C4UB_V3F, GL_T2F_C3F_V3F, GL_T2F_N3F_V3F,
     GL_T2F_C4F_N3F_V3F, GL_T4F_C4F_N3F_V4F, 0x1234};
@@ -201,7 +201,8 @@ static void array_call(void) {
     case 1: glColorPointer(ANY(array_sizes), ANY(array_types), ANY(array_strides), p);
             glNormalPointer(ANY(array_types), ANY(array_strides), p); break;
     case 2: glTexCoordPointer(ANY(array_sizes), ANY(array_types), ANY(array_strides), p);
-            glEdgeFlagPointer(ANY(array_strides), p); glIndexPointer(ANY(array_types), ANY(array_strides), p); break;
+            glEdgeFlagPointer(ANY(array_strides), p); glIndexPointer(ANY(array_types), ANY(array_strides), p);
+            glFogCoordPointer(ANY(array_types), ANY(array_strides), p); break;
     case 3: if (pick(2)) glEnableClientState(ANY(array_caps)); else glDisableClientState(ANY(array_caps)); break;
     case 4: glInterleavedArrays(ANY(formats), ANY(array_strides), p); break;
     case 5: glDrawArrays(ANY(modes), ANY(small), ANY(counts)); break;
@@ -283,7 +284,8 @@ static void state_call(void) {
     case 1: glDisable(ANY(caps)); break;
     case 2: glBegin(ANY(modes)); break;
     case 3: glEnd(); break;
-    case 4: glVertex3f(f(), f(), f()); glVertex3fv(fp()); glNormal3fv(fp()); glColor4fv(fp()); break;
+    case 4: glVertex3f(f(), f(), f()); glVertex3fv(fp()); glNormal3fv(fp()); glColor4fv(fp());
+            glFogCoordf(f()); glFogCoordfv(fp()); if (!pick(8)) glFogi(GL_FOG_COORD_SRC, pick(2) ? GL_FOG_COORD : (GLint)next()); break;
     case 5: glGetFloatv(ANY(pnames), pick(6) ? buf : NULL); glGetIntegerv(ANY(pnames), (GLint *)names); query_call(); break;
     case 6: glLightfv(GL_LIGHT0 + pick(9), GL_AMBIENT + pick(10), fp()); glMaterialfv(GL_FRONT + pick(3), GL_EMISSION + pick(4), fp()); break;
     case 7: glNewList(1 + pick(8), pick(2) ? GL_COMPILE : GL_COMPILE_AND_EXECUTE); compiling = 1; break;
@@ -294,7 +296,9 @@ static void state_call(void) {
                           pick(2) ? GL_UNSIGNED_BYTE : GL_FLOAT, pick(3) ? (void *)buf : NULL); break;
     case 12: glRasterPos3f(f(), f(), f()); glBitmap(ANY(small), ANY(small), f(), f(), f(), f(), pick(4) ? (GLubyte *)buf : NULL);
              glutBitmapCharacter(pick(2) ? GLUT_BITMAP_HELVETICA_12 : (void *)(intptr_t)pick(4000), pick(300) - 20); break;
-    default: glPointSize(f()); glLineWidth(f()); glViewport(ANY(grids), 0, ANY(small), ANY(grids)); glFogfv(GL_FOG_COLOR, fp()); break;
+    default: glPointParameterf(pick(2) ? GL_POINT_SIZE_MIN + pick(4) : (GLenum)next(), f());
+             glPointParameterfv(GL_POINT_DISTANCE_ATTENUATION, fp());
+             glPointSize(f()); glLineWidth(f()); glViewport(ANY(grids), 0, ANY(small), ANY(grids)); glFogfv(GL_FOG_COLOR, fp()); break;
     }
 }
 

@@ -35,6 +35,9 @@ use super::types::*;
 use super::variants::GlComponent;
 use super::Gl;
 
+/// How many arrays there are.
+const ARRAYS: usize = 8;
+
 /// Which array, as an index into [`VertexArrays::arrays`].
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum Which {
@@ -46,10 +49,12 @@ pub(crate) enum Which {
     EdgeFlag,
     /// GL 1.4's secondary colour (`GL_EXT_secondary_color`).
     SecondaryColor,
+    /// GL 1.4's fog coordinate (`GL_EXT_fog_coord`).
+    FogCoord,
 }
 
 impl Which {
-    const ALL: [Which; 7] = [
+    const ALL: [Which; ARRAYS] = [
         Which::Vertex,
         Which::Normal,
         Which::Color,
@@ -57,6 +62,7 @@ impl Which {
         Which::TexCoord,
         Which::EdgeFlag,
         Which::SecondaryColor,
+        Which::FogCoord,
     ];
 
     fn of_capability(cap: GLenum) -> Option<Which> {
@@ -72,6 +78,7 @@ impl Which {
             Which::TexCoord => GL_TEXTURE_COORD_ARRAY,
             Which::EdgeFlag => GL_EDGE_FLAG_ARRAY,
             Which::SecondaryColor => GL_SECONDARY_COLOR_ARRAY,
+            Which::FogCoord => GL_FOG_COORD_ARRAY,
         }
     }
 
@@ -84,6 +91,7 @@ impl Which {
             Which::TexCoord => GL_TEXTURE_COORD_ARRAY_POINTER,
             Which::EdgeFlag => GL_EDGE_FLAG_ARRAY_POINTER,
             Which::SecondaryColor => GL_SECONDARY_COLOR_ARRAY_POINTER,
+            Which::FogCoord => GL_FOG_COORD_ARRAY_POINTER,
         }
     }
 
@@ -97,6 +105,7 @@ impl Which {
             }
             Which::Index => &[GL_UNSIGNED_BYTE, GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE],
             Which::EdgeFlag => &[GL_UNSIGNED_BYTE],
+            Which::FogCoord => &[GL_FLOAT, GL_DOUBLE],
         };
         types.contains(&type_)
     }
@@ -109,7 +118,7 @@ impl Which {
             // Mesa takes 4 for the secondary colour too (measured on Mesa 22.3).
             Which::Color | Which::SecondaryColor => (3..=4).contains(&size),
             Which::Normal => size == 3,
-            Which::Index | Which::EdgeFlag => size == 1,
+            Which::Index | Which::EdgeFlag | Which::FogCoord => size == 1,
         }
     }
 }
@@ -228,6 +237,7 @@ struct Element {
     tex_coord: Option<[f32; 4]>,
     color: Option<[f32; 4]>,
     secondary_color: Option<[f32; 4]>,
+    fog_coord: Option<f32>,
     normal: Option<[f32; 4]>,
     vertex: Option<[f32; 4]>,
 }
@@ -236,11 +246,11 @@ struct Element {
 /// them.
 #[derive(Clone, Debug, PartialEq)]
 pub(crate) struct VertexArrays {
-    arrays: [ArrayState; 7],
+    arrays: [ArrayState; ARRAYS],
     /// `glEdgeFlag`'s current value (Mesa keeps it as a float and reports `== 1.0`).
     pub edge_flag: bool,
     /// One entry per `glPushClientAttrib`: the arrays when `GL_CLIENT_VERTEX_ARRAY_BIT` was set.
-    saved: Vec<Option<Box<[ArrayState; 7]>>>,
+    saved: Vec<Option<Box<[ArrayState; ARRAYS]>>>,
 }
 
 impl Default for VertexArrays {
@@ -254,6 +264,7 @@ impl Default for VertexArrays {
                 ArrayState::new(4, GL_FLOAT),
                 ArrayState::new(1, GL_UNSIGNED_BYTE),
                 ArrayState::new(3, GL_FLOAT),
+                ArrayState::new(1, GL_FLOAT),
             ],
             edge_flag: true,
             saved: Vec::new(),
@@ -293,6 +304,9 @@ impl VertexArrays {
         }
         if let Some(a) = on(Which::SecondaryColor) {
             e.secondary_color = Some(a.fetch(i, secondary_color)?);
+        }
+        if let Some(a) = on(Which::FogCoord) {
+            e.fog_coord = Some(a.fetch(i, plain)?[0]);
         }
         if let Some(a) = on(Which::Index) {
             a.fetch(i, plain)?; // read (as GL does); colour index has no effect in RGBA
@@ -407,6 +421,12 @@ impl Gl {
         self.array_pointer(Which::SecondaryColor, size, type_, stride, pointer.into_pointer());
     }
 
+    /// `glFogCoordPointer(type, stride, pointer)` (GL 1.4): one `GL_FLOAT` or `GL_DOUBLE` per
+    /// element.
+    pub fn fog_coord_pointer(&mut self, type_: GLenum, stride: GLsizei, pointer: impl PointerArg) {
+        self.array_pointer(Which::FogCoord, 1, type_, stride, pointer.into_pointer());
+    }
+
     /// `glEdgeFlagPointer(stride, pointer)`: one `GLboolean` per element.
     pub fn edge_flag_pointer(&mut self, stride: GLsizei, pointer: impl PointerArg) {
         self.array_pointer(Which::EdgeFlag, 1, GL_UNSIGNED_BYTE, stride, pointer.into_pointer());
@@ -502,6 +522,9 @@ impl Gl {
         if let Some(c) = e.secondary_color {
             // A size-4 array gives the alpha too, as Mesa reads it (a size-3 one 1).
             self.secondary_color(c);
+        }
+        if let Some(c) = e.fog_coord {
+            self.fog_coordf(c);
         }
         if let Some([x, y, z, _]) = e.normal {
             self.normal3f(x, y, z);
@@ -608,8 +631,9 @@ impl Gl {
                 (a.size, a.type_, a.stride, a.pointer) = (size, type_, stride, at(offset));
             }
         };
-        // Mesa leaves the secondary colour array as it was (measured on Mesa 22.3).
-        let [vertex, normal, color, index, tex, edge, _] = &mut self.client.arrays.arrays;
+        // Mesa leaves the secondary colour array as it was (measured on Mesa 22.3), and the
+        // fog coordinate array.
+        let [vertex, normal, color, index, tex, edge, _, _] = &mut self.client.arrays.arrays;
         edge.enabled = false;
         index.enabled = false;
         set(tex, layout.tex > 0, layout.tex, GL_FLOAT, 0);
@@ -699,6 +723,8 @@ pub(crate) static GET_ROWS: &[StateVar] = &[
     array_row!(GL_SECONDARY_COLOR_ARRAY_SIZE, SecondaryColor.size),
     array_row!(GL_SECONDARY_COLOR_ARRAY_TYPE, SecondaryColor.type_),
     array_row!(GL_SECONDARY_COLOR_ARRAY_STRIDE, SecondaryColor.stride),
+    array_row!(GL_FOG_COORD_ARRAY_TYPE, FogCoord.type_),
+    array_row!(GL_FOG_COORD_ARRAY_STRIDE, FogCoord.stride),
 ];
 
 #[cfg(test)]

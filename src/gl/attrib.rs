@@ -256,7 +256,12 @@ impl Gl {
             self.server.color_buffer = saved.color_buffer;
         }
         if has(GL_FOG_BIT) {
+            // Mesa 22.3 restores every fog value but GL 1.4's GL_FOG_COORD_SRC, though GL
+            // files it under the group (table 6.9): a plain program's glPopAttrib(GL_FOG_BIT)
+            // leaves the source as it was set since the push, and so does gleval's.
+            let source = self.server.fog.params.coord_source;
             self.server.fog = saved.fog;
+            self.server.fog.params.coord_source = source;
         }
         if has(GL_STENCIL_BUFFER_BIT) {
             self.server.stencil = saved.stencil;

@@ -1,6 +1,6 @@
 //! The current attribute group (GL 1.1 spec §2.7; table 6.3): the colour, normal and texture
-//! coordinate a vertex picks up, and GL 1.4's secondary colour, which `glColor`, `glNormal`,
-//! `glTexCoord` and `glSecondaryColor` (`immediate.rs`, `variants.rs`) set and `GL_CURRENT_BIT` saves. The group's other values have their areas:
+//! coordinate a vertex picks up, and GL 1.4's secondary colour and fog coordinate, which `glColor`, `glNormal`,
+//! `glTexCoord`, `glSecondaryColor` and `glFogCoord` (`immediate.rs`, `variants.rs`) set and `GL_CURRENT_BIT` saves. The group's other values have their areas:
 //! the raster position `raster_pos.rs`, the index `color_index.rs`, the edge flag `arrays.rs`.
 
 use super::consts::*;
@@ -15,6 +15,8 @@ pub(crate) struct Current {
     /// GL 1.4's secondary colour: (r, g, b, 1) (a size-4 array gives the alpha), initially
     /// (0, 0, 0, 1) as Mesa answers.
     pub secondary_color: [f32; 4],
+    /// GL 1.4's fog coordinate (`glFogCoord`), initially 0.
+    pub fog_coord: f32,
 }
 
 impl Default for Current {
@@ -24,6 +26,7 @@ impl Default for Current {
             normal: [0.0, 0.0, 1.0],
             tex_coord: [0.0, 0.0, 0.0, 1.0],
             secondary_color: [0.0, 0.0, 0.0, 1.0],
+            fog_coord: 0.0,
         }
     }
 }
@@ -34,6 +37,7 @@ pub(crate) static GET_ROWS: &[StateVar] = &[
     row(GL_CURRENT_TEXTURE_COORDS, 4, Kind::Float, |gl, o| put(o, &gl.server.current.tex_coord)),
     row(GL_CURRENT_NORMAL, 3, Kind::Normalized, |gl, o| put(o, &gl.server.current.normal)),
     row(GL_CURRENT_SECONDARY_COLOR, 4, Kind::Normalized, |gl, o| put(o, &gl.server.current.secondary_color)),
+    row(GL_CURRENT_FOG_COORD, 1, Kind::Float, |gl, o| o[0] = gl.server.current.fog_coord.into()),
 ];
 
 #[cfg(test)]
@@ -54,5 +58,19 @@ mod tests {
         let mut v = [0.0; 4];
         gl.get_floatv(GL_CURRENT_SECONDARY_COLOR, &mut v);
         assert_eq!(v, [0.5, 0.5, 0.5, 1.0]);
+    }
+
+    /// `glPopAttrib(GL_CURRENT_BIT)` restores the fog coordinate: Mesa 22.3 does in a plain
+    /// program (glFogCoordf(0.5), push, glFogCoordf(9), pop reads back 0.5).
+    #[test]
+    fn current_bit_saves_the_fog_coordinate() {
+        let mut gl = Gl::new(4, 4);
+        gl.fog_coordf(0.5);
+        gl.push_attrib(GL_CURRENT_BIT);
+        gl.fog_coordf(9.0);
+        gl.pop_attrib();
+        let mut v = [0.0];
+        gl.get_floatv(GL_CURRENT_FOG_COORD, &mut v);
+        assert_eq!(v, [0.5]);
     }
 }

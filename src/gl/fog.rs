@@ -23,11 +23,14 @@ pub struct Fog {
     pub end: f32,
     /// `GL_FOG_COLOR`, clamped to [0, 1].
     pub color: [f32; 4],
+    /// GL 1.4's `GL_FOG_COORD_SRC`: `GL_FRAGMENT_DEPTH` (the eye-space distance, initially)
+    /// or `GL_FOG_COORD` (the vertices' `glFogCoord`, §3.10; Mesa takes its absolute value).
+    pub coord_source: GLenum,
 }
 
 impl Default for Fog {
     fn default() -> Self {
-        Self { mode: GL_EXP, density: 1.0, start: 0.0, end: 1.0, color: [0.0; 4] }
+        Self { mode: GL_EXP, density: 1.0, start: 0.0, end: 1.0, color: [0.0; 4], coord_source: GL_FRAGMENT_DEPTH }
     }
 }
 
@@ -58,7 +61,8 @@ impl Gl {
 
     /// `glFogfv`: `GL_FOG_MODE` (`GL_LINEAR`, `GL_EXP`, `GL_EXP2`), `GL_FOG_DENSITY` (a
     /// negative one → `GL_INVALID_VALUE`), `GL_FOG_START`, `GL_FOG_END`, `GL_FOG_COLOR` (4
-    /// values) or `GL_FOG_INDEX` (colour-index mode: kept, not drawn). Another name or mode →
+    /// values), `GL_FOG_INDEX` (colour-index mode: kept, not drawn) or GL 1.4's
+    /// `GL_FOG_COORD_SRC` (`GL_FRAGMENT_DEPTH` or `GL_FOG_COORD`). Another name or mode →
     /// `GL_INVALID_ENUM`; a short slice → `GL_INVALID_VALUE`.
     pub fn fogfv(&mut self, pname: GLenum, params: &[GLfloat]) {
         if self.compiled_state_call(|| ListCommand::Fog(pname, params.to_vec())) {
@@ -79,6 +83,10 @@ impl Gl {
             GL_FOG_END => fog.end = values[0],
             GL_FOG_COLOR => fog.color = std::array::from_fn(|i| values[i].clamp(0.0, 1.0)),
             GL_FOG_INDEX => self.server.fog.index = values[0],
+            GL_FOG_COORD_SRC => match values[0] as GLenum {
+                source @ (GL_FRAGMENT_DEPTH | GL_FOG_COORD) => fog.coord_source = source,
+                _ => return self.set_error(GL_INVALID_ENUM),
+            },
             _ => return self.set_error(GL_INVALID_ENUM),
         }
         self.touch_state();
@@ -108,6 +116,7 @@ pub(crate) static GET_ROWS: &[StateVar] = &[
     row(GL_FOG_START, 1, Kind::Float, |gl, o| o[0] = gl.server.fog.params.start.into()),
     row(GL_FOG_END, 1, Kind::Float, |gl, o| o[0] = gl.server.fog.params.end.into()),
     row(GL_FOG_MODE, 1, Kind::Int, |gl, o| put_enum(o, gl.server.fog.params.mode)),
+    row(GL_FOG_COORD_SRC, 1, Kind::Int, |gl, o| put_enum(o, gl.server.fog.params.coord_source)),
 ];
 
 #[cfg(test)]

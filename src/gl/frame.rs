@@ -66,6 +66,9 @@ pub struct DrawState {
     pub shade_model: GLenum,
     /// `glPointSize`.
     pub point_size: f32,
+    /// GL 1.4's point parameters, which derive each point's size from `point_size`
+    /// ([`PointParameters::derived_size`]).
+    pub point_parameters: super::PointParameters,
     /// `glLineWidth`.
     pub line_width: f32,
     /// Front and back `glPolygonMode`.
@@ -195,6 +198,8 @@ pub enum Call {
     TexCoord([f32; 4]),
     /// `glSecondaryColor*` (r, g, b, 1; a size-4 array's alpha).
     SecondaryColor([f32; 4]),
+    /// `glFogCoord*`.
+    FogCoord(f32),
 }
 
 /// Everything drawn since the context was made or the frame last taken.

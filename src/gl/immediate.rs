@@ -86,6 +86,7 @@ impl Gl {
             normal: self.server.current.normal,
             tex_coord: self.server.current.tex_coord,
             secondary_color: self.server.current.secondary_color,
+            fog_coord: self.server.current.fog_coord,
         }
     }
 
@@ -199,6 +200,36 @@ impl Gl {
     pub fn secondary_color3fv(&mut self, v: &[GLfloat]) {
         if let Some(v) = self.needs::<3>(v) {
             self.secondary_color3f(v[0], v[1], v[2]);
+        }
+    }
+
+    /// `glFogCoordf` (GL 1.4 §2.7, `GL_EXT_fog_coord`): the coordinate fog is computed from
+    /// while `GL_FOG_COORD_SRC` is `GL_FOG_COORD` (§3.10). Allowed between begin and end,
+    /// compiled into lists.
+    pub fn fog_coordf(&mut self, coord: GLfloat) {
+        if self.compiled(|| ListCommand::Immediate(Call::FogCoord(coord))) {
+            return;
+        }
+        self.server.current.fog_coord = coord;
+        self.recorder.frame.calls.push(Call::FogCoord(coord));
+    }
+
+    /// `glFogCoordd`: the coordinate as a float, as Mesa keeps it.
+    pub fn fog_coordd(&mut self, coord: GLdouble) {
+        self.fog_coordf(coord as f32);
+    }
+
+    /// `glFogCoordfv`: `v` needs 1 value.
+    pub fn fog_coordfv(&mut self, v: &[GLfloat]) {
+        if let Some(v) = self.needs::<1>(v) {
+            self.fog_coordf(v[0]);
+        }
+    }
+
+    /// `glFogCoorddv`: `v` needs 1 value.
+    pub fn fog_coorddv(&mut self, v: &[GLdouble]) {
+        if let Some(v) = self.first::<1, GLdouble>(v) {
+            self.fog_coordd(v[0]);
         }
     }
 

@@ -379,6 +379,7 @@ impl Gl {
             C::Immediate(Call::Normal([x, y, z])) => self.normal3f(*x, *y, *z),
             C::Immediate(Call::TexCoord([s, t, r, q])) => self.tex_coord4f(*s, *t, *r, *q),
             C::Immediate(Call::SecondaryColor(rgba)) => self.secondary_color(*rgba),
+            C::Immediate(Call::FogCoord(c)) => self.fog_coordf(*c),
             C::Enable(cap) => self.enable(*cap),
             C::Disable(cap) => self.disable(*cap),
             C::Lighting(call) => self.replay_lighting_call(call),

@@ -84,6 +84,7 @@ pub use lighting::{Light, Lighting, Material};
 pub use lists::MAX_LIST_NESTING;
 pub use offset::PolygonOffset;
 pub use pixel_transfer::{ColorTransfer, DepthTransfer, MAX_PIXEL_MAP_TABLE};
+pub use point::PointParameters;
 pub use select::SelectHit;
 pub use texture::{
     texture_source, BoundTexture, Combine, Combiner, TexLevel, TexParams, MAX_3D_TEXTURE_SIZE, MAX_TEXTURE_SIZE,
@@ -156,7 +157,7 @@ pub fn error_name(code: GLenum) -> &'static str {
 /// (`render/soft/sampler.rs`, `shaders/fragment.wgsl`), `GL_GENERATE_MIPMAP`
 /// (`texture/generate.rs`).
 const EXTENSIONS: &str =
-    "GL_ARB_texture_border_clamp GL_ARB_texture_env_add GL_ARB_texture_env_combine GL_ARB_texture_env_dot3 GL_ARB_texture_mirrored_repeat GL_ARB_window_pos GL_EXT_bgra GL_EXT_blend_color GL_EXT_blend_equation_separate GL_EXT_blend_func_separate GL_EXT_blend_minmax GL_EXT_blend_subtract GL_EXT_draw_range_elements GL_EXT_multi_draw_arrays GL_EXT_packed_pixels GL_EXT_rescale_normal GL_EXT_stencil_wrap GL_EXT_texture3D GL_EXT_texture_edge_clamp GL_EXT_texture_env_add GL_EXT_texture_env_combine GL_IBM_texture_mirrored_repeat GL_NV_blend_square GL_SGIS_generate_mipmap GL_SGIS_texture_border_clamp GL_SGIS_texture_edge_clamp GL_SGIS_texture_lod";
+    "GL_ARB_point_parameters GL_ARB_texture_border_clamp GL_ARB_texture_env_add GL_ARB_texture_env_combine GL_ARB_texture_env_dot3 GL_ARB_texture_mirrored_repeat GL_ARB_window_pos GL_EXT_bgra GL_EXT_blend_color GL_EXT_blend_equation_separate GL_EXT_blend_func_separate GL_EXT_blend_minmax GL_EXT_blend_subtract GL_EXT_draw_range_elements GL_EXT_fog_coord GL_EXT_multi_draw_arrays GL_EXT_packed_pixels GL_EXT_point_parameters GL_EXT_rescale_normal GL_EXT_stencil_wrap GL_EXT_texture3D GL_EXT_texture_edge_clamp GL_EXT_texture_env_add GL_EXT_texture_env_combine GL_IBM_texture_mirrored_repeat GL_NV_blend_square GL_SGIS_generate_mipmap GL_SGIS_texture_border_clamp GL_SGIS_texture_edge_clamp GL_SGIS_texture_lod";
 
 /// A GL context without a GPU: GL state plus the recording of what is drawn.
 ///
@@ -469,6 +470,7 @@ impl Gl {
             color_sum: self.server.caps.is_on(GL_COLOR_SUM),
             shade_model: self.server.shade_model,
             point_size: self.server.point.size,
+            point_parameters: self.server.point.parameters,
             line_width: self.server.line.width,
             polygon_mode: self.server.polygon.mode,
             front_face: self.server.polygon.front_face,
@@ -567,6 +569,7 @@ mod tests {
         assert!(gl.get_string(GL_VERSION).is_some_and(|v| v.starts_with(&version)));
         // The claims, spelled out: a new one is a decision, made here as well.
         let claimed = [
+            "GL_ARB_point_parameters",
             "GL_ARB_texture_border_clamp",
             "GL_ARB_texture_env_add",
             "GL_ARB_texture_env_combine",
@@ -580,8 +583,10 @@ mod tests {
             "GL_EXT_blend_minmax",
             "GL_EXT_blend_subtract",
             "GL_EXT_draw_range_elements",
+            "GL_EXT_fog_coord",
             "GL_EXT_multi_draw_arrays",
             "GL_EXT_packed_pixels",
+            "GL_EXT_point_parameters",
             "GL_EXT_rescale_normal",
             "GL_EXT_stencil_wrap",
             "GL_EXT_texture3D",

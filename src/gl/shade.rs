@@ -71,7 +71,10 @@ impl<'a> Shader<'a> {
                 t.generate.map_or(given, |g| g.apply(given, Vec4::from_array(v.position), eye, self.eye_normal(v)));
             t.matrix * generated
         });
-        let fog = eye.z.abs();
+        let fog = match &self.state.fog {
+            Some(f) if f.coord_source == GL_FOG_COORD => v.fog_coord.abs(),
+            _ => eye.z.abs(),
+        };
         let Some(lighting) = &self.state.lighting else {
             let c = color.clamp(Vec4::ZERO, Vec4::ONE);
             let summed = Vec4::from_array(v.secondary_color).truncate().clamp(Vec3::ZERO, Vec3::ONE).extend(0.0);

@@ -16,4 +16,7 @@ pub struct Vertex {
     pub tex_coord: [f32; 4],
     /// `glSecondaryColor`'s RGB and 1, not clamped here.
     pub secondary_color: [f32; 4],
+    /// GL 1.4's `glFogCoord`: what fog is computed from under `GL_FOG_COORD_SRC`
+    /// `GL_FOG_COORD` (no evaluator map sets it).
+    pub fog_coord: f32,
 }

@@ -5,7 +5,7 @@
 use super::layout::{GpuDraw, GpuLight, GpuMaterial};
 use crate::gl::consts::*;
 use crate::gl::types::GLenum;
-use crate::gl::{DrawState, Light, Lighting, Material};
+use crate::gl::{DrawState, Light, Lighting, Material, Vertex};
 use glam::Mat4;
 
 fn light_uniform(l: &Light) -> GpuLight {
@@ -36,16 +36,20 @@ fn flag(b: bool) -> f32 {
 }
 
 /// The draw uniform of a mesh drawn with `state` into a `width` × `height` target, whose
-/// vertices' secondary colour is `secondary` (the current one when it was recorded).
+/// vertices' secondary colour and fog coordinate are `template`'s (the current ones when it was
+/// recorded: no map evaluates them).
 /// With `flip` the target is drawn upside down (the renderer's headless frames).
 #[must_use]
 pub(crate) fn draw_uniform(
     state: &DrawState,
-    (polygon, secondary): (bool, [f32; 4]),
+    (polygon, template): (bool, &Vertex),
     (width, height): (u32, u32),
     flip: bool,
 ) -> GpuDraw {
     let normal_matrix = Mat4::from_mat3(state.normal_matrix());
+    // GL 1.4's GL_FOG_COORD_SRC: the fog coordinate instead of the eye distance (as
+    // `gl::shade`, Mesa's absolute value).
+    let fog_from_coord = state.fog.is_some_and(|f| f.coord_source == GL_FOG_COORD);
     let [vx, vy, vw, vh] = state.viewport.map(|c| c as f32);
     let (fw, fh) = (width as f32, height as f32);
     let sign = if flip { -1.0 } else { 1.0 };
@@ -57,11 +61,11 @@ pub(crate) fn draw_uniform(
         texture_matrix: state.texture.as_ref().map_or(Mat4::IDENTITY, |t| t.matrix).to_cols_array_2d(),
         viewport,
         depth_range: [state.depth_range[0], state.depth_range[1], 0.0, 0.0],
-        primitive: [flag(polygon), 0.0, 0.0, 0.0],
+        primitive: [flag(polygon), flag(fog_from_coord), template.fog_coord.abs(), 0.0],
         ..GpuDraw::default()
     };
     if state.color_sum && state.lighting.is_none() {
-        let [r, g, b, _] = secondary.map(|c| c.clamp(0.0, 1.0));
+        let [r, g, b, _] = template.secondary_color.map(|c| c.clamp(0.0, 1.0));
         draw.color_sum = [r, g, b, 0.0];
     }
     if let Some(l) = &state.lighting {

@@ -175,7 +175,7 @@ impl MeshRaster {
             }
             let uniform_offset = out.uniforms.len() as u32;
             let polygon = matches!(mesh.mode, MeshMode::Fill | MeshMode::Triangles);
-            let draw = draw_uniform(state, (polygon, mesh.template().secondary_color), size, flip);
+            let draw = draw_uniform(state, (polygon, &mesh.template()), size, flip);
             out.uniforms.extend_from_slice(bytemuck::bytes_of(&draw));
             out.uniforms.resize((uniform_offset + stride) as usize, 0);
             let draw = MeshDraw {

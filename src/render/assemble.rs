@@ -474,13 +474,14 @@ impl PrimitiveContext<'_, '_> {
         if !clip::point_inside(&c, &self.state.clip_planes) {
             return;
         }
+        let size = self.state.point_parameters.derived_size(self.state.point_size, c.eye.z);
         if self.state.point_smooth {
-            if let Some(quad) = smooth::point_quad(c, self.state.point_size, self.state.viewport) {
+            if let Some(quad) = smooth::point_quad(c, size, self.state.viewport) {
                 self.out.push_as(self.state, Topology::Triangles, (Smooth::Point, None), &quad);
             }
             return;
         }
-        let size = self.state.point_size.round().max(1.0);
+        let size = size.round().max(1.0);
         if size <= 1.0 {
             return self.out.push(self.state, Topology::Points, &[c]);
         }
@@ -493,11 +494,14 @@ impl PrimitiveContext<'_, '_> {
         let (hx, hy) = (size / vw.max(1) as f32 * p.w, size / vh.max(1) as f32 * p.w);
         // llvmpipe's wide points break ties the other way from its triangles: a square edge
         // through a row of pixel centres takes the row above it in GL's window, not the one
-        // below (measured on Mesa 22.3: a 5-pixel point at window y = 100 fills rows 98..102).
-        // Moving the square up by one sub-pixel step (1/256, the rasterisers' precision) makes
-        // both rasterisers do the same.
+        // below (measured on Mesa 22.3: a 5-pixel point at window y = 100 fills rows 98..102),
+        // and a column through pixel centres takes the column to its right (a 5-pixel point at
+        // window x = 16 fills columns 14..18: `tests/reference/pixels/point_parameters.c`).
+        // Moving the square up and right by one sub-pixel step (1/256, the rasterisers'
+        // precision) makes both rasterisers do the same.
         let up = 2.0 / 256.0 / vh.max(1) as f32 * p.w;
-        let corner = |dx: f32, dy: f32| Corner { clip: p + Vec4::new(dx * hx, dy * hy + up, 0.0, 0.0), ..c };
+        let right = 2.0 / 256.0 / vw.max(1) as f32 * p.w;
+        let corner = |dx: f32, dy: f32| Corner { clip: p + Vec4::new(dx * hx + right, dy * hy + up, 0.0, 0.0), ..c };
         let (a, b, cc, d) = (corner(-1.0, -1.0), corner(1.0, -1.0), corner(1.0, 1.0), corner(-1.0, 1.0));
         self.out.push(self.state, Topology::Triangles, &[a, b, cc, a, cc, d]);
     }

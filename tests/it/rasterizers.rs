@@ -1034,3 +1034,205 @@ fn wrap_modes_are_mesas_on_both_rasterisers() {
         assert_diagonal_is_mesas(&mut renderer, &frame, &expected, 2, &format!("set-up {k}"));
     }
 }
+
+/// GL 1.4's point parameters on both rasterisers, against what Mesa 22.3 (llvmpipe, OSMesa)
+/// drew for the same calls (`tests/reference/pixels/point_parameters.c` prints these values):
+/// one aliased point a frame, its size attenuated by the distance and clamped to the minimum
+/// and maximum; the number of pixels drawn and their bounding box (x0, y0, x1, y1, GL's
+/// window coordinates), exactly.
+#[test]
+fn point_parameters_are_mesas_on_both_rasterisers() {
+    // (size, attenuation, min, max, eye z)
+    let setups: [(f32, [f32; 3], f32, f32, f32); 11] = [
+        (8.0, [1.0, 0.0, 0.0], 0.0, 255.0, 0.0),
+        (8.0, [0.0, 1.0, 0.0], 0.0, 255.0, -2.0),
+        (8.0, [0.0, 1.0, 0.0], 0.0, 255.0, -3.0),
+        (8.0, [0.0, 0.0, 1.0], 0.0, 255.0, -1.5),
+        (1.0, [1.0, 0.0, 0.0], 3.0, 255.0, 0.0),
+        (8.0, [1.0, 0.0, 0.0], 0.0, 5.0, 0.0),
+        (8.0, [0.0, 0.0, 1.0], 3.0, 255.0, -10.0),
+        (1.0, [1.0, 0.0, 0.0], 7.0, 2.0, 0.0),
+        (8.0, [2.0, 0.0, 0.0], 0.0, 255.0, 0.0),
+        (6.0, [0.0, 1.0, 0.0], 0.0, 255.0, 2.0),
+        (9.0, [0.5, 0.25, 0.0], 0.0, 255.0, -6.0),
+    ];
+    let mesa: [[i32; 5]; 11] = [
+        [64, 12, 12, 19, 19],
+        [36, 13, 13, 18, 18],
+        [25, 14, 14, 18, 18],
+        [25, 14, 14, 18, 18],
+        [9, 15, 15, 17, 17],
+        [25, 14, 14, 18, 18],
+        [9, 15, 15, 17, 17],
+        [49, 13, 13, 19, 19],
+        [36, 13, 13, 18, 18],
+        [16, 14, 14, 17, 17],
+        [36, 13, 13, 18, 18],
+    ];
+    const W: usize = 32;
+    let drawn = |pixels: &[u8]| {
+        let (mut n, mut x0, mut y0, mut x1, mut y1) = (0, W as i32, W as i32, -1, -1);
+        for row in 0..W {
+            for x in 0..W {
+                if pixels[(row * W + x) * 4] != 0 {
+                    let (x, y) = (x as i32, (W - 1 - row) as i32);
+                    n += 1;
+                    (x0, y0, x1, y1) = (x0.min(x), y0.min(y), x1.max(x), y1.max(y));
+                }
+            }
+        }
+        [n, x0, y0, x1, y1]
+    };
+    let mut renderer = optional_renderer();
+    for (k, ((size, attenuation, min, max, z), expected)) in setups.into_iter().zip(mesa).enumerate() {
+        let mut gl = Gl::new(W as i32, W as i32);
+        gl.matrix_mode(GL_PROJECTION);
+        gl.ortho(-1.0, 1.0, -1.0, 1.0, -100.0, 100.0);
+        gl.matrix_mode(GL_MODELVIEW);
+        gl.point_size(size);
+        gl.point_parameterfv(GL_POINT_DISTANCE_ATTENUATION, &attenuation);
+        gl.point_parameterf(GL_POINT_SIZE_MIN, min);
+        gl.point_parameterf(GL_POINT_SIZE_MAX, max);
+        gl.begin(GL_POINTS);
+        gl.vertex3f(0.0, 0.0, z);
+        gl.end();
+        assert_eq!(gl.get_error(), GL_NO_ERROR);
+        let frame = gl.take_frame();
+        let soft = drawn(&soft::render_frame(&frame, W as u32, W as u32).pixels);
+        assert_eq!(soft, expected, "CPU, set-up {k}");
+        if let Some(renderer) = renderer.as_mut() {
+            let wgpu = drawn(&renderer.render_frame(&frame, W as u32, W as u32).expect("wgpu renders").pixels);
+            assert_eq!(wgpu, expected, "wgpu, set-up {k}");
+        }
+    }
+}
+
+/// GL 1.4's fog coordinate on both rasterisers (and the GPU mesh path), against what Mesa 22.3
+/// (llvmpipe, OSMesa) drew for the same calls (`tests/reference/pixels/fog_coord.c` prints
+/// these values): a red square fogged blue from its vertices' `glFogCoord` (left edge c0, right
+/// edge c1; Mesa takes each vertex's absolute value, so -2 and 2 fog alike), in linear and
+/// exponential fog, from immediate calls and from a fog coordinate array; the eye distance
+/// under `GL_FRAGMENT_DEPTH`; an evaluated patch, which takes the current coordinate. The
+/// diagonal's pixels, within 2/255.
+#[test]
+fn fog_coordinates_are_mesas_on_both_rasterisers() {
+    #[derive(Clone, Copy)]
+    enum How {
+        Immediate,
+        Array,
+        Evaluated,
+    }
+    let setups = [
+        (GL_FOG_COORD, GL_LINEAR, 0.0, 2.0, How::Immediate),
+        (GL_FOG_COORD, GL_LINEAR, -2.0, 2.0, How::Immediate),
+        (GL_FOG_COORD, GL_EXP, 0.0, 3.0, How::Immediate),
+        (GL_FOG_COORD, GL_LINEAR, 0.5, 1.5, How::Array),
+        (GL_FRAGMENT_DEPTH, GL_LINEAR, 0.0, 2.0, How::Immediate),
+        (GL_FOG_COORD, GL_LINEAR, 0.5, 0.5, How::Evaluated),
+    ];
+    let mesa: [[[u8; 4]; 8]; 6] = [
+        [
+            [239, 0, 16, 255],
+            [207, 0, 48, 255],
+            [175, 0, 80, 255],
+            [143, 0, 112, 255],
+            [112, 0, 143, 255],
+            [80, 0, 175, 255],
+            [48, 0, 207, 255],
+            [16, 0, 239, 255],
+        ],
+        [
+            [0, 0, 255, 255],
+            [0, 0, 255, 255],
+            [0, 0, 255, 255],
+            [0, 0, 255, 255],
+            [0, 0, 255, 255],
+            [0, 0, 255, 255],
+            [0, 0, 255, 255],
+            [0, 0, 255, 255],
+        ],
+        [
+            [211, 0, 44, 255],
+            [145, 0, 110, 255],
+            [100, 0, 155, 255],
+            [69, 0, 186, 255],
+            [47, 0, 208, 255],
+            [32, 0, 223, 255],
+            [22, 0, 233, 255],
+            [15, 0, 240, 255],
+        ],
+        [
+            [183, 0, 72, 255],
+            [167, 0, 88, 255],
+            [151, 0, 104, 255],
+            [135, 0, 120, 255],
+            [120, 0, 135, 255],
+            [104, 0, 151, 255],
+            [88, 0, 167, 255],
+            [72, 0, 183, 255],
+        ],
+        [
+            [191, 0, 64, 255],
+            [191, 0, 64, 255],
+            [191, 0, 64, 255],
+            [191, 0, 64, 255],
+            [191, 0, 64, 255],
+            [191, 0, 64, 255],
+            [191, 0, 64, 255],
+            [191, 0, 64, 255],
+        ],
+        [
+            [191, 0, 64, 255],
+            [191, 0, 64, 255],
+            [191, 0, 64, 255],
+            [191, 0, 64, 255],
+            [191, 0, 64, 255],
+            [191, 0, 64, 255],
+            [191, 0, 64, 255],
+            [191, 0, 64, 255],
+        ],
+    ];
+    let patch = [-1.0, -1.0, 0.5, 1.0, -1.0, 0.5, -1.0, 1.0, 0.5, 1.0, 1.0, 0.5];
+    let mut renderer = optional_renderer();
+    for (k, ((source, mode, c0, c1, how), expected)) in setups.into_iter().zip(mesa).enumerate() {
+        let mut gl = Gl::new(8, 8);
+        gl.enable(GL_FOG);
+        gl.fogfv(GL_FOG_COLOR, &[0.0, 0.0, 1.0, 1.0]);
+        gl.fogf(GL_FOG_START, 0.0);
+        gl.fogf(GL_FOG_END, 2.0);
+        gl.fogf(GL_FOG_DENSITY, 1.0);
+        gl.color3f(1.0, 0.0, 0.0);
+        gl.map2f(GL_MAP2_VERTEX_3, 0.0, 1.0, 3, 2, 0.0, 1.0, 6, 2, &patch);
+        gl.enable(GL_MAP2_VERTEX_3);
+        gl.map_grid2f(4, 0.0, 1.0, 4, 0.0, 1.0);
+        gl.fogi(GL_FOG_COORD_SRC, source as i32);
+        gl.fogi(GL_FOG_MODE, mode as i32);
+        let xy = ClientArray::new(&[-1.0f32, -1.0, 1.0, -1.0, 1.0, 1.0, -1.0, 1.0]);
+        let coords = [c0, c1, c1, c0];
+        match how {
+            How::Immediate => {
+                gl.begin(GL_QUADS);
+                for (v, &c) in coords.iter().enumerate() {
+                    gl.fog_coordf(c);
+                    gl.vertex3f([-1.0, 1.0, 1.0, -1.0][v], [-1.0, -1.0, 1.0, 1.0][v], -0.5);
+                }
+                gl.end();
+            }
+            How::Array => {
+                let fog = ClientArray::new(&coords);
+                gl.vertex_pointer(2, GL_FLOAT, 0, &xy);
+                gl.fog_coord_pointer(GL_FLOAT, 0, &fog);
+                gl.enable_client_state(GL_VERTEX_ARRAY);
+                gl.enable_client_state(GL_FOG_COORD_ARRAY);
+                gl.draw_arrays(GL_QUADS, 0, 4);
+            }
+            How::Evaluated => {
+                gl.fog_coordf(c0);
+                gl.eval_mesh2(GL_FILL, 0, 4, 0, 4);
+            }
+        }
+        assert_eq!(gl.get_error(), GL_NO_ERROR);
+        let frame = gl.take_frame();
+        assert_diagonal_is_mesas(&mut renderer, &frame, &expected, 2, &format!("set-up {k}"));
+    }
+}

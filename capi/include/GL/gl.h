@@ -1324,6 +1324,31 @@ GLAPI void GLAPIENTRY glGetConvolutionParameteriv(GLenum target, GLenum pname, G
 GLAPI void GLAPIENTRY glSeparableFilter2D(GLenum target, GLenum internalformat, GLsizei width, GLsizei height, GLenum format, GLenum type, const GLvoid *row, const GLvoid *column);
 GLAPI void GLAPIENTRY glGetSeparableFilter(GLenum target, GLenum format, GLenum type, GLvoid *row, GLvoid *column, GLvoid *span);
 
+/* GL 1.4's point parameters (GL_ARB_point_parameters, GL_EXT_point_parameters): a point's size
+ * attenuated by its distance from the eye and clamped to [GL_POINT_SIZE_MIN, GL_POINT_SIZE_MAX]. */
+#define GL_ARB_point_parameters 1
+#define GL_EXT_point_parameters 1
+#define GL_POINT_SIZE_MIN 0x8126
+#define GL_POINT_SIZE_MAX 0x8127
+#define GL_POINT_FADE_THRESHOLD_SIZE 0x8128
+#define GL_POINT_DISTANCE_ATTENUATION 0x8129
+#define GL_POINT_SIZE_MIN_ARB 0x8126
+#define GL_POINT_SIZE_MAX_ARB 0x8127
+#define GL_POINT_FADE_THRESHOLD_SIZE_ARB 0x8128
+#define GL_POINT_DISTANCE_ATTENUATION_ARB 0x8129
+#define GL_POINT_SIZE_MIN_EXT 0x8126
+#define GL_POINT_SIZE_MAX_EXT 0x8127
+#define GL_POINT_FADE_THRESHOLD_SIZE_EXT 0x8128
+#define GL_DISTANCE_ATTENUATION_EXT 0x8129
+GLAPI void GLAPIENTRY glPointParameterf(GLenum pname, GLfloat param);
+GLAPI void GLAPIENTRY glPointParameterfv(GLenum pname, const GLfloat *params);
+GLAPI void GLAPIENTRY glPointParameteri(GLenum pname, GLint param);
+GLAPI void GLAPIENTRY glPointParameteriv(GLenum pname, const GLint *params);
+GLAPI void GLAPIENTRY glPointParameterfARB(GLenum pname, GLfloat param);
+GLAPI void GLAPIENTRY glPointParameterfvARB(GLenum pname, const GLfloat *params);
+GLAPI void GLAPIENTRY glPointParameterfEXT(GLenum pname, GLfloat param);
+GLAPI void GLAPIENTRY glPointParameterfvEXT(GLenum pname, const GLfloat *params);
+
 /* GL 1.4's secondary colour and colour sum (GL_EXT_secondary_color's names too). */
 #define GL_COLOR_SUM 0x8458
 #define GL_CURRENT_SECONDARY_COLOR 0x8459
@@ -1366,6 +1391,43 @@ GLAPI void GLAPIENTRY glSecondaryColor3uivEXT(const GLuint *v);
 GLAPI void GLAPIENTRY glSecondaryColor3usEXT(GLushort red, GLushort green, GLushort blue);
 GLAPI void GLAPIENTRY glSecondaryColor3usvEXT(const GLushort *v);
 GLAPI void GLAPIENTRY glSecondaryColorPointerEXT(GLint size, GLenum type, GLsizei stride, const GLvoid *pointer);
+
+/* GL 1.4's fog coordinate (GL_EXT_fog_coord): with GL_FOG_COORD_SRC GL_FOG_COORD, fog is
+ * computed from each vertex's glFogCoord (its absolute value, as Mesa) instead of the eye distance. */
+#define GL_EXT_fog_coord 1
+#define GL_FOG_COORDINATE_SOURCE 0x8450
+#define GL_FOG_COORDINATE 0x8451
+#define GL_FRAGMENT_DEPTH 0x8452
+#define GL_CURRENT_FOG_COORDINATE 0x8453
+#define GL_FOG_COORDINATE_ARRAY_TYPE 0x8454
+#define GL_FOG_COORDINATE_ARRAY_STRIDE 0x8455
+#define GL_FOG_COORDINATE_ARRAY_POINTER 0x8456
+#define GL_FOG_COORDINATE_ARRAY 0x8457
+#define GL_FOG_COORD_SRC 0x8450
+#define GL_FOG_COORD 0x8451
+#define GL_CURRENT_FOG_COORD 0x8453
+#define GL_FOG_COORD_ARRAY_TYPE 0x8454
+#define GL_FOG_COORD_ARRAY_STRIDE 0x8455
+#define GL_FOG_COORD_ARRAY_POINTER 0x8456
+#define GL_FOG_COORD_ARRAY 0x8457
+#define GL_FOG_COORDINATE_SOURCE_EXT 0x8450
+#define GL_FOG_COORDINATE_EXT 0x8451
+#define GL_FRAGMENT_DEPTH_EXT 0x8452
+#define GL_CURRENT_FOG_COORDINATE_EXT 0x8453
+#define GL_FOG_COORDINATE_ARRAY_TYPE_EXT 0x8454
+#define GL_FOG_COORDINATE_ARRAY_STRIDE_EXT 0x8455
+#define GL_FOG_COORDINATE_ARRAY_POINTER_EXT 0x8456
+#define GL_FOG_COORDINATE_ARRAY_EXT 0x8457
+GLAPI void GLAPIENTRY glFogCoordf(GLfloat coord);
+GLAPI void GLAPIENTRY glFogCoordfv(const GLfloat *coord);
+GLAPI void GLAPIENTRY glFogCoordd(GLdouble coord);
+GLAPI void GLAPIENTRY glFogCoorddv(const GLdouble *coord);
+GLAPI void GLAPIENTRY glFogCoordPointer(GLenum type, GLsizei stride, const GLvoid *pointer);
+GLAPI void GLAPIENTRY glFogCoordfEXT(GLfloat coord);
+GLAPI void GLAPIENTRY glFogCoordfvEXT(const GLfloat *coord);
+GLAPI void GLAPIENTRY glFogCoorddEXT(GLdouble coord);
+GLAPI void GLAPIENTRY glFogCoorddvEXT(const GLdouble *coord);
+GLAPI void GLAPIENTRY glFogCoordPointerEXT(GLenum type, GLsizei stride, const GLvoid *pointer);
 
 /* GL 1.2's 3D textures, and their GL_EXT_texture3D and GL_EXT_copy_texture names. */
 GLAPI void GLAPIENTRY glTexImage3D(GLenum target, GLint level, GLint internalFormat, GLsizei width, GLsizei height, GLsizei depth, GLint border, GLenum format, GLenum type, const GLvoid *pixels);

@@ -85,6 +85,20 @@ entry! {
 }
 
 entry! {
+    /// `glFogCoordPointer` (GL 1.4): `Gl::fog_coord_pointer`.
+    unsafe fn glFogCoordPointer(type_: GLenum, stride: GLsizei, ptr: *const c_void) {
+        with_gl(|gl| gl.fog_coord_pointer(type_, stride, pointer(ptr)))
+    }
+}
+
+entry! {
+    /// `glFogCoordPointerEXT`: `glFogCoordPointer`.
+    unsafe fn glFogCoordPointerEXT(type_: GLenum, stride: GLsizei, ptr: *const c_void) {
+        with_gl(|gl| gl.fog_coord_pointer(type_, stride, pointer(ptr)))
+    }
+}
+
+entry! {
     /// `glIndexPointer`: `Gl::index_pointer`.
     unsafe fn glIndexPointer(type_: GLenum, stride: GLsizei, ptr: *const c_void) {
         with_gl(|gl| gl.index_pointer(type_, stride, pointer(ptr)))

@@ -12,6 +12,7 @@ mod lists;
 mod matrix;
 mod pixel_transfer;
 mod pixels;
+mod points;
 mod queries;
 mod raster_modes;
 mod read_pixels;

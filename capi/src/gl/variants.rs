@@ -62,6 +62,10 @@ forward! {
     glSecondaryColor3usEXT(r: GLushort, g: GLushort, b: GLushort) => secondary_color3us;
     glSecondaryColor3uiEXT(r: GLuint, g: GLuint, b: GLuint) => secondary_color3ui;
     glSecondaryColor3fEXT(r: GLfloat, g: GLfloat, b: GLfloat) => secondary_color3f;
+    glFogCoordf(coord: GLfloat) => fog_coordf;
+    glFogCoordd(coord: GLdouble) => fog_coordd;
+    glFogCoordfEXT(coord: GLfloat) => fog_coordf;
+    glFogCoorddEXT(coord: GLdouble) => fog_coordd;
 }
 
 vector! {
@@ -81,6 +85,10 @@ vector! {
     glSecondaryColor3usvEXT(GLushort; 3) => secondary_color3usv;
     glSecondaryColor3uivEXT(GLuint; 3) => secondary_color3uiv;
     glSecondaryColor3fvEXT(GLfloat; 3) => secondary_color3fv;
+    glFogCoordfv(GLfloat; 1) => fog_coordfv;
+    glFogCoorddv(GLdouble; 1) => fog_coorddv;
+    glFogCoordfvEXT(GLfloat; 1) => fog_coordfv;
+    glFogCoorddvEXT(GLdouble; 1) => fog_coorddv;
     glColor3bv(GLbyte; 3) => color3bv;
     glColor3sv(GLshort; 3) => color3sv;
     glColor3iv(GLint; 3) => color3iv;

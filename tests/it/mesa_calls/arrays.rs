@@ -182,6 +182,10 @@ impl Harness {
                 let (type_, stride, offset) = (a.e(), a.int(), a.int());
                 gl.normal_pointer(type_, stride, self.at(offset));
             }
+            "fog_coord_pointer" => {
+                let (type_, stride, offset) = (a.e(), a.int(), a.int());
+                gl.fog_coord_pointer(type_, stride, self.at(offset));
+            }
             "index_pointer" => {
                 let (type_, stride, offset) = (a.e(), a.int(), a.int());
                 gl.index_pointer(type_, stride, self.at(offset));

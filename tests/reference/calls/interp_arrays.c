@@ -75,11 +75,12 @@ static int run_arrays_call(const char *c)
         else if (c[0] == 'c') glColorPointer(size, type, stride, p);
         else if (c[0] == 's') glSecondaryColorPointer(size, type, stride, p);
         else glTexCoordPointer(size, type, stride, p);
-    } else if (!strcmp(c, "normal_pointer") || !strcmp(c, "index_pointer")) {
+    } else if (!strcmp(c, "normal_pointer") || !strcmp(c, "index_pointer") || !strcmp(c, "fog_coord_pointer")) {
         GLenum type = arg_enum();
         GLsizei stride = arg_int();
         const GLvoid *p = mem_at(arg_int());
         if (c[0] == 'n') glNormalPointer(type, stride, p);
+        else if (c[0] == 'f') glFogCoordPointer(type, stride, p);
         else glIndexPointer(type, stride, p);
     } else if (!strcmp(c, "edge_flag_pointer")) {
         GLsizei stride = arg_int();

@@ -90,6 +90,9 @@ static const struct enum_name query_enums[] = {
     Q(GL_UNSIGNED_SHORT_5_5_5_1), Q(GL_UNSIGNED_SHORT_1_5_5_5_REV), Q(GL_UNSIGNED_INT_8_8_8_8),
     Q(GL_UNSIGNED_INT_10_10_10_2), Q(GL_UNSIGNED_INT_2_10_10_10_REV), Q(GL_RED_BIAS),
     Q(GL_GREEN_BIAS), Q(GL_BLUE_BIAS), Q(GL_ALPHA_BIAS), Q(GL_GREEN_SCALE),
+    Q(GL_POINT_SIZE_MIN), Q(GL_POINT_SIZE_MAX), Q(GL_POINT_FADE_THRESHOLD_SIZE), Q(GL_POINT_DISTANCE_ATTENUATION),
+    Q(GL_FOG_COORD_SRC), Q(GL_FOG_COORD), Q(GL_FRAGMENT_DEPTH), Q(GL_CURRENT_FOG_COORD), Q(GL_FOG_COORD_ARRAY),
+    Q(GL_FOG_COORD_ARRAY_TYPE), Q(GL_FOG_COORD_ARRAY_STRIDE), Q(GL_FOG_COORD_ARRAY_POINTER),
     Q(GL_HISTOGRAM), Q(GL_PROXY_HISTOGRAM), Q(GL_MINMAX), Q(GL_COLOR_TABLE), Q(GL_CONVOLUTION_1D),
     Q(GL_CONVOLUTION_2D), Q(GL_SEPARABLE_2D), Q(GL_POST_CONVOLUTION_COLOR_TABLE),
     Q(GL_POST_COLOR_MATRIX_COLOR_TABLE), Q(GL_CONVOLUTION_BORDER_MODE), Q(GL_REDUCE),
@@ -204,6 +207,9 @@ static const struct qcall calls[] = {
     C(glGetTexLevelParameterfv, ">eieF"), C(glGetTexLevelParameteriv, ">eieI"),
     C(glGetTexGenfv, ">eeF"), C(glGetTexGeniv, ">eeI"), C(glGetTexGendv, ">eeD"),
     C(glGetClipPlane, ">eD"), C(glGetMapdv, ">eeD"),
+    C(glPointParameterf, "ef"), C(glPointParameterfv, "eF"), C(glPointParameteri, "ei"),
+    C(glPointParameteriv, "eI"),
+    C(glFogCoordf, "f"), C(glFogCoordd, "d"), C(glFogCoordfv, "F"), C(glFogCoorddv, "D"),
     C(glResetHistogram, "e"), C(glResetMinmax, "e"), C(glMinmax, "eee"), C(glHistogram, "eeee"),
     C(glConvolutionParameteri, "eee"), C(glConvolutionParameterf, "eef"),
     C(glConvolutionParameterfv, "eeF"), C(glColorTableParameteriv, "eeI"),
@@ -257,6 +263,7 @@ static void invoke(const char *sig, fn_ptr fn, const struct qargs *x)
     else if (!strcmp(sig, "eed")) ((void (*)(GLuint, GLuint, GLdouble))fn)(u[0], u[1], d[0]);
     else if (!strcmp(sig, "dddddd"))
         ((void (*)(GLdouble, GLdouble, GLdouble, GLdouble, GLdouble, GLdouble))fn)(d[0], d[1], d[2], d[3], d[4], d[5]);
+    else if (!strcmp(sig, "F") || !strcmp(sig, "I") || !strcmp(sig, "D")) ((void (*)(void *))fn)(p);
     else if (!strcmp(sig, "eF") || !strcmp(sig, "eI") || !strcmp(sig, "eD"))
         ((void (*)(GLuint, void *))fn)(u[0], p);
     else if (!strcmp(sig, "eeF") || !strcmp(sig, "eeI") || !strcmp(sig, "eeD"))
