@@ -343,11 +343,12 @@ static void texture_3d_call(void) {
     }
 }
 
-/* The imaging subset (raises GL_INVALID_OPERATION on Mesa and gleval): any names, NULL or not. */
+/* The imaging subset (raises GL_INVALID_OPERATION on Mesa and gleval) and the compressed-image
+ * calls: any names, NULL or not. */
 static void imaging_call(void) {
     GLenum t = (GLenum)next(), fmt = pick(2) ? GL_RGBA : (GLenum)next();
     void *p = pick(4) ? (void *)buf : NULL;
-    switch (pick(6)) {
+    switch (pick(7)) {
     case 0: glColorTable(t, fmt, ANY(small), fmt, GL_UNSIGNED_BYTE, p); glGetColorTable(t, fmt, GL_FLOAT, p); break;
     case 1: glConvolutionFilter2D(t, fmt, ANY(small), ANY(small), fmt, GL_UNSIGNED_BYTE, p);
             glGetConvolutionParameteriv(t, (GLenum)next(), p); break;
@@ -355,6 +356,13 @@ static void imaging_call(void) {
             glGetSeparableFilter(t, fmt, GL_FLOAT, p, p, p); break;
     case 3: glHistogram(t, ANY(small), fmt, (GLboolean)pick(3)); glGetHistogram(t, GL_TRUE, fmt, GL_FLOAT, p); break;
     case 4: glMinmax(t, fmt, (GLboolean)pick(3)); glGetMinmaxParameterfv(t, (GLenum)next(), p); glResetMinmax(t); break;
+    case 5: glCompressedTexImage2D(pick(2) ? GL_TEXTURE_2D : t, ANY(small) - 2, pick(2) ? GL_COMPRESSED_RGB : fmt,
+                                   ANY(small), ANY(small), pick(3) - 1, ANY(small) - 4, p);
+            glCompressedTexSubImage2D(pick(2) ? GL_TEXTURE_2D : t, ANY(small) - 2, 0, 0, ANY(small), ANY(small), fmt,
+                                      ANY(small), p);
+            glGetCompressedTexImage(pick(2) ? GL_TEXTURE_2D : t, ANY(small) - 2, p);
+            glTexImage2D(GL_TEXTURE_2D, 0, GL_COMPRESSED_ALPHA + pick(6), ANY(small), ANY(small), 0, GL_RGBA,
+                         GL_UNSIGNED_BYTE, p); break;
     default: glCopyColorTable(t, fmt, ANY(small), ANY(small), ANY(small));
              glCopyConvolutionFilter2D(t, fmt, ANY(small), ANY(small), ANY(small), ANY(small)); break;
     }

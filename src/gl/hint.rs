@@ -10,22 +10,23 @@ use super::types::*;
 use super::Gl;
 
 /// The targets `glHint` takes, in the order [`Hints`] keeps them.
-const TARGETS: [GLenum; 6] = [
+const TARGETS: [GLenum; 7] = [
     GL_PERSPECTIVE_CORRECTION_HINT,
     GL_POINT_SMOOTH_HINT,
     GL_LINE_SMOOTH_HINT,
     GL_POLYGON_SMOOTH_HINT,
     GL_FOG_HINT,
     GL_GENERATE_MIPMAP_HINT,
+    GL_TEXTURE_COMPRESSION_HINT,
 ];
 
 /// The current hints (all initially `GL_DONT_CARE`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(crate) struct Hints([GLenum; 6]);
+pub(crate) struct Hints([GLenum; 7]);
 
 impl Default for Hints {
     fn default() -> Self {
-        Self([GL_DONT_CARE; 6])
+        Self([GL_DONT_CARE; 7])
     }
 }
 
@@ -39,7 +40,8 @@ impl Hints {
 impl Gl {
     /// `glHint(target, mode)`: `mode` is `GL_FASTEST`, `GL_NICEST` or `GL_DONT_CARE` for
     /// `GL_PERSPECTIVE_CORRECTION_HINT`, `GL_POINT_SMOOTH_HINT`, `GL_LINE_SMOOTH_HINT`,
-    /// `GL_POLYGON_SMOOTH_HINT`, `GL_FOG_HINT` or GL 1.4's `GL_GENERATE_MIPMAP_HINT`; recorded,
+    /// `GL_POLYGON_SMOOTH_HINT`, `GL_FOG_HINT`, GL 1.4's `GL_GENERATE_MIPMAP_HINT` or GL 1.3's
+    /// `GL_TEXTURE_COMPRESSION_HINT`; recorded,
     /// with no effect on the picture.
     pub fn hint(&mut self, target: GLenum, mode: GLenum) {
         if self.compiled_state_call(|| ListCommand::Hint(target, mode)) {
@@ -68,6 +70,7 @@ pub(crate) static GET_ROWS: &[StateVar] = &[
     hint_row!(GL_POLYGON_SMOOTH_HINT),
     hint_row!(GL_FOG_HINT),
     hint_row!(GL_GENERATE_MIPMAP_HINT),
+    hint_row!(GL_TEXTURE_COMPRESSION_HINT),
 ];
 
 #[cfg(test)]

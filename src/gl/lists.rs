@@ -68,6 +68,8 @@ pub(crate) enum ListCommand {
     /// An error a draw call raised while it compiled: raised again when the list runs (Mesa's
     /// `_mesa_compile_error`).
     Error(GLenum),
+    /// A compressed-image call of GL 1.3 (`texture/compressed.rs`).
+    Compressed(super::texture::CompressedCall),
     PassThrough(GLfloat),
     /// `glCopyPixels`: x, y, width, height and the buffer.
     CopyPixels([GLint; 4], GLenum),
@@ -420,6 +422,7 @@ impl Gl {
             C::ListBase(base) => self.list_base(*base),
             C::EdgeFlag(flag) => self.edge_flag(*flag),
             C::Error(code) => self.set_error(*code),
+            C::Compressed(call) => self.replay_compressed_call(*call),
             C::Names(call) => self.replay_name_call(call),
             C::PassThrough(token) => self.pass_through(*token),
         }

@@ -21,12 +21,14 @@ use super::state_var::{int_limit, put_enum, row, Kind, StateVar};
 use super::types::*;
 use super::Gl;
 pub use combine::{texture_source, Combine, Combiner};
+pub(crate) use compressed::{CompressedCall, GET_ROWS as COMPRESSION_GET_ROWS};
 pub use gen::{TexGen, TexGenCoord, TexGenState};
 use glam::Mat4;
 use std::collections::HashMap;
 use std::sync::Arc;
 
 mod combine;
+mod compressed;
 mod gen;
 mod generate;
 mod image;
@@ -294,6 +296,9 @@ impl TextureObject {
         }
         self.levels[level] = image;
         self.formats[level] = base;
+        // A generic compressed format is kept, and reported, as its base format (Mesa's
+        // answer for the generic formats it keeps uncompressed).
+        let internal = compressed::generic_base(internal as GLenum).map_or(internal, |b| b as GLint);
         self.extra.set_level_format(level, internal, border);
     }
 
@@ -424,7 +429,8 @@ pub(super) fn base_format(internal: GLint) -> Option<GLenum> {
         }
         GL_ALPHA | GL_ALPHA4 | GL_ALPHA8 | GL_ALPHA12 | GL_ALPHA16 => Some(GL_ALPHA),
         GL_INTENSITY | GL_INTENSITY4 | GL_INTENSITY8 | GL_INTENSITY12 | GL_INTENSITY16 => Some(GL_INTENSITY),
-        _ => None,
+        // GL 1.3's generic compressed formats, kept uncompressed (`texture/compressed.rs`).
+        other => compressed::generic_base(other),
     }
 }
 

@@ -174,6 +174,23 @@ fn call(gl: &mut Gl, a: &mut Args) {
         "glFogCoordd" => gl.fog_coordd(a.d()),
         "glFogCoordfv" => gl.fog_coordfv(&a.floats()),
         "glFogCoorddv" => gl.fog_coorddv(&a.array()),
+        "glCompressedTexImage1D" => {
+            let (target, level, internal, width, border, size) = (a.e(), a.int(), a.e(), a.int(), a.int(), a.int());
+            let data: Vec<u8> = ints(a).iter().flat_map(|v| v.to_ne_bytes()).collect();
+            gl.compressed_tex_image_1d(target, level, internal, width, border, size, &data);
+        }
+        "glCompressedTexImage2D" => {
+            let (target, level, internal) = (a.e(), a.int(), a.e());
+            let (width, height, border, size) = (a.int(), a.int(), a.int(), a.int());
+            let data: Vec<u8> = ints(a).iter().flat_map(|v| v.to_ne_bytes()).collect();
+            gl.compressed_tex_image_2d(target, level, internal, width, height, border, size, &data);
+        }
+        "glCompressedTexSubImage2D" => {
+            let (target, level, x, y, width, height) = (a.e(), a.int(), a.int(), a.int(), a.int(), a.int());
+            let (format, size) = (a.e(), a.int());
+            let data: Vec<u8> = ints(a).iter().flat_map(|v| v.to_ne_bytes()).collect();
+            gl.compressed_tex_sub_image_2d(target, level, [x, y], [width, height], format, size, &data);
+        }
         "glResetHistogram" => gl.reset_histogram(a.e()),
         "glResetMinmax" => gl.reset_minmax(a.e()),
         "glMinmax" => gl.minmax(a.e(), a.e(), a.int() as GLboolean),
@@ -240,6 +257,10 @@ fn getv(gl: &mut Gl, a: &mut Args, values: &mut Vec<String>) {
         "glGetMinmaxParameterfv" => f!(a.e(), a.e() => get_minmax_parameterfv),
         "glGetConvolutionParameteriv" => i!(a.e(), a.e() => get_convolution_parameteriv),
         "glGetColorTableParameterfv" => f!(a.e(), a.e() => get_color_table_parameterfv),
+        "glGetCompressedTexImage" => {
+            let (target, level) = (a.e(), a.int());
+            bytes(values, |o| gl.get_compressed_tex_image(target, level, o));
+        }
         "glGetClipPlane" => {
             let plane = a.e();
             let v = measured(d_pattern.0, d_pattern.1, f64::to_bits, |o| gl.get_clip_plane(plane, o));

@@ -34,6 +34,7 @@ pub(crate) fn rows() -> impl Iterator<Item = &'static StateVar> {
         line::GET_ROWS,
         polygon::GET_ROWS,
         texture::GET_ROWS,
+        texture::COMPRESSION_GET_ROWS,
         scissor::GET_ROWS,
         multisample::GET_ROWS,
         stencil::GET_ROWS,

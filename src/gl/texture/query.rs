@@ -308,6 +308,13 @@ impl Gl {
             // Colour textures have neither; Mesa answers both names (ARB_depth_texture, and
             // GL 3.0's stencil size, unguarded in `get_tex_level_parameter_image`).
             GL_TEXTURE_DEPTH_SIZE | GL_TEXTURE_STENCIL_SIZE => 0,
+            // GL 1.3: no image is kept compressed (`compressed.rs`), so none has a compressed
+            // size to report (Mesa's `GL_INVALID_OPERATION` for an uncompressed image).
+            GL_TEXTURE_COMPRESSED => 0,
+            GL_TEXTURE_COMPRESSED_IMAGE_SIZE => {
+                self.set_error(GL_INVALID_OPERATION);
+                return None;
+            }
             _ => {
                 self.set_error(GL_INVALID_ENUM);
                 return None;

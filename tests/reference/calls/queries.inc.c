@@ -93,6 +93,9 @@ static const struct enum_name query_enums[] = {
     Q(GL_POINT_SIZE_MIN), Q(GL_POINT_SIZE_MAX), Q(GL_POINT_FADE_THRESHOLD_SIZE), Q(GL_POINT_DISTANCE_ATTENUATION),
     Q(GL_FOG_COORD_SRC), Q(GL_FOG_COORD), Q(GL_FRAGMENT_DEPTH), Q(GL_CURRENT_FOG_COORD), Q(GL_FOG_COORD_ARRAY),
     Q(GL_FOG_COORD_ARRAY_TYPE), Q(GL_FOG_COORD_ARRAY_STRIDE), Q(GL_FOG_COORD_ARRAY_POINTER),
+    Q(GL_COMPRESSED_ALPHA), Q(GL_COMPRESSED_LUMINANCE), Q(GL_COMPRESSED_LUMINANCE_ALPHA), Q(GL_COMPRESSED_INTENSITY),
+    Q(GL_COMPRESSED_RGB), Q(GL_COMPRESSED_RGBA), Q(GL_TEXTURE_COMPRESSION_HINT), Q(GL_TEXTURE_COMPRESSED_IMAGE_SIZE),
+    Q(GL_TEXTURE_COMPRESSED), Q(GL_NUM_COMPRESSED_TEXTURE_FORMATS), Q(GL_COMPRESSED_TEXTURE_FORMATS),
     Q(GL_HISTOGRAM), Q(GL_PROXY_HISTOGRAM), Q(GL_MINMAX), Q(GL_COLOR_TABLE), Q(GL_CONVOLUTION_1D),
     Q(GL_CONVOLUTION_2D), Q(GL_SEPARABLE_2D), Q(GL_POST_CONVOLUTION_COLOR_TABLE),
     Q(GL_POST_COLOR_MATRIX_COLOR_TABLE), Q(GL_CONVOLUTION_BORDER_MODE), Q(GL_REDUCE),
@@ -210,6 +213,8 @@ static const struct qcall calls[] = {
     C(glPointParameterf, "ef"), C(glPointParameterfv, "eF"), C(glPointParameteri, "ei"),
     C(glPointParameteriv, "eI"),
     C(glFogCoordf, "f"), C(glFogCoordd, "d"), C(glFogCoordfv, "F"), C(glFogCoorddv, "D"),
+    C(glCompressedTexImage1D, "eieiiiI"), C(glCompressedTexImage2D, "eieiiiiI"),
+    C(glCompressedTexSubImage2D, "eiiiiieiI"), C(glGetCompressedTexImage, ">eiI"),
     C(glResetHistogram, "e"), C(glResetMinmax, "e"), C(glMinmax, "eee"), C(glHistogram, "eeee"),
     C(glConvolutionParameteri, "eee"), C(glConvolutionParameterf, "eef"),
     C(glConvolutionParameterfv, "eeF"), C(glColorTableParameteriv, "eeI"),
@@ -237,6 +242,16 @@ static void read_args(const char *sig, struct qargs *x)
         default: die("bad signature", sig);
         }
     }
+}
+
+/* Whether a signature is integers (e, i) then one array. */
+static int integers_then_pointer(const char *sig)
+{
+    size_t n = strlen(sig);
+    if (n < 2 || (sig[n - 1] != 'I' && sig[n - 1] != 'F')) return 0;
+    for (size_t k = 0; k + 1 < n; k++)
+        if (sig[k] != 'e' && sig[k] != 'i') return 0;
+    return 1;
 }
 
 /* Calls fn with the arguments as the signature lays them out. Integers and enums share the
@@ -276,6 +291,17 @@ static void invoke(const char *sig, fn_ptr fn, const struct qargs *x)
     } else if (!strcmp(sig, "eieiieeF"))
         ((void (*)(GLuint, GLuint, GLuint, GLuint, GLuint, GLuint, GLuint, const void *))fn)(
             u[0], u[1], u[2], u[3], u[4], u[5], u[6], p);
+    else if (integers_then_pointer(sig)) {
+        /* n integers (enums, ints, sizes) and a trailing pointer: the compressed-image calls. */
+        typedef GLuint U;
+        switch (strlen(sig) - 1) {
+        case 2: ((void (*)(U, U, void *))fn)(u[0], u[1], p); break;
+        case 6: ((void (*)(U, U, U, U, U, U, void *))fn)(u[0], u[1], u[2], u[3], u[4], u[5], p); break;
+        case 7: ((void (*)(U, U, U, U, U, U, U, void *))fn)(u[0], u[1], u[2], u[3], u[4], u[5], u[6], p); break;
+        case 8: ((void (*)(U, U, U, U, U, U, U, U, void *))fn)(u[0], u[1], u[2], u[3], u[4], u[5], u[6], u[7], p); break;
+        default: die("no call shape for", sig);
+        }
+    }
     else die("no call shape for", sig);
 }
 
