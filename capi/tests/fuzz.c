@@ -159,12 +159,18 @@ static float image_out[4096];
 
 static void quadric_call(void) {
     GLUquadric *q = pick(10) ? quads[pick(2)] : NULL;
-    switch (pick(12)) {
+    switch (pick(14)) {
     case 9: gluScaleImage(ANY(image_formats), ANY(loops), ANY(loops), ANY(image_types), buf, ANY(loops),
                           ANY(loops), ANY(image_types), image_out); break;
     case 10: gluBuild1DMipmaps(GL_TEXTURE_1D, GL_RGB, ANY(slices) % 64, ANY(image_formats), ANY(image_types), buf); break;
     case 11: gluBuild2DMipmapLevels(GL_TEXTURE_2D, GL_RGB, ANY(loops), ANY(loops), ANY(image_formats), GL_UNSIGNED_BYTE,
                                     ANY(loops), ANY(loops), ANY(loops), buf); break;
+    /* 3D images of at most 7 on a side, 16 bytes a pixel, 16 rows an image, 3 skipped (the
+       image modes of texture_3d_call), and GLU's slips past them: within buf. */
+    case 12: gluBuild3DMipmaps(GL_TEXTURE_3D, pick(6) ? GL_RGBA : 0x1234, ANY(loops), ANY(loops), ANY(loops),
+                               ANY(image_formats), ANY(image_types), buf); break;
+    case 13: gluBuild3DMipmapLevels(GL_TEXTURE_3D, GL_RGB, ANY(loops), ANY(loops), ANY(loops), ANY(image_formats),
+                                    ANY(image_types), ANY(loops), ANY(loops), ANY(loops), buf); break;
     case 0: gluQuadricDrawStyle(q, ANY(quadric_modes)); break;
     case 1: gluQuadricNormals(q, ANY(quadric_modes)); break;
     case 2: gluQuadricOrientation(q, ANY(quadric_modes)); break;

@@ -49,6 +49,8 @@ mod pixel_transfer;
 mod pixel_unpack;
 pub mod pixel_zoom;
 mod pixels;
+/// The pixel store modes, which GLU reads as it unpacks images itself.
+pub(crate) use pixels::PixelStore;
 mod point;
 mod polygon;
 mod raster_pos;

@@ -82,11 +82,20 @@ impl Packed {
     }
 
     /// The components of one element, each normalised by its field's largest value
-    /// (GL 1.2 §3.6.4, "Conversion to floating-point").
+    /// (GL 1.2 §3.6.4, "Conversion to floating-point"), a field of fewer than 8 bits as the
+    /// byte its bits repeated make, over 255: Mesa widens such a field to 8 bits so
+    /// (`_mesa_unorm_to_unorm` in `format_utils.h`, through `_mesa_unpack_ubyte_rgba_row`;
+    /// measured: 5 bits' 3 is 24 where 3/31 of 255 rounds to 25, 6 bits' 11 is 44, not 45;
+    /// `unpack_widening.calls`), and glTexImage and glDrawPixels store or draw it unchanged.
     pub(crate) fn unpack(&self, value: u32, out: &mut [f32; 4]) {
         for (k, (shift, b)) in self.fields().enumerate() {
             let max = field_max(b);
-            out[k] = (f64::from((value >> shift) & max) / f64::from(max)) as f32;
+            let field = (value >> shift) & max;
+            out[k] = if b < 8 {
+                (f64::from(widen_to_byte(field, b)) / 255.0) as f32
+            } else {
+                (f64::from(field) / f64::from(max)) as f32
+            };
         }
     }
 
@@ -124,6 +133,18 @@ impl Packed {
         }
         out[..self.size].copy_from_slice(bytes);
     }
+}
+
+/// A field of `bits` (1 to 7) bits as 8: its bits repeated from the top (5 bits abcde make
+/// abcdeabc), which is the rounded product by 255/(2ᵇ − 1) for 1, 2, 3 and 4 bits but not for
+/// 5 or 6.
+fn widen_to_byte(field: u32, bits: u32) -> u32 {
+    let (mut repeated, mut filled) = (0, 0);
+    while filled < 8 {
+        repeated = repeated << bits | field;
+        filled += bits;
+    }
+    repeated >> (filled - 8)
 }
 
 /// A field's largest value, 2ᵇ − 1 (`bits` below 32).
@@ -211,6 +232,22 @@ mod tests {
         assert_eq!(from_unorm8(127, 7), 63);
         assert_eq!(from_unorm8(254, 7), 127);
         assert_eq!(from_unorm8(0, 7), 0);
+    }
+
+    #[test]
+    fn narrow_fields_widen_by_repeating_bits() {
+        // Worked out by hand: 5 bits 00011 → 00011000 | 000 = 24; 6 bits 001011 → 00101100 | 00 = 44;
+        // 3 bits 101 → 10110110 = 182; 1 bit → 0 or 255.
+        assert_eq!(widen_to_byte(3, 5), 24);
+        assert_eq!(widen_to_byte(31, 5), 255);
+        assert_eq!(widen_to_byte(11, 6), 44);
+        assert_eq!(widen_to_byte(5, 3), 182);
+        assert_eq!(widen_to_byte(1, 1), 255);
+        let p = packed(GL_UNSIGNED_SHORT_5_6_5).unwrap();
+        let mut out = [0.0; 4];
+        p.unpack(3 << 11 | 11 << 5 | 28, &mut out);
+        let bytes = out.map(|c| (c * 255.0).round() as u8);
+        assert_eq!(bytes[..3], [24, 44, 231]);
     }
 
     #[test]

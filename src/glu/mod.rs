@@ -22,15 +22,22 @@
 mod calls;
 pub mod consts;
 mod draw;
+mod element;
 mod errors;
 mod evaluation;
+mod halve_2d;
+mod halve_3d;
+mod memory;
 mod mipmap;
+mod mipmap_3d;
 mod mipmap_levels;
 mod model;
 mod objects;
+mod packed_pixel;
 mod project;
 pub mod quadric;
 mod scale;
+mod scale_3d;
 mod strings;
 mod tess;
 

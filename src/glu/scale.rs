@@ -169,7 +169,7 @@ impl Layout {
 
 /// C's conversion of a float to `GLushort` on x86: truncation to a 32-bit integer (the
 /// "integer indefinite" 0x80000000 for NaN and out of range), then its low 16 bits.
-fn float_to_ushort(f: f32) -> u16 {
+pub(super) fn float_to_ushort(f: f32) -> u16 {
     if f.is_nan() || !(-2_147_483_648.0..2_147_483_648.0).contains(&f) {
         0
     } else {
@@ -178,7 +178,7 @@ fn float_to_ushort(f: f32) -> u16 {
 }
 
 /// The same for a double (`scale_internal`'s `(totals[k] + 0.5) / area`).
-fn double_to_ushort(f: f64) -> u16 {
+pub(super) fn double_to_ushort(f: f64) -> u16 {
     if f.is_nan() || !(-2_147_483_648.0..2_147_483_648.0).contains(&f) {
         0
     } else {
@@ -187,7 +187,7 @@ fn double_to_ushort(f: f64) -> u16 {
 }
 
 /// One component read from client memory as GLU's 16-bit value (`fill_image`).
-fn fill_element(bytes: &[u8], type_: GLenum, swap: bool, index: bool) -> u16 {
+pub(super) fn fill_element(bytes: &[u8], type_: GLenum, swap: bool, index: bool) -> u16 {
     let mut b = [0u8; 4];
     b[..bytes.len()].copy_from_slice(bytes);
     if swap {
@@ -212,7 +212,7 @@ fn fill_element(bytes: &[u8], type_: GLenum, swap: bool, index: bool) -> u16 {
 }
 
 /// One 16-bit value written to client memory as `type_` (`empty_image`).
-fn empty_element(value: u16, out: &mut [u8], type_: GLenum, swap: bool, index: bool) {
+pub(super) fn empty_element(value: u16, out: &mut [u8], type_: GLenum, swap: bool, index: bool) {
     let v = u32::from(value);
     let bytes: Vec<u8> = match (type_, index) {
         (GL_UNSIGNED_BYTE, true) | (GL_BYTE, true) => vec![value as u8],
@@ -298,7 +298,7 @@ fn halve(components: usize, width: usize, height: usize, data: &[u16]) -> Vec<u1
 
 /// The box filter's extent along one axis for output pixel `i`: `(low, high)` in input pixels,
 /// as floats (`scale_internal`).
-fn extent(i: usize, conv: f32, size_in: usize, size_out: usize) -> (f32, f32) {
+pub(super) fn extent(i: usize, conv: f32, size_in: usize, size_out: usize) -> (f32, f32) {
     let centre = (f64::from(conv) * (i as f64 + 0.5)) as f32;
     if size_in > size_out {
         let half = conv / 2.0;
@@ -310,7 +310,7 @@ fn extent(i: usize, conv: f32, size_in: usize, size_out: usize) -> (f32, f32) {
 
 /// The input pixels a box covers along one axis, each with its (wrapped) index and the
 /// fraction covered, in `scale_internal`'s order and float arithmetic.
-fn coverage(low: f32, high: f32, size: usize) -> Vec<(usize, f32)> {
+pub(super) fn coverage(low: f32, high: f32, size: usize) -> Vec<(usize, f32)> {
     let mut cells = Vec::new();
     let mut at = low;
     let mut int = f64::from(at).floor() as i64;

@@ -101,6 +101,9 @@ mod properties {
             GL_BITMAP,
             GL_UNSIGNED_SHORT_5_6_5,
             GL_UNSIGNED_INT_8_8_8_8,
+            GL_UNSIGNED_BYTE_2_3_3_REV,
+            GL_UNSIGNED_SHORT_4_4_4_4,
+            GL_UNSIGNED_INT_2_10_10_10_REV,
             GL_DOUBLE,
         ])
     }
@@ -128,6 +131,31 @@ mod properties {
             prop_assert!(rc == 0 || [GLU_INVALID_ENUM, GLU_INVALID_VALUE, GLU_INVALID_OPERATION].contains(&rc), "{}", rc);
             let rc = gl.glu_build_2d_mipmap_levels(GL_TEXTURE_2D, 3, w, h, f, tin, w2, h2, s, &data[..len_in]) as u32;
             prop_assert!(rc == 0 || [GLU_INVALID_ENUM, GLU_INVALID_VALUE, GLU_INVALID_OPERATION].contains(&rc), "{}", rc);
+        }
+
+        /// The 3D builders with any sides (small, so that real levels are made), formats,
+        /// types (packed ones too), pixel-store modes (image height and skipped images too),
+        /// level ranges and slice lengths: no panic, and one of GLU's answers.
+        #[test]
+        fn mipmaps_3d_never_panic(
+            f in format(), t in type_(), (w, h, d) in (-1i32..7, -1i32..7, -1i32..7),
+            (user, base, max) in (-1i32..4, -1i32..4, -1i32..5), s in 0i32..4, image in (0i32..9, 0i32..3),
+            len in 0usize..2048, plain in any::<bool>(), internal in prop::sample::select(vec![3, 0x1234]),
+        ) {
+            let mut gl = Gl::new(4, 4);
+            store(&mut gl, s);
+            gl.pixel_storei(GL_UNPACK_IMAGE_HEIGHT, image.0);
+            gl.pixel_storei(GL_UNPACK_SKIP_IMAGES, image.1);
+            let data = input(t, 3);
+            let data = &data[..len.min(data.len())];
+            gl.bind_texture(GL_TEXTURE_3D, 1);
+            let rc = if plain {
+                gl.glu_build_3d_mipmaps(GL_TEXTURE_3D, internal, w, h, d, f, t, data)
+            } else {
+                gl.glu_build_3d_mipmap_levels(GL_TEXTURE_3D, internal, w, h, d, f, t, user, base, max, data)
+            } as u32;
+            prop_assert!(rc == 0 || [GLU_INVALID_ENUM, GLU_INVALID_VALUE, GLU_INVALID_OPERATION].contains(&rc), "{}", rc);
+            let _ = gl.glu_image_len_3d((w, h, d), f, t, !plain);
         }
     }
 }

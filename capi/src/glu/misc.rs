@@ -124,29 +124,31 @@ entry! {
 }
 
 entry! {
-    /// `gluBuild3DMipmaps`: GLU's checks, then GL 1.1's answer to a 3D texture (the image is
-    /// not read).
+    /// `gluBuild3DMipmaps`: reads the image under the unpack modes (image height and skipped
+    /// images included); returns 0 or a GLU error.
     #[allow(clippy::too_many_arguments)]
-    fn gluBuild3DMipmaps(
+    unsafe fn gluBuild3DMipmaps(
         target: GLenum, internal_format: GLint, width: GLsizei, height: GLsizei, depth: GLsizei, format: GLenum,
         type_: GLenum, data: *const c_void,
     ) -> GLint {
-        let _ = data;
-        with_gl(|gl| gl.glu_build_3d_mipmaps::<u8>(target, internal_format, width, height, depth, format, type_, &[]))
+        with_gl(|gl| {
+            let data = unsafe { bytes(data, gl.glu_image_len_3d((width, height, depth), format, type_, false)) };
+            gl.glu_build_3d_mipmaps(target, internal_format, width, height, depth, format, type_, data)
+        })
     }
 }
 
 entry! {
     /// `gluBuild3DMipmapLevels`: as `gluBuild3DMipmaps`.
     #[allow(clippy::too_many_arguments)]
-    fn gluBuild3DMipmapLevels(
+    unsafe fn gluBuild3DMipmapLevels(
         target: GLenum, internal_format: GLint, width: GLsizei, height: GLsizei, depth: GLsizei, format: GLenum,
         type_: GLenum, user_level: GLint, base_level: GLint, max_level: GLint, data: *const c_void,
     ) -> GLint {
-        let _ = data;
         with_gl(|gl| {
-            gl.glu_build_3d_mipmap_levels::<u8>(
-                target, internal_format, width, height, depth, format, type_, user_level, base_level, max_level, &[],
+            let data = unsafe { bytes(data, gl.glu_image_len_3d((width, height, depth), format, type_, true)) };
+            gl.glu_build_3d_mipmap_levels(
+                target, internal_format, width, height, depth, format, type_, user_level, base_level, max_level, data,
             )
         })
     }

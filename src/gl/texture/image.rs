@@ -354,7 +354,9 @@ impl Gl {
         bytes: &[u8],
     ) -> Option<Vec<[u8; 4]>> {
         let transfer = self.color_transfer();
-        let byte = |x: f32| (x.clamp(0.0, 1.0) * 255.0).round() as u8;
+        // Halfway products round to even, as Mesa's float-to-unorm8 texel store does (measured:
+        // 2.5/255 stores 2, 3.5/255 stores 4; `unpack_widening.calls`).
+        let byte = |x: f32| (x.clamp(0.0, 1.0) * 255.0).round_ties_even() as u8;
         let store = self.unpack_store();
         let (stride, skipped) = if dims == 3 {
             (image_stride(store, (w, h), format, type_).unwrap_or(0), store.skip_images)
