@@ -48,6 +48,9 @@ int main(int argc, char **argv)
     glewExperimental = GL_TRUE;
     GLenum e = glewInit();
     printf("glewInit %d %s, 1.1 %d, 2.0 %d\n", e, (const char *)glewGetErrorString(e), GLEW_VERSION_1_1, GLEW_VERSION_2_0);
+    /* GLEW's extension flags follow GL_EXTENSIONS (gleval claims the first two, not the third). */
+    printf("glew extensions: fog_coord %d, point_parameters %d, texture_cube_map %d\n", GLEW_EXT_fog_coord,
+           GLEW_ARB_point_parameters, GLEW_ARB_texture_cube_map);
 #endif
     printf("window %d size %d %d version %d\n", w, glutGet(GLUT_WINDOW_WIDTH), glutGet(GLUT_WINDOW_HEIGHT), glutGet(GLUT_VERSION));
     printf("proc glBegin %d glutSolidCube %d glFooBar %d\n", glutGetProcAddress("glBegin") == (GLUTproc)glBegin,
