@@ -13,6 +13,7 @@ mod attrib;
 mod binding;
 mod bitmap;
 mod blend;
+mod buffers;
 mod clear;
 mod client_memory;
 pub(crate) mod clip;
@@ -67,8 +68,9 @@ mod vertex;
 mod viewport;
 mod window_read;
 
-pub use arrays::PointerArg;
+pub use arrays::{BufferOffset, PointerArg};
 pub use blend::Blend;
+pub use buffers::{BufferMap, BufferObject};
 pub use client_memory::{ArrayElement, ClientArray, ClientMemory, ClientPointer};
 pub use copy_pixels::{CopyFragment, PixelCopy};
 pub use eval::{MapSample, MeshJob};
@@ -302,6 +304,8 @@ struct ClientState {
     feedback: feedback::Feedback,
     /// Selection mode: its buffer, the name stack and the hit being gathered.
     select: select::Selection,
+    /// GL 1.5's buffer objects by name (their bindings are the vertex arrays').
+    buffers: buffers::BufferObjects,
 }
 
 /// The recording: the frame, the primitive open between `begin` and `end`, and what the

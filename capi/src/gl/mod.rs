@@ -1,6 +1,7 @@
 //! `GL/gl.h`: the GL 1.x entry points `Gl` implements, one file per area.
 
 mod arrays;
+mod buffers;
 mod eval;
 mod feedback;
 mod fragment;
