@@ -2,6 +2,7 @@
 #![allow(clippy::needless_range_loop)]
 
 mod arrays_properties;
+mod buffer_objects;
 mod conformance;
 mod editor_demo;
 mod eval_mesh;
