@@ -22,6 +22,7 @@ mod gpu_parity;
 mod interactive_demo;
 mod layout;
 mod mesa_calls;
+mod occlusion_queries;
 mod picking_demo;
 mod pixel_properties;
 mod properties;

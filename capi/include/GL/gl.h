@@ -1603,6 +1603,36 @@ GLAPI GLboolean GLAPIENTRY glUnmapBufferARB(GLenum target);
 GLAPI void GLAPIENTRY glGetBufferParameterivARB(GLenum target, GLenum pname, GLint *params);
 GLAPI void GLAPIENTRY glGetBufferPointervARB(GLenum target, GLenum pname, GLvoid **params);
 
+/* GL 1.5's occlusion queries and their GL_ARB_occlusion_query names (GL_VERSION_1_5 is not
+ * defined: GL 1.5 is not whole; <GL/glext.h> declares the rest of it). */
+#define GL_ARB_occlusion_query 1
+#define GL_QUERY_COUNTER_BITS 0x8864
+#define GL_CURRENT_QUERY 0x8865
+#define GL_QUERY_RESULT 0x8866
+#define GL_QUERY_RESULT_AVAILABLE 0x8867
+#define GL_SAMPLES_PASSED 0x8914
+#define GL_QUERY_COUNTER_BITS_ARB 0x8864
+#define GL_CURRENT_QUERY_ARB 0x8865
+#define GL_QUERY_RESULT_ARB 0x8866
+#define GL_QUERY_RESULT_AVAILABLE_ARB 0x8867
+#define GL_SAMPLES_PASSED_ARB 0x8914
+GLAPI void GLAPIENTRY glGenQueries(GLsizei n, GLuint *ids);
+GLAPI void GLAPIENTRY glDeleteQueries(GLsizei n, const GLuint *ids);
+GLAPI GLboolean GLAPIENTRY glIsQuery(GLuint id);
+GLAPI void GLAPIENTRY glBeginQuery(GLenum target, GLuint id);
+GLAPI void GLAPIENTRY glEndQuery(GLenum target);
+GLAPI void GLAPIENTRY glGetQueryiv(GLenum target, GLenum pname, GLint *params);
+GLAPI void GLAPIENTRY glGetQueryObjectiv(GLuint id, GLenum pname, GLint *params);
+GLAPI void GLAPIENTRY glGetQueryObjectuiv(GLuint id, GLenum pname, GLuint *params);
+GLAPI void GLAPIENTRY glGenQueriesARB(GLsizei n, GLuint *ids);
+GLAPI void GLAPIENTRY glDeleteQueriesARB(GLsizei n, const GLuint *ids);
+GLAPI GLboolean GLAPIENTRY glIsQueryARB(GLuint id);
+GLAPI void GLAPIENTRY glBeginQueryARB(GLenum target, GLuint id);
+GLAPI void GLAPIENTRY glEndQueryARB(GLenum target);
+GLAPI void GLAPIENTRY glGetQueryivARB(GLenum target, GLenum pname, GLint *params);
+GLAPI void GLAPIENTRY glGetQueryObjectivARB(GLuint id, GLenum pname, GLint *params);
+GLAPI void GLAPIENTRY glGetQueryObjectuivARB(GLuint id, GLenum pname, GLuint *params);
+
 #ifdef __cplusplus
 }
 #endif

@@ -10,24 +10,6 @@ use crate::memory::{array, array_mut, bytes, count};
 use gleval::gl::types::*;
 use std::ffi::c_void;
 
-/// An entry point under its GL 1.5 name and its ARB name, with the same body.
-macro_rules! with_arb {
-    ($(#[$m:meta])* unsafe fn $name:ident / $arb:ident($($a:ident: $t:ty),*) $(-> $r:ty)? $body:block) => {
-        entry! { $(#[$m])* unsafe fn $name($($a: $t),*) $(-> $r)? $body }
-        entry! {
-            #[doc = concat!("`", stringify!($arb), "` (`GL_ARB_vertex_buffer_object`): `", stringify!($name), "`.")]
-            unsafe fn $arb($($a: $t),*) $(-> $r)? $body
-        }
-    };
-    ($(#[$m:meta])* fn $name:ident / $arb:ident($($a:ident: $t:ty),*) $(-> $r:ty)? $body:block) => {
-        entry! { $(#[$m])* fn $name($($a: $t),*) $(-> $r)? $body }
-        entry! {
-            #[doc = concat!("`", stringify!($arb), "` (`GL_ARB_vertex_buffer_object`): `", stringify!($name), "`.")]
-            fn $arb($($a: $t),*) $(-> $r)? $body
-        }
-    };
-}
-
 with_arb! {
     /// `glGenBuffers`: writes `n` names.
     unsafe fn glGenBuffers / glGenBuffersARB(n: GLsizei, buffers: *mut GLuint) {

@@ -90,6 +90,43 @@ impl Harness {
                 };
                 values.push(name.into());
             }
+            _ => return self.run_queries(gl, cmd, a, values),
+        }
+        true
+    }
+}
+
+impl Harness {
+    /// Runs one of `interp_buffers.c`'s query commands; false when `cmd` is not one.
+    pub fn run_queries(&mut self, gl: &mut Gl, cmd: &str, a: &mut Args, values: &mut Vec<String>) -> bool {
+        match cmd {
+            "gen_queries" => {
+                let n = a.int();
+                let mut names = [7777u32; 16];
+                gl.gen_queries(n, &mut names);
+                values.extend(names.iter().take(usize::try_from(n).unwrap_or(0)).map(u32::to_string));
+            }
+            "delete_queries" => {
+                let n = a.int();
+                let names: Vec<u32> = a.array().iter().map(|&v| v as u32).collect();
+                gl.delete_queries(n, &names);
+            }
+            "is_query" => values.push(gl.is_query(a.int() as u32).to_string()),
+            "begin_query" => gl.begin_query(a.e(), a.int() as u32),
+            "end_query" => gl.end_query(a.e()),
+            "get_queryiv" | "get_query_objectiv" | "get_query_objectuiv" => {
+                let mut v = [7777];
+                match cmd {
+                    "get_queryiv" => gl.get_queryiv(a.e(), a.e(), &mut v),
+                    "get_query_objectiv" => gl.get_query_objectiv(a.int() as u32, a.e(), &mut v),
+                    _ => {
+                        let mut u = [7777u32];
+                        gl.get_query_objectuiv(a.int() as u32, a.e(), &mut u);
+                        v[0] = u[0] as i32;
+                    }
+                }
+                values.push(if v[0] == 7777 { "unwritten".into() } else { v[0].to_string() });
+            }
             _ => return false,
         }
         true

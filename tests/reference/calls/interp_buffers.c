@@ -122,3 +122,47 @@ static int run_buffers_call(const char *c)
     }
     return 1;
 }
+
+/* GL 1.5's occlusion queries (ARB_occlusion_query; Mesa main/queryobj.c):
+ *   gen_queries N, delete_queries N [names], is_query NAME, begin_query TARGET NAME,
+ *   end_query TARGET        as the buffer commands above
+ *   get_queryiv TARGET PNAME, get_query_objectiv NAME PNAME, get_query_objectuiv NAME PNAME
+ *                           print the value, or unwritten */
+static int run_queries_objects_call(const char *c)
+{
+    if (!strcmp(c, "gen_queries")) {
+        GLsizei n = arg_int();
+        GLuint names[16];
+        for (int i = 0; i < 16; i++) names[i] = 7777;
+        if (n > 16) die("gen_queries: at most 16", NULL);
+        glGenQueries(n, names);
+        for (GLsizei i = 0; i < n; i++) val(" %u", names[i]);
+    } else if (!strcmp(c, "delete_queries")) {
+        GLsizei n = arg_int();
+        long given;
+        double *v = arg_array(1, 0, &given);
+        GLuint names[16] = {0};
+        for (long i = 0; v && i < given && i < 16; i++) names[i] = (GLuint)v[i];
+        glDeleteQueries(n, v ? names : NULL);
+        free(v);
+    } else if (!strcmp(c, "is_query")) {
+        val(" %d", glIsQuery((GLuint)arg_int()));
+    } else if (!strcmp(c, "begin_query")) {
+        GLenum target = arg_enum();
+        glBeginQuery(target, (GLuint)arg_int());
+    } else if (!strcmp(c, "end_query")) {
+        glEndQuery(arg_enum());
+    } else if (!strcmp(c, "get_queryiv") || !strcmp(c, "get_query_objectiv") || !strcmp(c, "get_query_objectuiv")) {
+        GLenum a = c[9] == 'i' ? arg_enum() : (GLenum)arg_int();
+        GLenum pname = arg_enum();
+        GLint v = 7777;
+        if (c[9] == 'i') glGetQueryiv(a, pname, &v);
+        else if (c[16] == 'i') glGetQueryObjectiv(a, pname, &v);
+        else glGetQueryObjectuiv(a, pname, (GLuint *)&v);
+        if (v == 7777) val(" unwritten");
+        else val(" %d", v);
+    } else {
+        return 0;
+    }
+    return 1;
+}
