@@ -86,10 +86,14 @@ impl Gl {
         let Some(names) = usize::try_from(n).ok().and_then(|n| ids.get(..n)) else {
             return self.set_error(GL_INVALID_VALUE);
         };
-        let queries = &mut self.server.queries;
         for name in names {
-            if queries.objects.remove(name).is_some() && queries.active == Some(*name) {
-                queries.active = None;
+            let Some(query) = self.server.queries.objects.remove(name) else { continue };
+            if self.server.queries.active == Some(*name) {
+                // Ended: its slot stops counting (nothing reads it any more).
+                self.server.queries.active = None;
+                if let Some(slot) = query.slot {
+                    self.recorder.frame.commands.push(Command::Query { slot, begin: false });
+                }
             }
         }
     }

@@ -60,3 +60,19 @@ fn without_a_reader_nothing_is_counted() {
     assert_eq!(counted(&mut gl, 1), 0);
     assert_eq!(gl.get_error(), GL_NO_ERROR);
 }
+
+#[test]
+fn a_query_deleted_while_active_stops_counting() {
+    let mut gl = Gl::new(64, 64);
+    gl.set_window_reader(|frame, w, h| Some(soft::render_window(frame, w, h)));
+    gl.begin_query(GL_SAMPLES_PASSED, 1);
+    quad(&mut gl, 0.5, 0.0);
+    gl.delete_queries(1, &[1]);
+    quad(&mut gl, 1.0, 0.0);
+    gl.begin_query(GL_SAMPLES_PASSED, 2);
+    quad(&mut gl, 0.25, 0.0);
+    gl.end_query(GL_SAMPLES_PASSED);
+    assert_eq!(counted(&mut gl, 2), 16 * 16);
+    assert_eq!(gl.is_query(1), GL_FALSE);
+    assert_eq!(gl.get_error(), GL_NO_ERROR);
+}
