@@ -26,6 +26,12 @@
 //! One difference: where an element lies outside the memory the array was given (a Rust
 //! array too short, a negative first index or stride, a NULL pointer), gleval sets
 //! `GL_INVALID_VALUE` and draws nothing, where Mesa reads whatever lies there.
+//!
+//! GL 1.5's buffer objects (`buffers.rs`): a pointer call made while a buffer is bound to
+//! `GL_ARRAY_BUFFER` takes its pointer as an offset into that buffer ([`BufferOffset`] in Rust)
+//! and keeps the buffer, whatever is bound later (GL 1.5 §2.9.1); an element outside a buffer
+//! is zeros in the array's components, as llvmpipe reads it, not an error. The element draws'
+//! `_offset` forms take their indices from the buffer bound to `GL_ELEMENT_ARRAY_BUFFER`.
 
 use super::buffers::BufferObject;
 use super::client_memory::{to_bytes, ArrayElement, ClientMemory, ClientPointer};
