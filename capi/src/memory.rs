@@ -40,7 +40,7 @@ pub unsafe fn array<'a, T: Element>(ptr: *const T, len: Option<usize>) -> &'a [T
 /// The bytes GL reads at a `const void *`.
 ///
 /// # Safety
-/// As [`array`].
+/// As [`array()`].
 pub unsafe fn bytes<'a>(ptr: *const std::ffi::c_void, len: Option<usize>) -> &'a [u8] {
     unsafe { array(ptr.cast::<u8>(), len) }
 }

@@ -86,8 +86,11 @@ pub(crate) fn flush_current() -> Option<WindowImage> {
         return None;
     }
     let format = ctx.format;
-    let target = ctx.target.as_mut()?;
+    ctx.target.as_ref()?;
+    // Taken before the target is borrowed: taking a frame with occlusion queries in it reads
+    // the window through `read_canvas`, which looks at the target.
     let frame = ctx.gl.take_frame();
+    let target = ctx.target.as_mut()?;
     target.canvas.draw_frame(&frame);
     ctx.gl.recycle_frame(frame);
     let window = target.canvas.window_image();

@@ -9,6 +9,8 @@
 #   capi/tests/against_mesa.sh osmesa       OSMesa's buffers: pixels after glFinish, glFlush
 #                                           and glReadPixels, in RGBA, BGRA and RGB, across
 #                                           three contexts (capi/tests/osmesa.c)
+#   capi/tests/against_mesa.sh occlusion    GL 1.5's occlusion queries: the samples counted
+#                                           (capi/tests/occlusion.c)
 set -eu
 root=$(cd "$(dirname "$0")/../.." && pwd)
 name=$1
@@ -21,7 +23,7 @@ mkdir -p "$out"
 src="$root/capi/tests/$name.c"
 case "$name" in
   readpixels) mesa_libs="$root/tests/reference/pictures/glut_osmesa.c -lOSMesa -lGLU -lGL -lz -lm"; args="--png $out/out.png" ;;
-  osmesa) mesa_libs="-lOSMesa -lGL"; args="" ;;
+  osmesa | occlusion) mesa_libs="-lOSMesa -lGL"; args="" ;;
   *) echo "against_mesa.sh: no program $name"; exit 2 ;;
 esac
 "$root/capi/glevalcc" -std=gnu99 -O1 -Wall -Werror -o "$out/gleval" "$src" -lm

@@ -200,9 +200,68 @@ static void map_call(void) {
 
 /* Vertex arrays into buf (64 KiB: 650 elements of the largest stride and size fit), draws with
  * up to 563 elements, indices below 600; selection buffers too small; the GLU mappings. */
+/* GL 1.5's buffer objects with any target, size, offset, usage and access; arrays and element
+ * draws then read through them (a pointer is an offset while one is bound); and its occlusion
+ * queries. */
+static void buffer_call(void) {
+    static const GLenum targets_b[] = { GL_ARRAY_BUFFER, GL_ELEMENT_ARRAY_BUFFER, 0x1234, GL_TEXTURE_2D };
+    GLenum target = ANY(targets_b);
+    GLsizeiptr size = ANY(counts);
+    GLintptr offset = ANY(small);
+    switch (pick(10)) {
+    case 8: { /* GL 1.5's occlusion queries with any target, name and pname */
+              GLuint id = (GLuint)pick(5), ids[3] = { 1, (GLuint)pick(5), 0 };
+              GLint v = 0;
+              GLenum query_target = pick(4) ? GL_SAMPLES_PASSED : target;
+              switch (pick(6)) {
+              case 0: glGenQueries(pick(4) - 1, pick(6) ? ids : NULL); break;
+              case 1: glBeginQuery(query_target, id); break;
+              case 2: glEndQuery(query_target); break;
+              case 3: glDeleteQueries(pick(4) - 1, pick(6) ? ids : NULL); break;
+              case 4: glGetQueryiv(query_target, GL_QUERY_COUNTER_BITS + (GLenum)pick(3), pick(4) ? &v : NULL); break;
+              default: glGetQueryObjectiv(id, GL_QUERY_RESULT + (GLenum)pick(3), pick(4) ? &v : NULL);
+                       glGetQueryObjectuiv(id, GL_QUERY_RESULT, pick(4) ? (GLuint *)&v : NULL); glIsQuery(id); break;
+              }
+              break; }
+    case 0: { GLuint b[4]; glGenBuffers(pick(5) - 1, pick(6) ? b : NULL); break; }
+    case 1: glBindBuffer(target, (GLuint)pick(6)); break;
+    case 2: glBufferData(target, size, pick(3) ? (void *)buf : NULL, GL_STREAM_DRAW + (GLenum)pick(12)); break;
+    case 3: glBufferSubData(target, offset, size, pick(8) ? (void *)buf : NULL); break;
+    case 4: glGetBufferSubData(target, offset, size, pick(8) ? (void *)buf : NULL); break;
+    case 5: { GLubyte *m = glMapBuffer(target, GL_READ_ONLY + (GLenum)pick(4));
+              GLint n = 0;
+              glGetBufferParameteriv(target, GL_BUFFER_SIZE, &n);
+              if (m && n > 0) m[pick(n)] = (GLubyte)pick(256);   /* within the store, while mapped */
+              if (pick(2)) glUnmapBuffer(target);
+              break; }
+    case 6: { GLuint b[3] = { (GLuint)pick(6), (GLuint)pick(6), 0 }; glDeleteBuffers(pick(4) - 1, pick(6) ? b : NULL); break; }
+    case 7: { void *q = NULL; GLint v = 0; glGetBufferPointerv(target, GL_BUFFER_MAP_POINTER + (GLenum)pick(2), pick(4) ? &q : NULL);
+              glGetBufferParameteriv(target, GL_BUFFER_SIZE + (GLenum)pick(0x60), pick(4) ? &v : NULL); glIsBuffer((GLuint)pick(6)); break; }
+    default: { /* offsets as pointers only where a buffer is bound (else they are addresses) */
+               GLint array_buffer = 0, element_buffer = 0;
+               glGetIntegerv(GL_ARRAY_BUFFER_BINDING, &array_buffer);
+               glGetIntegerv(GL_ELEMENT_ARRAY_BUFFER_BINDING, &element_buffer);
+               GLsizei counts_m[2] = { ANY(counts), ANY(counts) };
+               const void *offsets[2] = { (const void *)(intptr_t)pick(64), (const void *)(intptr_t)ANY(small) };
+               if (array_buffer)
+                   glVertexPointer(ANY(array_sizes), ANY(array_types), ANY(array_strides), (const void *)(intptr_t)pick(64));
+               if (element_buffer) {
+                   /* indices 0 only: the arrays may be client memory, which GL reads unchecked */
+                   static const GLubyte zeros[512];
+                   glBufferData(GL_ELEMENT_ARRAY_BUFFER, (GLsizeiptr)sizeof zeros, zeros, GL_STREAM_DRAW);
+                   glDrawRangeElements(ANY(modes), 0, (GLuint)pick(64), ANY(counts), GL_UNSIGNED_BYTE + 2 * (GLenum)pick(3), offsets[0]);
+                   glMultiDrawElements(ANY(modes), counts_m, GL_UNSIGNED_SHORT, offsets, pick(3));
+               }
+               break; }
+    }
+    /* No element buffer outlives the call: array_call's glDrawElements passes client indices. */
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
+}
+
 static void array_call(void) {
     void *p = pick(8) ? (void *)buf : NULL;
-    switch (pick(12)) {
+    switch (pick(13)) {
+    case 11: buffer_call(); break;
     case 0: glVertexPointer(ANY(array_sizes), ANY(array_types), ANY(array_strides), p); break;
     case 1: glColorPointer(ANY(array_sizes), ANY(array_types), ANY(array_strides), p);
             glNormalPointer(ANY(array_types), ANY(array_strides), p); break;

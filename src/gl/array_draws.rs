@@ -41,6 +41,24 @@ impl Gl {
         self.draw_elements(mode, count, type_, indices);
     }
 
+    /// `glDrawRangeElements(mode, start, end, count, type, (void *)offset)` with indices in
+    /// the buffer bound to `GL_ELEMENT_ARRAY_BUFFER`: [`Gl::draw_elements_offset`] after the
+    /// range's check.
+    pub fn draw_range_elements_offset(
+        &mut self,
+        mode: GLenum,
+        start: GLuint,
+        end: GLuint,
+        count: GLsizei,
+        type_: GLenum,
+        offset: usize,
+    ) {
+        if !self.inside_begin_end() && end < start {
+            return self.draw_error(GL_INVALID_VALUE);
+        }
+        self.draw_elements_offset(mode, count, type_, offset);
+    }
+
     /// `glMultiDrawArrays(mode, first, count, primcount)`: [`Gl::draw_arrays`] of
     /// `(first[i], count[i])` for each `i < primcount`. Errors, before anything is drawn: inside
     /// `begin`/`end` (`GL_INVALID_OPERATION`), a negative `primcount` (`GL_INVALID_VALUE`), the
@@ -81,6 +99,31 @@ impl Gl {
         }
         for (&count, indices) in count.iter().zip(indices) {
             self.draw_elements(mode, count, type_, indices);
+        }
+    }
+
+    /// `glMultiDrawElements(mode, count, type, indices, primcount)` with indices in the
+    /// buffer bound to `GL_ELEMENT_ARRAY_BUFFER`: `offsets` are the byte offsets C passes as
+    /// pointers, each drawn as [`Gl::draw_elements_offset`]. Errors as
+    /// [`Gl::multi_draw_elements`].
+    pub fn multi_draw_elements_offset(
+        &mut self,
+        mode: GLenum,
+        count: &[GLsizei],
+        type_: GLenum,
+        offsets: &[usize],
+        primcount: GLsizei,
+    ) {
+        let index_type = matches!(type_, GL_UNSIGNED_BYTE | GL_UNSIGNED_SHORT | GL_UNSIGNED_INT);
+        let Some(n) = self.multi_draw_count(mode, primcount, index_type) else { return };
+        let (Some(count), Some(offsets)) = (count.get(..n), offsets.get(..n)) else {
+            return self.set_error(GL_INVALID_VALUE);
+        };
+        if count.iter().any(|&c| c < 0) {
+            return self.draw_error(GL_INVALID_VALUE);
+        }
+        for (&count, &offset) in count.iter().zip(offsets) {
+            self.draw_elements_offset(mode, count, type_, offset);
         }
     }
 

@@ -26,14 +26,23 @@
 //! One difference: where an element lies outside the memory the array was given (a Rust
 //! array too short, a negative first index or stride, a NULL pointer), gleval sets
 //! `GL_INVALID_VALUE` and draws nothing, where Mesa reads whatever lies there.
+//!
+//! GL 1.5's buffer objects (`buffers.rs`): a pointer call made while a buffer is bound to
+//! `GL_ARRAY_BUFFER` takes its pointer as an offset into that buffer ([`BufferOffset`] in Rust)
+//! and keeps the buffer, whatever is bound later (GL 1.5 §2.9.1); an element outside a buffer
+//! is zeros in the array's components, as llvmpipe reads it, not an error. The element draws'
+//! `_offset` forms take their indices from the buffer bound to `GL_ELEMENT_ARRAY_BUFFER`.
 
-use super::client_memory::{to_bytes, ArrayElement, ClientPointer};
+use super::buffers::BufferObject;
+use super::client_memory::{to_bytes, ArrayElement, ClientMemory, ClientPointer};
 use super::consts::*;
 use super::lists::ListCommand;
 use super::state_var::{put_flag, row, Kind, StateVar};
 use super::types::*;
 use super::variants::GlComponent;
 use super::Gl;
+use std::any::Any;
+use std::rc::Rc;
 
 /// How many arrays there are.
 const ARRAYS: usize = 8;
@@ -131,11 +140,19 @@ pub(crate) struct ArrayState {
     type_: GLenum,
     stride: GLsizei,
     pointer: Option<ClientPointer>,
+    /// The buffer object the pointer is an offset into (GL 1.5 §2.9.1), `None` for client
+    /// memory: what `GL_*_ARRAY_BUFFER_BINDING` answers.
+    buffer: Option<Rc<BufferObject>>,
 }
 
 impl ArrayState {
     fn new(size: GLint, type_: GLenum) -> Self {
-        Self { enabled: false, size, type_, stride: 0, pointer: None }
+        Self { enabled: false, size, type_, stride: 0, pointer: None, buffer: None }
+    }
+
+    /// The array's buffer's name, 0 for client memory.
+    fn buffer_name(&self) -> GLuint {
+        self.buffer.as_ref().map_or(0, |b| b.name())
     }
 
     /// Bytes of one element.
@@ -158,11 +175,15 @@ impl ArrayState {
         let size = type_size(self.type_);
         let mut bytes = [0u8; 32];
         let element = &mut bytes[..self.element_size()];
-        let offset = isize::try_from(i).ok()?.checked_mul(self.step())?;
-        if !pointer.read(offset, element) {
-            return None;
-        }
+        let offset = isize::try_from(i).ok().and_then(|i| i.checked_mul(self.step()));
         let mut out = [0.0, 0.0, 0.0, 1.0];
+        if !offset.is_some_and(|offset| pointer.read(offset, element)) {
+            // A buffer's element outside it is zeros in every component the array has, GL's
+            // defaults in the others (measured on llvmpipe: `buffer_objects.calls`).
+            let size = usize::try_from(self.size).unwrap_or(0).min(4);
+            out[..size].fill(0.0);
+            return pointer.memory().bounded().then_some(out);
+        }
         for (o, chunk) in out.iter_mut().zip(element.chunks_exact(size)) {
             *o = convert(self.type_, chunk);
         }
@@ -177,6 +198,19 @@ fn type_size(type_: GLenum) -> usize {
         GL_INT | GL_UNSIGNED_INT | GL_FLOAT => 4,
         GL_DOUBLE => 8,
         _ => 1,
+    }
+}
+
+/// The index an element buffer's index past its end gives: the draw module's
+/// `DRAW_MAX_FETCH_IDX`, a vertex outside every buffer.
+const OUTSIDE_INDEX: i64 = u32::MAX as i64;
+
+/// An index of `type_` (`GL_UNSIGNED_BYTE`, `_SHORT` or `_INT`) from its bytes.
+fn index_value(type_: GLenum, b: &[u8]) -> i64 {
+    match type_ {
+        GL_UNSIGNED_BYTE => i64::from(b[0]),
+        GL_UNSIGNED_SHORT => i64::from(u16::take(b)),
+        _ => i64::from(u32::take(b)),
     }
 }
 
@@ -242,15 +276,28 @@ struct Element {
     vertex: Option<[f32; 4]>,
 }
 
-/// The client's vertex arrays, the current edge flag, and what `glPushClientAttrib` saved of
-/// them.
+/// What `GL_CLIENT_VERTEX_ARRAY_BIT` saves: the arrays and the two buffer bindings (GL 1.5
+/// table 6.8, as Mesa's `copy_array_attrib`).
+#[derive(Clone, Debug, PartialEq)]
+struct SavedArrays {
+    arrays: [ArrayState; ARRAYS],
+    array_buffer: Option<Rc<BufferObject>>,
+    element_buffer: Option<Rc<BufferObject>>,
+}
+
+/// The client's vertex arrays, the buffer bindings, the current edge flag, and what
+/// `glPushClientAttrib` saved of them.
 #[derive(Clone, Debug, PartialEq)]
 pub(crate) struct VertexArrays {
     arrays: [ArrayState; ARRAYS],
     /// `glEdgeFlag`'s current value (Mesa keeps it as a float and reports `== 1.0`).
     pub edge_flag: bool,
+    /// `GL_ARRAY_BUFFER`'s buffer: the one the pointer calls take offsets into.
+    pub(crate) array_buffer: Option<Rc<BufferObject>>,
+    /// `GL_ELEMENT_ARRAY_BUFFER`'s buffer: the one the element draws take indices from.
+    pub(crate) element_buffer: Option<Rc<BufferObject>>,
     /// One entry per `glPushClientAttrib`: the arrays when `GL_CLIENT_VERTEX_ARRAY_BIT` was set.
-    saved: Vec<Option<Box<[ArrayState; ARRAYS]>>>,
+    saved: Vec<Option<Box<SavedArrays>>>,
 }
 
 impl Default for VertexArrays {
@@ -267,6 +314,8 @@ impl Default for VertexArrays {
                 ArrayState::new(1, GL_FLOAT),
             ],
             edge_flag: true,
+            array_buffer: None,
+            element_buffer: None,
             saved: Vec::new(),
         }
     }
@@ -287,6 +336,23 @@ impl VertexArrays {
         let Some(w) = Which::of_capability(cap) else { return false };
         self.arrays[w as usize].enabled = on;
         true
+    }
+
+    /// Forgets a buffer being deleted: bindings to it become 0, and arrays in it keep their
+    /// offset into no memory (Mesa's `unbind` in `_mesa_DeleteBuffers`).
+    pub(crate) fn unbind_buffer(&mut self, buffer: &Rc<BufferObject>) {
+        let is_it = |b: &Option<Rc<BufferObject>>| b.as_ref().is_some_and(|b| Rc::ptr_eq(b, buffer));
+        if is_it(&self.array_buffer) {
+            self.array_buffer = None;
+        }
+        if is_it(&self.element_buffer) {
+            self.element_buffer = None;
+        }
+        for array in self.arrays.iter_mut().filter(|a| is_it(&a.buffer)) {
+            array.buffer = None;
+            let offset = array.pointer.as_ref().map_or(0, ClientPointer::offset);
+            array.pointer = Some(ClientPointer::new(Rc::new(NoMemory), offset));
+        }
     }
 
     /// Element `i` of the enabled arrays; `None` when an enabled array cannot be read there.
@@ -321,11 +387,50 @@ impl VertexArrays {
     }
 }
 
+/// The memory an array points into once its buffer is deleted: none (Mesa would read the
+/// address its offset makes; gleval reads nothing).
+#[derive(Debug)]
+struct NoMemory;
+
+impl ClientMemory for NoMemory {
+    fn read(&self, _: usize, _: &mut [u8]) -> bool {
+        false
+    }
+
+    fn as_any(&self) -> &dyn Any {
+        self
+    }
+}
+
 /// What a pointer call accepts for its memory: a [`ClientArray`](super::ClientArray) (`&v`), a
-/// [`ClientPointer`] (`&v[3]` is `v.at(3)`), or `None` (C's NULL).
+/// [`ClientPointer`] (`&v[3]` is `v.at(3)`), `None` (C's NULL), or a [`BufferOffset`].
+///
+/// While a buffer is bound to `GL_ARRAY_BUFFER`, GL takes the pointer as an offset into it
+/// (GL 1.5 §2.9.1): [`PointerArg::buffer_offset`] is that offset. C's pointers are both (the
+/// C ABI's kind answers its address); a Rust client pointer is offset 0 there, as NULL is.
 pub trait PointerArg {
-    /// The pointer, `None` for NULL.
+    /// The pointer as client memory, `None` for NULL (no buffer bound).
     fn into_pointer(self) -> Option<ClientPointer>;
+    /// The pointer as an offset into the buffer bound to `GL_ARRAY_BUFFER`.
+    fn buffer_offset(&self) -> usize {
+        0
+    }
+}
+
+/// An offset into a buffer object where C passes one as a pointer (`(void *)12`, the
+/// `BUFFER_OFFSET(12)` idiom): `gl.vertex_pointer(3, GL_FLOAT, 0, BufferOffset(12))`. With no
+/// buffer bound it points at no memory (a draw reading it is `GL_INVALID_VALUE`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct BufferOffset(pub usize);
+
+impl PointerArg for BufferOffset {
+    fn into_pointer(self) -> Option<ClientPointer> {
+        (self.0 != 0).then(|| ClientPointer::new(Rc::new(NoMemory), self.0))
+    }
+
+    fn buffer_offset(&self) -> usize {
+        self.0
+    }
 }
 
 impl PointerArg for &super::ClientArray {
@@ -387,38 +492,38 @@ impl Gl {
     /// `glVertexPointer(size, type, stride, pointer)`: sizes 2–4 of `GL_SHORT`, `GL_INT`,
     /// `GL_FLOAT` or `GL_DOUBLE`. Errors in Mesa's order (module docs). Not compiled.
     pub fn vertex_pointer(&mut self, size: GLint, type_: GLenum, stride: GLsizei, pointer: impl PointerArg) {
-        self.array_pointer(Which::Vertex, size, type_, stride, pointer.into_pointer());
+        self.array_pointer(Which::Vertex, size, type_, stride, pointer);
     }
 
     /// `glNormalPointer(type, stride, pointer)`: three of `GL_BYTE`, `GL_SHORT`, `GL_INT`,
     /// `GL_FLOAT` or `GL_DOUBLE`.
     pub fn normal_pointer(&mut self, type_: GLenum, stride: GLsizei, pointer: impl PointerArg) {
-        self.array_pointer(Which::Normal, 3, type_, stride, pointer.into_pointer());
+        self.array_pointer(Which::Normal, 3, type_, stride, pointer);
     }
 
     /// `glColorPointer(size, type, stride, pointer)`: 3 or 4 of any integer type, `GL_FLOAT`
     /// or `GL_DOUBLE`.
     pub fn color_pointer(&mut self, size: GLint, type_: GLenum, stride: GLsizei, pointer: impl PointerArg) {
-        self.array_pointer(Which::Color, size, type_, stride, pointer.into_pointer());
+        self.array_pointer(Which::Color, size, type_, stride, pointer);
     }
 
     /// `glIndexPointer(type, stride, pointer)`: `GL_UNSIGNED_BYTE`, `GL_SHORT`, `GL_INT`,
     /// `GL_FLOAT` or `GL_DOUBLE` (kept as state: colour indices do not draw in RGBA).
     pub fn index_pointer(&mut self, type_: GLenum, stride: GLsizei, pointer: impl PointerArg) {
-        self.array_pointer(Which::Index, 1, type_, stride, pointer.into_pointer());
+        self.array_pointer(Which::Index, 1, type_, stride, pointer);
     }
 
     /// `glTexCoordPointer(size, type, stride, pointer)`: sizes 1–4 of `GL_SHORT`, `GL_INT`,
     /// `GL_FLOAT` or `GL_DOUBLE`.
     pub fn tex_coord_pointer(&mut self, size: GLint, type_: GLenum, stride: GLsizei, pointer: impl PointerArg) {
-        self.array_pointer(Which::TexCoord, size, type_, stride, pointer.into_pointer());
+        self.array_pointer(Which::TexCoord, size, type_, stride, pointer);
     }
 
     /// `glSecondaryColorPointer(size, type, stride, pointer)` (GL 1.4): 3 (or 4, as Mesa
     /// takes) of any integer type, `GL_FLOAT` or `GL_DOUBLE`; alpha is not read into the
     /// secondary colour.
     pub fn secondary_color_pointer(&mut self, size: GLint, type_: GLenum, stride: GLsizei, pointer: impl PointerArg) {
-        self.array_pointer(Which::SecondaryColor, size, type_, stride, pointer.into_pointer());
+        self.array_pointer(Which::SecondaryColor, size, type_, stride, pointer);
     }
 
     /// `glFogCoordPointer(type, stride, pointer)` (GL 1.4): one `GL_FLOAT` or `GL_DOUBLE` per
@@ -429,17 +534,10 @@ impl Gl {
 
     /// `glEdgeFlagPointer(stride, pointer)`: one `GLboolean` per element.
     pub fn edge_flag_pointer(&mut self, stride: GLsizei, pointer: impl PointerArg) {
-        self.array_pointer(Which::EdgeFlag, 1, GL_UNSIGNED_BYTE, stride, pointer.into_pointer());
+        self.array_pointer(Which::EdgeFlag, 1, GL_UNSIGNED_BYTE, stride, pointer);
     }
 
-    fn array_pointer(
-        &mut self,
-        which: Which,
-        size: GLint,
-        type_: GLenum,
-        stride: GLsizei,
-        pointer: Option<ClientPointer>,
-    ) {
+    fn array_pointer(&mut self, which: Which, size: GLint, type_: GLenum, stride: GLsizei, pointer: impl PointerArg) {
         if self.reject_inside_begin_end() {
             return;
         }
@@ -453,8 +551,21 @@ impl Gl {
         if !which.accepts_size(size) {
             return self.set_error(GL_INVALID_VALUE);
         }
+        let (pointer, buffer) = self.array_memory(pointer);
         let array = &mut self.client.arrays.arrays[which as usize];
-        (array.size, array.type_, array.stride, array.pointer) = (size, type_, stride, pointer);
+        (array.size, array.type_, array.stride, array.pointer, array.buffer) = (size, type_, stride, pointer, buffer);
+    }
+
+    /// Where a pointer argument points: an offset into the buffer bound to `GL_ARRAY_BUFFER`
+    /// (and that buffer), or client memory when none is.
+    fn array_memory(&self, pointer: impl PointerArg) -> (Option<ClientPointer>, Option<Rc<BufferObject>>) {
+        match &self.client.arrays.array_buffer {
+            Some(buffer) => {
+                let memory: Rc<dyn ClientMemory> = buffer.clone();
+                (Some(ClientPointer::new(memory, pointer.buffer_offset())), Some(buffer.clone()))
+            }
+            None => (pointer.into_pointer(), None),
+        }
     }
 
     /// `glEnableClientState(array)`: `GL_VERTEX_ARRAY` … `GL_EDGE_FLAG_ARRAY`; another name →
@@ -570,26 +681,69 @@ impl Gl {
     /// `GL_UNSIGNED_INT`, in native byte order: any slice type holds them as C's array does).
     /// Errors: `count` < 0 (`GL_INVALID_VALUE`), then the mode and the type
     /// (`GL_INVALID_ENUM`), then `indices` shorter than `count` indices (`GL_INVALID_VALUE`).
+    ///
+    /// The indices are client memory, whatever is bound to `GL_ELEMENT_ARRAY_BUFFER`: indices
+    /// in a buffer are [`Gl::draw_elements_offset`]'s.
     pub fn draw_elements<T: ArrayElement>(&mut self, mode: GLenum, count: GLsizei, type_: GLenum, indices: &[T]) {
-        if self.inside_begin_end() {
-            return self.draw_error(GL_INVALID_OPERATION);
-        }
-        if count < 0 {
-            return self.draw_error(GL_INVALID_VALUE);
-        }
-        if mode > GL_POLYGON || !matches!(type_, GL_UNSIGNED_BYTE | GL_UNSIGNED_SHORT | GL_UNSIGNED_INT) {
-            return self.draw_error(GL_INVALID_ENUM);
+        if !self.element_draw_checks(mode, count, type_) {
+            return;
         }
         let size = type_size(type_);
         let bytes = to_bytes(indices);
         let Some(bytes) = bytes.get(..count as usize * size) else { return self.set_error(GL_INVALID_VALUE) };
-        let index = |b: &[u8]| match type_ {
-            GL_UNSIGNED_BYTE => i64::from(b[0]),
-            GL_UNSIGNED_SHORT => i64::from(u16::take(b)),
-            _ => i64::from(u32::take(b)),
+        self.draw_index_list(mode, bytes.chunks_exact(size).map(|b| index_value(type_, b)).collect());
+    }
+
+    /// `glDrawElements(mode, count, type, (void *)offset)` with a buffer bound to
+    /// `GL_ELEMENT_ARRAY_BUFFER` (GL 1.5 §2.9.2): the `count` indices from byte `offset` of
+    /// that buffer, read now (a display list keeps the vertices they name). Errors as
+    /// [`Gl::draw_elements`]; no element buffer bound → `GL_INVALID_VALUE` (no memory to read).
+    /// As Mesa 22.3 on llvmpipe does (measured): an offset that is no multiple of the index
+    /// size, or past the buffer's end, draws nothing; an index past the end names a vertex
+    /// outside every buffer (zeros, see `fetch`).
+    pub fn draw_elements_offset(&mut self, mode: GLenum, count: GLsizei, type_: GLenum, offset: usize) {
+        if !self.element_draw_checks(mode, count, type_) {
+            return;
+        }
+        let Some(buffer) = self.client.arrays.element_buffer.clone() else { return self.set_error(GL_INVALID_VALUE) };
+        let size = type_size(type_);
+        if offset % size != 0 || offset > buffer.len() {
+            return;
+        }
+        let index = |i: usize| {
+            let mut b = [0u8; 4];
+            let at = i.checked_mul(size).and_then(|d| d.checked_add(offset));
+            let read = at.is_some_and(|at| buffer.read(at, &mut b[..size]));
+            if read {
+                index_value(type_, &b)
+            } else {
+                OUTSIDE_INDEX
+            }
         };
+        let indices = (0..count as usize).map(index).collect();
+        self.draw_index_list(mode, indices);
+    }
+
+    /// `glDrawElements`' checks in Mesa's order (inside `begin`/`end`, the count, the mode and
+    /// the type), each error compiled too; true when they pass.
+    pub(super) fn element_draw_checks(&mut self, mode: GLenum, count: GLsizei, type_: GLenum) -> bool {
+        let error = if self.inside_begin_end() {
+            GL_INVALID_OPERATION
+        } else if count < 0 {
+            GL_INVALID_VALUE
+        } else if mode > GL_POLYGON || !matches!(type_, GL_UNSIGNED_BYTE | GL_UNSIGNED_SHORT | GL_UNSIGNED_INT) {
+            GL_INVALID_ENUM
+        } else {
+            return true;
+        };
+        self.draw_error(error);
+        false
+    }
+
+    /// An indexed draw of `indices` (quads split as lists split them, `recorder.indexed_draw`).
+    fn draw_index_list(&mut self, mode: GLenum, indices: Vec<i64>) {
         self.recorder.indexed_draw = true;
-        self.draw_indexed(mode, bytes.chunks_exact(size).map(index).collect());
+        self.draw_indexed(mode, indices);
         self.recorder.indexed_draw = false;
     }
 
@@ -618,7 +772,7 @@ impl Gl {
             return self.set_error(GL_INVALID_VALUE);
         }
         let Some(layout) = interleaved_layout(format) else { return self.set_error(GL_INVALID_ENUM) };
-        let pointer = pointer.into_pointer();
+        let (pointer, buffer) = self.array_memory(pointer);
         let color_bytes = layout.color.map_or(0, |(n, t)| n as usize * type_size(t));
         let (pc, pn) = (layout.tex as usize * 4, layout.tex as usize * 4 + color_bytes);
         let pv = pn + if layout.normal { 12 } else { 0 };
@@ -629,6 +783,7 @@ impl Gl {
             a.enabled = on;
             if on {
                 (a.size, a.type_, a.stride, a.pointer) = (size, type_, stride, at(offset));
+                a.buffer.clone_from(&buffer);
             }
         };
         // Mesa leaves the secondary colour array as it was (measured on Mesa 22.3), and the
@@ -684,14 +839,22 @@ impl Gl {
 
     /// `glPushClientAttrib`'s vertex-array half: saves the arrays when `mask` asks.
     pub(crate) fn push_client_arrays(&mut self, mask: GLbitfield) {
-        let saved = (mask & GL_CLIENT_VERTEX_ARRAY_BIT != 0).then(|| Box::new(self.client.arrays.arrays.clone()));
+        let a = &self.client.arrays;
+        let saved = (mask & GL_CLIENT_VERTEX_ARRAY_BIT != 0).then(|| {
+            Box::new(SavedArrays {
+                arrays: a.arrays.clone(),
+                array_buffer: a.array_buffer.clone(),
+                element_buffer: a.element_buffer.clone(),
+            })
+        });
         self.client.arrays.saved.push(saved);
     }
 
     /// `glPopClientAttrib`'s vertex-array half.
     pub(crate) fn pop_client_arrays(&mut self) {
-        if let Some(Some(arrays)) = self.client.arrays.saved.pop() {
-            self.client.arrays.arrays = *arrays;
+        if let Some(Some(saved)) = self.client.arrays.saved.pop() {
+            let a = &mut self.client.arrays;
+            (a.arrays, a.array_buffer, a.element_buffer) = (saved.arrays, saved.array_buffer, saved.element_buffer);
         }
     }
 }
@@ -703,8 +866,26 @@ macro_rules! array_row {
     };
 }
 
-/// The arrays' `glGet` rows, and the current edge flag's (table 6.3), which lives here.
+/// `glGet` of an array's buffer binding (GL 1.5 table 6.7).
+macro_rules! binding_row {
+    ($name:expr, $which:ident) => {
+        row($name, 1, Kind::Int, |gl, o| o[0] = f64::from(gl.client.arrays.get(Which::$which).buffer_name()))
+    };
+}
+
+/// The arrays' `glGet` rows, the buffer bindings' (GL 1.5 table 6.7), and the current edge
+/// flag's (table 6.3), which lives here.
 pub(crate) static GET_ROWS: &[StateVar] = &[
+    row(GL_ARRAY_BUFFER_BINDING, 1, Kind::Int, |gl, o| o[0] = f64::from(gl.array_buffer_binding())),
+    row(GL_ELEMENT_ARRAY_BUFFER_BINDING, 1, Kind::Int, |gl, o| o[0] = f64::from(gl.element_array_buffer_binding())),
+    binding_row!(GL_VERTEX_ARRAY_BUFFER_BINDING, Vertex),
+    binding_row!(GL_NORMAL_ARRAY_BUFFER_BINDING, Normal),
+    binding_row!(GL_COLOR_ARRAY_BUFFER_BINDING, Color),
+    binding_row!(GL_INDEX_ARRAY_BUFFER_BINDING, Index),
+    binding_row!(GL_TEXTURE_COORD_ARRAY_BUFFER_BINDING, TexCoord),
+    binding_row!(GL_EDGE_FLAG_ARRAY_BUFFER_BINDING, EdgeFlag),
+    binding_row!(GL_SECONDARY_COLOR_ARRAY_BUFFER_BINDING, SecondaryColor),
+    binding_row!(GL_FOG_COORD_ARRAY_BUFFER_BINDING, FogCoord),
     row(GL_EDGE_FLAG, 1, Kind::Bool, |gl, o| put_flag(o, gl.client.arrays.edge_flag)),
     array_row!(GL_VERTEX_ARRAY_SIZE, Vertex.size),
     array_row!(GL_VERTEX_ARRAY_TYPE, Vertex.type_),

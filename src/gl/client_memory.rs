@@ -32,6 +32,12 @@ pub trait ClientMemory: Debug {
     /// Copies `out.len()` bytes starting `offset` bytes in; false (and `out` unspecified) when
     /// the memory does not hold them all.
     fn read(&self, offset: usize, out: &mut [u8]) -> bool;
+    /// Whether an element outside the memory reads as zeros instead of failing the draw: a
+    /// buffer object's (GL 1.5), whose size GL knows, as llvmpipe's bounded vertex fetch reads
+    /// it. Client memory has no size GL knows: gleval refuses to read past it.
+    fn bounded(&self) -> bool {
+        false
+    }
     /// The memory as `Any`, so that a binding can recognise its own kind (the C ABI answers
     /// `glGetPointerv` with the address it was given).
     fn as_any(&self) -> &dyn Any;

@@ -193,7 +193,7 @@ mod tests {
         let top = [0u8, 0, 0, 255].repeat(4);
         let bottom = [[255, 0, 0, 255], [0, 255, 0, 255], [0, 0, 255, 255], [255, 255, 255, 255]].concat();
         let depth = vec![0.5, 0.6, 0.7, 0.8, 0.1, 0.2, 0.3, 0.4];
-        WindowImage { width: 4, height: 2, color: [top, bottom].concat(), depth }
+        WindowImage { width: 4, height: 2, color: [top, bottom].concat(), depth, samples: Vec::new() }
     }
 
     fn copy(source: [i32; 4], origin: [i32; 2], buffer: GLenum) -> PixelCopy {

@@ -303,7 +303,7 @@ mod tests {
         let mut gl = Gl::new(2, 2);
         gl.set_window_reader(|_, w, h| {
             let color = [[0, 0, 255, 255], [255, 255, 255, 255], [255, 0, 0, 255], [0, 255, 0, 255]].concat();
-            Some(WindowImage { width: w, height: h, color, depth: Vec::new() })
+            Some(WindowImage { width: w, height: h, color, depth: Vec::new(), samples: Vec::new() })
         });
         gl
     }

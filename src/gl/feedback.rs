@@ -304,7 +304,11 @@ impl Gl {
                 }
             }
             // GL clears and copies only in render mode (a copy gives its token instead).
-            Command::Clear { .. } | Command::CopyPixels(_) | Command::Accum(_) | Command::SwapBuffers => {}
+            Command::Clear { .. }
+            | Command::CopyPixels(_)
+            | Command::Accum(_)
+            | Command::SwapBuffers
+            | Command::Query { .. } => {}
         }
         out
     }

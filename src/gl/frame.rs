@@ -179,6 +179,15 @@ pub enum Command {
     Mesh(usize),
     /// Execute copy number `n` of [`Frame::pixel_copies`] (`glCopyPixels`).
     CopyPixels(usize),
+    /// An occlusion query's slot of this frame starts (`glBeginQuery`, `begin`) or stops
+    /// (`glEndQuery`) counting the samples that pass the depth and stencil tests; a rasteriser
+    /// hands the counts back in [`super::WindowImage::samples`].
+    Query {
+        /// The slot: 0, 1, … in the order the frame's queries began.
+        slot: usize,
+        /// Whether it starts.
+        begin: bool,
+    },
 }
 
 /// An immediate-mode call, in the order the program made it.
@@ -375,9 +384,11 @@ impl Frame {
         };
         for command in &self.commands {
             match *command {
-                Command::Clear { .. } | Command::CopyPixels(_) | Command::Accum(_) | Command::SwapBuffers => {
-                    out.commands.push(*command)
-                }
+                Command::Clear { .. }
+                | Command::CopyPixels(_)
+                | Command::Accum(_)
+                | Command::SwapBuffers
+                | Command::Query { .. } => out.commands.push(*command),
                 Command::Draw(i) => {
                     let p = self.primitives[i];
                     let first = out.vertices.len();

@@ -65,6 +65,10 @@ pub(crate) enum ListCommand {
     CallLists(GLsizei, GLenum, Vec<u8>),
     ListBase(GLuint),
     EdgeFlag(GLboolean),
+    /// `glBeginQuery(target, id)` (Mesa compiles it: `save_BeginQueryARB`).
+    BeginQuery(GLenum, GLuint),
+    /// `glEndQuery(target)`.
+    EndQuery(GLenum),
     /// An error a draw call raised while it compiled: raised again when the list runs (Mesa's
     /// `_mesa_compile_error`).
     Error(GLenum),
@@ -421,6 +425,8 @@ impl Gl {
             C::CallLists(n, type_, names) => self.call_lists(*n, *type_, names),
             C::ListBase(base) => self.list_base(*base),
             C::EdgeFlag(flag) => self.edge_flag(*flag),
+            C::BeginQuery(target, id) => self.begin_query(*target, *id),
+            C::EndQuery(target) => self.end_query(*target),
             C::Error(code) => self.set_error(*code),
             C::Compressed(call) => self.replay_compressed_call(*call),
             C::Names(call) => self.replay_name_call(call),

@@ -13,6 +13,7 @@ mod attrib;
 mod binding;
 mod bitmap;
 mod blend;
+mod buffers;
 mod clear;
 mod client_memory;
 pub(crate) mod clip;
@@ -41,6 +42,7 @@ mod line;
 pub(crate) mod lists;
 mod matrix;
 mod multisample;
+mod occlusion;
 mod offset;
 mod param_variants;
 mod pixel_pack;
@@ -70,8 +72,9 @@ mod vertex;
 mod viewport;
 mod window_read;
 
-pub use arrays::PointerArg;
+pub use arrays::{BufferOffset, PointerArg};
 pub use blend::Blend;
+pub use buffers::{BufferMap, BufferObject};
 pub use client_memory::{ArrayElement, ClientArray, ClientMemory, ClientPointer};
 pub use copy_pixels::{CopyFragment, PixelCopy};
 pub use eval::{MapSample, MeshJob};
@@ -157,9 +160,9 @@ pub fn error_name(code: GLenum) -> &'static str {
 /// BGRA and the packed pixel types (`pixel_packed.rs`), `GL_ADD` and the combiner with DOT3
 /// (`texture/combine.rs`), `GL_CLAMP_TO_BORDER` and `GL_MIRRORED_REPEAT`
 /// (`render/soft/sampler.rs`, `shaders/fragment.wgsl`), `GL_GENERATE_MIPMAP`
-/// (`texture/generate.rs`).
+/// (`texture/generate.rs`), buffer objects (`buffers.rs`), occlusion queries (`occlusion.rs`).
 const EXTENSIONS: &str =
-    "GL_ARB_point_parameters GL_ARB_texture_border_clamp GL_ARB_texture_compression GL_ARB_texture_env_add GL_ARB_texture_env_combine GL_ARB_texture_env_dot3 GL_ARB_texture_mirrored_repeat GL_ARB_window_pos GL_EXT_bgra GL_EXT_blend_color GL_EXT_blend_equation_separate GL_EXT_blend_func_separate GL_EXT_blend_minmax GL_EXT_blend_subtract GL_EXT_draw_range_elements GL_EXT_fog_coord GL_EXT_multi_draw_arrays GL_EXT_packed_pixels GL_EXT_point_parameters GL_EXT_rescale_normal GL_EXT_stencil_wrap GL_EXT_texture3D GL_EXT_texture_edge_clamp GL_EXT_texture_env_add GL_EXT_texture_env_combine GL_IBM_texture_mirrored_repeat GL_NV_blend_square GL_SGIS_generate_mipmap GL_SGIS_texture_border_clamp GL_SGIS_texture_edge_clamp GL_SGIS_texture_lod";
+    "GL_ARB_occlusion_query GL_ARB_point_parameters GL_ARB_texture_border_clamp GL_ARB_texture_compression GL_ARB_texture_env_add GL_ARB_texture_env_combine GL_ARB_texture_env_dot3 GL_ARB_texture_mirrored_repeat GL_ARB_vertex_buffer_object GL_ARB_window_pos GL_EXT_bgra GL_EXT_blend_color GL_EXT_blend_equation_separate GL_EXT_blend_func_separate GL_EXT_blend_minmax GL_EXT_blend_subtract GL_EXT_draw_range_elements GL_EXT_fog_coord GL_EXT_multi_draw_arrays GL_EXT_packed_pixels GL_EXT_point_parameters GL_EXT_rescale_normal GL_EXT_stencil_wrap GL_EXT_texture3D GL_EXT_texture_edge_clamp GL_EXT_texture_env_add GL_EXT_texture_env_combine GL_IBM_texture_mirrored_repeat GL_NV_blend_square GL_SGIS_generate_mipmap GL_SGIS_texture_border_clamp GL_SGIS_texture_edge_clamp GL_SGIS_texture_lod";
 
 /// A GL context without a GPU: GL state plus the recording of what is drawn.
 ///
@@ -255,6 +258,8 @@ pub(crate) struct ServerState {
     pub(super) pixel_state: pixel_transfer::PixelState,
     /// The colour-index calls' state (an RGBA context keeps it and draws nothing with it).
     pub(super) color_index: color_index::ColorIndex,
+    /// GL 1.5's occlusion queries (no attribute group).
+    pub(super) queries: occlusion::Queries,
 }
 
 impl ServerState {
@@ -290,6 +295,7 @@ impl ServerState {
             framebuffer: fragments::BufferConfig::default(),
             pixel_state: pixel_transfer::PixelState::default(),
             color_index: color_index::ColorIndex::default(),
+            queries: occlusion::Queries::default(),
         }
     }
 }
@@ -306,6 +312,8 @@ struct ClientState {
     feedback: feedback::Feedback,
     /// Selection mode: its buffer, the name stack and the hit being gathered.
     select: select::Selection,
+    /// GL 1.5's buffer objects by name (their bindings are the vertex arrays').
+    buffers: buffers::BufferObjects,
 }
 
 /// The recording: the frame, the primitive open between `begin` and `end`, and what the
@@ -402,8 +410,12 @@ impl Gl {
     /// Takes the recorded frame, leaving an empty one (the GL state is kept).
     pub fn take_frame(&mut self) -> Frame {
         self.evaluate_pending_meshes();
+        // The occlusion queries' counts come from the frame before it goes.
+        self.queries_leave_frame();
         self.recorder.state_index = None;
-        std::mem::take(&mut self.recorder.frame)
+        let frame = std::mem::take(&mut self.recorder.frame);
+        self.queries_enter_frame();
+        frame
     }
 
     /// Gives a frame taken with [`Gl::take_frame`] back once it is drawn: its buffers are reused
@@ -571,6 +583,7 @@ mod tests {
         assert!(gl.get_string(GL_VERSION).is_some_and(|v| v.starts_with(&version)));
         // The claims, spelled out: a new one is a decision, made here as well.
         let claimed = [
+            "GL_ARB_occlusion_query",
             "GL_ARB_point_parameters",
             "GL_ARB_texture_border_clamp",
             "GL_ARB_texture_compression",
@@ -578,6 +591,7 @@ mod tests {
             "GL_ARB_texture_env_combine",
             "GL_ARB_texture_env_dot3",
             "GL_ARB_texture_mirrored_repeat",
+            "GL_ARB_vertex_buffer_object",
             "GL_ARB_window_pos",
             "GL_EXT_bgra",
             "GL_EXT_blend_color",

@@ -117,7 +117,7 @@ mod tests {
     /// 0.25, 0.5 at the bottom, 0.75, 1 above.
     fn window() -> WindowImage {
         let color = [[0, 0, 255, 255], [255, 255, 255, 255], [255, 0, 0, 255], [0, 255, 0, 255]].concat();
-        WindowImage { width: 2, height: 2, color, depth: vec![0.75, 1.0, 0.25, 0.5] }
+        WindowImage { width: 2, height: 2, color, depth: vec![0.75, 1.0, 0.25, 0.5], samples: Vec::new() }
     }
 
     #[test]

@@ -31,3 +31,9 @@ pub type GLushort = u16;
 /// `GLvoid`: only behind a pointer in C; Rust signatures take typed slices (`&[u8]` where GL
 /// reads raw memory, as `glCallLists` does).
 pub type GLvoid = core::ffi::c_void;
+
+/// C's `GLsizeiptr` (GL 1.5): a buffer object's size in bytes, `ptrdiff_t`.
+pub type GLsizeiptr = isize;
+
+/// C's `GLintptr` (GL 1.5): an offset into a buffer object in bytes, `ptrdiff_t`.
+pub type GLintptr = isize;

@@ -25,6 +25,9 @@ pub struct WindowImage {
     pub color: Vec<u8>,
     /// One depth a pixel, rows top to bottom; empty when the reader was not asked for it.
     pub depth: Vec<f32>,
+    /// The samples each occlusion query slot of the frame counted ([`super::Command::Query`]);
+    /// a slot past the end counted none.
+    pub samples: Vec<u64>,
 }
 
 impl WindowImage {
@@ -32,7 +35,7 @@ impl WindowImage {
     #[must_use]
     pub fn blank(width: u32, height: u32) -> Self {
         let n = width as usize * height as usize;
-        Self { width, height, color: vec![0; 4 * n], depth: vec![1.0; n] }
+        Self { width, height, color: vec![0; 4 * n], depth: vec![1.0; n], samples: Vec::new() }
     }
 
     /// The index of window pixel (`x`, `y`), y counted from the bottom as GL counts it.

@@ -43,7 +43,9 @@ pub(crate) fn needs_cpu(frame: &Frame) -> bool {
     states
         || frame.commands.iter().enumerate().any(|(k, command)| match command {
             Command::Clear { mask, tests, .. } => mask & !GL_ACCUM_BUFFER_BIT != 0 && !plain(tests, &mut buffers),
-            Command::Accum(_) => true,
+            // Occlusion queries are counted by the CPU rasteriser (wgpu's counts on lavapipe
+            // are not measured).
+            Command::Accum(_) | Command::Query { .. } => true,
             Command::SwapBuffers => k != last,
             Command::Draw(_) | Command::Mesh(_) | Command::CopyPixels(_) => false,
         })

@@ -50,7 +50,7 @@ pub(crate) fn split_passes(ops: &[Op], keep: bool) -> Vec<Pass> {
             }
             Op::Draw(batch) => passes.last_mut().expect("at least one pass").draws.push(PassItem::Batch(batch)),
             // Frames with these are drawn by the CPU rasteriser (`fallback.rs`).
-            Op::Accum(_) | Op::SwapBuffers => {}
+            Op::Accum(_) | Op::SwapBuffers | Op::Query { .. } => {}
             Op::GpuMesh { mesh, fragment } => {
                 passes.last_mut().expect("at least one pass").draws.push(PassItem::Mesh { mesh, fragment })
             }

@@ -186,7 +186,8 @@ impl Renderer {
         } else {
             Vec::new()
         };
-        Ok(WindowImage { width: target.width, height: target.height, color, depth })
+        // No query slot: frames with occlusion queries are the CPU rasteriser's (fallback.rs).
+        Ok(WindowImage { width: target.width, height: target.height, color, depth, samples: Vec::new() })
     }
 
     /// The first wgpu validation or device error since the last call, if any.

@@ -133,6 +133,13 @@ pub enum Op {
     Accum(Accumulation),
     /// The back buffer becomes the front one.
     SwapBuffers,
+    /// An occlusion query's slot starts (`begin`) or stops counting (see [`Command::Query`]).
+    Query {
+        /// The slot.
+        slot: usize,
+        /// Whether it starts.
+        begin: bool,
+    },
     /// Draw a batch.
     Draw(Batch),
     /// Draw a mesh of the frame whose vertices the GPU tessellator evaluates.
@@ -184,6 +191,7 @@ pub fn assemble_frame(frame: &Frame, gpu_meshes: &[usize]) -> DrawList {
             }
             Command::Accum(accumulation) => out.list.ops.push(Op::Accum(accumulation)),
             Command::SwapBuffers => out.list.ops.push(Op::SwapBuffers),
+            Command::Query { slot, begin } => out.list.ops.push(Op::Query { slot, begin }),
             Command::Draw(index) => {
                 if let Some(p) = frame.primitives.get(index) {
                     if let Some(state) = frame.states.get(p.state) {

@@ -2,6 +2,7 @@
 #![allow(clippy::needless_range_loop)]
 
 mod arrays_properties;
+mod buffer_objects;
 mod conformance;
 mod editor_demo;
 mod eval_mesh;
@@ -21,6 +22,7 @@ mod gpu_parity;
 mod interactive_demo;
 mod layout;
 mod mesa_calls;
+mod occlusion_queries;
 mod picking_demo;
 mod pixel_properties;
 mod properties;

@@ -4,6 +4,7 @@
 //! The format and the feedback conventions are in `tests/reference/calls/FORMAT.md`.
 
 mod arrays;
+mod buffers;
 
 use gleval::gl::MapTarget;
 use gleval::prelude::*;

@@ -4,13 +4,16 @@
 //!
 //! GL keeps the caller's pointers and reads through them when it draws (GL 1.1 §2.8): each
 //! pointer becomes a [`RawMemory`] that `Gl` reads, at draw time, exactly the elements the draw
-//! call's arguments name (the caller's promise, as in GL).
+//! call's arguments name (the caller's promise, as in GL). While a buffer object is bound
+//! (GL 1.5 §2.9) a pointer is an offset into it instead, and no client memory is read: `Gl`
+//! decides which ([`CPointer`] is both), and the element draws take their index pointer as an
+//! offset when a buffer is bound to `GL_ELEMENT_ARRAY_BUFFER`.
 
 use crate::context::with_gl;
 use crate::memory::{array, bytes};
 use gleval::gl::consts::*;
 use gleval::gl::types::*;
-use gleval::gl::{ClientMemory, ClientPointer, Gl};
+use gleval::gl::{ClientMemory, ClientPointer, Gl, PointerArg};
 use std::any::Any;
 use std::ffi::c_void;
 use std::rc::Rc;
@@ -36,51 +39,65 @@ impl ClientMemory for RawMemory {
     }
 }
 
+/// A C pointer argument: client memory, or an offset into the bound buffer (its value).
+struct CPointer(*const c_void);
+
+impl PointerArg for CPointer {
+    fn into_pointer(self) -> Option<ClientPointer> {
+        pointer(self.0)
+    }
+
+    fn buffer_offset(&self) -> usize {
+        self.0 as usize
+    }
+}
+
 /// A C pointer as the client pointer `Gl` keeps (`None` for NULL).
 fn pointer(p: *const c_void) -> Option<ClientPointer> {
     (!p.is_null()).then(|| ClientPointer::new(Rc::new(RawMemory(p.cast())), 0))
 }
 
-/// The C address a client pointer was made from.
+/// The C address a client pointer was made from; an offset into a buffer object as the
+/// pointer of that value (what `glGetPointerv` answers for it).
 fn address(p: &ClientPointer) -> *mut c_void {
-    p.memory()
-        .as_any()
-        .downcast_ref::<RawMemory>()
-        .map_or(std::ptr::null_mut(), |m| m.0.wrapping_add(p.offset()).cast_mut().cast())
+    match p.memory().as_any().downcast_ref::<RawMemory>() {
+        Some(m) => m.0.wrapping_add(p.offset()).cast_mut().cast(),
+        None => std::ptr::without_provenance_mut(p.offset()),
+    }
 }
 
 entry! {
     /// `glVertexPointer`: `Gl::vertex_pointer`, keeping the pointer.
     unsafe fn glVertexPointer(size: GLint, type_: GLenum, stride: GLsizei, ptr: *const c_void) {
-        with_gl(|gl| gl.vertex_pointer(size, type_, stride, pointer(ptr)))
+        with_gl(|gl| gl.vertex_pointer(size, type_, stride, CPointer(ptr)))
     }
 }
 
 entry! {
     /// `glNormalPointer`: `Gl::normal_pointer`.
     unsafe fn glNormalPointer(type_: GLenum, stride: GLsizei, ptr: *const c_void) {
-        with_gl(|gl| gl.normal_pointer(type_, stride, pointer(ptr)))
+        with_gl(|gl| gl.normal_pointer(type_, stride, CPointer(ptr)))
     }
 }
 
 entry! {
     /// `glColorPointer`: `Gl::color_pointer`.
     unsafe fn glColorPointer(size: GLint, type_: GLenum, stride: GLsizei, ptr: *const c_void) {
-        with_gl(|gl| gl.color_pointer(size, type_, stride, pointer(ptr)))
+        with_gl(|gl| gl.color_pointer(size, type_, stride, CPointer(ptr)))
     }
 }
 
 entry! {
     /// `glSecondaryColorPointer` (GL 1.4): `Gl::secondary_color_pointer`.
     unsafe fn glSecondaryColorPointer(size: GLint, type_: GLenum, stride: GLsizei, ptr: *const c_void) {
-        with_gl(|gl| gl.secondary_color_pointer(size, type_, stride, pointer(ptr)))
+        with_gl(|gl| gl.secondary_color_pointer(size, type_, stride, CPointer(ptr)))
     }
 }
 
 entry! {
     /// `glSecondaryColorPointerEXT`: `glSecondaryColorPointer`.
     unsafe fn glSecondaryColorPointerEXT(size: GLint, type_: GLenum, stride: GLsizei, ptr: *const c_void) {
-        with_gl(|gl| gl.secondary_color_pointer(size, type_, stride, pointer(ptr)))
+        with_gl(|gl| gl.secondary_color_pointer(size, type_, stride, CPointer(ptr)))
     }
 }
 
@@ -101,28 +118,28 @@ entry! {
 entry! {
     /// `glIndexPointer`: `Gl::index_pointer`.
     unsafe fn glIndexPointer(type_: GLenum, stride: GLsizei, ptr: *const c_void) {
-        with_gl(|gl| gl.index_pointer(type_, stride, pointer(ptr)))
+        with_gl(|gl| gl.index_pointer(type_, stride, CPointer(ptr)))
     }
 }
 
 entry! {
     /// `glTexCoordPointer`: `Gl::tex_coord_pointer`.
     unsafe fn glTexCoordPointer(size: GLint, type_: GLenum, stride: GLsizei, ptr: *const c_void) {
-        with_gl(|gl| gl.tex_coord_pointer(size, type_, stride, pointer(ptr)))
+        with_gl(|gl| gl.tex_coord_pointer(size, type_, stride, CPointer(ptr)))
     }
 }
 
 entry! {
     /// `glEdgeFlagPointer`: `Gl::edge_flag_pointer`.
     unsafe fn glEdgeFlagPointer(stride: GLsizei, ptr: *const c_void) {
-        with_gl(|gl| gl.edge_flag_pointer(stride, pointer(ptr)))
+        with_gl(|gl| gl.edge_flag_pointer(stride, CPointer(ptr)))
     }
 }
 
 entry! {
     /// `glInterleavedArrays`: `Gl::interleaved_arrays`.
     unsafe fn glInterleavedArrays(format: GLenum, stride: GLsizei, ptr: *const c_void) {
-        with_gl(|gl| gl.interleaved_arrays(format, stride, pointer(ptr)))
+        with_gl(|gl| gl.interleaved_arrays(format, stride, CPointer(ptr)))
     }
 }
 
@@ -142,7 +159,12 @@ entry! {
     /// `glDrawElements`: `Gl::draw_elements` over the `count` indices at `indices` (read now).
     unsafe fn glDrawElements(mode: GLenum, count: GLsizei, type_: GLenum, indices: *const c_void) {
         let len = Gl::draw_elements_len(count, type_);
-        with_gl(|gl| gl.draw_elements(mode, count, type_, unsafe { bytes(indices, len) }))
+        with_gl(|gl| {
+            if gl.element_array_buffer_binding() != 0 {
+                return gl.draw_elements_offset(mode, count, type_, indices as usize);
+            }
+            gl.draw_elements(mode, count, type_, unsafe { bytes(indices, len) })
+        })
     }
 }
 
@@ -172,7 +194,12 @@ unsafe fn draw_range_elements(
     indices: *const c_void,
 ) {
     let len = Gl::draw_elements_len(count, type_);
-    with_gl(|gl| gl.draw_range_elements(mode, start, end, count, type_, unsafe { bytes(indices, len) }))
+    with_gl(|gl| {
+        if gl.element_array_buffer_binding() != 0 {
+            return gl.draw_range_elements_offset(mode, start, end, count, type_, indices as usize);
+        }
+        gl.draw_range_elements(mode, start, end, count, type_, unsafe { bytes(indices, len) })
+    })
 }
 
 entry! {
@@ -225,6 +252,10 @@ unsafe fn multi_draw_elements(
 ) {
     let n = usize::try_from(primcount).ok();
     let (count, pointers) = unsafe { (array(count, n), array(indices, n)) };
+    let offsets: Vec<usize> = pointers.iter().map(|&p| p as usize).collect();
+    if with_gl(|gl| gl.element_array_buffer_binding()) != 0 {
+        return with_gl(|gl| gl.multi_draw_elements_offset(mode, count, type_, &offsets, primcount));
+    }
     let indices: Vec<&[u8]> =
         pointers.iter().zip(count).map(|(&p, &c)| unsafe { bytes(p, Gl::draw_elements_len(c, type_)) }).collect();
     with_gl(|gl| gl.multi_draw_elements(mode, count, type_, &indices, primcount))

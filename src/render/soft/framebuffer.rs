@@ -27,6 +27,11 @@ pub(super) struct Framebuffer {
     stencil: Vec<u8>,
     /// The accumulation buffer (Mesa's `RGBA_SNORM16`), made at its first use.
     pub accum: Option<Vec<[i16; 4]>>,
+    /// The frame's occlusion query slots: samples that passed the depth and stencil tests
+    /// while each was counting (GL 1.5 §4.1.6; [`crate::gl::Command::Query`]).
+    pub samples: Vec<u64>,
+    /// The slot counting now.
+    pub counting: Option<usize>,
 }
 
 /// One colour write: the fragment's colour and how it meets the buffer's.
@@ -50,6 +55,18 @@ impl Framebuffer {
             depth: vec![1.0; n],
             stencil: vec![0; n],
             accum: None,
+            samples: Vec::new(),
+            counting: None,
+        }
+    }
+
+    /// A fragment passed the depth and stencil tests: the counting query's slot counts it.
+    pub fn count_sample(&mut self) {
+        if let Some(slot) = self.counting {
+            if self.samples.len() <= slot {
+                self.samples.resize(slot + 1, 0);
+            }
+            self.samples[slot] += 1;
         }
     }
 
@@ -218,14 +235,16 @@ impl Framebuffer {
     /// what `glReadPixels` and `glCopyPixels` read.
     pub fn window_image(&self) -> crate::gl::WindowImage {
         let color = self.shown().iter().flatten().copied().collect();
-        crate::gl::WindowImage { width: self.width, height: self.height, color, depth: self.depth.clone() }
+        let samples = self.samples.clone();
+        crate::gl::WindowImage { width: self.width, height: self.height, color, depth: self.depth.clone(), samples }
     }
 
     /// A copy of the colour buffer `bit` names (the front one if the back does not exist) and
     /// the depth buffer.
     pub fn buffer_image(&self, bit: u8) -> crate::gl::WindowImage {
         let color = self.color(bit).iter().flatten().copied().collect();
-        crate::gl::WindowImage { width: self.width, height: self.height, color, depth: self.depth.clone() }
+        let samples = self.samples.clone();
+        crate::gl::WindowImage { width: self.width, height: self.height, color, depth: self.depth.clone(), samples }
     }
 
     /// A copy of the picture as an [`Image`].

@@ -74,8 +74,16 @@ impl Canvas {
 
     /// Draws an assembled list over what the canvas holds (see [`rasterize`]).
     pub fn draw(&mut self, list: &DrawList) {
+        // The query slots are the list's: counted afresh (GL 1.5 §4.1.6).
+        (self.fb.samples, self.fb.counting) = (Vec::new(), None);
         for op in &list.ops {
             match op {
+                Op::Query { slot, begin } => {
+                    self.fb.counting = begin.then_some(*slot);
+                    if self.fb.samples.len() <= *slot {
+                        self.fb.samples.resize(slot + 1, 0);
+                    }
+                }
                 Op::Clear { color, depth, stencil, accum, tests } => {
                     let Some(rect) = self.scissor_rect(tests) else { continue };
                     self.fb.clear(rect, (*color, *depth, *stencil), tests);
@@ -259,6 +267,7 @@ impl Target<'_> {
                 return;
             }
         }
+        self.fb.count_sample();
         let write_depth = self.depth_test.is_some() && self.tests.depth_write;
         let write = ColorWrite { color, blend: self.blend, tests: self.tests };
         self.fb.write(index, z, write_depth, &write);

@@ -3,7 +3,7 @@
 //! `gl_feedback` mode in which the runner prints gleval's own feedback buffer (FORMAT.md).
 
 use super::Args;
-use gleval::gl::{ClientArray, ClientPointer};
+use gleval::gl::{BufferMap, BufferOffset, ClientArray, ClientPointer, PointerArg};
 use gleval::prelude::*;
 
 /// The names these commands use, beyond the runner's table.
@@ -92,7 +92,11 @@ pub fn enum_value(token: &str) -> Option<u32> {
 
 /// interp.c's buffers: the client memory (64 KiB), the selection buffer (pre-filled with 7777).
 pub struct Harness {
-    mem: ClientArray,
+    pub mem: ClientArray,
+    /// `buffer_offsets on`: pointer arguments are offsets into the bound buffers.
+    pub buffer_offsets: bool,
+    /// The last `map_buffer`'s mapping.
+    pub mapped: Option<BufferMap>,
     select: Vec<u32>,
     select_size: usize,
     select_null: bool,
@@ -105,6 +109,8 @@ impl Default for Harness {
     fn default() -> Self {
         Self {
             mem: ClientArray::from_bytes(vec![0; 1 << 16]),
+            buffer_offsets: false,
+            mapped: None,
             select: vec![7777; 1024],
             select_size: 0,
             select_null: false,
@@ -124,8 +130,23 @@ impl Harness {
         bytes[from..].chunks_exact(4).take(n).map(|b| i32::from_ne_bytes([b[0], b[1], b[2], b[3]])).collect()
     }
 
-    fn at(&self, offset: i32) -> Option<ClientPointer> {
-        usize::try_from(offset).ok().map(|o| self.mem.at_byte(o))
+    /// A pointer argument as interp.c's `ptr_at` makes it.
+    fn at(&self, offset: i32) -> Pointer {
+        let offset = usize::try_from(offset).ok();
+        if self.buffer_offsets {
+            Pointer::Offset(BufferOffset(offset.unwrap_or(0)))
+        } else {
+            Pointer::Client(offset.map(|o| self.mem.at_byte(o)))
+        }
+    }
+
+    /// An element draw's index pointer: an offset (`buffer_offsets on`) or client bytes.
+    fn indices(&self, offset: i32) -> Result<usize, Vec<u8>> {
+        if self.buffer_offsets {
+            return Ok(usize::try_from(offset).unwrap_or(0));
+        }
+        let bytes = self.mem.to_vec::<u8>();
+        Err(usize::try_from(offset).map_or(Vec::new(), |o| bytes[o..].to_vec()))
     }
 
     fn write_mem(&self, offset: usize, type_: u32, values: &[f64]) {
@@ -150,8 +171,9 @@ impl Harness {
             (GL_FEEDBACK_BUFFER_POINTER, _) => "feedback+0".into(),
             (GL_SELECTION_BUFFER_POINTER, _) if self.select_set && !self.select_null => "select+0".into(),
             (_, Some(p)) if p.points_into(&self.mem) => format!("mem+{}", p.offset()),
-            (_, Some(_)) => "elsewhere".into(),
-            (_, None) => "null".into(),
+            // An offset into a buffer, printed as the C ABI's pointer of that value is.
+            (_, Some(p)) if p.offset() != 0 => format!("offset+{}", p.offset()),
+            (_, _) => "null".into(),
         }
     }
 
@@ -204,15 +226,18 @@ impl Harness {
             "draw_arrays" => gl.draw_arrays(a.e(), a.int(), a.int()),
             "draw_elements" => {
                 let (mode, count, type_, offset) = (a.e(), a.int(), a.e(), a.int());
-                let bytes = self.mem.to_vec::<u8>();
-                let indices = usize::try_from(offset).map_or(&[][..], |o| &bytes[o..]);
-                gl.draw_elements(mode, count, type_, indices);
+                match self.indices(offset) {
+                    Ok(offset) => gl.draw_elements_offset(mode, count, type_, offset),
+                    Err(indices) => gl.draw_elements(mode, count, type_, &indices),
+                }
             }
             "draw_range_elements" => {
                 let (mode, start, end, count, type_, offset) = (a.e(), a.int(), a.int(), a.int(), a.e(), a.int());
-                let bytes = self.mem.to_vec::<u8>();
-                let indices = usize::try_from(offset).map_or(&[][..], |o| &bytes[o..]);
-                gl.draw_range_elements(mode, start as u32, end as u32, count, type_, indices);
+                let (start, end) = (start as u32, end as u32);
+                match self.indices(offset) {
+                    Ok(offset) => gl.draw_range_elements_offset(mode, start, end, count, type_, offset),
+                    Err(indices) => gl.draw_range_elements(mode, start, end, count, type_, &indices),
+                }
             }
             "multi_draw_arrays" => {
                 let (mode, firsts, counts, primcount) = (a.e(), a.int(), a.int(), a.int());
@@ -226,8 +251,12 @@ impl Harness {
                 let count = self.ints(counts, n);
                 let bytes = self.mem.to_vec::<u8>();
                 let offsets: Vec<usize> = (0..n.min(8)).map(|_| a.int() as usize).collect();
-                let indices: Vec<&[u8]> = offsets.iter().map(|&o| &bytes[o..]).collect();
-                gl.multi_draw_elements(mode, &count, type_, &indices, primcount);
+                if self.buffer_offsets {
+                    gl.multi_draw_elements_offset(mode, &count, type_, &offsets, primcount);
+                } else {
+                    let indices: Vec<&[u8]> = offsets.iter().map(|&o| &bytes[o..]).collect();
+                    gl.multi_draw_elements(mode, &count, type_, &indices, primcount);
+                }
             }
             "get_pointerv" => {
                 let pname = a.e();
@@ -279,7 +308,7 @@ impl Harness {
             "viewport" => gl.viewport(a.int(), a.int(), a.int(), a.int()),
             "depth_range" => gl.depth_range(a.d(), a.d()),
             "matrix_mode" => gl.matrix_mode(a.e()),
-            _ => return false,
+            _ => return self.run_buffers(gl, cmd, a, values),
         }
         true
     }
@@ -348,4 +377,26 @@ fn token_lines(fb: &[f32]) -> Vec<String> {
         lines.push(line);
     }
     lines
+}
+
+/// A pointer argument: client memory, or an offset into a buffer object.
+enum Pointer {
+    Client(Option<ClientPointer>),
+    Offset(BufferOffset),
+}
+
+impl PointerArg for Pointer {
+    fn into_pointer(self) -> Option<ClientPointer> {
+        match self {
+            Pointer::Client(p) => p,
+            Pointer::Offset(o) => o.into_pointer(),
+        }
+    }
+
+    fn buffer_offset(&self) -> usize {
+        match self {
+            Pointer::Client(_) => 0,
+            Pointer::Offset(o) => o.buffer_offset(),
+        }
+    }
 }

@@ -411,6 +411,7 @@ static void run_typed(void)
 
 /* ---------------------------------------------------------------- calls */
 #include "interp_arrays.c"
+#include "interp_buffers.c"
 
 /* Executes one call; query values (if any) go into `vals`. */
 static void run_call(const char *c)
@@ -762,7 +763,7 @@ static void run_call(const char *c)
         glEnable(GL_TEXTURE_GEN_S);
         glEnable(GL_TEXTURE_GEN_T);
         glEnable(GL_TEXTURE_GEN_R);
-    } else if (!run_arrays_call(c) && !run_queries_call(c) && !run_pixel_call(c)) {
+    } else if (!run_arrays_call(c) && !run_buffers_call(c) && !run_queries_objects_call(c) && !run_queries_call(c) && !run_pixel_call(c)) {
         die("unknown call", c);
     }
 }

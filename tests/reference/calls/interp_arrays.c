@@ -15,6 +15,16 @@ static const GLvoid *mem_at(GLint offset)
     return client_mem.b + offset;
 }
 
+/* `buffer_offsets on` (interp_buffers.c): array pointers are offsets into buffer objects. */
+static int buffer_offsets;
+
+/* An array or index pointer argument: client_mem+offset, or the offset itself. */
+static const GLvoid *ptr_at(GLint offset)
+{
+    if (buffer_offsets) return offset < 0 ? NULL : (const GLvoid *)(size_t)offset;
+    return mem_at(offset);
+}
+
 /* `client_mem OFFSET TYPE [values]`: writes the values, cast to TYPE, from byte OFFSET. */
 static void set_client_mem(void)
 {
@@ -55,6 +65,8 @@ static const char *pointer_name(const GLvoid *p)
         snprintf(buf, sizeof buf, "select+%ld", (long)((const GLuint *)p - select_buf));
     else if ((const GLfloat *)p >= fb && (const GLfloat *)p < fb + FB_SIZE)
         snprintf(buf, sizeof buf, "feedback+%ld", (long)((const GLfloat *)p - fb));
+    else if ((size_t)p < sizeof client_mem.b)
+        snprintf(buf, sizeof buf, "offset+%ld", (long)(size_t)p);
     else
         return "elsewhere";
     return buf;
@@ -70,7 +82,7 @@ static int run_arrays_call(const char *c)
         GLint size = arg_int();
         GLenum type = arg_enum();
         GLsizei stride = arg_int();
-        const GLvoid *p = mem_at(arg_int());
+        const GLvoid *p = ptr_at(arg_int());
         if (c[0] == 'v') glVertexPointer(size, type, stride, p);
         else if (c[0] == 'c') glColorPointer(size, type, stride, p);
         else if (c[0] == 's') glSecondaryColorPointer(size, type, stride, p);
@@ -78,17 +90,17 @@ static int run_arrays_call(const char *c)
     } else if (!strcmp(c, "normal_pointer") || !strcmp(c, "index_pointer") || !strcmp(c, "fog_coord_pointer")) {
         GLenum type = arg_enum();
         GLsizei stride = arg_int();
-        const GLvoid *p = mem_at(arg_int());
+        const GLvoid *p = ptr_at(arg_int());
         if (c[0] == 'n') glNormalPointer(type, stride, p);
         else if (c[0] == 'f') glFogCoordPointer(type, stride, p);
         else glIndexPointer(type, stride, p);
     } else if (!strcmp(c, "edge_flag_pointer")) {
         GLsizei stride = arg_int();
-        glEdgeFlagPointer(stride, mem_at(arg_int()));
+        glEdgeFlagPointer(stride, ptr_at(arg_int()));
     } else if (!strcmp(c, "interleaved_arrays")) {
         GLenum format = arg_enum();
         GLsizei stride = arg_int();
-        glInterleavedArrays(format, stride, mem_at(arg_int()));
+        glInterleavedArrays(format, stride, ptr_at(arg_int()));
     } else if (!strcmp(c, "enable_client_state")) {
         glEnableClientState(arg_enum());
     } else if (!strcmp(c, "disable_client_state")) {
@@ -103,14 +115,14 @@ static int run_arrays_call(const char *c)
         GLenum mode = arg_enum();
         GLsizei count = arg_int();
         GLenum type = arg_enum();
-        glDrawElements(mode, count, type, mem_at(arg_int()));
+        glDrawElements(mode, count, type, ptr_at(arg_int()));
     } else if (!strcmp(c, "draw_range_elements")) {
         GLenum mode = arg_enum();
         GLuint start = (GLuint)arg_int();
         GLuint end = (GLuint)arg_int();
         GLsizei count = arg_int();
         GLenum type = arg_enum();
-        glDrawRangeElements(mode, start, end, count, type, mem_at(arg_int()));
+        glDrawRangeElements(mode, start, end, count, type, ptr_at(arg_int()));
     } else if (!strcmp(c, "multi_draw_arrays")) {
         /* multi_draw_arrays MODE FIRSTS COUNTS PRIMCOUNT: the firsts and counts are GLint
          * arrays in client memory at those offsets. */
@@ -126,7 +138,7 @@ static int run_arrays_call(const char *c)
         GLenum type = arg_enum();
         GLsizei n = arg_int();
         const GLvoid *indices[8] = {0};
-        for (GLsizei i = 0; i < n && i < 8; i++) indices[i] = mem_at(arg_int());
+        for (GLsizei i = 0; i < n && i < 8; i++) indices[i] = ptr_at(arg_int());
         glMultiDrawElements(mode, count, type, indices, n);
     } else if (!strcmp(c, "get_pointerv")) {
         GLvoid *p = (GLvoid *)&p;   /* not NULL: shows whether GL wrote it */
