@@ -32,6 +32,7 @@ use super::consts::*;
 use super::lists::ListCommand;
 use super::state_var::{put_flag, row, Kind, StateVar};
 use super::types::*;
+use super::units::MAX_TEXTURE_UNITS;
 use super::variants::GlComponent;
 use super::Gl;
 
@@ -226,6 +227,8 @@ fn secondary_color(type_: GLenum, b: &[u8]) -> f32 {
 struct Element {
     edge_flag: Option<bool>,
     tex_coord: Option<[f32; 4]>,
+    /// Units 1 to 7's coordinates (GL 1.3 §2.8: each unit's array).
+    unit_tex_coords: [Option<[f32; 4]>; MAX_TEXTURE_UNITS - 1],
     color: Option<[f32; 4]>,
     secondary_color: Option<[f32; 4]>,
     normal: Option<[f32; 4]>,
@@ -236,12 +239,24 @@ struct Element {
 /// them.
 #[derive(Clone, Debug, PartialEq)]
 pub(crate) struct VertexArrays {
+    /// The arrays, the texture coordinates' being the client active unit's.
     arrays: [ArrayState; 7],
+    /// The texture coordinate arrays of the other units, by unit (GL 1.3 §2.8): the client
+    /// active unit's entry is unused (its array is in `arrays`).
+    unit_tex: UnitArrays,
+    /// `glClientActiveTexture`'s unit.
+    client_unit: usize,
     /// `glEdgeFlag`'s current value (Mesa keeps it as a float and reports `== 1.0`).
     pub edge_flag: bool,
     /// One entry per `glPushClientAttrib`: the arrays when `GL_CLIENT_VERTEX_ARRAY_BIT` was set.
-    saved: Vec<Option<Box<[ArrayState; 7]>>>,
+    saved: Vec<Option<Box<SavedArrays>>>,
 }
+
+/// Each unit's texture coordinate array.
+type UnitArrays = Box<[ArrayState; MAX_TEXTURE_UNITS]>;
+
+/// What `GL_CLIENT_VERTEX_ARRAY_BIT` saves: the arrays and the client active unit.
+type SavedArrays = ([ArrayState; 7], UnitArrays, usize);
 
 impl Default for VertexArrays {
     fn default() -> Self {
@@ -255,6 +270,8 @@ impl Default for VertexArrays {
                 ArrayState::new(1, GL_UNSIGNED_BYTE),
                 ArrayState::new(3, GL_FLOAT),
             ],
+            unit_tex: Box::new(std::array::from_fn(|_| ArrayState::new(4, GL_FLOAT))),
+            client_unit: 0,
             edge_flag: true,
             saved: Vec::new(),
         }
@@ -278,6 +295,29 @@ impl VertexArrays {
         true
     }
 
+    /// `glClientActiveTexture`'s unit: its texture coordinate array becomes the one the
+    /// pointer, enable and query calls name.
+    pub(crate) fn set_client_unit(&mut self, unit: usize) {
+        let current = Which::TexCoord as usize;
+        std::mem::swap(&mut self.arrays[current], &mut self.unit_tex[self.client_unit]);
+        std::mem::swap(&mut self.arrays[current], &mut self.unit_tex[unit]);
+        self.client_unit = unit;
+    }
+
+    /// The client active unit.
+    pub(crate) fn client_unit(&self) -> usize {
+        self.client_unit
+    }
+
+    /// Unit `unit`'s texture coordinate array.
+    fn tex_array(&self, unit: usize) -> &ArrayState {
+        if unit == self.client_unit {
+            self.get(Which::TexCoord)
+        } else {
+            &self.unit_tex[unit]
+        }
+    }
+
     /// Element `i` of the enabled arrays; `None` when an enabled array cannot be read there.
     fn element(&self, i: i64) -> Option<Element> {
         let on = |w: Which| self.get(w).enabled.then_some(self.get(w));
@@ -285,8 +325,15 @@ impl VertexArrays {
         if let Some(a) = on(Which::EdgeFlag) {
             e.edge_flag = Some(a.fetch(i, plain)?[0] == 1.0);
         }
-        if let Some(a) = on(Which::TexCoord) {
-            e.tex_coord = Some(a.fetch(i, plain)?);
+        for unit in 0..MAX_TEXTURE_UNITS {
+            let a = self.tex_array(unit);
+            if a.enabled {
+                let coords = Some(a.fetch(i, plain)?);
+                match unit {
+                    0 => e.tex_coord = coords,
+                    _ => e.unit_tex_coords[unit - 1] = coords,
+                }
+            }
         }
         if let Some(a) = on(Which::Color) {
             e.color = Some(a.fetch(i, color)?);
@@ -496,6 +543,11 @@ impl Gl {
         if let Some([s, t, r, q]) = e.tex_coord {
             self.tex_coord4f(s, t, r, q);
         }
+        for (unit, coords) in (1..).zip(e.unit_tex_coords) {
+            if let Some([s, t, r, q]) = coords {
+                self.multi_tex_coord4f(GL_TEXTURE0 + unit, s, t, r, q);
+            }
+        }
         if let Some([r, g, b, a]) = e.color {
             self.color4f(r, g, b, a);
         }
@@ -660,14 +712,17 @@ impl Gl {
 
     /// `glPushClientAttrib`'s vertex-array half: saves the arrays when `mask` asks.
     pub(crate) fn push_client_arrays(&mut self, mask: GLbitfield) {
-        let saved = (mask & GL_CLIENT_VERTEX_ARRAY_BIT != 0).then(|| Box::new(self.client.arrays.arrays.clone()));
+        let a = &self.client.arrays;
+        let saved = (mask & GL_CLIENT_VERTEX_ARRAY_BIT != 0)
+            .then(|| Box::new((a.arrays.clone(), a.unit_tex.clone(), a.client_unit)));
         self.client.arrays.saved.push(saved);
     }
 
-    /// `glPopClientAttrib`'s vertex-array half.
+    /// `glPopClientAttrib`'s vertex-array half: every unit's array and the client active unit.
     pub(crate) fn pop_client_arrays(&mut self) {
-        if let Some(Some(arrays)) = self.client.arrays.saved.pop() {
-            self.client.arrays.arrays = *arrays;
+        if let Some(Some(saved)) = self.client.arrays.saved.pop() {
+            let a = &mut self.client.arrays;
+            (a.arrays, a.unit_tex, a.client_unit) = *saved;
         }
     }
 }

@@ -193,6 +193,8 @@ pub enum Call {
     Normal([f32; 3]),
     /// `glTexCoord*` (s, t, r, q).
     TexCoord([f32; 4]),
+    /// `glMultiTexCoord*` of unit 1 to 7 (unit 0's is logged as [`Call::TexCoord`]).
+    MultiTexCoord(u8, [f32; 4]),
     /// `glSecondaryColor*` (r, g, b, 1; a size-4 array's alpha).
     SecondaryColor([f32; 4]),
 }

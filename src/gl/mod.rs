@@ -40,6 +40,7 @@ mod line;
 pub(crate) mod lists;
 mod matrix;
 mod multisample;
+mod multitexture;
 mod offset;
 mod param_variants;
 mod pixel_pack;
@@ -62,6 +63,7 @@ mod stipple;
 mod stipple_query;
 mod texture;
 pub mod types;
+mod units;
 mod variants;
 mod vertex;
 mod viewport;
@@ -224,10 +226,10 @@ pub(crate) struct ServerState {
     pub(super) polygon_stipple: [u32; 32],
     /// The current raster position, where bitmaps and pixels are drawn.
     pub(super) raster_pos: raster_pos::RasterPos,
-    /// Texture objects and unit 0's environment.
+    /// Texture objects, and each unit's bindings and environment.
     pub(super) textures: texture::Textures,
-    /// `glTexGen`'s modes and planes.
-    pub(super) tex_gen: texture::TexGen,
+    /// Each unit's `glTexGen` modes and planes.
+    pub(super) tex_gen: [texture::TexGen; units::MAX_TEXTURE_UNITS],
     /// What Mesa's deferred `glMaterial` leaves of `GL_COLOR_MATERIAL`'s tracking.
     pub(super) color_material_sync: lighting::ColorMaterialSync,
     /// `glHint`'s requests.
@@ -274,7 +276,7 @@ impl ServerState {
             polygon_stipple: [u32::MAX; 32],
             raster_pos: raster_pos::RasterPos::default(),
             textures: texture::Textures::default(),
-            tex_gen: texture::TexGen::default(),
+            tex_gen: [texture::TexGen::default(); units::MAX_TEXTURE_UNITS],
             color_material_sync: lighting::ColorMaterialSync::default(),
             hints: hint::Hints::default(),
             color_buffer: color_buffer::ColorBuffer::default(),

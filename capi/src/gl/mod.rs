@@ -9,6 +9,7 @@ mod immediate;
 mod lighting;
 mod lists;
 mod matrix;
+mod multitexture;
 mod pixel_transfer;
 mod pixels;
 mod queries;
