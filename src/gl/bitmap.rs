@@ -201,6 +201,8 @@ impl Gl {
             t
         });
         let mut state = self.snapshot(texture);
+        // Unit 0 only: the other units' raster coordinates are not drawn with yet.
+        state.more_textures.clear();
         state.fog = None;
         let (w, h) = (self.width(), self.height());
         state.modelview = Mat4::IDENTITY;

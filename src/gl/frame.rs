@@ -78,6 +78,11 @@ pub struct DrawState {
     pub depth_test: Option<GLenum>,
     /// The texture of unit 0 when a target is enabled and its texture complete.
     pub texture: Option<BoundTexture>,
+    /// The textures of units 1 to 7 that draw (a target enabled, the texture complete), in unit
+    /// order, with their units (GL 1.3 §3.8.15: each applies its environment to the previous
+    /// unit's result); empty for a program of one unit. Their vertices' coordinates are in
+    /// [`Frame::unit_tex_coords`].
+    pub more_textures: Vec<(usize, BoundTexture)>,
     /// Blending when `GL_BLEND` is enabled.
     pub blend: Option<super::Blend>,
     /// The alpha test's function and reference when `GL_ALPHA_TEST` is enabled.
@@ -223,7 +228,14 @@ pub struct Frame {
     pub hidden_edges: Vec<usize>,
     /// The `glCopyPixels` calls, executed by the rasterisers where [`Command::CopyPixels`] says.
     pub pixel_copies: Vec<super::PixelCopy>,
+    /// Units 1 to 7's texture coordinates of the vertices (indices in `vertices`, ascending) of
+    /// primitives drawn with [`DrawState::more_textures`]: recorded only there, so that a
+    /// program of one unit records nothing more.
+    pub unit_tex_coords: Vec<(usize, UnitTexCoords)>,
 }
+
+/// A vertex's texture coordinates of units 1 to 7.
+pub type UnitTexCoords = [[f32; 4]; 7];
 
 /// What a `glEvalMesh` grid draws.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -343,6 +355,24 @@ impl Frame {
         self.material_changes.clear();
         self.hidden_edges.clear();
         self.pixel_copies.clear();
+        self.unit_tex_coords.clear();
+    }
+
+    /// Units 1 to 7's coordinates of each vertex of `primitive`; empty when it recorded none
+    /// (drawn with one unit).
+    #[must_use]
+    pub fn unit_tex_coords_of(&self, primitive: &Primitive) -> Vec<UnitTexCoords> {
+        let range = primitive.first..primitive.first + primitive.count;
+        let start = self.unit_tex_coords.partition_point(|(i, _)| *i < range.start);
+        let inside: Vec<_> = self.unit_tex_coords[start..].iter().take_while(|(i, _)| *i < range.end).collect();
+        if inside.is_empty() {
+            return Vec::new();
+        }
+        let mut coords = vec![[[0.0, 0.0, 0.0, 1.0]; 7]; primitive.count];
+        for (i, c) in inside {
+            coords[i - range.start] = *c;
+        }
+        coords
     }
 
     /// For each vertex of `primitive`, whether its edge flag is false; empty when none is (the
@@ -380,6 +410,8 @@ impl Frame {
                     let first = out.vertices.len();
                     let hidden = self.hidden_edges_of(&p);
                     out.hidden_edges.extend(hidden.iter().enumerate().filter(|(_, h)| **h).map(|(k, _)| first + k));
+                    let units = self.unit_tex_coords_of(&p);
+                    out.unit_tex_coords.extend(units.into_iter().enumerate().map(|(k, c)| (first + k, c)));
                     out.push_primitive(p.mode, p.state, self.vertices_of(&p).iter().copied());
                     let primitive = out.primitives.len() - 1;
                     for (vertex, state) in self.material_changes_of(i) {

@@ -79,6 +79,7 @@ pub use fog::Fog;
 pub use fragments::{BufferConfig, FragmentTests, Stencil};
 pub use frame::{
     Accumulation, Call, Command, DrawState, Frame, GridMesh, MaterialChange, MeshMode, MeshVertices, Primitive,
+    UnitTexCoords,
 };
 pub use grid_vertices::GridVertices;
 pub use lighting::{Light, Lighting, Material};
@@ -89,7 +90,7 @@ pub use select::SelectHit;
 pub use texture::{
     texture_source, BoundTexture, Combine, Combiner, TexLevel, TexParams, MAX_3D_TEXTURE_SIZE, MAX_TEXTURE_SIZE,
 };
-pub use texture::{TexGen, TexGenCoord, TexGenState};
+pub use texture::{TexGen, TexGenCoord, TexGenState, MAX_TEXTURE_UNITS};
 pub use variants::GlComponent;
 pub use vertex::Vertex;
 pub use window_read::{WindowImage, WindowReader};
@@ -326,6 +327,9 @@ pub(crate) struct Recorder {
     pub(super) window_reader: window_read::Reader,
     /// A `glDrawElements` is issuing its elements (see [`Primitive::listed_or_indexed`]).
     pub(super) indexed_draw: bool,
+    /// The open primitive draws with units beyond unit 0: its vertices record those units'
+    /// coordinates ([`Frame::unit_tex_coords`]).
+    pub(super) multi_unit: bool,
 }
 
 impl Recorder {
@@ -341,6 +345,7 @@ impl Recorder {
             tessellator: Tessellator::Cpu,
             window_reader: window_read::Reader::default(),
             indexed_draw: false,
+            multi_unit: false,
         }
     }
 }
@@ -443,7 +448,8 @@ impl Gl {
             return i;
         }
         let texture = self.bound_texture();
-        let state = self.snapshot(texture);
+        let mut state = self.snapshot(texture);
+        state.more_textures = self.more_textures();
         self.recorder.frame.states.push(state);
         let i = self.recorder.frame.states.len() - 1;
         self.recorder.state_index = Some(i);
@@ -476,6 +482,7 @@ impl Gl {
             cull_face: self.server.caps.is_on(GL_CULL_FACE).then_some(self.server.polygon.cull_face),
             depth_test: self.server.caps.is_on(GL_DEPTH_TEST).then_some(self.server.depth.func),
             texture,
+            more_textures: Vec::new(),
             blend: self.enabled_blend(),
             alpha_test: self.enabled_alpha_test(),
             fog: self.enabled_fog(),

@@ -624,6 +624,12 @@ impl Gl {
         self.bound_texture_of(0)
     }
 
+    /// Units 1 to 7's textures that draw the next primitive, with their units (see
+    /// [`DrawState::more_textures`](super::DrawState::more_textures)).
+    pub(crate) fn more_textures(&mut self) -> Vec<(usize, BoundTexture)> {
+        (1..MAX_TEXTURE_UNITS).filter_map(|unit| Some((unit, self.bound_texture_of(unit)?))).collect()
+    }
+
     /// The texture unit `unit` draws the next primitive with: the bound object of its enabled
     /// target (`GL_TEXTURE_3D` before `GL_TEXTURE_2D` before `GL_TEXTURE_1D`, GL 1.2 §3.8.15),
     /// if its mipmap chain is complete (§3.8.10; an incomplete texture disables the unit), with
