@@ -277,6 +277,9 @@ pub struct GridMesh {
     pub vertices: MeshVertices,
     /// For [`MeshMode::Triangles`]: three vertex indices per triangle (else empty).
     pub triangles: Vec<u32>,
+    /// Units 1 to 7's coordinates of every vertex: the current ones when the mesh was recorded
+    /// (the evaluators feed unit 0 alone, GL 1.3 §5.1).
+    pub unit_tex_coords: UnitTexCoords,
 }
 
 impl GridMesh {
@@ -421,7 +424,12 @@ impl Frame {
                 Command::Mesh(i) => {
                     let mesh = &self.meshes[i];
                     let grid = mesh.evaluated();
+                    let units = self.states.get(mesh.state).is_some_and(|s| !s.more_textures.is_empty());
                     for (mode, indices) in mesh.primitives() {
+                        if units {
+                            let first = out.vertices.len();
+                            out.unit_tex_coords.extend((0..indices.len()).map(|k| (first + k, mesh.unit_tex_coords)));
+                        }
                         out.push_primitive(mode, mesh.state, indices.iter().map(|&k| grid.vertex(k)));
                     }
                 }

@@ -219,7 +219,12 @@ pub fn assemble_frame(frame: &Frame, gpu_meshes: &[usize]) -> DrawList {
                 let grid = mesh.evaluated();
                 for (mode, indices) in mesh.primitives() {
                     let vertices: Vec<Vertex> = indices.iter().map(|&k| grid.vertex(k)).collect();
-                    out.primitive(mode, &vertices, state);
+                    let units = if state.more_textures.is_empty() {
+                        Vec::new()
+                    } else {
+                        vec![mesh.unit_tex_coords; vertices.len()]
+                    };
+                    out.lit_primitive((mode, false), (&vertices, &units), state, &[], &[]);
                 }
             }
             Command::CopyPixels(index) => {
@@ -289,10 +294,6 @@ impl Assembler {
         let batch = Batch { viewport, depth_test, topology, first: 0, count: 0, fragment, blend, tests };
         self.list.pixel_copies.push(copy.clone());
         self.list.ops.push(Op::CopyPixels { copy: self.list.pixel_copies.len() - 1, batch });
-    }
-
-    fn primitive(&mut self, mode: GLenum, vertices: &[crate::gl::Vertex], state: &DrawState) {
-        self.lit_primitive((mode, false), (vertices, &[]), state, &[], &[]);
     }
 
     /// A primitive whose vertices from `materials[k].0` on are lit with the lighting of

@@ -1041,7 +1041,7 @@ fn wrap_modes_are_mesas_on_both_rasterisers() {
 /// (RGB on unit 0, RGBA on unit 1, luminance on unit 2) over an 8 × 8 quad; modulate then add,
 /// replace then decal, unit 0 disabled, three units, texgen on unit 1, a texture matrix on
 /// unit 1, `GL_COMBINE` on unit 1 reading unit 0's texel (the crossbar). The diagonal within
-/// 2/255. The wgpu rasteriser draws unit 0 alone so far: only the CPU rasteriser is compared.
+/// 2/255. The wgpu renderer hands such a frame to the CPU rasteriser (`gpu/fallback.rs`).
 #[test]
 fn multitexture_is_mesas_on_both_rasterisers() {
     let mesa: [[[u8; 4]; 8]; 7] = [
@@ -1130,7 +1130,7 @@ fn multitexture_is_mesas_on_both_rasterisers() {
         }
         gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, mode as GLint);
     };
-    let mut renderer = None;
+    let mut renderer = optional_renderer();
     for (setup, expected) in mesa.iter().enumerate() {
         let mut gl = Gl::new(8, 8);
         for (k, (format, image)) in images.iter().enumerate() {

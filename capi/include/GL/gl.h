@@ -1536,6 +1536,7 @@ GLAPI void GLAPIENTRY glGetTexGeniv(GLenum coord, GLenum pname, GLint *params);
 #define GL_ARB_texture_env_add 1
 #define GL_EXT_texture_env_add 1
 #define GL_ARB_texture_env_combine 1
+#define GL_ARB_texture_env_crossbar 1
 #define GL_EXT_texture_env_combine 1
 #define GL_ARB_texture_env_dot3 1
 #define GL_COMBINE_ARB 0x8570
