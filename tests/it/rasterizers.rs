@@ -1040,11 +1040,12 @@ fn wrap_modes_are_mesas_on_both_rasterisers() {
 /// (`tests/reference/pixels/multitexture.c` prints these values): three 2 × 2 nearest textures
 /// (RGB on unit 0, RGBA on unit 1, luminance on unit 2) over an 8 × 8 quad; modulate then add,
 /// replace then decal, unit 0 disabled, three units, texgen on unit 1, a texture matrix on
-/// unit 1, `GL_COMBINE` on unit 1 reading unit 0's texel (the crossbar). The diagonal within
-/// 2/255. The wgpu renderer hands such a frame to the CPU rasteriser (`gpu/fallback.rs`).
+/// unit 1, `GL_COMBINE` on unit 1 reading unit 0's texel (the crossbar), `glDrawPixels` with
+/// unit 1 alone (llvmpipe samples it at (0, 0), not at the raster position's coordinates). The
+/// diagonal within 2/255. The wgpu renderer hands such a frame to the CPU rasteriser (`gpu/fallback.rs`).
 #[test]
 fn multitexture_is_mesas_on_both_rasterisers() {
-    let mesa: [[[u8; 4]; 8]; 7] = [
+    let mesa: [[[u8; 4]; 8]; 8] = [
         [
             [120, 90, 140, 128],
             [120, 90, 140, 128],
@@ -1115,6 +1116,7 @@ fn multitexture_is_mesas_on_both_rasterisers() {
             [120, 120, 120, 96],
             [120, 120, 120, 96],
         ],
+        [[20, 60, 100, 255]; 8],
     ];
     let images: [(GLenum, &[u8]); 3] = [
         (GL_RGB, &[200, 40, 40, 40, 200, 40, 40, 40, 200, 240, 240, 240]),
@@ -1173,7 +1175,7 @@ fn multitexture_is_mesas_on_both_rasterisers() {
                 gl.translatef(0.25, 0.0, 0.0);
                 gl.matrix_mode(GL_MODELVIEW);
             }
-            _ => {
+            6 => {
                 unit(&mut gl, GL_TEXTURE0, true, GL_REPLACE);
                 unit(&mut gl, GL_TEXTURE1, true, GL_COMBINE);
                 for (pname, value) in [
@@ -1189,16 +1191,26 @@ fn multitexture_is_mesas_on_both_rasterisers() {
                     gl.tex_envi(GL_TEXTURE_ENV, pname, value as GLint);
                 }
             }
+            _ => {
+                unit(&mut gl, GL_TEXTURE0, false, GL_REPLACE);
+                unit(&mut gl, GL_TEXTURE1, true, GL_MODULATE);
+            }
         }
         gl.color4f(0.5, 0.75, 1.0, 0.5);
-        gl.begin(GL_QUADS);
-        for [x, y] in [[-1.0f32, -1.0], [1.0, -1.0], [1.0, 1.0], [-1.0, 1.0]] {
-            for u in 0..3 {
-                gl.multi_tex_coord2f(GL_TEXTURE0 + u, (x + 1.0) / 2.0, (y + 1.0) / 2.0);
+        if setup == 7 {
+            gl.multi_tex_coord2f(GL_TEXTURE1, 0.75, 0.25);
+            gl.raster_pos2f(-1.0, -1.0);
+            gl.draw_pixels(8, 8, GL_RGBA, GL_UNSIGNED_BYTE, &[255u8; 8 * 8 * 4]);
+        } else {
+            gl.begin(GL_QUADS);
+            for [x, y] in [[-1.0f32, -1.0], [1.0, -1.0], [1.0, 1.0], [-1.0, 1.0]] {
+                for u in 0..3 {
+                    gl.multi_tex_coord2f(GL_TEXTURE0 + u, (x + 1.0) / 2.0, (y + 1.0) / 2.0);
+                }
+                gl.vertex2f(x, y);
             }
-            gl.vertex2f(x, y);
+            gl.end();
         }
-        gl.end();
         assert_eq!(gl.get_error(), GL_NO_ERROR, "set-up {setup}");
         let frame = gl.take_frame();
         assert_diagonal_is_mesas(&mut renderer, &frame, expected, 2, &format!("set-up {setup}"));

@@ -6,7 +6,8 @@
  * disabled (skipped); three units (modulate, add, blend); texgen on unit 1 (object linear, s
  * reversed);
  * a texture matrix on unit 1; GL_COMBINE on unit 1 interpolating between unit 0's texel
- * (GL_TEXTURE0, ARB_texture_env_crossbar) and its own. Printed: the diagonal pixels (i, i), i = 0..7, per set-up, the
+ * (GL_TEXTURE0, ARB_texture_env_crossbar) and its own; glDrawPixels textured by unit 1 (unit 0
+ * disabled), whose raster coordinates (0.75, 0.25) llvmpipe does not use: it samples texel 0, 0. Printed: the diagonal pixels (i, i), i = 0..7, per set-up, the
  * values of `multitexture_is_mesas_on_both_rasterisers` in tests/it/rasterizers.rs.
  *   cc multitexture.c -lOSMesa -lGL && GALLIUM_DRIVER=llvmpipe ./a.out */
 #define GL_GLEXT_PROTOTYPES
@@ -75,7 +76,7 @@ int main(void)
     texture(GL_TEXTURE2, 3, GL_LUMINANCE, image_c);
     glActiveTexture(GL_TEXTURE2);
     glTexEnvfv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, env);
-    for (int setup = 0; setup < 7; setup++) {
+    for (int setup = 0; setup < 8; setup++) {
         glClearColor(0, 0, 0, 0);
         glClear(GL_COLOR_BUFFER_BIT);
         unit(GL_TEXTURE2, setup == 3, GL_BLEND);
@@ -107,7 +108,7 @@ int main(void)
             glTranslatef(0.25f, 0.0f, 0.0f);
             glMatrixMode(GL_MODELVIEW);
             break;
-        default:
+        case 6:
             unit(GL_TEXTURE0, 1, GL_REPLACE);
             unit(GL_TEXTURE1, 1, GL_COMBINE);
             glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_RGB, GL_INTERPOLATE);
@@ -119,8 +120,19 @@ int main(void)
             glTexEnvi(GL_TEXTURE_ENV, GL_SOURCE0_ALPHA, GL_PREVIOUS);
             glTexEnvi(GL_TEXTURE_ENV, GL_SOURCE1_ALPHA, GL_TEXTURE);
             break;
+        default: break;
         }
-        quad();
+        if (setup == 7) {
+            static unsigned char white[8 * 8 * 4];
+            for (unsigned k = 0; k < sizeof white; k++) white[k] = 255;
+            unit(GL_TEXTURE0, 0, GL_REPLACE);
+            unit(GL_TEXTURE1, 1, GL_MODULATE);
+            glMultiTexCoord2f(GL_TEXTURE1, 0.75f, 0.25f);
+            glRasterPos2f(-1, -1);
+            glDrawPixels(8, 8, GL_RGBA, GL_UNSIGNED_BYTE, white);
+        } else {
+            quad();
+        }
         glFinish();
         print_diagonal(setup);
     }
