@@ -90,7 +90,7 @@ pub use select::SelectHit;
 pub use texture::{
     texture_source, BoundTexture, Combine, Combiner, TexLevel, TexParams, MAX_3D_TEXTURE_SIZE, MAX_TEXTURE_SIZE,
 };
-pub use texture::{TexGen, TexGenCoord, TexGenState, MAX_TEXTURE_UNITS};
+pub use texture::{TexGen, TexGenCoord, TexGenState, MAX_COMBINED_TEXTURE_IMAGE_UNITS, MAX_TEXTURE_UNITS};
 pub use variants::GlComponent;
 pub use vertex::Vertex;
 pub use window_read::{WindowImage, WindowReader};
