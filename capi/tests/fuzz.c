@@ -393,6 +393,21 @@ static void combine_call(void) {
     glTexParameteri(pick(2) ? GL_TEXTURE_2D : GL_TEXTURE_1D, GL_TEXTURE_WRAP_S + pick(2), (GLint)ANY(wraps));
 }
 
+/* GL 1.3's units: any unit (valid, beyond the fixed-function ones, beyond every one), each
+ * unit's coordinates in several forms, the client unit, and state set on whichever is active. */
+static void multitexture_call(void) {
+    GLenum unit = GL_TEXTURE0 + (GLenum)pick(12) - (pick(8) ? 0 : 2) + (pick(16) ? 0 : 190);
+    switch (pick(6)) {
+    case 0: glActiveTexture(unit); break;
+    case 1: glClientActiveTextureARB(unit); break;
+    case 2: glMultiTexCoord4f(unit, f(), f(), f(), f()); glMultiTexCoord2fv(unit, pick(6) ? fp() : NULL); break;
+    case 3: glMultiTexCoord3dARB(unit, f(), f(), f()); glMultiTexCoord1s(unit, (GLshort)pick(100)); break;
+    case 4: glEnable(pick(2) ? GL_TEXTURE_2D : GL_TEXTURE_GEN_S + pick(4)); glTexGeni(GL_S + pick(5), GL_TEXTURE_GEN_MODE, GL_OBJECT_LINEAR); break;
+    default: glMatrixMode(GL_TEXTURE); glTranslatef(f(), f(), f()); if (pick(2)) glPushMatrix(); else glPopMatrix();
+             glMatrixMode(GL_MODELVIEW); glBindTexture(GL_TEXTURE_2D, (GLuint)pick(4)); break;
+    }
+}
+
 static void texture_3d_call(void) {
     GLint x = ANY(side3), y = ANY(side3), z = ANY(side3), w = ANY(side3), h = ANY(side3), d = ANY(side3);
     switch (pick(4)) {
@@ -436,7 +451,7 @@ static void imaging_call(void) {
 static void pixel_call(void) {
     GLint x = ANY(small) - 8, y = ANY(small) - 8, w = ANY(small), h = ANY(small);
     switch (pick(9)) {
-    case 7: if (pick(2)) texture_3d_call(); else combine_call(); break;
+    case 7: if (pick(2)) texture_3d_call(); else if (pick(2)) combine_call(); else multitexture_call(); break;
     case 0: glPixelZoom(f(), f()); glPixelTransferf(ANY(pixel_pnames), f()); glPixelTransferi(ANY(pixel_pnames), ANY(small)); break;
     case 1: glPixelMapfv(ANY(pixel_maps), ANY(map_sizes), pick(6) ? buf : NULL);
             glPixelMapuiv(ANY(pixel_maps), ANY(map_sizes), pick(6) ? (GLuint *)buf : NULL);

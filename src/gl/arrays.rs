@@ -39,6 +39,7 @@ use super::consts::*;
 use super::lists::ListCommand;
 use super::state_var::{put_flag, row, Kind, StateVar};
 use super::types::*;
+use super::units::MAX_TEXTURE_UNITS;
 use super::variants::GlComponent;
 use super::Gl;
 use std::any::Any;
@@ -269,6 +270,8 @@ fn secondary_color(type_: GLenum, b: &[u8]) -> f32 {
 struct Element {
     edge_flag: Option<bool>,
     tex_coord: Option<[f32; 4]>,
+    /// Units 1 to 7's coordinates (GL 1.3 §2.8: each unit's array).
+    unit_tex_coords: [Option<[f32; 4]>; MAX_TEXTURE_UNITS - 1],
     color: Option<[f32; 4]>,
     secondary_color: Option<[f32; 4]>,
     fog_coord: Option<f32>,
@@ -276,11 +279,14 @@ struct Element {
     vertex: Option<[f32; 4]>,
 }
 
-/// What `GL_CLIENT_VERTEX_ARRAY_BIT` saves: the arrays and the two buffer bindings (GL 1.5
-/// table 6.8, as Mesa's `copy_array_attrib`).
+/// What `GL_CLIENT_VERTEX_ARRAY_BIT` saves: the arrays (every unit's texture coordinates), the
+/// client active unit and the two buffer bindings (GL 1.5 table 6.8, as Mesa's
+/// `copy_array_attrib`).
 #[derive(Clone, Debug, PartialEq)]
 struct SavedArrays {
     arrays: [ArrayState; ARRAYS],
+    unit_tex: UnitArrays,
+    client_unit: usize,
     array_buffer: Option<Rc<BufferObject>>,
     element_buffer: Option<Rc<BufferObject>>,
 }
@@ -289,7 +295,13 @@ struct SavedArrays {
 /// `glPushClientAttrib` saved of them.
 #[derive(Clone, Debug, PartialEq)]
 pub(crate) struct VertexArrays {
+    /// The arrays, the texture coordinates' being the client active unit's.
     arrays: [ArrayState; ARRAYS],
+    /// The texture coordinate arrays of the other units, by unit (GL 1.3 §2.8): the client
+    /// active unit's entry is unused (its array is in `arrays`).
+    unit_tex: UnitArrays,
+    /// `glClientActiveTexture`'s unit.
+    client_unit: usize,
     /// `glEdgeFlag`'s current value (Mesa keeps it as a float and reports `== 1.0`).
     pub edge_flag: bool,
     /// `GL_ARRAY_BUFFER`'s buffer: the one the pointer calls take offsets into.
@@ -299,6 +311,9 @@ pub(crate) struct VertexArrays {
     /// One entry per `glPushClientAttrib`: the arrays when `GL_CLIENT_VERTEX_ARRAY_BIT` was set.
     saved: Vec<Option<Box<SavedArrays>>>,
 }
+
+/// Each unit's texture coordinate array.
+type UnitArrays = Box<[ArrayState; MAX_TEXTURE_UNITS]>;
 
 impl Default for VertexArrays {
     fn default() -> Self {
@@ -313,6 +328,8 @@ impl Default for VertexArrays {
                 ArrayState::new(3, GL_FLOAT),
                 ArrayState::new(1, GL_FLOAT),
             ],
+            unit_tex: Box::new(std::array::from_fn(|_| ArrayState::new(4, GL_FLOAT))),
+            client_unit: 0,
             edge_flag: true,
             array_buffer: None,
             element_buffer: None,
@@ -348,10 +365,33 @@ impl VertexArrays {
         if is_it(&self.element_buffer) {
             self.element_buffer = None;
         }
-        for array in self.arrays.iter_mut().filter(|a| is_it(&a.buffer)) {
+        for array in self.arrays.iter_mut().chain(self.unit_tex.iter_mut()).filter(|a| is_it(&a.buffer)) {
             array.buffer = None;
             let offset = array.pointer.as_ref().map_or(0, ClientPointer::offset);
             array.pointer = Some(ClientPointer::new(Rc::new(NoMemory), offset));
+        }
+    }
+
+    /// `glClientActiveTexture`'s unit: its texture coordinate array becomes the one the
+    /// pointer, enable and query calls name.
+    pub(crate) fn set_client_unit(&mut self, unit: usize) {
+        let current = Which::TexCoord as usize;
+        std::mem::swap(&mut self.arrays[current], &mut self.unit_tex[self.client_unit]);
+        std::mem::swap(&mut self.arrays[current], &mut self.unit_tex[unit]);
+        self.client_unit = unit;
+    }
+
+    /// The client active unit.
+    pub(crate) fn client_unit(&self) -> usize {
+        self.client_unit
+    }
+
+    /// Unit `unit`'s texture coordinate array.
+    fn tex_array(&self, unit: usize) -> &ArrayState {
+        if unit == self.client_unit {
+            self.get(Which::TexCoord)
+        } else {
+            &self.unit_tex[unit]
         }
     }
 
@@ -362,8 +402,15 @@ impl VertexArrays {
         if let Some(a) = on(Which::EdgeFlag) {
             e.edge_flag = Some(a.fetch(i, plain)?[0] == 1.0);
         }
-        if let Some(a) = on(Which::TexCoord) {
-            e.tex_coord = Some(a.fetch(i, plain)?);
+        for unit in 0..MAX_TEXTURE_UNITS {
+            let a = self.tex_array(unit);
+            if a.enabled {
+                let coords = Some(a.fetch(i, plain)?);
+                match unit {
+                    0 => e.tex_coord = coords,
+                    _ => e.unit_tex_coords[unit - 1] = coords,
+                }
+            }
         }
         if let Some(a) = on(Which::Color) {
             e.color = Some(a.fetch(i, color)?);
@@ -627,6 +674,11 @@ impl Gl {
         if let Some([s, t, r, q]) = e.tex_coord {
             self.tex_coord4f(s, t, r, q);
         }
+        for (unit, coords) in (1..).zip(e.unit_tex_coords) {
+            if let Some([s, t, r, q]) = coords {
+                self.multi_tex_coord4f(GL_TEXTURE0 + unit, s, t, r, q);
+            }
+        }
         if let Some([r, g, b, a]) = e.color {
             self.color4f(r, g, b, a);
         }
@@ -843,6 +895,8 @@ impl Gl {
         let saved = (mask & GL_CLIENT_VERTEX_ARRAY_BIT != 0).then(|| {
             Box::new(SavedArrays {
                 arrays: a.arrays.clone(),
+                unit_tex: a.unit_tex.clone(),
+                client_unit: a.client_unit,
                 array_buffer: a.array_buffer.clone(),
                 element_buffer: a.element_buffer.clone(),
             })
@@ -850,11 +904,12 @@ impl Gl {
         self.client.arrays.saved.push(saved);
     }
 
-    /// `glPopClientAttrib`'s vertex-array half.
+    /// `glPopClientAttrib`'s vertex-array half: every unit's array and the client active unit.
     pub(crate) fn pop_client_arrays(&mut self) {
         if let Some(Some(saved)) = self.client.arrays.saved.pop() {
             let a = &mut self.client.arrays;
-            (a.arrays, a.array_buffer, a.element_buffer) = (saved.arrays, saved.array_buffer, saved.element_buffer);
+            (a.arrays, a.unit_tex, a.client_unit) = (saved.arrays, saved.unit_tex, saved.client_unit);
+            (a.array_buffer, a.element_buffer) = (saved.array_buffer, saved.element_buffer);
         }
     }
 }

@@ -47,15 +47,12 @@ const TRANSFORM_ENABLES: &[GLenum] = &[
     GL_CLIP_PLANE5 + 1,
     GL_CLIP_PLANE5 + 2,
 ];
-const TEXTURE_ENABLES: &[GLenum] = &[
-    GL_TEXTURE_1D,
-    GL_TEXTURE_2D,
-    GL_TEXTURE_3D,
-    GL_TEXTURE_GEN_S,
-    GL_TEXTURE_GEN_T,
-    GL_TEXTURE_GEN_R,
-    GL_TEXTURE_GEN_Q,
-];
+/// Every unit's targets and coordinate generation (GL 1.3: the texture group and the enable
+/// group save them for each unit, as Mesa's `attrib.c` does).
+fn texture_enables() -> impl Iterator<Item = GLenum> {
+    (0..super::units::MAX_TEXTURE_UNITS)
+        .flat_map(|unit| super::units::UNIT_ENABLES.iter().map(move |&cap| super::units::unit_cap(cap, unit)))
+}
 
 /// What one `glPushAttrib` saved: the mask, and every group's values (restored by the mask).
 #[derive(Clone, Debug)]
@@ -96,7 +93,7 @@ pub(crate) struct AttribStack {
 
 /// The enables the groups of `mask` save (`GL_ENABLE_BIT`: every capability).
 fn enables_of(mask: GLbitfield) -> Vec<GLenum> {
-    let groups: [(GLbitfield, &[GLenum]); 12] = [
+    let groups: [(GLbitfield, &[GLenum]); 11] = [
         (GL_POINT_BIT, super::point::POINT_ENABLES),
         (GL_LINE_BIT, super::line::LINE_ENABLES),
         (GL_POLYGON_BIT, super::polygon::POLYGON_ENABLES),
@@ -105,7 +102,6 @@ fn enables_of(mask: GLbitfield) -> Vec<GLenum> {
         (GL_DEPTH_BUFFER_BIT, super::depth::DEPTH_ENABLES),
         (GL_TRANSFORM_BIT, TRANSFORM_ENABLES),
         (GL_COLOR_BUFFER_BIT, super::color_buffer::COLOR_BUFFER_ENABLES),
-        (GL_TEXTURE_BIT, TEXTURE_ENABLES),
         (GL_STENCIL_BUFFER_BIT, super::stencil::STENCIL_ENABLES),
         (GL_SCISSOR_BIT, super::scissor::SCISSOR_ENABLES),
         (GL_MULTISAMPLE_BIT, super::multisample::MULTISAMPLE_ENABLES),
@@ -115,6 +111,9 @@ fn enables_of(mask: GLbitfield) -> Vec<GLenum> {
         groups.iter().filter(|(bit, _)| all || mask & bit != 0).flat_map(|(_, caps)| caps.iter().copied()).collect();
     if all {
         caps.extend(super::enable::KNOWN.iter().copied().filter(|c| !super::enable::UNSAVED.contains(c)));
+    }
+    if all || mask & GL_TEXTURE_BIT != 0 {
+        caps.extend(texture_enables());
     }
     caps.sort_unstable();
     caps.dedup();

@@ -13,6 +13,7 @@ use super::frame::{Command, Primitive};
 use super::lists::ListCommand;
 use super::pixel_unpack::{format_and_type_error, unpack_bitmap, unpack_image};
 use super::pixel_zoom::zoomed_pixels;
+use super::texture::BoundTexture;
 use super::types::*;
 use super::vertex::Vertex;
 use super::Gl;
@@ -177,6 +178,10 @@ impl Gl {
             return;
         }
         let state = self.window_state();
+        if !self.recorder.frame.states[state].more_textures.is_empty() {
+            let units = [[0.0, 0.0, 0.0, 1.0]; 7];
+            self.recorder.frame.unit_tex_coords.extend((first..first + count).map(|i| (i, units)));
+        }
         self.recorder.frame.primitives.push(Primitive {
             mode: GL_POINTS,
             first,
@@ -201,6 +206,14 @@ impl Gl {
             t
         });
         let mut state = self.snapshot(texture);
+        // The other units texture them too, at (0, 0, 0, 1) rather than at the raster
+        // position's coordinates: what llvmpipe draws (measured on Mesa 22.3, set-up 7 of
+        // tests/reference/pixels/multitexture.c: unit 1's (0.75, 0.25) samples the texel at 0, 0).
+        state.more_textures = self
+            .more_textures()
+            .into_iter()
+            .map(|(unit, t)| (unit, BoundTexture { matrix: Mat4::IDENTITY, generate: None, ..t }))
+            .collect();
         state.fog = None;
         let (w, h) = (self.width(), self.height());
         state.modelview = Mat4::IDENTITY;

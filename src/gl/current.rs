@@ -11,7 +11,10 @@ use super::state_var::{put, row, Kind, StateVar};
 pub(crate) struct Current {
     pub color: [f32; 4],
     pub normal: [f32; 3],
+    /// Unit 0's texture coordinates.
     pub tex_coord: [f32; 4],
+    /// Units 1 to 7's (GL 1.3 §2.7: each unit has its current texture coordinates).
+    pub unit_tex_coords: [[f32; 4]; super::units::MAX_TEXTURE_UNITS - 1],
     /// GL 1.4's secondary colour: (r, g, b, 1) (a size-4 array gives the alpha), initially
     /// (0, 0, 0, 1) as Mesa answers.
     pub secondary_color: [f32; 4],
@@ -25,8 +28,20 @@ impl Default for Current {
             color: [1.0; 4],
             normal: [0.0, 0.0, 1.0],
             tex_coord: [0.0, 0.0, 0.0, 1.0],
+            unit_tex_coords: [[0.0, 0.0, 0.0, 1.0]; super::units::MAX_TEXTURE_UNITS - 1],
             secondary_color: [0.0, 0.0, 0.0, 1.0],
             fog_coord: 0.0,
+        }
+    }
+}
+
+impl Current {
+    /// Unit `unit`'s texture coordinates (a unit beyond the fixed-function ones: unit 0's, never
+    /// asked for, since the queries refuse it).
+    pub(crate) fn tex_coord_of(&self, unit: usize) -> [f32; 4] {
+        match unit {
+            1..=7 => self.unit_tex_coords[unit - 1],
+            _ => self.tex_coord,
         }
     }
 }
@@ -34,7 +49,7 @@ impl Default for Current {
 /// The group's `glGet` rows.
 pub(crate) static GET_ROWS: &[StateVar] = &[
     row(GL_CURRENT_COLOR, 4, Kind::Normalized, |gl, o| put(o, &gl.server.current.color)),
-    row(GL_CURRENT_TEXTURE_COORDS, 4, Kind::Float, |gl, o| put(o, &gl.server.current.tex_coord)),
+    row(GL_CURRENT_TEXTURE_COORDS, 4, Kind::Float, |gl, o| put(o, &gl.server.current.tex_coord_of(gl.active_unit()))),
     row(GL_CURRENT_NORMAL, 3, Kind::Normalized, |gl, o| put(o, &gl.server.current.normal)),
     row(GL_CURRENT_SECONDARY_COLOR, 4, Kind::Normalized, |gl, o| put(o, &gl.server.current.secondary_color)),
     row(GL_CURRENT_FOG_COORD, 1, Kind::Float, |gl, o| o[0] = gl.server.current.fog_coord.into()),

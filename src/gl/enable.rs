@@ -3,6 +3,7 @@
 use super::consts::*;
 use super::lists::ListCommand;
 use super::types::*;
+use super::units::{unit_cap, MAX_TEXTURE_UNITS, UNIT_ENABLES};
 use super::Gl;
 use std::collections::BTreeSet;
 
@@ -112,6 +113,9 @@ impl Gl {
             on
         } else if let Some(on) = self.client.arrays.is_enabled(cap) {
             on
+        } else if UNIT_ENABLES.contains(&cap) {
+            let Some(key) = self.active_unit_cap(cap) else { return GL_FALSE };
+            self.server.caps.is_on(key)
         } else if Caps::known(cap) {
             self.server.caps.is_on(cap)
         } else {
@@ -135,7 +139,12 @@ impl Gl {
         if self.server.eval.set_enabled(cap, on) || self.client.arrays.set_enabled(cap, on) {
             return;
         }
-        if Caps::known(cap) {
+        if UNIT_ENABLES.contains(&cap) {
+            if let Some(key) = self.active_unit_cap(cap) {
+                self.server.caps.set(key, on);
+                self.touch_state();
+            }
+        } else if Caps::known(cap) {
             let was_on = self.server.caps.is_on(cap);
             self.server.caps.set(cap, on);
             self.touch_state();
@@ -145,6 +154,26 @@ impl Gl {
         } else {
             self.set_error(GL_INVALID_ENUM);
         }
+    }
+
+    /// Where the active unit keeps `cap`, one of [`UNIT_ENABLES`]. A unit beyond the
+    /// fixed-function ones has none: Mesa ignores its targets' enables and answers them false,
+    /// and its coordinate generation's are `GL_INVALID_OPERATION` (measured).
+    fn active_unit_cap(&mut self, cap: GLenum) -> Option<GLenum> {
+        let unit = self.active_unit();
+        if unit < MAX_TEXTURE_UNITS {
+            return Some(unit_cap(cap, unit));
+        }
+        if !matches!(cap, GL_TEXTURE_1D | GL_TEXTURE_2D | GL_TEXTURE_3D) {
+            self.set_error(GL_INVALID_OPERATION);
+        }
+        None
+    }
+
+    /// Whether the active unit's enable `cap` (one of [`UNIT_ENABLES`]) is on, for `glGet`.
+    pub(crate) fn active_unit_enabled(&self, cap: GLenum) -> bool {
+        let unit = self.active_unit();
+        unit < MAX_TEXTURE_UNITS && self.server.caps.is_on(unit_cap(cap, unit))
     }
 
     /// Whether `cap` is a capability `glIsEnabled` takes (evaluator maps included).

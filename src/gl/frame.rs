@@ -81,6 +81,11 @@ pub struct DrawState {
     pub depth_test: Option<GLenum>,
     /// The texture of unit 0 when a target is enabled and its texture complete.
     pub texture: Option<BoundTexture>,
+    /// The textures of units 1 to 7 that draw (a target enabled, the texture complete), in unit
+    /// order, with their units (GL 1.3 §3.8.15: each applies its environment to the previous
+    /// unit's result); empty for a program of one unit. Their vertices' coordinates are in
+    /// [`Frame::unit_tex_coords`].
+    pub more_textures: Vec<(usize, BoundTexture)>,
     /// Blending when `GL_BLEND` is enabled.
     pub blend: Option<super::Blend>,
     /// The alpha test's function and reference when `GL_ALPHA_TEST` is enabled.
@@ -205,6 +210,8 @@ pub enum Call {
     Normal([f32; 3]),
     /// `glTexCoord*` (s, t, r, q).
     TexCoord([f32; 4]),
+    /// `glMultiTexCoord*` of unit 1 to 7 (unit 0's is logged as [`Call::TexCoord`]).
+    MultiTexCoord(u8, [f32; 4]),
     /// `glSecondaryColor*` (r, g, b, 1; a size-4 array's alpha).
     SecondaryColor([f32; 4]),
     /// `glFogCoord*`.
@@ -235,7 +242,14 @@ pub struct Frame {
     pub hidden_edges: Vec<usize>,
     /// The `glCopyPixels` calls, executed by the rasterisers where [`Command::CopyPixels`] says.
     pub pixel_copies: Vec<super::PixelCopy>,
+    /// Units 1 to 7's texture coordinates of the vertices (indices in `vertices`, ascending) of
+    /// primitives drawn with [`DrawState::more_textures`]: recorded only there, so that a
+    /// program of one unit records nothing more.
+    pub unit_tex_coords: Vec<(usize, UnitTexCoords)>,
 }
+
+/// A vertex's texture coordinates of units 1 to 7.
+pub type UnitTexCoords = [[f32; 4]; 7];
 
 /// What a `glEvalMesh` grid draws.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -277,6 +291,9 @@ pub struct GridMesh {
     pub vertices: MeshVertices,
     /// For [`MeshMode::Triangles`]: three vertex indices per triangle (else empty).
     pub triangles: Vec<u32>,
+    /// Units 1 to 7's coordinates of every vertex: the current ones when the mesh was recorded
+    /// (the evaluators feed unit 0 alone, GL 1.3 §5.1).
+    pub unit_tex_coords: UnitTexCoords,
 }
 
 impl GridMesh {
@@ -355,6 +372,24 @@ impl Frame {
         self.material_changes.clear();
         self.hidden_edges.clear();
         self.pixel_copies.clear();
+        self.unit_tex_coords.clear();
+    }
+
+    /// Units 1 to 7's coordinates of each vertex of `primitive`; empty when it recorded none
+    /// (drawn with one unit).
+    #[must_use]
+    pub fn unit_tex_coords_of(&self, primitive: &Primitive) -> Vec<UnitTexCoords> {
+        let range = primitive.first..primitive.first + primitive.count;
+        let start = self.unit_tex_coords.partition_point(|(i, _)| *i < range.start);
+        let inside: Vec<_> = self.unit_tex_coords[start..].iter().take_while(|(i, _)| *i < range.end).collect();
+        if inside.is_empty() {
+            return Vec::new();
+        }
+        let mut coords = vec![[[0.0, 0.0, 0.0, 1.0]; 7]; primitive.count];
+        for (i, c) in inside {
+            coords[i - range.start] = *c;
+        }
+        coords
     }
 
     /// For each vertex of `primitive`, whether its edge flag is false; empty when none is (the
@@ -394,6 +429,8 @@ impl Frame {
                     let first = out.vertices.len();
                     let hidden = self.hidden_edges_of(&p);
                     out.hidden_edges.extend(hidden.iter().enumerate().filter(|(_, h)| **h).map(|(k, _)| first + k));
+                    let units = self.unit_tex_coords_of(&p);
+                    out.unit_tex_coords.extend(units.into_iter().enumerate().map(|(k, c)| (first + k, c)));
                     out.push_primitive(p.mode, p.state, self.vertices_of(&p).iter().copied());
                     let primitive = out.primitives.len() - 1;
                     for (vertex, state) in self.material_changes_of(i) {
@@ -403,7 +440,12 @@ impl Frame {
                 Command::Mesh(i) => {
                     let mesh = &self.meshes[i];
                     let grid = mesh.evaluated();
+                    let units = self.states.get(mesh.state).is_some_and(|s| !s.more_textures.is_empty());
                     for (mode, indices) in mesh.primitives() {
+                        if units {
+                            let first = out.vertices.len();
+                            out.unit_tex_coords.extend((0..indices.len()).map(|k| (first + k, mesh.unit_tex_coords)));
+                        }
                         out.push_primitive(mode, mesh.state, indices.iter().map(|&k| grid.vertex(k)));
                     }
                 }

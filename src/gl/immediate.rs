@@ -45,6 +45,7 @@ impl Gl {
         self.color_material_begin();
         let first = self.recorder.frame.vertices.len();
         let state = self.current_state_index();
+        self.recorder.multi_unit = !self.recorder.frame.states[state].more_textures.is_empty();
         let listed_or_indexed = self.recorder.indexed_draw || self.lists_executing();
         self.recorder.frame.primitives.push(Primitive { mode, first, count: 0, state, listed_or_indexed });
         let index = self.recorder.frame.primitives.len() - 1;
@@ -58,6 +59,10 @@ impl Gl {
         if let Some(p) = self.recorder.open_primitive {
             if !self.edge_flag_value() {
                 self.recorder.frame.hidden_edges.push(self.recorder.frame.vertices.len());
+            }
+            if self.recorder.multi_unit {
+                let index = self.recorder.frame.vertices.len();
+                self.recorder.frame.unit_tex_coords.push((index, self.server.current.unit_tex_coords));
             }
             self.recorder.frame.vertices.push(v);
             self.recorder.frame.primitives[p].count += 1;

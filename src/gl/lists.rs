@@ -384,6 +384,9 @@ impl Gl {
             C::Immediate(Call::Color([r, g, b, a])) => self.color4f(*r, *g, *b, *a),
             C::Immediate(Call::Normal([x, y, z])) => self.normal3f(*x, *y, *z),
             C::Immediate(Call::TexCoord([s, t, r, q])) => self.tex_coord4f(*s, *t, *r, *q),
+            C::Immediate(Call::MultiTexCoord(unit, [s, t, r, q])) => {
+                self.multi_tex_coord4f(GL_TEXTURE0 + GLenum::from(*unit), *s, *t, *r, *q);
+            }
             C::Immediate(Call::SecondaryColor(rgba)) => self.secondary_color(*rgba),
             C::Immediate(Call::FogCoord(c)) => self.fog_coordf(*c),
             C::Enable(cap) => self.enable(*cap),

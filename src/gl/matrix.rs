@@ -13,16 +13,23 @@ use glam::{Mat4, Vec3, Vec4};
 /// Mesa's stack depths (`config.h`): MAX_MODELVIEW_STACK_DEPTH 32, projection 32, texture 10.
 pub(crate) const DEPTHS: [usize; 3] = [32, 32, 10];
 
-/// The three matrix stacks; the top of each is its last element.
+/// The stacks: modelview, projection, one texture stack per unit (GL 1.3 §2.10.2), and one
+/// that `GL_TEXTURE` reaches from a unit beyond the fixed-function ones, where Mesa raises no
+/// error and changes no unit's matrix (measured).
+const STACKS: usize = 3 + super::units::MAX_TEXTURE_UNITS;
+
+/// The matrix stacks; the top of each is its last element.
 #[derive(Clone, Debug)]
 pub(crate) struct MatrixStacks {
-    stacks: [Vec<Mat4>; 3],
+    stacks: [Vec<Mat4>; STACKS],
     mode: usize,
+    /// The active texture unit, whose stack `GL_TEXTURE` names.
+    unit: usize,
 }
 
 impl Default for MatrixStacks {
     fn default() -> Self {
-        Self { stacks: [vec![Mat4::IDENTITY], vec![Mat4::IDENTITY], vec![Mat4::IDENTITY]], mode: 0 }
+        Self { stacks: std::array::from_fn(|_| vec![Mat4::IDENTITY]), mode: 0, unit: 0 }
     }
 }
 
@@ -45,18 +52,39 @@ impl MatrixStacks {
         self.mode = mode.min(2);
     }
 
+    /// The active unit's texture matrix.
     pub fn texture(&self) -> Mat4 {
-        *self.stacks[2].last().unwrap_or(&Mat4::IDENTITY)
+        *self.stacks[self.index(2)].last().unwrap_or(&Mat4::IDENTITY)
+    }
+
+    /// Unit `unit`'s texture matrix.
+    pub fn texture_of(&self, unit: usize) -> Mat4 {
+        *self.stacks[2 + unit.min(STACKS - 3)].last().unwrap_or(&Mat4::IDENTITY)
+    }
+
+    /// Follows `glActiveTexture`: `GL_TEXTURE` names that unit's stack.
+    pub fn set_unit(&mut self, unit: usize) {
+        self.unit = unit;
+    }
+
+    /// The stack of mode `mode` (0 modelview, 1 projection, 2 the active unit's texture).
+    fn index(&self, mode: usize) -> usize {
+        if mode < 2 {
+            mode
+        } else {
+            2 + self.unit.min(STACKS - 3)
+        }
     }
 
     /// How many matrices a stack holds (`GL_MODELVIEW_STACK_DEPTH`, ...): 0 modelview,
-    /// 1 projection, 2 texture.
+    /// 1 projection, 2 the active unit's texture.
     pub fn depth(&self, stack: usize) -> usize {
-        self.stacks[stack].len().max(1)
+        self.stacks[self.index(stack)].len().max(1)
     }
 
     fn top(&mut self) -> &mut Mat4 {
-        let stack = &mut self.stacks[self.mode];
+        let index = self.index(self.mode);
+        let stack = &mut self.stacks[index];
         if stack.is_empty() {
             stack.push(Mat4::IDENTITY);
         }
@@ -268,11 +296,12 @@ impl Gl {
             return;
         }
         let mode = self.server.matrices.mode;
+        let index = self.server.matrices.index(mode);
         let top = self.server.matrices.top().to_owned();
-        if self.server.matrices.stacks[mode].len() >= DEPTHS[mode] {
+        if self.server.matrices.stacks[index].len() >= DEPTHS[mode] {
             return self.set_error(GL_STACK_OVERFLOW);
         }
-        self.server.matrices.stacks[mode].push(top);
+        self.server.matrices.stacks[index].push(top);
     }
 
     /// `glPopMatrix`: `GL_STACK_UNDERFLOW` when only one matrix is left.
@@ -283,7 +312,8 @@ impl Gl {
         if self.reject_inside_begin_end() {
             return;
         }
-        let stack = &mut self.server.matrices.stacks[self.server.matrices.mode];
+        let index = self.server.matrices.index(self.server.matrices.mode);
+        let stack = &mut self.server.matrices.stacks[index];
         if stack.len() <= 1 {
             return self.set_error(GL_STACK_UNDERFLOW);
         }
@@ -450,8 +480,9 @@ pub(crate) static GET_ROWS: &[StateVar] = &[
     row(GL_TRANSPOSE_PROJECTION_MATRIX, 16, Kind::Normalized, |gl, o| {
         put_matrix(o, gl.server.matrices.projection().transpose())
     }),
+    // Mesa 22.3 answers unit 0's whichever unit is active (measured, `multitexture.calls`).
     row(GL_TRANSPOSE_TEXTURE_MATRIX, 16, Kind::Normalized, |gl, o| {
-        put_matrix(o, gl.server.matrices.texture().transpose())
+        put_matrix(o, gl.server.matrices.texture_of(0).transpose())
     }),
     row(GL_MODELVIEW_STACK_DEPTH, 1, Kind::Int, |gl, o| o[0] = gl.server.matrices.depth(0) as f64),
     row(GL_PROJECTION_STACK_DEPTH, 1, Kind::Int, |gl, o| o[0] = gl.server.matrices.depth(1) as f64),

@@ -42,6 +42,7 @@ mod line;
 pub(crate) mod lists;
 mod matrix;
 mod multisample;
+mod multitexture;
 mod occlusion;
 mod offset;
 mod param_variants;
@@ -67,6 +68,7 @@ mod stipple;
 mod stipple_query;
 mod texture;
 pub mod types;
+mod units;
 mod variants;
 mod vertex;
 mod viewport;
@@ -83,6 +85,7 @@ pub use fog::Fog;
 pub use fragments::{BufferConfig, FragmentTests, Stencil};
 pub use frame::{
     Accumulation, Call, Command, DrawState, Frame, GridMesh, MaterialChange, MeshMode, MeshVertices, Primitive,
+    UnitTexCoords,
 };
 pub use grid_vertices::GridVertices;
 pub use lighting::{Light, Lighting, Material};
@@ -94,7 +97,7 @@ pub use select::SelectHit;
 pub use texture::{
     texture_source, BoundTexture, Combine, Combiner, TexLevel, TexParams, MAX_3D_TEXTURE_SIZE, MAX_TEXTURE_SIZE,
 };
-pub use texture::{TexGen, TexGenCoord, TexGenState};
+pub use texture::{TexGen, TexGenCoord, TexGenState, MAX_COMBINED_TEXTURE_IMAGE_UNITS, MAX_TEXTURE_UNITS};
 pub use variants::GlComponent;
 pub use vertex::Vertex;
 pub use window_read::{WindowImage, WindowReader};
@@ -160,9 +163,12 @@ pub fn error_name(code: GLenum) -> &'static str {
 /// BGRA and the packed pixel types (`pixel_packed.rs`), `GL_ADD` and the combiner with DOT3
 /// (`texture/combine.rs`), `GL_CLAMP_TO_BORDER` and `GL_MIRRORED_REPEAT`
 /// (`render/soft/sampler.rs`, `shaders/fragment.wgsl`), `GL_GENERATE_MIPMAP`
-/// (`texture/generate.rs`), buffer objects (`buffers.rs`), occlusion queries (`occlusion.rs`).
+/// (`texture/generate.rs`), buffer objects (`buffers.rs`), occlusion queries (`occlusion.rs`),
+/// GL 1.3's texture units and GL 1.4's crossbar (`multitexture.rs`, `units.rs`,
+/// `render/soft/units.rs`; wgpu hands frames drawing with more than unit 0 to the CPU
+/// rasteriser, `gpu/fallback.rs`).
 const EXTENSIONS: &str =
-    "GL_ARB_occlusion_query GL_ARB_point_parameters GL_ARB_texture_border_clamp GL_ARB_texture_compression GL_ARB_texture_env_add GL_ARB_texture_env_combine GL_ARB_texture_env_dot3 GL_ARB_texture_mirrored_repeat GL_ARB_vertex_buffer_object GL_ARB_window_pos GL_EXT_bgra GL_EXT_blend_color GL_EXT_blend_equation_separate GL_EXT_blend_func_separate GL_EXT_blend_minmax GL_EXT_blend_subtract GL_EXT_draw_range_elements GL_EXT_fog_coord GL_EXT_multi_draw_arrays GL_EXT_packed_pixels GL_EXT_point_parameters GL_EXT_rescale_normal GL_EXT_stencil_wrap GL_EXT_texture3D GL_EXT_texture_edge_clamp GL_EXT_texture_env_add GL_EXT_texture_env_combine GL_IBM_texture_mirrored_repeat GL_NV_blend_square GL_SGIS_generate_mipmap GL_SGIS_texture_border_clamp GL_SGIS_texture_edge_clamp GL_SGIS_texture_lod";
+    "GL_ARB_multitexture GL_ARB_occlusion_query GL_ARB_point_parameters GL_ARB_texture_border_clamp GL_ARB_texture_compression GL_ARB_texture_env_add GL_ARB_texture_env_combine GL_ARB_texture_env_crossbar GL_ARB_texture_env_dot3 GL_ARB_texture_mirrored_repeat GL_ARB_vertex_buffer_object GL_ARB_window_pos GL_EXT_bgra GL_EXT_blend_color GL_EXT_blend_equation_separate GL_EXT_blend_func_separate GL_EXT_blend_minmax GL_EXT_blend_subtract GL_EXT_draw_range_elements GL_EXT_fog_coord GL_EXT_multi_draw_arrays GL_EXT_packed_pixels GL_EXT_point_parameters GL_EXT_rescale_normal GL_EXT_stencil_wrap GL_EXT_texture3D GL_EXT_texture_edge_clamp GL_EXT_texture_env_add GL_EXT_texture_env_combine GL_IBM_texture_mirrored_repeat GL_NV_blend_square GL_SGIS_generate_mipmap GL_SGIS_texture_border_clamp GL_SGIS_texture_edge_clamp GL_SGIS_texture_lod";
 
 /// A GL context without a GPU: GL state plus the recording of what is drawn.
 ///
@@ -231,10 +237,10 @@ pub(crate) struct ServerState {
     pub(super) polygon_stipple: [u32; 32],
     /// The current raster position, where bitmaps and pixels are drawn.
     pub(super) raster_pos: raster_pos::RasterPos,
-    /// Texture objects and unit 0's environment.
+    /// Texture objects, and each unit's bindings and environment.
     pub(super) textures: texture::Textures,
-    /// `glTexGen`'s modes and planes.
-    pub(super) tex_gen: texture::TexGen,
+    /// Each unit's `glTexGen` modes and planes.
+    pub(super) tex_gen: [texture::TexGen; units::MAX_TEXTURE_UNITS],
     /// What Mesa's deferred `glMaterial` leaves of `GL_COLOR_MATERIAL`'s tracking.
     pub(super) color_material_sync: lighting::ColorMaterialSync,
     /// `glHint`'s requests.
@@ -283,7 +289,7 @@ impl ServerState {
             polygon_stipple: [u32::MAX; 32],
             raster_pos: raster_pos::RasterPos::default(),
             textures: texture::Textures::default(),
-            tex_gen: texture::TexGen::default(),
+            tex_gen: [texture::TexGen::default(); units::MAX_TEXTURE_UNITS],
             color_material_sync: lighting::ColorMaterialSync::default(),
             hints: hint::Hints::default(),
             color_buffer: color_buffer::ColorBuffer::default(),
@@ -336,6 +342,9 @@ pub(crate) struct Recorder {
     pub(super) window_reader: window_read::Reader,
     /// A `glDrawElements` is issuing its elements (see [`Primitive::listed_or_indexed`]).
     pub(super) indexed_draw: bool,
+    /// The open primitive draws with units beyond unit 0: its vertices record those units'
+    /// coordinates ([`Frame::unit_tex_coords`]).
+    pub(super) multi_unit: bool,
 }
 
 impl Recorder {
@@ -351,6 +360,7 @@ impl Recorder {
             tessellator: Tessellator::Cpu,
             window_reader: window_read::Reader::default(),
             indexed_draw: false,
+            multi_unit: false,
         }
     }
 }
@@ -457,7 +467,8 @@ impl Gl {
             return i;
         }
         let texture = self.bound_texture();
-        let state = self.snapshot(texture);
+        let mut state = self.snapshot(texture);
+        state.more_textures = self.more_textures();
         self.recorder.frame.states.push(state);
         let i = self.recorder.frame.states.len() - 1;
         self.recorder.state_index = Some(i);
@@ -491,6 +502,7 @@ impl Gl {
             cull_face: self.server.caps.is_on(GL_CULL_FACE).then_some(self.server.polygon.cull_face),
             depth_test: self.server.caps.is_on(GL_DEPTH_TEST).then_some(self.server.depth.func),
             texture,
+            more_textures: Vec::new(),
             blend: self.enabled_blend(),
             alpha_test: self.enabled_alpha_test(),
             fog: self.enabled_fog(),
@@ -583,12 +595,14 @@ mod tests {
         assert!(gl.get_string(GL_VERSION).is_some_and(|v| v.starts_with(&version)));
         // The claims, spelled out: a new one is a decision, made here as well.
         let claimed = [
+            "GL_ARB_multitexture",
             "GL_ARB_occlusion_query",
             "GL_ARB_point_parameters",
             "GL_ARB_texture_border_clamp",
             "GL_ARB_texture_compression",
             "GL_ARB_texture_env_add",
             "GL_ARB_texture_env_combine",
+            "GL_ARB_texture_env_crossbar",
             "GL_ARB_texture_env_dot3",
             "GL_ARB_texture_mirrored_repeat",
             "GL_ARB_vertex_buffer_object",

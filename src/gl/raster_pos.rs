@@ -11,6 +11,7 @@ use super::consts::*;
 use super::lists::ListCommand;
 use super::state_var::{put, put_flag, row, Kind, StateVar};
 use super::types::*;
+use super::units::MAX_TEXTURE_UNITS;
 use super::Gl;
 use glam::{Mat4, Vec4};
 
@@ -23,7 +24,10 @@ pub(crate) struct RasterPos {
     pub valid: bool,
     /// The colour bitmaps are drawn in.
     pub color: [f32; 4],
+    /// Unit 0's texture coordinates.
     pub tex_coord: [f32; 4],
+    /// Units 1 to 7's (GL 1.3 §2.13: each unit's).
+    pub unit_tex_coords: [[f32; 4]; MAX_TEXTURE_UNITS - 1],
     /// Distance from the eye to the position (`GL_CURRENT_RASTER_DISTANCE`).
     pub distance: f32,
 }
@@ -35,6 +39,7 @@ impl Default for RasterPos {
             valid: true,
             color: [1.0; 4],
             tex_coord: [0.0, 0.0, 0.0, 1.0],
+            unit_tex_coords: [[0.0, 0.0, 0.0, 1.0]; MAX_TEXTURE_UNITS - 1],
             distance: 0.0,
         }
     }
@@ -96,12 +101,24 @@ impl Gl {
             self.server.raster_pos.valid = false;
             return;
         };
-        // The raster texture coordinates are the current ones through the texture matrix
-        // (GL 1.1 §2.12), as a vertex's are.
-        let tex_coord =
-            (self.server.matrices.texture() * glam::Vec4::from_array(self.server.current.tex_coord)).to_array();
-        self.server.raster_pos =
-            RasterPos { window, valid: true, color: self.server.current.color, tex_coord, distance };
+        // The raster texture coordinates are each unit's current ones through its texture
+        // matrix (GL 1.1 §2.12, GL 1.3 §2.13), as a vertex's are.
+        let through = |gl: &Self, unit: usize| {
+            let coords = glam::Vec4::from_array(gl.server.current.tex_coord_of(unit));
+            (gl.server.matrices.texture_of(unit) * coords).to_array()
+        };
+        let tex_coord = through(self, 0);
+        let unit_tex_coords = std::array::from_fn(|u| through(self, u + 1));
+        let color = self.server.current.color;
+        self.server.raster_pos = RasterPos { window, valid: true, color, tex_coord, unit_tex_coords, distance };
+    }
+
+    /// The active unit's raster texture coordinates.
+    fn raster_tex_coord(&self) -> [f32; 4] {
+        match self.active_unit() {
+            unit @ 1..=7 => self.server.raster_pos.unit_tex_coords[unit - 1],
+            _ => self.server.raster_pos.tex_coord,
+        }
     }
 
     /// `glRasterPos2f` (z = 0, w = 1). Inside `begin`/`end` → `GL_INVALID_OPERATION`.
@@ -205,6 +222,7 @@ impl Gl {
             valid: true,
             color: self.server.current.color,
             tex_coord: self.server.current.tex_coord,
+            unit_tex_coords: self.server.current.unit_tex_coords,
             distance: 0.0,
         };
     }
@@ -223,7 +241,7 @@ pub(crate) static GET_ROWS: &[StateVar] = &[
     row(GL_CURRENT_RASTER_COLOR, 4, Kind::Normalized, |gl, o| {
         put(o, &gl.server.raster_pos.color.map(|c| c.clamp(0.0, 1.0)))
     }),
-    row(GL_CURRENT_RASTER_TEXTURE_COORDS, 4, Kind::Float, |gl, o| put(o, &gl.server.raster_pos.tex_coord)),
+    row(GL_CURRENT_RASTER_TEXTURE_COORDS, 4, Kind::Float, |gl, o| put(o, &gl.raster_tex_coord())),
     row(GL_CURRENT_RASTER_POSITION_VALID, 1, Kind::Bool, |gl, o| put_flag(o, gl.server.raster_pos.valid)),
 ];
 

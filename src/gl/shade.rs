@@ -35,6 +35,9 @@ pub(crate) struct ShadedVertex {
     pub front_secondary: Vec4,
     pub back_secondary: Vec4,
     pub tex: Vec4,
+    /// Units 1 to 7's texture coordinates through their matrices (zero but for the units that
+    /// draw, see [`Shader::unit_tex`]).
+    pub units: [Vec4; 7],
     pub fog: f32,
 }
 
@@ -50,6 +53,7 @@ impl Mix for ShadedVertex {
             front_secondary: self.front_secondary.lerp(other.front_secondary, t),
             back_secondary: self.back_secondary.lerp(other.back_secondary, t),
             tex: self.tex.lerp(other.tex, t),
+            units: std::array::from_fn(|k| self.units[k].lerp(other.units[k], t)),
             fog: self.fog + (other.fog - self.fog) * t,
         }
     }
@@ -79,14 +83,41 @@ impl<'a> Shader<'a> {
             let c = color.clamp(Vec4::ZERO, Vec4::ONE);
             let summed = Vec4::from_array(v.secondary_color).truncate().clamp(Vec3::ZERO, Vec3::ONE).extend(0.0);
             let s = if self.state.color_sum { summed } else { Vec4::ZERO };
-            return ShadedVertex { clip, eye, front: c, back: c, front_secondary: s, back_secondary: s, tex, fog };
+            let units = [Vec4::ZERO; 7];
+            return ShadedVertex {
+                clip,
+                eye,
+                front: c,
+                back: c,
+                front_secondary: s,
+                back_secondary: s,
+                tex,
+                units,
+                fog,
+            };
         };
         let n = self.eye_normal(v);
         let position = if eye.w != 0.0 { eye.xyz() / eye.w } else { eye.xyz() };
         let (front, front_secondary) = self.light(lighting, 0, n, position, color);
         let (back, back_secondary) =
             if lighting.two_side { self.light(lighting, 1, -n, position, color) } else { (front, front_secondary) };
-        ShadedVertex { clip, eye, front, back, front_secondary, back_secondary, tex, fog }
+        ShadedVertex { clip, eye, front, back, front_secondary, back_secondary, tex, units: [Vec4::ZERO; 7], fog }
+    }
+
+    /// Units 1 to 7's texture coordinates of a vertex whose coordinates of those units are
+    /// `coords`: for each unit that draws, generated where its `glTexGen` says, then through
+    /// its texture matrix (GL 1.3 §2.10.2, §2.10.4: each unit's own), as unit 0's in
+    /// [`Shader::shade`].
+    pub fn unit_tex(&self, v: &Vertex, coords: &super::UnitTexCoords) -> [Vec4; 7] {
+        let mut units = [Vec4::ZERO; 7];
+        let eye = self.state.modelview * Vec4::from_array(v.position);
+        for (unit, t) in &self.state.more_textures {
+            let given = Vec4::from_array(coords[unit - 1]);
+            let generated =
+                t.generate.map_or(given, |g| g.apply(given, Vec4::from_array(v.position), eye, self.eye_normal(v)));
+            units[unit - 1] = t.matrix * generated;
+        }
+        units
     }
 
     /// The vertex's normal in eye coordinates, rescaled by `GL_RESCALE_NORMAL` and normalised

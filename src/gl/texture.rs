@@ -1,6 +1,6 @@
-//! Texture objects, images, parameters and the texture environment of unit 0 (GL 1.1 spec
-//! §3.8, with GL 1.2's 3D textures; Mesa `main/teximage.c`, `texobj.c`, `texparam.c`,
-//! `texenv.c`).
+//! Texture objects, images, parameters, and each texture unit's bindings and environment (GL
+//! 1.1 spec §3.8, with GL 1.2's 3D textures and GL 1.3's units, §2.7 and §3.8.15; Mesa
+//! `main/teximage.c`, `texobj.c`, `texparam.c`, `texenv.c`, `texstate.c`).
 //!
 //! Images are unpacked from client memory with the pixel store ([`super::pixels`]) into RGBA8
 //! levels; the base internal format (`GL_RGB`, `GL_LUMINANCE`, ...) travels beside them, since
@@ -19,6 +19,7 @@ use super::pixel_unpack::format_components;
 use super::pixels::PixelStore;
 use super::state_var::{int_limit, put_enum, row, Kind, StateVar};
 use super::types::*;
+pub use super::units::{MAX_COMBINED_TEXTURE_IMAGE_UNITS, MAX_TEXTURE_UNITS};
 use super::Gl;
 pub use combine::{texture_source, Combine, Combiner};
 pub(crate) use compressed::{CompressedCall, GET_ROWS as COMPRESSION_GET_ROWS};
@@ -172,18 +173,34 @@ impl TexParams {
     }
 }
 
-/// What `GL_TEXTURE_BIT` saves: the bindings, the environment mode and colour, `glTexGen`,
-/// and the parameters (filters, wraps, border colour, priority) of the bound objects and of
-/// each target's default object, which Mesa restores into those objects (measured on Mesa
-/// 22.3: a change to a default texture made while another was bound is undone too,
-/// `texture_3d.calls`).
+/// What `GL_TEXTURE_BIT` saves: the active unit and, for every unit of the fixed-function
+/// pipeline, the bindings, the environment mode and colour, `glTexGen`, and the parameters
+/// (filters, wraps, border colour, priority) of the bound objects; and of each target's default
+/// object, which Mesa restores into those objects (measured on Mesa 22.3: a change to a default
+/// texture made while another was bound is undone too, `texture_3d.calls`).
 #[derive(Clone, Debug)]
 pub(crate) struct TextureAttrib {
-    bound: [GLuint; 3],
-    env: (GLenum, [f32; 4], Combine),
-    tex_gen: TexGen,
-    objects: [ObjectSampling; 3],
+    active: GLenum,
+    bound: [[GLuint; 3]; MAX_TEXTURE_UNITS],
+    env: [TexEnv; MAX_TEXTURE_UNITS],
+    tex_gen: [TexGen; MAX_TEXTURE_UNITS],
+    objects: [[ObjectSampling; 3]; MAX_TEXTURE_UNITS],
     defaults: [ObjectSampling; 3],
+}
+
+/// A unit's texture environment (GL 1.3 §3.8.13): `GL_TEXTURE_ENV_MODE`, `GL_TEXTURE_ENV_COLOR`
+/// and the combiner.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct TexEnv {
+    pub(crate) mode: GLenum,
+    pub(crate) color: [f32; 4],
+    pub(crate) combine: Combine,
+}
+
+impl Default for TexEnv {
+    fn default() -> Self {
+        Self { mode: GL_MODULATE, color: [0.0; 4], combine: Combine::default() }
+    }
 }
 
 /// An object's parameters, border colour and priority.
@@ -320,7 +337,7 @@ impl TextureObject {
     }
 }
 
-/// Unit 0's texture state.
+/// The texture objects and each unit's bindings and environment.
 #[derive(Debug)]
 pub(crate) struct Textures {
     pub(super) objects: HashMap<GLuint, TextureObject>,
@@ -329,10 +346,10 @@ pub(crate) struct Textures {
     /// `GL_PROXY_TEXTURE_1D`, `_2D` and `_3D`: levels of sizes and formats only (GL 1.1
     /// §3.8.1), never bound or drawn.
     proxies: [TextureObject; 3],
-    bound: [GLuint; 3],
-    env_mode: GLenum,
-    env_color: [f32; 4],
-    combine: Combine,
+    /// Each unit's `GL_TEXTURE_1D`, `_2D` and `_3D` bindings.
+    bound: Box<[[GLuint; 3]; MAX_COMBINED_TEXTURE_IMAGE_UNITS]>,
+    /// Each fixed-function unit's environment.
+    pub(super) env: [TexEnv; MAX_TEXTURE_UNITS],
     max_name: GLuint,
 }
 
@@ -343,10 +360,8 @@ impl Default for Textures {
             objects: HashMap::new(),
             defaults: [default(1, fresh_key()), default(2, fresh_key()), default(3, fresh_key())],
             proxies: [default(1, 0), default(2, 0), default(3, 0)],
-            bound: [0; 3],
-            env_mode: GL_MODULATE,
-            env_color: [0.0; 4],
-            combine: Combine::default(),
+            bound: Box::new([[0; 3]; MAX_COMBINED_TEXTURE_IMAGE_UNITS]),
+            env: [TexEnv::default(); MAX_TEXTURE_UNITS],
             max_name: 0,
         }
     }
@@ -501,16 +516,37 @@ impl Gl {
 }
 
 impl Gl {
-    /// `glActiveTexture`: selects the texture unit (the evaluators only work on unit 0).
+    /// `glActiveTexture` (GL 1.3 §2.7): selects the unit the texture calls, the texture
+    /// enables and `glMatrixMode(GL_TEXTURE)` act on (the evaluators only work on unit 0). A
+    /// unit at or beyond [`MAX_COMBINED_TEXTURE_IMAGE_UNITS`] → `GL_INVALID_ENUM`, as Mesa.
     pub fn active_texture(&mut self, texture: GLenum) {
         if self.compiled_state_call(|| ListCommand::Texture(TextureCall::ActiveTexture(texture))) {
             return;
         }
-        if !(GL_TEXTURE0..=GL_TEXTURE31).contains(&texture) {
+        let units = GL_TEXTURE0..GL_TEXTURE0 + MAX_COMBINED_TEXTURE_IMAGE_UNITS as GLenum;
+        if !units.contains(&texture) {
             self.set_error(GL_INVALID_ENUM);
             return;
         }
         self.server.active_texture = texture;
+        self.server.matrices.set_unit(self.active_unit());
+    }
+
+    /// The active unit's index (`GL_ACTIVE_TEXTURE` − `GL_TEXTURE0`).
+    pub(crate) fn active_unit(&self) -> usize {
+        (self.server.active_texture - GL_TEXTURE0) as usize
+    }
+
+    /// The active unit's environment; `None` for a unit beyond the fixed-function ones.
+    pub(super) fn active_env(&self) -> Option<&TexEnv> {
+        self.server.textures.env.get(self.active_unit())
+    }
+
+    /// The active unit's environment to change (`None`: a unit beyond the fixed-function ones,
+    /// whose environment Mesa ignores without an error, measured).
+    pub(super) fn active_env_mut(&mut self) -> Option<&mut TexEnv> {
+        let unit = self.active_unit();
+        self.server.textures.env.get_mut(unit)
     }
 
     /// `glGenTextures`: `n` unused names into `textures` (short of room → `GL_INVALID_VALUE`,
@@ -550,7 +586,8 @@ impl Gl {
             }
             self.server.textures.max_name = self.server.textures.max_name.max(texture);
         }
-        self.server.textures.bound[t] = texture;
+        let unit = self.active_unit();
+        self.server.textures.bound[unit][t] = texture;
         self.touch_state();
     }
 
@@ -564,7 +601,7 @@ impl Gl {
         let Some(names) = textures.get(..count) else { return self.set_error(GL_INVALID_VALUE) };
         for &name in names.iter().filter(|&&name| name != 0) {
             if self.server.textures.objects.remove(&name).is_some() {
-                for bound in &mut self.server.textures.bound {
+                for bound in self.server.textures.bound.iter_mut().flatten() {
                     if *bound == name {
                         *bound = 0;
                     }
@@ -588,24 +625,36 @@ impl Gl {
         }
     }
 
-    /// The texture the next primitive is drawn with: the bound object of the enabled target
-    /// (`GL_TEXTURE_3D` before `GL_TEXTURE_2D` before `GL_TEXTURE_1D`, GL 1.2 §3.8.15), if its
-    /// mipmap chain is complete (§3.8.10; an incomplete texture disables texturing).
+    /// The texture unit 0 draws the next primitive with (see [`Gl::bound_texture_of`]).
     pub(crate) fn bound_texture(&mut self) -> Option<BoundTexture> {
-        let dims = if self.capability(GL_TEXTURE_3D) {
+        self.bound_texture_of(0)
+    }
+
+    /// Units 1 to 7's textures that draw the next primitive, with their units (see
+    /// [`DrawState::more_textures`](super::DrawState::more_textures)).
+    pub(crate) fn more_textures(&mut self) -> Vec<(usize, BoundTexture)> {
+        (1..MAX_TEXTURE_UNITS).filter_map(|unit| Some((unit, self.bound_texture_of(unit)?))).collect()
+    }
+
+    /// The texture unit `unit` draws the next primitive with: the bound object of its enabled
+    /// target (`GL_TEXTURE_3D` before `GL_TEXTURE_2D` before `GL_TEXTURE_1D`, GL 1.2 §3.8.15),
+    /// if its mipmap chain is complete (§3.8.10; an incomplete texture disables the unit), with
+    /// the unit's environment, texture matrix and coordinate generation.
+    pub(crate) fn bound_texture_of(&mut self, unit: usize) -> Option<BoundTexture> {
+        let on = |gl: &Self, cap| gl.server.caps.is_on(super::units::unit_cap(cap, unit));
+        let dims = if on(self, GL_TEXTURE_3D) {
             3
-        } else if self.capability(GL_TEXTURE_2D) {
+        } else if on(self, GL_TEXTURE_2D) {
             2
-        } else if self.capability(GL_TEXTURE_1D) {
+        } else if on(self, GL_TEXTURE_1D) {
             1
         } else {
             return None;
         };
-        let matrix = self.server.matrices.texture();
-        let generate = self.tex_gen_state();
-        let (env_mode, env_color, combine) =
-            (self.server.textures.env_mode, self.server.textures.env_color, self.server.textures.combine);
-        let object = self.bound_object_mut(dims);
+        let matrix = self.server.matrices.texture_of(unit);
+        let generate = self.tex_gen_state_of(unit);
+        let env = self.server.textures.env[unit];
+        let object = self.unit_object_mut(unit, dims);
         if object.complete.is_none() {
             // A new chain (an image, the levels or the filter changed): a new key, so that a
             // renderer uploads it again.
@@ -618,9 +667,9 @@ impl Gl {
             levels,
             base_format: object.formats[object.params.base_level as usize],
             params: object.params,
-            env_mode,
-            combine,
-            env_color,
+            env_mode: env.mode,
+            combine: env.combine,
+            env_color: env.color,
             border_color: object.extra.sampling().0.map(|c| c.clamp(0.0, 1.0)),
             matrix,
             dims,
@@ -628,16 +677,18 @@ impl Gl {
         })
     }
 
-    /// What `GL_TEXTURE_BIT` saves of unit 0: the bindings, the environment and the
-    /// coordinate generation (its enables are saved with the bit's other enables).
+    /// What `GL_TEXTURE_BIT` saves of the units: the active unit, the bindings, the environment
+    /// and the coordinate generation of each (their enables are saved with the bit's other
+    /// enables).
     pub(crate) fn texture_attrib(&self) -> TextureAttrib {
         let sampling = |object: &TextureObject| (object.params, object.extra.sampling());
         let textures = &self.server.textures;
         TextureAttrib {
-            bound: textures.bound,
-            env: (textures.env_mode, textures.env_color, textures.combine),
+            active: self.server.active_texture,
+            bound: std::array::from_fn(|unit| textures.bound[unit]),
+            env: textures.env,
             tex_gen: self.server.tex_gen,
-            objects: [1, 2, 3].map(|dims| sampling(self.bound_object(dims))),
+            objects: std::array::from_fn(|unit| [1, 2, 3].map(|dims| sampling(self.unit_object(unit, dims)))),
             defaults: textures.defaults.each_ref().map(sampling),
         }
     }
@@ -653,21 +704,38 @@ impl Gl {
         for (object, sampling) in self.server.textures.defaults.iter_mut().zip(saved.defaults) {
             restore(object, sampling);
         }
-        let exists = |name: GLuint| name == 0 || self.server.textures.objects.contains_key(&name);
-        self.server.textures.bound = saved.bound.map(|name| if exists(name) { name } else { 0 });
-        for (dims, sampling) in [1, 2, 3].into_iter().zip(saved.objects) {
-            restore(self.bound_object_mut(dims), sampling);
+        for (unit, (bound, objects)) in saved.bound.into_iter().zip(saved.objects).enumerate() {
+            let exists = |name: GLuint| name == 0 || self.server.textures.objects.contains_key(&name);
+            self.server.textures.bound[unit] = bound.map(|name| if exists(name) { name } else { 0 });
+            for (dims, sampling) in [1, 2, 3].into_iter().zip(objects) {
+                restore(self.unit_object_mut(unit, dims), sampling);
+            }
         }
-        let textures = &mut self.server.textures;
-        (textures.env_mode, textures.env_color, textures.combine) = saved.env;
+        self.server.textures.env = saved.env;
+        self.server.active_texture = saved.active;
+        self.server.matrices.set_unit(self.active_unit());
         self.touch_state();
     }
 
+    /// The object bound to the active unit's target of `dims` dimensions.
     pub(super) fn bound_object(&self, dims: u8) -> &TextureObject {
+        self.unit_object(self.active_unit(), dims)
+    }
+
+    /// The object bound to `unit`'s target of `dims` dimensions.
+    fn unit_object(&self, unit: usize, dims: u8) -> &TextureObject {
         let t = usize::from(dims - 1);
-        match self.server.textures.bound[t] {
+        match self.server.textures.bound[unit][t] {
             0 => &self.server.textures.defaults[t],
             name => &self.server.textures.objects[&name],
+        }
+    }
+
+    fn unit_object_mut(&mut self, unit: usize, dims: u8) -> &mut TextureObject {
+        let t = usize::from(dims - 1);
+        match self.server.textures.bound[unit][t] {
+            0 => &mut self.server.textures.defaults[t],
+            name => self.server.textures.objects.get_mut(&name).expect("a bound texture exists"),
         }
     }
 
@@ -679,11 +747,7 @@ impl Gl {
     }
 
     pub(super) fn bound_object_mut(&mut self, dims: u8) -> &mut TextureObject {
-        let t = usize::from(dims - 1);
-        match self.server.textures.bound[t] {
-            0 => &mut self.server.textures.defaults[t],
-            name => self.server.textures.objects.get_mut(&name).expect("a bound texture exists"),
-        }
+        self.unit_object_mut(self.active_unit(), dims)
     }
 
     /// A level of the bound object changed: a new chain, under a new key (the renderer uploads
@@ -728,12 +792,13 @@ fn complete_chain(levels: &[Option<TexLevel>], formats: &[GLenum], params: &TexP
 /// The texture bindings' `glGet` rows (GL 1.1 table 6.9, GL 1.2's 3D binding) and the size
 /// limits.
 pub(crate) static GET_ROWS: &[StateVar] = &[
-    row(GL_TEXTURE_BINDING_1D, 1, Kind::Int, |gl, o| put_enum(o, gl.server.textures.bound[0])),
-    row(GL_TEXTURE_BINDING_2D, 1, Kind::Int, |gl, o| put_enum(o, gl.server.textures.bound[1])),
-    row(GL_TEXTURE_BINDING_3D, 1, Kind::Int, |gl, o| put_enum(o, gl.server.textures.bound[2])),
+    row(GL_TEXTURE_BINDING_1D, 1, Kind::Int, |gl, o| put_enum(o, gl.server.textures.bound[gl.active_unit()][0])),
+    row(GL_TEXTURE_BINDING_2D, 1, Kind::Int, |gl, o| put_enum(o, gl.server.textures.bound[gl.active_unit()][1])),
+    row(GL_TEXTURE_BINDING_3D, 1, Kind::Int, |gl, o| put_enum(o, gl.server.textures.bound[gl.active_unit()][2])),
     int_limit!(GL_MAX_TEXTURE_SIZE, MAX_TEXTURE_SIZE),
     int_limit!(GL_MAX_3D_TEXTURE_SIZE, MAX_3D_TEXTURE_SIZE),
     row(GL_ACTIVE_TEXTURE, 1, Kind::Int, |gl, o| put_enum(o, gl.server.active_texture)),
+    int_limit!(GL_MAX_TEXTURE_UNITS, MAX_TEXTURE_UNITS),
 ];
 
 #[cfg(test)]

@@ -35,6 +35,7 @@ pub(crate) fn clears_as_quads(list: &DrawList, (width, height): (u32, u32)) -> s
         ops: Vec::new(),
         fragments: list.fragments.clone(),
         pixel_copies: list.pixel_copies.clone(),
+        unit_tex: list.unit_tex.clone(),
     };
     let whole = [0, 0, width as i32, height as i32];
     for op in &list.ops {

@@ -1,6 +1,7 @@
 //! What wgpu's frame rasteriser does not draw, and the honest route for it: a frame that uses
-//! the logic op, a blend WebGPU cannot express (`blend.rs`), the accumulation buffer, a swap in the middle of the frame, or more than one
-//! colour buffer is drawn by the CPU rasteriser (`render/soft`, GL's rules, scored against Mesa)
+//! the logic op, a blend WebGPU cannot express (`blend.rs`), the accumulation buffer, a swap in the middle of the frame, more than one
+//! colour buffer, or a texture unit beyond unit 0 (GL 1.3's units: the WGSL fragment stage
+//! binds one texture) is drawn by the CPU rasteriser (`render/soft`, GL's rules, scored against Mesa)
 //! and its picture handed back as the wgpu render's. WebGPU has no logic op at all; the
 //! accumulation buffer and front and back targets would need a texture each and passes between
 //! them, not built (README, "Still missing"). The stencil and scissor tests and the write masks
@@ -38,7 +39,7 @@ pub(crate) fn needs_cpu(frame: &Frame) -> bool {
     }
     let mut buffers = None;
     let last = frame.commands.len().saturating_sub(1);
-    let states = frame.states.iter().any(|s| !plain(&s.fragment_tests, &mut buffers))
+    let states = frame.states.iter().any(|s| !plain(&s.fragment_tests, &mut buffers) || !s.more_textures.is_empty())
         || !super::blend::expressible(frame.states.iter().map(|s| &s.blend));
     states
         || frame.commands.iter().enumerate().any(|(k, command)| match command {

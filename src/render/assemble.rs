@@ -13,7 +13,9 @@ use super::{clip, offset, smooth};
 use crate::gl::consts::*;
 use crate::gl::shade::{ShadedVertex, Shader};
 use crate::gl::types::GLenum;
-use crate::gl::{Accumulation, BoundTexture, Command, DrawState, Fog, FragmentTests, Frame, MeshVertices, Vertex};
+use crate::gl::{
+    Accumulation, BoundTexture, Command, DrawState, Fog, FragmentTests, Frame, MeshVertices, UnitTexCoords, Vertex,
+};
 use glam::Vec4;
 
 /// A vertex ready for the rasteriser: clip position (depth already mapped to [0, 1] through
@@ -103,6 +105,8 @@ pub(crate) fn viewport_in_target([x, y, w, h]: [i32; 4], (width, height): (u32, 
 pub struct FragmentState {
     /// The texture and its environment.
     pub texture: Option<BoundTexture>,
+    /// Units 1 to 7's textures that draw, with their units ([`DrawState::more_textures`]).
+    pub more_textures: Vec<(usize, BoundTexture)>,
     /// Fog.
     pub fog: Option<Fog>,
     /// The alpha test's function and reference.
@@ -171,6 +175,10 @@ pub struct DrawList {
     pub fragments: Vec<FragmentState>,
     /// The `glCopyPixels` calls the ops execute.
     pub pixel_copies: Vec<crate::gl::PixelCopy>,
+    /// Units 1 to 7's texture coordinates of `vertices[i]` (after their matrices), for the
+    /// vertices of batches drawn with more units than unit 0: shorter than `vertices` where the
+    /// rest draw with unit 0 alone (the single-unit lists keep it empty).
+    pub unit_tex: Vec<UnitTexCoords>,
 }
 
 /// Assembles a frame, evaluating deferred (GPU) meshes on the CPU.
@@ -202,7 +210,8 @@ pub fn assemble_frame(frame: &Frame, gpu_meshes: &[usize]) -> DrawList {
                             .collect();
                         let hidden = frame.hidden_edges_of(p);
                         let shape = (p.mode, p.listed_or_indexed);
-                        out.lit_primitive(shape, frame.vertices_of(p), state, &materials, &hidden);
+                        let units = frame.unit_tex_coords_of(p);
+                        out.lit_primitive(shape, (frame.vertices_of(p), &units), state, &materials, &hidden);
                     }
                 }
             }
@@ -218,7 +227,12 @@ pub fn assemble_frame(frame: &Frame, gpu_meshes: &[usize]) -> DrawList {
                 let grid = mesh.evaluated();
                 for (mode, indices) in mesh.primitives() {
                     let vertices: Vec<Vertex> = indices.iter().map(|&k| grid.vertex(k)).collect();
-                    out.primitive(mode, &vertices, state);
+                    let units = if state.more_textures.is_empty() {
+                        Vec::new()
+                    } else {
+                        vec![mesh.unit_tex_coords; vertices.len()]
+                    };
+                    out.lit_primitive((mode, false), (&vertices, &units), state, &[], &[]);
                 }
             }
             Command::CopyPixels(index) => {
@@ -248,7 +262,7 @@ fn fragment_bucket(state: &DrawState, smooth: Smooth, polygon_stipple: Option<[u
     let bits = |values: &[f32], h: &mut std::collections::hash_map::DefaultHasher| {
         values.iter().for_each(|v| v.to_bits().hash(h))
     };
-    if let Some(t) = &state.texture {
+    for t in state.texture.iter().chain(state.more_textures.iter().map(|(_, t)| t)) {
         (t.key, t.base_format, t.env_mode, t.dims).hash(&mut h);
         bits(&t.env_color, &mut h);
         bits(&t.border_color, &mut h);
@@ -290,17 +304,14 @@ impl Assembler {
         self.list.ops.push(Op::CopyPixels { copy: self.list.pixel_copies.len() - 1, batch });
     }
 
-    fn primitive(&mut self, mode: GLenum, vertices: &[crate::gl::Vertex], state: &DrawState) {
-        self.lit_primitive((mode, false), vertices, state, &[], &[]);
-    }
-
     /// A primitive whose vertices from `materials[k].0` on are lit with the lighting of
     /// `materials[k].1` (`glMaterial` between `begin` and `end`); everything else is `state`'s.
-    /// `hidden[i]`: vertex `i`'s edge flag is false (empty: none is).
+    /// `hidden[i]`: vertex `i`'s edge flag is false (empty: none is); `unit_coords[i]`: vertex
+    /// `i`'s coordinates of units 1 to 7 (empty: drawn with unit 0 alone).
     fn lit_primitive(
         &mut self,
         (mode, listed_or_indexed): (GLenum, bool),
-        vertices: &[crate::gl::Vertex],
+        (vertices, unit_coords): (&[crate::gl::Vertex], &[UnitTexCoords]),
         state: &DrawState,
         materials: &[(usize, &DrawState)],
         hidden: &[bool],
@@ -308,7 +319,13 @@ impl Assembler {
         let shaders: Vec<Shader> =
             std::iter::once(Shader::new(state)).chain(materials.iter().map(|(_, s)| Shader::new(s))).collect();
         let shader_of = |i: usize| materials.iter().rposition(|&(first, _)| first <= i).map_or(0, |k| k + 1);
-        let v: Vec<ShadedVertex> = vertices.iter().enumerate().map(|(i, v)| shaders[shader_of(i)].shade(v)).collect();
+        let mut v: Vec<ShadedVertex> =
+            vertices.iter().enumerate().map(|(i, v)| shaders[shader_of(i)].shade(v)).collect();
+        if !state.more_textures.is_empty() {
+            for ((shaded, vertex), coords) in v.iter_mut().zip(vertices).zip(unit_coords) {
+                shaded.units = shaders[0].unit_tex(vertex, coords);
+            }
+        }
         let n = v.len();
         let closing_edge_first = mode != GL_POLYGON;
         // Mesa 22.3 hands llvmpipe's draw module the quads of a display list or of
@@ -377,6 +394,10 @@ impl Assembler {
         let tests = state.fragment_tests;
         let batch_key = (state.viewport, state.depth_test, topology, fragment, state.blend, tests);
         let first = self.list.vertices.len() as u32;
+        if !state.more_textures.is_empty() {
+            self.list.unit_tex.resize(first as usize, [[0.0; 4]; 7]);
+            self.list.unit_tex.extend(corners.iter().map(|c| c.units.map(|u| u.to_array())));
+        }
         self.list.vertices.extend(corners.iter().map(|c| RasterVertex {
             clip: offset_depth(depth_mapped(c.clip, depth_range), c.depth_offset),
             color: c.color.to_array(),
@@ -406,12 +427,14 @@ impl Assembler {
         (smooth, polygon_stipple): (Smooth, Option<[u32; 32]>),
     ) -> Option<u32> {
         let plain = smooth == Smooth::None && polygon_stipple.is_none();
-        if state.texture.is_none() && state.fog.is_none() && state.alpha_test.is_none() && plain {
+        let untextured = state.texture.is_none() && state.more_textures.is_empty();
+        if untextured && state.fog.is_none() && state.alpha_test.is_none() && plain {
             return None;
         }
         let fragments = &mut self.list.fragments;
         let same = |f: &FragmentState| {
             f.texture.as_ref() == state.texture.as_ref()
+                && f.more_textures == state.more_textures
                 && f.fog == state.fog
                 && f.alpha_test == state.alpha_test
                 && f.smooth == smooth
@@ -422,7 +445,8 @@ impl Assembler {
             return Some(found);
         }
         let (texture, fog, alpha_test) = (state.texture.clone(), state.fog, state.alpha_test);
-        fragments.push(FragmentState { texture, fog, alpha_test, smooth, polygon_stipple });
+        let more_textures = state.more_textures.clone();
+        fragments.push(FragmentState { texture, more_textures, fog, alpha_test, smooth, polygon_stipple });
         let index = (fragments.len() - 1) as u32;
         bucket.push(index);
         Some(index)
@@ -474,7 +498,8 @@ impl PrimitiveContext<'_, '_> {
     fn corner(&self, i: usize, colours: usize, front: bool) -> Corner {
         let (v, c) = (&self.v[i], &self.v[colours]);
         let (color, secondary) = if front { (c.front, c.front_secondary) } else { (c.back, c.back_secondary) };
-        Corner { clip: v.clip, eye: v.eye, color, secondary, tex: v.tex, fog: v.fog, depth_offset: 0.0, aa: Vec4::ZERO }
+        let (tex, units, fog) = (v.tex, v.units, v.fog);
+        Corner { clip: v.clip, eye: v.eye, color, secondary, tex, units, fog, depth_offset: 0.0, aa: Vec4::ZERO }
     }
 
     /// A point is clipped whole when its vertex is outside a clip plane (GL 1.1 §2.11).

@@ -14,6 +14,8 @@ pub(crate) struct Corner {
     /// The secondary colour the colour sum adds after texturing (zero without one).
     pub secondary: Vec4,
     pub tex: Vec4,
+    /// Units 1 to 7's texture coordinates (zero but for the units that draw).
+    pub units: [Vec4; 7],
     pub fog: f32,
     /// Polygon offset in window depth units ([0, 1]), added after the depth range.
     pub depth_offset: f32,
@@ -32,6 +34,7 @@ impl Corner {
             color: Vec4::ONE,
             secondary: Vec4::ZERO,
             tex: Vec4::ZERO,
+            units: [Vec4::ZERO; 7],
             fog: 0.0,
             depth_offset: 0.0,
             aa: Vec4::ZERO,
@@ -47,6 +50,7 @@ impl Corner {
             color: self.color.lerp(other.color, t),
             secondary: self.secondary.lerp(other.secondary, t),
             tex: self.tex.lerp(other.tex, t),
+            units: std::array::from_fn(|k| self.units[k].lerp(other.units[k], t)),
             fog: self.fog + (other.fog - self.fog) * t,
             depth_offset: self.depth_offset + (other.depth_offset - self.depth_offset) * t,
             aa: self.aa.lerp(other.aa, t),

@@ -87,6 +87,7 @@ mod tests {
             color: Vec4::ONE,
             secondary: Vec4::ZERO,
             tex: Vec4::ZERO,
+            units: [Vec4::ZERO; 7],
             fog: 0.0,
             depth_offset: 0.0,
             aa: Vec4::ZERO,

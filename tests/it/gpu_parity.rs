@@ -346,6 +346,7 @@ fn facade_gpu_indices_are_gls_primitives() {
             state: 0,
             vertices: MeshVertices::Evaluated(Default::default()),
             triangles: Vec::new(),
+            unit_tex_coords: [[0.0, 0.0, 0.0, 1.0]; 7],
         };
         // Expected primitives from the CPU path's GL order (checked against Mesa elsewhere).
         let mut want: Vec<Vec<u32>> = Vec::new();

@@ -204,6 +204,25 @@ fn call(gl: &mut Gl, a: &mut Args) {
                 (a.e(), a.int(), a.e() as i32, a.int(), a.int(), a.e(), a.e());
             gl.tex_image_1d(target, level, internal, width, border, format, type_, &a.floats());
         }
+        "glActiveTexture" => gl.active_texture(a.e()),
+        "glClientActiveTexture" => gl.client_active_texture(a.e()),
+        "glMultiTexCoord4f" => gl.multi_tex_coord4f(a.e(), a.f(), a.f(), a.f(), a.f()),
+        "glMultiTexCoord2f" => gl.multi_tex_coord2f(a.e(), a.f(), a.f()),
+        "glMultiTexCoord1d" => gl.multi_tex_coord1d(a.e(), a.d()),
+        "glMultiTexCoord3i" => gl.multi_tex_coord3i(a.e(), a.int(), a.int(), a.int()),
+        "glMultiTexCoord4s" => {
+            let target = a.e();
+            let [s, t, r, q] = [(); 4].map(|()| a.int() as GLshort);
+            gl.multi_tex_coord4s(target, s, t, r, q);
+        }
+        "glMultiTexCoord2fv" => gl.multi_tex_coord2fv(a.e(), &a.floats()),
+        "glMultiTexCoord3dv" => gl.multi_tex_coord3dv(a.e(), &a.array()),
+        "glMultiTexCoord4iv" => gl.multi_tex_coord4iv(a.e(), &ints(a)),
+        "glEnableClientState" => gl.enable_client_state(a.e()),
+        "glDisableClientState" => gl.disable_client_state(a.e()),
+        "glLoadIdentity" => gl.load_identity(),
+        "glTranslatef" => gl.translatef(a.f(), a.f(), a.f()),
+        "glRasterPos2f" => gl.raster_pos2f(a.f(), a.f()),
         other => panic!("call {other} not emulated"),
     }
 }

@@ -1234,5 +1234,185 @@ fn fog_coordinates_are_mesas_on_both_rasterisers() {
         assert_eq!(gl.get_error(), GL_NO_ERROR);
         let frame = gl.take_frame();
         assert_diagonal_is_mesas(&mut renderer, &frame, &expected, 2, &format!("set-up {k}"));
+
+/// GL 1.3's texture units (§3.8.15), each enabled unit applying its environment to the previous
+/// unit's result, against what Mesa 22.3 (llvmpipe, OSMesa) drew for the same calls
+/// (`tests/reference/pixels/multitexture.c` prints these values): three 2 × 2 nearest textures
+/// (RGB on unit 0, RGBA on unit 1, luminance on unit 2) over an 8 × 8 quad; modulate then add,
+/// replace then decal, unit 0 disabled, three units, texgen on unit 1, a texture matrix on
+/// unit 1, `GL_COMBINE` on unit 1 reading unit 0's texel (the crossbar), `glDrawPixels` with
+/// unit 1 alone (llvmpipe samples it at (0, 0), not at the raster position's coordinates). The
+/// diagonal within 2/255. The wgpu renderer hands such a frame to the CPU rasteriser (`gpu/fallback.rs`).
+#[test]
+fn multitexture_is_mesas_on_both_rasterisers() {
+    let mesa: [[[u8; 4]; 8]; 8] = [
+        [
+            [120, 90, 140, 128],
+            [120, 90, 140, 128],
+            [120, 90, 140, 128],
+            [120, 90, 140, 128],
+            [120, 180, 240, 96],
+            [120, 180, 240, 96],
+            [120, 180, 240, 96],
+            [120, 180, 240, 96],
+        ],
+        [
+            [20, 60, 100, 128],
+            [20, 60, 100, 128],
+            [20, 60, 100, 128],
+            [20, 60, 100, 128],
+            [59, 59, 59, 128],
+            [59, 59, 59, 128],
+            [59, 59, 59, 128],
+            [59, 59, 59, 128],
+        ],
+        [
+            [10, 45, 100, 128],
+            [10, 45, 100, 128],
+            [10, 45, 100, 128],
+            [10, 45, 100, 128],
+            [0, 0, 0, 96],
+            [0, 0, 0, 96],
+            [0, 0, 0, 96],
+            [0, 0, 0, 96],
+        ],
+        [
+            [109, 98, 150, 128],
+            [109, 98, 150, 128],
+            [109, 98, 150, 128],
+            [109, 98, 150, 128],
+            [75, 138, 201, 96],
+            [75, 138, 201, 96],
+            [75, 138, 201, 96],
+            [75, 138, 201, 96],
+        ],
+        [
+            [100, 20, 60, 64],
+            [100, 20, 60, 64],
+            [100, 20, 60, 64],
+            [100, 20, 60, 64],
+            [60, 100, 20, 128],
+            [60, 100, 20, 128],
+            [60, 100, 20, 128],
+            [60, 100, 20, 128],
+        ],
+        [
+            [8, 7, 16, 128],
+            [8, 7, 16, 128],
+            [39, 2, 9, 32],
+            [39, 2, 9, 32],
+            [0, 0, 0, 96],
+            [0, 0, 0, 96],
+            [28, 71, 19, 64],
+            [28, 71, 19, 64],
+        ],
+        [
+            [110, 50, 70, 128],
+            [110, 50, 70, 128],
+            [110, 50, 70, 128],
+            [110, 50, 70, 128],
+            [120, 120, 120, 96],
+            [120, 120, 120, 96],
+            [120, 120, 120, 96],
+            [120, 120, 120, 96],
+        ],
+        [[20, 60, 100, 255]; 8],
+    ];
+    let images: [(GLenum, &[u8]); 3] = [
+        (GL_RGB, &[200, 40, 40, 40, 200, 40, 40, 40, 200, 240, 240, 240]),
+        (GL_RGBA, &[20, 60, 100, 255, 100, 20, 60, 64, 60, 100, 20, 128, 0, 0, 0, 192]),
+        (GL_LUMINANCE, &[51, 102, 153, 204]),
+    ];
+    let unit = |gl: &mut Gl, u: GLenum, enabled: bool, mode: GLenum| {
+        gl.active_texture(u);
+        if enabled {
+            gl.enable(GL_TEXTURE_2D);
+        } else {
+            gl.disable(GL_TEXTURE_2D);
+        }
+        gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, mode as GLint);
+    };
+    let mut renderer = optional_renderer();
+    for (setup, expected) in mesa.iter().enumerate() {
+        let mut gl = Gl::new(8, 8);
+        for (k, (format, image)) in images.iter().enumerate() {
+            gl.active_texture(GL_TEXTURE0 + k as GLenum);
+            gl.bind_texture(GL_TEXTURE_2D, k as GLuint + 1);
+            gl.pixel_storei(GL_UNPACK_ALIGNMENT, 1);
+            gl.tex_image_2d(GL_TEXTURE_2D, 0, *format as GLint, 2, 2, 0, *format, GL_UNSIGNED_BYTE, image);
+            gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST as GLint);
+            gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST as GLint);
+        }
+        gl.tex_envfv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, &[0.25, 0.5, 0.75, 1.0]);
+        unit(&mut gl, GL_TEXTURE2, setup == 3, GL_BLEND);
+        match setup {
+            0 | 3 => {
+                unit(&mut gl, GL_TEXTURE0, true, GL_MODULATE);
+                unit(&mut gl, GL_TEXTURE1, true, GL_ADD);
+            }
+            1 => {
+                unit(&mut gl, GL_TEXTURE0, true, GL_REPLACE);
+                unit(&mut gl, GL_TEXTURE1, true, GL_DECAL);
+            }
+            2 => {
+                unit(&mut gl, GL_TEXTURE0, false, GL_REPLACE);
+                unit(&mut gl, GL_TEXTURE1, true, GL_MODULATE);
+            }
+            4 => {
+                unit(&mut gl, GL_TEXTURE0, true, GL_MODULATE);
+                unit(&mut gl, GL_TEXTURE1, true, GL_REPLACE);
+                gl.tex_geni(GL_S, GL_TEXTURE_GEN_MODE, GL_OBJECT_LINEAR as GLint);
+                gl.tex_geni(GL_T, GL_TEXTURE_GEN_MODE, GL_OBJECT_LINEAR as GLint);
+                gl.tex_genfv(GL_S, GL_OBJECT_PLANE, &[-0.5, 0.0, 0.0, 0.5]);
+                gl.tex_genfv(GL_T, GL_OBJECT_PLANE, &[0.0, 0.5, 0.0, 0.5]);
+                gl.enable(GL_TEXTURE_GEN_S);
+                gl.enable(GL_TEXTURE_GEN_T);
+            }
+            5 => {
+                unit(&mut gl, GL_TEXTURE0, true, GL_MODULATE);
+                unit(&mut gl, GL_TEXTURE1, true, GL_MODULATE);
+                gl.matrix_mode(GL_TEXTURE);
+                gl.translatef(0.25, 0.0, 0.0);
+                gl.matrix_mode(GL_MODELVIEW);
+            }
+            6 => {
+                unit(&mut gl, GL_TEXTURE0, true, GL_REPLACE);
+                unit(&mut gl, GL_TEXTURE1, true, GL_COMBINE);
+                for (pname, value) in [
+                    (GL_COMBINE_RGB, GL_INTERPOLATE),
+                    (GL_SOURCE0_RGB, GL_TEXTURE0),
+                    (GL_SOURCE1_RGB, GL_TEXTURE),
+                    (GL_SOURCE2_RGB, GL_PRIMARY_COLOR),
+                    (GL_OPERAND2_RGB, GL_SRC_ALPHA),
+                    (GL_COMBINE_ALPHA, GL_MODULATE),
+                    (GL_SOURCE0_ALPHA, GL_PREVIOUS),
+                    (GL_SOURCE1_ALPHA, GL_TEXTURE),
+                ] {
+                    gl.tex_envi(GL_TEXTURE_ENV, pname, value as GLint);
+                }
+            }
+            _ => {
+                unit(&mut gl, GL_TEXTURE0, false, GL_REPLACE);
+                unit(&mut gl, GL_TEXTURE1, true, GL_MODULATE);
+            }
+        }
+        gl.color4f(0.5, 0.75, 1.0, 0.5);
+        if setup == 7 {
+            gl.multi_tex_coord2f(GL_TEXTURE1, 0.75, 0.25);
+            gl.raster_pos2f(-1.0, -1.0);
+            gl.draw_pixels(8, 8, GL_RGBA, GL_UNSIGNED_BYTE, &[255u8; 8 * 8 * 4]);
+        } else {
+            gl.begin(GL_QUADS);
+            for [x, y] in [[-1.0f32, -1.0], [1.0, -1.0], [1.0, 1.0], [-1.0, 1.0]] {
+                for u in 0..3 {
+                    gl.multi_tex_coord2f(GL_TEXTURE0 + u, (x + 1.0) / 2.0, (y + 1.0) / 2.0);
+                }
+                gl.vertex2f(x, y);
+            }
+            gl.end();
+        }
+        assert_eq!(gl.get_error(), GL_NO_ERROR, "set-up {setup}");
+        let frame = gl.take_frame();
+        assert_diagonal_is_mesas(&mut renderer, &frame, expected, 2, &format!("set-up {setup}"));
     }
 }

@@ -31,6 +31,7 @@ mod immediate;
 mod lighting;
 mod lists;
 mod matrix;
+mod multitexture;
 mod occlusion;
 mod pixel_transfer;
 mod pixels;

@@ -153,7 +153,9 @@ impl Gl {
             MeshVertices::Evaluated(vertices)
         };
         let state = self.current_state_index();
-        self.recorder.frame.meshes.push(GridMesh { mode, nu, nv, state, vertices, triangles: Vec::new() });
+        let unit_tex_coords = self.server.current.unit_tex_coords;
+        let mesh = GridMesh { mode, nu, nv, state, vertices, triangles: Vec::new(), unit_tex_coords };
+        self.recorder.frame.meshes.push(mesh);
         let index = self.recorder.frame.meshes.len() - 1;
         self.recorder.frame.commands.push(Command::Mesh(index));
         if let Some(job) = pending {
@@ -199,7 +201,9 @@ impl Gl {
         let nu = jobs.iter().map(MeshJob::len).sum();
         let state = self.current_state_index();
         let vertices = MeshVertices::Deferred(jobs);
-        self.recorder.frame.meshes.push(GridMesh { mode: MeshMode::Triangles, nu, nv: 1, state, vertices, triangles });
+        let unit_tex_coords = self.server.current.unit_tex_coords;
+        let mesh = GridMesh { mode: MeshMode::Triangles, nu, nv: 1, state, vertices, triangles, unit_tex_coords };
+        self.recorder.frame.meshes.push(mesh);
         let index = self.recorder.frame.meshes.len() - 1;
         self.recorder.frame.commands.push(Command::Mesh(index));
     }

@@ -89,6 +89,12 @@ impl Gl {
             self.set_error(GL_INVALID_ENUM);
             return None;
         };
+        if super::multitexture::UNIT_COORD_NAMES.contains(&pname)
+            && self.active_unit() >= super::units::MAX_TEXTURE_UNITS
+        {
+            self.set_error(GL_INVALID_OPERATION);
+            return None;
+        }
         if room < a.count {
             self.set_error(GL_INVALID_VALUE);
             return None;
@@ -105,6 +111,10 @@ impl Gl {
         if let Some(StateVar { count, kind, read, .. }) = rows().find(|v| v.name == pname) {
             read(self, &mut values);
             return Some(Answer { values, count: *count, kind: *kind });
+        }
+        if super::units::UNIT_ENABLES.contains(&pname) {
+            values[0] = f64::from(u8::from(self.active_unit_enabled(pname)));
+            return Some(Answer { values, count: 1, kind: Kind::Bool });
         }
         if self.is_capability(pname) {
             values[0] = f64::from(u8::from(self.capability(pname)));

@@ -17,8 +17,8 @@ use super::super::types::*;
 pub(crate) fn rows() -> impl Iterator<Item = &'static StateVar> {
     use super::super::{
         accum, array_draws, arrays, attrib, blend, clip, color_buffer, color_index, current, depth, eval, feedback,
-        fog, fragments, hint, lighting, line, lists, matrix, multisample, pixel_transfer, pixels, point, polygon,
-        raster_pos, scissor, select, stencil, texture, viewport,
+        fog, fragments, hint, lighting, line, lists, matrix, multisample, multitexture, pixel_transfer, pixels, point,
+        polygon, raster_pos, scissor, select, stencil, texture, viewport,
     };
     [
         current::GET_ROWS,
@@ -35,6 +35,7 @@ pub(crate) fn rows() -> impl Iterator<Item = &'static StateVar> {
         polygon::GET_ROWS,
         texture::GET_ROWS,
         texture::COMPRESSION_GET_ROWS,
+        multitexture::GET_ROWS,
         scissor::GET_ROWS,
         multisample::GET_ROWS,
         stencil::GET_ROWS,

@@ -131,18 +131,33 @@ impl Combine {
         }
     }
 
-    /// The combiner's result for a fragment (GL 1.3 §3.8.13): `texture` the texel as the base
-    /// format gives it (see [`texture_source`]), `primary` the fragment's colour (`GL_PREVIOUS`
-    /// on unit 0 too), `constant` `GL_TEXTURE_ENV_COLOR`; scaled and clamped to [0, 1]. A
-    /// crossbar source naming another unit reads zero: gleval has one texture unit, and GL
-    /// leaves a disabled unit's texel undefined.
+    /// The combiner's result on unit 0, or with no other unit drawing (see
+    /// [`Combine::apply_on_unit`]): `GL_PREVIOUS` is the primary colour, a crossbar source
+    /// naming another unit reads zero (GL leaves a disabled unit's texel undefined).
     #[must_use]
     pub fn apply(&self, texture: [f32; 4], primary: [f32; 4], constant: [f32; 4]) -> [f32; 4] {
+        self.apply_on_unit(texture, [primary, primary], constant, &|unit| if unit == 0 { texture } else { [0.0; 4] })
+    }
+
+    /// The combiner's result for a fragment (GL 1.3 §3.8.13): `texture` the unit's texel as the
+    /// base format gives it (see [`texture_source`]), `previous` the previous unit's result
+    /// (the fragment's colour on the first), `primary` the fragment's colour, `constant`
+    /// `GL_TEXTURE_ENV_COLOR`, and GL 1.4's crossbar `GL_TEXTUREn` unit n's texel as
+    /// `unit_texel` gives it; scaled and clamped to [0, 1].
+    #[must_use]
+    pub fn apply_on_unit(
+        &self,
+        texture: [f32; 4],
+        [previous, primary]: [[f32; 4]; 2],
+        constant: [f32; 4],
+        unit_texel: &dyn Fn(usize) -> [f32; 4],
+    ) -> [f32; 4] {
         let source = |s: GLenum| match s {
-            GL_TEXTURE | GL_TEXTURE0 => texture,
+            GL_TEXTURE => texture,
             GL_CONSTANT => constant,
-            GL_PRIMARY_COLOR | GL_PREVIOUS => primary,
-            _ => [0.0; 4],
+            GL_PRIMARY_COLOR => primary,
+            GL_PREVIOUS => previous,
+            _ => unit_texel(s.wrapping_sub(GL_TEXTURE0) as usize),
         };
         let argument = |half: &Combiner, k: usize| -> [f32; 4] {
             let c = source(half.sources[k]);

@@ -130,6 +130,7 @@ impl Gl {
         if self.compiled_state_call(|| ListCommand::Texture(TextureCall::TexGen(coord, pname, values.to_vec()))) {
             return;
         }
+        let Some(unit) = self.coord_unit() else { return };
         let Some(index) = coord_index(coord) else { return self.set_error(GL_INVALID_ENUM) };
         match pname {
             GL_TEXTURE_GEN_MODE => {
@@ -137,10 +138,12 @@ impl Gl {
                 if !mode_allowed(index, mode) {
                     return self.set_error(GL_INVALID_ENUM);
                 }
-                self.server.tex_gen.coords[index].mode = mode;
+                self.server.tex_gen[unit].coords[index].mode = mode;
             }
-            GL_OBJECT_PLANE => self.server.tex_gen.coords[index].object_plane = Vec4::from_slice(values),
-            GL_EYE_PLANE => self.server.tex_gen.coords[index].eye_plane = self.plane_to_eye(Vec4::from_slice(values)),
+            GL_OBJECT_PLANE => self.server.tex_gen[unit].coords[index].object_plane = Vec4::from_slice(values),
+            GL_EYE_PLANE => {
+                self.server.tex_gen[unit].coords[index].eye_plane = self.plane_to_eye(Vec4::from_slice(values));
+            }
             _ => return self.set_error(GL_INVALID_ENUM),
         }
         self.touch_state();
@@ -179,8 +182,9 @@ impl Gl {
         if self.reject_inside_begin_end() {
             return;
         }
+        let Some(unit) = self.coord_unit() else { return };
         let Some(index) = coord_index(coord) else { return self.set_error(GL_INVALID_ENUM) };
-        let c = self.server.tex_gen.coords[index];
+        let c = self.server.tex_gen[unit].coords[index];
         let values = match pname {
             GL_TEXTURE_GEN_MODE => vec![c.mode as GLfloat],
             GL_OBJECT_PLANE => c.object_plane.to_array().to_vec(),
@@ -234,11 +238,23 @@ impl Gl {
         }
     }
 
-    /// What the next primitive generates, if any coordinate is enabled.
-    pub(crate) fn tex_gen_state(&self) -> Option<TexGenState> {
+    /// What unit `unit` generates for the next primitive, if any of its coordinates is enabled.
+    pub(crate) fn tex_gen_state_of(&self, unit: usize) -> Option<TexGenState> {
         let caps = [GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q];
-        let enabled = caps.map(|cap| self.capability(cap));
-        enabled.contains(&true).then_some(TexGenState { gen: self.server.tex_gen, enabled })
+        let enabled = caps.map(|cap| self.server.caps.is_on(super::super::units::unit_cap(cap, unit)));
+        enabled.contains(&true).then_some(TexGenState { gen: self.server.tex_gen[unit], enabled })
+    }
+
+    /// The active unit when it has texture coordinates (GL 1.3 §2.7: the fixed-function units);
+    /// beyond them → `GL_INVALID_OPERATION`, as Mesa's `glTexGen`, `glGetTexGen` and the
+    /// coordinate queries answer (measured, `multitexture.calls`).
+    pub(crate) fn coord_unit(&mut self) -> Option<usize> {
+        let unit = self.active_unit();
+        if unit >= super::MAX_TEXTURE_UNITS {
+            self.set_error(GL_INVALID_OPERATION);
+            return None;
+        }
+        Some(unit)
     }
 }
 

@@ -105,7 +105,9 @@ impl Gl {
         if target != GL_TEXTURE_ENV || pname != GL_TEXTURE_ENV_MODE || !known {
             return self.set_error(GL_INVALID_ENUM);
         }
-        self.server.textures.env_mode = mode;
+        if let Some(env) = self.active_env_mut() {
+            env.mode = mode;
+        }
         self.touch_state();
     }
 
@@ -119,7 +121,8 @@ impl Gl {
 
     /// A combiner name set, as Mesa checks it ([`super::Combine`]).
     fn set_combine(&mut self, pname: GLenum, value: GLfloat) {
-        match self.server.textures.combine.set(pname, value) {
+        let Some(env) = self.active_env_mut() else { return };
+        match env.combine.set(pname, value) {
             Ok(()) => self.touch_state(),
             Err(error) => self.set_error(error),
         }
@@ -143,7 +146,9 @@ impl Gl {
             return self.set_error(GL_INVALID_ENUM);
         }
         let Some(color) = self.needs::<4>(params) else { return };
-        self.server.textures.env_color = color.map(|c| c.clamp(0.0, 1.0));
+        if let Some(env) = self.active_env_mut() {
+            env.color = color.map(|c| c.clamp(0.0, 1.0));
+        }
         self.touch_state();
     }
 }

@@ -344,10 +344,15 @@ impl Gl {
         if self.reject_inside_begin_end() {
             return None;
         }
+        // A unit beyond the fixed-function ones answers zeros, as Mesa (measured).
+        let env = self.active_env().copied();
+        let zeros = |n: usize| vec![0.0; n];
         let values = match (target, pname) {
-            (GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE) => vec![self.server.textures.env_mode as f32],
-            (GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR) => self.server.textures.env_color.to_vec(),
-            (GL_TEXTURE_ENV, p) if super::combine::is_combine_name(p) => vec![self.server.textures.combine.get(p)],
+            (GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE) => env.map_or(zeros(1), |e| vec![e.mode as f32]),
+            (GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR) => env.map_or(zeros(4), |e| e.color.to_vec()),
+            (GL_TEXTURE_ENV, p) if super::combine::is_combine_name(p) => {
+                env.map_or(zeros(1), |e| vec![e.combine.get(p)])
+            }
             _ => {
                 self.set_error(GL_INVALID_ENUM);
                 return None;

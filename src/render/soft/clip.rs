@@ -3,6 +3,7 @@
 //! attribute of a [`RasterVertex`] is linear in clip space, so a new vertex on a plane is a
 //! plain linear mix of the two it lies between.
 
+use super::units::SoftVertex;
 use crate::gl::clip::{polygon_by, segment_by, Mix};
 use crate::render::RasterVertex;
 
@@ -17,8 +18,8 @@ const PLANES: [fn(&RasterVertex) -> f32; 6] = [
 ];
 
 /// Whether the vertex lies inside the view volume.
-pub(super) fn inside(v: &RasterVertex) -> bool {
-    PLANES.iter().all(|d| d(v) >= 0.0)
+pub(super) fn inside<V: SoftVertex>(v: &V) -> bool {
+    PLANES.iter().all(|d| d(v.raster()) >= 0.0)
 }
 
 impl Mix for RasterVertex {
@@ -37,12 +38,21 @@ impl Mix for RasterVertex {
 
 /// A triangle clipped to the view volume (Sutherland–Hodgman, one plane at a time): a convex
 /// polygon of up to nine vertices, empty when nothing is inside.
-pub(super) fn polygon(triangle: &[RasterVertex; 3]) -> Vec<RasterVertex> {
-    PLANES.iter().fold(triangle.to_vec(), |poly, d| if poly.is_empty() { poly } else { polygon_by(&poly, d) })
+pub(super) fn polygon<V: SoftVertex>(triangle: &[V; 3]) -> Vec<V> {
+    PLANES.iter().fold(
+        triangle.to_vec(),
+        |poly, d| {
+            if poly.is_empty() {
+                poly
+            } else {
+                polygon_by(&poly, |v: &V| d(v.raster()))
+            }
+        },
+    )
 }
 
 /// A line segment clipped to the view volume (Liang–Barsky), or `None` when nothing of it is
 /// inside.
-pub(super) fn line(a: &RasterVertex, b: &RasterVertex) -> Option<(RasterVertex, RasterVertex)> {
-    segment_by(*a, *b, PLANES)
+pub(super) fn line<V: SoftVertex>(a: &V, b: &V) -> Option<(V, V)> {
+    segment_by(*a, *b, PLANES.map(|d| move |v: &V| d(v.raster())))
 }

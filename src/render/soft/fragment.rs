@@ -1,54 +1,74 @@
-//! GL's per-fragment operations before the depth test, for the CPU rasteriser: unit 0's
-//! texture with the texture environment (GL 1.1 spec §3.8.9, tables 3.17 and 3.18; `GL_ADD`
-//! from GL 1.3), fog (§3.9), the polygon stipple (§3.5.6), the coverage of smooth points and
+//! GL's per-fragment operations before the depth test, for the CPU rasteriser: each drawing
+//! unit's texture with its texture environment in unit order (GL 1.1 spec §3.8.9, tables 3.17
+//! and 3.18; `GL_ADD` from GL 1.3; GL 1.3 §3.8.15's units), fog (§3.9), the polygon stipple (§3.5.6), the coverage of smooth points and
 //! lines (Mesa's, `render/smooth.rs`) and the alpha test (§4.1.3). The same operations in the
 //! same order as `shaders/fragment.wgsl` and `shaders/raster.wgsl` on the GPU.
 
 use super::framebuffer::compare;
 use super::sampler::Sampler;
+use super::units::UnitCoords;
 use crate::gl::consts::*;
-use crate::gl::{BoundTexture, Fog};
+use crate::gl::{BoundTexture, Fog, MAX_TEXTURE_UNITS};
 use crate::render::assemble::{FragmentState, Smooth};
 
-/// A fragment's interpolated values (see [`crate::render::RasterVertex`]).
+/// A fragment's interpolated values (see [`crate::render::RasterVertex`]), with units 1 to 7's
+/// coordinates where the batch draws with them (`()` where it does not).
 #[derive(Clone, Copy, Debug, Default)]
-pub(super) struct Fragment {
+pub(super) struct Fragment<U = ()> {
     pub color: [f32; 4],
     pub secondary: [f32; 4],
     pub tex: [f32; 4],
+    pub units: U,
     pub fog: f32,
     pub aa: [f32; 4],
 }
 
-/// How `tex` changes one pixel right and one pixel down (for the texture's level of detail).
+/// How `tex` (and the units' coordinates) change one pixel right and one pixel down (for the
+/// textures' level of detail).
 #[derive(Clone, Copy, Debug, Default)]
-pub(super) struct TexSlope {
+pub(super) struct TexSlope<U = ()> {
     pub dx: [f32; 4],
     pub dy: [f32; 4],
+    pub units_dx: U,
+    pub units_dy: U,
 }
 
 /// A batch's fragment state, ready to shade fragments.
 pub(super) struct Program<'a> {
     state: &'a FragmentState,
     sampler: Option<Sampler<'a>>,
+    /// One sampler for each of [`FragmentState::more_textures`].
+    more_samplers: Vec<Sampler<'a>>,
 }
 
 impl<'a> Program<'a> {
     pub fn new(state: &'a FragmentState) -> Self {
-        Self { state, sampler: state.texture.as_ref().map(Sampler::new) }
+        let more_samplers = state.more_textures.iter().map(|(_, t)| Sampler::new(t)).collect();
+        Self { state, sampler: state.texture.as_ref().map(Sampler::new), more_samplers }
     }
 
     /// Whether fragments read a texture (and so need [`TexSlope`]).
     pub fn textured(&self) -> bool {
-        self.sampler.is_some()
+        self.sampler.is_some() || !self.more_samplers.is_empty()
+    }
+
+    /// Whether units beyond unit 0 draw (their coordinates are needed).
+    pub fn multi_unit(&self) -> bool {
+        !self.more_samplers.is_empty()
     }
 
     /// The fragment's colour before blending, or `None` where GL discards it; `(x, row)` is
     /// its window column and its GL row (counted from the bottom).
-    pub fn shade(&self, f: &Fragment, slope: &TexSlope, (x, row): (u32, u32)) -> Option<[f32; 4]> {
+    pub fn shade<U: UnitCoords>(&self, f: &Fragment<U>, slope: &TexSlope<U>, (x, row): (u32, u32)) -> Option<[f32; 4]> {
         let mut color = f.color;
-        if let (Some(sampler), Some(texture)) = (&self.sampler, &self.state.texture) {
-            color = apply_env(texture, color, texel(texture, sampler, f.tex, slope));
+        if self.multi_unit() {
+            color = self.units(f, slope);
+        } else if let (Some(sampler), Some(texture)) = (&self.sampler, &self.state.texture) {
+            color = apply_env(
+                texture,
+                color,
+                texel(texture, sampler, f.tex, &TexSlope { dx: slope.dx, dy: slope.dy, ..TexSlope::default() }),
+            );
         }
         color = color_sum(color, f.secondary);
         if let Some(fog) = &self.state.fog {
@@ -69,6 +89,42 @@ impl<'a> Program<'a> {
             }
         }
         Some(color)
+    }
+}
+
+impl Program<'_> {
+    /// Every drawing unit in order, each applying its environment to the previous one's result
+    /// (GL 1.3 §3.8.15; the first to the fragment's colour); `GL_COMBINE`'s `GL_TEXTUREn`
+    /// reads unit n's texel (GL 1.4's crossbar), zero for a unit that does not draw.
+    fn units<U: UnitCoords>(&self, f: &Fragment<U>, slope: &TexSlope<U>) -> [f32; 4] {
+        let mut texels = [[0.0; 4]; MAX_TEXTURE_UNITS];
+        let mut drawing: Vec<(usize, &BoundTexture)> = Vec::with_capacity(MAX_TEXTURE_UNITS);
+        if let (Some(sampler), Some(texture)) = (&self.sampler, &self.state.texture) {
+            let unit_slope = TexSlope { dx: slope.dx, dy: slope.dy, ..TexSlope::default() };
+            texels[0] = texel(texture, sampler, f.tex, &unit_slope);
+            drawing.push((0, texture));
+        }
+        for ((unit, texture), sampler) in self.state.more_textures.iter().zip(&self.more_samplers) {
+            let k = unit - 1;
+            let unit_slope = TexSlope { dx: slope.units_dx.unit(k), dy: slope.units_dy.unit(k), ..TexSlope::default() };
+            texels[*unit] = texel(texture, sampler, f.units.unit(k), &unit_slope);
+            drawing.push((*unit, texture));
+        }
+        let drawn = |unit: usize| drawing.iter().any(|(u, _)| *u == unit);
+        let source = |unit: usize| match drawing.iter().find(|(u, _)| *u == unit) {
+            Some((_, t)) if drawn(unit) => crate::gl::texture_source(t.base_format, texels[unit]),
+            _ => [0.0; 4],
+        };
+        let mut color = f.color;
+        for (unit, texture) in &drawing {
+            color = if texture.env_mode == GL_COMBINE {
+                let own = crate::gl::texture_source(texture.base_format, texels[*unit]);
+                texture.combine.apply_on_unit(own, [color, f.color], texture.env_color, &source)
+            } else {
+                apply_env(texture, color, texels[*unit])
+            };
+        }
+        color
     }
 }
 

@@ -25,6 +25,7 @@ mod primitives;
 mod sampler;
 #[cfg(test)]
 mod tests;
+mod units;
 
 use super::assemble::{assemble, viewport_in_target, Batch, DrawList, Op, Topology};
 use super::Image;
@@ -32,6 +33,7 @@ use crate::gl::consts::GL_STENCIL;
 use crate::gl::{Accumulation, FragmentTests, Frame, WindowImage};
 use fragment::{Fragment, Program, TexSlope};
 use framebuffer::{ColorWrite, Framebuffer};
+use units::{MultiVertex, SoftVertex, UnitCoords};
 
 /// Renders a recorded frame on the CPU: every mesh evaluated by the CPU tessellator, the
 /// frame assembled ([`assemble`]) and rasterised ([`rasterize`]).
@@ -110,7 +112,7 @@ impl Canvas {
                     let window = self.fb.window_image();
                     let points = super::pixel_copy::copy_vertices(copy, &window);
                     let batch = super::pixel_copy::copy_batch(batch, &window, 0, points.len() as u32);
-                    draw_vertices(&mut self.fb, list, &batch, &points);
+                    draw_vertices(&mut self.fb, list, (&batch, usize::MAX), &points);
                 }
             }
         }
@@ -163,11 +165,17 @@ fn intersect(a: [u32; 4], b: [u32; 4]) -> Option<[u32; 4]> {
 fn draw_batch(fb: &mut Framebuffer, list: &DrawList, batch: &Batch) {
     let first = batch.first as usize;
     let Some(vertices) = list.vertices.get(first..first + batch.count as usize) else { return };
-    draw_vertices(fb, list, batch, vertices);
+    draw_vertices(fb, list, (batch, first), vertices);
 }
 
-/// Draws `vertices` with `batch`'s topology and state (its own range ignored).
-fn draw_vertices(fb: &mut Framebuffer, list: &DrawList, batch: &Batch, vertices: &[super::RasterVertex]) {
+/// Draws `vertices`, which start at `first` in the list (`usize::MAX`: none of the list's),
+/// with `batch`'s topology and state (its own range ignored).
+fn draw_vertices(
+    fb: &mut Framebuffer,
+    list: &DrawList,
+    (batch, first): (&Batch, usize),
+    vertices: &[super::RasterVertex],
+) {
     let size = (fb.width, fb.height);
     let Some(mut scissor) = viewport_in_target(batch.viewport, size) else { return };
     if let Some(b) = batch.tests.scissor {
@@ -187,12 +195,22 @@ fn draw_vertices(fb: &mut Framebuffer, list: &DrawList, batch: &Batch, vertices:
         tests: batch.tests,
         program,
     };
-    match batch.topology {
-        Topology::Triangles => {
-            vertices.chunks_exact(3).for_each(|t| primitives::triangle(&mut target, [t[0], t[1], t[2]]))
-        }
-        Topology::Lines => vertices.chunks_exact(2).for_each(|l| primitives::line(&mut target, &l[0], &l[1])),
-        Topology::Points => vertices.iter().for_each(|p| primitives::point(&mut target, p)),
+    if target.program.as_ref().is_some_and(Program::multi_unit) {
+        // The units' coordinates beside each vertex (zero where the list has none).
+        let units = |k: usize| first.checked_add(k).and_then(|i| list.unit_tex.get(i)).copied().unwrap_or_default();
+        let multi: Vec<MultiVertex> =
+            vertices.iter().enumerate().map(|(k, &vertex)| MultiVertex { vertex, units: units(k) }).collect();
+        return draw_topology(&mut target, batch.topology, &multi);
+    }
+    draw_topology(&mut target, batch.topology, vertices);
+}
+
+/// Draws `vertices` as triangles, lines or points.
+fn draw_topology<V: SoftVertex>(target: &mut Target<'_>, topology: Topology, vertices: &[V]) {
+    match topology {
+        Topology::Triangles => vertices.chunks_exact(3).for_each(|t| primitives::triangle(target, [t[0], t[1], t[2]])),
+        Topology::Lines => vertices.chunks_exact(2).for_each(|l| primitives::line(target, &l[0], &l[1])),
+        Topology::Points => vertices.iter().for_each(|p| primitives::point(target, p)),
     }
 }
 
@@ -243,7 +261,7 @@ impl Target<'_> {
     /// GL's order: the fragment's colour and the alpha test, the stencil test, the depth test
     /// (stencil operations on each outcome), then the write. Without a stencil test a fragment
     /// failing the depth test is dropped before it is shaded (nothing observable differs).
-    fn fragment(&mut self, (x, y): (u32, u32), z: f32, f: &Fragment, slope: &TexSlope) {
+    fn fragment<U: UnitCoords>(&mut self, (x, y): (u32, u32), z: f32, f: &Fragment<U>, slope: &TexSlope<U>) {
         let index = y as usize * self.fb.width as usize + x as usize;
         let stencil = self.tests.stencil;
         if stencil.is_none() && !self.fb.depth_passes(index, z, self.depth_test) {

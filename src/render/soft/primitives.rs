@@ -9,8 +9,8 @@
 
 use super::clip;
 use super::fragment::{Fragment, TexSlope};
+use super::units::{SoftVertex, UnitCoords};
 use super::Target;
-use crate::render::RasterVertex;
 
 /// Sub-pixel steps per pixel.
 const SUBPIXEL: f32 = 256.0;
@@ -22,11 +22,20 @@ const WINDOW_LIMIT: f32 = (1 << 20) as f32;
 /// first vertex's values plus the weighted differences to the others: a value equal at every
 /// vertex comes out exactly (a flat colour of 0.9 stays 0.9 and is stored as 230, as llvmpipe's
 /// plane equations give it, where a weighted sum may give 0.8999999 and 229).
-fn mix<const N: usize>(v: &[&RasterVertex; N], weights: [f32; N]) -> Fragment {
-    let first = v[0];
-    let mut f =
-        Fragment { color: first.color, secondary: first.secondary, tex: first.tex, fog: first.fog, aa: first.aa };
-    for (v, w) in v.iter().zip(weights).skip(1) {
+fn mix<V: SoftVertex, const N: usize>(v: &[&V; N], weights: [f32; N]) -> Fragment<V::Units> {
+    let first_units = v[0].units();
+    let first = v[0].raster();
+    let mut f = Fragment {
+        color: first.color,
+        secondary: first.secondary,
+        tex: first.tex,
+        units: first_units,
+        fog: first.fog,
+        aa: first.aa,
+    };
+    for (vertex, w) in v.iter().zip(weights).skip(1) {
+        f.units.add_weighted(&first_units, &vertex.units(), w);
+        let v = vertex.raster();
         for k in 0..4 {
             f.color[k] += (v.color[k] - first.color[k]) * w;
             f.secondary[k] += (v.secondary[k] - first.secondary[k]) * w;
@@ -49,12 +58,18 @@ fn perspective<const N: usize>(l: [f32; N], inv_w: [f32; N]) -> [f32; N] {
 }
 
 /// The texture coordinates' change from `here` to `there` (fragments of the same primitive).
-fn tex_delta(here: &Fragment, there: &Fragment) -> [f32; 4] {
-    std::array::from_fn(|k| there.tex[k] - here.tex[k])
+fn tex_delta<U: UnitCoords>(here: &Fragment<U>, there: &Fragment<U>) -> ([f32; 4], U) {
+    (std::array::from_fn(|k| there.tex[k] - here.tex[k]), U::delta(&here.units, &there.units))
+}
+
+/// The slope of a fragment with neighbours `right` and `below`.
+fn slope<U: UnitCoords>(f: &Fragment<U>, right: &Fragment<U>, below: &Fragment<U>) -> TexSlope<U> {
+    let ((dx, units_dx), (dy, units_dy)) = (tex_delta(f, right), tex_delta(f, below));
+    TexSlope { dx, dy, units_dx, units_dy }
 }
 
 /// Draws a triangle, clipped to the view volume when it crosses it.
-pub(super) fn triangle(target: &mut Target<'_>, v: [RasterVertex; 3]) {
+pub(super) fn triangle<V: SoftVertex>(target: &mut Target<'_>, v: [V; 3]) {
     if v.iter().all(clip::inside) {
         fill(target, [&v[0], &v[1], &v[2]]);
         return;
@@ -66,8 +81,8 @@ pub(super) fn triangle(target: &mut Target<'_>, v: [RasterVertex; 3]) {
 }
 
 /// A triangle inside the view volume: its pixels within the scissor.
-fn fill(target: &mut Target<'_>, mut v: [&RasterVertex; 3]) {
-    let mut p = v.map(|v| target.map.project(v.clip));
+fn fill<V: SoftVertex>(target: &mut Target<'_>, mut v: [&V; 3]) {
+    let mut p = v.map(|v| target.map.project(v.raster().clip));
     if p.iter().flatten().any(|c| !c.is_finite()) {
         return;
     }
@@ -134,7 +149,7 @@ fn fill(target: &mut Target<'_>, mut v: [&RasterVertex; 3]) {
                 let slope = if textured {
                     let right = at(std::array::from_fn(|k| e[k] + dx[k] * step)).1;
                     let below = at(std::array::from_fn(|k| e[k] + dy[k] * step)).1;
-                    TexSlope { dx: tex_delta(&f, &right), dy: tex_delta(&f, &below) }
+                    slope(&f, &right, &below)
                 } else {
                     TexSlope::default()
                 };
@@ -154,14 +169,14 @@ fn fill(target: &mut Target<'_>, mut v: [&RasterVertex; 3]) {
 /// below or to the left in GL's window (llvmpipe draws a line as a one-pixel-wide quad under
 /// its fill rule; measured on Mesa 22.3: a horizontal line at window y = 30 fills row 29, a
 /// vertical one at x = 30 column 29).
-pub(super) fn line(target: &mut Target<'_>, a: &RasterVertex, b: &RasterVertex) {
+pub(super) fn line<V: SoftVertex>(target: &mut Target<'_>, a: &V, b: &V) {
     let Some((a, b)) = clip::line(a, b) else { return };
     let snap = |mut p: [f32; 4]| {
         p[0] = (p[0] * SUBPIXEL).round() / SUBPIXEL;
         p[1] = (p[1] * SUBPIXEL).round() / SUBPIXEL;
         p
     };
-    let (pa, pb) = (snap(target.map.project(a.clip)), snap(target.map.project(b.clip)));
+    let (pa, pb) = (snap(target.map.project(a.raster().clip)), snap(target.map.project(b.raster().clip)));
     if pa.iter().chain(&pb).any(|c| !c.is_finite()) {
         return;
     }
@@ -201,12 +216,11 @@ pub(super) fn line(target: &mut Target<'_>, a: &RasterVertex, b: &RasterVertex) 
         let f = at(t);
         let depth = pa[2] + t * (pb[2] - pa[2]);
         let slope = if textured {
-            let along = tex_delta(&f, &at(t + 1.0 / length.abs()));
-            if x_major {
-                TexSlope { dx: along, dy: [0.0; 4] }
-            } else {
-                TexSlope { dx: [0.0; 4], dy: along }
-            }
+            let (along, units) = tex_delta(&f, &at(t + 1.0 / length.abs()));
+            let none = ([0.0; 4], V::Units::default());
+            let ((dx, units_dx), (dy, units_dy)) =
+                if x_major { ((along, units), none) } else { (none, (along, units)) };
+            TexSlope { dx, dy, units_dx, units_dy }
         } else {
             TexSlope::default()
         };
@@ -217,11 +231,11 @@ pub(super) fn line(target: &mut Target<'_>, a: &RasterVertex, b: &RasterVertex) 
 
 /// Draws a one-pixel point: the pixel holding its window position, if the point lies inside
 /// the view volume (§3.3).
-pub(super) fn point(target: &mut Target<'_>, v: &RasterVertex) {
+pub(super) fn point<V: SoftVertex>(target: &mut Target<'_>, v: &V) {
     if !clip::inside(v) {
         return;
     }
-    let p = target.map.project(v.clip);
+    let p = target.map.project(v.raster().clip);
     if p.iter().any(|c| !c.is_finite()) {
         return;
     }

@@ -27,7 +27,7 @@ fn list(topology: Topology, vertices: Vec<RasterVertex>, blend: Option<crate::gl
         blend,
         tests: crate::gl::FragmentTests::default(),
     };
-    DrawList { vertices, ops: vec![Op::Draw(batch)], fragments: Vec::new(), pixel_copies: Vec::new() }
+    DrawList { vertices, ops: vec![Op::Draw(batch)], ..DrawList::default() }
 }
 
 /// The red channel of GL window pixel (x, y).
@@ -104,7 +104,7 @@ proptest! {
             .collect();
         for topology in [Topology::Triangles, Topology::Lines, Topology::Points] {
             let mut l = list(topology, vertices.clone(), None);
-            l.fragments.push(FragmentState { texture: Some(crate::gl::BoundTexture::blank()), fog: None, alpha_test: None, smooth: crate::render::Smooth::None, polygon_stipple: None });
+            l.fragments.push(FragmentState { texture: Some(crate::gl::BoundTexture::blank()), more_textures: Vec::new(), fog: None, alpha_test: None, smooth: crate::render::Smooth::None, polygon_stipple: None });
             if let Op::Draw(b) = &mut l.ops[0] { b.fragment = Some(0); }
             let image = rasterize(&l, W, H);
             prop_assert_eq!(image.pixels.len(), (W * H * 4) as usize);

@@ -86,6 +86,7 @@ static const struct enum_name query_enums[] = {
     Q(GL_PRIMARY_COLOR), Q(GL_PREVIOUS), Q(GL_DOT3_RGB), Q(GL_DOT3_RGBA), Q(GL_SRC_ALPHA),
     Q(GL_CLAMP_TO_BORDER), Q(GL_MIRRORED_REPEAT), Q(GL_GENERATE_MIPMAP), Q(GL_GENERATE_MIPMAP_HINT),
     Q(GL_ONE_MINUS_SRC_ALPHA), Q(GL_TEXTURE0), Q(GL_TEXTURE1), Q(GL_TEXTURE7), Q(GL_TEXTURE8),
+    Q(GL_CLIENT_ACTIVE_TEXTURE), Q(GL_MAX_TEXTURE_UNITS),
     Q(GL_UNSIGNED_BYTE_2_3_3_REV), Q(GL_UNSIGNED_SHORT_5_6_5_REV), Q(GL_UNSIGNED_SHORT_4_4_4_4_REV),
     Q(GL_UNSIGNED_SHORT_5_5_5_1), Q(GL_UNSIGNED_SHORT_1_5_5_5_REV), Q(GL_UNSIGNED_INT_8_8_8_8),
     Q(GL_UNSIGNED_INT_10_10_10_2), Q(GL_UNSIGNED_INT_2_10_10_10_REV), Q(GL_RED_BIAS),
@@ -220,6 +221,11 @@ static const struct qcall calls[] = {
     C(glConvolutionParameterfv, "eeF"), C(glColorTableParameteriv, "eeI"),
     C(glGetHistogramParameteriv, ">eeI"), C(glGetMinmaxParameterfv, ">eeF"),
     C(glGetConvolutionParameteriv, ">eeI"), C(glGetColorTableParameterfv, ">eeF"),
+    C(glActiveTexture, "e"), C(glClientActiveTexture, "e"), C(glMultiTexCoord4f, "effff"),
+    C(glMultiTexCoord2f, "eff"), C(glMultiTexCoord1d, "ed"), C(glMultiTexCoord3i, "eiii"),
+    C(glMultiTexCoord4s, "eiiii"), C(glMultiTexCoord2fv, "eF"), C(glMultiTexCoord3dv, "eD"),
+    C(glMultiTexCoord4iv, "eI"), C(glEnableClientState, "e"), C(glDisableClientState, "e"),
+    C(glLoadIdentity, ""), C(glTranslatef, "fff"), C(glRasterPos2f, "ff"),
     { NULL, NULL, NULL }
 };
 
@@ -270,6 +276,14 @@ static void invoke(const char *sig, fn_ptr fn, const struct qargs *x)
     else if (!strcmp(sig, "f")) ((void (*)(GLfloat))fn)(f[0]);
     else if (!strcmp(sig, "ef")) ((void (*)(GLuint, GLfloat))fn)(u[0], f[0]);
     else if (!strcmp(sig, "fe")) ((void (*)(GLfloat, GLuint))fn)(f[0], u[0]);
+    else if (!strcmp(sig, "eff")) ((void (*)(GLuint, GLfloat, GLfloat))fn)(u[0], f[0], f[1]);
+    else if (!strcmp(sig, "ff")) ((void (*)(GLfloat, GLfloat))fn)(f[0], f[1]);
+    else if (!strcmp(sig, "effff"))
+        ((void (*)(GLuint, GLfloat, GLfloat, GLfloat, GLfloat))fn)(u[0], f[0], f[1], f[2], f[3]);
+    else if (!strcmp(sig, "ed")) ((void (*)(GLuint, GLdouble))fn)(u[0], d[0]);
+    else if (!strcmp(sig, "eiii")) ((void (*)(GLuint, GLuint, GLuint, GLuint))fn)(u[0], u[1], u[2], u[3]);
+    else if (!strcmp(sig, "eiiii"))
+        ((void (*)(GLuint, GLuint, GLuint, GLuint, GLuint))fn)(u[0], u[1], u[2], u[3], u[4]);
     else if (!strcmp(sig, "eef")) ((void (*)(GLuint, GLuint, GLfloat))fn)(u[0], u[1], f[0]);
     else if (!strcmp(sig, "fff")) ((void (*)(GLfloat, GLfloat, GLfloat))fn)(f[0], f[1], f[2]);
     else if (!strcmp(sig, "ffff")) ((void (*)(GLfloat, GLfloat, GLfloat, GLfloat))fn)(f[0], f[1], f[2], f[3]);
