@@ -1234,6 +1234,8 @@ fn fog_coordinates_are_mesas_on_both_rasterisers() {
         assert_eq!(gl.get_error(), GL_NO_ERROR);
         let frame = gl.take_frame();
         assert_diagonal_is_mesas(&mut renderer, &frame, &expected, 2, &format!("set-up {k}"));
+    }
+}
 
 /// GL 1.3's texture units (§3.8.15), each enabled unit applying its environment to the previous
 /// unit's result, against what Mesa 22.3 (llvmpipe, OSMesa) drew for the same calls
