@@ -350,6 +350,8 @@ static void state_call(void) {
     case 2: glBegin(ANY(modes)); break;
     case 3: glEnd(); break;
     case 4: glVertex3f(f(), f(), f()); glVertex3fv(fp()); glNormal3fv(fp()); glColor4fv(fp());
+            glTexEnvf(pick(2) ? GL_TEXTURE_FILTER_CONTROL : GL_TEXTURE_ENV, GL_TEXTURE_LOD_BIAS, f());
+            glTexParameterf(GL_TEXTURE_2D, pick(2) ? GL_TEXTURE_LOD_BIAS : (GLenum)next(), f());
             glFogCoordf(f()); glFogCoordfv(fp()); if (!pick(8)) glFogi(GL_FOG_COORD_SRC, pick(2) ? GL_FOG_COORD : (GLint)next()); break;
     case 5: glGetFloatv(ANY(pnames), pick(6) ? buf : NULL); glGetIntegerv(ANY(pnames), (GLint *)names); query_call(); break;
     case 6: glLightfv(GL_LIGHT0 + pick(9), GL_AMBIENT + pick(10), fp()); glMaterialfv(GL_FRONT + pick(3), GL_EMISSION + pick(4), fp()); break;

@@ -17,7 +17,7 @@ use super::consts::*;
 use super::lists::ListCommand;
 use super::pixel_unpack::format_components;
 use super::pixels::PixelStore;
-use super::state_var::{int_limit, put_enum, row, Kind, StateVar};
+use super::state_var::{int_limit, limit, put_enum, row, Kind, StateVar};
 use super::types::*;
 pub use super::units::{MAX_COMBINED_TEXTURE_IMAGE_UNITS, MAX_TEXTURE_UNITS};
 use super::Gl;
@@ -111,15 +111,22 @@ pub struct TexParams {
     pub generate_mipmap: bool,
 }
 
-/// GL 1.2's LOD clamp (§3.8.7): `GL_TEXTURE_MIN_LOD` and `GL_TEXTURE_MAX_LOD`, compared and
-/// hashed by their bits (the samplers are cached by their parameters).
+/// GL 1.2's LOD clamp (§3.8.7): `GL_TEXTURE_MIN_LOD` and `GL_TEXTURE_MAX_LOD`, and GL 1.4's
+/// `GL_TEXTURE_LOD_BIAS` of the object, compared and hashed by their bits (the samplers are
+/// cached by their parameters).
 #[derive(Clone, Copy, Debug)]
 pub struct LodRange {
     /// The least λ (initially −1000).
     pub min: f32,
     /// The greatest λ (initially 1000).
     pub max: f32,
+    /// GL 1.4's `GL_TEXTURE_LOD_BIAS` of the object (initially 0): added to λ with the unit's
+    /// bias before the clamp (GL 1.4 eq. 3.16, [`BoundTexture::lod_bias`]).
+    pub bias: f32,
 }
+
+/// `GL_MAX_TEXTURE_LOD_BIAS`: llvmpipe's 16.
+pub const MAX_TEXTURE_LOD_BIAS: f32 = 16.0;
 
 impl LodRange {
     /// λ clamped to the range (GL 1.2 eq. 3.15; a NaN λ stays NaN).
@@ -137,7 +144,8 @@ impl LodRange {
 
 impl PartialEq for LodRange {
     fn eq(&self, other: &Self) -> bool {
-        (self.min.to_bits(), self.max.to_bits()) == (other.min.to_bits(), other.max.to_bits())
+        let bits = |l: &Self| (l.min.to_bits(), l.max.to_bits(), l.bias.to_bits());
+        bits(self) == bits(other)
     }
 }
 
@@ -145,7 +153,7 @@ impl Eq for LodRange {}
 
 impl std::hash::Hash for LodRange {
     fn hash<H: std::hash::Hasher>(&self, state: &mut H) {
-        (self.min.to_bits(), self.max.to_bits()).hash(state);
+        (self.min.to_bits(), self.max.to_bits(), self.bias.to_bits()).hash(state);
     }
 }
 
@@ -159,7 +167,7 @@ impl Default for TexParams {
             wrap_r: GL_REPEAT,
             base_level: 0,
             max_level: 1000,
-            lod: LodRange { min: -1000.0, max: 1000.0 },
+            lod: LodRange { min: -1000.0, max: 1000.0, bias: 0.0 },
             generate_mipmap: false,
         }
     }
@@ -195,11 +203,13 @@ pub(crate) struct TexEnv {
     pub(crate) mode: GLenum,
     pub(crate) color: [f32; 4],
     pub(crate) combine: Combine,
+    /// GL 1.4's `GL_TEXTURE_FILTER_CONTROL` `GL_TEXTURE_LOD_BIAS` of the unit (initially 0).
+    pub(crate) lod_bias: f32,
 }
 
 impl Default for TexEnv {
     fn default() -> Self {
-        Self { mode: GL_MODULATE, color: [0.0; 4], combine: Combine::default() }
+        Self { mode: GL_MODULATE, color: [0.0; 4], combine: Combine::default(), lod_bias: 0.0 }
     }
 }
 
@@ -231,6 +241,9 @@ pub struct BoundTexture {
     pub border_color: [f32; 4],
     /// The top of the texture matrix stack.
     pub matrix: Mat4,
+    /// GL 1.4's bias added to λ (eq. 3.16): the object's `GL_TEXTURE_LOD_BIAS` plus the unit's,
+    /// clamped to ±`GL_MAX_TEXTURE_LOD_BIAS`.
+    pub lod_bias: f32,
     /// 1, 2 or 3: a `GL_TEXTURE_1D` texture (t is not used), `GL_TEXTURE_2D` or
     /// `GL_TEXTURE_3D` (r is used).
     pub dims: u8,
@@ -252,6 +265,7 @@ impl BoundTexture {
             env_color: [0.0; 4],
             border_color: [0.0; 4],
             matrix: Mat4::IDENTITY,
+            lod_bias: 0.0,
             dims: 2,
             generate: None,
         }
@@ -268,6 +282,7 @@ impl PartialEq for BoundTexture {
             && self.env_color == other.env_color
             && self.border_color == other.border_color
             && self.matrix == other.matrix
+            && self.lod_bias.to_bits() == other.lod_bias.to_bits()
             && self.dims == other.dims
             && self.generate == other.generate
     }
@@ -672,6 +687,8 @@ impl Gl {
             env_color: env.color,
             border_color: object.extra.sampling().0.map(|c| c.clamp(0.0, 1.0)),
             matrix,
+            // `f32::min`/`max`: a NaN bias must not panic (it samples as no bias, NaN λ aside).
+            lod_bias: (object.params.lod.bias + env.lod_bias).min(MAX_TEXTURE_LOD_BIAS).max(-MAX_TEXTURE_LOD_BIAS),
             dims,
             generate,
         })
@@ -712,6 +729,12 @@ impl Gl {
             }
         }
         self.server.textures.env = saved.env;
+        // Mesa 22.3's glPopAttrib(GL_TEXTURE_BIT) leaves every unit's GL_TEXTURE_LOD_BIAS of
+        // GL_TEXTURE_FILTER_CONTROL 0, whatever was pushed (measured with OSMesa: 1.5 pushed,
+        // 0 after the pop), though GL files the bias under the group; gleval does the same.
+        for env in &mut self.server.textures.env {
+            env.lod_bias = 0.0;
+        }
         self.server.active_texture = saved.active;
         self.server.matrices.set_unit(self.active_unit());
         self.touch_state();
@@ -797,6 +820,7 @@ pub(crate) static GET_ROWS: &[StateVar] = &[
     row(GL_TEXTURE_BINDING_3D, 1, Kind::Int, |gl, o| put_enum(o, gl.server.textures.bound[gl.active_unit()][2])),
     int_limit!(GL_MAX_TEXTURE_SIZE, MAX_TEXTURE_SIZE),
     int_limit!(GL_MAX_3D_TEXTURE_SIZE, MAX_3D_TEXTURE_SIZE),
+    limit!(GL_MAX_TEXTURE_LOD_BIAS, MAX_TEXTURE_LOD_BIAS),
     row(GL_ACTIVE_TEXTURE, 1, Kind::Int, |gl, o| put_enum(o, gl.server.active_texture)),
     int_limit!(GL_MAX_TEXTURE_UNITS, MAX_TEXTURE_UNITS),
 ];

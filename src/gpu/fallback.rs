@@ -1,7 +1,8 @@
 //! What wgpu's frame rasteriser does not draw, and the honest route for it: a frame that uses
 //! the logic op, a blend WebGPU cannot express (`blend.rs`), the accumulation buffer, a swap in the middle of the frame, more than one
-//! colour buffer, or a texture unit beyond unit 0 (GL 1.3's units: the WGSL fragment stage
-//! binds one texture) is drawn by the CPU rasteriser (`render/soft`, GL's rules, scored against Mesa)
+//! colour buffer, a texture unit beyond unit 0 (GL 1.3's units: the WGSL fragment stage
+//! binds one texture), or a texture with GL 1.4's LOD bias (wgpu's samplers take none, and
+//! WGSL's `textureSampleBias` clamps otherwise than GL's eq. 3.16) is drawn by the CPU rasteriser (`render/soft`, GL's rules, scored against Mesa)
 //! and its picture handed back as the wgpu render's. WebGPU has no logic op at all; the
 //! accumulation buffer and front and back targets would need a texture each and passes between
 //! them, not built (README, "Still missing"). The stencil and scissor tests and the write masks
@@ -39,7 +40,11 @@ pub(crate) fn needs_cpu(frame: &Frame) -> bool {
     }
     let mut buffers = None;
     let last = frame.commands.len().saturating_sub(1);
-    let states = frame.states.iter().any(|s| !plain(&s.fragment_tests, &mut buffers) || !s.more_textures.is_empty())
+    let biased = |s: &crate::gl::DrawState| s.texture.as_ref().is_some_and(|t| t.lod_bias != 0.0);
+    let states = frame
+        .states
+        .iter()
+        .any(|s| !plain(&s.fragment_tests, &mut buffers) || !s.more_textures.is_empty() || biased(s))
         || !super::blend::expressible(frame.states.iter().map(|s| &s.blend));
     states
         || frame.commands.iter().enumerate().any(|(k, command)| match command {

@@ -1418,3 +1418,143 @@ fn multitexture_is_mesas_on_both_rasterisers() {
         assert_diagonal_is_mesas(&mut renderer, &frame, expected, 2, &format!("set-up {setup}"));
     }
 }
+
+/// GL 1.4's LOD bias on both rasterisers (wgpu through the CPU rasteriser, `gpu/fallback.rs`),
+/// against what Mesa 22.3 (llvmpipe, OSMesa) drew for the same calls
+/// (`tests/reference/pixels/lod_bias.c` prints these values): levels red, green, blue and white
+/// on an 8 × 8 square at λ = log2(scale), biased by the unit's bias and the object's (their sum
+/// clamped to ±16), then clamped by `GL_TEXTURE_MAX_LOD`; the diagonal's pixels, within 2/255.
+#[test]
+fn lod_bias_is_mesas_on_both_rasterisers() {
+    // (filter, unit bias, object bias, scale, max LOD)
+    let setups = [
+        (GL_NEAREST_MIPMAP_NEAREST, 1.0, 0.0, 1.0, 1000.0),
+        (GL_NEAREST_MIPMAP_NEAREST, 0.0, 2.0, 1.0, 1000.0),
+        (GL_NEAREST_MIPMAP_NEAREST, 1.5, 1.5, 1.0, 1000.0),
+        (GL_LINEAR_MIPMAP_LINEAR, 0.5, 0.0, 1.0, 1000.0),
+        (GL_NEAREST_MIPMAP_NEAREST, 20.0, 0.0, 1.0, 1000.0),
+        (GL_NEAREST_MIPMAP_NEAREST, -1.0, 0.0, 2.0, 1000.0),
+        (GL_NEAREST_MIPMAP_NEAREST, 2.0, 0.0, 1.0, 1.0),
+        (GL_LINEAR_MIPMAP_LINEAR, -0.25, 1.0, 1.0, 1000.0),
+    ];
+    let mesa: [[[u8; 4]; 8]; 8] = [
+        [
+            [0, 255, 0, 255],
+            [0, 255, 0, 255],
+            [0, 255, 0, 255],
+            [0, 255, 0, 255],
+            [0, 255, 0, 255],
+            [0, 255, 0, 255],
+            [0, 255, 0, 255],
+            [0, 255, 0, 255],
+        ],
+        [
+            [0, 0, 255, 255],
+            [0, 0, 255, 255],
+            [0, 0, 255, 255],
+            [0, 0, 255, 255],
+            [0, 0, 255, 255],
+            [0, 0, 255, 255],
+            [0, 0, 255, 255],
+            [0, 0, 255, 255],
+        ],
+        [
+            [255, 255, 255, 255],
+            [255, 255, 255, 255],
+            [255, 255, 255, 255],
+            [255, 255, 255, 255],
+            [255, 255, 255, 255],
+            [255, 255, 255, 255],
+            [255, 255, 255, 255],
+            [255, 255, 255, 255],
+        ],
+        [
+            [128, 128, 0, 255],
+            [128, 128, 0, 255],
+            [128, 128, 0, 255],
+            [128, 128, 0, 255],
+            [128, 128, 0, 255],
+            [128, 128, 0, 255],
+            [128, 128, 0, 255],
+            [128, 128, 0, 255],
+        ],
+        [
+            [255, 255, 255, 255],
+            [255, 255, 255, 255],
+            [255, 255, 255, 255],
+            [255, 255, 255, 255],
+            [255, 255, 255, 255],
+            [255, 255, 255, 255],
+            [255, 255, 255, 255],
+            [255, 255, 255, 255],
+        ],
+        [
+            [255, 0, 0, 255],
+            [255, 0, 0, 255],
+            [255, 0, 0, 255],
+            [255, 0, 0, 255],
+            [255, 0, 0, 255],
+            [255, 0, 0, 255],
+            [255, 0, 0, 255],
+            [255, 0, 0, 255],
+        ],
+        [
+            [0, 255, 0, 255],
+            [0, 255, 0, 255],
+            [0, 255, 0, 255],
+            [0, 255, 0, 255],
+            [0, 255, 0, 255],
+            [0, 255, 0, 255],
+            [0, 255, 0, 255],
+            [0, 255, 0, 255],
+        ],
+        [
+            [64, 191, 0, 255],
+            [64, 191, 0, 255],
+            [64, 191, 0, 255],
+            [64, 191, 0, 255],
+            [64, 191, 0, 255],
+            [64, 191, 0, 255],
+            [64, 191, 0, 255],
+            [64, 191, 0, 255],
+        ],
+    ];
+    let colours: [[u8; 3]; 4] = [[255, 0, 0], [0, 255, 0], [0, 0, 255], [255, 255, 255]];
+    let mut renderer = optional_renderer();
+    for (k, ((filter, unit, object, scale, max_lod), expected)) in setups.into_iter().zip(mesa).enumerate() {
+        let mut gl = Gl::new(8, 8);
+        gl.pixel_storei(GL_UNPACK_ALIGNMENT, 1);
+        for (level, colour) in colours.iter().enumerate() {
+            let side = 8 >> level;
+            let texels: Vec<u8> = colour.iter().copied().cycle().take(side * side * 3).collect();
+            gl.tex_image_2d(
+                GL_TEXTURE_2D,
+                level as i32,
+                GL_RGB as i32,
+                side as i32,
+                side as i32,
+                0,
+                GL_RGB,
+                GL_UNSIGNED_BYTE,
+                &texels,
+            );
+        }
+        gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE as i32);
+        gl.enable(GL_TEXTURE_2D);
+        gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter as i32);
+        gl.tex_parameterf(GL_TEXTURE_2D, GL_TEXTURE_LOD_BIAS, object);
+        gl.tex_parameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_LOD, max_lod);
+        gl.tex_envf(GL_TEXTURE_FILTER_CONTROL, GL_TEXTURE_LOD_BIAS, unit);
+        gl.begin(GL_QUADS);
+        for (s, t, x, y) in
+            [(0.0, 0.0, -1.0, -1.0), (scale, 0.0, 1.0, -1.0), (scale, scale, 1.0, 1.0), (0.0, scale, -1.0, 1.0)]
+        {
+            gl.tex_coord2f(s, t);
+            gl.vertex2f(x, y);
+        }
+        gl.end();
+        assert_eq!(gl.get_error(), GL_NO_ERROR);
+        let frame = gl.take_frame();
+        assert_diagonal_is_mesas(&mut renderer, &frame, &expected, 2, &format!("set-up {k}"));
+    }
+}

@@ -1324,6 +1324,16 @@ GLAPI void GLAPIENTRY glGetConvolutionParameteriv(GLenum target, GLenum pname, G
 GLAPI void GLAPIENTRY glSeparableFilter2D(GLenum target, GLenum internalformat, GLsizei width, GLsizei height, GLenum format, GLenum type, const GLvoid *row, const GLvoid *column);
 GLAPI void GLAPIENTRY glGetSeparableFilter(GLenum target, GLenum format, GLenum type, GLvoid *row, GLvoid *column, GLvoid *span);
 
+/* GL 1.4's texture LOD bias (GL_EXT_texture_lod_bias): the unit's under GL_TEXTURE_FILTER_CONTROL
+ * and the object's GL_TEXTURE_LOD_BIAS, added to lambda. */
+#define GL_EXT_texture_lod_bias 1
+#define GL_MAX_TEXTURE_LOD_BIAS 0x84FD
+#define GL_TEXTURE_FILTER_CONTROL 0x8500
+#define GL_TEXTURE_LOD_BIAS 0x8501
+#define GL_MAX_TEXTURE_LOD_BIAS_EXT 0x84FD
+#define GL_TEXTURE_FILTER_CONTROL_EXT 0x8500
+#define GL_TEXTURE_LOD_BIAS_EXT 0x8501
+
 /* GL 1.3's texture compression (GL_ARB_texture_compression) with no compressed format listed:
  * the generic GL_COMPRESSED_* formats are kept uncompressed, as their base formats, and the
  * compressed-image calls answer as GL does when no image is compressed. */

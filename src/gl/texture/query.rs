@@ -135,9 +135,11 @@ impl Gl {
     /// `GL_TEXTURE_PRIORITY` (clamped to [0, 1]). A short slice → `GL_INVALID_VALUE`.
     pub fn tex_parameterfv(&mut self, target: GLenum, pname: GLenum, params: &[GLfloat]) {
         match pname {
-            GL_TEXTURE_BORDER_COLOR | GL_TEXTURE_PRIORITY | GL_TEXTURE_MIN_LOD | GL_TEXTURE_MAX_LOD => {
-                self.tex_parameter_values(target, pname, params)
-            }
+            GL_TEXTURE_BORDER_COLOR
+            | GL_TEXTURE_PRIORITY
+            | GL_TEXTURE_MIN_LOD
+            | GL_TEXTURE_MAX_LOD
+            | GL_TEXTURE_LOD_BIAS => self.tex_parameter_values(target, pname, params),
             _ => match params.first() {
                 // Mesa truncates an enum given as a float (9729.75 is GL_LINEAR), and rounds a level.
                 Some(&p) if matches!(pname, GL_TEXTURE_BASE_LEVEL | GL_TEXTURE_MAX_LEVEL) => {
@@ -156,7 +158,7 @@ impl Gl {
                 let v: Vec<f32> = params.iter().take(4).map(|p| p.normalized()).collect();
                 self.tex_parameter_values(target, pname, &v);
             }
-            GL_TEXTURE_PRIORITY | GL_TEXTURE_MIN_LOD | GL_TEXTURE_MAX_LOD => {
+            GL_TEXTURE_PRIORITY | GL_TEXTURE_MIN_LOD | GL_TEXTURE_MAX_LOD | GL_TEXTURE_LOD_BIAS => {
                 let v: Vec<f32> = params.iter().take(1).map(|&p| p as f32).collect();
                 self.tex_parameter_values(target, pname, &v);
             }
@@ -185,10 +187,10 @@ impl Gl {
             _ => {
                 let object = self.bound_object_mut(t as u8 + 1);
                 let lod = &mut object.params.lod;
-                if pname == GL_TEXTURE_MIN_LOD {
-                    lod.min = values[0];
-                } else {
-                    lod.max = values[0];
+                match pname {
+                    GL_TEXTURE_MIN_LOD => lod.min = values[0],
+                    GL_TEXTURE_MAX_LOD => lod.max = values[0],
+                    _ => lod.bias = values[0],
                 }
             }
         }
@@ -211,8 +213,8 @@ impl Gl {
             for (out, x) in params.iter_mut().zip(v) {
                 *out = match pname {
                     GL_TEXTURE_BORDER_COLOR | GL_TEXTURE_PRIORITY => float_to_int(x.into()),
-                    // Mesa's IROUND of the float LOD limits.
-                    GL_TEXTURE_MIN_LOD | GL_TEXTURE_MAX_LOD => iround(x.into()),
+                    // Mesa's IROUND of the float LOD limits and bias.
+                    GL_TEXTURE_MIN_LOD | GL_TEXTURE_MAX_LOD | GL_TEXTURE_LOD_BIAS => iround(x.into()),
                     _ => c_int(x),
                 };
             }
@@ -240,6 +242,7 @@ impl Gl {
             GL_TEXTURE_MAX_LEVEL => vec![p.max_level as f32],
             GL_TEXTURE_MIN_LOD => vec![p.lod.min],
             GL_TEXTURE_MAX_LOD => vec![p.lod.max],
+            GL_TEXTURE_LOD_BIAS => vec![p.lod.bias],
             GL_TEXTURE_BORDER_COLOR => object.extra.border_color.map(|c| c.clamp(0.0, 1.0)).to_vec(),
             GL_TEXTURE_PRIORITY => vec![object.extra.priority],
             GL_TEXTURE_RESIDENT => vec![1.0],
@@ -353,6 +356,7 @@ impl Gl {
             (GL_TEXTURE_ENV, p) if super::combine::is_combine_name(p) => {
                 env.map_or(zeros(1), |e| vec![e.combine.get(p)])
             }
+            (GL_TEXTURE_FILTER_CONTROL, GL_TEXTURE_LOD_BIAS) => env.map_or(zeros(1), |e| vec![e.lod_bias]),
             _ => {
                 self.set_error(GL_INVALID_ENUM);
                 return None;

@@ -31,8 +31,9 @@ impl<'a> Sampler<'a> {
         let (w, h) = (base.width as f32, base.height as f32);
         let scale = |v: [f32; 3]| (v[0] * w).hypot(v[1] * h).hypot(v[2] * d);
         let rho = scale(dx).max(scale(dy));
-        // GL 1.2's LOD clamp decides between magnification and minification too (eq. 3.15).
-        let lambda = params.lod.clamp(rho.log2());
+        // GL 1.4's bias, then GL 1.2's LOD clamp, decide between magnification and
+        // minification too (eqs. 3.15 and 3.16).
+        let lambda = params.lod.clamp(rho.log2() + self.texture.lod_bias);
         // Magnification, also where ρ is 0 or not a number (λ is −∞ or NaN).
         if lambda.is_nan() || lambda <= 0.0 {
             return self.filter(base, params.mag_filter, str);
