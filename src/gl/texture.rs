@@ -687,8 +687,8 @@ impl Gl {
             env_color: env.color,
             border_color: object.extra.sampling().0.map(|c| c.clamp(0.0, 1.0)),
             matrix,
-            // `f32::min`/`max`: a NaN bias must not panic (it samples as no bias, NaN λ aside).
-            lod_bias: (object.params.lod.bias + env.lod_bias).min(MAX_TEXTURE_LOD_BIAS).max(-MAX_TEXTURE_LOD_BIAS),
+            // Constant bounds: `clamp` cannot panic (a NaN sum stays NaN, and λ with it).
+            lod_bias: (object.params.lod.bias + env.lod_bias).clamp(-MAX_TEXTURE_LOD_BIAS, MAX_TEXTURE_LOD_BIAS),
             dims,
             generate,
         })
