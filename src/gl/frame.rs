@@ -67,7 +67,7 @@ pub struct DrawState {
     /// `glPointSize`.
     pub point_size: f32,
     /// GL 1.4's point parameters, which derive each point's size from `point_size`
-    /// ([`PointParameters::derived_size`]).
+    /// ([`super::PointParameters::derived_size`]).
     pub point_parameters: super::PointParameters,
     /// `glLineWidth`.
     pub line_width: f32,
