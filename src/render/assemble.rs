@@ -100,6 +100,9 @@ pub(crate) fn viewport_in_target([x, y, w, h]: [i32; 4], (width, height): (u32, 
     (x1 > x0 && bottom > top).then_some([x0 as u32, top as u32, x1 as u32, bottom as u32])
 }
 
+/// How many of a bucket's latest fragment states a new primitive's is compared with.
+const RECENT_FRAGMENT_STATES: usize = 16;
+
 /// What a batch's fragments go through before blending: texturing, fog, the alpha test.
 #[derive(Clone, Debug, PartialEq)]
 pub struct FragmentState {
@@ -441,7 +444,11 @@ impl Assembler {
                 && f.polygon_stipple == polygon_stipple
         };
         let bucket = self.fragment_buckets.entry(fragment_bucket(state, smooth, polygon_stipple)).or_default();
-        if let Some(&found) = bucket.iter().rev().find(|&&i| same(&fragments[i as usize])) {
+        // The latest few of the bucket only: a state that never equals itself (a NaN fog or
+        // alpha reference: the fuzz driver makes them) would otherwise make every primitive
+        // search the whole bucket, quadratic in the frame.
+        if let Some(&found) = bucket.iter().rev().take(RECENT_FRAGMENT_STATES).find(|&&i| same(&fragments[i as usize]))
+        {
             return Some(found);
         }
         let (texture, fog, alpha_test) = (state.texture.clone(), state.fog, state.alpha_test);
