@@ -89,15 +89,8 @@ impl Gl {
         indices: &[&[T]],
         primcount: GLsizei,
     ) {
-        let index_type = matches!(type_, GL_UNSIGNED_BYTE | GL_UNSIGNED_SHORT | GL_UNSIGNED_INT);
-        let Some(n) = self.multi_draw_count(mode, primcount, index_type) else { return };
-        let (Some(count), Some(indices)) = (count.get(..n), indices.get(..n)) else {
-            return self.set_error(GL_INVALID_VALUE);
-        };
-        if count.iter().any(|&c| c < 0) {
-            return self.draw_error(GL_INVALID_VALUE);
-        }
-        for (&count, indices) in count.iter().zip(indices) {
+        let Some(n) = self.multi_draw_elements_count(mode, count, type_, indices.len(), primcount) else { return };
+        for (&count, indices) in count[..n].iter().zip(indices) {
             self.draw_elements(mode, count, type_, indices);
         }
     }
@@ -114,17 +107,35 @@ impl Gl {
         offsets: &[usize],
         primcount: GLsizei,
     ) {
-        let index_type = matches!(type_, GL_UNSIGNED_BYTE | GL_UNSIGNED_SHORT | GL_UNSIGNED_INT);
-        let Some(n) = self.multi_draw_count(mode, primcount, index_type) else { return };
-        let (Some(count), Some(offsets)) = (count.get(..n), offsets.get(..n)) else {
-            return self.set_error(GL_INVALID_VALUE);
-        };
-        if count.iter().any(|&c| c < 0) {
-            return self.draw_error(GL_INVALID_VALUE);
-        }
-        for (&count, &offset) in count.iter().zip(offsets) {
+        let Some(n) = self.multi_draw_elements_count(mode, count, type_, offsets.len(), primcount) else { return };
+        for (&count, &offset) in count[..n].iter().zip(offsets) {
             self.draw_elements_offset(mode, count, type_, offset);
         }
+    }
+
+    /// `glMultiDrawElements`'s checks, whatever holds the indices (client slices or buffer
+    /// offsets, `pointers` of them): [`Gl::multi_draw_count`]'s, then `count` or the pointers
+    /// shorter than `primcount` (`GL_INVALID_VALUE`), then a negative count (`GL_INVALID_VALUE`,
+    /// compiled as a draw's error). The number of draws when they pass.
+    fn multi_draw_elements_count(
+        &mut self,
+        mode: GLenum,
+        count: &[GLsizei],
+        type_: GLenum,
+        pointers: usize,
+        primcount: GLsizei,
+    ) -> Option<usize> {
+        let index_type = matches!(type_, GL_UNSIGNED_BYTE | GL_UNSIGNED_SHORT | GL_UNSIGNED_INT);
+        let n = self.multi_draw_count(mode, primcount, index_type)?;
+        if count.len() < n || pointers < n {
+            self.set_error(GL_INVALID_VALUE);
+            return None;
+        }
+        if count[..n].iter().any(|&c| c < 0) {
+            self.draw_error(GL_INVALID_VALUE);
+            return None;
+        }
+        Some(n)
     }
 
     /// The multi-draws' first checks in Mesa's order: inside `begin`/`end`, the primitive
