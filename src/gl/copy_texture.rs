@@ -11,7 +11,7 @@
 
 use super::consts::*;
 use super::lists::ListCommand;
-use super::texture::{base_format, fits_level, max_level, strip_border, target_index, TexLevel};
+use super::texture::{base_format, fits_level, image_target_of, max_level, strip_border, TexLevel};
 
 /// The base format of a `glCopyTexImage` internal format: the named colour formats of
 /// `glTexImage` (Mesa 22 refuses the component counts 1 to 4 here: `GL_INVALID_ENUM`,
@@ -124,15 +124,15 @@ impl Gl {
         if self.compiled_state_call(|| ListCommand::CopyTexture(CopyTextureCall::CopyTexImage(call))) {
             return;
         }
-        if target_index(call.target) != Some(usize::from(call.dims - 1)) {
-            return self.set_error(GL_INVALID_ENUM);
-        }
+        let Some(t) = image_target_of(call.dims, call.target) else { return self.set_error(GL_INVALID_ENUM) };
         if !(0..=max_level(call.dims)).contains(&call.level) || !(0..=1).contains(&call.border) {
             return self.set_error(GL_INVALID_VALUE);
         }
         let Some(base) = copy_base_format(call.internalformat) else { return self.set_error(GL_INVALID_ENUM) };
         let [x, y, width, height] = call.rect;
-        if !fits_level(call.dims, call.level, [width, height, 1], call.border) {
+        // A cube map's faces are square (Mesa's `_mesa_legal_texture_dimensions`).
+        let square = t.slot != super::texture::CUBE || width == height;
+        if !fits_level(call.dims, call.level, [width, height, 1], call.border) || !square {
             return self.set_error(GL_INVALID_VALUE);
         }
         let (w, h) = (width as usize, height as usize);
@@ -142,9 +142,9 @@ impl Gl {
         let base = if base == GL_DEPTH_COMPONENT { GL_LUMINANCE } else { base };
         let image = TexLevel::flat(w as u32, h as u32, texels);
         let internal = call.internalformat as GLint;
-        self.bound_object_mut(call.dims).define_level(call.level as usize, Some(image), (base, internal), 0);
-        self.image_changed(call.dims);
-        self.generate_if_base(call.dims, call.level as usize);
+        self.bound_object_mut(t.slot).define_level(t.face, call.level as usize, Some(image), (base, internal), 0);
+        self.image_changed(t.slot);
+        self.generate_if_base(t, call.level as usize);
     }
 
     /// `glCopyTexSubImage2D`: replaces the rectangle at (`xoffset`, `yoffset`) of level `level`
@@ -206,13 +206,11 @@ impl Gl {
         if self.compiled_state_call(|| ListCommand::CopyTexture(CopyTextureCall::CopyTexSubImage(call))) {
             return;
         }
-        if target_index(call.target) != Some(usize::from(call.dims - 1)) {
-            return self.set_error(GL_INVALID_ENUM);
-        }
+        let Some(t) = image_target_of(call.dims, call.target) else { return self.set_error(GL_INVALID_ENUM) };
         let [x, y, width, height] = call.rect;
-        let Some(region) = self.sub_image_box(call.dims, call.level, call.offset, [width, height, 1]) else { return };
+        let Some(region) = self.sub_image_box(t, call.level, call.offset, [width, height, 1]) else { return };
         let texels = self.window_texels([x, y], (region.size[0], region.size[1]), false);
-        self.replace_texels(call.dims, call.level as usize, region, &texels);
+        self.replace_texels(t, call.level as usize, region, &texels);
     }
 
     /// The window's `w` × `h` rectangle at (`x`, `y`) as texels, rows from the bottom, through
@@ -309,7 +307,7 @@ mod tests {
     }
 
     fn level0(gl: &mut Gl, dims: u8) -> TexLevel {
-        gl.bound_object(dims).levels[0].clone().expect("defined")
+        gl.bound_object(usize::from(dims - 1)).face(0).levels[0].clone().expect("defined")
     }
 
     #[test]

@@ -37,6 +37,7 @@ pub(crate) const KNOWN: &[GLenum] = &[
     GL_TEXTURE_1D,
     GL_TEXTURE_2D,
     GL_TEXTURE_3D,
+    GL_TEXTURE_CUBE_MAP,
     GL_POLYGON_OFFSET_FILL,
     GL_POLYGON_OFFSET_LINE,
     GL_POLYGON_OFFSET_POINT,
@@ -164,7 +165,7 @@ impl Gl {
         if unit < MAX_TEXTURE_UNITS {
             return Some(unit_cap(cap, unit));
         }
-        if !matches!(cap, GL_TEXTURE_1D | GL_TEXTURE_2D | GL_TEXTURE_3D) {
+        if !matches!(cap, GL_TEXTURE_1D | GL_TEXTURE_2D | GL_TEXTURE_3D | GL_TEXTURE_CUBE_MAP) {
             self.set_error(GL_INVALID_OPERATION);
         }
         None

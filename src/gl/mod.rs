@@ -95,7 +95,8 @@ pub use pixel_transfer::{ColorTransfer, DepthTransfer, MAX_PIXEL_MAP_TABLE};
 pub use point::PointParameters;
 pub use select::SelectHit;
 pub use texture::{
-    texture_source, BoundTexture, Combine, Combiner, TexLevel, TexParams, MAX_3D_TEXTURE_SIZE, MAX_TEXTURE_SIZE,
+    cube_face, cube_face_coords, texture_source, BoundTexture, Combine, Combiner, TexLevel, TexParams,
+    MAX_3D_TEXTURE_SIZE, MAX_TEXTURE_SIZE,
 };
 pub use texture::{TexGen, TexGenCoord, TexGenState, MAX_COMBINED_TEXTURE_IMAGE_UNITS, MAX_TEXTURE_UNITS};
 pub use variants::GlComponent;
@@ -138,7 +139,7 @@ impl Tessellator {
 
 /// The OpenGL version gleval implements, whole (`GL_VERSION` begins with it): the most a
 /// GLX or EGL context may ask for.
-pub const VERSION: (i32, i32) = (1, 2);
+pub const VERSION: (i32, i32) = (1, 3);
 
 /// The name of a GL error code (`GL_INVALID_ENUM` ...), "an unknown error" for anything else.
 #[must_use]
@@ -166,9 +167,10 @@ pub fn error_name(code: GLenum) -> &'static str {
 /// (`texture/generate.rs`), buffer objects (`buffers.rs`), occlusion queries (`occlusion.rs`),
 /// GL 1.3's texture units and GL 1.4's crossbar (`multitexture.rs`, `units.rs`,
 /// `render/soft/units.rs`; wgpu hands frames drawing with more than unit 0 to the CPU
-/// rasteriser, `gpu/fallback.rs`).
+/// rasteriser, `gpu/fallback.rs`), GL 1.3's cube maps (`texture.rs`, `render/soft/fragment.rs`;
+/// drawn by the CPU rasteriser for wgpu too) and transpose matrices (`matrix.rs`).
 const EXTENSIONS: &str =
-    "GL_ARB_multitexture GL_ARB_occlusion_query GL_ARB_point_parameters GL_ARB_texture_border_clamp GL_ARB_texture_compression GL_ARB_texture_env_add GL_ARB_texture_env_combine GL_ARB_texture_env_crossbar GL_ARB_texture_env_dot3 GL_ARB_texture_mirrored_repeat GL_ARB_vertex_buffer_object GL_ARB_window_pos GL_EXT_bgra GL_EXT_blend_color GL_EXT_blend_equation_separate GL_EXT_blend_func_separate GL_EXT_blend_minmax GL_EXT_blend_subtract GL_EXT_draw_range_elements GL_EXT_fog_coord GL_EXT_multi_draw_arrays GL_EXT_packed_pixels GL_EXT_point_parameters GL_EXT_rescale_normal GL_EXT_stencil_wrap GL_EXT_texture3D GL_EXT_texture_edge_clamp GL_EXT_texture_env_add GL_EXT_texture_env_combine GL_EXT_texture_lod_bias GL_IBM_texture_mirrored_repeat GL_NV_blend_square GL_SGIS_generate_mipmap GL_SGIS_texture_border_clamp GL_SGIS_texture_edge_clamp GL_SGIS_texture_lod";
+    "GL_ARB_multitexture GL_ARB_occlusion_query GL_ARB_point_parameters GL_ARB_texture_border_clamp GL_ARB_texture_compression GL_ARB_texture_cube_map GL_ARB_texture_env_add GL_ARB_texture_env_combine GL_ARB_texture_env_crossbar GL_ARB_texture_env_dot3 GL_ARB_texture_mirrored_repeat GL_ARB_transpose_matrix GL_ARB_vertex_buffer_object GL_ARB_window_pos GL_EXT_bgra GL_EXT_blend_color GL_EXT_blend_equation_separate GL_EXT_blend_func_separate GL_EXT_blend_minmax GL_EXT_blend_subtract GL_EXT_draw_range_elements GL_EXT_fog_coord GL_EXT_multi_draw_arrays GL_EXT_packed_pixels GL_EXT_point_parameters GL_EXT_rescale_normal GL_EXT_stencil_wrap GL_EXT_texture3D GL_EXT_texture_cube_map GL_EXT_texture_edge_clamp GL_EXT_texture_env_add GL_EXT_texture_env_combine GL_EXT_texture_lod_bias GL_IBM_texture_mirrored_repeat GL_NV_blend_square GL_SGIS_generate_mipmap GL_SGIS_texture_border_clamp GL_SGIS_texture_edge_clamp GL_SGIS_texture_lod";
 
 /// A GL context without a GPU: GL state plus the recording of what is drawn.
 ///
@@ -527,8 +529,8 @@ impl Gl {
     }
 
     /// `glGetString`: who implements this GL (`GL_VENDOR` "gleval"), on what (`GL_RENDERER`:
-    /// the tessellator in use; wgpu draws what is recorded), the version (`GL_VERSION`: "1.2"
-    /// and ours: GL 1.2 is whole, its imaging subset aside, as GL allows) and the extensions
+    /// the tessellator in use; wgpu draws what is recorded), the version (`GL_VERSION`: "1.3"
+    /// and ours: GL 1.3 is whole, GL 1.2's imaging subset aside, as GL allows) and the extensions
     /// complete beyond it
     /// (`GL_EXTENSIONS`: each extension that is whole, in `EXTENSIONS`).
     /// Another name → `GL_INVALID_ENUM` and `None` (C's NULL), as inside `begin`/`end`
@@ -543,7 +545,7 @@ impl Gl {
                 Tessellator::Cpu => "gleval (CPU tessellator, wgpu rasteriser)",
                 Tessellator::Gpu => "gleval (WGSL tessellator, wgpu rasteriser)",
             }),
-            GL_VERSION => Some(concat!("1.2 gleval ", env!("CARGO_PKG_VERSION"))),
+            GL_VERSION => Some(concat!("1.3 gleval ", env!("CARGO_PKG_VERSION"))),
             GL_EXTENSIONS => Some(EXTENSIONS),
             _ => {
                 self.set_error(GL_INVALID_ENUM);
@@ -600,11 +602,13 @@ mod tests {
             "GL_ARB_point_parameters",
             "GL_ARB_texture_border_clamp",
             "GL_ARB_texture_compression",
+            "GL_ARB_texture_cube_map",
             "GL_ARB_texture_env_add",
             "GL_ARB_texture_env_combine",
             "GL_ARB_texture_env_crossbar",
             "GL_ARB_texture_env_dot3",
             "GL_ARB_texture_mirrored_repeat",
+            "GL_ARB_transpose_matrix",
             "GL_ARB_vertex_buffer_object",
             "GL_ARB_window_pos",
             "GL_EXT_bgra",
@@ -621,6 +625,7 @@ mod tests {
             "GL_EXT_rescale_normal",
             "GL_EXT_stencil_wrap",
             "GL_EXT_texture3D",
+            "GL_EXT_texture_cube_map",
             "GL_EXT_texture_edge_clamp",
             "GL_EXT_texture_env_add",
             "GL_EXT_texture_env_combine",

@@ -189,11 +189,11 @@ impl TexParams {
 #[derive(Clone, Debug)]
 pub(crate) struct TextureAttrib {
     active: GLenum,
-    bound: [[GLuint; 3]; MAX_TEXTURE_UNITS],
+    bound: [[GLuint; TARGETS]; MAX_TEXTURE_UNITS],
     env: [TexEnv; MAX_TEXTURE_UNITS],
     tex_gen: [TexGen; MAX_TEXTURE_UNITS],
-    objects: [[ObjectSampling; 3]; MAX_TEXTURE_UNITS],
-    defaults: [ObjectSampling; 3],
+    objects: [[ObjectSampling; TARGETS]; MAX_TEXTURE_UNITS],
+    defaults: [ObjectSampling; TARGETS],
 }
 
 /// A unit's texture environment (GL 1.3 §3.8.13): `GL_TEXTURE_ENV_MODE`, `GL_TEXTURE_ENV_COLOR`
@@ -245,8 +245,12 @@ pub struct BoundTexture {
     /// clamped to ±`GL_MAX_TEXTURE_LOD_BIAS`.
     pub lod_bias: f32,
     /// 1, 2 or 3: a `GL_TEXTURE_1D` texture (t is not used), `GL_TEXTURE_2D` or
-    /// `GL_TEXTURE_3D` (r is used).
+    /// `GL_TEXTURE_3D` (r is used); 2 for a cube map.
     pub dims: u8,
+    /// A `GL_TEXTURE_CUBE_MAP` texture (GL 1.3 §3.8.6): each level holds the six faces as its
+    /// images (depth 6: +X, −X, +Y, −Y, +Z, −Z), and (s, t, r) is a direction that picks the
+    /// face and the 2D coordinates within it ([`cube_face`]).
+    pub cube_map: bool,
     /// `glTexGen`: the coordinates generated per vertex, if any is enabled.
     pub generate: Option<TexGenState>,
 }
@@ -267,6 +271,7 @@ impl BoundTexture {
             matrix: Mat4::IDENTITY,
             lod_bias: 0.0,
             dims: 2,
+            cube_map: false,
             generate: None,
         }
     }
@@ -284,6 +289,7 @@ impl PartialEq for BoundTexture {
             && self.matrix == other.matrix
             && self.lod_bias.to_bits() == other.lod_bias.to_bits()
             && self.dims == other.dims
+            && self.cube_map == other.cube_map
             && self.generate == other.generate
     }
 }
@@ -298,40 +304,84 @@ fn fresh_key() -> u64 {
 /// A texture object.
 #[derive(Clone, Debug, Default)]
 pub(super) struct TextureObject {
-    /// 1, 2 or 3 once bound to `GL_TEXTURE_1D`, `GL_TEXTURE_2D` or `GL_TEXTURE_3D`; 0 before.
-    dims: u8,
-    pub(super) levels: Vec<Option<TexLevel>>,
-    /// The base format of each level.
-    pub(super) formats: Vec<GLenum>,
+    /// The target slot ([`target_index`]) the object was first bound to; `None` before.
+    target: Option<usize>,
+    /// The images: one face, or a cube map's six (`GL_TEXTURE_CUBE_MAP_POSITIVE_X`,
+    /// `NEGATIVE_X`, `POSITIVE_Y`, `NEGATIVE_Y`, `POSITIVE_Z`, `NEGATIVE_Z`), made as defined.
+    faces: Vec<FaceImages>,
     params: TexParams,
     /// The key of the chain last made (see [`BoundTexture::key`]).
     key: u64,
     /// The complete chain, made when first drawn with (dropped when an image changes).
     complete: Option<Option<Arc<Vec<TexLevel>>>>,
-    /// Border colour, priority, internal formats.
+    /// Border colour and priority.
     extra: query::ObjectExtras,
 }
 
+/// The mipmap levels of one face of a texture (GL 1.3 §3.8.1: each face of a cube map has its
+/// own images, defined one face at a time).
+#[derive(Clone, Debug, Default)]
+pub(super) struct FaceImages {
+    pub(super) levels: Vec<Option<TexLevel>>,
+    /// The base format of each level.
+    pub(super) formats: Vec<GLenum>,
+    /// Each level's internal format and border: the border 0 but for a proxy given one (a
+    /// texture's border is stripped, [`strip_border`]).
+    level_formats: Vec<(GLint, GLint)>,
+}
+
+/// The face of a texture no image has been given.
+static NO_IMAGES: FaceImages = FaceImages { levels: Vec::new(), formats: Vec::new(), level_formats: Vec::new() };
+
+impl FaceImages {
+    /// The internal format and border level `level` was defined with (`(1, 0)`, GL's initial
+    /// internal format, if never).
+    pub(super) fn level_format(&self, level: usize) -> (GLint, GLint) {
+        self.level_formats.get(level).copied().unwrap_or((1, 0))
+    }
+
+    /// Level `level`, if defined.
+    pub(super) fn level(&self, level: usize) -> Option<&TexLevel> {
+        self.levels.get(level)?.as_ref()
+    }
+}
+
 impl TextureObject {
-    /// Sets level `level` (`None`: undefined, as a proxy too large for its level is), with its
-    /// base and internal formats and the border it keeps (0 but for a proxy).
+    /// The images of face `face` (0 but for a cube map).
+    pub(super) fn face(&self, face: usize) -> &FaceImages {
+        self.faces.get(face).unwrap_or(&NO_IMAGES)
+    }
+
+    pub(super) fn face_mut(&mut self, face: usize) -> &mut FaceImages {
+        if self.faces.len() <= face {
+            self.faces.resize(face + 1, FaceImages::default());
+        }
+        &mut self.faces[face]
+    }
+
+    /// Sets level `level` of face `face` (`None`: undefined, as a proxy too large for its
+    /// level is), with its base and internal formats and the border it keeps (0 but for a
+    /// proxy).
     pub(super) fn define_level(
         &mut self,
+        face: usize,
         level: usize,
         image: Option<TexLevel>,
         (base, internal): (GLenum, GLint),
         border: GLint,
     ) {
-        if self.levels.len() <= level {
-            self.levels.resize(level + 1, None);
-            self.formats.resize(level + 1, 0);
+        let images = self.face_mut(face);
+        if images.levels.len() <= level {
+            images.levels.resize(level + 1, None);
+            images.formats.resize(level + 1, 0);
+            images.level_formats.resize(level + 1, (1, 0));
         }
-        self.levels[level] = image;
-        self.formats[level] = base;
+        images.levels[level] = image;
+        images.formats[level] = base;
         // A generic compressed format is kept, and reported, as its base format (Mesa's
         // answer for the generic formats it keeps uncompressed).
         let internal = compressed::generic_base(internal as GLenum).map_or(internal, |b| b as GLint);
-        self.extra.set_level_format(level, internal, border);
+        images.level_formats[level] = (internal, border);
     }
 
     /// New parameters. The complete chain, and with it the key a renderer caches its upload by,
@@ -356,13 +406,14 @@ impl TextureObject {
 #[derive(Debug)]
 pub(crate) struct Textures {
     pub(super) objects: HashMap<GLuint, TextureObject>,
-    /// The default objects (name 0) of `GL_TEXTURE_1D`, `GL_TEXTURE_2D` and `GL_TEXTURE_3D`.
-    defaults: [TextureObject; 3],
-    /// `GL_PROXY_TEXTURE_1D`, `_2D` and `_3D`: levels of sizes and formats only (GL 1.1
-    /// §3.8.1), never bound or drawn.
-    proxies: [TextureObject; 3],
-    /// Each unit's `GL_TEXTURE_1D`, `_2D` and `_3D` bindings.
-    bound: Box<[[GLuint; 3]; MAX_COMBINED_TEXTURE_IMAGE_UNITS]>,
+    /// The default objects (name 0) of `GL_TEXTURE_1D`, `GL_TEXTURE_2D`, `GL_TEXTURE_3D` and
+    /// `GL_TEXTURE_CUBE_MAP`.
+    defaults: [TextureObject; TARGETS],
+    /// `GL_PROXY_TEXTURE_1D`, `_2D`, `_3D` and `_CUBE_MAP`: levels of sizes and formats only
+    /// (GL 1.1 §3.8.1), never bound or drawn.
+    proxies: [TextureObject; TARGETS],
+    /// Each unit's bindings, by target slot ([`target_index`]).
+    bound: Box<[[GLuint; TARGETS]; MAX_COMBINED_TEXTURE_IMAGE_UNITS]>,
     /// Each fixed-function unit's environment.
     pub(super) env: [TexEnv; MAX_TEXTURE_UNITS],
     max_name: GLuint,
@@ -370,36 +421,90 @@ pub(crate) struct Textures {
 
 impl Default for Textures {
     fn default() -> Self {
-        let default = |dims, key| TextureObject { dims, key, ..TextureObject::default() };
+        let default = |t, key| TextureObject { target: Some(t), key, ..TextureObject::default() };
         Self {
             objects: HashMap::new(),
-            defaults: [default(1, fresh_key()), default(2, fresh_key()), default(3, fresh_key())],
-            proxies: [default(1, 0), default(2, 0), default(3, 0)],
-            bound: Box::new([[0; 3]; MAX_COMBINED_TEXTURE_IMAGE_UNITS]),
+            defaults: std::array::from_fn(|t| default(t, fresh_key())),
+            proxies: std::array::from_fn(|t| default(t, 0)),
+            bound: Box::new([[0; TARGETS]; MAX_COMBINED_TEXTURE_IMAGE_UNITS]),
             env: [TexEnv::default(); MAX_TEXTURE_UNITS],
             max_name: 0,
         }
     }
 }
 
-/// 0 for `GL_TEXTURE_1D`, 1 for `GL_TEXTURE_2D`, 2 for `GL_TEXTURE_3D`.
+/// The texture targets an object is bound to: `GL_TEXTURE_1D`, `_2D`, `_3D` and GL 1.3's
+/// `GL_TEXTURE_CUBE_MAP`.
+pub(super) const TARGETS: usize = 4;
+
+/// The slot of `GL_TEXTURE_CUBE_MAP` ([`target_index`]).
+pub(super) const CUBE: usize = 3;
+
+/// A target's slot: 0 for `GL_TEXTURE_1D`, 1 for `GL_TEXTURE_2D`, 2 for `GL_TEXTURE_3D`, 3
+/// ([`CUBE`]) for `GL_TEXTURE_CUBE_MAP`.
 pub(super) fn target_index(target: GLenum) -> Option<usize> {
     match target {
         GL_TEXTURE_1D => Some(0),
         GL_TEXTURE_2D => Some(1),
         GL_TEXTURE_3D => Some(2),
+        GL_TEXTURE_CUBE_MAP => Some(CUBE),
         _ => None,
     }
 }
 
-/// 0 for `GL_PROXY_TEXTURE_1D`, 1 for `_2D`, 2 for `_3D`.
+/// The slot of a proxy target: 0 for `GL_PROXY_TEXTURE_1D`, 1 for `_2D`, 2 for `_3D`, 3 for
+/// `_CUBE_MAP`.
 pub(super) fn proxy_index(target: GLenum) -> Option<usize> {
     match target {
         GL_PROXY_TEXTURE_1D => Some(0),
         GL_PROXY_TEXTURE_2D => Some(1),
         GL_PROXY_TEXTURE_3D => Some(2),
+        GL_PROXY_TEXTURE_CUBE_MAP => Some(CUBE),
         _ => None,
     }
+}
+
+/// The dimensions of the images of the target in `slot`: a cube map's faces are 2D.
+pub(super) fn slot_dims(slot: usize) -> u8 {
+    [1, 2, 3, 2][slot]
+}
+
+/// Where an image call's target puts its image (GL 1.3 §3.8.1): the bound object's slot, and
+/// the face of a cube map (0 for every other target).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) struct ImageTarget {
+    pub(super) slot: usize,
+    pub(super) face: usize,
+}
+
+impl ImageTarget {
+    /// The dimensions of the images it holds.
+    pub(super) fn dims(self) -> u8 {
+        slot_dims(self.slot)
+    }
+}
+
+/// The image target `target` names: `GL_TEXTURE_1D`, `_2D`, `_3D` or one of a cube map's six
+/// faces (`GL_TEXTURE_CUBE_MAP` itself holds no image).
+pub(super) fn image_target(target: GLenum) -> Option<ImageTarget> {
+    let slot = match target {
+        GL_TEXTURE_CUBE_MAP_POSITIVE_X..=GL_TEXTURE_CUBE_MAP_NEGATIVE_Z => {
+            return Some(ImageTarget { slot: CUBE, face: (target - GL_TEXTURE_CUBE_MAP_POSITIVE_X) as usize })
+        }
+        GL_TEXTURE_CUBE_MAP => return None,
+        _ => target_index(target)?,
+    };
+    Some(ImageTarget { slot, face: 0 })
+}
+
+/// The image target of a `glTexImage{dims}D`-shaped call.
+pub(super) fn image_target_of(dims: u8, target: GLenum) -> Option<ImageTarget> {
+    image_target(target).filter(|t| t.dims() == dims)
+}
+
+/// The proxy slot of a `glTexImage{dims}D`-shaped call.
+pub(super) fn proxy_of(dims: u8, target: GLenum) -> Option<usize> {
+    proxy_index(target).filter(|&p| slot_dims(p) == dims)
 }
 
 /// Whether an image of `size` (width, height, depth) with `border` fits `level` (Mesa's
@@ -581,8 +686,8 @@ impl Gl {
         }
     }
 
-    /// `glBindTexture`: binds `texture` (0: the target's default) to `GL_TEXTURE_1D` or
-    /// `GL_TEXTURE_2D`, creating it on first use. Another target → `GL_INVALID_ENUM`; an
+    /// `glBindTexture`: binds `texture` (0: the target's default) to `GL_TEXTURE_1D`, `_2D`,
+    /// `_3D` or `_CUBE_MAP`, creating it on first use. Another target → `GL_INVALID_ENUM`; an
     /// object made for the other target → `GL_INVALID_OPERATION`.
     pub fn bind_texture(&mut self, target: GLenum, texture: GLuint) {
         if self.compiled_state_call(|| ListCommand::Texture(TextureCall::BindTexture(target, texture))) {
@@ -591,13 +696,13 @@ impl Gl {
         let Some(t) = target_index(target) else { return self.set_error(GL_INVALID_ENUM) };
         if texture != 0 {
             let object = self.server.textures.objects.entry(texture).or_default();
-            match object.dims {
-                0 => {
-                    object.dims = t as u8 + 1;
+            match object.target {
+                None => {
+                    object.target = Some(t);
                     object.key = fresh_key();
                 }
-                d if usize::from(d) != t + 1 => return self.set_error(GL_INVALID_OPERATION),
-                _ => {}
+                Some(first) if first != t => return self.set_error(GL_INVALID_OPERATION),
+                Some(_) => {}
             }
             self.server.textures.max_name = self.server.textures.max_name.max(texture);
         }
@@ -632,7 +737,7 @@ impl Gl {
         if self.reject_inside_begin_end() {
             return GL_FALSE;
         }
-        let bound = self.server.textures.objects.get(&texture).is_some_and(|o| o.dims != 0);
+        let bound = self.server.textures.objects.get(&texture).is_some_and(|o| o.target.is_some());
         if bound {
             GL_TRUE
         } else {
@@ -652,35 +757,34 @@ impl Gl {
     }
 
     /// The texture unit `unit` draws the next primitive with: the bound object of its enabled
-    /// target (`GL_TEXTURE_3D` before `GL_TEXTURE_2D` before `GL_TEXTURE_1D`, GL 1.2 §3.8.15),
-    /// if its mipmap chain is complete (§3.8.10; an incomplete texture disables the unit), with
-    /// the unit's environment, texture matrix and coordinate generation.
+    /// target of the highest priority (`GL_TEXTURE_CUBE_MAP`, `GL_TEXTURE_3D`, `GL_TEXTURE_2D`,
+    /// `GL_TEXTURE_1D`, GL 1.3 §3.8.16) whose mipmap chain is complete (§3.8.10), with the
+    /// unit's environment, texture matrix and coordinate generation. Mesa's
+    /// `update_ff_texture_state` passes over an incomplete target to the next enabled one, and
+    /// a unit with none complete is disabled.
     pub(crate) fn bound_texture_of(&mut self, unit: usize) -> Option<BoundTexture> {
-        let on = |gl: &Self, cap| gl.server.caps.is_on(super::units::unit_cap(cap, unit));
-        let dims = if on(self, GL_TEXTURE_3D) {
-            3
-        } else if on(self, GL_TEXTURE_2D) {
-            2
-        } else if on(self, GL_TEXTURE_1D) {
-            1
-        } else {
-            return None;
-        };
+        const PRIORITY: [(GLenum, usize); TARGETS] =
+            [(GL_TEXTURE_CUBE_MAP, CUBE), (GL_TEXTURE_3D, 2), (GL_TEXTURE_2D, 1), (GL_TEXTURE_1D, 0)];
+        let caps = &self.server.caps;
+        let enabled = PRIORITY.map(|(cap, t)| caps.is_on(super::units::unit_cap(cap, unit)).then_some(t));
+        let (t, levels) = enabled.into_iter().flatten().find_map(|t| {
+            let object = self.unit_object_mut(unit, t);
+            if object.complete.is_none() {
+                // A new chain (an image, the levels or the filter changed): a new key, so
+                // that a renderer uploads it again.
+                object.complete = Some(complete_object_chain(object));
+                object.key = fresh_key();
+            }
+            Some((t, object.complete.clone().flatten()?))
+        })?;
         let matrix = self.server.matrices.texture_of(unit);
         let generate = self.tex_gen_state_of(unit);
         let env = self.server.textures.env[unit];
-        let object = self.unit_object_mut(unit, dims);
-        if object.complete.is_none() {
-            // A new chain (an image, the levels or the filter changed): a new key, so that a
-            // renderer uploads it again.
-            object.complete = Some(complete_chain(&object.levels, &object.formats, &object.params));
-            object.key = fresh_key();
-        }
-        let levels = object.complete.clone().flatten()?;
+        let object = self.unit_object(unit, t);
         Some(BoundTexture {
             key: object.key,
             levels,
-            base_format: object.formats[object.params.base_level as usize],
+            base_format: object.face(0).formats[object.params.base_level as usize],
             params: object.params,
             env_mode: env.mode,
             combine: env.combine,
@@ -689,7 +793,8 @@ impl Gl {
             matrix,
             // Constant bounds: `clamp` cannot panic (a NaN sum stays NaN, and λ with it).
             lod_bias: (object.params.lod.bias + env.lod_bias).clamp(-MAX_TEXTURE_LOD_BIAS, MAX_TEXTURE_LOD_BIAS),
-            dims,
+            dims: slot_dims(t),
+            cube_map: t == CUBE,
             generate,
         })
     }
@@ -705,7 +810,7 @@ impl Gl {
             bound: std::array::from_fn(|unit| textures.bound[unit]),
             env: textures.env,
             tex_gen: self.server.tex_gen,
-            objects: std::array::from_fn(|unit| [1, 2, 3].map(|dims| sampling(self.unit_object(unit, dims)))),
+            objects: std::array::from_fn(|unit| std::array::from_fn(|t| sampling(self.unit_object(unit, t)))),
             defaults: textures.defaults.each_ref().map(sampling),
         }
     }
@@ -724,8 +829,8 @@ impl Gl {
         for (unit, (bound, objects)) in saved.bound.into_iter().zip(saved.objects).enumerate() {
             let exists = |name: GLuint| name == 0 || self.server.textures.objects.contains_key(&name);
             self.server.textures.bound[unit] = bound.map(|name| if exists(name) { name } else { 0 });
-            for (dims, sampling) in [1, 2, 3].into_iter().zip(objects) {
-                restore(self.unit_object_mut(unit, dims), sampling);
+            for (t, sampling) in objects.into_iter().enumerate() {
+                restore(self.unit_object_mut(unit, t), sampling);
             }
         }
         self.server.textures.env = saved.env;
@@ -740,22 +845,20 @@ impl Gl {
         self.touch_state();
     }
 
-    /// The object bound to the active unit's target of `dims` dimensions.
-    pub(super) fn bound_object(&self, dims: u8) -> &TextureObject {
-        self.unit_object(self.active_unit(), dims)
+    /// The object bound to the active unit's target in slot `t` ([`target_index`]).
+    pub(super) fn bound_object(&self, t: usize) -> &TextureObject {
+        self.unit_object(self.active_unit(), t)
     }
 
-    /// The object bound to `unit`'s target of `dims` dimensions.
-    fn unit_object(&self, unit: usize, dims: u8) -> &TextureObject {
-        let t = usize::from(dims - 1);
+    /// The object bound to `unit`'s target in slot `t`.
+    fn unit_object(&self, unit: usize, t: usize) -> &TextureObject {
         match self.server.textures.bound[unit][t] {
             0 => &self.server.textures.defaults[t],
             name => &self.server.textures.objects[&name],
         }
     }
 
-    fn unit_object_mut(&mut self, unit: usize, dims: u8) -> &mut TextureObject {
-        let t = usize::from(dims - 1);
+    fn unit_object_mut(&mut self, unit: usize, t: usize) -> &mut TextureObject {
         match self.server.textures.bound[unit][t] {
             0 => &mut self.server.textures.defaults[t],
             name => self.server.textures.objects.get_mut(&name).expect("a bound texture exists"),
@@ -766,20 +869,50 @@ impl Gl {
     /// `gluBuild*Mipmap*` read them as `glGetTexImage` would).
     #[cfg(test)]
     pub(crate) fn bound_levels(&mut self, dims: u8) -> Vec<Option<TexLevel>> {
-        self.bound_object_mut(dims).levels.clone()
+        self.bound_object(usize::from(dims - 1)).face(0).levels.clone()
     }
 
-    pub(super) fn bound_object_mut(&mut self, dims: u8) -> &mut TextureObject {
-        self.unit_object_mut(self.active_unit(), dims)
+    pub(super) fn bound_object_mut(&mut self, t: usize) -> &mut TextureObject {
+        self.unit_object_mut(self.active_unit(), t)
     }
 
-    /// A level of the bound object changed: a new chain, under a new key (the renderer uploads
-    /// again).
-    pub(super) fn image_changed(&mut self, dims: u8) {
-        let object = self.bound_object_mut(dims);
+    /// A level of the object bound in slot `t` changed: a new chain, under a new key (the
+    /// renderer uploads again).
+    pub(super) fn image_changed(&mut self, t: usize) {
+        let object = self.bound_object_mut(t);
         object.complete = None;
         self.touch_state();
     }
+}
+
+/// The complete chain of an object, from its base level (GL 1.3 §3.8.10): one face's, or a
+/// cube map's when it is "cube complete" (six faces of the same square size and base format,
+/// each complete), its six faces made the images of each level.
+fn complete_object_chain(object: &TextureObject) -> Option<Arc<Vec<TexLevel>>> {
+    if object.target != Some(CUBE) {
+        let face = object.face(0);
+        return complete_chain(&face.levels, &face.formats, &object.params);
+    }
+    let faces: Vec<Arc<Vec<TexLevel>>> = (0..6)
+        .map(|f| complete_chain(&object.face(f).levels, &object.face(f).formats, &object.params))
+        .collect::<Option<_>>()?;
+    let base = usize::try_from(object.params.base_level).ok()?;
+    let format = object.face(0).formats[base];
+    let same = |f: usize| {
+        faces[f].len() == faces[0].len()
+            && faces[f][0].width == faces[0][0].width
+            && faces[f][0].height == faces[0][0].height
+            && object.face(f).formats[base] == format
+    };
+    if faces[0][0].width != faces[0][0].height || !(1..6).all(same) {
+        return None;
+    }
+    let levels = (0..faces[0].len()).map(|k| {
+        let (width, height) = (faces[0][k].width, faces[0][k].height);
+        let texels = faces.iter().flat_map(|face| face[k].texels.iter().copied()).collect();
+        TexLevel { width, height, depth: 6, texels }
+    });
+    Some(Arc::new(levels.collect()))
 }
 
 /// Level 0 and, when the filter uses mipmaps, every level down to 1×1(×1) with the sizes and
@@ -812,13 +945,50 @@ fn complete_chain(levels: &[Option<TexLevel>], formats: &[GLenum], params: &TexP
     Some(Arc::new(chain))
 }
 
+/// The face a direction (s, t, r) selects in a cube map (GL 1.3 §3.8.6, table 3.19): the
+/// axis of the largest magnitude, ties going to x before y before z as llvmpipe breaks them;
+/// and the 2D coordinates there ([`cube_face_coords`]).
+#[must_use]
+pub fn cube_face(r: [f32; 3]) -> (usize, [f32; 2]) {
+    let [ax, ay, az] = r.map(f32::abs);
+    let axis = if ax >= ay && ax >= az {
+        0
+    } else if ay >= az {
+        1
+    } else {
+        2
+    };
+    let face = 2 * axis + usize::from(r[axis] < 0.0);
+    (face, cube_face_coords(face, r))
+}
+
+/// The coordinates of direction `r` on cube face `face` (table 3.19's sc, tc and ma):
+/// ((sc / |ma| + 1) / 2, (tc / |ma| + 1) / 2).
+#[must_use]
+pub fn cube_face_coords(face: usize, [rx, ry, rz]: [f32; 3]) -> [f32; 2] {
+    let (sc, tc, ma) = match face {
+        0 => (-rz, -ry, rx),
+        1 => (rz, -ry, rx),
+        2 => (rx, rz, ry),
+        3 => (rx, -rz, ry),
+        4 => (rx, -ry, rz),
+        _ => (-rx, -ry, rz),
+    };
+    let ma = ma.abs();
+    [(sc / ma + 1.0) * 0.5, (tc / ma + 1.0) * 0.5]
+}
+
 /// The texture bindings' `glGet` rows (GL 1.1 table 6.9, GL 1.2's 3D binding) and the size
 /// limits.
 pub(crate) static GET_ROWS: &[StateVar] = &[
     row(GL_TEXTURE_BINDING_1D, 1, Kind::Int, |gl, o| put_enum(o, gl.server.textures.bound[gl.active_unit()][0])),
     row(GL_TEXTURE_BINDING_2D, 1, Kind::Int, |gl, o| put_enum(o, gl.server.textures.bound[gl.active_unit()][1])),
     row(GL_TEXTURE_BINDING_3D, 1, Kind::Int, |gl, o| put_enum(o, gl.server.textures.bound[gl.active_unit()][2])),
+    row(GL_TEXTURE_BINDING_CUBE_MAP, 1, Kind::Int, |gl, o| {
+        put_enum(o, gl.server.textures.bound[gl.active_unit()][CUBE]);
+    }),
     int_limit!(GL_MAX_TEXTURE_SIZE, MAX_TEXTURE_SIZE),
+    int_limit!(GL_MAX_CUBE_MAP_TEXTURE_SIZE, MAX_TEXTURE_SIZE),
     int_limit!(GL_MAX_3D_TEXTURE_SIZE, MAX_3D_TEXTURE_SIZE),
     limit!(GL_MAX_TEXTURE_LOD_BIAS, MAX_TEXTURE_LOD_BIAS),
     row(GL_ACTIVE_TEXTURE, 1, Kind::Int, |gl, o| put_enum(o, gl.server.active_texture)),

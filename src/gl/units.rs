@@ -22,6 +22,7 @@ pub(crate) const UNIT_ENABLES: &[GLenum] = &[
     GL_TEXTURE_1D,
     GL_TEXTURE_2D,
     GL_TEXTURE_3D,
+    GL_TEXTURE_CUBE_MAP,
     GL_TEXTURE_GEN_S,
     GL_TEXTURE_GEN_T,
     GL_TEXTURE_GEN_R,

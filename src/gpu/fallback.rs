@@ -1,8 +1,9 @@
 //! What wgpu's frame rasteriser does not draw, and the honest route for it: a frame that uses
 //! the logic op, a blend WebGPU cannot express (`blend.rs`), the accumulation buffer, a swap in the middle of the frame, more than one
 //! colour buffer, a texture unit beyond unit 0 (GL 1.3's units: the WGSL fragment stage
-//! binds one texture), or a texture with GL 1.4's LOD bias (wgpu's samplers take none, and
-//! WGSL's `textureSampleBias` clamps otherwise than GL's eq. 3.16) is drawn by the CPU rasteriser (`render/soft`, GL's rules, scored against Mesa)
+//! binds one texture), a texture with GL 1.4's LOD bias (wgpu's samplers take none, and
+//! WGSL's `textureSampleBias` clamps otherwise than GL's eq. 3.16), or a cube map (GL 1.3: the
+//! WGSL fragment stage binds a 2D and a 3D image, not yet a cube) is drawn by the CPU rasteriser (`render/soft`, GL's rules, scored against Mesa)
 //! and its picture handed back as the wgpu render's. WebGPU has no logic op at all; the
 //! accumulation buffer and front and back targets would need a texture each and passes between
 //! them, not built (README, "Still missing"). The stencil and scissor tests and the write masks
@@ -40,7 +41,7 @@ pub(crate) fn needs_cpu(frame: &Frame) -> bool {
     }
     let mut buffers = None;
     let last = frame.commands.len().saturating_sub(1);
-    let biased = |s: &crate::gl::DrawState| s.texture.as_ref().is_some_and(|t| t.lod_bias != 0.0);
+    let biased = |s: &crate::gl::DrawState| s.texture.as_ref().is_some_and(|t| t.lod_bias != 0.0 || t.cube_map);
     let states = frame
         .states
         .iter()

@@ -1558,3 +1558,98 @@ fn lod_bias_is_mesas_on_both_rasterisers() {
         assert_diagonal_is_mesas(&mut renderer, &frame, &expected, 2, &format!("set-up {k}"));
     }
 }
+
+/// GL 1.3's cube maps drawn by both rasterisers, against what Mesa 22.3 (llvmpipe, OSMesa) drew
+/// for the same calls (`tests/reference/pixels/cube_map.c` prints these values): six 2 × 2
+/// faces whose texels name the face and the texel, on an 8 × 8 square whose directions point
+/// at each face (0-5, nearest; 6 and 7 linear), a direction that crosses from +Y to ±X along
+/// the diagonal (8), and an incomplete cube map: the unit draws with the enabled 2D texture
+/// (9), or untextured without one (10), and the completed cube map goes first again (11).
+#[test]
+fn cube_maps_are_mesas_on_both_rasterisers() {
+    let mut renderer = optional_renderer();
+    #[rustfmt::skip]
+    let mesa: [[[u8; 4]; 8]; 12] = [
+        [[20, 120, 120, 255], [20, 120, 120, 255], [20, 120, 120, 255], [20, 120, 120, 255], [20, 0, 0, 255], [20, 0, 0, 255], [20, 0, 0, 255], [20, 0, 0, 255]],
+        [[60, 0, 120, 255], [60, 0, 120, 255], [60, 0, 120, 255], [60, 0, 120, 255], [60, 120, 0, 255], [60, 120, 0, 255], [60, 120, 0, 255], [60, 120, 0, 255]],
+        [[100, 0, 0, 255], [100, 0, 0, 255], [100, 0, 0, 255], [100, 0, 0, 255], [100, 120, 120, 255], [100, 120, 120, 255], [100, 120, 120, 255], [100, 120, 120, 255]],
+        [[140, 0, 120, 255], [140, 0, 120, 255], [140, 0, 120, 255], [140, 0, 120, 255], [140, 120, 0, 255], [140, 120, 0, 255], [140, 120, 0, 255], [140, 120, 0, 255]],
+        [[180, 0, 120, 255], [180, 0, 120, 255], [180, 0, 120, 255], [180, 0, 120, 255], [180, 120, 0, 255], [180, 120, 0, 255], [180, 120, 0, 255], [180, 120, 0, 255]],
+        [[220, 120, 120, 255], [220, 120, 120, 255], [220, 120, 120, 255], [220, 120, 120, 255], [220, 0, 0, 255], [220, 0, 0, 255], [220, 0, 0, 255], [220, 0, 0, 255]],
+        [[20, 120, 120, 255], [20, 120, 120, 255], [20, 105, 105, 255], [20, 75, 75, 255], [20, 45, 45, 255], [20, 15, 15, 255], [20, 0, 0, 255], [20, 0, 0, 255]],
+        [[220, 120, 120, 255], [220, 120, 120, 255], [220, 105, 105, 255], [220, 75, 75, 255], [220, 45, 45, 255], [220, 15, 15, 255], [220, 0, 0, 255], [220, 0, 0, 255]],
+        [[60, 0, 0, 255], [60, 0, 0, 255], [100, 0, 0, 255], [100, 0, 0, 255], [100, 120, 120, 255], [100, 120, 120, 255], [20, 0, 0, 255], [20, 0, 0, 255]],
+        [[0, 255, 0, 255], [0, 255, 0, 255], [0, 255, 0, 255], [0, 255, 0, 255], [0, 255, 0, 255], [0, 255, 0, 255], [0, 255, 0, 255], [0, 255, 0, 255]],
+        [[255, 0, 255, 255], [255, 0, 255, 255], [255, 0, 255, 255], [255, 0, 255, 255], [255, 0, 255, 255], [255, 0, 255, 255], [255, 0, 255, 255], [255, 0, 255, 255]],
+        [[0, 0, 255, 255], [0, 0, 255, 255], [0, 0, 255, 255], [0, 0, 255, 255], [0, 0, 255, 255], [0, 0, 255, 255], [0, 0, 255, 255], [0, 0, 255, 255]],
+    ];
+    // The square with direction component `axis` = `sign` and the next two (x, y, z order
+    // after it) the square's x and y, scaled.
+    let square = |gl: &mut Gl, axis: usize, sign: f32, (sx, sy): (f32, f32)| {
+        gl.begin(GL_QUADS);
+        for (x, y) in [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)] {
+            let mut d = [0.0; 3];
+            d[axis] = sign;
+            d[(axis + 1) % 3] = x * sx;
+            d[(axis + 2) % 3] = y * sy;
+            gl.tex_coord3f(d[0], d[1], d[2]);
+            gl.vertex2f(x, y);
+        }
+        gl.end();
+    };
+    let mut gl = Gl::new(8, 8);
+    let mut frames = Vec::new();
+    gl.pixel_storei(GL_UNPACK_ALIGNMENT, 1);
+    gl.bind_texture(GL_TEXTURE_CUBE_MAP, 1);
+    for face in 0..6u8 {
+        let texels: Vec<u8> = (0..4).flat_map(|i| [40 * face + 20, 120 * (i & 1), 120 * (i >> 1)]).collect();
+        let target = GL_TEXTURE_CUBE_MAP_POSITIVE_X + GLenum::from(face);
+        gl.tex_image_2d(target, 0, GL_RGB as i32, 2, 2, 0, GL_RGB, GL_UNSIGNED_BYTE, &texels);
+    }
+    let filter = |gl: &mut Gl, filter: GLenum| {
+        gl.tex_parameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, filter as i32);
+        gl.tex_parameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER, filter as i32);
+    };
+    filter(&mut gl, GL_NEAREST);
+    gl.tex_parameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE as i32);
+    gl.tex_parameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE as i32);
+    gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE as i32);
+    gl.enable(GL_TEXTURE_CUBE_MAP);
+    for face in 0..6 {
+        square(&mut gl, face / 2, if face % 2 == 1 { -1.0 } else { 1.0 }, (1.0, 1.0));
+        frames.push(gl.take_frame());
+    }
+    filter(&mut gl, GL_LINEAR);
+    square(&mut gl, 0, 1.0, (1.0, 1.0));
+    frames.push(gl.take_frame());
+    square(&mut gl, 2, -1.0, (1.0, 1.0));
+    frames.push(gl.take_frame());
+    filter(&mut gl, GL_NEAREST);
+    square(&mut gl, 1, 0.5, (0.9, 1.0));
+    frames.push(gl.take_frame());
+    let (blue, green) = ([0u8, 0, 255], [0u8, 255, 0]);
+    gl.bind_texture(GL_TEXTURE_CUBE_MAP, 2);
+    for face in 0..5 {
+        let target = GL_TEXTURE_CUBE_MAP_POSITIVE_X + face;
+        gl.tex_image_2d(target, 0, GL_RGB as i32, 1, 1, 0, GL_RGB, GL_UNSIGNED_BYTE, &blue);
+    }
+    gl.tex_parameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_NEAREST as i32);
+    gl.bind_texture(GL_TEXTURE_2D, 3);
+    gl.tex_image_2d(GL_TEXTURE_2D, 0, GL_RGB as i32, 1, 1, 0, GL_RGB, GL_UNSIGNED_BYTE, &green);
+    gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST as i32);
+    gl.enable(GL_TEXTURE_2D);
+    gl.color3f(1.0, 0.0, 1.0);
+    square(&mut gl, 0, 1.0, (1.0, 1.0));
+    frames.push(gl.take_frame());
+    gl.disable(GL_TEXTURE_2D);
+    square(&mut gl, 0, 1.0, (1.0, 1.0));
+    frames.push(gl.take_frame());
+    gl.tex_image_2d(GL_TEXTURE_CUBE_MAP_NEGATIVE_Z, 0, GL_RGB as i32, 1, 1, 0, GL_RGB, GL_UNSIGNED_BYTE, &blue);
+    gl.enable(GL_TEXTURE_2D);
+    square(&mut gl, 0, 1.0, (1.0, 1.0));
+    frames.push(gl.take_frame());
+    assert_eq!(gl.get_error(), GL_NO_ERROR);
+    for (k, (frame, expected)) in frames.iter().zip(&mesa).enumerate() {
+        assert_diagonal_is_mesas(&mut renderer, frame, expected, 1, &format!("set-up {k}"));
+    }
+}

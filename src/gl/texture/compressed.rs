@@ -18,7 +18,7 @@ use super::super::lists::ListCommand;
 use super::super::state_var::{int_limit, row, Kind, StateVar};
 use super::super::types::*;
 use super::super::Gl;
-use super::{max_level, proxy_index, target_index};
+use super::{image_target, image_target_of, max_level, proxy_index};
 
 /// The base format a generic compressed internal format is kept in (GL 1.3 table 3.17), `None`
 /// for any other.
@@ -158,12 +158,12 @@ impl Gl {
         if self.reject_inside_begin_end() {
             return;
         }
-        let Some(t) = target_index(target) else { return self.set_error(GL_INVALID_ENUM) };
-        let dims = t as u8 + 1;
+        let Some(t) = image_target(target) else { return self.set_error(GL_INVALID_ENUM) };
+        let dims = t.dims();
         let defined = usize::try_from(level)
             .ok()
             .filter(|_| level <= max_level(dims))
-            .is_some_and(|l| self.bound_object(dims).levels.get(l).is_some_and(Option::is_some));
+            .is_some_and(|l| self.bound_object(t.slot).face(t.face).level(l).is_some());
         self.set_error(if defined { GL_INVALID_OPERATION } else { GL_INVALID_VALUE });
     }
 
@@ -192,7 +192,7 @@ impl Gl {
         let error = match call {
             CompressedCall::Image => GL_INVALID_ENUM,
             CompressedCall::SubImage(dims, target, format) => {
-                let target_fits = dims > 1 && target_index(target) == Some(usize::from(dims - 1));
+                let target_fits = dims > 1 && image_target_of(dims, target).is_some();
                 if !target_fits || generic_base(format).is_some() {
                     GL_INVALID_ENUM
                 } else {

@@ -6,7 +6,7 @@
 //! axis by axis, rounding after each (measured: `tests/reference/calls/cases/generate_mipmap.calls`,
 //! where 0, 1, 2, 2 make 2, not the mean's 1).
 
-use super::{TexLevel, TextureObject};
+use super::{ImageTarget, TexLevel, TextureObject};
 use crate::gl::Gl;
 
 /// `a` to `b` by `weight` (of 256), as llvmpipe's 8-bit lerp rounds.
@@ -53,12 +53,13 @@ impl TextureObject {
     /// Makes the levels below the base level again from it, down to 1 × 1 (× 1) or the maximum
     /// level, with the base's formats, when `GL_GENERATE_MIPMAP` is set and `level` is the
     /// base.
-    pub(super) fn generate_below(&mut self, level: usize, dims: u8) {
+    pub(super) fn generate_below(&mut self, face: usize, level: usize, dims: u8) {
         let base = usize::try_from(self.params.base_level).unwrap_or(usize::MAX);
         if !self.params.generate_mipmap || level != base {
             return;
         }
-        let Some(Some(top)) = self.levels.get(base) else { return };
+        let images = self.face(face);
+        let Some(top) = images.level(base) else { return };
         let last = usize::try_from(self.params.max_level).unwrap_or(0);
         let mut below: Vec<TexLevel> = Vec::new();
         for _ in base..last {
@@ -68,21 +69,21 @@ impl TextureObject {
             }
             below.push(next_level(above, dims == 3));
         }
-        let (format, internal) = (self.formats[base], self.extra.level_format(base));
+        let (format, (internal, _)) = (images.formats[base], images.level_format(base));
         for (k, image) in (base + 1..).zip(below) {
-            self.define_level(k, Some(image), (format, internal), 0);
+            self.define_level(face, k, Some(image), (format, internal), 0);
         }
     }
 }
 
 impl Gl {
-    /// After level `level` of the bound `dims`-dimensional texture changed: its mipmaps made
-    /// again if it asks for them and `level` is its base.
-    pub(in crate::gl) fn generate_if_base(&mut self, dims: u8, level: usize) {
-        let object = self.bound_object_mut(dims);
+    /// After level `level` of the image target `t` of the bound texture changed: its mipmaps
+    /// made again if it asks for them and `level` is its base (a cube map's face by face).
+    pub(in crate::gl) fn generate_if_base(&mut self, t: ImageTarget, level: usize) {
+        let object = self.bound_object_mut(t.slot);
         if object.params.generate_mipmap {
-            object.generate_below(level, dims);
-            self.image_changed(dims);
+            object.generate_below(t.face, level, t.dims());
+            self.image_changed(t.slot);
         }
     }
 }

@@ -4,7 +4,8 @@
 //! transfer into RGBA8.
 
 use super::TextureCall;
-use super::{base_format, fits_level, max_level, proxy_index, strip_border, target_index, texture_format, TexLevel};
+use super::{base_format, fits_level, image_target_of, max_level, proxy_of, strip_border, texture_format};
+use super::{ImageTarget, TexLevel};
 use crate::gl::consts::*;
 use crate::gl::lists::ListCommand;
 use crate::gl::pixel_unpack::{format_and_type_error, image_stride, unpack_each};
@@ -116,9 +117,9 @@ impl Gl {
         {
             return;
         }
-        let wanted = [GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_3D][usize::from(dims - 1)];
-        let proxy = proxy_index(target) == Some(usize::from(dims - 1));
-        if target != wanted && !proxy {
+        let (image_target, proxy_slot) = (image_target_of(dims, target), proxy_of(dims, target));
+        let proxy = proxy_slot.is_some();
+        if image_target.is_none() && !proxy {
             return self.set_error(GL_INVALID_ENUM);
         }
         if !(0..=max_level(dims)).contains(&level) || size.iter().any(|&s| s < 0) || !(0..=1).contains(&border) {
@@ -131,7 +132,9 @@ impl Gl {
         // Too large for its level (or too small for its border): an error, or for a proxy, a
         // proxy level of nothing (GL 1.1 §3.8.1: "no error is generated"), as Mesa's
         // `teximage` answers after the checks above.
-        let fits = fits_level(dims, level, size, border);
+        // A cube map's faces are square (Mesa's `_mesa_legal_texture_dimensions`).
+        let cube = image_target.map_or(proxy_slot, |t| Some(t.slot)) == Some(super::CUBE);
+        let fits = fits_level(dims, level, size, border) && (!cube || size[0] == size[1]);
         if !fits && !proxy {
             return self.set_error(GL_INVALID_VALUE);
         }
@@ -147,8 +150,14 @@ impl Gl {
             // A proxy keeps the sizes and border as given (Mesa strips real images only).
             let image =
                 fits.then(|| TexLevel { width: w as u32, height: h as u32, depth: d as u32, texels: Vec::new() });
-            let object = &mut self.server.textures.proxies[usize::from(dims - 1)];
-            return object.define_level(level as usize, image, (base, internalformat), if fits { border } else { 0 });
+            let object = &mut self.server.textures.proxies[proxy_slot.expect("a proxy")];
+            return object.define_level(
+                0,
+                level as usize,
+                image,
+                (base, internalformat),
+                if fits { border } else { 0 },
+            );
         }
         let texels = if bytes.is_empty() {
             let mut texels = Vec::new();
@@ -165,9 +174,10 @@ impl Gl {
         };
         let (texels, [w, h, d]) = strip_border(dims, texels, [w, h, d], border as usize);
         let image = TexLevel { width: w as u32, height: h as u32, depth: d as u32, texels };
-        self.bound_object_mut(dims).define_level(level as usize, Some(image), (base, internalformat), 0);
-        self.image_changed(dims);
-        self.generate_if_base(dims, level as usize);
+        let t = image_target.expect("not a proxy");
+        self.bound_object_mut(t.slot).define_level(t.face, level as usize, Some(image), (base, internalformat), 0);
+        self.image_changed(t.slot);
+        self.generate_if_base(t, level as usize);
     }
 
     /// `glTexSubImage2D`: replaces a rectangle of an existing level. Errors: target
@@ -267,17 +277,15 @@ impl Gl {
         (format, type_): (GLenum, GLenum),
         bytes: &[u8],
     ) {
-        if target_index(target) != Some(usize::from(dims - 1)) {
-            return self.set_error(GL_INVALID_ENUM);
-        }
-        let Some(region) = self.sub_image_box(dims, level, offset, size) else { return };
+        let Some(t) = image_target_of(dims, target) else { return self.set_error(GL_INVALID_ENUM) };
+        let Some(region) = self.sub_image_box(t, level, offset, size) else { return };
         if !self.check_image_format(format, type_) {
             return;
         }
         let Some(texels) = self.unpack_texels(dims, (format, type_), region.size, bytes) else {
             return self.set_error(GL_INVALID_VALUE);
         };
-        self.replace_texels(dims, level as usize, region, &texels);
+        self.replace_texels(t, level as usize, region, &texels);
     }
 
     /// Checks a sub-image box against the bound object's level `level`: a level outside
@@ -285,19 +293,19 @@ impl Gl {
     /// negative sizes or a box outside the level → `GL_INVALID_VALUE`. The box when it fits.
     pub(in crate::gl) fn sub_image_box(
         &mut self,
-        dims: u8,
+        t: ImageTarget,
         level: GLint,
         offset: [GLint; 3],
         size: [GLsizei; 3],
     ) -> Option<TexelBox> {
         // Mesa checks the level's range before whether it is defined (measured).
-        if !(0..=max_level(dims)).contains(&level) {
+        if !(0..=max_level(t.dims())).contains(&level) {
             self.set_error(GL_INVALID_VALUE);
             return None;
         }
         let defined = usize::try_from(level)
             .ok()
-            .and_then(|l| self.bound_object(dims).levels.get(l)?.as_ref())
+            .and_then(|l| self.bound_object(t.slot).face(t.face).level(l))
             .map(|l| [l.width, l.height, l.depth].map(i64::from));
         let Some(extent) = defined else {
             self.set_error(GL_INVALID_OPERATION);
@@ -316,8 +324,8 @@ impl Gl {
 
     /// Writes the box's texels (rows of its width, images of its height) into level `level` of
     /// the bound object.
-    pub(in crate::gl) fn replace_texels(&mut self, dims: u8, level: usize, region: TexelBox, texels: &[[u8; 4]]) {
-        let Some(Some(target)) = self.bound_object_mut(dims).levels.get_mut(level) else { return };
+    pub(in crate::gl) fn replace_texels(&mut self, t: ImageTarget, level: usize, region: TexelBox, texels: &[[u8; 4]]) {
+        let Some(Some(target)) = self.bound_object_mut(t.slot).face_mut(t.face).levels.get_mut(level) else { return };
         let ([x, y, z], [w, h, _]) = (region.origin, region.size);
         let (width, height) = (target.width as usize, target.height as usize);
         for (row, source) in texels.chunks_exact(w.max(1)).enumerate() {
@@ -325,8 +333,8 @@ impl Gl {
             let start = ((z + k) * height + y + j) * width + x;
             target.texels[start..start + w].copy_from_slice(source);
         }
-        self.image_changed(dims);
-        self.generate_if_base(dims, level);
+        self.image_changed(t.slot);
+        self.generate_if_base(t, level);
     }
 
     /// Checks `format` and `type_` as Mesa does for a colour texture: the image's errors

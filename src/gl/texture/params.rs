@@ -44,7 +44,7 @@ impl Gl {
         if matches!(pname, GL_TEXTURE_BASE_LEVEL | GL_TEXTURE_MAX_LEVEL) {
             return self.set_level_range(t, pname, param);
         }
-        let object = self.bound_object_mut(t as u8 + 1);
+        let object = self.bound_object_mut(t);
         let mut params = object.params;
         if pname == GL_GENERATE_MIPMAP {
             // Any value: GL_TRUE unless 0 (measured on Mesa: 7 reads back as 1).
@@ -69,7 +69,7 @@ impl Gl {
         if level < 0 {
             return self.set_error(GL_INVALID_VALUE);
         }
-        let object = self.bound_object_mut(t as u8 + 1);
+        let object = self.bound_object_mut(t);
         let mut params = object.params;
         if pname == GL_TEXTURE_BASE_LEVEL {
             params.base_level = level;

@@ -11,7 +11,7 @@ use super::super::types::*;
 use super::super::variants::GlComponent;
 use super::super::Gl;
 use super::TextureCall;
-use super::{max_level, proxy_index, target_index, TextureObject};
+use super::{image_target, max_level, proxy_index, slot_dims, target_index, FaceImages};
 
 /// A texture object's parameters beyond [`super::TexParams`], and each level's internal format
 /// as the program gave it and its border (what `GL_TEXTURE_INTERNAL_FORMAT` and
@@ -23,14 +23,11 @@ pub(super) struct ObjectExtras {
     border_color: [f32; 4],
     /// `GL_TEXTURE_PRIORITY`, clamped to [0, 1]; `glPrioritizeTextures` sets it too.
     pub(crate) priority: f32,
-    /// Each level's internal format and border: the border 0 but for a proxy given one (a
-    /// texture's border is stripped, [`super::strip_border`]).
-    level_formats: Vec<(GLint, GLint)>,
 }
 
 impl Default for ObjectExtras {
     fn default() -> Self {
-        Self { border_color: [0.0; 4], priority: 1.0, level_formats: Vec::new() }
+        Self { border_color: [0.0; 4], priority: 1.0 }
     }
 }
 
@@ -43,19 +40,6 @@ impl ObjectExtras {
     /// Restores what [`ObjectExtras::sampling`] gave.
     pub(super) fn set_sampling(&mut self, (border_color, priority): ([f32; 4], f32)) {
         (self.border_color, self.priority) = (border_color, priority);
-    }
-
-    /// The internal format level `level` was defined with.
-    pub(super) fn level_format(&self, level: usize) -> GLint {
-        self.level_formats.get(level).map_or(1, |f| f.0)
-    }
-
-    /// Records the internal format a level was defined with and the border it keeps.
-    pub(super) fn set_level_format(&mut self, level: usize, internal: GLint, border: GLint) {
-        if self.level_formats.len() <= level {
-            self.level_formats.resize(level + 1, (1, 0));
-        }
-        self.level_formats[level] = (internal, border);
     }
 }
 
@@ -180,12 +164,12 @@ impl Gl {
         let Some(t) = target_index(target) else { return self.set_error(GL_INVALID_ENUM) };
         let needed = Self::tex_parameter_param_count(pname);
         let Some(values) = params.get(..needed) else { return self.set_error(GL_INVALID_VALUE) };
-        let extra = &mut self.bound_object_mut(t as u8 + 1).extra;
+        let extra = &mut self.bound_object_mut(t).extra;
         match pname {
             GL_TEXTURE_BORDER_COLOR => extra.border_color.copy_from_slice(values),
             GL_TEXTURE_PRIORITY => extra.priority = values[0].clamp(0.0, 1.0),
             _ => {
-                let object = self.bound_object_mut(t as u8 + 1);
+                let object = self.bound_object_mut(t);
                 let lod = &mut object.params.lod;
                 match pname {
                     GL_TEXTURE_MIN_LOD => lod.min = values[0],
@@ -229,7 +213,7 @@ impl Gl {
             self.set_error(GL_INVALID_ENUM);
             return None;
         };
-        let object = self.bound_object(t as u8 + 1);
+        let object = self.bound_object(t);
         let p = object.params;
         let values = match pname {
             GL_TEXTURE_MIN_FILTER => vec![p.min_filter as f32],
@@ -277,9 +261,9 @@ impl Gl {
         if self.reject_inside_begin_end() {
             return None;
         }
-        let (object, dims): (&TextureObject, u8) = match (target_index(target), proxy_index(target)) {
-            (Some(t), _) => (self.bound_object(t as u8 + 1), t as u8 + 1),
-            (_, Some(p)) => (&self.server.textures.proxies[p], p as u8 + 1),
+        let (images, dims): (&FaceImages, u8) = match (image_target(target), proxy_index(target)) {
+            (Some(t), _) => (self.bound_object(t.slot).face(t.face), t.dims()),
+            (_, Some(p)) => (self.server.textures.proxies[p].face(0), slot_dims(p)),
             _ => {
                 self.set_error(GL_INVALID_ENUM);
                 return None;
@@ -290,12 +274,12 @@ impl Gl {
             return None;
         }
         let l = level as usize;
-        let defined = object.levels.get(l).and_then(Option::as_ref);
+        let defined = images.level(l);
         let (internal, border) = match defined {
-            Some(_) => object.extra.level_formats.get(l).copied().unwrap_or((1, 0)),
+            Some(_) => images.level_format(l),
             None => (GL_RGBA as GLint, 0),
         };
-        let sizes = defined.map_or([0; 6], |_| component_sizes(object.formats[l]));
+        let sizes = defined.map_or([0; 6], |_| component_sizes(images.formats[l]));
         let value = match pname {
             GL_TEXTURE_WIDTH => defined.map_or(0, |d| d.width as GLint),
             GL_TEXTURE_HEIGHT => defined.map_or(0, |d| d.height as GLint),
@@ -370,10 +354,10 @@ impl Gl {
     /// ones); `None` where it writes nothing (a bad argument, an undefined level).
     #[must_use]
     pub fn tex_image_len(&self, target: GLenum, level: GLint, format: GLenum, type_: GLenum) -> Option<usize> {
-        let t = target_index(target)?;
-        let l = self.bound_object(t as u8 + 1).levels.get(usize::try_from(level).ok()?)?.as_ref()?;
+        let t = image_target(target)?;
+        let l = self.bound_object(t.slot).face(t.face).level(usize::try_from(level).ok()?)?;
         let image = self.packed_image_len(l.width as GLsizei, l.height as GLsizei, format, type_)?;
-        if t < 2 || image == 0 {
+        if t.dims() < 3 || image == 0 {
             return Some(image);
         }
         let (stride, skipped) = self.packed_image_stride((l.width as usize, l.height as usize), format, type_)?;
@@ -391,8 +375,8 @@ impl Gl {
         if self.reject_inside_begin_end() {
             return;
         }
-        let Some(t) = target_index(target) else { return self.set_error(GL_INVALID_ENUM) };
-        if !(0..=max_level(t as u8 + 1)).contains(&level) {
+        let Some(t) = image_target(target) else { return self.set_error(GL_INVALID_ENUM) };
+        if !(0..=max_level(t.dims())).contains(&level) {
             return self.set_error(GL_INVALID_VALUE);
         }
         if let Some(error) = super::super::pixel_pack::read_format_error(format, type_) {
@@ -405,9 +389,9 @@ impl Gl {
         if pixels.len() < needed {
             return self.set_error(GL_INVALID_VALUE);
         }
-        let object = self.bound_object(t as u8 + 1);
-        let l = object.levels[level as usize].as_ref().expect("tex_image_len checked it");
-        let base = object.formats[level as usize];
+        let images = self.bound_object(t.slot).face(t.face);
+        let l = images.level(level as usize).expect("tex_image_len checked it");
+        let base = images.formats[level as usize];
         // Unlike glReadPixels, luminance is R alone (GL 1.1 §6.1.4; measured on Mesa).
         let luminance = matches!(format, GL_LUMINANCE | GL_LUMINANCE_ALPHA);
         let rgba: Vec<[f32; 4]> = l
@@ -420,7 +404,7 @@ impl Gl {
         // Below 3D the image modes do nothing. The texels are bytes and glGetTexImage has no
         // pixel transfer (measured: a red scale of 0.5 leaves them as they are), so Mesa
         // converts them as integers.
-        let images = if t == 2 { self.packed_image_stride((w, h), format, type_) } else { None };
+        let images = if t.dims() == 3 { self.packed_image_stride((w, h), format, type_) } else { None };
         let (stride, skipped) = images.unwrap_or((0, 0));
         for (k, image) in rgba.chunks_exact((w * h).max(1)).enumerate() {
             let out = &mut pixels[(skipped + k) * stride..];

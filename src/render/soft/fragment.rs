@@ -133,6 +133,9 @@ impl Program<'_> {
 /// under GL 1.3's `GL_CLAMP_TO_BORDER`, the share falling on the border given the border
 /// colour, as `inside_border` does in `fragment.wgsl`.
 fn texel(texture: &BoundTexture, sampler: &Sampler<'_>, tex: [f32; 4], slope: &TexSlope) -> [f32; 4] {
+    if texture.cube_map {
+        return cube_texel(sampler, tex, slope);
+    }
     let project = |t: [f32; 4]| {
         let q = if t[3] != 0.0 { t[3] } else { 1.0 };
         [t[0] / q, t[1] / q, t[2] / q]
@@ -183,6 +186,19 @@ fn texel(texture: &BoundTexture, sampler: &Sampler<'_>, tex: [f32; 4], slope: &T
         .map(|(k, size)| inside(coord[k], size, k))
         .product::<f32>();
     std::array::from_fn(|k| texture.border_color[k] + (sample[k] - texture.border_color[k]) * share)
+}
+
+/// A cube map's texel: (s, t, r) a direction, its face and the coordinates there (GL 1.3
+/// §3.8.6; q scales the direction only, which changes neither), the coordinates' change one
+/// pixel right and down measured on the same face, and the face sampled as a 2D texture.
+fn cube_texel(sampler: &Sampler<'_>, tex: [f32; 4], slope: &TexSlope) -> [f32; 4] {
+    let direction = |d: [f32; 4]| [tex[0] + d[0], tex[1] + d[1], tex[2] + d[2]];
+    let (face, [s, t]) = crate::gl::cube_face(direction([0.0; 4]));
+    let change = |d: [f32; 4]| {
+        let [s1, t1] = crate::gl::cube_face_coords(face, direction(d));
+        [s1 - s, t1 - t, 0.0]
+    };
+    sampler.sample_image(face, [s, t, 0.0], change(slope.dx), change(slope.dy))
 }
 
 /// GL's texture functions: `cf` the fragment's colour, `texel` the texture's, by base format;

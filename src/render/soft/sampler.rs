@@ -23,6 +23,12 @@ impl<'a> Sampler<'a> {
     /// between magnification and minification and the mipmap level (the scale factor ρ of
     /// §3.8.5, GL 1.2 eq. 3.13 with r for a 3D texture).
     pub fn sample(&self, str: [f32; 3], dx: [f32; 3], dy: [f32; 3]) -> [f32; 4] {
+        self.sample_image(0, str, dx, dy)
+    }
+
+    /// As [`Sampler::sample`] within image `image` of each level of a 1D or 2D texture: a cube
+    /// map's face (GL 1.3 §3.8.6: once the face is chosen, it is sampled as a 2D texture).
+    pub fn sample_image(&self, image: usize, str: [f32; 3], dx: [f32; 3], dy: [f32; 3]) -> [f32; 4] {
         let params = &self.texture.params;
         let levels = &self.texture.levels;
         let base = &levels[0];
@@ -36,16 +42,16 @@ impl<'a> Sampler<'a> {
         let lambda = params.lod.clamp(rho.log2() + self.texture.lod_bias);
         // Magnification, also where ρ is 0 or not a number (λ is −∞ or NaN).
         if lambda.is_nan() || lambda <= 0.0 {
-            return self.filter(base, params.mag_filter, str);
+            return self.filter(base, params.mag_filter, str, image);
         }
         let last = (levels.len() - 1) as f32;
         let lambda = lambda.min(last);
         match params.min_filter {
-            GL_NEAREST | GL_LINEAR => self.filter(base, params.min_filter, str),
+            GL_NEAREST | GL_LINEAR => self.filter(base, params.min_filter, str, image),
             GL_NEAREST_MIPMAP_NEAREST | GL_LINEAR_MIPMAP_NEAREST => {
                 // The nearest level, halves rounding down (Vulkan's ⌈λ + ½⌉ − 1).
                 let d = ((lambda + 0.5).ceil() - 1.0).max(0.0) as usize;
-                self.filter(&levels[d], level_filter(params.min_filter), str)
+                self.filter(&levels[d], level_filter(params.min_filter), str, image)
             }
             _ => {
                 let d = lambda.floor();
@@ -53,15 +59,17 @@ impl<'a> Sampler<'a> {
                 let upper = (lower + 1).min(levels.len() - 1);
                 let f = lambda - d;
                 let filter = level_filter(params.min_filter);
-                let (a, b) = (self.filter(&levels[lower], filter, str), self.filter(&levels[upper], filter, str));
+                let (a, b) =
+                    (self.filter(&levels[lower], filter, str, image), self.filter(&levels[upper], filter, str, image));
                 std::array::from_fn(|k| a[k] + (b[k] - a[k]) * f)
             }
         }
     }
 
     /// Nearest or linear filtering within one level: bilinear within an image, and for a 3D
-    /// texture linear between the two nearest images too (GL 1.2 eq. 3.17).
-    fn filter(&self, level: &TexLevel, filter: GLenum, [s, t, r]: [f32; 3]) -> [f32; 4] {
+    /// texture linear between the two nearest images too (GL 1.2 eq. 3.17); below 3D, within
+    /// image `image`.
+    fn filter(&self, level: &TexLevel, filter: GLenum, [s, t, r]: [f32; 3], image: usize) -> [f32; 4] {
         let (w, h, d) = (level.width as i64, level.height as i64, level.depth as i64);
         let params = &self.texture.params;
         let wrap_t = if self.texture.dims == 1 { GL_REPEAT } else { params.wrap_t };
@@ -69,7 +77,7 @@ impl<'a> Sampler<'a> {
         let solid = self.texture.dims == 3;
         let texel = |i: i64, j: i64, k: i64| {
             let (i, j) = (wrap(i, w, wrap_s), wrap(j, h, wrap_t));
-            let k = if solid { wrap(k, d, wrap_r) } else { 0 };
+            let k = if solid { wrap(k, d, wrap_r) } else { image as i64 };
             level.texels[((k * h + j) * w + i) as usize].map(|c| f32::from(c) / 255.0)
         };
         let (u, v, x) = (s * w as f32, t * h as f32, r * d as f32);
