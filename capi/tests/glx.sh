@@ -64,7 +64,7 @@ for line in \
 done
 
 DISPLAY=$display "$run" glxinfo > "$out/glxinfo.txt" 2>&1
-for want in "OpenGL vendor string: gleval" "OpenGL version string: 1.3 gleval" "8 GLX Visuals" "8 GLXFBConfigs:"; do
+for want in "OpenGL vendor string: gleval" "OpenGL version string: 1.5 gleval" "8 GLX Visuals" "8 GLXFBConfigs:"; do
   if grep -qF "$want" "$out/glxinfo.txt"; then
     echo "glx.sh: glxinfo: $want"
   else

@@ -925,6 +925,11 @@ pub const GL_POINT_FADE_THRESHOLD_SIZE: GLenum = 0x8128;
 pub const GL_DEPTH_COMPONENT16: GLenum = 0x81A5;
 pub const GL_DEPTH_COMPONENT24: GLenum = 0x81A6;
 pub const GL_DEPTH_COMPONENT32: GLenum = 0x81A7;
+/// GL 3.0's packed depth and stencil (`GL_EXT_packed_depth_stencil`), which Mesa takes for depth
+/// textures in every context: a format, its type and an internal format.
+pub const GL_DEPTH_STENCIL: GLenum = 0x84F9;
+pub const GL_UNSIGNED_INT_24_8: GLenum = 0x84FA;
+pub const GL_DEPTH24_STENCIL8: GLenum = 0x88F0;
 pub const GL_MIRRORED_REPEAT: GLenum = 0x8370;
 pub const GL_MAX_TEXTURE_LOD_BIAS: GLenum = 0x84FD;
 pub const GL_TEXTURE_LOD_BIAS: GLenum = 0x8501;

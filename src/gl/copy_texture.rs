@@ -11,16 +11,15 @@
 
 use super::consts::*;
 use super::lists::ListCommand;
-use super::texture::{base_format, fits_level, image_target_of, max_level, strip_border, TexLevel};
+use super::texture::{base_format, copied_depth_texel, fits_level, image_target_of, max_level, strip_border, TexLevel};
 
 /// The base format of a `glCopyTexImage` internal format: the named colour formats of
 /// `glTexImage` (Mesa 22 refuses the component counts 1 to 4 here: `GL_INVALID_ENUM`,
-/// measured), and the depth formats, whose texels hold depths (sampled as luminance, the
-/// initial `GL_DEPTH_TEXTURE_MODE`).
+/// measured), and GL 1.4's depth formats, whose levels take the window's depths
+/// (`texture/depth.rs`).
 fn copy_base_format(internal: GLenum) -> Option<GLenum> {
     match internal {
         1..=4 => None,
-        GL_DEPTH_COMPONENT => Some(GL_DEPTH_COMPONENT),
         _ => base_format(internal as GLint),
     }
 }
@@ -136,10 +135,10 @@ impl Gl {
             return self.set_error(GL_INVALID_VALUE);
         }
         let (w, h) = (width as usize, height as usize);
-        let texels = self.window_texels([x, y], (w, h), base == GL_DEPTH_COMPONENT);
+        let depth = (base == GL_DEPTH_COMPONENT).then_some(call.internalformat as GLint);
+        let texels = self.window_texels([x, y], (w, h), depth);
         // The border's texels are read and dropped, as Mesa keeps a texture's inside only.
         let (texels, [w, h, _]) = strip_border(call.dims, texels, [w, h, 1], call.border as usize);
-        let base = if base == GL_DEPTH_COMPONENT { GL_LUMINANCE } else { base };
         let image = TexLevel::flat(w as u32, h as u32, texels);
         let internal = call.internalformat as GLint;
         self.bound_object_mut(t.slot).define_level(t.face, call.level as usize, Some(image), (base, internal), 0);
@@ -209,14 +208,19 @@ impl Gl {
         let Some(t) = image_target_of(call.dims, call.target) else { return self.set_error(GL_INVALID_ENUM) };
         let [x, y, width, height] = call.rect;
         let Some(region) = self.sub_image_box(t, call.level, call.offset, [width, height, 1]) else { return };
-        let texels = self.window_texels([x, y], (region.size[0], region.size[1]), false);
+        // A depth level takes the window's depths (GL 1.4 §3.8.2).
+        let images = self.bound_object(t.slot).face(t.face);
+        let level = call.level as usize;
+        let depth = (images.formats[level] == GL_DEPTH_COMPONENT).then(|| images.level_format(level).0);
+        let texels = self.window_texels([x, y], (region.size[0], region.size[1]), depth);
         self.replace_texels(t, call.level as usize, region, &texels);
     }
 
     /// The window's `w` × `h` rectangle at (`x`, `y`) as texels, rows from the bottom, through
-    /// the colour transfer (`depth`: its depths through the depth transfer, as luminance); 0
+    /// the colour transfer (`depth`: its depths through the depth transfer, as a depth level
+    /// of that internal format keeps them); 0
     /// outside the window (and where the window cannot be read).
-    fn window_texels(&mut self, [x, y]: [GLint; 2], (w, h): (usize, usize), depth: bool) -> Vec<[u8; 4]> {
+    fn window_texels(&mut self, [x, y]: [GLint; 2], (w, h): (usize, usize), depth: Option<GLint>) -> Vec<[u8; 4]> {
         if w == 0 || h == 0 {
             return Vec::new();
         }
@@ -224,10 +228,9 @@ impl Gl {
         let (transfer, depths) = (self.color_transfer(), self.depth_transfer());
         let texel = |window: &WindowImage, i: usize, j: usize| {
             let (wx, wy) = (i64::from(x) + i as i64, i64::from(y) + j as i64);
-            let c = if depth {
-                let Some(d) = window.depth_at(wx, wy) else { return [0; 4] };
-                let d = depths.apply(d);
-                [d, d, d, 1.0]
+            let c = if let Some(internal) = depth {
+                let d = window.depth_at(wx, wy).map_or(0.0, |d| depths.apply(d));
+                return copied_depth_texel(d, internal);
             } else {
                 let Some(c) = window.color_at(wx, wy) else { return [0; 4] };
                 transfer.as_ref().map_or(c, |t| t.apply(c))

@@ -139,7 +139,7 @@ impl Tessellator {
 
 /// The OpenGL version gleval implements, whole (`GL_VERSION` begins with it): the most a
 /// GLX or EGL context may ask for.
-pub const VERSION: (i32, i32) = (1, 3);
+pub const VERSION: (i32, i32) = (1, 5);
 
 /// The name of a GL error code (`GL_INVALID_ENUM` ...), "an unknown error" for anything else.
 #[must_use]
@@ -168,9 +168,11 @@ pub fn error_name(code: GLenum) -> &'static str {
 /// GL 1.3's texture units and GL 1.4's crossbar (`multitexture.rs`, `units.rs`,
 /// `render/soft/units.rs`; wgpu hands frames drawing with more than unit 0 to the CPU
 /// rasteriser, `gpu/fallback.rs`), GL 1.3's cube maps (`texture.rs`, `render/soft/fragment.rs`;
-/// drawn by the CPU rasteriser for wgpu too) and transpose matrices (`matrix.rs`).
+/// drawn by the CPU rasteriser for wgpu too), transpose matrices (`matrix.rs`), and GL 1.4's
+/// depth textures with GL 1.4's and 1.5's shadow comparisons (`texture/depth.rs`; the CPU
+/// rasteriser draws them for wgpu too).
 const EXTENSIONS: &str =
-    "GL_ARB_multitexture GL_ARB_occlusion_query GL_ARB_point_parameters GL_ARB_texture_border_clamp GL_ARB_texture_compression GL_ARB_texture_cube_map GL_ARB_texture_env_add GL_ARB_texture_env_combine GL_ARB_texture_env_crossbar GL_ARB_texture_env_dot3 GL_ARB_texture_mirrored_repeat GL_ARB_transpose_matrix GL_ARB_vertex_buffer_object GL_ARB_window_pos GL_EXT_bgra GL_EXT_blend_color GL_EXT_blend_equation_separate GL_EXT_blend_func_separate GL_EXT_blend_minmax GL_EXT_blend_subtract GL_EXT_draw_range_elements GL_EXT_fog_coord GL_EXT_multi_draw_arrays GL_EXT_packed_pixels GL_EXT_point_parameters GL_EXT_rescale_normal GL_EXT_stencil_wrap GL_EXT_texture3D GL_EXT_texture_cube_map GL_EXT_texture_edge_clamp GL_EXT_texture_env_add GL_EXT_texture_env_combine GL_EXT_texture_lod_bias GL_IBM_texture_mirrored_repeat GL_NV_blend_square GL_SGIS_generate_mipmap GL_SGIS_texture_border_clamp GL_SGIS_texture_edge_clamp GL_SGIS_texture_lod";
+    "GL_ARB_depth_texture GL_ARB_multitexture GL_ARB_occlusion_query GL_ARB_point_parameters GL_ARB_shadow GL_ARB_texture_border_clamp GL_ARB_texture_compression GL_ARB_texture_cube_map GL_ARB_texture_env_add GL_ARB_texture_env_combine GL_ARB_texture_env_crossbar GL_ARB_texture_env_dot3 GL_ARB_texture_mirrored_repeat GL_ARB_transpose_matrix GL_ARB_vertex_buffer_object GL_ARB_window_pos GL_EXT_bgra GL_EXT_blend_color GL_EXT_blend_equation_separate GL_EXT_blend_func_separate GL_EXT_blend_minmax GL_EXT_blend_subtract GL_EXT_draw_range_elements GL_EXT_fog_coord GL_EXT_multi_draw_arrays GL_EXT_packed_pixels GL_EXT_point_parameters GL_EXT_rescale_normal GL_EXT_shadow_funcs GL_EXT_stencil_wrap GL_EXT_texture3D GL_EXT_texture_cube_map GL_EXT_texture_edge_clamp GL_EXT_texture_env_add GL_EXT_texture_env_combine GL_EXT_texture_lod_bias GL_IBM_texture_mirrored_repeat GL_NV_blend_square GL_SGIS_generate_mipmap GL_SGIS_texture_border_clamp GL_SGIS_texture_edge_clamp GL_SGIS_texture_lod";
 
 /// A GL context without a GPU: GL state plus the recording of what is drawn.
 ///
@@ -529,8 +531,8 @@ impl Gl {
     }
 
     /// `glGetString`: who implements this GL (`GL_VENDOR` "gleval"), on what (`GL_RENDERER`:
-    /// the tessellator in use; wgpu draws what is recorded), the version (`GL_VERSION`: "1.3"
-    /// and ours: GL 1.3 is whole, GL 1.2's imaging subset aside, as GL allows) and the extensions
+    /// the tessellator in use; wgpu draws what is recorded), the version (`GL_VERSION`: "1.5"
+    /// and ours: GL 1.5 is whole, GL 1.2's imaging subset aside, as GL allows) and the extensions
     /// complete beyond it
     /// (`GL_EXTENSIONS`: each extension that is whole, in `EXTENSIONS`).
     /// Another name → `GL_INVALID_ENUM` and `None` (C's NULL), as inside `begin`/`end`
@@ -545,7 +547,7 @@ impl Gl {
                 Tessellator::Cpu => "gleval (CPU tessellator, wgpu rasteriser)",
                 Tessellator::Gpu => "gleval (WGSL tessellator, wgpu rasteriser)",
             }),
-            GL_VERSION => Some(concat!("1.3 gleval ", env!("CARGO_PKG_VERSION"))),
+            GL_VERSION => Some(concat!("1.5 gleval ", env!("CARGO_PKG_VERSION"))),
             GL_EXTENSIONS => Some(EXTENSIONS),
             _ => {
                 self.set_error(GL_INVALID_ENUM);
@@ -597,9 +599,11 @@ mod tests {
         assert!(gl.get_string(GL_VERSION).is_some_and(|v| v.starts_with(&version)));
         // The claims, spelled out: a new one is a decision, made here as well.
         let claimed = [
+            "GL_ARB_depth_texture",
             "GL_ARB_multitexture",
             "GL_ARB_occlusion_query",
             "GL_ARB_point_parameters",
+            "GL_ARB_shadow",
             "GL_ARB_texture_border_clamp",
             "GL_ARB_texture_compression",
             "GL_ARB_texture_cube_map",
@@ -623,6 +627,7 @@ mod tests {
             "GL_EXT_packed_pixels",
             "GL_EXT_point_parameters",
             "GL_EXT_rescale_normal",
+            "GL_EXT_shadow_funcs",
             "GL_EXT_stencil_wrap",
             "GL_EXT_texture3D",
             "GL_EXT_texture_cube_map",

@@ -96,11 +96,13 @@ fn pixel_shape(format: GLenum, type_: GLenum) -> Option<(usize, usize)> {
     }
 }
 
-/// The error a colour read of `format` and `type_` gets (`glGetTexImage`'s checks, Mesa's
-/// `_mesa_error_check_format_and_type` order): a packed type the format does not go with
+/// The error `glGetTexImage` of `format` and `type_` gets from a level that holds depths
+/// (`depth_level`) or colours (Mesa's `_mesa_error_check_format_and_type` order, then
+/// `getteximage_error_check`): a packed type the format does not go with
 /// `GL_INVALID_OPERATION` (an unknown format too, measured), an unknown format or type
-/// `GL_INVALID_ENUM`, a depth, stencil or colour-index format `GL_INVALID_OPERATION`.
-pub(crate) fn read_format_error(format: GLenum, type_: GLenum) -> Option<GLenum> {
+/// `GL_INVALID_ENUM`; a stencil or colour-index format, a depth format from a colour level, or
+/// any but `GL_DEPTH_COMPONENT` from a depth level (GL 1.4 §6.1.4), `GL_INVALID_OPERATION`.
+pub(crate) fn texture_read_error(format: GLenum, type_: GLenum, depth_level: bool) -> Option<GLenum> {
     if packed_mismatch(format, type_) {
         return Some(GL_INVALID_OPERATION);
     }
@@ -108,7 +110,8 @@ pub(crate) fn read_format_error(format: GLenum, type_: GLenum) -> Option<GLenum>
         return Some(GL_INVALID_ENUM);
     }
     let colour = format != GL_DEPTH_COMPONENT && components(format, [0.0; 4]).is_some();
-    (!colour).then_some(GL_INVALID_OPERATION)
+    let agrees = if depth_level { format == GL_DEPTH_COMPONENT } else { colour };
+    (!agrees).then_some(GL_INVALID_OPERATION)
 }
 
 /// One depth `d` ∈ [0, 1] as `type_` stores it: Mesa packs depths with truncating conversions
@@ -124,6 +127,17 @@ fn encode_depth(d: f32, type_: GLenum) -> Vec<u8> {
         GL_UNSIGNED_INT => ((d * 4294967295.0) as u32).to_ne_bytes().to_vec(),
         GL_INT => (signed(2147483647.0) as i32).to_ne_bytes().to_vec(),
         _ => (d as f32).to_ne_bytes().to_vec(),
+    }
+}
+
+/// One depth of a depth texture as `type_` stores it (see [`Source::TextureDepth`]):
+/// `GL_UNSIGNED_SHORT` to the nearest integer (Mesa's `CLAMPED_FLOAT_TO_USHORT`), the others
+/// as [`encode_depth`] does (measured: a 16-bit 0.25 reads as `GL_UNSIGNED_INT` 0x40003FFF,
+/// truncated).
+fn encode_texture_depth(d: f32, type_: GLenum) -> Vec<u8> {
+    match type_ {
+        GL_UNSIGNED_SHORT => ((f64::from(d.clamp(0.0, 1.0)) * 65535.0).round() as u16).to_ne_bytes().to_vec(),
+        _ => encode_depth(d, type_),
     }
 }
 
@@ -213,9 +227,10 @@ fn pack_components(values: &[f32], (format, type_, source): (GLenum, GLenum, Sou
     let mut offset = 0;
     for &c in values {
         let mut bytes = match (format, source) {
+            (GL_DEPTH_COMPONENT, Source::TextureDepth) => encode_texture_depth(c, type_),
             (GL_DEPTH_COMPONENT, _) => encode_depth(c, type_),
             (_, Source::Unorm8) => encode_unorm8(c, type_),
-            (_, Source::Float) => encode(c, type_),
+            (_, Source::Float | Source::TextureDepth) => encode(c, type_),
         };
         if swap {
             bytes.reverse();

@@ -62,6 +62,10 @@ pub(crate) enum Source {
     /// plus 0.5 in f32, truncated (a product of 2.5 gives 3, not the even 2; one of
     /// 0.49999997 gives 1, as the sum rounds to 1.0).
     Float,
+    /// A depth texture's depths (GL 1.4): `glGetTexImage` packs them as `glReadPixels` packs
+    /// depths, but `GL_UNSIGNED_SHORT` to the nearest integer (measured: a 24-bit 0.24999995
+    /// reads as 0x4000); no packed type takes depths.
+    TextureDepth,
 }
 
 impl Packed {
@@ -156,7 +160,7 @@ fn field_max(bits: u32) -> u32 {
 fn to_field(c: f32, bits: u32, source: Source) -> u32 {
     match source {
         Source::Unorm8 => from_unorm8(byte_of(c), bits),
-        Source::Float => (c.clamp(0.0, 1.0) * field_max(bits) as f32 + 0.5) as u32,
+        Source::Float | Source::TextureDepth => (c.clamp(0.0, 1.0) * field_max(bits) as f32 + 0.5) as u32,
     }
 }
 

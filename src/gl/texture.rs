@@ -23,6 +23,7 @@ pub use super::units::{MAX_COMBINED_TEXTURE_IMAGE_UNITS, MAX_TEXTURE_UNITS};
 use super::Gl;
 pub use combine::{texture_source, Combine, Combiner};
 pub(crate) use compressed::{CompressedCall, GET_ROWS as COMPRESSION_GET_ROWS};
+pub use depth::{copied_depth_texel, depth_texel, texel_depth, DepthParams, DepthSampling};
 pub use gen::{TexGen, TexGenCoord, TexGenState};
 use glam::Mat4;
 use std::collections::HashMap;
@@ -30,6 +31,7 @@ use std::sync::Arc;
 
 mod combine;
 mod compressed;
+mod depth;
 mod gen;
 mod generate;
 mod image;
@@ -109,6 +111,8 @@ pub struct TexParams {
     /// `GL_GENERATE_MIPMAP` (GL 1.4): the levels below the base are made again whenever the
     /// base level's image changes.
     pub generate_mipmap: bool,
+    /// GL 1.4's depth texture mode and shadow comparison.
+    pub depth: DepthParams,
 }
 
 /// GL 1.2's LOD clamp (§3.8.7): `GL_TEXTURE_MIN_LOD` and `GL_TEXTURE_MAX_LOD`, and GL 1.4's
@@ -169,6 +173,7 @@ impl Default for TexParams {
             max_level: 1000,
             lod: LodRange { min: -1000.0, max: 1000.0, bias: 0.0 },
             generate_mipmap: false,
+            depth: DepthParams::default(),
         }
     }
 }
@@ -251,6 +256,9 @@ pub struct BoundTexture {
     /// images (depth 6: +X, −X, +Y, −Y, +Z, −Z), and (s, t, r) is a direction that picks the
     /// face and the 2D coordinates within it ([`cube_face`]).
     pub cube_map: bool,
+    /// A depth texture's sampling (GL 1.4 §3.8.14): its levels hold depths ([`texel_depth`]),
+    /// and `base_format` is its mode's ([`DepthParams::environment_format`]).
+    pub depth: Option<DepthSampling>,
     /// `glTexGen`: the coordinates generated per vertex, if any is enabled.
     pub generate: Option<TexGenState>,
 }
@@ -272,6 +280,7 @@ impl BoundTexture {
             lod_bias: 0.0,
             dims: 2,
             cube_map: false,
+            depth: None,
             generate: None,
         }
     }
@@ -290,6 +299,7 @@ impl PartialEq for BoundTexture {
             && self.lod_bias.to_bits() == other.lod_bias.to_bits()
             && self.dims == other.dims
             && self.cube_map == other.cube_map
+            && self.depth == other.depth
             && self.generate == other.generate
     }
 }
@@ -564,15 +574,25 @@ pub(super) fn base_format(internal: GLint) -> Option<GLenum> {
         }
         GL_ALPHA | GL_ALPHA4 | GL_ALPHA8 | GL_ALPHA12 | GL_ALPHA16 => Some(GL_ALPHA),
         GL_INTENSITY | GL_INTENSITY4 | GL_INTENSITY8 | GL_INTENSITY12 | GL_INTENSITY16 => Some(GL_INTENSITY),
+        // GL 1.4's depth textures (`texture/depth.rs`).
+        GL_DEPTH_COMPONENT | GL_DEPTH_COMPONENT16 | GL_DEPTH_COMPONENT24 | GL_DEPTH_COMPONENT32 => {
+            Some(GL_DEPTH_COMPONENT)
+        }
+        // GL 3.0's depth and stencil formats, as Mesa takes them in a compatibility context:
+        // gleval keeps their depths only (no stencil texturing before GL 4.3).
+        GL_DEPTH_STENCIL | GL_DEPTH24_STENCIL8 => Some(GL_DEPTH_COMPONENT),
         // GL 1.3's generic compressed formats, kept uncompressed (`texture/compressed.rs`).
         other => compressed::generic_base(other),
     }
 }
 
-/// Whether `glTexImage` and `glTexSubImage` take `format` for a colour texture (GL 1.1
-/// §3.8.1: the colour formats and colour indices; `GL_BGR` and `GL_BGRA` as Mesa takes them).
-fn texture_format(format: GLenum) -> bool {
-    format_components(format).is_some() && !matches!(format, GL_STENCIL_INDEX | GL_DEPTH_COMPONENT)
+/// Whether `glTexImage` and `glTexSubImage` take `format` for a level of base format `base`
+/// (GL 1.4 §3.8.1): depths for a depth texture, colours (and colour indices; `GL_BGR` and
+/// `GL_BGRA` as Mesa takes them) for any other, never stencil indices (Mesa's
+/// `texture_formats_agree`).
+fn texture_format(format: GLenum, base: GLenum) -> bool {
+    let depth = format == GL_DEPTH_COMPONENT;
+    format_components(format).is_some() && format != GL_STENCIL_INDEX && depth == (base == GL_DEPTH_COMPONENT)
 }
 
 /// The texture group's calls as a display list holds them.
@@ -781,10 +801,12 @@ impl Gl {
         let generate = self.tex_gen_state_of(unit);
         let env = self.server.textures.env[unit];
         let object = self.unit_object(unit, t);
+        let base_format = object.face(0).formats[object.params.base_level as usize];
+        let depth = (base_format == GL_DEPTH_COMPONENT).then(|| DepthSampling::new(&object.params.depth));
         Some(BoundTexture {
             key: object.key,
             levels,
-            base_format: object.face(0).formats[object.params.base_level as usize],
+            base_format: if depth.is_some() { object.params.depth.environment_format() } else { base_format },
             params: object.params,
             env_mode: env.mode,
             combine: env.combine,
@@ -795,6 +817,7 @@ impl Gl {
             lod_bias: (object.params.lod.bias + env.lod_bias).clamp(-MAX_TEXTURE_LOD_BIAS, MAX_TEXTURE_LOD_BIAS),
             dims: slot_dims(t),
             cube_map: t == CUBE,
+            depth,
             generate,
         })
     }

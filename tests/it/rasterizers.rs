@@ -1653,3 +1653,73 @@ fn cube_maps_are_mesas_on_both_rasterisers() {
         assert_diagonal_is_mesas(&mut renderer, frame, expected, 1, &format!("set-up {k}"));
     }
 }
+
+/// GL 1.4's depth textures drawn by both rasterisers, against what Mesa 22.3 (llvmpipe, OSMesa)
+/// drew for the same calls (`tests/reference/pixels/depth_texture.c` prints these values): a
+/// 4 × 1 texture of depths 0.1, 0.4, 0.6 and 0.9 on an 8 × 8 square whose r runs from r0 at
+/// the left to r1 at the right, under each `GL_DEPTH_TEXTURE_MODE` (0-3), with `GL_ARB_shadow`'s
+/// comparison under several functions (4, 5, 8, 10, 11; r outside [0, 1] in 8), compared
+/// before the linear filter (6), the depths filtered (9), and modulated (7, 10); the
+/// diagonal's pixels, within 1/255.
+#[test]
+fn depth_textures_are_mesas_on_both_rasterisers() {
+    let mut renderer = optional_renderer();
+    let compare = GL_COMPARE_R_TO_TEXTURE;
+    let setups = [
+        (GL_LUMINANCE, GL_NONE, GL_LEQUAL, GL_NEAREST, GL_REPLACE, (0.0, 1.0)),
+        (GL_INTENSITY, GL_NONE, GL_LEQUAL, GL_NEAREST, GL_REPLACE, (0.0, 1.0)),
+        (GL_ALPHA, GL_NONE, GL_LEQUAL, GL_NEAREST, GL_REPLACE, (0.0, 1.0)),
+        (GL_RED, GL_NONE, GL_LEQUAL, GL_NEAREST, GL_REPLACE, (0.0, 1.0)),
+        (GL_LUMINANCE, compare, GL_LEQUAL, GL_NEAREST, GL_REPLACE, (0.0, 1.0)),
+        (GL_INTENSITY, compare, GL_GREATER, GL_NEAREST, GL_REPLACE, (0.0, 1.0)),
+        (GL_LUMINANCE, compare, GL_LEQUAL, GL_LINEAR, GL_REPLACE, (0.0, 1.0)),
+        (GL_LUMINANCE, GL_NONE, GL_LEQUAL, GL_NEAREST, GL_MODULATE, (0.0, 1.0)),
+        (GL_LUMINANCE, compare, GL_LEQUAL, GL_NEAREST, GL_REPLACE, (-1.0, 2.0)),
+        (GL_LUMINANCE, GL_NONE, GL_LEQUAL, GL_LINEAR, GL_REPLACE, (0.0, 1.0)),
+        (GL_ALPHA, compare, GL_NOTEQUAL, GL_NEAREST, GL_MODULATE, (0.4, 0.4)),
+        (GL_LUMINANCE, compare, GL_ALWAYS, GL_NEAREST, GL_REPLACE, (0.0, 1.0)),
+    ];
+    #[rustfmt::skip]
+    let mesa: [[[u8; 4]; 8]; 12] = [
+        [[25, 25, 25, 128], [25, 25, 25, 128], [102, 102, 102, 128], [102, 102, 102, 128], [153, 153, 153, 128], [153, 153, 153, 128], [230, 230, 230, 128], [230, 230, 230, 128]],
+        [[25, 25, 25, 25], [25, 25, 25, 25], [102, 102, 102, 102], [102, 102, 102, 102], [153, 153, 153, 153], [153, 153, 153, 153], [230, 230, 230, 230], [230, 230, 230, 230]],
+        [[128, 255, 64, 25], [128, 255, 64, 25], [128, 255, 64, 102], [128, 255, 64, 102], [128, 255, 64, 153], [128, 255, 64, 153], [128, 255, 64, 230], [128, 255, 64, 230]],
+        [[25, 0, 0, 128], [25, 0, 0, 128], [102, 0, 0, 128], [102, 0, 0, 128], [153, 0, 0, 128], [153, 0, 0, 128], [230, 0, 0, 128], [230, 0, 0, 128]],
+        [[255, 255, 255, 128], [0, 0, 0, 128], [255, 255, 255, 128], [0, 0, 0, 128], [255, 255, 255, 128], [0, 0, 0, 128], [255, 255, 255, 128], [0, 0, 0, 128]],
+        [[0, 0, 0, 0], [255, 255, 255, 255], [0, 0, 0, 0], [255, 255, 255, 255], [0, 0, 0, 0], [255, 255, 255, 255], [0, 0, 0, 0], [255, 255, 255, 255]],
+        [[255, 255, 255, 128], [64, 64, 64, 128], [191, 191, 191, 128], [64, 64, 64, 128], [191, 191, 191, 128], [64, 64, 64, 128], [191, 191, 191, 128], [0, 0, 0, 128]],
+        [[13, 25, 6, 128], [13, 25, 6, 128], [51, 102, 26, 128], [51, 102, 26, 128], [76, 153, 38, 128], [76, 153, 38, 128], [115, 230, 57, 128], [115, 230, 57, 128]],
+        [[255, 255, 255, 128], [255, 255, 255, 128], [255, 255, 255, 128], [255, 255, 255, 128], [0, 0, 0, 128], [0, 0, 0, 128], [0, 0, 0, 128], [0, 0, 0, 128]],
+        [[25, 25, 25, 128], [45, 45, 45, 128], [83, 83, 83, 128], [115, 115, 115, 128], [140, 140, 140, 128], [172, 172, 172, 128], [210, 210, 210, 128], [230, 230, 230, 128]],
+        [[128, 255, 64, 128], [128, 255, 64, 128], [128, 255, 64, 128], [128, 255, 64, 128], [128, 255, 64, 128], [128, 255, 64, 128], [128, 255, 64, 128], [128, 255, 64, 128]],
+        [[255, 255, 255, 128], [255, 255, 255, 128], [255, 255, 255, 128], [255, 255, 255, 128], [255, 255, 255, 128], [255, 255, 255, 128], [255, 255, 255, 128], [255, 255, 255, 128]],
+    ];
+    let mut gl = Gl::new(8, 8);
+    let mut frames = Vec::new();
+    gl.bind_texture(GL_TEXTURE_2D, 1);
+    let depths = [0.1f32, 0.4, 0.6, 0.9];
+    gl.tex_image_2d(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT as i32, 4, 1, 0, GL_DEPTH_COMPONENT, GL_FLOAT, &depths);
+    gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE as i32);
+    gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE as i32);
+    gl.enable(GL_TEXTURE_2D);
+    gl.color4f(0.5, 1.0, 0.25, 0.5);
+    for (mode, compare_mode, func, filter, env, (r0, r1)) in setups {
+        gl.tex_parameteri(GL_TEXTURE_2D, GL_DEPTH_TEXTURE_MODE, mode as i32);
+        gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, compare_mode as i32);
+        gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, func as i32);
+        gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter as i32);
+        gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filter as i32);
+        gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, env as i32);
+        gl.begin(GL_QUADS);
+        for (s, x, y) in [(0.0, -1.0, -1.0), (1.0, 1.0, -1.0), (1.0, 1.0, 1.0), (0.0, -1.0, 1.0)] {
+            gl.tex_coord3f(s, 0.5, if s == 0.0 { r0 } else { r1 });
+            gl.vertex2f(x, y);
+        }
+        gl.end();
+        frames.push(gl.take_frame());
+    }
+    assert_eq!(gl.get_error(), GL_NO_ERROR);
+    for (k, (frame, expected)) in frames.iter().zip(&mesa).enumerate() {
+        assert_diagonal_is_mesas(&mut renderer, frame, expected, 1, &format!("set-up {k}"));
+    }
+}

@@ -257,7 +257,7 @@ fn refuse(list: &[(c_int, c_int)]) -> Option<Result<u8, GlxError>> {
 
 entry! {
     /// `glXCreateContextAttribsARB` (GLX_ARB_create_context, _profile): compatibility
-    /// contexts of OpenGL 1.0 to 1.3 (`gleval::gl::VERSION`), debug or not. A version that does not exist →
+    /// contexts of OpenGL 1.0 to 1.5 (`gleval::gl::VERSION`), debug or not. A version that does not exist →
     /// `BadMatch`; one above 1.1 (or a core or ES profile of 3.2 up, or forward-compatible)
     /// → `GLXBadFBConfig`; an attribute or flag it does not know → `BadValue`; a bad profile
     /// mask → `GLXBadProfileARB`.
@@ -414,7 +414,8 @@ mod tests {
         assert_eq!(refuse(&compat(1, 1)), None);
         assert_eq!(refuse(&compat(1, 2)), None);
         assert_eq!(refuse(&compat(1, 3)), None);
-        assert_eq!(refuse(&compat(1, 4)), Some(Err(GlxError::FbConfig)));
+        assert_eq!(refuse(&compat(1, 5)), None);
+        assert_eq!(refuse(&compat(2, 0)), Some(Err(GlxError::FbConfig)));
         assert_eq!(refuse(&compat(3, 3)), Some(Err(GlxError::FbConfig)));
         assert_eq!(refuse(&compat(1, 7)), Some(Ok(BAD_MATCH)));
         assert_eq!(refuse(&compat(2, 5)), Some(Ok(BAD_MATCH)));

@@ -6,7 +6,9 @@
 //! axis by axis, rounding after each (measured: `tests/reference/calls/cases/generate_mipmap.calls`,
 //! where 0, 1, 2, 2 make 2, not the mean's 1).
 
-use super::{ImageTarget, TexLevel, TextureObject};
+use super::{depth_texel, texel_depth, ImageTarget, TexLevel, TextureObject};
+use crate::gl::consts::GL_DEPTH_COMPONENT;
+use crate::gl::types::GLint;
 use crate::gl::Gl;
 
 /// `a` to `b` by `weight` (of 256), as llvmpipe's 8-bit lerp rounds.
@@ -24,8 +26,10 @@ fn taps(i: usize, from: usize, to: usize) -> (usize, usize, i32) {
     (clamp(first), clamp(first + 1.0), weight)
 }
 
-/// The level below `level`: each side halved (at least 1), filtered as llvmpipe filters.
-pub(super) fn next_level(level: &TexLevel, three_d: bool) -> TexLevel {
+/// The level below `level`: each side halved (at least 1), filtered as llvmpipe filters; a
+/// depth level's depths (`depth`: its internal format) with the same taps and weights, in
+/// floats (not measured against Mesa).
+pub(super) fn next_level(level: &TexLevel, three_d: bool, depth: Option<GLint>) -> TexLevel {
     let (w, h, d) = (level.width as usize, level.height as usize, level.depth as usize);
     let (nw, nh, nd) = ((w / 2).max(1), (h / 2).max(1), if three_d { (d / 2).max(1) } else { d });
     // Each axis's taps, once per new column, row and image.
@@ -36,12 +40,20 @@ pub(super) fn next_level(level: &TexLevel, three_d: bool) -> TexLevel {
     for &(k0, k1, wr) in &images {
         for &(j0, j1, wt) in &rows {
             for &(i0, i1, ws) in &columns {
-                let texel = std::array::from_fn(|c| {
-                    let at = |i: usize, j: usize, k: usize| i32::from(level.texel(i, j, k)[c]);
-                    let row = |j: usize, k: usize| lerp8(at(i0, j, k), at(i1, j, k), ws);
-                    let image = |k: usize| lerp8(row(j0, k), row(j1, k), wt);
-                    lerp8(image(k0), image(k1), wr) as u8
-                });
+                let texel = if let Some(internal) = depth {
+                    let lerp = |a: f32, b: f32, weight: i32| a + (b - a) * weight as f32 / 256.0;
+                    let at = |i: usize, j: usize, k: usize| texel_depth(level.texel(i, j, k));
+                    let row = |j: usize, k: usize| lerp(at(i0, j, k), at(i1, j, k), ws);
+                    let image = |k: usize| lerp(row(j0, k), row(j1, k), wt);
+                    depth_texel(lerp(image(k0), image(k1), wr), internal)
+                } else {
+                    std::array::from_fn(|c| {
+                        let at = |i: usize, j: usize, k: usize| i32::from(level.texel(i, j, k)[c]);
+                        let row = |j: usize, k: usize| lerp8(at(i0, j, k), at(i1, j, k), ws);
+                        let image = |k: usize| lerp8(row(j0, k), row(j1, k), wt);
+                        lerp8(image(k0), image(k1), wr) as u8
+                    })
+                };
                 texels.push(texel);
             }
         }
@@ -60,6 +72,7 @@ impl TextureObject {
         }
         let images = self.face(face);
         let Some(top) = images.level(base) else { return };
+        let depth = (images.formats[base] == GL_DEPTH_COMPONENT).then(|| images.level_format(base).0);
         let last = usize::try_from(self.params.max_level).unwrap_or(0);
         let mut below: Vec<TexLevel> = Vec::new();
         for _ in base..last {
@@ -67,7 +80,7 @@ impl TextureObject {
             if above.width == 1 && above.height == 1 && (dims != 3 || above.depth == 1) {
                 break;
             }
-            below.push(next_level(above, dims == 3));
+            below.push(next_level(above, dims == 3, depth));
         }
         let (format, (internal, _)) = (images.formats[base], images.level_format(base));
         for (k, image) in (base + 1..).zip(below) {
@@ -98,12 +111,22 @@ mod tests {
         // lerps round to 1 and 2 before the column's); 5 × 1 of 0, 100, 200, 50, 250 makes 75,
         // 100 (the centres at 0.75 and 3.25).
         let two = TexLevel::flat(2, 2, vec![[0, 0, 1, 1], [1, 1, 0, 0], [2, 1, 2, 1], [2, 2, 1, 3]]);
-        assert_eq!(next_level(&two, false).texels, [[2, 2, 2, 2]]);
+        assert_eq!(next_level(&two, false, None).texels, [[2, 2, 2, 2]]);
         let five = TexLevel::flat(5, 1, [0u8, 100, 200, 50, 250].map(|v| [v; 4]).to_vec());
-        let below = next_level(&five, false);
+        let below = next_level(&five, false, None);
         assert_eq!((below.width, below.texels.clone()), (2, vec![[75; 4], [100; 4]]));
         let solid = TexLevel { width: 2, height: 1, depth: 2, texels: vec![[0; 4], [1; 4], [2; 4], [2; 4]] };
-        let below = next_level(&solid, true);
+        let below = next_level(&solid, true, None);
         assert_eq!((below.width, below.height, below.depth, below.texels), (1, 1, 1, vec![[2; 4]]));
+    }
+
+    #[test]
+    fn depth_levels_are_filtered_as_depths() {
+        // The bytes of a depth level are a float's: filtered as bytes, 0.25 and 0.75 would not
+        // make their mean.
+        let z32 = crate::gl::consts::GL_DEPTH_COMPONENT32 as GLint;
+        let level = TexLevel::flat(2, 1, vec![depth_texel(0.25, z32), depth_texel(0.75, z32)]);
+        let below = next_level(&level, false, Some(z32));
+        assert_eq!(below.texels.iter().map(|&t| texel_depth(t)).collect::<Vec<_>>(), [0.5]);
     }
 }

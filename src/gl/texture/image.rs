@@ -12,6 +12,18 @@ use crate::gl::pixel_unpack::{format_and_type_error, image_stride, unpack_each};
 use crate::gl::types::*;
 use crate::gl::Gl;
 
+/// The format and type a texture image of `format` and `type_` is read as: GL 3.0's
+/// `GL_DEPTH_STENCIL` of `GL_UNSIGNED_INT_24_8`, which Mesa takes for a depth texture in every
+/// context, as the 32-bit depths whose top 24 bits its depths are (the stencil's 8 bits weigh
+/// in below 2⁻²⁴ of a depth; gleval keeps no stencil in textures); every other pair as it is.
+fn depth_of_depth_stencil(format: GLenum, type_: GLenum) -> (GLenum, GLenum) {
+    if (format, type_) == (GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8) {
+        (GL_DEPTH_COMPONENT, GL_UNSIGNED_INT)
+    } else {
+        (format, type_)
+    }
+}
+
 /// The most bytes a level's texels may take (4 a texel): llvmpipe's limit, about 1.75 GiB.
 const MAX_LEVEL_BYTES: usize = 7 << 28;
 
@@ -117,6 +129,7 @@ impl Gl {
         {
             return;
         }
+        let (format, type_) = depth_of_depth_stencil(format, type_);
         let (image_target, proxy_slot) = (image_target_of(dims, target), proxy_of(dims, target));
         let proxy = proxy_slot.is_some();
         if image_target.is_none() && !proxy {
@@ -125,10 +138,15 @@ impl Gl {
         if !(0..=max_level(dims)).contains(&level) || size.iter().any(|&s| s < 0) || !(0..=1).contains(&border) {
             return self.set_error(GL_INVALID_VALUE);
         }
-        if !self.check_image_format(format, type_) {
-            return;
+        if let Some(error) = format_and_type_error(format, type_) {
+            return self.set_error(error);
         }
         let Some(base) = base_format(internalformat) else { return self.set_error(GL_INVALID_VALUE) };
+        // Depth data for a depth texture only, and no 3D depth texture (Mesa's
+        // `_mesa_legal_texture_base_format_for_target`).
+        if !texture_format(format, base) || (base == GL_DEPTH_COMPONENT && dims == 3) {
+            return self.set_error(GL_INVALID_OPERATION);
+        }
         // Too large for its level (or too small for its border): an error, or for a proxy, a
         // proxy level of nothing (GL 1.1 §3.8.1: "no error is generated"), as Mesa's
         // `teximage` answers after the checks above.
@@ -167,7 +185,7 @@ impl Gl {
             texels.resize(w * h * d, [0; 4]);
             texels
         } else {
-            match self.unpack_texels(dims, (format, type_), [w, h, d], bytes) {
+            match self.unpack_texels(dims, (format, type_), [w, h, d], bytes, internalformat) {
                 Some(texels) => texels,
                 None => return self.set_error(GL_INVALID_VALUE),
             }
@@ -278,11 +296,14 @@ impl Gl {
         bytes: &[u8],
     ) {
         let Some(t) = image_target_of(dims, target) else { return self.set_error(GL_INVALID_ENUM) };
+        let (format, type_) = depth_of_depth_stencil(format, type_);
         let Some(region) = self.sub_image_box(t, level, offset, size) else { return };
-        if !self.check_image_format(format, type_) {
+        let base = self.bound_object(t.slot).face(t.face).formats[level as usize];
+        if !self.check_image_format(format, type_, base) {
             return;
         }
-        let Some(texels) = self.unpack_texels(dims, (format, type_), region.size, bytes) else {
+        let internal = self.bound_object(t.slot).face(t.face).level_format(level as usize).0;
+        let Some(texels) = self.unpack_texels(dims, (format, type_), region.size, bytes, internal) else {
             return self.set_error(GL_INVALID_VALUE);
         };
         self.replace_texels(t, level as usize, region, &texels);
@@ -337,11 +358,13 @@ impl Gl {
         self.generate_if_base(t, level);
     }
 
-    /// Checks `format` and `type_` as Mesa does for a colour texture: the image's errors
-    /// ([`super::pixel_unpack::format_and_type_error`]), then a depth or stencil image →
-    /// `GL_INVALID_OPERATION`. False after an error.
-    fn check_image_format(&mut self, format: GLenum, type_: GLenum) -> bool {
-        let error = format_and_type_error(format, type_).or((!texture_format(format)).then_some(GL_INVALID_OPERATION));
+    /// Checks `format` and `type_` as Mesa does for a level of base format `base`: the image's
+    /// errors ([`super::pixel_unpack::format_and_type_error`]), then data that does not agree
+    /// with the level (depths for a colour level, colours for a depth level, stencil indices)
+    /// → `GL_INVALID_OPERATION`. False after an error.
+    fn check_image_format(&mut self, format: GLenum, type_: GLenum, base: GLenum) -> bool {
+        let error =
+            format_and_type_error(format, type_).or((!texture_format(format, base)).then_some(GL_INVALID_OPERATION));
         if let Some(error) = error {
             self.set_error(error);
         }
@@ -353,15 +376,18 @@ impl Gl {
     /// pixel transfer (colour indices through the index-to-RGBA maps, colours through scale,
     /// bias and, with `GL_MAP_COLOR`, the colour maps), clamped to [0, 1]. A 3D image's images
     /// lie [`image_stride`] bytes apart after the skipped ones (GL 1.2; below 3D the image
-    /// modes do nothing). `None` if `bytes` is short.
+    /// modes do nothing). Depths go through the depth scale and bias into the texels a depth
+    /// level of internal format `internal` keeps. `None` if `bytes` is short.
     fn unpack_texels(
         &self,
         dims: u8,
         (format, type_): (GLenum, GLenum),
         [w, h, d]: [usize; 3],
         bytes: &[u8],
+        internal: GLint,
     ) -> Option<Vec<[u8; 4]>> {
         let transfer = self.color_transfer();
+        let depth = (format == GL_DEPTH_COMPONENT).then(|| self.depth_transfer());
         // Halfway products round to even, as Mesa's float-to-unorm8 texel store does (measured:
         // 2.5/255 stores 2, 3.5/255 stores 4; `unpack_widening.calls`).
         let byte = |x: f32| (x.clamp(0.0, 1.0) * 255.0).round_ties_even() as u8;
@@ -382,6 +408,10 @@ impl Gl {
                 continue;
             }
             unpack_each(store, (w as GLsizei, h as GLsizei), format, type_, image, |c| {
+                // A depth travels in the red slot (`to_rgba`).
+                if let Some(depth) = depth {
+                    return texels.push(super::depth_texel(depth.apply(c[0]), internal));
+                }
                 let c = match format {
                     GL_COLOR_INDEX => self.index_to_rgba(c[0]),
                     _ => transfer.as_ref().map_or(c, |t| t.apply(c)),

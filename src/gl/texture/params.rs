@@ -3,8 +3,8 @@
 //! unit 0.
 
 use super::combine::is_combine_name;
-use super::target_index;
 use super::TextureCall;
+use super::{target_index, DepthParams};
 use crate::gl::consts::*;
 use crate::gl::lists::ListCommand;
 use crate::gl::types::*;
@@ -15,7 +15,9 @@ impl Gl {
     /// `GL_TEXTURE_WRAP_S`, `GL_TEXTURE_WRAP_T` and `GL_TEXTURE_WRAP_R` (`GL_REPEAT`,
     /// `GL_CLAMP`, GL 1.2's `GL_CLAMP_TO_EDGE`, 1.3's `GL_CLAMP_TO_BORDER`, 1.4's
     /// `GL_MIRRORED_REPEAT`), and GL 1.2's
-    /// `GL_TEXTURE_BASE_LEVEL` and `GL_TEXTURE_MAX_LEVEL`, of the bound object. Another target or
+    /// `GL_TEXTURE_BASE_LEVEL` and `GL_TEXTURE_MAX_LEVEL`, and GL 1.4's
+    /// `GL_DEPTH_TEXTURE_MODE`, `GL_TEXTURE_COMPARE_MODE` and `GL_TEXTURE_COMPARE_FUNC`
+    /// ([`super::DepthParams`]), of the bound object. Another target or
     /// name, or a value the name does not take → `GL_INVALID_ENUM`; a negative level →
     /// `GL_INVALID_VALUE`.
     pub fn tex_parameteri(&mut self, target: GLenum, pname: GLenum, param: GLint) {
@@ -36,7 +38,7 @@ impl Gl {
                 matches!(value, GL_REPEAT | GL_CLAMP | GL_CLAMP_TO_EDGE | GL_CLAMP_TO_BORDER | GL_MIRRORED_REPEAT)
             }
             GL_TEXTURE_BASE_LEVEL | GL_TEXTURE_MAX_LEVEL | GL_GENERATE_MIPMAP => true,
-            _ => false,
+            _ => DepthParams::accepts(pname, value).unwrap_or(false),
         };
         if !ok {
             return self.set_error(GL_INVALID_ENUM);
@@ -46,6 +48,11 @@ impl Gl {
         }
         let object = self.bound_object_mut(t);
         let mut params = object.params;
+        if DepthParams::accepts(pname, value).is_some() {
+            *params.depth.field(pname) = value;
+            object.set_params(params);
+            return self.touch_state();
+        }
         if pname == GL_GENERATE_MIPMAP {
             // Any value: GL_TRUE unless 0 (measured on Mesa: 7 reads back as 1).
             params.generate_mipmap = param != 0;

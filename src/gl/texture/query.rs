@@ -223,6 +223,9 @@ impl Gl {
             GL_TEXTURE_WRAP_R => vec![p.wrap_r as f32],
             GL_GENERATE_MIPMAP => vec![f32::from(u8::from(p.generate_mipmap))],
             GL_TEXTURE_BASE_LEVEL => vec![p.base_level as f32],
+            GL_DEPTH_TEXTURE_MODE => vec![p.depth.mode as f32],
+            GL_TEXTURE_COMPARE_MODE => vec![p.depth.compare_mode as f32],
+            GL_TEXTURE_COMPARE_FUNC => vec![p.depth.compare_func as f32],
             GL_TEXTURE_MAX_LEVEL => vec![p.max_level as f32],
             GL_TEXTURE_MIN_LOD => vec![p.lod.min],
             GL_TEXTURE_MAX_LOD => vec![p.lod.max],
@@ -292,6 +295,9 @@ impl Gl {
             GL_TEXTURE_ALPHA_SIZE => sizes[3],
             GL_TEXTURE_LUMINANCE_SIZE => sizes[4],
             GL_TEXTURE_INTENSITY_SIZE => sizes[5],
+            GL_TEXTURE_DEPTH_SIZE if defined.is_some() && images.formats[l] == GL_DEPTH_COMPONENT => {
+                super::depth::depth_bits(internal) as GLint
+            }
             // Colour textures have neither; Mesa answers both names (ARB_depth_texture, and
             // GL 3.0's stencil size, unguarded in `get_tex_level_parameter_image`).
             GL_TEXTURE_DEPTH_SIZE | GL_TEXTURE_STENCIL_SIZE => 0,
@@ -379,7 +385,11 @@ impl Gl {
         if !(0..=max_level(t.dims())).contains(&level) {
             return self.set_error(GL_INVALID_VALUE);
         }
-        if let Some(error) = super::super::pixel_pack::read_format_error(format, type_) {
+        let depth_level = usize::try_from(level)
+            .ok()
+            .and_then(|l| self.bound_object(t.slot).face(t.face).formats.get(l))
+            .is_some_and(|&base| base == GL_DEPTH_COMPONENT);
+        if let Some(error) = super::super::pixel_pack::texture_read_error(format, type_, depth_level) {
             return self.set_error(error);
         }
         let Some(needed) = self.tex_image_len(target, level, format, type_) else { return };
@@ -397,7 +407,7 @@ impl Gl {
         let rgba: Vec<[f32; 4]> = l
             .texels
             .iter()
-            .map(|&t| texel_rgba(base, t))
+            .map(|&t| if depth_level { [super::texel_depth(t), 0.0, 0.0, 1.0] } else { texel_rgba(base, t) })
             .map(|[r, g, b, a]| if luminance { [r, 0.0, 0.0, a] } else { [r, g, b, a] })
             .collect();
         let (w, h) = (l.width as usize, l.height as usize);
@@ -408,7 +418,8 @@ impl Gl {
         let (stride, skipped) = images.unwrap_or((0, 0));
         for (k, image) in rgba.chunks_exact((w * h).max(1)).enumerate() {
             let out = &mut pixels[(skipped + k) * stride..];
-            self.pack_rgba(image, (w, h), (format, type_, Source::Unorm8), out);
+            let source = if depth_level { Source::TextureDepth } else { Source::Unorm8 };
+            self.pack_rgba(image, (w, h), (format, type_, source), out);
         }
     }
 }

@@ -29,6 +29,15 @@ impl<'a> Sampler<'a> {
     /// As [`Sampler::sample`] within image `image` of each level of a 1D or 2D texture: a cube
     /// map's face (GL 1.3 §3.8.6: once the face is chosen, it is sampled as a 2D texture).
     pub fn sample_image(&self, image: usize, str: [f32; 3], dx: [f32; 3], dy: [f32; 3]) -> [f32; 4] {
+        let filtered = self.filtered(image, str, dx, dy);
+        // A depth texture's filtered depth, or share of texels passing the comparison, as the
+        // texel its mode makes.
+        self.texture.depth.map_or(filtered, |depth| depth.texel(filtered[0]))
+    }
+
+    /// The texel filtered from the levels (for a depth texture, its depth or comparison in
+    /// every component).
+    fn filtered(&self, image: usize, str: [f32; 3], dx: [f32; 3], dy: [f32; 3]) -> [f32; 4] {
         let params = &self.texture.params;
         let levels = &self.texture.levels;
         let base = &levels[0];
@@ -75,10 +84,16 @@ impl<'a> Sampler<'a> {
         let wrap_t = if self.texture.dims == 1 { GL_REPEAT } else { params.wrap_t };
         let (wrap_s, wrap_r) = (params.wrap_s, params.wrap_r);
         let solid = self.texture.dims == 3;
+        let depth = self.texture.depth;
         let texel = |i: i64, j: i64, k: i64| {
             let (i, j) = (wrap(i, w, wrap_s), wrap(j, h, wrap_t));
             let k = if solid { wrap(k, d, wrap_r) } else { image as i64 };
-            level.texels[((k * h + j) * w + i) as usize].map(|c| f32::from(c) / 255.0)
+            let texel = level.texels[((k * h + j) * w + i) as usize];
+            match depth {
+                // GL 1.4 §3.8.14: the reference is r, each texel compared before filtering.
+                Some(depth) => [depth.value(texel, r); 4],
+                None => texel.map(|c| f32::from(c) / 255.0),
+            }
         };
         let (u, v, x) = (s * w as f32, t * h as f32, r * d as f32);
         if filter == GL_NEAREST {
