@@ -165,12 +165,13 @@ mod tests {
         // Mesa 22.3's glGetTexImage(GL_DEPTH_COMPONENT, GL_FLOAT) of a texture given 0, 0.25,
         // 0.5 and 1.
         let z24 = GL_DEPTH_COMPONENT as GLint;
-        let back = [0.0f32, 0.25, 0.5, 1.0].map(|d| texel_depth(depth_texel(d, z24)));
-        assert_eq!(back, [0.0, 0.249_999_955, 0.499_999_97, 1.0]);
+        // Mesa's bits, as depth_texture.calls prints them.
+        let back = [0.0f32, 0.25, 0.5, 1.0].map(|d| texel_depth(depth_texel(d, z24)).to_bits());
+        assert_eq!(back, [0, 0x3E7F_FFFD, 0x3EFF_FFFF, 0x3F80_0000]);
         assert_eq!(texel_depth(depth_texel(-3.0, z24)), 0.0);
-        assert_eq!(texel_depth(depth_texel(0.5, GL_DEPTH_COMPONENT16 as GLint)), 0.499_992_37);
+        assert_eq!(texel_depth(depth_texel(0.5, GL_DEPTH_COMPONENT16 as GLint)).to_bits(), 0x3EFF_FF00);
         assert_eq!(texel_depth(depth_texel(0.90001, GL_DEPTH_COMPONENT32 as GLint)), 0.90001);
-        assert_eq!(texel_depth(copied_depth_texel(0.5, z24)), 0.500_000_06);
+        assert_eq!(texel_depth(copied_depth_texel(0.5, z24)).to_bits(), 0x3F00_0001);
     }
 
     #[test]
