@@ -930,6 +930,9 @@ pub const GL_DEPTH_COMPONENT32: GLenum = 0x81A7;
 pub const GL_DEPTH_STENCIL: GLenum = 0x84F9;
 pub const GL_UNSIGNED_INT_24_8: GLenum = 0x84FA;
 pub const GL_DEPTH24_STENCIL8: GLenum = 0x88F0;
+/// `GL_ARB_point_sprite` (GL 2.0 §3.3.1): the enable and the texture environment's name.
+pub const GL_POINT_SPRITE: GLenum = 0x8861;
+pub const GL_COORD_REPLACE: GLenum = 0x8862;
 pub const GL_MIRRORED_REPEAT: GLenum = 0x8370;
 pub const GL_MAX_TEXTURE_LOD_BIAS: GLenum = 0x84FD;
 pub const GL_TEXTURE_LOD_BIAS: GLenum = 0x8501;

@@ -17,6 +17,7 @@ pub(crate) struct Caps {
 /// `GL_DITHER` and `GL_MULTISAMPLE`, which GL starts enabled).
 pub(crate) const KNOWN: &[GLenum] = &[
     GL_POINT_SMOOTH,
+    GL_POINT_SPRITE,
     GL_LINE_SMOOTH,
     GL_LINE_STIPPLE,
     GL_POLYGON_SMOOTH,

@@ -96,6 +96,10 @@ pub struct DrawState {
     pub line_stipple: Option<(i32, u16)>,
     /// `GL_POINT_SMOOTH` enabled.
     pub point_smooth: bool,
+    /// `GL_POINT_SPRITE` enabled (`GL_ARB_point_sprite`): the units whose coordinates a point
+    /// replaces (`GL_COORD_REPLACE`, a bit a unit), which draws it as a square whatever
+    /// `GL_POINT_SMOOTH` says.
+    pub point_sprite: Option<u8>,
     /// `GL_LINE_SMOOTH` enabled.
     pub line_smooth: bool,
     /// `glPolygonOffset` when any of its enables is on.

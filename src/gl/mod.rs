@@ -170,9 +170,10 @@ pub fn error_name(code: GLenum) -> &'static str {
 /// rasteriser, `gpu/fallback.rs`), GL 1.3's cube maps (`texture.rs`, `render/soft/fragment.rs`;
 /// drawn by the CPU rasteriser for wgpu too), transpose matrices (`matrix.rs`), and GL 1.4's
 /// depth textures with GL 1.4's and 1.5's shadow comparisons (`texture/depth.rs`; the CPU
-/// rasteriser draws them for wgpu too).
+/// rasteriser draws them for wgpu too), and point sprites (`point.rs`, `render/assemble.rs`:
+/// a sprite is the wide point's square with its coordinates, drawn by both rasterisers).
 const EXTENSIONS: &str =
-    "GL_ARB_depth_texture GL_ARB_multitexture GL_ARB_occlusion_query GL_ARB_point_parameters GL_ARB_shadow GL_ARB_texture_border_clamp GL_ARB_texture_compression GL_ARB_texture_cube_map GL_ARB_texture_env_add GL_ARB_texture_env_combine GL_ARB_texture_env_crossbar GL_ARB_texture_env_dot3 GL_ARB_texture_mirrored_repeat GL_ARB_transpose_matrix GL_ARB_vertex_buffer_object GL_ARB_window_pos GL_EXT_bgra GL_EXT_blend_color GL_EXT_blend_equation_separate GL_EXT_blend_func_separate GL_EXT_blend_minmax GL_EXT_blend_subtract GL_EXT_draw_range_elements GL_EXT_fog_coord GL_EXT_multi_draw_arrays GL_EXT_packed_pixels GL_EXT_point_parameters GL_EXT_rescale_normal GL_EXT_shadow_funcs GL_EXT_stencil_wrap GL_EXT_texture3D GL_EXT_texture_cube_map GL_EXT_texture_edge_clamp GL_EXT_texture_env_add GL_EXT_texture_env_combine GL_EXT_texture_lod_bias GL_IBM_texture_mirrored_repeat GL_NV_blend_square GL_SGIS_generate_mipmap GL_SGIS_texture_border_clamp GL_SGIS_texture_edge_clamp GL_SGIS_texture_lod";
+    "GL_ARB_depth_texture GL_ARB_multitexture GL_ARB_occlusion_query GL_ARB_point_parameters GL_ARB_point_sprite GL_ARB_shadow GL_ARB_texture_border_clamp GL_ARB_texture_compression GL_ARB_texture_cube_map GL_ARB_texture_env_add GL_ARB_texture_env_combine GL_ARB_texture_env_crossbar GL_ARB_texture_env_dot3 GL_ARB_texture_mirrored_repeat GL_ARB_transpose_matrix GL_ARB_vertex_buffer_object GL_ARB_window_pos GL_EXT_bgra GL_EXT_blend_color GL_EXT_blend_equation_separate GL_EXT_blend_func_separate GL_EXT_blend_minmax GL_EXT_blend_subtract GL_EXT_draw_range_elements GL_EXT_fog_coord GL_EXT_multi_draw_arrays GL_EXT_packed_pixels GL_EXT_point_parameters GL_EXT_rescale_normal GL_EXT_shadow_funcs GL_EXT_stencil_wrap GL_EXT_texture3D GL_EXT_texture_cube_map GL_EXT_texture_edge_clamp GL_EXT_texture_env_add GL_EXT_texture_env_combine GL_EXT_texture_lod_bias GL_IBM_texture_mirrored_repeat GL_NV_blend_square GL_SGIS_generate_mipmap GL_SGIS_texture_border_clamp GL_SGIS_texture_edge_clamp GL_SGIS_texture_lod";
 
 /// A GL context without a GPU: GL state plus the recording of what is drawn.
 ///
@@ -512,6 +513,7 @@ impl Gl {
             fog: self.enabled_fog(),
             line_stipple: self.enabled_line_stipple(),
             point_smooth: self.server.caps.is_on(GL_POINT_SMOOTH),
+            point_sprite: self.server.caps.is_on(GL_POINT_SPRITE).then_some(self.server.point.coord_replace),
             line_smooth: self.server.caps.is_on(GL_LINE_SMOOTH),
             polygon_offset: self.enabled_polygon_offset(),
             clip_planes: self.enabled_clip_planes(),
@@ -603,6 +605,7 @@ mod tests {
             "GL_ARB_multitexture",
             "GL_ARB_occlusion_query",
             "GL_ARB_point_parameters",
+            "GL_ARB_point_sprite",
             "GL_ARB_shadow",
             "GL_ARB_texture_border_clamp",
             "GL_ARB_texture_compression",

@@ -16,6 +16,9 @@ pub(crate) struct Point {
     pub size: f32,
     /// GL 1.4's `glPointParameter` values.
     pub parameters: PointParameters,
+    /// `GL_ARB_point_sprite`'s `GL_COORD_REPLACE` of each texture unit, a bit a unit (unit 0
+    /// the lowest): Mesa keeps it in the point group (`gl_point_attrib`'s `CoordReplace`).
+    pub coord_replace: u8,
 }
 
 /// GL 1.4's point parameters (§3.3): the size a point is drawn with is `glPointSize`'s,
@@ -37,7 +40,7 @@ pub struct PointParameters {
 
 impl Default for Point {
     fn default() -> Self {
-        Self { size: 1.0, parameters: PointParameters::default() }
+        Self { size: 1.0, parameters: PointParameters::default(), coord_replace: 0 }
     }
 }
 
@@ -78,9 +81,35 @@ pub(crate) enum PointCall {
 }
 
 /// The enables GL files under the group (GL 1.1 table 6.8).
-pub(crate) const POINT_ENABLES: &[GLenum] = &[GL_POINT_SMOOTH];
+pub(crate) const POINT_ENABLES: &[GLenum] = &[GL_POINT_SMOOTH, GL_POINT_SPRITE];
 
 impl Gl {
+    /// `glTexEnv(GL_POINT_SPRITE, GL_COORD_REPLACE, value)` (`GL_ARB_point_sprite`): whether
+    /// the active unit's coordinates are replaced across a point sprite. Mesa takes `GL_TRUE`
+    /// or `GL_FALSE` only (another value `GL_INVALID_VALUE`, `main/texenv.c`), and a unit
+    /// beyond the fixed-function ones keeps none.
+    pub(super) fn set_coord_replace(&mut self, value: GLfloat) {
+        // Mesa converts the value to an enum first (measured: 0.5 is GL_FALSE).
+        let on = match value as GLenum {
+            1 => true,
+            0 => false,
+            _ => return self.set_error(GL_INVALID_VALUE),
+        };
+        let unit = self.active_unit();
+        if unit < super::units::MAX_TEXTURE_UNITS {
+            let bit = 1u8 << unit;
+            let replace = &mut self.server.point.coord_replace;
+            *replace = if on { *replace | bit } else { *replace & !bit };
+            self.touch_state();
+        }
+    }
+
+    /// The active unit's `GL_COORD_REPLACE`, for `glGetTexEnv`.
+    pub(super) fn coord_replace(&self) -> bool {
+        let unit = self.active_unit();
+        unit < super::units::MAX_TEXTURE_UNITS && self.server.point.coord_replace & (1 << unit) != 0
+    }
+
     /// `glPointSize`: `size <= 0` (or NaN) → `GL_INVALID_VALUE`; inside `begin`/`end` →
     /// `GL_INVALID_OPERATION`. Compiled into display lists.
     pub fn point_size(&mut self, size: GLfloat) {

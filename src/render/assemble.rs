@@ -515,15 +515,18 @@ impl PrimitiveContext<'_, '_> {
             return;
         }
         let size = self.state.point_parameters.derived_size(self.state.point_size, c.eye.z);
-        if self.state.point_smooth {
+        // A point sprite is a square whatever GL_POINT_SMOOTH says (GL 2.0 §3.3.1).
+        if self.state.point_smooth && self.state.point_sprite.is_none() {
             if let Some(quad) = smooth::point_quad(c, size, self.state.viewport) {
                 self.out.push_as(self.state, Topology::Triangles, (Smooth::Point, None), &quad);
             }
             return;
         }
         let size = size.round().max(1.0);
+        let replace = self.state.point_sprite.unwrap_or(0);
         if size <= 1.0 {
-            return self.out.push(self.state, Topology::Points, &[c]);
+            // The one fragment sits at the sprite's centre.
+            return self.out.push(self.state, Topology::Points, &[sprite_corner(c, replace, [0.5, 0.5])]);
         }
         let p = c.clip;
         // GL discards a point whose centre is outside the view volume, whatever its size.
@@ -541,7 +544,12 @@ impl PrimitiveContext<'_, '_> {
         // precision) makes both rasterisers do the same.
         let up = 2.0 / 256.0 / vh.max(1) as f32 * p.w;
         let right = 2.0 / 256.0 / vw.max(1) as f32 * p.w;
-        let corner = |dx: f32, dy: f32| Corner { clip: p + Vec4::new(dx * hx + right, dy * hy + up, 0.0, 0.0), ..c };
+        // A sprite's coordinates run from (0, 0) at its upper left to (1, 1) at its lower
+        // right (GL 2.0 eq. 3.4 with GL_ARB_point_sprite's upper-left origin).
+        let corner = |dx: f32, dy: f32| {
+            let c = Corner { clip: p + Vec4::new(dx * hx + right, dy * hy + up, 0.0, 0.0), ..c };
+            sprite_corner(c, replace, [(dx + 1.0) / 2.0, (1.0 - dy) / 2.0])
+        };
         let (a, b, cc, d) = (corner(-1.0, -1.0), corner(1.0, -1.0), corner(1.0, 1.0), corner(-1.0, 1.0));
         self.out.push(self.state, Topology::Triangles, &[a, b, cc, a, cc, d]);
     }
@@ -675,6 +683,21 @@ impl PrimitiveContext<'_, '_> {
             }
         }
     }
+}
+
+/// `c` with the texture coordinates of the units in `replace` (a bit a unit, unit 0 the lowest)
+/// replaced by the point sprite's (s, t) there (`GL_COORD_REPLACE`).
+fn sprite_corner(mut c: Corner, replace: u8, [s, t]: [f32; 2]) -> Corner {
+    let sprite = Vec4::new(s, t, 0.0, 1.0);
+    if replace & 1 != 0 {
+        c.tex = sprite;
+    }
+    for (k, unit) in c.units.iter_mut().enumerate() {
+        if replace & (2 << k) != 0 {
+            *unit = sprite;
+        }
+    }
+    c
 }
 
 /// Twice the signed area of the projected polygon (positive when counter-clockwise in window

@@ -1723,3 +1723,66 @@ fn depth_textures_are_mesas_on_both_rasterisers() {
         assert_diagonal_is_mesas(&mut renderer, frame, expected, 1, &format!("set-up {k}"));
     }
 }
+
+/// `GL_ARB_point_sprite` drawn by both rasterisers, against what Mesa 22.3 (llvmpipe, OSMesa)
+/// drew for the same calls (`tests/reference/pixels/point_sprite.c` prints these values): an
+/// 8-pixel point over the 8 × 8 window textured with a 2 × 2 texture (red, green / blue,
+/// white): with `GL_COORD_REPLACE` the texture spans the point from its upper left (0), without
+/// it the vertex's (0.75, 0.25) is green everywhere (1), `GL_POINT_SMOOTH` does not round a
+/// sprite (2), no sprite (3), and a sprite on unit 1 alone, modulating unit 0's green (4).
+#[test]
+fn point_sprites_are_mesas_on_both_rasterisers() {
+    let mut renderer = optional_renderer();
+    #[rustfmt::skip]
+    let mesa: [[[u8; 4]; 8]; 5] = [
+        [[0, 0, 255, 255], [0, 0, 255, 255], [0, 0, 255, 255], [0, 0, 255, 255], [0, 255, 0, 255], [0, 255, 0, 255], [0, 255, 0, 255], [0, 255, 0, 255]],
+        [[0, 255, 0, 255], [0, 255, 0, 255], [0, 255, 0, 255], [0, 255, 0, 255], [0, 255, 0, 255], [0, 255, 0, 255], [0, 255, 0, 255], [0, 255, 0, 255]],
+        [[0, 0, 255, 255], [0, 0, 255, 255], [0, 0, 255, 255], [0, 0, 255, 255], [0, 255, 0, 255], [0, 255, 0, 255], [0, 255, 0, 255], [0, 255, 0, 255]],
+        [[0, 255, 0, 255], [0, 255, 0, 255], [0, 255, 0, 255], [0, 255, 0, 255], [0, 255, 0, 255], [0, 255, 0, 255], [0, 255, 0, 255], [0, 255, 0, 255]],
+        [[0, 0, 0, 255], [0, 0, 0, 255], [0, 0, 0, 255], [0, 0, 0, 255], [0, 255, 0, 255], [0, 255, 0, 255], [0, 255, 0, 255], [0, 255, 0, 255]],
+    ];
+    let mut gl = Gl::new(8, 8);
+    let mut frames = Vec::new();
+    gl.pixel_storei(GL_UNPACK_ALIGNMENT, 1);
+    for (unit, mode) in [(GL_TEXTURE0, GL_REPLACE), (GL_TEXTURE1, GL_MODULATE)] {
+        gl.active_texture(unit);
+        gl.bind_texture(GL_TEXTURE_2D, 1);
+        gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, mode as i32);
+    }
+    gl.active_texture(GL_TEXTURE0);
+    let texels = [255u8, 0, 0, 0, 255, 0, 0, 0, 255, 255, 255, 255];
+    gl.tex_image_2d(GL_TEXTURE_2D, 0, GL_RGB as i32, 2, 2, 0, GL_RGB, GL_UNSIGNED_BYTE, &texels);
+    gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST as i32);
+    gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST as i32);
+    gl.enable(GL_TEXTURE_2D);
+    gl.point_size(8.0);
+    let point = |gl: &mut Gl| {
+        gl.begin(GL_POINTS);
+        gl.multi_tex_coord2f(GL_TEXTURE0, 0.75, 0.25);
+        gl.multi_tex_coord2f(GL_TEXTURE1, 0.75, 0.25);
+        gl.vertex2f(0.0, 0.0);
+        gl.end();
+        gl.take_frame()
+    };
+    gl.enable(GL_POINT_SPRITE);
+    gl.tex_envi(GL_POINT_SPRITE, GL_COORD_REPLACE, GL_TRUE as i32);
+    frames.push(point(&mut gl));
+    gl.tex_envi(GL_POINT_SPRITE, GL_COORD_REPLACE, GL_FALSE as i32);
+    frames.push(point(&mut gl));
+    gl.tex_envi(GL_POINT_SPRITE, GL_COORD_REPLACE, GL_TRUE as i32);
+    gl.enable(GL_POINT_SMOOTH);
+    frames.push(point(&mut gl));
+    gl.disable(GL_POINT_SMOOTH);
+    gl.disable(GL_POINT_SPRITE);
+    frames.push(point(&mut gl));
+    gl.enable(GL_POINT_SPRITE);
+    gl.tex_envi(GL_POINT_SPRITE, GL_COORD_REPLACE, GL_FALSE as i32);
+    gl.active_texture(GL_TEXTURE1);
+    gl.enable(GL_TEXTURE_2D);
+    gl.tex_envi(GL_POINT_SPRITE, GL_COORD_REPLACE, GL_TRUE as i32);
+    frames.push(point(&mut gl));
+    assert_eq!(gl.get_error(), GL_NO_ERROR);
+    for (k, (frame, expected)) in frames.iter().zip(&mesa).enumerate() {
+        assert_diagonal_is_mesas(&mut renderer, frame, expected, 1, &format!("set-up {k}"));
+    }
+}

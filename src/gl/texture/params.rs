@@ -101,7 +101,7 @@ impl Gl {
     /// `GL_REPLACE`, `GL_ADD` or GL 1.3's `GL_COMBINE`, and the combiner's names
     /// ([`super::Combine`]). Another target, name or mode → `GL_INVALID_ENUM`.
     pub fn tex_envi(&mut self, target: GLenum, pname: GLenum, param: GLint) {
-        if target == GL_TEXTURE_FILTER_CONTROL {
+        if target == GL_TEXTURE_FILTER_CONTROL || target == GL_POINT_SPRITE {
             return self.tex_envfv(target, pname, &[param as GLfloat]);
         }
         if self.compiled_state_call(|| ListCommand::Texture(TextureCall::TexEnv(target, pname, vec![param as f32]))) {
@@ -143,7 +143,7 @@ impl Gl {
     /// `GL_TEXTURE_LOD_BIAS` of `GL_TEXTURE_FILTER_CONTROL` (kept as given; sampling clamps
     /// the sum with the object's). A short slice → `GL_INVALID_VALUE`.
     pub fn tex_envfv(&mut self, target: GLenum, pname: GLenum, params: &[GLfloat]) {
-        if pname == GL_TEXTURE_ENV_MODE && target != GL_TEXTURE_FILTER_CONTROL {
+        if pname == GL_TEXTURE_ENV_MODE && target == GL_TEXTURE_ENV {
             let Some(&mode) = params.first() else { return self.set_error(GL_INVALID_VALUE) };
             return self.tex_envi(target, pname, mode as GLint);
         }
@@ -153,6 +153,10 @@ impl Gl {
         if target == GL_TEXTURE_ENV && is_combine_name(pname) {
             let Some(&value) = params.first() else { return self.set_error(GL_INVALID_VALUE) };
             return self.set_combine(pname, value);
+        }
+        if target == GL_POINT_SPRITE && pname == GL_COORD_REPLACE {
+            let Some(&value) = params.first() else { return self.set_error(GL_INVALID_VALUE) };
+            return self.set_coord_replace(value);
         }
         if target == GL_TEXTURE_FILTER_CONTROL && pname == GL_TEXTURE_LOD_BIAS {
             let Some(&bias) = params.first() else { return self.set_error(GL_INVALID_VALUE) };

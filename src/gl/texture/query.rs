@@ -347,6 +347,7 @@ impl Gl {
                 env.map_or(zeros(1), |e| vec![e.combine.get(p)])
             }
             (GL_TEXTURE_FILTER_CONTROL, GL_TEXTURE_LOD_BIAS) => env.map_or(zeros(1), |e| vec![e.lod_bias]),
+            (GL_POINT_SPRITE, GL_COORD_REPLACE) => vec![f32::from(u8::from(self.coord_replace()))],
             _ => {
                 self.set_error(GL_INVALID_ENUM);
                 return None;
