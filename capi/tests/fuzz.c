@@ -10,6 +10,7 @@
  * call's own arguments say GL reads (the caller's promise in GL); the arguments themselves
  * are anything. */
 #include <GL/freeglut.h>
+#include <GL/glext.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -425,6 +426,36 @@ static void texture_3d_call(void) {
     }
 }
 
+/* GL 1.3's cube maps, GL 1.4's depth textures and shadow comparison, point sprites: face
+ * targets, depth and colour formats mixed, depth parameters with any value, sprites drawn. */
+static const GLenum cube_internals[] = {GL_RGB, GL_DEPTH_COMPONENT, GL_DEPTH_COMPONENT16, GL_DEPTH_COMPONENT32,
+    GL_DEPTH24_STENCIL8, 0x1234};
+static const GLenum cube_formats[] = {GL_RGB, GL_DEPTH_COMPONENT, GL_DEPTH_STENCIL, GL_STENCIL_INDEX};
+static const GLenum cube_types[] = {GL_UNSIGNED_BYTE, GL_FLOAT, GL_UNSIGNED_INT_24_8, GL_UNSIGNED_SHORT};
+static const GLenum depth_pnames[] = {GL_DEPTH_TEXTURE_MODE, GL_TEXTURE_COMPARE_MODE, GL_TEXTURE_COMPARE_FUNC};
+static const GLenum depth_values[] = {GL_LUMINANCE, GL_INTENSITY, GL_ALPHA, GL_RED, GL_RGBA, GL_NONE,
+    GL_COMPARE_R_TO_TEXTURE, GL_LEQUAL, GL_NEVER, GL_ALWAYS, 0x1234};
+static void cube_depth_sprite_call(void) {
+    GLenum face = GL_TEXTURE_CUBE_MAP_POSITIVE_X + (GLenum)pick(8) - 1;
+    GLenum target = pick(2) ? GL_TEXTURE_2D : pick(2) ? face : GL_TEXTURE_CUBE_MAP;
+    GLint w = ANY(side3), h = pick(4) ? w : ANY(side3);
+    switch (pick(5)) {
+    case 0: glBindTexture(GL_TEXTURE_CUBE_MAP, (GLuint)pick(3) + 10); glEnable(GL_TEXTURE_CUBE_MAP); break;
+    case 1: glTexImage2D(target, ANY(small) % 3, ANY(cube_internals), w, h, pick(3) - 1, ANY(cube_formats),
+                         ANY(cube_types), pick(4) ? (void *)buf : NULL);
+            glTexSubImage2D(target, 0, 0, 0, w, h, ANY(cube_formats), ANY(cube_types), pick(4) ? (void *)buf : NULL);
+            break;
+    case 2: glTexParameteri(pick(3) ? GL_TEXTURE_2D : GL_TEXTURE_CUBE_MAP, ANY(depth_pnames), ANY(depth_values));
+            glGetTexImage(target, ANY(small) % 3, pick(2) ? GL_DEPTH_COMPONENT : GL_RGBA, GL_FLOAT, buf); break;
+    case 3: if (!pick(8)) glCopyTexImage2D(target, 0, pick(2) ? GL_DEPTH_COMPONENT : GL_RGB, 0, 0, w, h, 0);
+            glTexGeni(GL_S + pick(3), GL_TEXTURE_GEN_MODE, pick(2) ? GL_REFLECTION_MAP : GL_NORMAL_MAP); break;
+    default: glTexEnvi(GL_POINT_SPRITE, pick(4) ? GL_COORD_REPLACE : GL_TEXTURE_ENV_MODE, pick(4));
+             if (pick(2)) glEnable(GL_POINT_SPRITE); else glDisable(GL_POINT_SPRITE);
+             glPointSize(f() * 16.0f);
+             glBegin(GL_POINTS); glTexCoord3f(f(), f(), f()); glVertex2f(f(), f()); glEnd(); break;
+    }
+}
+
 /* The imaging subset (raises GL_INVALID_OPERATION on Mesa and gleval) and the compressed-image
  * calls: any names, NULL or not. */
 static void imaging_call(void) {
@@ -453,7 +484,12 @@ static void imaging_call(void) {
 static void pixel_call(void) {
     GLint x = ANY(small) - 8, y = ANY(small) - 8, w = ANY(small), h = ANY(small);
     switch (pick(9)) {
-    case 7: if (pick(2)) texture_3d_call(); else if (pick(2)) combine_call(); else multitexture_call(); break;
+    case 7:
+        if (pick(2)) texture_3d_call();
+        else if (pick(2)) combine_call();
+        else if (pick(2)) multitexture_call();
+        else cube_depth_sprite_call();
+        break;
     case 0: glPixelZoom(f(), f()); glPixelTransferf(ANY(pixel_pnames), f()); glPixelTransferi(ANY(pixel_pnames), ANY(small)); break;
     case 1: glPixelMapfv(ANY(pixel_maps), ANY(map_sizes), pick(6) ? buf : NULL);
             glPixelMapuiv(ANY(pixel_maps), ANY(map_sizes), pick(6) ? (GLuint *)buf : NULL);

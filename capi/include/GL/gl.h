@@ -1712,7 +1712,7 @@ GLAPI void GLAPIENTRY glGetTexGeniv(GLenum coord, GLenum pname, GLint *params);
 #define GL_OPERAND2_ALPHA_EXT 0x859A
 
 /* GL 1.5's buffer objects and their GL_ARB_vertex_buffer_object names (GL_VERSION_1_5 is
- * not defined: GL 1.5 is not whole; <GL/glext.h> declares the rest of it). */
+ * not defined here: <GL/glext.h> declares the rest of GL 1.5, as it does for Mesa's gl.h). */
 #define GL_ARB_vertex_buffer_object 1
 typedef signed long int GLsizeiptr;
 typedef signed long int GLintptr;
@@ -1803,7 +1803,7 @@ GLAPI void GLAPIENTRY glGetBufferParameterivARB(GLenum target, GLenum pname, GLi
 GLAPI void GLAPIENTRY glGetBufferPointervARB(GLenum target, GLenum pname, GLvoid **params);
 
 /* GL 1.5's occlusion queries and their GL_ARB_occlusion_query names (GL_VERSION_1_5 is not
- * defined: GL 1.5 is not whole; <GL/glext.h> declares the rest of it). */
+ * defined here: <GL/glext.h> declares the rest of GL 1.5, as it does for Mesa's gl.h). */
 #define GL_ARB_occlusion_query 1
 #define GL_QUERY_COUNTER_BITS 0x8864
 #define GL_CURRENT_QUERY 0x8865
