@@ -10,7 +10,6 @@
  * call's own arguments say GL reads (the caller's promise in GL); the arguments themselves
  * are anything. */
 #include <GL/freeglut.h>
-#include <GL/glext.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>

@@ -37,7 +37,7 @@ warning: WARNING - Display string token not recognized:  bogus
 display mode 18
 glew before a window 1
 glewInit 0 No error, 1.1 1, 2.0 0
-glew extensions: fog_coord 1, point_parameters 1, texture_cube_map 0
+glew extensions: fog_coord 1, point_parameters 1, texture_cube_map 1
 window 1 size 64 48 version 30400
 proc glBegin 1 glutSolidCube 1 glFooBar 0
 extension 0

@@ -1835,4 +1835,14 @@ GLAPI void GLAPIENTRY glGetQueryObjectuivARB(GLuint id, GLenum pname, GLuint *pa
 #ifdef __cplusplus
 }
 #endif
+
+/* As Mesa's GL/gl.h does: the system's <GL/glext.h> unless GL_GLEXT_LEGACY is defined, so that
+ * a program naming GL 1.3-1.5 constants (GL_DEPTH_TEXTURE_MODE, GL_POINT_SPRITE ...) with
+ * <GL/gl.h> alone compiles here as it does on Mesa. Where the system has no glext.h, gl.h
+ * stands alone. */
+#if !defined(GL_GLEXT_LEGACY) && defined(__has_include)
+#if __has_include(<GL/glext.h>)
+#include <GL/glext.h>
+#endif
+#endif
 #endif /* GLEVAL_GL_H */
