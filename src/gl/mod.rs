@@ -94,6 +94,7 @@ pub use offset::PolygonOffset;
 pub use pixel_transfer::{ColorTransfer, DepthTransfer, MAX_PIXEL_MAP_TABLE};
 pub use point::PointParameters;
 pub use select::SelectHit;
+pub use texture::{copied_depth_texel, depth_texel, texel_depth, DepthParams, DepthSampling};
 pub use texture::{
     cube_face, cube_face_coords, texture_source, BoundTexture, Combine, Combiner, TexLevel, TexParams,
     MAX_3D_TEXTURE_SIZE, MAX_TEXTURE_SIZE,

@@ -256,8 +256,8 @@ pub struct BoundTexture {
     /// images (depth 6: +X, −X, +Y, −Y, +Z, −Z), and (s, t, r) is a direction that picks the
     /// face and the 2D coordinates within it ([`cube_face`]).
     pub cube_map: bool,
-    /// A depth texture's sampling (GL 1.4 §3.8.14): its levels hold depths ([`texel_depth`]),
-    /// and `base_format` is its mode's ([`DepthParams::environment_format`]).
+    /// A depth texture's sampling (GL 1.4 §3.8.14): its levels hold depths ([`texel_depth`](crate::gl::texel_depth)),
+    /// and `base_format` is its mode's ([`DepthParams::environment_format`](crate::gl::DepthParams::environment_format)).
     pub depth: Option<DepthSampling>,
     /// `glTexGen`: the coordinates generated per vertex, if any is enabled.
     pub generate: Option<TexGenState>,

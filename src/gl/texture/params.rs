@@ -17,7 +17,7 @@ impl Gl {
     /// `GL_MIRRORED_REPEAT`), and GL 1.2's
     /// `GL_TEXTURE_BASE_LEVEL` and `GL_TEXTURE_MAX_LEVEL`, and GL 1.4's
     /// `GL_DEPTH_TEXTURE_MODE`, `GL_TEXTURE_COMPARE_MODE` and `GL_TEXTURE_COMPARE_FUNC`
-    /// ([`super::DepthParams`]), of the bound object. Another target or
+    /// ([`DepthParams`]), of the bound object. Another target or
     /// name, or a value the name does not take → `GL_INVALID_ENUM`; a negative level →
     /// `GL_INVALID_VALUE`.
     pub fn tex_parameteri(&mut self, target: GLenum, pname: GLenum, param: GLint) {
