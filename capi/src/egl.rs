@@ -615,7 +615,7 @@ fn refuse(list: &[(EGLint, EGLint)]) -> Option<EGLint> {
 }
 
 entry! {
-    /// `eglCreateContext`: an OpenGL 1.0 to 1.2 context for `config` (the bound API must be
+    /// `eglCreateContext`: an OpenGL 1.0 to 1.5 context for `config` (the bound API must be
     /// OpenGL: `EGL_BAD_MATCH` otherwise); a higher version or a forward-compatible one →
     /// `EGL_BAD_MATCH`, an attribute EGL has not → `EGL_BAD_ATTRIBUTE`.
     unsafe fn eglCreateContext(handle: *mut c_void, c: *mut c_void, share: *mut c_void, list: *const EGLint) -> *mut c_void {
@@ -1023,11 +1023,11 @@ mod tests {
     use super::*;
 
     #[test]
-    fn contexts_of_versions_above_one_two_are_refused() {
+    fn contexts_of_versions_above_one_five_are_refused() {
         assert_eq!(refuse(&[]), None);
         assert_eq!(refuse(&[(EGL_CONTEXT_MAJOR_VERSION, 1), (EGL_CONTEXT_MINOR_VERSION, 1)]), None);
-        assert_eq!(refuse(&[(EGL_CONTEXT_MAJOR_VERSION, 1), (EGL_CONTEXT_MINOR_VERSION, 2)]), None);
-        assert_eq!(refuse(&[(EGL_CONTEXT_MAJOR_VERSION, 1), (EGL_CONTEXT_MINOR_VERSION, 3)]), Some(EGL_BAD_MATCH));
+        assert_eq!(refuse(&[(EGL_CONTEXT_MAJOR_VERSION, 1), (EGL_CONTEXT_MINOR_VERSION, 5)]), None);
+        assert_eq!(refuse(&[(EGL_CONTEXT_MAJOR_VERSION, 1), (EGL_CONTEXT_MINOR_VERSION, 6)]), Some(EGL_BAD_MATCH));
         assert_eq!(refuse(&[(EGL_CONTEXT_MAJOR_VERSION, 2)]), Some(EGL_BAD_MATCH));
         assert_eq!(refuse(&[(EGL_CONTEXT_OPENGL_FORWARD_COMPATIBLE, 1)]), Some(EGL_BAD_MATCH));
         assert_eq!(refuse(&[(0x1234, 0)]), Some(EGL_BAD_ATTRIBUTE));
