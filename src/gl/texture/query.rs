@@ -298,6 +298,14 @@ impl Gl {
             GL_TEXTURE_DEPTH_SIZE if defined.is_some() && images.formats[l] == GL_DEPTH_COMPONENT => {
                 super::depth::depth_bits(internal) as GLint
             }
+            // GL 3.0's depth-and-stencil formats have llvmpipe's 8 stencil bits (piglit's
+            // sized-texture-format-channels); gleval keeps the depths only, since nothing of
+            // GL 1.5 reads a texture's stencil back.
+            GL_TEXTURE_STENCIL_SIZE
+                if defined.is_some() && matches!(internal as GLenum, GL_DEPTH_STENCIL | GL_DEPTH24_STENCIL8) =>
+            {
+                8
+            }
             // Colour textures have neither; Mesa answers both names (ARB_depth_texture, and
             // GL 3.0's stencil size, unguarded in `get_tex_level_parameter_image`).
             GL_TEXTURE_DEPTH_SIZE | GL_TEXTURE_STENCIL_SIZE => 0,
