@@ -32,6 +32,8 @@ impl Gl {
     #[must_use]
     pub fn unpacked_image_len(&self, width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum) -> Option<usize> {
         let (w, h) = (usize::try_from(width).ok()?, usize::try_from(height).ok()?);
+        // GL 3.0's packed depth and stencil, which a depth texture takes (4 bytes a pixel).
+        let (format, type_) = super::texture::depth_of_depth_stencil(format, type_);
         if type_ == GL_BITMAP {
             // Indices one bit a pixel, laid out as a bitmap (GL 1.1 §3.6.3).
             format_components(format)?;

@@ -35,6 +35,7 @@ mod depth;
 mod gen;
 mod generate;
 mod image;
+pub(in crate::gl) use image::depth_of_depth_stencil;
 mod params;
 mod query;
 
@@ -658,7 +659,7 @@ impl Gl {
 impl Gl {
     /// `glActiveTexture` (GL 1.3 §2.7): selects the unit the texture calls, the texture
     /// enables and `glMatrixMode(GL_TEXTURE)` act on (the evaluators only work on unit 0). A
-    /// unit at or beyond [`MAX_COMBINED_TEXTURE_IMAGE_UNITS`] → `GL_INVALID_ENUM`, as Mesa.
+    /// unit at or beyond [`MAX_COMBINED_TEXTURE_IMAGE_UNITS`] → `GL_INVALID_ENUM`.
     pub fn active_texture(&mut self, texture: GLenum) {
         if self.compiled_state_call(|| ListCommand::Texture(TextureCall::ActiveTexture(texture))) {
             return;

@@ -10,11 +10,13 @@ use super::types::*;
 /// §3.8.15; llvmpipe answers 8, as `GL_MAX_TEXTURE_COORDS`, measured on Mesa 22.3).
 pub const MAX_TEXTURE_UNITS: usize = 8;
 
-/// The units `glActiveTexture` selects: Mesa takes any below
-/// `GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS` (192 on llvmpipe, measured), and a unit at or beyond
-/// [`MAX_TEXTURE_UNITS`] only holds bindings (its environment is ignored, its texture
-/// coordinate state an error, `multitexture.calls`).
-pub const MAX_COMBINED_TEXTURE_IMAGE_UNITS: usize = 192;
+/// The units `glActiveTexture` selects. Without shaders these are the fixed-function units
+/// (ARB_multitexture; GL 1.5 has no `GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS`), and a unit at
+/// [`MAX_TEXTURE_UNITS`] is `GL_INVALID_ENUM`, as piglit's `texunits` checks of an
+/// implementation that claims neither `GL_ARB_vertex_shader` nor `GL_ARB_fragment_program`.
+/// llvmpipe takes any unit below its 192 shader image units (measured on Mesa 22.3): that is a
+/// deviation of the call scripts (`tests/it/mesa_calls.rs`).
+pub const MAX_COMBINED_TEXTURE_IMAGE_UNITS: usize = MAX_TEXTURE_UNITS;
 
 /// The enables each texture unit has of its own (GL 1.3 §2.7, §3.8.15): its targets and its
 /// coordinate generation.

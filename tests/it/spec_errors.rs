@@ -326,3 +326,21 @@ fn nan_and_infinity_propagate_without_panic() {
     gl.map1f(GL_MAP1_VERTEX_3, f32::NAN, 1.0, 3, 3, &pts);
     assert_eq!(gl.get_error(), GL_NO_ERROR);
 }
+
+/// Without shaders GL 1.5 has `GL_MAX_TEXTURE_UNITS` units in all: the next one is
+/// `GL_INVALID_ENUM` and leaves the active unit as it was (piglit's `texunits`; llvmpipe, which
+/// has shader image units, takes it: a deviation of `multitexture.calls`).
+#[test]
+fn active_texture_stops_at_the_fixed_function_units() {
+    let mut gl = Gl::new(4, 4);
+    let mut units = [0];
+    gl.get_integerv(GL_MAX_TEXTURE_UNITS, &mut units);
+    assert_eq!(units[0], 8);
+    gl.active_texture(GL_TEXTURE7);
+    assert_eq!(gl.get_error(), GL_NO_ERROR);
+    gl.active_texture(GL_TEXTURE0 + 8);
+    assert_eq!(gl.get_error(), GL_INVALID_ENUM);
+    let mut active = [0];
+    gl.get_integerv(GL_ACTIVE_TEXTURE, &mut active);
+    assert_eq!(active[0], GL_TEXTURE7 as GLint);
+}

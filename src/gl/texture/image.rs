@@ -16,7 +16,7 @@ use crate::gl::Gl;
 /// `GL_DEPTH_STENCIL` of `GL_UNSIGNED_INT_24_8`, which Mesa takes for a depth texture in every
 /// context, as the 32-bit depths whose top 24 bits its depths are (the stencil's 8 bits weigh
 /// in below 2⁻²⁴ of a depth; gleval keeps no stencil in textures); every other pair as it is.
-fn depth_of_depth_stencil(format: GLenum, type_: GLenum) -> (GLenum, GLenum) {
+pub(in crate::gl) fn depth_of_depth_stencil(format: GLenum, type_: GLenum) -> (GLenum, GLenum) {
     if (format, type_) == (GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8) {
         (GL_DEPTH_COMPONENT, GL_UNSIGNED_INT)
     } else {
