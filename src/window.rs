@@ -444,7 +444,18 @@ impl WindowState {
     /// next timer (or not at all while an idle callback is set, as GLUT's loop spins).
     fn idle(&mut self, event_loop: &ActiveEventLoop) {
         let now = self.now_ms();
+        let swaps = self.program.buffer_swaps();
         self.program.step(now - self.program.now_ms);
+        // A window whose idle callback or timer swapped its buffers without posting a
+        // redisplay shows that frame (freeglut presents at the swap itself).
+        for (id, count) in self.program.buffer_swaps() {
+            if !swaps.contains(&(id, count)) {
+                let top = self.top_of(id);
+                if let Some(on) = self.winit_id(top).and_then(|w| self.windows.get(&w)) {
+                    on.gpu.window.request_redraw();
+                }
+            }
+        }
         self.after_callbacks(event_loop);
         let flow = if self.program.schedule.has_idle() {
             ControlFlow::Poll

@@ -76,3 +76,24 @@ printf 'gleval: glEnable: GL_INVALID_ENUM\ngleval: glTexImage3DEXT: GL_INVALID_E
 "$work/debug" 2> "$work/quiet.log"
 [ ! -s "$work/quiet.log" ]
 echo "glut: GLEVAL_DEBUG names each error and its call"
+
+# freeglut's context settings are recorded for glutGet and warn of nothing (freeglut 3.4 prints
+# nothing here); a core profile, which gleval does not have, is said once.
+cat > "$work/profile.c" <<'END'
+#include <GL/freeglut.h>
+#include <stdio.h>
+int main(int argc, char **argv) {
+    glutInitContextVersion(2, 1);
+    glutInitContextProfile(argc > 1 ? GLUT_CORE_PROFILE : GLUT_COMPATIBILITY_PROFILE);
+    glutInitContextProfile(argc > 1 ? GLUT_CORE_PROFILE : GLUT_COMPATIBILITY_PROFILE);
+    glutInit(&argc, argv);
+    glutCreateWindow("profile");
+    printf("%d %d\n", glutGet(GLUT_INIT_MAJOR_VERSION), glutGet(GLUT_INIT_PROFILE) == (argc > 1 ? GLUT_CORE_PROFILE : GLUT_COMPATIBILITY_PROFILE));
+    return 0;
+}
+END
+$cc -o "$work/profile" "$work/profile.c"
+[ "$("$work/profile" 2> "$work/profile.log")" = "2 1" ] && [ ! -s "$work/profile.log" ]
+"$work/profile" core 2> "$work/core.log" > /dev/null
+[ "$(grep -c 'core profile' "$work/core.log")" = 1 ] && [ "$(wc -l < "$work/core.log")" = 1 ]
+echo "glut: glutInitContextProfile records the profile and warns of nothing"

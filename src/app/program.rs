@@ -348,8 +348,8 @@ impl Program {
 
     /// Runs the program headless for `frames` frames: the first frame of every window, then,
     /// between frames, what GLUT's main loop does in one refresh of a 60 Hz display (the timers
-    /// due, the idle callback once) until a callback posts a redisplay; the windows that asked
-    /// draw again. It stops early when nothing is left that could redisplay, or the loop was
+    /// due, the idle callback once) until a callback posts a redisplay or presents a frame itself
+    /// (swaps the buffers); the windows that asked draw again. It stops early when nothing is left that could redisplay, or the loop was
     /// left (`glutLeaveMainLoop`, the last window destroyed).
     pub fn run_headless(&mut self, frames: usize) {
         self.start();
@@ -370,15 +370,23 @@ impl Program {
         self.run_global(|schedule, gl, now| schedule.run_idle(gl, now));
     }
 
+    /// Each window's buffer swaps so far ([`Gl::buffer_swaps`]), by window.
+    pub fn buffer_swaps(&self) -> Vec<(i32, u64)> {
+        self.slots.iter().map(|s| (s.facts.id, s.gl.buffer_swaps())).collect()
+    }
+
     /// Steps the virtual clock until a window must redraw (true) or nothing is left that could
     /// make one (false).
     fn advance(&mut self) -> bool {
         for _ in 0..MAX_QUIET_REFRESHES {
+            let swaps = self.buffer_swaps();
             self.step(HEADLESS_FRAME_MS);
             if self.leave {
                 return false;
             }
-            if self.slots.iter().any(|s| s.redisplay || s.reshape.is_some()) {
+            // A frame presented by the idle callback or a timer counts as one of `--frames`,
+            // whether or not a redisplay was posted.
+            if self.slots.iter().any(|s| s.redisplay || s.reshape.is_some()) || self.buffer_swaps() != swaps {
                 return true;
             }
             if self.schedule.is_empty() {

@@ -37,7 +37,16 @@ impl Gl {
     pub fn record_swap_buffers(&mut self) {
         if self.server.framebuffer.double && !self.inside_begin_end() {
             self.recorder.frame.commands.push(Command::SwapBuffers);
+            self.recorder.swaps += 1;
         }
+    }
+
+    /// How many buffer swaps this context has recorded ([`Gl::record_swap_buffers`]): how a
+    /// main loop sees a frame presented outside the display callback (an idle callback or a
+    /// timer that draws and swaps without posting a redisplay).
+    #[must_use]
+    pub fn buffer_swaps(&self) -> u64 {
+        self.recorder.swaps
     }
 
     /// `glDrawBuffer`: the colour buffers draws and clears write (see the module's table).

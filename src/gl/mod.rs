@@ -351,6 +351,8 @@ pub(crate) struct Recorder {
     /// The open primitive draws with units beyond unit 0: its vertices record those units'
     /// coordinates ([`Frame::unit_tex_coords`]).
     pub(super) multi_unit: bool,
+    /// Buffer swaps recorded since the context was made ([`Gl::buffer_swaps`]).
+    pub(super) swaps: u64,
 }
 
 impl Recorder {
@@ -367,6 +369,7 @@ impl Recorder {
             window_reader: window_read::Reader::default(),
             indexed_draw: false,
             multi_unit: false,
+            swaps: 0,
         }
     }
 }

@@ -154,8 +154,7 @@ impl Gl {
     }
 
     /// `glutInitContextVersion(major, minor)`: recorded for `glutGet`. gleval's context is
-    /// GL 1.1 with everything later that it has, and runs a program asking for any version
-    /// of the compatibility profile.
+    /// GL 1.5, and runs a program asking for any version of the compatibility profile.
     pub fn glut_init_context_version(&mut self, major: i32, minor: i32) {
         self.glut.program_mut().options.context_version = (major, minor);
     }
@@ -165,11 +164,13 @@ impl Gl {
         self.glut.program_mut().options.context_flags = flags;
     }
 
-    /// `glutInitContextProfile(profile)`: recorded; a core profile is not one gleval has, and
-    /// it says so once on stderr.
+    /// `glutInitContextProfile(profile)`: recorded for `glutGet`; a core profile is not one
+    /// gleval has, and it says so once a process on stderr. Unlike `glutSetOption`, which
+    /// does not know `GLUT_INIT_PROFILE` (freeglut warns), this warns of nothing.
     pub fn glut_init_context_profile(&mut self, profile: i32) {
-        if profile == GLUT_CORE_PROFILE {
-            eprintln!("gleval: a core profile was asked for; the context is GL 1.1 (compatibility)");
+        static SAID: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBool::new(false);
+        if profile == GLUT_CORE_PROFILE && !SAID.swap(true, std::sync::atomic::Ordering::Relaxed) {
+            eprintln!("gleval: a core profile was asked for; the context is GL 1.5 (compatibility)");
         }
         self.glut.program_mut().options.context_profile = profile;
     }

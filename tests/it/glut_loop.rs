@@ -53,6 +53,25 @@ fn an_idle_callback_that_never_posts_draws_nothing_new() {
     assert_eq!(log.borrow().len(), 1);
 }
 
+/// An idle callback that draws and swaps but never posts a redisplay (a common animation loop)
+/// presents a frame each refresh: `--frames N` counts those frames, N - 1 idle calls after the
+/// first display, instead of waiting for a redisplay that never comes.
+#[test]
+fn an_idle_callback_that_swaps_presents_one_frame_per_refresh() {
+    let log = log();
+    let steps = Rc::new(RefCell::new(0));
+    let s = Rc::clone(&steps);
+    let mut app = logging_app(&log).init_display_mode(GLUT_DOUBLE | GLUT_RGB).idle(move |gl| {
+        *s.borrow_mut() += 1;
+        gl.clear(GL_COLOR_BUFFER_BIT);
+        gl.glut_swap_buffers();
+    });
+    let gl = app.record_frames(5);
+    assert_eq!(*steps.borrow(), 4, "one idle call a presented frame");
+    assert_eq!(gl.buffer_swaps(), 4);
+    assert_eq!(*log.borrow(), ["display 0"], "no redisplay was posted");
+}
+
 #[test]
 fn the_idle_callback_can_be_removed_from_a_callback() {
     let log = log();

@@ -75,8 +75,7 @@ entry! {
 entry! {
     /// `glutInitContextProfile` (freeglut).
     fn glutInitContextProfile(profile: c_int) {
-        with_glut(|gl| gl.glut_init_context_profile(profile));
-        set_glut(|gl| gl.glut_set_option(gleval::glut::consts::GLUT_INIT_PROFILE, profile))
+        set_glut(|gl| gl.glut_init_context_profile(profile))
     }
 }
 
