@@ -1,8 +1,7 @@
 //! Teapot.c (tests/reference/pictures), ported line for line: GLUT's solid teapot, lit.
-//! `gl.glut_solid_teapot(1.0)` draws it as GLUT 3.7 does, through the evaluators (every
-//! bicubic patch loaded with `glMap2f` beside a bilinear texture-coordinate map, a 14 × 14
-//! `glEvalMesh2` per patch, `GL_AUTO_NORMAL` and `GL_NORMALIZE` on), from Newell's 32 patches
-//! ([`gleval::data::teapot`]).
+//! `gl.glut_solid_teapot(1.0)` draws it as freeglut 3.4 does: its 10 bicubic patches of
+//! Newell's teapot, turned and mirrored into 32, each evaluated on an 8 × 8 grid with normals
+//! from the tangents, and drawn as triangles with (u, v) texture coordinates.
 //!
 //! `cargo run --release --example teapot -- --png teapot.png`
 

@@ -1,6 +1,6 @@
 //! TexTeapot.c (tests/reference/pictures), ported line for line: GLUT's teapots as course
-//! programs draw them. On the left `glut_solid_teapot`, lit and textured (GLUT's teapot carries
-//! (s, t) per patch through `GL_MAP2_TEXTURE_COORD_2`) with a striped image in `GL_MODULATE`;
+//! programs draw them. On the left `glut_solid_teapot`, lit and textured (freeglut's teapot carries
+//! (u, v) per patch as texture coordinates) with a striped image in `GL_MODULATE`;
 //! on the right `glut_wire_teapot`, unlit.
 //!
 //! `cargo run --release --example texteapot -- --png texteapot.png`

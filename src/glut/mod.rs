@@ -29,7 +29,6 @@ mod shapes;
 #[allow(clippy::excessive_precision, clippy::unreadable_literal, clippy::approx_constant)]
 mod solids_data;
 pub(crate) mod state;
-mod teapot;
 mod teaset;
 pub(crate) mod windows;
 

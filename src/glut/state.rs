@@ -31,6 +31,9 @@ pub(crate) struct ProgramState {
     pub screen: (i32, i32),
     /// The menus made with `glutCreateMenu`, and the current one.
     pub menus: Menus,
+    /// The size each tea-set piece (teapot, teacup, teaspoon) × (solid, wire) was first drawn
+    /// at: freeglut computes its normals then and keeps them (`teaset.rs`).
+    pub tea_set_first_scale: [[Option<f32>; 2]; 3],
 }
 
 impl ProgramState {

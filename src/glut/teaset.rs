@@ -1,20 +1,21 @@
-//! freeglut 3.4's teacup and teaspoon (`glutSolidTeacup`, `glutWireTeaspoon`, ...), drawn as
-//! freeglut draws its tea set (fg_teapot.c, read to learn its rules): each bicubic patch
-//! evaluated on the CPU in `f32` on an 8 × 8 grid (solid) or 10 × 10 (wire), with the
-//! Bernstein weights and their derivatives; normals from the cross product of the two
-//! tangents; the teacup's first six patches turned into the four quadrants and the others
-//! mirrored, the teaspoon's patches as they are. Solids are one `GL_TRIANGLES` (two triangles a
-//! grid square) with texture coordinates (u, v) per patch; wires are line strips along both
-//! directions of every patch.
+//! freeglut 3.4's tea set (`glutSolidTeapot`, `glutWireTeacup`, `glutSolidTeaspoon`, ...), drawn
+//! as freeglut draws it (fg_teapot.c, read to learn its rules): each bicubic patch evaluated on
+//! the CPU in `f32` on an 8 × 8 grid (solid) or 10 × 10 (wire), with the Bernstein weights and
+//! their derivatives; normals from the cross product of the two tangents; the teapot's and
+//! teacup's first six patches turned into the four quadrants and the others mirrored, the
+//! teaspoon's patches as they are; the first row of normals of the teapot's lid top and of its
+//! bottom's middle (where the tangents vanish) set straight up and down. Solids are one
+//! `GL_TRIANGLES` (two triangles a grid square) with texture coordinates (u, v) per patch; wires
+//! are line strips along both directions of every patch.
 //!
 //! freeglut computes the normals once, at the first call's size, and keeps them for later
-//! sizes; so does this (program-wide), so that the same calls light the same pixels.
+//! sizes; so does this (for the GLUT program: every window's context of it), so that the same
+//! calls light the same pixels.
 
 use super::solids_data::*;
 use crate::gl::consts::*;
 use crate::gl::types::*;
 use crate::gl::Gl;
-use std::sync::Mutex;
 
 /// One of the tea set's pieces as freeglut keeps it.
 struct Piece {
@@ -24,16 +25,37 @@ struct Piece {
     rotate_flip: bool,
     /// The height freeglut subtracts to centre the piece.
     z_offset: f32,
+    /// What freeglut divides the size by (in `f32`) to scale the control points.
+    size_divisor: f32,
+    /// The teapot's patches 3 (the lid's top) and 5 (the bottom's middle) meet at a point where
+    /// the tangents vanish: their first row of normals is set to +y and -y.
+    normal_fix: bool,
 }
 
-const TEACUP: Piece =
-    Piece { control_points: &TEACUP_CP, patches: &TEACUP_PATCHES, rotate_flip: true, z_offset: 1.5121 };
-const TEASPOON: Piece =
-    Piece { control_points: &TEASPOON_CP, patches: &TEASPOON_PATCHES, rotate_flip: false, z_offset: -0.0315 };
-
-/// The size each piece (teacup, teaspoon) × (solid, wire) was first drawn at: freeglut's
-/// normals come from it.
-static FIRST_SCALE: Mutex<[[Option<f32>; 2]; 2]> = Mutex::new([[None; 2]; 2]);
+const TEAPOT: Piece = Piece {
+    control_points: &TEAPOT_CP,
+    patches: &TEAPOT_PATCHES,
+    rotate_flip: true,
+    z_offset: 1.575,
+    size_divisor: 1.0,
+    normal_fix: true,
+};
+const TEACUP: Piece = Piece {
+    control_points: &TEACUP_CP,
+    patches: &TEACUP_PATCHES,
+    rotate_flip: true,
+    z_offset: 1.5121,
+    size_divisor: 2.5,
+    normal_fix: false,
+};
+const TEASPOON: Piece = Piece {
+    control_points: &TEASPOON_CP,
+    patches: &TEASPOON_PATCHES,
+    rotate_flip: false,
+    z_offset: -0.0315,
+    size_divisor: 2.5,
+    normal_fix: false,
+};
 
 /// The Bernstein weight of degree 3 and its derivative, as freeglut computes them in `f32`.
 fn bernstein3(i: usize, x: f32) -> (f32, f32) {
@@ -145,14 +167,10 @@ fn copies(values: &[[f32; 3]], n: usize, flag: usize) -> Vec<[f32; 3]> {
 }
 
 /// The whole piece's grid points and normals (every patch and copy, in freeglut's order), the
-/// normals from the size the piece was first drawn at.
-fn generate(piece: &Piece, which: usize, wire: bool, scale: f32) -> (Vec<[f32; 3]>, Vec<[f32; 3]>, usize) {
+/// normals from `first`, the size the piece was first drawn at.
+fn generate(piece: &Piece, wire: bool, scale: f32, first: f32) -> (Vec<[f32; 3]>, Vec<[f32; 3]>, usize) {
     let n = if wire { 10 } else { 8 };
     let (b0, b1) = weights(n);
-    let first = {
-        let mut firsts = FIRST_SCALE.lock().unwrap_or_else(|e| e.into_inner());
-        *firsts[which][usize::from(wire)].get_or_insert(scale)
-    };
     let (mut verts, mut norms) = (Vec::new(), Vec::new());
     for p in 0..piece.patches.len() / 16 {
         let flag = if !piece.rotate_flip {
@@ -163,7 +181,11 @@ fn generate(piece: &Piece, which: usize, wire: bool, scale: f32) -> (Vec<[f32; 3
             2
         };
         let (v, _) = evaluate(&control_points(piece, p, scale), &b0, &b1);
-        let (_, normals) = evaluate(&control_points(piece, p, first), &b0, &b1);
+        let (_, mut normals) = evaluate(&control_points(piece, p, first), &b0, &b1);
+        if piece.normal_fix && (p == 3 || p == 5) {
+            let y = if p == 3 { 1.0 } else { -1.0 };
+            normals[..n].fill([0.0, y, 0.0]);
+        }
         verts.extend(copies(&v, n, flag));
         norms.extend(copies(&normals, n, flag));
     }
@@ -171,8 +193,16 @@ fn generate(piece: &Piece, which: usize, wire: bool, scale: f32) -> (Vec<[f32; 3
 }
 
 impl Gl {
+    /// The size piece `which` (teapot, teacup, teaspoon), solid or wire, was first drawn at in
+    /// this program: `scale` if this is the first time.
+    fn tea_set_first_scale(&mut self, which: usize, wire: bool, scale: f32) -> f32 {
+        *self.glut.program_mut().tea_set_first_scale[which][usize::from(wire)].get_or_insert(scale)
+    }
+
     fn solid_piece(&mut self, piece: &Piece, which: usize, size: GLdouble) {
-        let (verts, norms, n) = generate(piece, which, false, size as f32 / 2.5);
+        let scale = size as f32 / piece.size_divisor;
+        let first = self.tea_set_first_scale(which, false, scale);
+        let (verts, norms, n) = generate(piece, false, scale, first);
         let patches = verts.len() / (n * n);
         let tex = |k: usize| {
             let (r, c) = ((k % (n * n)) / n, k % n);
@@ -202,7 +232,9 @@ impl Gl {
     }
 
     fn wire_piece(&mut self, piece: &Piece, which: usize, size: GLdouble) {
-        let (verts, norms, n) = generate(piece, which, true, size as f32 / 2.5);
+        let scale = size as f32 / piece.size_divisor;
+        let first = self.tea_set_first_scale(which, true, scale);
+        let (verts, norms, n) = generate(piece, true, scale, first);
         let patches = verts.len() / (n * n);
         let point = |k: usize| (norms[k], verts[k]);
         self.drawing_shape(|gl| {
@@ -219,21 +251,30 @@ impl Gl {
         });
     }
 
+    /// `glutSolidTeapot(size)`: Newell's teapot, `size` its scale (GLUT's teapot is 3 · size
+    /// wide).
+    pub fn glut_solid_teapot(&mut self, size: GLdouble) {
+        self.solid_piece(&TEAPOT, 0, size);
+    }
+    /// `glutWireTeapot(size)`.
+    pub fn glut_wire_teapot(&mut self, size: GLdouble) {
+        self.wire_piece(&TEAPOT, 0, size);
+    }
     /// `glutSolidTeacup(size)` (freeglut).
     pub fn glut_solid_teacup(&mut self, size: GLdouble) {
-        self.solid_piece(&TEACUP, 0, size);
+        self.solid_piece(&TEACUP, 1, size);
     }
     /// `glutWireTeacup(size)` (freeglut).
     pub fn glut_wire_teacup(&mut self, size: GLdouble) {
-        self.wire_piece(&TEACUP, 0, size);
+        self.wire_piece(&TEACUP, 1, size);
     }
     /// `glutSolidTeaspoon(size)` (freeglut).
     pub fn glut_solid_teaspoon(&mut self, size: GLdouble) {
-        self.solid_piece(&TEASPOON, 1, size);
+        self.solid_piece(&TEASPOON, 2, size);
     }
     /// `glutWireTeaspoon(size)` (freeglut).
     pub fn glut_wire_teaspoon(&mut self, size: GLdouble) {
-        self.wire_piece(&TEASPOON, 1, size);
+        self.wire_piece(&TEASPOON, 2, size);
     }
 }
 
@@ -247,6 +288,8 @@ mod tests {
             let mut gl = Gl::new(4, 4);
             gl.glut_solid_teacup(size);
             gl.glut_wire_teaspoon(size);
+            gl.glut_solid_teapot(size);
+            gl.glut_wire_teapot(size);
             assert_eq!(gl.get_error(), GL_NO_ERROR);
         }
     }

@@ -369,7 +369,8 @@ fn labels_match_mesa() {
     check("labels", labels::app, 0.0);
 }
 
-/// GLUT's solid teapot (32 bicubic patches through glMap2f/glEvalMesh2) against `Teapot.c`.
+/// GLUT's solid teapot (freeglut 3.4's: 10 patches and their copies, evaluated on the CPU)
+/// against `Teapot.c`.
 #[test]
 fn teapot_matches_mesa() {
     check("teapot", teapot::app, 0.0);

@@ -28,6 +28,10 @@ static void display(void)
     SHOW("solid_cylinder_1_2_7_3", glutSolidCylinder(1.0, 2.0, 7, 3));
     SHOW("wire_cylinder_0.5_1_5_2", glutWireCylinder(0.5, 1.0, 5, 2));
     SHOW("solid_cylinder_1_1_3_1", glutSolidCylinder(1.0, 1.0, 3, 1));
+    SHOW("solid_teapot_1", glutSolidTeapot(1.0));
+    SHOW("solid_teapot_0.5", glutSolidTeapot(0.5));
+    SHOW("wire_teapot_1", glutWireTeapot(1.0));
+    SHOW("wire_teapot_2", glutWireTeapot(2.0));
     SHOW("solid_teacup_1", glutSolidTeacup(1.0));
     SHOW("solid_teacup_2.5", glutSolidTeacup(2.5));
     SHOW("wire_teacup_1", glutWireTeacup(1.0));
