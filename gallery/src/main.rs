@@ -11,8 +11,9 @@
 use gleval::prelude::*;
 use gleval::render::Rasterizer;
 use gleval::testing::compare::{compare, load_png, RgbImage};
-use std::fmt::Write as _;
 use std::path::Path;
+
+mod page;
 
 #[path = "../../examples/bcurve.rs"]
 mod bcurve;
@@ -134,14 +135,9 @@ fn render_gallery() -> Result<(), Box<dyn std::error::Error>> {
     let out = Path::new("out/gallery");
     std::fs::create_dir_all(out)?;
     let references = Path::new(env!("CARGO_MANIFEST_DIR")).join("../tests/reference/pictures/png");
-    let mut html = String::from(
-        "<!doctype html><meta charset=utf-8><title>gleval gallery</title>\
-         <style>body{font-family:sans-serif}td{padding:6px;vertical-align:top}</style>\
-         <h1>gleval gallery</h1><p>Left: gleval's picture, drawn headless by the rasteriser named beside it. \
-         Right: real Mesa/GLU (OSMesa, llvmpipe) from the C original.</p><table>",
-    );
     println!("{:<12} {:>9}  title", "program", "differ");
     let mut rasterizers = Vec::new();
+    let mut shown = Vec::new();
     for (name, make) in PROGRAMS {
         let mut app = make();
         if wgpu {
@@ -160,20 +156,23 @@ fn render_gallery() -> Result<(), Box<dyn std::error::Error>> {
         if !rasterizers.contains(&drawn_by) {
             rasterizers.push(drawn_by);
         }
-        let reference_cell = if reference.exists() {
+        let has_reference = reference.exists();
+        if has_reference {
             std::fs::copy(&reference, out.join(format!("{name}.mesa.png")))?;
-            format!("<img src=\"{name}.mesa.png\">")
-        } else {
-            "(no reference)".to_owned()
-        };
-        let _ = write!(
-            html,
-            "<tr><td><b>{name}</b><br>{title}<br>drawn by {drawn_by}<br>differs from Mesa: {score_text}</td>\
-             <td><img src=\"{name}.png\"></td><td>{reference_cell}</td></tr>"
-        );
+        }
+        shown.push((name, title, drawn_by, score_text, has_reference));
     }
-    html.push_str("</table>");
-    std::fs::write(out.join("index.html"), html)?;
+    let entries: Vec<page::Entry> = shown
+        .iter()
+        .map(|(name, title, drawn_by, score, has_reference)| page::Entry {
+            name,
+            title,
+            drawn_by,
+            score,
+            has_reference: *has_reference,
+        })
+        .collect();
+    std::fs::write(out.join("index.html"), page::page(&entries))?;
     println!("drawn by {}; wrote {}", rasterizers.join(", "), out.join("index.html").display());
     Ok(())
 }

@@ -426,7 +426,6 @@ fn fragment_operations_and_lists_stay_on_the_gpu_tessellator() {
         ("mipnurbs", mipnurbs::app),
         ("fogblend", fogblend::app),
         ("lists", lists::app),
-        ("texteapot", texteapot::app),
     ] {
         let mut gl = app().with_tessellator(Tessellator::Gpu).record_frame();
         let frame = gl.frame();
