@@ -1,8 +1,8 @@
 //! ColorMat.c (tests/reference/pictures), ported line for line: `GL_COLOR_MATERIAL` set up as
 //! the Red Book's colormat.c does (a `glMaterial` diffuse of 0.5, then `glColorMaterial` and
 //! `glEnable(GL_COLOR_MATERIAL)`). The left sphere, with no `glColor` of its own, is lit with
-//! the material's 0.5 as on Mesa 22.3; the right one follows a `glColor` (see the README's
-//! "Conventions that differ from Mesa on purpose" for where Mesa and the spec part).
+//! the material's 0.5 as on Mesa 22.3; the right one follows a `glColor` (see
+//! docs/conventions.md, "`GL_COLOR_MATERIAL`", for where Mesa and the spec part).
 //!
 //! `cargo run --release --example colormat -- --png colormat.png`
 

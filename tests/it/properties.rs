@@ -3,7 +3,7 @@
 //! their invariants, and a GLU object that saw garbage draws the next valid surface exactly as
 //! a fresh one does. Several contexts alive at once do not disturb each other.
 //!
-//! `PROPTEST_CASES=N` sets the number of cases (README: the long run).
+//! `PROPTEST_CASES=N` sets the number of cases (docs/testing.md: the long run).
 
 use gleval::math::{BSplineCurve, BSplineSurface, BezierPatch, KnotVector};
 use gleval::prelude::*;

@@ -4,7 +4,7 @@
 //! per-fragment operations (`fragment.rs`, the same as `shaders/fragment.wgsl`), the depth test
 //! and blending (`framebuffer.rs`). It needs no device and no driver: a headless picture costs
 //! its drawing only, where a first wgpu render on a software Vulkan driver pays about 45 ms of
-//! instance, adapter and pipeline compilation before drawing anything (README, Benchmarks).
+//! instance, adapter and pipeline compilation before drawing anything (docs/benchmarks.md).
 //!
 //! | file | what |
 //! |---|---|
