@@ -99,8 +99,9 @@ impl PixelCopy {
 
 impl Gl {
     /// `glCopyPixels(x, y, width, height, type)`: copies the window rectangle at (`x`, `y`) to the
-    /// raster position, colours (`GL_COLOR`: through the pixel transfer, at the raster depth) or
-    /// depths (`GL_DEPTH`: through the depth scale and bias, in the raster colour), zoomed by
+    /// raster position, colours (`GL_COLOR`: through the pixel transfer, at the raster depth),
+    /// depths (`GL_DEPTH`: through the depth scale and bias, in the raster colour), stencil
+    /// indices (`GL_STENCIL`) or depths and stencil indices (`GL_DEPTH_STENCIL`), zoomed by
     /// `glPixelZoom`. Errors, in Mesa's order: inside `begin`/`end` → `GL_INVALID_OPERATION`; a
     /// negative size → `GL_INVALID_VALUE`; a type other than `GL_COLOR`, `GL_DEPTH`,
     /// `GL_STENCIL`, `GL_DEPTH_STENCIL` → `GL_INVALID_ENUM`; a buffer the window lacks (the
@@ -124,24 +125,57 @@ impl Gl {
         {
             return;
         }
+        // GL_DEPTH_STENCIL (EXT_packed_depth_stencil) copies the depths, then the stencil
+        // indices, of the same rectangle (piglit's depthstencil-default_fb-copypixels).
+        // The depths, then the stencil indices (which a stencil copy writes untested); as
+        // Mesa 22.3 copies them (measured, `tests/it/pixel_properties.rs`), neither the depth
+        // test nor the stencil test applies to the depths.
+        let source = [x, y, width, height];
+        if type_ == GL_DEPTH_STENCIL {
+            self.record_pixel_copy(source, GL_DEPTH, true);
+            self.record_pixel_copy(source, GL_STENCIL, true);
+        } else {
+            self.record_pixel_copy(source, type_, false);
+        }
+    }
+
+    /// Records the copy of `source` from `buffer` (`GL_COLOR`, `GL_DEPTH` or `GL_STENCIL`) to
+    /// the raster position, with the state in force now; `packed`: a half of a
+    /// `GL_DEPTH_STENCIL` copy.
+    fn record_pixel_copy(&mut self, source: [GLint; 4], buffer: GLenum, packed: bool) {
         let [xr, yr, depth, _] = self.server.raster_pos.window;
         let (zoom, color_transfer) = (self.zoom(), self.draw_color_transfer());
         let tests = self.capability(GL_DEPTH_TEST) || self.capability(GL_BLEND) || self.capability(GL_ALPHA_TEST);
         let copy = PixelCopy {
-            source: [x, y, width, height],
+            source,
             origin: [xr.round() as i32, yr.round() as i32],
             zoom,
-            buffer: type_,
+            buffer,
             depth,
             color: self.server.raster_pos.color.map(|c| c.clamp(0.0, 1.0)),
-            blit: type_ == GL_COLOR && zoom == [1.0, 1.0] && color_transfer.is_none() && !tests,
+            blit: buffer == GL_COLOR && zoom == [1.0, 1.0] && color_transfer.is_none() && !tests,
             color_transfer,
             depth_transfer: self.depth_transfer(),
-            state: self.window_state(),
+            state: if packed { self.packed_copy_state() } else { self.window_state() },
             stencil_values: None,
         };
         self.recorder.frame.pixel_copies.push(copy);
         self.recorder.frame.commands.push(Command::CopyPixels(self.recorder.frame.pixel_copies.len() - 1));
+    }
+
+    /// [`Gl::window_state`] for the halves of a `GL_DEPTH_STENCIL` copy, as Mesa 22.3 draws
+    /// them (measured): without the stencil test, and with the depth test `GL_ALWAYS` whatever
+    /// the program set, on or off (the depths are written, through the depth mask).
+    fn packed_copy_state(&mut self) -> usize {
+        let index = self.window_state();
+        let mut state = self.recorder.frame.states[index].clone();
+        if state.fragment_tests.stencil.is_none() && state.depth_test == Some(GL_ALWAYS) {
+            return index;
+        }
+        state.fragment_tests.stencil = None;
+        state.depth_test = Some(GL_ALWAYS);
+        self.recorder.frame.states.push(state);
+        self.recorder.frame.states.len() - 1
     }
 
     /// `glDrawPixels` of stencil indices once unpacked: each index truncated to its low 8 bits
@@ -170,12 +204,12 @@ impl Gl {
         self.recorder.frame.commands.push(Command::CopyPixels(self.recorder.frame.pixel_copies.len() - 1));
     }
 
-    /// Whether the window has the buffer `glCopyPixels` names: colour and depth always (both
-    /// rasterisers keep a depth buffer); no stencil buffer yet.
+    /// Whether the window has the buffers `glCopyPixels` names: colour and depth always (both
+    /// rasterisers keep a depth buffer); stencil indices where the window has a stencil buffer.
     pub(crate) fn window_has(&self, type_: GLenum) -> bool {
         match type_ {
             GL_COLOR | GL_DEPTH => true,
-            GL_STENCIL => self.buffer_config().stencil_bits > 0,
+            GL_STENCIL | GL_DEPTH_STENCIL => self.buffer_config().stencil_bits > 0,
             _ => false,
         }
     }
