@@ -353,13 +353,16 @@ impl Gl {
         }
         let Some(commands) = self.lists.lists.get(&name).cloned() else { return };
         self.lists.depth += 1;
+        // A primitive the list begins, replayed inside `begin`/`end` (the list called there),
+        // is `GL_INVALID_OPERATION` and is not drawn, its vertices up to its `glEnd` included
+        // (Mesa's `vbo_save_playback_vertex_list`: "draw operation inside glBegin/End");
+        // `glDrawArrays` compiled into the list is such a primitive. A `glBegin` inside a
+        // primitive the list itself began is only the error, as Mesa compiles it
+        // (`_mesa_compile_error`): its `glEnd` then ends the list's primitive.
+        let called_inside = self.inside_begin_end();
         let mut commands = commands.iter();
         while let Some(command) = commands.next() {
-            // A primitive the list begins, replayed inside `begin`/`end` (the list called
-            // there), is `GL_INVALID_OPERATION` and is not drawn, its vertices up to its
-            // `glEnd` included (Mesa's `vbo_save_playback_vertex_list`: "draw operation inside
-            // glBegin/End"); `glDrawArrays` compiled into the list is such a primitive.
-            if matches!(command, ListCommand::Immediate(Call::Begin(_))) && self.inside_begin_end() {
+            if matches!(command, ListCommand::Immediate(Call::Begin(_))) && called_inside {
                 self.set_error(GL_INVALID_OPERATION);
                 for skipped in commands.by_ref() {
                     if matches!(skipped, ListCommand::Immediate(Call::End)) {

@@ -25,6 +25,12 @@ impl Gl {
             // A float parameter: Mesa converts the integer as it is.
             return self.tex_parameterfv(target, pname, &[param as GLfloat]);
         }
+        if pname == GL_TEXTURE_BORDER_COLOR && self.compiling_list() {
+            // Mesa's display lists keep a scalar call as its vector form, (param, 0, 0, 0),
+            // which then sets the colour where the call itself is an error (`save_TexParameteri`;
+            // piglit's gl-1.0-beginend-coverage compiles one).
+            return self.tex_parameteriv(target, pname, &[param, 0, 0, 0]);
+        }
         if self.compiled_state_call(|| ListCommand::Texture(TextureCall::TexParameter(target, pname, param))) {
             return;
         }
@@ -90,6 +96,10 @@ impl Gl {
     /// `glTexParameterf`: as [`Gl::tex_parameterfv`] with one value (an enum passed as a float is
     /// truncated); the border colour, a vector, is `GL_INVALID_ENUM` here, as in Mesa.
     pub fn tex_parameterf(&mut self, target: GLenum, pname: GLenum, param: GLfloat) {
+        if pname == GL_TEXTURE_BORDER_COLOR && self.compiling_list() {
+            // As `tex_parameteri` (Mesa's `save_TexParameterf`).
+            return self.tex_parameterfv(target, pname, &[param, 0.0, 0.0, 0.0]);
+        }
         if pname == GL_TEXTURE_BORDER_COLOR {
             // Mesa: a vector name in a scalar call.
             return self.tex_parameteri(target, pname, 0);
