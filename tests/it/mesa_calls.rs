@@ -531,7 +531,7 @@ impl Runner {
                 raster_token = raster_feedback(gl, "bitmap");
                 gl.bitmap(w, h, xo, yo, xm, ym, &bytes);
             }
-            "draw_pixels" => {
+            "draw_pixels" | "render_draw_pixels" => {
                 let (w, h, format, type_) = (a.int(), a.int(), a.e(), a.e());
                 let values = a.floats();
                 let bytes: Vec<u8> = if type_ == GL_FLOAT {
@@ -539,7 +539,9 @@ impl Runner {
                 } else {
                     values.iter().map(|&b| b as u8).collect()
                 };
-                raster_token = raster_feedback(gl, "draw_pixel");
+                if cmd == "draw_pixels" {
+                    raster_token = raster_feedback(gl, "draw_pixel");
+                }
                 gl.draw_pixels(w, h, format, type_, &bytes);
             }
             "typed" => typed_call(gl, &mut a),
@@ -598,6 +600,10 @@ impl Runner {
         if let (Some(token), true) = (raster_token, succeeded) {
             // Feedback mode reports the raster position instead of the pixels drawn.
             self.out.push(token);
+            self.collected = self.gl.frame().expanded().primitives.len();
+        }
+        if cmd == "render_draw_pixels" {
+            // Drawn in render mode: pixels in the colour buffer, nothing in feedback.
             self.collected = self.gl.frame().expanded().primitives.len();
         }
         for _ in copies..self.gl.frame().pixel_copies.len() {

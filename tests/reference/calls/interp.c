@@ -661,7 +661,10 @@ static void run_call(const char *c)
         for (long i = 0; i < given; i++) bytes[i] = (GLubyte)f[i];
         glBitmap(w, h, xo, yo, xm, ym, f ? bytes : NULL);
         free(f);
-    } else if (!strcmp(c, "draw_pixels")) {
+    } else if (!strcmp(c, "draw_pixels") || !strcmp(c, "render_draw_pixels")) {
+        /* render_draw_pixels draws in render mode, into the colour buffer (feedback resumes
+         * after the command, as after any other). */
+        if (c[0] == 'r') glRenderMode(GL_RENDER);
         GLsizei w = arg_int(), h = arg_int();
         GLenum format = arg_enum(), type = arg_enum();
         float *f = arg_array(0, 0, &given);
