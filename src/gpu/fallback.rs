@@ -7,7 +7,7 @@
 //! its depths and shadow comparison are not in the WGSL stage yet) is drawn by the CPU rasteriser (`render/soft`, GL's rules, scored against Mesa)
 //! and its picture handed back as the wgpu render's. WebGPU has no logic op at all; the
 //! accumulation buffer and front and back targets would need a texture each and passes between
-//! them, not built (docs/testing.md, "Still missing"). The stencil and scissor tests and the write masks
+//! them, not built. The stencil and scissor tests and the write masks
 //! are wgpu's own (`raster.rs`, `passes.rs`, `clear_quads.rs`).
 
 use crate::gl::consts::*;
