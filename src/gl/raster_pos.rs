@@ -4,7 +4,8 @@
 //! `glRasterPos` treats its argument as a vertex: modelview, projection, a clip test (a
 //! position outside the clip volume makes the raster position invalid, and bitmaps and pixels
 //! then draw nothing), then the viewport and depth range give window coordinates. The raster
-//! colour and texture coordinate are the current ones at that moment. One difference: with
+//! colour is the current one at that moment; the texture coordinates are the current ones
+//! generated (`glTexGen`) and through the texture matrix, as a vertex's. One difference: with
 //! `GL_LIGHTING` on, GL lights the raster colour; gleval keeps the current colour.
 
 use super::consts::*;
@@ -101,10 +102,18 @@ impl Gl {
             self.server.raster_pos.valid = false;
             return;
         };
-        // The raster texture coordinates are each unit's current ones through its texture
-        // matrix (GL 1.1 §2.12, GL 1.3 §2.13), as a vertex's are.
+        // The raster texture coordinates are each unit's current ones, generated where its
+        // `glTexGen` says, through its texture matrix (GL 1.1 §2.12, GL 1.3 §2.13), as a
+        // vertex's are. The eye-space normal is never made unit length, as in Mesa's
+        // `rastpos.c` (measured: `GL_NORMALIZE` changes nothing, `texgen.calls`).
+        let object = Vec4::from_array(p);
+        let modelview = self.server.matrices.modelview();
+        let eye = modelview * object;
+        let normal_matrix = glam::Mat3::from_mat4(modelview).inverse().transpose();
+        let normal = normal_matrix * glam::Vec3::from_array(self.server.current.normal);
         let through = |gl: &Self, unit: usize| {
-            let coords = glam::Vec4::from_array(gl.server.current.tex_coord_of(unit));
+            let coords = Vec4::from_array(gl.server.current.tex_coord_of(unit));
+            let coords = gl.tex_gen_state_of(unit).map_or(coords, |g| g.apply(coords, object, eye, normal));
             (gl.server.matrices.texture_of(unit) * coords).to_array()
         };
         let tex_coord = through(self, 0);
