@@ -137,7 +137,7 @@ fn render_gallery() -> Result<(), Box<dyn std::error::Error>> {
     let references = Path::new(env!("CARGO_MANIFEST_DIR")).join("../tests/reference/pictures/png");
     println!("{:<12} {:>9}  title", "program", "differ");
     let mut rasterizers = Vec::new();
-    let mut shown = Vec::new();
+    let mut entries = Vec::new();
     for (name, make) in PROGRAMS {
         let mut app = make();
         if wgpu {
@@ -160,18 +160,8 @@ fn render_gallery() -> Result<(), Box<dyn std::error::Error>> {
         if has_reference {
             std::fs::copy(&reference, out.join(format!("{name}.mesa.png")))?;
         }
-        shown.push((name, title, drawn_by, score_text, has_reference));
+        entries.push(page::Entry { name, title, drawn_by, score: score_text, has_reference });
     }
-    let entries: Vec<page::Entry> = shown
-        .iter()
-        .map(|(name, title, drawn_by, score, has_reference)| page::Entry {
-            name,
-            title,
-            drawn_by,
-            score,
-            has_reference: *has_reference,
-        })
-        .collect();
     std::fs::write(out.join("index.html"), page::page(&entries))?;
     println!("drawn by {}; wrote {}", rasterizers.join(", "), out.join("index.html").display());
     Ok(())

@@ -7,13 +7,13 @@
 use std::fmt::Write as _;
 
 /// One program's entry.
-pub struct Entry<'a> {
+pub struct Entry {
     /// The program's name: its pictures are `NAME.png` and `NAME.mesa.png`.
-    pub name: &'a str,
-    pub title: &'a str,
-    pub drawn_by: &'a str,
+    pub name: &'static str,
+    pub title: String,
+    pub drawn_by: &'static str,
     /// The share of pixels that differ from Mesa's, as the page says it.
-    pub score: &'a str,
+    pub score: String,
     /// Whether there is a Mesa picture.
     pub has_reference: bool,
 }
@@ -114,8 +114,13 @@ mod tests {
         write_png(dir.join("wide.mesa.png"), &flat(1200, 300, wide_mesa)).expect("png");
         write_png(dir.join("narrow.png"), &flat(300, 200, narrow)).expect("png");
         write_png(dir.join("narrow.mesa.png"), &flat(300, 200, narrow_mesa)).expect("png");
-        let entry =
-            |name| Entry { name, title: "a program", drawn_by: "a rasteriser", score: "0%", has_reference: true };
+        let entry = |name| Entry {
+            name,
+            title: "a program".into(),
+            drawn_by: "a rasteriser",
+            score: "0%".into(),
+            has_reference: true,
+        };
         std::fs::write(dir.join("index.html"), page(&[entry("wide"), entry("narrow")])).expect("page");
         let shot = dir.join("shot.png");
         let _ = std::fs::remove_file(&shot);

@@ -348,8 +348,9 @@ impl Program {
 
     /// Runs the program headless for `frames` frames: the first frame of every window, then,
     /// between frames, what GLUT's main loop does in one refresh of a 60 Hz display (the timers
-    /// due, the idle callback once) until a callback posts a redisplay or presents a frame itself
-    /// (swaps the buffers); the windows that asked draw again. It stops early when nothing is left that could redisplay, or the loop was
+    /// due, the idle callback once) until a callback posts a redisplay or presents a frame
+    /// itself (swaps the buffers); the windows that asked draw again. It stops early when
+    /// nothing is left that could redisplay, or the loop was
     /// left (`glutLeaveMainLoop`, the last window destroyed).
     pub fn run_headless(&mut self, frames: usize) {
         self.start();

@@ -126,10 +126,9 @@ impl Gl {
             return;
         }
         // GL_DEPTH_STENCIL (EXT_packed_depth_stencil) copies the depths, then the stencil
-        // indices, of the same rectangle (piglit's depthstencil-default_fb-copypixels).
-        // The depths, then the stencil indices (which a stencil copy writes untested); as
-        // Mesa 22.3 copies them (measured, `tests/it/pixel_properties.rs`), neither the depth
-        // test nor the stencil test applies to the depths.
+        // indices (which a stencil copy writes untested), of the same rectangle. As Mesa 22.3
+        // copies them (measured, `tests/it/pixel_properties.rs`), neither the depth test nor
+        // the stencil test applies to the depths.
         let source = [x, y, width, height];
         if type_ == GL_DEPTH_STENCIL {
             self.record_pixel_copy(source, GL_DEPTH, true);
