@@ -126,7 +126,7 @@ impl Gl {
             return self.set_error(GL_INVALID_VALUE);
         }
         // The image's errors, then a stencil image for a window without stencil (Mesa).
-        let no_stencil = format == GL_STENCIL_INDEX && !self.window_has(GL_STENCIL);
+        let no_stencil = matches!(format, GL_STENCIL_INDEX | GL_DEPTH_STENCIL) && !self.window_has(GL_STENCIL);
         if let Some(code) = format_and_type_error(format, type_).or(no_stencil.then_some(GL_INVALID_OPERATION)) {
             return self.set_error(code);
         }
@@ -136,6 +136,9 @@ impl Gl {
         }
         if format == GL_STENCIL_INDEX {
             return self.draw_stencil((width, height), rgba);
+        }
+        if format == GL_DEPTH_STENCIL {
+            return self.draw_depth_stencil((width, height), rgba);
         }
         let [xr, yr, z, _] = self.server.raster_pos.window;
         let origin = [xr.round() as i32, yr.round() as i32];
@@ -165,6 +168,12 @@ impl Gl {
     /// Records fragments (window pixel, colour, window depth) as one-pixel points at the pixel
     /// centres; those outside the window are dropped.
     fn record_fragments(&mut self, fragments: &[([i32; 2], [f32; 4], f32)]) {
+        let state = self.window_state();
+        self.record_fragments_in(fragments, state);
+    }
+
+    /// [`Gl::record_fragments`] drawn with draw state `state`.
+    pub(crate) fn record_fragments_in(&mut self, fragments: &[([i32; 2], [f32; 4], f32)], state: usize) {
         let (w, h) = (self.width(), self.height());
         let inside = |p: &[i32; 2]| (0..w).contains(&p[0]) && (0..h).contains(&p[1]);
         let first = self.recorder.frame.vertices.len();
@@ -177,7 +186,6 @@ impl Gl {
         if count == 0 {
             return;
         }
-        let state = self.window_state();
         if !self.recorder.frame.states[state].more_textures.is_empty() {
             let units = [[0.0, 0.0, 0.0, 1.0]; 7];
             self.recorder.frame.unit_tex_coords.extend((first..first + count).map(|i| (i, units)));

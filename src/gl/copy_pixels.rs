@@ -165,7 +165,7 @@ impl Gl {
     /// [`Gl::window_state`] for the halves of a `GL_DEPTH_STENCIL` copy, as Mesa 22.3 draws
     /// them (measured): without the stencil test, and with the depth test `GL_ALWAYS` whatever
     /// the program set, on or off (the depths are written, through the depth mask).
-    fn packed_copy_state(&mut self) -> usize {
+    pub(crate) fn packed_copy_state(&mut self) -> usize {
         let index = self.window_state();
         let mut state = self.recorder.frame.states[index].clone();
         if state.fragment_tests.stencil.is_none() && state.depth_test == Some(GL_ALWAYS) {
@@ -213,9 +213,6 @@ impl Gl {
         }
     }
 }
-
-/// `GL_DEPTH_STENCIL` (GL 3.0, `GL_DEPTH_STENCIL_EXT`), which Mesa's `glCopyPixels` accepts.
-const GL_DEPTH_STENCIL: GLenum = 0x84F9;
 
 #[cfg(test)]
 mod tests {

@@ -33,6 +33,8 @@ pub(crate) fn packed(type_: GLenum) -> Option<Packed> {
         GL_UNSIGNED_INT_8_8_8_8_REV => (4, &[8, 8, 8, 8], true),
         GL_UNSIGNED_INT_10_10_10_2 => (4, &[10, 10, 10, 2], false),
         GL_UNSIGNED_INT_2_10_10_10_REV => (4, &[10, 10, 10, 2], true),
+        // GL_EXT_packed_depth_stencil: a 24-bit depth over an 8-bit stencil index.
+        GL_UNSIGNED_INT_24_8 => (4, &[24, 8], false),
         _ => return None,
     };
     Some(Packed { size, bits, reversed })
@@ -45,6 +47,7 @@ pub(crate) fn packed(type_: GLenum) -> Option<Packed> {
 /// `tests/reference/calls/cases/pack_types.calls`).
 pub(crate) fn packed_mismatch(format: GLenum, type_: GLenum) -> bool {
     packed(type_).is_some_and(|p| match p.bits.len() {
+        2 => format != GL_DEPTH_STENCIL,
         3 => format != GL_RGB,
         _ => !matches!(format, GL_RGBA | GL_BGRA),
     })

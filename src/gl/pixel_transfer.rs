@@ -339,6 +339,14 @@ impl Gl {
         Some(transfer)
     }
 
+    /// What reading a stencil index goes through: `GL_INDEX_SHIFT`, `GL_INDEX_OFFSET` and,
+    /// with `GL_MAP_STENCIL` on, the `S_TO_S` map.
+    pub(crate) fn stencil_transfer_params(&self) -> (GLint, GLint, Option<&[f32]>) {
+        let mode = &self.server.pixel_state.mode;
+        let map = mode.map_stencil.then(|| &self.server.pixel_state.maps[1][..]);
+        (mode.index_shift, mode.index_offset, map)
+    }
+
     /// The depth transfer in force.
     pub(crate) fn depth_transfer(&self) -> DepthTransfer {
         self.server.pixel_state.mode.depth

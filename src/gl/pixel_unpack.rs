@@ -25,6 +25,7 @@ pub(crate) fn format_components(format: GLenum) -> Option<usize> {
         GL_LUMINANCE_ALPHA | GL_RG => Some(2),
         GL_RGB | GL_BGR => Some(3),
         GL_RGBA | GL_BGRA => Some(4),
+        GL_DEPTH_STENCIL => Some(2),
         _ => None,
     }
 }
@@ -47,6 +48,11 @@ pub(crate) fn element_size(type_: GLenum) -> Option<usize> {
 /// type, or `GL_BITMAP` with a format that is not an index → `GL_INVALID_ENUM`.
 #[must_use]
 pub(crate) fn format_and_type_error(format: GLenum, type_: GLenum) -> Option<GLenum> {
+    // GL_DEPTH_STENCIL goes with its packed type alone, any other GL_INVALID_ENUM, a packed
+    // colour type too (measured, capi/tests/depth_stencil.c).
+    if format == GL_DEPTH_STENCIL && type_ != GL_UNSIGNED_INT_24_8 {
+        return Some(GL_INVALID_ENUM);
+    }
     if packed_mismatch(format, type_) {
         return Some(GL_INVALID_OPERATION);
     }
@@ -100,7 +106,7 @@ pub(crate) fn to_rgba(format: GLenum, c: &[f32]) -> [f32; 4] {
         GL_ALPHA => [0.0, 0.0, 0.0, c[0]],
         GL_LUMINANCE => [c[0], c[0], c[0], 1.0],
         GL_LUMINANCE_ALPHA => [c[0], c[0], c[0], c[1]],
-        GL_RG => [c[0], c[1], 0.0, 1.0],
+        GL_RG | GL_DEPTH_STENCIL => [c[0], c[1], 0.0, 1.0],
         GL_RGB => [c[0], c[1], c[2], 1.0],
         GL_BGR => [c[2], c[1], c[0], 1.0],
         GL_BGRA => [c[2], c[1], c[0], c[3]],
@@ -168,7 +174,12 @@ pub(crate) fn unpack_each(
         for pixel in row_bytes.chunks_exact(per_pixel * size) {
             match packed {
                 Some(p) => {
-                    p.unpack(p.read(pixel, swap), &mut c);
+                    let value = p.read(pixel, swap);
+                    p.unpack(value, &mut c);
+                    if format == GL_DEPTH_STENCIL {
+                        // The stencil index is an integer, not normalised.
+                        c[1] = (value & 0xFF) as f32;
+                    }
                     emit(to_rgba(format, &c[..p.components()]));
                 }
                 None => {

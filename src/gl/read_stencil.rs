@@ -2,7 +2,9 @@
 //! values of a rectangle, converted to the caller's type and laid out with the pack modes. As
 //! for colour (`read_pixels.rs`), the caller that owns a rasteriser hands in a closure that
 //! draws the frame recorded so far and returns the window's stencil buffer (one byte a pixel,
-//! rows top to bottom).
+//! rows top to bottom). Each index goes through the index shift and offset and
+//! `GL_MAP_STENCIL` first, keeping 8 bits, as Mesa's `_mesa_pack_stencil_span` takes it
+//! (measured: 0xCC under shift 1 and offset 3 reads 155, `capi/tests/depth_stencil.c`).
 
 use super::consts::*;
 use super::frame::Frame;
@@ -72,7 +74,7 @@ impl Gl {
                     continue;
                 }
                 let Some(&s) = stencil.get((wh - 1 - wy) as usize * ww as usize + wx as usize) else { continue };
-                let mut bytes = encode(s, type_);
+                let mut bytes = encode(self.stencil_index_transfer(s), type_);
                 if store.swap_bytes {
                     bytes.reverse();
                 }

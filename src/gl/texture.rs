@@ -592,7 +592,7 @@ pub(super) fn base_format(internal: GLint) -> Option<GLenum> {
 /// `GL_BGRA` as Mesa takes them) for any other, never stencil indices (Mesa's
 /// `texture_formats_agree`).
 fn texture_format(format: GLenum, base: GLenum) -> bool {
-    let depth = format == GL_DEPTH_COMPONENT;
+    let depth = matches!(format, GL_DEPTH_COMPONENT | GL_DEPTH_STENCIL);
     format_components(format).is_some() && format != GL_STENCIL_INDEX && depth == (base == GL_DEPTH_COMPONENT)
 }
 

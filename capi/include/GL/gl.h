@@ -1251,6 +1251,31 @@ GLAPI void GLAPIENTRY glRasterPos4dv(const GLdouble *v);
 GLAPI void GLAPIENTRY glRasterPos4iv(const GLint *v);
 GLAPI void GLAPIENTRY glRasterPos4sv(const GLshort *v);
 
+/* GL_EXT_vertex_array: GL 1.1's vertex arrays before they were core, with an element count
+ * that is ignored (as Mesa ignores it). */
+#define GL_EXT_vertex_array 1
+#define GL_VERTEX_ARRAY_EXT 0x8074
+#define GL_NORMAL_ARRAY_EXT 0x8075
+#define GL_COLOR_ARRAY_EXT 0x8076
+#define GL_INDEX_ARRAY_EXT 0x8077
+#define GL_TEXTURE_COORD_ARRAY_EXT 0x8078
+#define GL_EDGE_FLAG_ARRAY_EXT 0x8079
+#define GL_VERTEX_ARRAY_POINTER_EXT 0x808E
+#define GL_NORMAL_ARRAY_POINTER_EXT 0x808F
+#define GL_COLOR_ARRAY_POINTER_EXT 0x8090
+#define GL_INDEX_ARRAY_POINTER_EXT 0x8091
+#define GL_TEXTURE_COORD_ARRAY_POINTER_EXT 0x8092
+#define GL_EDGE_FLAG_ARRAY_POINTER_EXT 0x8093
+GLAPI void GLAPIENTRY glVertexPointerEXT(GLint size, GLenum type, GLsizei stride, GLsizei count, const GLvoid *ptr);
+GLAPI void GLAPIENTRY glNormalPointerEXT(GLenum type, GLsizei stride, GLsizei count, const GLvoid *ptr);
+GLAPI void GLAPIENTRY glColorPointerEXT(GLint size, GLenum type, GLsizei stride, GLsizei count, const GLvoid *ptr);
+GLAPI void GLAPIENTRY glIndexPointerEXT(GLenum type, GLsizei stride, GLsizei count, const GLvoid *ptr);
+GLAPI void GLAPIENTRY glTexCoordPointerEXT(GLint size, GLenum type, GLsizei stride, GLsizei count, const GLvoid *ptr);
+GLAPI void GLAPIENTRY glEdgeFlagPointerEXT(GLsizei stride, GLsizei count, const GLboolean *ptr);
+GLAPI void GLAPIENTRY glGetPointervEXT(GLenum pname, GLvoid **params);
+GLAPI void GLAPIENTRY glArrayElementEXT(GLint i);
+GLAPI void GLAPIENTRY glDrawArraysEXT(GLenum mode, GLint first, GLsizei count);
+
 /* GL 1.2's glDrawRangeElements (GL_EXT_draw_range_elements) and GL 1.4's multi-draws
  * (GL_EXT_multi_draw_arrays). */
 #define GL_EXT_draw_range_elements 1

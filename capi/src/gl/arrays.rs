@@ -136,6 +136,65 @@ entry! {
     }
 }
 
+// GL_EXT_vertex_array (1995), GL 1.1's arrays before they were core: the same calls with an
+// element count the implementation may ignore, and Mesa does (`_mesa_VertexPointerEXT` and its
+// kin in Mesa's varray.c pass everything but `count` on; `glGetPointervEXT` is
+// `glGetPointerv`, `glArrayElementEXT` and `glDrawArraysEXT` are the core calls).
+
+entry! {
+    /// `glVertexPointerEXT`: `glVertexPointer`, `count` ignored.
+    unsafe fn glVertexPointerEXT(size: GLint, type_: GLenum, stride: GLsizei, _count: GLsizei, ptr: *const c_void) {
+        with_gl(|gl| gl.vertex_pointer(size, type_, stride, CPointer(ptr)))
+    }
+}
+
+entry! {
+    /// `glNormalPointerEXT`: `glNormalPointer`, `count` ignored.
+    unsafe fn glNormalPointerEXT(type_: GLenum, stride: GLsizei, _count: GLsizei, ptr: *const c_void) {
+        with_gl(|gl| gl.normal_pointer(type_, stride, CPointer(ptr)))
+    }
+}
+
+entry! {
+    /// `glColorPointerEXT`: `glColorPointer`, `count` ignored.
+    unsafe fn glColorPointerEXT(size: GLint, type_: GLenum, stride: GLsizei, _count: GLsizei, ptr: *const c_void) {
+        with_gl(|gl| gl.color_pointer(size, type_, stride, CPointer(ptr)))
+    }
+}
+
+entry! {
+    /// `glIndexPointerEXT`: `glIndexPointer`, `count` ignored.
+    unsafe fn glIndexPointerEXT(type_: GLenum, stride: GLsizei, _count: GLsizei, ptr: *const c_void) {
+        with_gl(|gl| gl.index_pointer(type_, stride, CPointer(ptr)))
+    }
+}
+
+entry! {
+    /// `glTexCoordPointerEXT`: `glTexCoordPointer`, `count` ignored.
+    unsafe fn glTexCoordPointerEXT(size: GLint, type_: GLenum, stride: GLsizei, _count: GLsizei, ptr: *const c_void) {
+        with_gl(|gl| gl.tex_coord_pointer(size, type_, stride, CPointer(ptr)))
+    }
+}
+
+entry! {
+    /// `glEdgeFlagPointerEXT`: `glEdgeFlagPointer`, `count` ignored.
+    unsafe fn glEdgeFlagPointerEXT(stride: GLsizei, _count: GLsizei, ptr: *const GLboolean) {
+        with_gl(|gl| gl.edge_flag_pointer(stride, CPointer(ptr.cast())))
+    }
+}
+
+entry! {
+    /// `glGetPointervEXT`: `glGetPointerv`.
+    unsafe fn glGetPointervEXT(pname: GLenum, params: *mut *mut c_void) {
+        unsafe { glGetPointerv(pname, params) }
+    }
+}
+
+forward! {
+    glArrayElementEXT(i: GLint) => array_element;
+    glDrawArraysEXT(mode: GLenum, first: GLint, count: GLsizei) => draw_arrays;
+}
+
 entry! {
     /// `glInterleavedArrays`: `Gl::interleaved_arrays`.
     unsafe fn glInterleavedArrays(format: GLenum, stride: GLsizei, ptr: *const c_void) {

@@ -4,7 +4,7 @@
 
 use crate::context::with_gl;
 use crate::memory::array_mut;
-use gleval::gl::consts::GL_STENCIL_INDEX;
+use gleval::gl::consts::{GL_DEPTH_STENCIL, GL_STENCIL_INDEX};
 use gleval::gl::types::*;
 use gleval::gl::{Frame, WindowImage};
 #[allow(unused_imports)]
@@ -69,6 +69,30 @@ unsafe fn read_stencil(x: GLint, y: GLint, width: GLsizei, height: GLsizei, type
     })
 }
 
+/// `glReadPixels` of `GL_DEPTH_STENCIL`: `Gl::read_depth_stencil_pixels` on the drawable's (or
+/// OSMesa buffer's) depth and stencil, or the frame's.
+///
+/// # Safety
+/// As [`read_stencil`].
+unsafe fn read_depth_stencil(x: GLint, y: GLint, width: GLsizei, height: GLsizei, type_: GLenum, pixels: *mut c_void) {
+    let open: GLboolean = with_gl(|gl| gl.inside_begin_end().into());
+    let drawn = if open != 0 { None } else { crate::surface::flush_current().zip(crate::surface::current_stencil()) };
+    with_gl(|gl| {
+        let len = gl.packed_image_len(width, height, GL_DEPTH_STENCIL, type_).unwrap_or(0);
+        let out = unsafe { array_mut(pixels.cast::<u8>(), len) };
+        let (w, h) = (gl.width(), gl.height());
+        let draw = |frame: &Frame| match drawn {
+            Some(buffers) => Some(buffers),
+            None => {
+                let mut canvas = soft::Canvas::new(w.max(1) as u32, h.max(1) as u32);
+                canvas.draw_frame(frame);
+                Some((canvas.window_image(), canvas.stencil().to_vec()))
+            }
+        };
+        gl.read_depth_stencil_pixels((x, y), (width, height), type_, draw, out)
+    })
+}
+
 entry! {
     /// `glReadPixels`: `Gl::read_pixels`, writing `Gl::packed_image_len` bytes at `pixels`.
     unsafe fn glReadPixels(
@@ -76,6 +100,9 @@ entry! {
     ) {
         if format == GL_STENCIL_INDEX {
             return unsafe { read_stencil(x, y, width, height, type_, pixels) };
+        }
+        if format == GL_DEPTH_STENCIL {
+            return unsafe { read_depth_stencil(x, y, width, height, type_, pixels) };
         }
         // A drawable (or OSMesa buffer) is read, brought up to date first (outside `with_gl`: the
         // flush takes the context's frame).

@@ -1,0 +1,179 @@
+/* GL_EXT_packed_depth_stencil's pixel paths (GL 3.0 §4.3.1, §3.7.4): glReadPixels and
+ * glDrawPixels of GL_DEPTH_STENCIL in GL_UNSIGNED_INT_24_8, built against Mesa and against gleval
+ * by capi/tests/against_mesa.sh, which compares what the two print: four rectangles of known
+ * depths and stencil values read back packed (depth in the high 24 bits, stencil in the low 8),
+ * with the depth scale and bias and the index shift and offset, a packed image drawn and read
+ * back as separate depths and indices, and the errors of wrong calls. */
+#define GL_GLEXT_PROTOTYPES
+#include <GL/osmesa.h>
+#include <GL/gl.h>
+#include <GL/glext.h>
+#include <stdio.h>
+#include <string.h>
+
+#define W 32
+#define H 32
+static unsigned char buf[W * H * 4];
+
+static void rect_at(float x0, float y0, float z, int stencil)
+{
+    glStencilFunc(GL_ALWAYS, stencil, ~0u);
+    glBegin(GL_QUADS);
+    glVertex3f(x0, y0, z);
+    glVertex3f(x0 + 1, y0, z);
+    glVertex3f(x0 + 1, y0 + 1, z);
+    glVertex3f(x0, y0 + 1, z);
+    glEnd();
+}
+
+/* The packed values at the centres of the four quadrants and one pixel of the middle. */
+static void show_packed(const char *what)
+{
+    static const int at[5][2] = {{8, 8}, {24, 8}, {8, 24}, {24, 24}, {16, 16}};
+    for (int i = 0; i < 5; i++) {
+        GLuint v = 0xDEADBEEF;
+        glReadPixels(at[i][0], at[i][1], 1, 1, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, &v);
+        printf("%s (%d,%d): 0x%08x err=0x%04x\n", what, at[i][0], at[i][1], v, glGetError());
+    }
+}
+
+int main(void)
+{
+    OSMesaContext c = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, NULL);
+    if (!c || !OSMesaMakeCurrent(c, buf, GL_UNSIGNED_BYTE, W, H)) return 1;
+    glClearDepth(0);
+    glClearStencil(0xfe);
+    glClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_ALWAYS);
+    glEnable(GL_STENCIL_TEST);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+    rect_at(-1, -1, -0.5f, 0x33);
+    rect_at(0, -1, -0.25f, 0x66);
+    rect_at(-1, 0, 0.25f, 0x99);
+    rect_at(0, 0, 0.5f, 0xbb);
+    glDisable(GL_STENCIL_TEST);
+    glDisable(GL_DEPTH_TEST);
+    show_packed("drawn");
+
+    /* A 2 x 2 rectangle across the middle, packed, with the pack modes. */
+    GLuint four[8];
+    memset(four, 0xAB, sizeof four);
+    glPixelStorei(GL_PACK_ROW_LENGTH, 3);
+    glReadPixels(15, 15, 2, 2, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, four);
+    printf("2x2 row length 3: %08x %08x %08x %08x %08x %08x err=0x%04x\n", four[0], four[1], four[2], four[3],
+           four[4], four[5], glGetError());
+    glPixelStorei(GL_PACK_ROW_LENGTH, 0);
+    glPixelStorei(GL_PACK_SWAP_BYTES, 1);
+    glReadPixels(8, 8, 1, 1, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, four);
+    printf("swapped: %08x err=0x%04x\n", four[0], glGetError());
+    glPixelStorei(GL_PACK_SWAP_BYTES, 0);
+
+    /* The transfer: depth scale and bias, index shift and offset. */
+    glPixelTransferf(GL_DEPTH_SCALE, 0.5f);
+    glPixelTransferf(GL_DEPTH_BIAS, 0.25f);
+    glPixelTransferi(GL_INDEX_SHIFT, 1);
+    glPixelTransferi(GL_INDEX_OFFSET, 3);
+    show_packed("transfer");
+    glPixelTransferf(GL_DEPTH_SCALE, 1);
+    glPixelTransferf(GL_DEPTH_BIAS, 0);
+    glPixelTransferi(GL_INDEX_SHIFT, 0);
+    glPixelTransferi(GL_INDEX_OFFSET, 0);
+
+    /* Wrong calls. */
+    GLuint v;
+    glReadPixels(0, 0, 1, 1, GL_DEPTH_STENCIL, GL_FLOAT, &v);
+    printf("read float: err=0x%04x\n", glGetError());
+    glReadPixels(0, 0, 1, 1, GL_DEPTH_STENCIL, GL_UNSIGNED_BYTE, &v);
+    printf("read ubyte: err=0x%04x\n", glGetError());
+    glReadPixels(0, 0, 1, 1, GL_DEPTH_STENCIL, GL_UNSIGNED_SHORT_5_6_5, &v);
+    printf("read 565: err=0x%04x\n", glGetError());
+    glReadPixels(0, 0, 1, 1, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT_24_8, &v);
+    printf("read depth as 24_8: err=0x%04x\n", glGetError());
+    glReadPixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_INT_24_8, &v);
+    printf("read rgba as 24_8: err=0x%04x\n", glGetError());
+    glDrawPixels(1, 1, GL_DEPTH_STENCIL, GL_FLOAT, &v);
+    printf("draw float: err=0x%04x\n", glGetError());
+    glDrawPixels(1, 1, GL_STENCIL_INDEX, GL_UNSIGNED_INT_24_8, &v);
+    printf("draw stencil as 24_8: err=0x%04x\n", glGetError());
+    glBegin(GL_POINTS);
+    glReadPixels(0, 0, 1, 1, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, &v);
+    glEnd();
+    printf("read inside begin: err=0x%04x\n", glGetError());
+
+    /* A packed image drawn (the raster position's depth is not used: the image's is), with the
+     * depth test on and GL_ALWAYS, then read back as depths and indices apart. */
+    static GLuint image[W * H];
+    for (int y = 0; y < H; y++)
+        for (int x = 0; x < W; x++) {
+            double d = y < H / 2 ? (x < W / 2 ? 0.25 : 0.375) : (x < W / 2 ? 0.625 : 0.75);
+            int s = (y < H / 2 ? (x < W / 2 ? ~0x33 : ~0x66) : (x < W / 2 ? ~0x99 : ~0xbb)) & 0xff;
+            image[y * W + x] = (GLuint)s | ((GLuint)(d * (double)0xffffff) << 8);
+        }
+    glClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+    glRasterPos2f(-1, -1);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_ALWAYS);
+    glDrawPixels(W, H, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, image);
+    printf("draw packed: err=0x%04x\n", glGetError());
+    glDisable(GL_DEPTH_TEST);
+    show_packed("drawn packed");
+    float d[4];
+    GLubyte s[4];
+    glReadPixels(8, 8, 2, 1, GL_DEPTH_COMPONENT, GL_FLOAT, d);
+    glReadPixels(24, 24, 2, 1, GL_DEPTH_COMPONENT, GL_FLOAT, d + 2);
+    glReadPixels(8, 8, 4, 1, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, s);
+    printf("apart: %.6f %.6f %.6f %.6f stencil %d %d %d %d err=0x%04x\n", d[0], d[1], d[2], d[3], s[0], s[1], s[2],
+           s[3], glGetError());
+
+    /* Drawn with a stencil write mask and the depth test failing: the depth test does not
+     * apply, the mask does (as for GL_STENCIL_INDEX images). */
+    glClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_NEVER);
+    glStencilMask(0x0f);
+    glDrawPixels(W, H, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, image);
+    glStencilMask(0xff);
+    glDisable(GL_DEPTH_TEST);
+    show_packed("masked, depth never");
+    /* The colour buffer is left as it was; the depth mask, the scissor and the transfer. */
+    glClearColor(0.2f, 0.4f, 0.6f, 0.8f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+    glColor3f(1, 0, 0);
+    glRasterPos2f(-1, -1);
+    glDepthMask(GL_FALSE);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(0, 0, 16, 32);
+    glDrawPixels(W, H, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, image);
+    glDisable(GL_SCISSOR_TEST);
+    glDepthMask(GL_TRUE);
+    show_packed("depth mask off, scissor");
+    glPixelTransferf(GL_DEPTH_SCALE, 0.5f);
+    glPixelTransferf(GL_DEPTH_BIAS, 0.25f);
+    glPixelTransferi(GL_INDEX_SHIFT, 1);
+    glPixelTransferi(GL_INDEX_OFFSET, 3);
+    glDrawPixels(W, H, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, image);
+    glPixelTransferf(GL_DEPTH_SCALE, 1);
+    glPixelTransferf(GL_DEPTH_BIAS, 0);
+    glPixelTransferi(GL_INDEX_SHIFT, 0);
+    glPixelTransferi(GL_INDEX_OFFSET, 0);
+    show_packed("drawn with the transfer");
+    GLubyte rgba[4];
+    glReadPixels(8, 8, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+    printf("colour: %d %d %d %d err=0x%04x\n", rgba[0], rgba[1], rgba[2], rgba[3], glGetError());
+    GLubyte st[2];
+    glPixelTransferi(GL_INDEX_SHIFT, 1);
+    glPixelTransferi(GL_INDEX_OFFSET, 3);
+    glReadPixels(8, 8, 2, 1, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, st);
+    glPixelTransferi(GL_INDEX_SHIFT, 0);
+    glPixelTransferi(GL_INDEX_OFFSET, 0);
+    printf("stencil read with shift and offset: %d %d err=0x%04x\n", st[0], st[1], glGetError());
+    /* With zoom: each image pixel covers 2 x 2. */
+    glClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+    glPixelZoom(2, 2);
+    glDrawPixels(W / 2, H / 2, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, image);
+    glPixelZoom(1, 1);
+    show_packed("zoomed");
+    OSMesaDestroyContext(c);
+    return 0;
+}
