@@ -3,7 +3,8 @@
  * by capi/tests/against_mesa.sh, which compares what the two print: four rectangles of known
  * depths and stencil values read back packed (depth in the high 24 bits, stencil in the low 8),
  * with the depth scale and bias and the index shift and offset, a packed image drawn and read
- * back as separate depths and indices, and the errors of wrong calls. */
+ * back as separate depths and indices, the errors of wrong calls, and depth-and-stencil textures
+ * defined, replaced in part and read back packed. */
 #define GL_GLEXT_PROTOTYPES
 #include <GL/osmesa.h>
 #include <GL/gl.h>
@@ -35,6 +36,51 @@ static void show_packed(const char *what)
         glReadPixels(at[i][0], at[i][1], 1, 1, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, &v);
         printf("%s (%d,%d): 0x%08x err=0x%04x\n", what, at[i][0], at[i][1], v, glGetError());
     }
+}
+
+/* A 4 x 2 GL_DEPTH24_STENCIL8 texture from packed texels, read back packed, as depths, after a
+ * packed sub-image and after a sub-image of depths alone; the wrong reads' errors. */
+static void show_textures(void)
+{
+    GLuint texels[8], back[8];
+    for (int i = 0; i < 8; i++) texels[i] = ((GLuint)(i * 0x111111) << 8) | (GLuint)(0x10 + i);
+    GLuint tex[2];
+    glGenTextures(2, tex);
+    glBindTexture(GL_TEXTURE_2D, tex[0]);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH24_STENCIL8, 4, 2, 0, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, texels);
+    GLint stencil_size = -1;
+    glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_STENCIL_SIZE, &stencil_size);
+    printf("texture: err=0x%04x stencil size %d\n", glGetError(), stencil_size);
+    memset(back, 0xAB, sizeof back);
+    glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, back);
+    printf("packed:");
+    for (int i = 0; i < 8; i++) printf(" %08x", back[i]);
+    printf(" err=0x%04x\n", glGetError());
+    float d[8];
+    glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, GL_FLOAT, d);
+    printf("depths: %.6f %.6f %.6f err=0x%04x\n", d[0], d[1], d[7], glGetError());
+    GLuint two[2] = {0xFFFFFF01u, 0x80000002u};
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 1, 1, 2, 1, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, two);
+    float half[2] = {0.5f, 0.25f};
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 2, 1, GL_DEPTH_COMPONENT, GL_FLOAT, half);
+    glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, back);
+    /* Mesa leaves the stencil of texels given depths alone undefined (it differs from run to
+     * run): their depths only. */
+    printf("after the sub-images: %06x %06x", back[0] >> 8, back[1] >> 8);
+    for (int i = 2; i < 8; i++) printf(" %08x", back[i]);
+    printf(" err=0x%04x\n", glGetError());
+    glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_STENCIL, GL_FLOAT, back);
+    printf("packed as float: err=0x%04x\n", glGetError());
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH24_STENCIL8, 2, 1, 0, GL_DEPTH_COMPONENT, GL_FLOAT, half);
+    glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, back);
+    printf("from depths alone: %06x %06x err=0x%04x\n", back[0] >> 8, back[1] >> 8, glGetError());
+    glBindTexture(GL_TEXTURE_2D, tex[1]);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24, 2, 1, 0, GL_DEPTH_COMPONENT, GL_FLOAT, half);
+    glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, back);
+    printf("packed from a depth texture: err=0x%04x\n", glGetError());
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 2, 1, 0, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, two);
+    printf("packed into a colour texture: err=0x%04x\n", glGetError());
+    glDeleteTextures(2, tex);
 }
 
 int main(void)
@@ -174,6 +220,7 @@ int main(void)
     glDrawPixels(W / 2, H / 2, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, image);
     glPixelZoom(1, 1);
     show_packed("zoomed");
+    show_textures();
     OSMesaDestroyContext(c);
     return 0;
 }

@@ -204,7 +204,8 @@ static void map_call(void) {
  * draws then read through them (a pointer is an offset while one is bound); and its occlusion
  * queries. */
 static void buffer_call(void) {
-    static const GLenum targets_b[] = { GL_ARRAY_BUFFER, GL_ELEMENT_ARRAY_BUFFER, 0x1234, GL_TEXTURE_2D };
+    static const GLenum targets_b[] = { GL_ARRAY_BUFFER, GL_ELEMENT_ARRAY_BUFFER, 0x1234, GL_TEXTURE_2D,
+                                        GL_PIXEL_PACK_BUFFER, GL_PIXEL_UNPACK_BUFFER };
     GLenum target = ANY(targets_b);
     GLsizeiptr size = ANY(counts);
     GLintptr offset = ANY(small);
@@ -233,6 +234,12 @@ static void buffer_call(void) {
               glGetBufferParameteriv(target, GL_BUFFER_SIZE, &n);
               if (m && n > 0) m[pick(n)] = (GLubyte)pick(256);   /* within the store, while mapped */
               if (pick(2)) glUnmapBuffer(target);
+              /* GL 3.0's range maps with any offset, length and access bits */
+              m = glMapBufferRange(target, offset - 1, size, (GLbitfield)pick(0x48));
+              glGetBufferParameteriv(target, GL_BUFFER_MAP_LENGTH, &n);
+              if (m && n > 0) m[pick(n)] = (GLubyte)pick(256);
+              glFlushMappedBufferRange(target, offset - 1, ANY(small));
+              if (pick(2)) glUnmapBuffer(target);
               break; }
     case 6: { GLuint b[3] = { (GLuint)pick(6), (GLuint)pick(6), 0 }; glDeleteBuffers(pick(4) - 1, pick(6) ? b : NULL); break; }
     case 7: { void *q = NULL; GLint v = 0; glGetBufferPointerv(target, GL_BUFFER_MAP_POINTER + (GLenum)pick(2), pick(4) ? &q : NULL);
@@ -254,17 +261,35 @@ static void buffer_call(void) {
                }
                break; }
     }
-    /* No element buffer outlives the call: array_call's glDrawElements passes client indices. */
+    /* No element buffer outlives the call: array_call's glDrawElements passes client indices.
+     * A pixel buffer now and then does: the pixel calls' pointers are offsets into it then. */
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
+    if (pick(4)) {
+        glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
+        glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+    }
 }
 
 static void array_call(void) {
     void *p = pick(8) ? (void *)buf : NULL;
-    switch (pick(13)) {
+    switch (pick(14)) {
     case 11: buffer_call(); break;
     case 0: glVertexPointer(ANY(array_sizes), ANY(array_types), ANY(array_strides), p); break;
     case 1: glColorPointer(ANY(array_sizes), ANY(array_types), ANY(array_strides), p);
             glNormalPointer(ANY(array_types), ANY(array_strides), p); break;
+    case 12: if (pick(2)) { /* GL_EXT_vertex_array's forms, the count ignored */
+                 glVertexPointerEXT(ANY(array_sizes), ANY(array_types), ANY(array_strides), ANY(counts), p);
+                 glColorPointerEXT(ANY(array_sizes), ANY(array_types), ANY(array_strides), ANY(counts), p);
+                 glNormalPointerEXT(ANY(array_types), ANY(array_strides), ANY(counts), p);
+                 glTexCoordPointerEXT(ANY(array_sizes), ANY(array_types), ANY(array_strides), ANY(counts), p);
+                 glIndexPointerEXT(ANY(array_types), ANY(array_strides), ANY(counts), p);
+                 glEdgeFlagPointerEXT(ANY(array_strides), ANY(counts), p);
+                 void *q = NULL; glGetPointervEXT(GL_VERTEX_ARRAY_POINTER + pick(6), pick(4) ? &q : NULL);
+                 glDrawArraysEXT(ANY(modes), ANY(small), ANY(counts)); glArrayElementEXT(pick(700) - 50);
+             } else {
+                 gluPickMatrix(f(), f(), f(), f(), (GLint[4]){0, 0, 4, 4});
+             }
+             break;
     case 2: glTexCoordPointer(ANY(array_sizes), ANY(array_types), ANY(array_strides), p);
             glEdgeFlagPointer(ANY(array_strides), p); glIndexPointer(ANY(array_types), ANY(array_strides), p);
             glFogCoordPointer(ANY(array_types), ANY(array_strides), p); break;
@@ -376,7 +401,7 @@ static const GLenum pixel_maps[] = {GL_PIXEL_MAP_I_TO_I, GL_PIXEL_MAP_S_TO_S, GL
     GL_PIXEL_MAP_I_TO_A, GL_PIXEL_MAP_R_TO_R, GL_PIXEL_MAP_A_TO_A, 0x1234};
 static const GLint map_sizes[] = {-1, 0, 1, 2, 3, 7, 64, 256, 257};
 static const GLenum copy_types[] = {GL_COLOR, GL_DEPTH, GL_STENCIL, 0x1234};
-static const GLenum read_formats[] = {GL_RGBA, GL_DEPTH_COMPONENT, GL_LUMINANCE, GL_STENCIL_INDEX};
+static const GLenum read_formats[] = {GL_RGBA, GL_DEPTH_COMPONENT, GL_LUMINANCE, GL_STENCIL_INDEX, GL_DEPTH_STENCIL};
 /* 3D images of bytes at most 16 on a side, 3 images skipped and 16 rows an image: within buf. */
 static const GLint side3[] = {-1, 0, 1, 2, 3, 16};
 static const GLenum image_modes[] = {GL_UNPACK_IMAGE_HEIGHT, GL_UNPACK_SKIP_IMAGES, GL_PACK_IMAGE_HEIGHT,
@@ -506,7 +531,8 @@ static void pixel_call(void) {
             glCopyTexImage1D(GL_TEXTURE_1D, 0, GL_RGBA, x, y, w, 0); glCopyTexSubImage1D(GL_TEXTURE_1D, 0, x, x, y, w);
             glTexSubImage1D(GL_TEXTURE_1D, 0, x, w, GL_RGBA, GL_UNSIGNED_BYTE, pick(6) ? (void *)buf : NULL); break;
     case 6: if (!pick(16)) imaging_call();
-            if (!pick(8)) glReadPixels(x, y, w, h, ANY(read_formats), GL_FLOAT, pick(6) ? buf : NULL);
+            if (!pick(8)) glReadPixels(x, y, w, h, ANY(read_formats), pick(2) ? GL_FLOAT : GL_UNSIGNED_INT_24_8, pick(6) ? buf : NULL);
+            if (!pick(8)) glDrawPixels(w, h, ANY(read_formats), pick(2) ? GL_UNSIGNED_INT_24_8 : GL_FLOAT, pick(6) ? buf : NULL);
             (void)glAreTexturesResident(w, names, (GLboolean *)dbuf); glPrioritizeTextures(w, names, buf); break;
     default: glIndexf(f()); glIndexfv(fp()); glIndexub((GLubyte)pick(256)); glClearIndex(f()); glIndexMask((GLuint)next()); break;
     }

@@ -933,6 +933,8 @@ macro_rules! binding_row {
 pub(crate) static GET_ROWS: &[StateVar] = &[
     row(GL_ARRAY_BUFFER_BINDING, 1, Kind::Int, |gl, o| o[0] = f64::from(gl.array_buffer_binding())),
     row(GL_ELEMENT_ARRAY_BUFFER_BINDING, 1, Kind::Int, |gl, o| o[0] = f64::from(gl.element_array_buffer_binding())),
+    row(GL_PIXEL_PACK_BUFFER_BINDING, 1, Kind::Int, |gl, o| o[0] = f64::from(gl.pixel_pack_buffer_binding())),
+    row(GL_PIXEL_UNPACK_BUFFER_BINDING, 1, Kind::Int, |gl, o| o[0] = f64::from(gl.pixel_unpack_buffer_binding())),
     binding_row!(GL_VERTEX_ARRAY_BUFFER_BINDING, Vertex),
     binding_row!(GL_NORMAL_ARRAY_BUFFER_BINDING, Normal),
     binding_row!(GL_COLOR_ARRAY_BUFFER_BINDING, Color),

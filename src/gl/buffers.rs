@@ -41,8 +41,21 @@ pub struct BufferObject {
     name: GLuint,
     store: RefCell<Vec<Cell<u8>>>,
     usage: Cell<GLenum>,
-    /// The mapping in place (`glMapBuffer`'s access and a number no other mapping has).
-    mapping: Cell<Option<(GLenum, u64)>>,
+    /// The mapping in place.
+    mapping: Cell<Option<Mapping>>,
+}
+
+/// A buffer's mapping: `glMapBuffer`'s access (GL 3.0's range maps have the access their read
+/// and write bits make), a number no other mapping has, the byte range mapped and GL 3.0's
+/// access flags (`GL_MAP_READ_BIT` ...; `glMapBuffer`'s are the read and write bits its access
+/// names, as Mesa sets them).
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Mapping {
+    access: GLenum,
+    id: u64,
+    offset: usize,
+    length: usize,
+    flags: GLbitfield,
 }
 
 impl PartialEq for BufferObject {
@@ -79,6 +92,12 @@ impl BufferObject {
     #[must_use]
     pub fn is_mapped(&self) -> bool {
         self.mapping.get().is_some()
+    }
+
+    /// Stores `bytes` from `offset` on (a pixel pack buffer's writes); false where they do not
+    /// fit.
+    pub(super) fn store_bytes(&self, offset: usize, bytes: &[u8]) -> bool {
+        self.write_bytes(offset, bytes)
     }
 
     fn write_bytes(&self, offset: usize, bytes: &[u8]) -> bool {
@@ -145,7 +164,17 @@ impl PartialEq for BufferMap {
 impl BufferMap {
     /// The access it was mapped with, while it is the buffer's mapping.
     fn access(&self) -> Option<GLenum> {
-        self.buffer.mapping.get().filter(|&(_, id)| id == self.id).map(|(access, _)| access)
+        self.mapping().map(|m| m.access)
+    }
+
+    /// The buffer's mapping, while it is this one.
+    fn mapping(&self) -> Option<Mapping> {
+        self.buffer.mapping.get().filter(|m| m.id == self.id)
+    }
+
+    /// Where the mapped range starts in the data store (0 but for GL 3.0's range maps).
+    fn start(&self) -> usize {
+        self.mapping().map_or(0, |m| m.offset)
     }
 
     /// Whether the mapping is still in place.
@@ -154,13 +183,13 @@ impl BufferMap {
         self.access().is_some()
     }
 
-    /// Its size in bytes.
+    /// Its size in bytes: the range mapped (the whole buffer but for GL 3.0's range maps).
     #[must_use]
     pub fn len(&self) -> usize {
-        self.buffer.len()
+        self.mapping().map_or(0, |m| m.length)
     }
 
-    /// Whether it maps no bytes (GL maps no empty buffer: never true while mapped).
+    /// Whether it maps no bytes (GL maps no empty range: never true while mapped).
     #[must_use]
     pub fn is_empty(&self) -> bool {
         self.len() == 0
@@ -171,14 +200,16 @@ impl BufferMap {
     /// [`BufferMap::write`] and [`BufferMap::read`].
     #[must_use]
     pub fn as_ptr(&self) -> *mut u8 {
-        self.buffer.store.borrow().as_ptr().cast::<u8>().cast_mut()
+        self.buffer.store.borrow().as_ptr().cast::<u8>().cast_mut().wrapping_add(self.start())
     }
 
     /// Writes `values` from byte `offset` on; false (nothing written) when the mapping has
     /// ended, is `GL_READ_ONLY`, or the values do not fit.
     pub fn write<T: ArrayElement>(&self, offset: usize, values: &[T]) -> bool {
+        let bytes = to_bytes(values);
         matches!(self.access(), Some(GL_WRITE_ONLY | GL_READ_WRITE))
-            && self.buffer.write_bytes(offset, &to_bytes(values))
+            && offset.checked_add(bytes.len()).is_some_and(|end| end <= self.len())
+            && self.buffer.write_bytes(self.start() + offset, &bytes)
     }
 
     /// Reads `out.len()` values from byte `offset` on; false when the mapping has ended, is
@@ -188,7 +219,9 @@ impl BufferMap {
             return false;
         }
         let mut bytes = vec![0u8; out.len() * T::SIZE];
-        if !self.buffer.read(offset, &mut bytes) {
+        if offset.checked_add(bytes.len()).is_none_or(|end| end > self.len())
+            || !self.buffer.read(self.start() + offset, &mut bytes)
+        {
             return false;
         }
         out.iter_mut().zip(bytes.chunks_exact(T::SIZE)).for_each(|(o, b)| *o = T::take(b));
@@ -203,14 +236,23 @@ pub(crate) struct BufferObjects {
     objects: HashMap<GLuint, Option<Rc<BufferObject>>>,
     /// The largest name ever made (Mesa's hash table's `MaxKey`: names are not reused).
     max_name: GLuint,
+    /// GL 2.1's `GL_PIXEL_PACK_BUFFER` binding (see `pixel_buffers.rs`).
+    pub(super) pack: Option<Rc<BufferObject>>,
+    /// GL 2.1's `GL_PIXEL_UNPACK_BUFFER` binding.
+    pub(super) unpack: Option<Rc<BufferObject>>,
+    /// One entry a `glPushClientAttrib`: the pack and unpack bindings when it saved the
+    /// pixel-store group, which holds them (GL 2.1 table 6.39; Mesa's `copy_pixelstore`).
+    pub(super) saved_pixel_buffers: Vec<Option<PixelBuffers>>,
     mappings: u64,
 }
 
-/// Whether `target` is a buffer target gleval has (GL 1.5's two; the pixel buffer targets
-/// are GL 2.1's).
+/// Whether `target` is a buffer target gleval has (GL 1.5's two, GL 2.1's pixel buffers).
 fn known_target(target: GLenum) -> bool {
-    matches!(target, GL_ARRAY_BUFFER | GL_ELEMENT_ARRAY_BUFFER)
+    matches!(target, GL_ARRAY_BUFFER | GL_ELEMENT_ARRAY_BUFFER | GL_PIXEL_PACK_BUFFER | GL_PIXEL_UNPACK_BUFFER)
 }
+
+/// The pack and unpack buffer bindings.
+pub(super) type PixelBuffers = (Option<Rc<BufferObject>>, Option<Rc<BufferObject>>);
 
 /// GL 1.5 table 2.8's usages.
 fn known_usage(usage: GLenum) -> bool {
@@ -241,6 +283,8 @@ impl Gl {
     fn bound_buffer(&self, target: GLenum) -> Option<&Rc<BufferObject>> {
         match target {
             GL_ARRAY_BUFFER => self.client.arrays.array_buffer.as_ref(),
+            GL_PIXEL_PACK_BUFFER => self.client.buffers.pack.as_ref(),
+            GL_PIXEL_UNPACK_BUFFER => self.client.buffers.unpack.as_ref(),
             _ => self.client.arrays.element_buffer.as_ref(),
         }
     }
@@ -293,6 +337,12 @@ impl Gl {
             if let Some(buffer) = self.client.buffers.objects.remove(name).flatten() {
                 buffer.mapping.set(None);
                 self.client.arrays.unbind_buffer(&buffer);
+                let table = &mut self.client.buffers;
+                for binding in [&mut table.pack, &mut table.unpack] {
+                    if binding.as_ref().is_some_and(|b| Rc::ptr_eq(b, &buffer)) {
+                        *binding = None;
+                    }
+                }
             }
         }
     }
@@ -322,6 +372,8 @@ impl Gl {
         });
         match target {
             GL_ARRAY_BUFFER => self.client.arrays.array_buffer = object,
+            GL_PIXEL_PACK_BUFFER => self.client.buffers.pack = object,
+            GL_PIXEL_UNPACK_BUFFER => self.client.buffers.unpack = object,
             _ => self.client.arrays.element_buffer = object,
         }
     }
@@ -423,10 +475,95 @@ impl Gl {
             self.set_error(GL_INVALID_OPERATION);
             return None;
         }
+        let flags = match access {
+            GL_READ_ONLY => GL_MAP_READ_BIT,
+            GL_WRITE_ONLY => GL_MAP_WRITE_BIT,
+            _ => GL_MAP_READ_BIT | GL_MAP_WRITE_BIT,
+        };
+        let length = buffer.len();
+        Some(self.map(buffer, access, (0, length), flags))
+    }
+
+    /// Maps `range` (offset, length) of `buffer` with `access` and `flags`.
+    fn map(&mut self, buffer: Rc<BufferObject>, access: GLenum, range: (usize, usize), flags: GLbitfield) -> BufferMap {
         self.client.buffers.mappings += 1;
         let id = self.client.buffers.mappings;
-        buffer.mapping.set(Some((access, id)));
-        Some(BufferMap { buffer, id })
+        buffer.mapping.set(Some(Mapping { access, id, offset: range.0, length: range.1, flags }));
+        BufferMap { buffer, id }
+    }
+
+    /// `glMapBufferRange(target, offset, length, access)` (GL 3.0 §2.9.3,
+    /// `GL_ARB_map_buffer_range`): maps bytes `offset .. offset + length` for the `access`
+    /// bits (`GL_MAP_READ_BIT`, `GL_MAP_WRITE_BIT`, the invalidate, flush-explicit and
+    /// unsynchronized bits, which change nothing here: the store is the client's own memory).
+    /// `None` (C's NULL) on an error, in Mesa 22.3's order (measured,
+    /// `capi/tests/pixel_buffers.c`): inside `begin`/`end` (`GL_INVALID_OPERATION`), the
+    /// target's errors, a negative offset or length or an unknown bit (`GL_INVALID_VALUE`),
+    /// neither read nor write, read with an invalidate or the unsynchronized bit, flush-explicit
+    /// without write (`GL_INVALID_OPERATION`), a length of 0 or a mapped buffer
+    /// (`GL_INVALID_OPERATION`), a range past the end (`GL_INVALID_VALUE`). Not compiled.
+    pub fn map_buffer_range(
+        &mut self,
+        target: GLenum,
+        offset: GLintptr,
+        length: GLsizeiptr,
+        access: GLbitfield,
+    ) -> Option<BufferMap> {
+        let buffer = self.target_buffer(target)?;
+        let known = GL_MAP_READ_BIT
+            | GL_MAP_WRITE_BIT
+            | GL_MAP_INVALIDATE_RANGE_BIT
+            | GL_MAP_INVALIDATE_BUFFER_BIT
+            | GL_MAP_FLUSH_EXPLICIT_BIT
+            | GL_MAP_UNSYNCHRONIZED_BIT;
+        let (Ok(start), Ok(len)) = (usize::try_from(offset), usize::try_from(length)) else {
+            self.set_error(GL_INVALID_VALUE);
+            return None;
+        };
+        if access & !known != 0 {
+            self.set_error(GL_INVALID_VALUE);
+            return None;
+        }
+        let (read, write) = (access & GL_MAP_READ_BIT != 0, access & GL_MAP_WRITE_BIT != 0);
+        let read_forbidden = GL_MAP_INVALIDATE_RANGE_BIT | GL_MAP_INVALIDATE_BUFFER_BIT | GL_MAP_UNSYNCHRONIZED_BIT;
+        let explicit_without_write = access & GL_MAP_FLUSH_EXPLICIT_BIT != 0 && !write;
+        if !(read || write) || (read && access & read_forbidden != 0) || explicit_without_write {
+            self.set_error(GL_INVALID_OPERATION);
+            return None;
+        }
+        if len == 0 || buffer.is_mapped() {
+            self.set_error(GL_INVALID_OPERATION);
+            return None;
+        }
+        if start.checked_add(len).is_none_or(|end| end > buffer.len()) {
+            self.set_error(GL_INVALID_VALUE);
+            return None;
+        }
+        let mode = match (read, write) {
+            (true, false) => GL_READ_ONLY,
+            (false, true) => GL_WRITE_ONLY,
+            _ => GL_READ_WRITE,
+        };
+        Some(self.map(buffer, mode, (start, len), access))
+    }
+
+    /// `glFlushMappedBufferRange(target, offset, length)` (GL 3.0): says bytes `offset ..
+    /// offset + length` of the mapped range were written. Nothing needs doing (the store is
+    /// the client's memory); the errors are Mesa's (measured): the target's, a negative offset
+    /// or length or a range past the mapping (`GL_INVALID_VALUE`), a buffer not mapped or
+    /// mapped without `GL_MAP_FLUSH_EXPLICIT_BIT` (`GL_INVALID_OPERATION`).
+    pub fn flush_mapped_buffer_range(&mut self, target: GLenum, offset: GLintptr, length: GLsizeiptr) {
+        let Some(buffer) = self.target_buffer(target) else { return };
+        let (Ok(start), Ok(len)) = (usize::try_from(offset), usize::try_from(length)) else {
+            return self.set_error(GL_INVALID_VALUE);
+        };
+        let Some(mapping) = buffer.mapping.get() else { return self.set_error(GL_INVALID_OPERATION) };
+        if mapping.flags & GL_MAP_FLUSH_EXPLICIT_BIT == 0 {
+            return self.set_error(GL_INVALID_OPERATION);
+        }
+        if start.checked_add(len).is_none_or(|end| end > mapping.length) {
+            self.set_error(GL_INVALID_VALUE);
+        }
     }
 
     /// `glUnmapBuffer(target)`: ends the mapping; `GL_TRUE` (the data store is intact), or
@@ -449,8 +586,11 @@ impl Gl {
         let value = match pname {
             GL_BUFFER_SIZE => GLint::try_from(buffer.len()).unwrap_or(GLint::MAX),
             GL_BUFFER_USAGE => buffer.usage.get() as GLint,
-            GL_BUFFER_ACCESS => buffer.mapping.get().map_or(GL_READ_WRITE, |(access, _)| access) as GLint,
+            GL_BUFFER_ACCESS => buffer.mapping.get().map_or(GL_READ_WRITE, |m| m.access) as GLint,
             GL_BUFFER_MAPPED => GLint::from(buffer.is_mapped()),
+            GL_BUFFER_ACCESS_FLAGS => buffer.mapping.get().map_or(0, |m| m.flags) as GLint,
+            GL_BUFFER_MAP_OFFSET => buffer.mapping.get().map_or(0, |m| m.offset) as GLint,
+            GL_BUFFER_MAP_LENGTH => buffer.mapping.get().map_or(0, |m| m.length) as GLint,
             _ => return self.set_error(GL_INVALID_ENUM),
         };
         match params.first_mut() {
@@ -468,7 +608,7 @@ impl Gl {
             return self.set_error(error);
         }
         let Some(buffer) = self.bound_buffer(target).cloned() else { return };
-        let map = buffer.mapping.get().map(|(_, id)| BufferMap { buffer, id });
+        let map = buffer.mapping.get().map(|m| BufferMap { buffer, id: m.id });
         match params.first_mut() {
             Some(p) => *p = map,
             None => self.set_error(GL_INVALID_VALUE),

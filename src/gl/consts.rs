@@ -1019,3 +1019,20 @@ pub const GL_SRC2_ALPHA: GLenum = 0x858A;
 // GL/glext.h: OpenGL 2.0 (GL_EXT_blend_equation_separate).
 pub const GL_BLEND_EQUATION_RGB: GLenum = 0x8009;
 pub const GL_BLEND_EQUATION_ALPHA: GLenum = 0x883D;
+
+// GL/glext.h: OpenGL 2.1 (GL_ARB_pixel_buffer_object).
+pub const GL_PIXEL_PACK_BUFFER: GLenum = 0x88EB;
+pub const GL_PIXEL_UNPACK_BUFFER: GLenum = 0x88EC;
+pub const GL_PIXEL_PACK_BUFFER_BINDING: GLenum = 0x88ED;
+pub const GL_PIXEL_UNPACK_BUFFER_BINDING: GLenum = 0x88EF;
+
+// GL/glext.h: OpenGL 3.0 (GL_ARB_map_buffer_range).
+pub const GL_MAP_READ_BIT: GLenum = 0x0001;
+pub const GL_MAP_WRITE_BIT: GLenum = 0x0002;
+pub const GL_MAP_INVALIDATE_RANGE_BIT: GLenum = 0x0004;
+pub const GL_MAP_INVALIDATE_BUFFER_BIT: GLenum = 0x0008;
+pub const GL_MAP_FLUSH_EXPLICIT_BIT: GLenum = 0x0010;
+pub const GL_MAP_UNSYNCHRONIZED_BIT: GLenum = 0x0020;
+pub const GL_BUFFER_ACCESS_FLAGS: GLenum = 0x911F;
+pub const GL_BUFFER_MAP_LENGTH: GLenum = 0x9120;
+pub const GL_BUFFER_MAP_OFFSET: GLenum = 0x9121;

@@ -161,6 +161,7 @@ impl Gl {
         }
         let entry = (mask & GL_CLIENT_PIXEL_STORE_BIT != 0).then_some((stores.unpack, stores.pack));
         stores.saved.push(entry);
+        self.push_pixel_buffers(mask & GL_CLIENT_PIXEL_STORE_BIT != 0);
         self.push_client_arrays(mask);
     }
 
@@ -172,6 +173,7 @@ impl Gl {
         }
         let popped = self.client.pixel_stores.saved.pop();
         if popped.is_some() {
+            self.pop_pixel_buffers();
             self.pop_client_arrays();
         }
         match popped {

@@ -73,13 +73,23 @@ pub struct TexLevel {
     pub depth: u32,
     /// The texels as GL converted them to RGBA (before the base format picks components).
     pub texels: Vec<[u8; 4]>,
+    /// A depth-and-stencil level's stencil indices, one a texel in the texels' order
+    /// (`GL_EXT_packed_depth_stencil`: what `glGetTexImage(GL_DEPTH_STENCIL)` reads back; no
+    /// GL 1.x sampler reads them); empty for every other level, and read as 0 where missing.
+    pub stencil: Vec<u8>,
 }
 
 impl TexLevel {
     /// A level of one image (1D or 2D).
     #[must_use]
     pub fn flat(width: u32, height: u32, texels: Vec<[u8; 4]>) -> Self {
-        Self { width, height, depth: 1, texels }
+        Self { width, height, depth: 1, texels, stencil: Vec::new() }
+    }
+
+    /// A level of `size` (width, height, depth) holding `texels`, without stencil.
+    #[must_use]
+    pub fn sized([w, h, d]: [usize; 3], texels: Vec<[u8; 4]>) -> Self {
+        Self { width: w as u32, height: h as u32, depth: d as u32, texels, stencil: Vec::new() }
     }
 
     /// The texel at column `i`, row `j`, image `k`.
@@ -934,7 +944,7 @@ fn complete_object_chain(object: &TextureObject) -> Option<Arc<Vec<TexLevel>>> {
     let levels = (0..faces[0].len()).map(|k| {
         let (width, height) = (faces[0][k].width, faces[0][k].height);
         let texels = faces.iter().flat_map(|face| face[k].texels.iter().copied()).collect();
-        TexLevel { width, height, depth: 6, texels }
+        TexLevel { width, height, depth: 6, texels, stencil: Vec::new() }
     });
     Some(Arc::new(levels.collect()))
 }

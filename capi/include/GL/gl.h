@@ -1827,6 +1827,25 @@ GLAPI GLboolean GLAPIENTRY glUnmapBufferARB(GLenum target);
 GLAPI void GLAPIENTRY glGetBufferParameterivARB(GLenum target, GLenum pname, GLint *params);
 GLAPI void GLAPIENTRY glGetBufferPointervARB(GLenum target, GLenum pname, GLvoid **params);
 
+/* GL 2.1's pixel buffer objects (GL_ARB_pixel_buffer_object): buffers bound to these targets
+ * hold the images that pixel calls read and write, their pointers offsets. */
+#define GL_ARB_pixel_buffer_object 1
+#define GL_PIXEL_PACK_BUFFER_ARB 0x88EB
+#define GL_PIXEL_UNPACK_BUFFER_ARB 0x88EC
+#define GL_PIXEL_PACK_BUFFER_BINDING_ARB 0x88ED
+#define GL_PIXEL_UNPACK_BUFFER_BINDING_ARB 0x88EF
+
+/* GL 3.0's glMapBufferRange (GL_ARB_map_buffer_range). */
+#define GL_ARB_map_buffer_range 1
+#define GL_MAP_READ_BIT 0x0001
+#define GL_MAP_WRITE_BIT 0x0002
+#define GL_MAP_INVALIDATE_RANGE_BIT 0x0004
+#define GL_MAP_INVALIDATE_BUFFER_BIT 0x0008
+#define GL_MAP_FLUSH_EXPLICIT_BIT 0x0010
+#define GL_MAP_UNSYNCHRONIZED_BIT 0x0020
+GLAPI void *GLAPIENTRY glMapBufferRange(GLenum target, GLintptr offset, GLsizeiptr length, GLbitfield access);
+GLAPI void GLAPIENTRY glFlushMappedBufferRange(GLenum target, GLintptr offset, GLsizeiptr length);
+
 /* GL 1.5's occlusion queries and their GL_ARB_occlusion_query names (GL_VERSION_1_5 is not
  * defined here: <GL/glext.h> declares the rest of GL 1.5, as it does for Mesa's gl.h). */
 #define GL_ARB_occlusion_query 1

@@ -33,6 +33,7 @@ mod lists;
 mod matrix;
 mod multitexture;
 mod occlusion;
+mod pixel_buffers;
 mod pixel_transfer;
 mod pixels;
 mod points;

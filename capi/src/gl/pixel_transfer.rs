@@ -1,8 +1,9 @@
 //! The pixel path: transfer, maps and zoom, copies, the texture calls that read the window, and
 //! the colour-index calls of an RGBA context.
 
+use super::pixel_buffers::{pack_with, unpack_bytes, unpack_source};
 use crate::context::with_gl;
-use crate::memory::{array, array_mut, bytes, count};
+use crate::memory::{array, count};
 use gleval::gl::types::*;
 use gleval::gl::Gl;
 use std::ffi::c_void;
@@ -58,8 +59,9 @@ entry! {
         pixels: *const c_void,
     ) {
         with_gl(|gl| {
-            let pixels = unsafe { bytes(pixels, gl.unpacked_image_len(width, 1, format, type_)) };
-            gl.tex_sub_image_1d(target, level, xoffset, width, format, type_, pixels)
+            let len = gl.unpacked_image_len(width, 1, format, type_);
+            let Some(pixels) = (unsafe { unpack_bytes(gl, pixels, len) }) else { return };
+            gl.tex_sub_image_1d(target, level, xoffset, width, format, type_, &pixels[..])
         })
     }
 }
@@ -67,51 +69,51 @@ entry! {
 entry! {
     /// `glPixelMapfv`: reads `mapsize` floats.
     unsafe fn glPixelMapfv(map: GLenum, mapsize: GLsizei, values: *const GLfloat) {
-        with_gl(|gl| gl.pixel_mapfv(map, mapsize, unsafe { array(values, Gl::pixel_map_len(mapsize)) }))
+        with_gl(|gl| {
+            let Some(values) = (unsafe { unpack_source(gl, values, Gl::pixel_map_len(mapsize)) }) else { return };
+            gl.pixel_mapfv(map, mapsize, &values)
+        })
     }
 }
 
 entry! {
     /// `glPixelMapuiv`: reads `mapsize` unsigned integers.
     unsafe fn glPixelMapuiv(map: GLenum, mapsize: GLsizei, values: *const GLuint) {
-        with_gl(|gl| gl.pixel_mapuiv(map, mapsize, unsafe { array(values, Gl::pixel_map_len(mapsize)) }))
+        with_gl(|gl| {
+            let Some(values) = (unsafe { unpack_source(gl, values, Gl::pixel_map_len(mapsize)) }) else { return };
+            gl.pixel_mapuiv(map, mapsize, &values)
+        })
     }
 }
 
 entry! {
     /// `glPixelMapusv`: reads `mapsize` unsigned shorts.
     unsafe fn glPixelMapusv(map: GLenum, mapsize: GLsizei, values: *const GLushort) {
-        with_gl(|gl| gl.pixel_mapusv(map, mapsize, unsafe { array(values, Gl::pixel_map_len(mapsize)) }))
+        with_gl(|gl| {
+            let Some(values) = (unsafe { unpack_source(gl, values, Gl::pixel_map_len(mapsize)) }) else { return };
+            gl.pixel_mapusv(map, mapsize, &values)
+        })
     }
 }
 
 entry! {
     /// `glGetPixelMapfv`: writes the map's size of floats.
     unsafe fn glGetPixelMapfv(map: GLenum, values: *mut GLfloat) {
-        with_gl(|gl| {
-            let out = unsafe { array_mut(values, gl.pixel_map_size(map)) };
-            gl.get_pixel_mapfv(map, out)
-        })
+        unsafe { pack_with(values, |gl| gl.pixel_map_size(map), |gl, out| gl.get_pixel_mapfv(map, out)) }
     }
 }
 
 entry! {
     /// `glGetPixelMapuiv`: writes the map's size of unsigned integers.
     unsafe fn glGetPixelMapuiv(map: GLenum, values: *mut GLuint) {
-        with_gl(|gl| {
-            let out = unsafe { array_mut(values, gl.pixel_map_size(map)) };
-            gl.get_pixel_mapuiv(map, out)
-        })
+        unsafe { pack_with(values, |gl| gl.pixel_map_size(map), |gl, out| gl.get_pixel_mapuiv(map, out)) }
     }
 }
 
 entry! {
     /// `glGetPixelMapusv`: writes the map's size of unsigned shorts.
     unsafe fn glGetPixelMapusv(map: GLenum, values: *mut GLushort) {
-        with_gl(|gl| {
-            let out = unsafe { array_mut(values, gl.pixel_map_size(map)) };
-            gl.get_pixel_mapusv(map, out)
-        })
+        unsafe { pack_with(values, |gl| gl.pixel_map_size(map), |gl, out| gl.get_pixel_mapusv(map, out)) }
     }
 }
 

@@ -1,7 +1,7 @@
 //! Pixel storage, the raster position, bitmaps and `glDrawPixels`.
 
+use super::pixel_buffers::unpack_bytes;
 use crate::context::with_gl;
-use crate::memory::bytes;
 use gleval::gl::types::*;
 use std::ffi::c_void;
 
@@ -76,8 +76,9 @@ entry! {
         bitmap: *const GLubyte,
     ) {
         with_gl(|gl| {
-            let bits = unsafe { bytes(bitmap.cast(), gl.unpacked_bitmap_len(width, height)) };
-            gl.bitmap(width, height, xorig, yorig, xmove, ymove, bits)
+            let len = gl.unpacked_bitmap_len(width, height);
+            let Some(bits) = (unsafe { unpack_bytes(gl, bitmap.cast(), len) }) else { return };
+            gl.bitmap(width, height, xorig, yorig, xmove, ymove, &bits)
         })
     }
 }
@@ -86,8 +87,9 @@ entry! {
     /// `glDrawPixels`: reads the image under the unpack modes.
     unsafe fn glDrawPixels(width: GLsizei, height: GLsizei, format: GLenum, type_: GLenum, pixels: *const c_void) {
         with_gl(|gl| {
-            let pixels = unsafe { bytes(pixels, gl.unpacked_image_len(width, height, format, type_)) };
-            gl.draw_pixels(width, height, format, type_, pixels)
+            let len = gl.unpacked_image_len(width, height, format, type_);
+            let Some(pixels) = (unsafe { unpack_bytes(gl, pixels, len) }) else { return };
+            gl.draw_pixels(width, height, format, type_, &pixels[..])
         })
     }
 }

@@ -4,6 +4,7 @@
 //! `glLightModelf/iv`, `glMateriali/iv`, `glFogiv`, `glTexEnviv`, `glTexParameterfv/iv`).
 //! Each reads or writes as many values as GL does for its name.
 
+use super::pixel_buffers::pack_with;
 use crate::context::with_gl;
 use crate::memory::{array, array_mut};
 use gleval::gl::types::*;
@@ -155,21 +156,15 @@ entry! {
 entry! {
     /// `glGetTexImage`: writes the level packed with the pack modes (`Gl::tex_image_len`).
     unsafe fn glGetTexImage(target: GLenum, level: GLint, format: GLenum, type_: GLenum, pixels: *mut c_void) {
-        with_gl(|gl| {
-            let len = gl.tex_image_len(target, level, format, type_).unwrap_or(0);
-            let pixels = unsafe { array_mut(pixels.cast::<u8>(), len) };
-            gl.get_tex_image(target, level, format, type_, pixels)
-        })
+        let len = |gl: &Gl| gl.tex_image_len(target, level, format, type_).unwrap_or(0);
+        unsafe { pack_with(pixels.cast::<u8>(), len, |gl, out| gl.get_tex_image(target, level, format, type_, out)) }
     }
 }
 
 entry! {
     /// `glGetPolygonStipple`: writes the 32 × 32 mask packed with the pack modes.
     unsafe fn glGetPolygonStipple(mask: *mut GLubyte) {
-        with_gl(|gl| {
-            let mask = unsafe { array_mut(mask, gl.polygon_stipple_len()) };
-            gl.get_polygon_stipple(mask)
-        })
+        unsafe { pack_with(mask, Gl::polygon_stipple_len, Gl::get_polygon_stipple) }
     }
 }
 

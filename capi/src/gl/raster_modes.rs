@@ -12,9 +12,11 @@ forward! {
 entry! {
     /// `glPolygonStipple`: a 32 × 32 bit mask, read with the unpack modes.
     unsafe fn glPolygonStipple(mask: *const GLubyte) {
-        let len = with_gl(|gl| gl.unpacked_bitmap_len(32, 32).unwrap_or(0));
-        let mask = unsafe { array(mask, Some(len)) };
-        with_gl(|gl| gl.polygon_stipple(mask))
+        with_gl(|gl| {
+            let len = gl.unpacked_bitmap_len(32, 32).unwrap_or(0);
+            let Some(mask) = (unsafe { super::pixel_buffers::unpack_source(gl, mask, Some(len)) }) else { return };
+            gl.polygon_stipple(&mask)
+        })
     }
 }
 

@@ -2,8 +2,8 @@
 //! drawn for it by the CPU rasteriser, or with `GLEVAL_RASTERIZER=wgpu` by a wgpu renderer
 //! this thread keeps (made at the first read).
 
+use super::pixel_buffers::pack_into;
 use crate::context::with_gl;
-use crate::memory::array_mut;
 use gleval::gl::consts::{GL_DEPTH_STENCIL, GL_STENCIL_INDEX};
 use gleval::gl::types::*;
 use gleval::gl::{Frame, WindowImage};
@@ -62,10 +62,13 @@ unsafe fn read_stencil(x: GLint, y: GLint, width: GLsizei, height: GLsizei, type
     let drawn = if open != 0 { None } else { crate::surface::current_stencil() };
     with_gl(|gl| {
         let len = gl.packed_image_len(width, height, GL_STENCIL_INDEX, type_).unwrap_or(0);
-        let out = unsafe { array_mut(pixels.cast::<u8>(), len) };
         let (w, h) = (gl.width(), gl.height());
         let draw = |frame: &Frame| Some(drawn.unwrap_or_else(|| draw_stencil(frame, w, h)));
-        gl.read_stencil_pixels((x, y), (width, height), type_, draw, out)
+        unsafe {
+            pack_into(gl, pixels.cast::<u8>(), len, |gl, out| {
+                gl.read_stencil_pixels((x, y), (width, height), type_, draw, out)
+            })
+        }
     })
 }
 
@@ -79,7 +82,6 @@ unsafe fn read_depth_stencil(x: GLint, y: GLint, width: GLsizei, height: GLsizei
     let drawn = if open != 0 { None } else { crate::surface::flush_current().zip(crate::surface::current_stencil()) };
     with_gl(|gl| {
         let len = gl.packed_image_len(width, height, GL_DEPTH_STENCIL, type_).unwrap_or(0);
-        let out = unsafe { array_mut(pixels.cast::<u8>(), len) };
         let (w, h) = (gl.width(), gl.height());
         let draw = |frame: &Frame| match drawn {
             Some(buffers) => Some(buffers),
@@ -89,7 +91,11 @@ unsafe fn read_depth_stencil(x: GLint, y: GLint, width: GLsizei, height: GLsizei
                 Some((canvas.window_image(), canvas.stencil().to_vec()))
             }
         };
-        gl.read_depth_stencil_pixels((x, y), (width, height), type_, draw, out)
+        unsafe {
+            pack_into(gl, pixels.cast::<u8>(), len, |gl, out| {
+                gl.read_depth_stencil_pixels((x, y), (width, height), type_, draw, out)
+            })
+        }
     })
 }
 
@@ -110,13 +116,12 @@ entry! {
         let drawn = if open != 0 { None } else { crate::surface::flush_current() };
         with_gl(|gl| {
             let len = gl.packed_image_len(width, height, format, type_).unwrap_or(0);
-            let out = unsafe { array_mut(pixels.cast::<u8>(), len) };
-            let (w, h) = (gl.width(), gl.height());
+                let (w, h) = (gl.width(), gl.height());
             let draw = move |frame: &Frame| match drawn {
                 Some(image) => Some(image),
                 None => draw(frame, w, h),
             };
-            gl.read_pixels((x, y), (width, height), format, type_, draw, out)
+            unsafe { pack_into(gl, pixels.cast::<u8>(), len, |gl, out| gl.read_pixels((x, y), (width, height), format, type_, draw, out)) }
         })
     }
 }

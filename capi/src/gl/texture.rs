@@ -1,7 +1,8 @@
 //! Texture objects, images, parameters and the environment.
 
+use super::pixel_buffers::unpack_bytes;
 use crate::context::with_gl;
-use crate::memory::{array, array_mut, bytes, count};
+use crate::memory::{array, array_mut, count};
 use gleval::gl::consts::*;
 use gleval::gl::types::*;
 use std::ffi::c_void;
@@ -49,8 +50,9 @@ entry! {
         border: GLint, format: GLenum, type_: GLenum, pixels: *const c_void,
     ) {
         with_gl(|gl| {
-            let pixels = unsafe { bytes(pixels, gl.unpacked_image_len(width, height, format, type_)) };
-            gl.tex_image_2d(target, level, internalformat, width, height, border, format, type_, pixels)
+            let len = gl.unpacked_image_len(width, height, format, type_);
+            let Some(pixels) = (unsafe { unpack_bytes(gl, pixels, len) }) else { return };
+            gl.tex_image_2d(target, level, internalformat, width, height, border, format, type_, &pixels[..])
         })
     }
 }
@@ -63,8 +65,9 @@ entry! {
         border: GLint, format: GLenum, type_: GLenum, pixels: *const c_void,
     ) {
         with_gl(|gl| {
-            let pixels = unsafe { bytes(pixels, gl.unpacked_image_len(width, 1, format, type_)) };
-            gl.tex_image_1d(target, level, internalformat, width, border, format, type_, pixels)
+            let len = gl.unpacked_image_len(width, 1, format, type_);
+            let Some(pixels) = (unsafe { unpack_bytes(gl, pixels, len) }) else { return };
+            gl.tex_image_1d(target, level, internalformat, width, border, format, type_, &pixels[..])
         })
     }
 }
@@ -77,8 +80,9 @@ entry! {
         format: GLenum, type_: GLenum, pixels: *const c_void,
     ) {
         with_gl(|gl| {
-            let pixels = unsafe { bytes(pixels, gl.unpacked_image_len(width, height, format, type_)) };
-            gl.tex_sub_image_2d(target, level, xoffset, yoffset, width, height, format, type_, pixels)
+            let len = gl.unpacked_image_len(width, height, format, type_);
+            let Some(pixels) = (unsafe { unpack_bytes(gl, pixels, len) }) else { return };
+            gl.tex_sub_image_2d(target, level, xoffset, yoffset, width, height, format, type_, &pixels[..])
         })
     }
 }
@@ -92,8 +96,9 @@ entry! {
         border: GLint, format: GLenum, type_: GLenum, pixels: *const c_void,
     ) {
         with_gl(|gl| {
-            let pixels = unsafe { bytes(pixels, gl.unpacked_image_3d_len((width, height, depth), format, type_)) };
-            gl.tex_image_3d(target, level, internalformat, width, height, depth, border, format, type_, pixels)
+            let len = gl.unpacked_image_3d_len((width, height, depth), format, type_);
+            let Some(pixels) = (unsafe { unpack_bytes(gl, pixels, len) }) else { return };
+            gl.tex_image_3d(target, level, internalformat, width, height, depth, border, format, type_, &pixels[..])
         })
     }
 }
@@ -119,8 +124,9 @@ entry! {
         height: GLsizei, depth: GLsizei, format: GLenum, type_: GLenum, pixels: *const c_void,
     ) {
         with_gl(|gl| {
-            let pixels = unsafe { bytes(pixels, gl.unpacked_image_3d_len((width, height, depth), format, type_)) };
-            gl.tex_sub_image_3d(target, level, xoffset, yoffset, zoffset, width, height, depth, format, type_, pixels)
+            let len = gl.unpacked_image_3d_len((width, height, depth), format, type_);
+            let Some(pixels) = (unsafe { unpack_bytes(gl, pixels, len) }) else { return };
+            gl.tex_sub_image_3d(target, level, xoffset, yoffset, zoffset, width, height, depth, format, type_, &pixels[..])
         })
     }
 }

@@ -58,7 +58,7 @@ pub(super) fn next_level(level: &TexLevel, three_d: bool, depth: Option<GLint>) 
             }
         }
     }
-    TexLevel { width: nw as u32, height: nh as u32, depth: nd as u32, texels }
+    TexLevel { width: nw as u32, height: nh as u32, depth: nd as u32, texels, stencil: Vec::new() }
 }
 
 impl TextureObject {
@@ -115,7 +115,13 @@ mod tests {
         let five = TexLevel::flat(5, 1, [0u8, 100, 200, 50, 250].map(|v| [v; 4]).to_vec());
         let below = next_level(&five, false, None);
         assert_eq!((below.width, below.texels.clone()), (2, vec![[75; 4], [100; 4]]));
-        let solid = TexLevel { width: 2, height: 1, depth: 2, texels: vec![[0; 4], [1; 4], [2; 4], [2; 4]] };
+        let solid = TexLevel {
+            width: 2,
+            height: 1,
+            depth: 2,
+            texels: vec![[0; 4], [1; 4], [2; 4], [2; 4]],
+            stencil: Vec::new(),
+        };
         let below = next_level(&solid, true, None);
         assert_eq!((below.width, below.height, below.depth, below.texels), (1, 1, 1, vec![[2; 4]]));
     }

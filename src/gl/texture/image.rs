@@ -24,6 +24,12 @@ pub(in crate::gl) fn depth_of_depth_stencil(format: GLenum, type_: GLenum) -> (G
     }
 }
 
+/// Whether a level of internal format `internal` keeps stencil indices beside its depths
+/// (GL 3.0's `GL_DEPTH_STENCIL` and `GL_DEPTH24_STENCIL8`, `GL_EXT_packed_depth_stencil`'s).
+pub(in crate::gl) fn keeps_stencil(internal: GLint) -> bool {
+    matches!(internal as GLenum, GL_DEPTH_STENCIL | GL_DEPTH24_STENCIL8)
+}
+
 /// The most bytes a level's texels may take (4 a texel): llvmpipe's limit, about 1.75 GiB.
 const MAX_LEVEL_BYTES: usize = 7 << 28;
 
@@ -129,6 +135,7 @@ impl Gl {
         {
             return;
         }
+        let packed = (format, type_) == (GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8);
         let (format, type_) = depth_of_depth_stencil(format, type_);
         let (image_target, proxy_slot) = (image_target_of(dims, target), proxy_of(dims, target));
         let proxy = proxy_slot.is_some();
@@ -166,8 +173,7 @@ impl Gl {
         }
         if proxy {
             // A proxy keeps the sizes and border as given (Mesa strips real images only).
-            let image =
-                fits.then(|| TexLevel { width: w as u32, height: h as u32, depth: d as u32, texels: Vec::new() });
+            let image = fits.then(|| TexLevel::sized([w, h, d], Vec::new()));
             let object = &mut self.server.textures.proxies[proxy_slot.expect("a proxy")];
             return object.define_level(
                 0,
@@ -190,8 +196,21 @@ impl Gl {
                 None => return self.set_error(GL_INVALID_VALUE),
             }
         };
+        let (texels, stencil) = if !keeps_stencil(internalformat) {
+            (texels, Vec::new())
+        } else if packed && !bytes.is_empty() {
+            let Some((texels, stencil)) = self.unpack_depth_stencil([w, h, d], bytes, internalformat) else {
+                return self.set_error(GL_INVALID_VALUE);
+            };
+            let stencil = stencil.into_iter().map(|s| [s, 0, 0, 0]).collect();
+            let (stencil, _) = strip_border(dims, stencil, [w, h, d], border as usize);
+            (texels, stencil.into_iter().map(|t| t[0]).collect())
+        } else {
+            let zeros = vec![0; texels.len()];
+            (texels, zeros)
+        };
         let (texels, [w, h, d]) = strip_border(dims, texels, [w, h, d], border as usize);
-        let image = TexLevel { width: w as u32, height: h as u32, depth: d as u32, texels };
+        let image = TexLevel { stencil, ..TexLevel::sized([w, h, d], texels) };
         let t = image_target.expect("not a proxy");
         self.bound_object_mut(t.slot).define_level(t.face, level as usize, Some(image), (base, internalformat), 0);
         self.image_changed(t.slot);
@@ -296,6 +315,7 @@ impl Gl {
         bytes: &[u8],
     ) {
         let Some(t) = image_target_of(dims, target) else { return self.set_error(GL_INVALID_ENUM) };
+        let packed = (format, type_) == (GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8);
         let (format, type_) = depth_of_depth_stencil(format, type_);
         let Some(region) = self.sub_image_box(t, level, offset, size) else { return };
         let base = self.bound_object(t.slot).face(t.face).formats[level as usize];
@@ -306,7 +326,49 @@ impl Gl {
         let Some(texels) = self.unpack_texels(dims, (format, type_), region.size, bytes, internal) else {
             return self.set_error(GL_INVALID_VALUE);
         };
+        // Depths alone leave a depth-and-stencil level's stencil as it was (Mesa's
+        // `_mesa_texstore_z24_s8` keeps it).
+        if packed && keeps_stencil(internal) {
+            let Some((texels, stencil)) = self.unpack_depth_stencil(region.size, bytes, internal) else {
+                return self.set_error(GL_INVALID_VALUE);
+            };
+            self.replace_stencil(t, level as usize, region, &stencil);
+            return self.replace_texels(t, level as usize, region, &texels);
+        }
         self.replace_texels(t, level as usize, region, &texels);
+    }
+
+    /// A `GL_DEPTH_STENCIL` image of `GL_UNSIGNED_INT_24_8` for a depth-and-stencil level of
+    /// `internal` format: each element's 24-bit depth kept exactly (as Mesa's Z24_S8 store
+    /// copies it; measured, `capi/tests/depth_stencil.c`) and its stencil index, read with the
+    /// unpack modes; `None` if `bytes` is short. Depth-and-stencil textures are 1D, 2D or cube
+    /// maps: `d` is 1.
+    fn unpack_depth_stencil(
+        &self,
+        [w, h, d]: [usize; 3],
+        bytes: &[u8],
+        internal: GLint,
+    ) -> Option<(Vec<[u8; 4]>, Vec<u8>)> {
+        let (mut texels, mut stencil) = (Vec::with_capacity(w * h * d), Vec::with_capacity(w * h * d));
+        let size = (w as GLsizei, (h * d) as GLsizei);
+        unpack_each(self.unpack_store(), size, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, bytes, |c| {
+            texels.push(super::depth::copied_depth_texel(c[0], internal));
+            stencil.push(c[1] as u8);
+        })?;
+        Some((texels, stencil))
+    }
+
+    /// Writes the box's stencil indices into level `level` of the bound object (a
+    /// depth-and-stencil level).
+    fn replace_stencil(&mut self, t: ImageTarget, level: usize, region: TexelBox, stencil: &[u8]) {
+        let Some(Some(target)) = self.bound_object_mut(t.slot).face_mut(t.face).levels.get_mut(level) else { return };
+        let ([x, y, _], [w, _, _]) = (region.origin, region.size);
+        let (width, count) = (target.width as usize, target.texels.len());
+        target.stencil.resize(count, 0);
+        for (j, row) in stencil.chunks_exact(w.max(1)).enumerate() {
+            let start = (y + j) * width + x;
+            target.stencil[start..start + w].copy_from_slice(row);
+        }
     }
 
     /// Checks a sub-image box against the bound object's level `level`: a level outside

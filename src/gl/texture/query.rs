@@ -379,6 +379,50 @@ impl Gl {
         Some((skipped + l.depth as usize - 1) * stride + image)
     }
 
+    /// `glGetTexImage` of `GL_DEPTH_STENCIL` (`GL_EXT_packed_depth_stencil`): each texel's
+    /// depth as 24 bits over its stencil index. A type other than `GL_UNSIGNED_INT_24_8` →
+    /// `GL_INVALID_ENUM`; a level without stencil (any but `GL_DEPTH_STENCIL` and
+    /// `GL_DEPTH24_STENCIL8`) → `GL_INVALID_OPERATION` (Mesa's `getteximage_error_check`).
+    fn get_depth_stencil_image(
+        &mut self,
+        (target, t): (GLenum, super::ImageTarget),
+        level: usize,
+        type_: GLenum,
+        pixels: &mut [u8],
+    ) {
+        if type_ != GL_UNSIGNED_INT_24_8 {
+            return self.set_error(GL_INVALID_ENUM);
+        }
+        let images = self.bound_object(t.slot).face(t.face);
+        if !super::image::keeps_stencil(images.level_format(level).0) {
+            return self.set_error(GL_INVALID_OPERATION);
+        }
+        let Some(needed) = self.tex_image_len(target, level as GLint, GL_DEPTH_STENCIL, type_) else { return };
+        if pixels.is_empty() || needed == 0 {
+            return;
+        }
+        if pixels.len() < needed {
+            return self.set_error(GL_INVALID_VALUE);
+        }
+        let images = self.bound_object(t.slot).face(t.face);
+        let Some(l) = images.level(level) else { return };
+        let store = self.client.pixel_stores.pack;
+        let w = l.width as usize;
+        let stride = store.row_stride(w, 1, 4);
+        let first = store.first_byte(stride, 4);
+        for (i, &texel) in l.texels.iter().enumerate() {
+            // A depth level's 24-bit depth is k / (2²⁴ − 1) exactly (`depth.rs`): k again.
+            let z = (f64::from(super::texel_depth(texel)) * 16_777_215.0).round() as u32;
+            let value = z << 8 | u32::from(l.stencil.get(i).copied().unwrap_or(0));
+            let mut bytes = value.to_ne_bytes();
+            if store.swap_bytes {
+                bytes.reverse();
+            }
+            let at = first + (i / w.max(1)) * stride + (i % w.max(1)) * 4;
+            pixels[at..at + 4].copy_from_slice(&bytes);
+        }
+    }
+
     /// `glGetTexImage(target, level, format, type, pixels)`: the level's texels converted to
     /// `format` and `type_` and packed with the pack modes, as `glReadPixels` packs (GL 1.1
     /// §6.1.4). Errors in Mesa's order: target (`GL_INVALID_ENUM`), level (`GL_INVALID_VALUE`),
@@ -398,6 +442,9 @@ impl Gl {
             .ok()
             .and_then(|l| self.bound_object(t.slot).face(t.face).formats.get(l))
             .is_some_and(|&base| base == GL_DEPTH_COMPONENT);
+        if format == GL_DEPTH_STENCIL {
+            return self.get_depth_stencil_image((target, t), level as usize, type_, pixels);
+        }
         if let Some(error) = super::super::pixel_pack::texture_read_error(format, type_, depth_level) {
             return self.set_error(error);
         }
