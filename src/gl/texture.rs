@@ -642,6 +642,28 @@ pub(crate) enum TextureCall {
 }
 
 impl Gl {
+    /// The bytes of texture levels the frame recorded so far holds (each level set once,
+    /// however many primitives draw with it). A texture deleted or given new images lives on
+    /// in the frame until it is drawn: a program that streams textures through one frame
+    /// (piglit's `streaming-texture-leak`: 5,000 textures of 4 MiB) would otherwise keep them
+    /// all; the C ABI draws the frame so far when this grows large.
+    #[must_use]
+    pub fn frame_texture_bytes(&self) -> usize {
+        let mut seen = std::collections::HashSet::new();
+        let textures = self
+            .recorder
+            .frame
+            .states
+            .iter()
+            .flat_map(|s| s.texture.iter().chain(s.more_textures.iter().map(|(_, t)| t)));
+        textures
+            .filter(|t| seen.insert(Arc::as_ptr(&t.levels)))
+            .map(|t| t.levels.iter().map(|l| l.texels.len() * 4 + l.stencil.len()).sum::<usize>())
+            .sum()
+    }
+}
+
+impl Gl {
     /// Replays a listed call of the group.
     pub(crate) fn replay_texture_call(&mut self, call: &TextureCall) {
         use TextureCall as C;
@@ -1041,6 +1063,25 @@ mod tests {
         gl.pixel_storei(GL_UNPACK_ALIGNMENT, 1);
         gl.tex_image_2d(GL_TEXTURE_2D, 0, GL_RGB as i32, 2, 2, 0, GL_RGB, GL_UNSIGNED_BYTE, &texels);
         name[0]
+    }
+
+    #[test]
+    fn the_frame_holds_each_drawn_texture_once_deleted_or_not() {
+        let mut gl = Gl::new(4, 4);
+        let name = checker(&mut gl);
+        gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST as i32);
+        assert_eq!(gl.frame_texture_bytes(), 0, "nothing drawn yet");
+        gl.enable(GL_TEXTURE_2D);
+        for _ in 0..2 {
+            gl.begin(GL_POINTS);
+            gl.vertex2f(0.0, 0.0);
+            gl.end();
+        }
+        assert_eq!(gl.frame_texture_bytes(), 16, "one 2 x 2 level, however often drawn");
+        gl.delete_textures(1, &[name]);
+        assert_eq!(gl.frame_texture_bytes(), 16, "still held by the frame");
+        let _ = gl.take_frame();
+        assert_eq!(gl.frame_texture_bytes(), 0);
     }
 
     #[test]

@@ -28,7 +28,23 @@ entry! {
     /// `glDeleteTextures`: reads `n` names.
     unsafe fn glDeleteTextures(n: GLsizei, textures: *const GLuint) {
         let textures = unsafe { array(textures, count(n)) };
-        with_gl(|gl| gl.delete_textures(n, textures))
+        with_gl(|gl| gl.delete_textures(n, textures));
+        draw_if_holding_textures();
+    }
+}
+
+/// The texture memory a recorded frame may hold before it is drawn: 256 MiB.
+const FRAME_TEXTURE_BYTES: usize = 256 << 20;
+
+/// Draws the frame recorded so far onto the drawable (as `glFlush` does) when the texture
+/// images it holds pass [`FRAME_TEXTURE_BYTES`]: the images of textures deleted or given new
+/// ones since are let go then, as GL lets them go (`Gl::frame_texture_bytes`). Not inside
+/// `glBegin`/`glEnd`, where a primitive is open.
+fn draw_if_holding_textures() {
+    let heavy: GLboolean =
+        with_gl(|gl| (!gl.inside_begin_end() && gl.frame_texture_bytes() > FRAME_TEXTURE_BYTES).into());
+    if heavy != 0 {
+        crate::surface::flush_current();
     }
 }
 
@@ -53,7 +69,8 @@ entry! {
             let len = gl.unpacked_image_len(width, height, format, type_);
             let Some(pixels) = (unsafe { unpack_bytes(gl, pixels, len) }) else { return };
             gl.tex_image_2d(target, level, internalformat, width, height, border, format, type_, &pixels[..])
-        })
+        });
+        draw_if_holding_textures();
     }
 }
 
@@ -68,7 +85,8 @@ entry! {
             let len = gl.unpacked_image_len(width, 1, format, type_);
             let Some(pixels) = (unsafe { unpack_bytes(gl, pixels, len) }) else { return };
             gl.tex_image_1d(target, level, internalformat, width, border, format, type_, &pixels[..])
-        })
+        });
+        draw_if_holding_textures();
     }
 }
 
@@ -99,7 +117,8 @@ entry! {
             let len = gl.unpacked_image_3d_len((width, height, depth), format, type_);
             let Some(pixels) = (unsafe { unpack_bytes(gl, pixels, len) }) else { return };
             gl.tex_image_3d(target, level, internalformat, width, height, depth, border, format, type_, &pixels[..])
-        })
+        });
+        draw_if_holding_textures();
     }
 }
 
