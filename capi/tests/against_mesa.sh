@@ -18,6 +18,9 @@
 #   capi/tests/against_mesa.sh pixel_buffers
 #                                           GL 2.1's pixel buffer objects and GL 3.0's
 #                                           glMapBufferRange (capi/tests/pixel_buffers.c)
+#   capi/tests/against_mesa.sh texture_rectangle
+#                                           GL_ARB_texture_rectangle
+#                                           (capi/tests/texture_rectangle.c)
 set -eu
 root=$(cd "$(dirname "$0")/../.." && pwd)
 name=$1
@@ -30,7 +33,7 @@ mkdir -p "$out"
 src="$root/capi/tests/$name.c"
 case "$name" in
   readpixels) mesa_libs="$root/tests/reference/pictures/glut_osmesa.c -lOSMesa -lGLU -lGL -lz -lm"; args="--png $out/out.png" ;;
-  osmesa | occlusion | depth_stencil | pixel_buffers) mesa_libs="-lOSMesa -lGL"; args="" ;;
+  osmesa | occlusion | depth_stencil | pixel_buffers | texture_rectangle) mesa_libs="-lOSMesa -lGL"; args="" ;;
   *) echo "against_mesa.sh: no program $name"; exit 2 ;;
 esac
 "$root/capi/glevalcc" -std=gnu99 -O1 -Wall -Werror -o "$out/gleval" "$src" -lm

@@ -1036,3 +1036,9 @@ pub const GL_MAP_UNSYNCHRONIZED_BIT: GLenum = 0x0020;
 pub const GL_BUFFER_ACCESS_FLAGS: GLenum = 0x911F;
 pub const GL_BUFFER_MAP_LENGTH: GLenum = 0x9120;
 pub const GL_BUFFER_MAP_OFFSET: GLenum = 0x9121;
+
+// GL/glext.h: OpenGL 3.1 (GL_ARB_texture_rectangle).
+pub const GL_TEXTURE_RECTANGLE: GLenum = 0x84F5;
+pub const GL_TEXTURE_BINDING_RECTANGLE: GLenum = 0x84F6;
+pub const GL_PROXY_TEXTURE_RECTANGLE: GLenum = 0x84F7;
+pub const GL_MAX_RECTANGLE_TEXTURE_SIZE: GLenum = 0x84F8;

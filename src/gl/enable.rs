@@ -39,6 +39,7 @@ pub(crate) const KNOWN: &[GLenum] = &[
     GL_TEXTURE_2D,
     GL_TEXTURE_3D,
     GL_TEXTURE_CUBE_MAP,
+    GL_TEXTURE_RECTANGLE,
     GL_POLYGON_OFFSET_FILL,
     GL_POLYGON_OFFSET_LINE,
     GL_POLYGON_OFFSET_POINT,
@@ -166,7 +167,7 @@ impl Gl {
         if unit < MAX_TEXTURE_UNITS {
             return Some(unit_cap(cap, unit));
         }
-        if !matches!(cap, GL_TEXTURE_1D | GL_TEXTURE_2D | GL_TEXTURE_3D | GL_TEXTURE_CUBE_MAP) {
+        if !matches!(cap, GL_TEXTURE_1D | GL_TEXTURE_2D | GL_TEXTURE_3D | GL_TEXTURE_CUBE_MAP | GL_TEXTURE_RECTANGLE) {
             self.set_error(GL_INVALID_OPERATION);
         }
         None

@@ -35,6 +35,7 @@ mod depth;
 mod gen;
 mod generate;
 mod image;
+mod rectangle;
 pub(in crate::gl) use image::depth_of_depth_stencil;
 mod params;
 mod query;
@@ -172,6 +173,25 @@ impl std::hash::Hash for LodRange {
     }
 }
 
+impl TexParams {
+    /// A new object's parameters for target slot `slot`: GL's initial ones, a rectangle's
+    /// wraps `GL_CLAMP_TO_EDGE` and minification filter `GL_LINEAR` (`GL_ARB_texture_rectangle`;
+    /// measured on Mesa, `capi/tests/texture_rectangle.c`).
+    #[must_use]
+    pub(super) fn initial(slot: usize) -> Self {
+        if slot != RECT {
+            return Self::default();
+        }
+        Self {
+            min_filter: GL_LINEAR,
+            wrap_s: GL_CLAMP_TO_EDGE,
+            wrap_t: GL_CLAMP_TO_EDGE,
+            wrap_r: GL_CLAMP_TO_EDGE,
+            ..Self::default()
+        }
+    }
+}
+
 impl Default for TexParams {
     fn default() -> Self {
         Self {
@@ -267,6 +287,9 @@ pub struct BoundTexture {
     /// images (depth 6: +X, −X, +Y, −Y, +Z, −Z), and (s, t, r) is a direction that picks the
     /// face and the 2D coordinates within it ([`cube_face`]).
     pub cube_map: bool,
+    /// A `GL_TEXTURE_RECTANGLE` texture (`GL_ARB_texture_rectangle`): one level, its
+    /// coordinates in texels (s in [0, width], t in [0, height]) rather than normalised.
+    pub rectangle: bool,
     /// A depth texture's sampling (GL 1.4 §3.8.14): its levels hold depths ([`texel_depth`](crate::gl::texel_depth)),
     /// and `base_format` is its mode's ([`DepthParams::environment_format`](crate::gl::DepthParams::environment_format)).
     pub depth: Option<DepthSampling>,
@@ -291,6 +314,7 @@ impl BoundTexture {
             lod_bias: 0.0,
             dims: 2,
             cube_map: false,
+            rectangle: false,
             depth: None,
             generate: None,
         }
@@ -310,6 +334,7 @@ impl PartialEq for BoundTexture {
             && self.lod_bias.to_bits() == other.lod_bias.to_bits()
             && self.dims == other.dims
             && self.cube_map == other.cube_map
+            && self.rectangle == other.rectangle
             && self.depth == other.depth
             && self.generate == other.generate
     }
@@ -442,7 +467,8 @@ pub(crate) struct Textures {
 
 impl Default for Textures {
     fn default() -> Self {
-        let default = |t, key| TextureObject { target: Some(t), key, ..TextureObject::default() };
+        let default =
+            |t, key| TextureObject { target: Some(t), key, params: TexParams::initial(t), ..TextureObject::default() };
         Self {
             objects: HashMap::new(),
             defaults: std::array::from_fn(|t| default(t, fresh_key())),
@@ -454,40 +480,47 @@ impl Default for Textures {
     }
 }
 
-/// The texture targets an object is bound to: `GL_TEXTURE_1D`, `_2D`, `_3D` and GL 1.3's
-/// `GL_TEXTURE_CUBE_MAP`.
-pub(super) const TARGETS: usize = 4;
+/// The texture targets an object is bound to: `GL_TEXTURE_1D`, `_2D`, `_3D`, GL 1.3's
+/// `GL_TEXTURE_CUBE_MAP` and `GL_ARB_texture_rectangle`'s `GL_TEXTURE_RECTANGLE`.
+pub(super) const TARGETS: usize = 5;
 
 /// The slot of `GL_TEXTURE_CUBE_MAP` ([`target_index`]).
 pub(super) const CUBE: usize = 3;
 
+/// The slot of `GL_TEXTURE_RECTANGLE` ([`target_index`]): one 2D level, addressed in texels
+/// (`texture/rectangle.rs`).
+pub(super) const RECT: usize = 4;
+
 /// A target's slot: 0 for `GL_TEXTURE_1D`, 1 for `GL_TEXTURE_2D`, 2 for `GL_TEXTURE_3D`, 3
-/// ([`CUBE`]) for `GL_TEXTURE_CUBE_MAP`.
+/// ([`CUBE`]) for `GL_TEXTURE_CUBE_MAP`, 4 ([`RECT`]) for `GL_TEXTURE_RECTANGLE`.
 pub(super) fn target_index(target: GLenum) -> Option<usize> {
     match target {
         GL_TEXTURE_1D => Some(0),
         GL_TEXTURE_2D => Some(1),
         GL_TEXTURE_3D => Some(2),
         GL_TEXTURE_CUBE_MAP => Some(CUBE),
+        GL_TEXTURE_RECTANGLE => Some(RECT),
         _ => None,
     }
 }
 
 /// The slot of a proxy target: 0 for `GL_PROXY_TEXTURE_1D`, 1 for `_2D`, 2 for `_3D`, 3 for
-/// `_CUBE_MAP`.
+/// `_CUBE_MAP`, 4 for `_RECTANGLE`.
 pub(super) fn proxy_index(target: GLenum) -> Option<usize> {
     match target {
         GL_PROXY_TEXTURE_1D => Some(0),
         GL_PROXY_TEXTURE_2D => Some(1),
         GL_PROXY_TEXTURE_3D => Some(2),
         GL_PROXY_TEXTURE_CUBE_MAP => Some(CUBE),
+        GL_PROXY_TEXTURE_RECTANGLE => Some(RECT),
         _ => None,
     }
 }
 
-/// The dimensions of the images of the target in `slot`: a cube map's faces are 2D.
+/// The dimensions of the images of the target in `slot`: a cube map's faces and a
+/// rectangle's one image are 2D.
 pub(super) fn slot_dims(slot: usize) -> u8 {
-    [1, 2, 3, 2][slot]
+    [1, 2, 3, 2, 2][slot]
 }
 
 /// Where an image call's target puts its image (GL 1.3 §3.8.1): the bound object's slot, and
@@ -753,6 +786,7 @@ impl Gl {
                 None => {
                     object.target = Some(t);
                     object.key = fresh_key();
+                    object.params = TexParams::initial(t);
                 }
                 Some(first) if first != t => return self.set_error(GL_INVALID_OPERATION),
                 Some(_) => {}
@@ -810,14 +844,19 @@ impl Gl {
     }
 
     /// The texture unit `unit` draws the next primitive with: the bound object of its enabled
-    /// target of the highest priority (`GL_TEXTURE_CUBE_MAP`, `GL_TEXTURE_3D`, `GL_TEXTURE_2D`,
-    /// `GL_TEXTURE_1D`, GL 1.3 §3.8.16) whose mipmap chain is complete (§3.8.10), with the
+    /// target of the highest priority (`GL_TEXTURE_CUBE_MAP`, `GL_TEXTURE_3D`,
+    /// `GL_TEXTURE_RECTANGLE`, `GL_TEXTURE_2D`, `GL_TEXTURE_1D`, GL 3.1 §3.8.18) whose mipmap chain is complete (§3.8.10), with the
     /// unit's environment, texture matrix and coordinate generation. Mesa's
     /// `update_ff_texture_state` passes over an incomplete target to the next enabled one, and
     /// a unit with none complete is disabled.
     pub(crate) fn bound_texture_of(&mut self, unit: usize) -> Option<BoundTexture> {
-        const PRIORITY: [(GLenum, usize); TARGETS] =
-            [(GL_TEXTURE_CUBE_MAP, CUBE), (GL_TEXTURE_3D, 2), (GL_TEXTURE_2D, 1), (GL_TEXTURE_1D, 0)];
+        const PRIORITY: [(GLenum, usize); TARGETS] = [
+            (GL_TEXTURE_CUBE_MAP, CUBE),
+            (GL_TEXTURE_3D, 2),
+            (GL_TEXTURE_RECTANGLE, RECT),
+            (GL_TEXTURE_2D, 1),
+            (GL_TEXTURE_1D, 0),
+        ];
         let caps = &self.server.caps;
         let enabled = PRIORITY.map(|(cap, t)| caps.is_on(super::units::unit_cap(cap, unit)).then_some(t));
         let (t, levels) = enabled.into_iter().flatten().find_map(|t| {
@@ -850,6 +889,7 @@ impl Gl {
             lod_bias: (object.params.lod.bias + env.lod_bias).clamp(-MAX_TEXTURE_LOD_BIAS, MAX_TEXTURE_LOD_BIAS),
             dims: slot_dims(t),
             cube_map: t == CUBE,
+            rectangle: t == RECT,
             depth,
             generate,
         })
@@ -1043,6 +1083,10 @@ pub(crate) static GET_ROWS: &[StateVar] = &[
     row(GL_TEXTURE_BINDING_CUBE_MAP, 1, Kind::Int, |gl, o| {
         put_enum(o, gl.server.textures.bound[gl.active_unit()][CUBE]);
     }),
+    row(GL_TEXTURE_BINDING_RECTANGLE, 1, Kind::Int, |gl, o| {
+        put_enum(o, gl.server.textures.bound[gl.active_unit()][RECT]);
+    }),
+    int_limit!(GL_MAX_RECTANGLE_TEXTURE_SIZE, MAX_TEXTURE_SIZE),
     int_limit!(GL_MAX_TEXTURE_SIZE, MAX_TEXTURE_SIZE),
     int_limit!(GL_MAX_CUBE_MAP_TEXTURE_SIZE, MAX_TEXTURE_SIZE),
     int_limit!(GL_MAX_3D_TEXTURE_SIZE, MAX_3D_TEXTURE_SIZE),

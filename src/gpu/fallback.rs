@@ -3,8 +3,9 @@
 //! colour buffer, a texture unit beyond unit 0 (GL 1.3's units: the WGSL fragment stage
 //! binds one texture), a texture with GL 1.4's LOD bias (wgpu's samplers take none, and
 //! WGSL's `textureSampleBias` clamps otherwise than GL's eq. 3.16), a cube map (GL 1.3: the
-//! WGSL fragment stage binds a 2D and a 3D image, not yet a cube) or a depth texture (GL 1.4:
-//! its depths and shadow comparison are not in the WGSL stage yet) is drawn by the CPU rasteriser (`render/soft`, GL's rules, scored against Mesa)
+//! WGSL fragment stage binds a 2D and a 3D image, not yet a cube), a depth texture (GL 1.4:
+//! its depths and shadow comparison are not in the WGSL stage yet) or a rectangle texture
+//! (`GL_ARB_texture_rectangle`: its coordinates in texels) is drawn by the CPU rasteriser (`render/soft`, GL's rules, scored against Mesa)
 //! and its picture handed back as the wgpu render's. WebGPU has no logic op at all; the
 //! accumulation buffer and front and back targets would need a texture each and passes between
 //! them, not built. The stencil and scissor tests and the write masks
@@ -43,7 +44,7 @@ pub(crate) fn needs_cpu(frame: &Frame) -> bool {
     let mut buffers = None;
     let last = frame.commands.len().saturating_sub(1);
     let biased = |s: &crate::gl::DrawState| {
-        s.texture.as_ref().is_some_and(|t| t.lod_bias != 0.0 || t.cube_map || t.depth.is_some())
+        s.texture.as_ref().is_some_and(|t| t.lod_bias != 0.0 || t.cube_map || t.rectangle || t.depth.is_some())
     };
     let states = frame
         .states

@@ -145,6 +145,11 @@ impl Gl {
         if !(0..=max_level(dims)).contains(&level) || size.iter().any(|&s| s < 0) || !(0..=1).contains(&border) {
             return self.set_error(GL_INVALID_VALUE);
         }
+        // A rectangle has one level and no border (GL_ARB_texture_rectangle).
+        let rectangle = image_target.map_or(proxy_slot, |t| Some(t.slot)) == Some(super::RECT);
+        if rectangle && (level != 0 || border != 0) {
+            return self.set_error(GL_INVALID_VALUE);
+        }
         if let Some(error) = format_and_type_error(format, type_) {
             return self.set_error(error);
         }

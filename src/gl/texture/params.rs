@@ -46,8 +46,11 @@ impl Gl {
             GL_TEXTURE_BASE_LEVEL | GL_TEXTURE_MAX_LEVEL | GL_GENERATE_MIPMAP => true,
             _ => DepthParams::accepts(pname, value).unwrap_or(false),
         };
-        if !ok {
+        if !ok || (t == super::RECT && !super::rectangle::takes(pname, value)) {
             return self.set_error(GL_INVALID_ENUM);
+        }
+        if t == super::RECT && pname == GL_TEXTURE_BASE_LEVEL && param != 0 {
+            return self.set_error(GL_INVALID_OPERATION);
         }
         if matches!(pname, GL_TEXTURE_BASE_LEVEL | GL_TEXTURE_MAX_LEVEL) {
             return self.set_level_range(t, pname, param);

@@ -152,7 +152,13 @@ fn texel(texture: &BoundTexture, sampler: &Sampler<'_>, tex: [f32; 4], slope: &T
     let used = |k: usize| k < usize::from(texture.dims);
     let clamped: [bool; 3] = std::array::from_fn(|k| used(k) && wraps[k] == GL_CLAMP);
     let bordered: [bool; 3] = std::array::from_fn(|k| used(k) && wraps[k] == GL_CLAMP_TO_BORDER);
-    let coord: [f32; 3] = std::array::from_fn(|k| if clamped[k] { str[k].clamp(0.0, 1.0) } else { str[k] });
+    let base = &texture.levels[0];
+    let sizes = [base.width, base.height, base.depth];
+    // Texels a coordinate of 1 spans: the level's size, or 1 for a rectangle texture, whose
+    // coordinates are in texels (GL_ARB_texture_rectangle), as the sampler takes them.
+    let per_unit = |k: usize| if texture.rectangle { 1.0 } else { sizes[k] as f32 };
+    let top = |k: usize| sizes[k] as f32 / per_unit(k);
+    let coord: [f32; 3] = std::array::from_fn(|k| if clamped[k] { str[k].clamp(0.0, top(k)) } else { str[k] });
     let sample = sampler.sample(coord, dx, dy);
     let linear = params.mag_filter == GL_LINEAR
         && matches!(params.min_filter, GL_LINEAR | GL_LINEAR_MIPMAP_NEAREST | GL_LINEAR_MIPMAP_LINEAR);
@@ -160,17 +166,16 @@ fn texel(texture: &BoundTexture, sampler: &Sampler<'_>, tex: [f32; 4], slope: &T
     if !weighs_border {
         return sample;
     }
-    let base = &texture.levels[0];
     // The share of the filter on the texture along one axis: a linear filter's weight on
     // texels inside (the sampler clamped to the edge, so the edge texel stands in for the
     // border's); for GL_CLAMP_TO_BORDER's nearest filter, whether the texel is inside.
     let inside = |c: f32, size: u32, k: usize| {
-        let size = size as f32;
+        let (size, texels) = (size as f32, c * per_unit(k));
         if linear && (clamped[k] || bordered[k]) {
-            let u = c * size - 0.5;
+            let u = texels - 0.5;
             (u + 1.0).min(size - u).clamp(0.0, 1.0)
         } else if bordered[k] {
-            let i = (c * size).floor();
+            let i = texels.floor();
             if (0.0..size).contains(&i) {
                 1.0
             } else {

@@ -18,7 +18,8 @@ impl<'a> Sampler<'a> {
         Self { texture }
     }
 
-    /// The filtered texel at `str` (normalised; r is read for a 3D texture only), given the
+    /// The filtered texel at `str` (normalised, or in texels for a rectangle texture; r is read
+    /// for a 3D texture only), given the
     /// change of the coordinates one pixel right (`dx`) and one pixel down (`dy`), which choose
     /// between magnification and minification and the mipmap level (the scale factor ρ of
     /// §3.8.5, GL 1.2 eq. 3.13 with r for a 3D texture).
@@ -43,7 +44,8 @@ impl<'a> Sampler<'a> {
         let base = &levels[0];
         // A depth factor of 0 below 3D: hypot(x, 0) is |x| exactly, so 1D and 2D are as before.
         let d = if self.texture.dims == 3 { base.depth as f32 } else { 0.0 };
-        let (w, h) = (base.width as f32, base.height as f32);
+        // A rectangle texture's coordinates are in texels already (GL_ARB_texture_rectangle).
+        let (w, h) = if self.texture.rectangle { (1.0, 1.0) } else { (base.width as f32, base.height as f32) };
         let scale = |v: [f32; 3]| (v[0] * w).hypot(v[1] * h).hypot(v[2] * d);
         let rho = scale(dx).max(scale(dy));
         // GL 1.4's bias, then GL 1.2's LOD clamp, decide between magnification and
@@ -95,7 +97,8 @@ impl<'a> Sampler<'a> {
                 None => texel.map(|c| f32::from(c) / 255.0),
             }
         };
-        let (u, v, x) = (s * w as f32, t * h as f32, r * d as f32);
+        let (u, v, x) =
+            if self.texture.rectangle { (s, t, r * d as f32) } else { (s * w as f32, t * h as f32, r * d as f32) };
         if filter == GL_NEAREST {
             return texel(floor(u), floor(v), floor(x));
         }
