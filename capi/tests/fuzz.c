@@ -461,15 +461,22 @@ static const GLenum depth_values[] = {GL_LUMINANCE, GL_INTENSITY, GL_ALPHA, GL_R
     GL_COMPARE_R_TO_TEXTURE, GL_LEQUAL, GL_NEVER, GL_ALWAYS, 0x1234};
 static void cube_depth_sprite_call(void) {
     GLenum face = GL_TEXTURE_CUBE_MAP_POSITIVE_X + (GLenum)pick(8) - 1;
-    GLenum target = pick(2) ? GL_TEXTURE_2D : pick(2) ? face : GL_TEXTURE_CUBE_MAP;
+    GLenum target = pick(2) ? GL_TEXTURE_2D : pick(2) ? face : pick(2) ? GL_TEXTURE_CUBE_MAP : GL_TEXTURE_RECTANGLE;
     GLint w = ANY(side3), h = pick(4) ? w : ANY(side3);
     switch (pick(5)) {
-    case 0: glBindTexture(GL_TEXTURE_CUBE_MAP, (GLuint)pick(3) + 10); glEnable(GL_TEXTURE_CUBE_MAP); break;
+    case 0: glBindTexture(GL_TEXTURE_CUBE_MAP, (GLuint)pick(3) + 10); glEnable(GL_TEXTURE_CUBE_MAP);
+            /* GL_ARB_texture_rectangle: any wrap and filter, drawn in texel coordinates */
+            glBindTexture(GL_TEXTURE_RECTANGLE, (GLuint)pick(3) + 20);
+            glTexParameteri(GL_TEXTURE_RECTANGLE, pick(2) ? GL_TEXTURE_WRAP_S : GL_TEXTURE_MIN_FILTER, ANY(wraps));
+            glTexParameteri(GL_TEXTURE_RECTANGLE, GL_TEXTURE_BASE_LEVEL, pick(3) - 1);
+            if (pick(2)) glEnable(GL_TEXTURE_RECTANGLE); else glDisable(GL_TEXTURE_RECTANGLE);
+            break;
     case 1: glTexImage2D(target, ANY(small) % 3, ANY(cube_internals), w, h, pick(3) - 1, ANY(cube_formats),
                          ANY(cube_types), pick(4) ? (void *)buf : NULL);
             glTexSubImage2D(target, 0, 0, 0, w, h, ANY(cube_formats), ANY(cube_types), pick(4) ? (void *)buf : NULL);
             break;
-    case 2: glTexParameteri(pick(3) ? GL_TEXTURE_2D : GL_TEXTURE_CUBE_MAP, ANY(depth_pnames), ANY(depth_values));
+    case 2: glTexParameteri(pick(3) ? GL_TEXTURE_2D : pick(2) ? GL_TEXTURE_CUBE_MAP : GL_TEXTURE_RECTANGLE,
+                            ANY(depth_pnames), ANY(depth_values));
             glGetTexImage(target, ANY(small) % 3, pick(2) ? GL_DEPTH_COMPONENT : GL_RGBA, GL_FLOAT, buf); break;
     case 3: if (!pick(8)) glCopyTexImage2D(target, 0, pick(2) ? GL_DEPTH_COMPONENT : GL_RGB, 0, 0, w, h, 0);
             glTexGeni(GL_S + pick(3), GL_TEXTURE_GEN_MODE, pick(2) ? GL_REFLECTION_MAP : GL_NORMAL_MAP); break;
