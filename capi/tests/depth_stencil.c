@@ -83,6 +83,63 @@ static void show_textures(void)
     glDeleteTextures(2, tex);
 }
 
+/* GL_ARB_depth_buffer_float: the window read and drawn in GL_FLOAT_32_UNSIGNED_INT_24_8_REV
+ * (a float depth, then a word whose low 8 bits are the stencil index), and textures of
+ * GL_DEPTH_COMPONENT32F and GL_DEPTH32F_STENCIL8. */
+static void show_float_depths(void)
+{
+    GLuint pair[4];
+    memset(pair, 0xAB, sizeof pair);
+    glReadPixels(8, 8, 2, 1, GL_DEPTH_STENCIL, GL_FLOAT_32_UNSIGNED_INT_24_8_REV, pair);
+    float d0, d1;
+    memcpy(&d0, &pair[0], 4);
+    memcpy(&d1, &pair[2], 4);
+    printf("read 32f: %.8f %08x %.8f %08x err=0x%04x\n", d0, pair[1], d1, pair[3], glGetError());
+    GLuint image[2 * 2 * 2];
+    float depths[4] = {0.125f, 0.5f, 1.5f, -0.25f};
+    for (int i = 0; i < 4; i++) {
+        memcpy(&image[2 * i], &depths[i], 4);
+        image[2 * i + 1] = 0xFFFFFF00u | (GLuint)(0x40 + i);
+    }
+    glRasterPos2f(-1, -1);
+    glDrawPixels(2, 2, GL_DEPTH_STENCIL, GL_FLOAT_32_UNSIGNED_INT_24_8_REV, image);
+    printf("draw 32f: err=0x%04x\n", glGetError());
+    GLuint packed[4];
+    glReadPixels(0, 0, 2, 2, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, packed);
+    printf("drawn 32f: %08x %08x %08x %08x err=0x%04x\n", packed[0], packed[1], packed[2], packed[3], glGetError());
+    glReadPixels(0, 0, 1, 1, GL_DEPTH_COMPONENT, GL_FLOAT_32_UNSIGNED_INT_24_8_REV, pair);
+    printf("depth as 32f_24_8_rev: err=0x%04x\n", glGetError());
+
+    GLuint tex;
+    glGenTextures(1, &tex);
+    glBindTexture(GL_TEXTURE_2D, tex);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH32F_STENCIL8, 2, 2, 0, GL_DEPTH_STENCIL, GL_FLOAT_32_UNSIGNED_INT_24_8_REV, image);
+    GLint size[2];
+    glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_DEPTH_SIZE, size);
+    glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_STENCIL_SIZE, size + 1);
+    printf("32f_s8 texture: depth %d stencil %d err=0x%04x\n", size[0], size[1], glGetError());
+    GLuint back[8];
+    memset(back, 0xAB, sizeof back);
+    glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_STENCIL, GL_FLOAT_32_UNSIGNED_INT_24_8_REV, back);
+    for (int i = 0; i < 4; i++) {
+        float d;
+        memcpy(&d, &back[2 * i], 4);
+        printf(" %.8f/%08x", d, back[2 * i + 1]);
+    }
+    printf(" err=0x%04x\n", glGetError());
+    glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, back);
+    printf("as 24_8: %08x %08x %08x %08x err=0x%04x\n", back[0], back[1], back[2], back[3], glGetError());
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT32F, 2, 2, 0, GL_DEPTH_COMPONENT, GL_FLOAT, depths);
+    glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_DEPTH_SIZE, size);
+    float f[4];
+    glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, GL_FLOAT, f);
+    printf("32f texture: depth %d, %.8f %.8f %.8f %.8f err=0x%04x\n", size[0], f[0], f[1], f[2], f[3], glGetError());
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH24_STENCIL8, 2, 2, 0, GL_DEPTH_STENCIL, GL_FLOAT_32_UNSIGNED_INT_24_8_REV, image);
+    glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, back);
+    printf("24_8 texture from 32f: %08x %08x %08x %08x err=0x%04x\n", back[0], back[1], back[2], back[3], glGetError());
+    glDeleteTextures(1, &tex);
+}
+
 int main(void)
 {
     OSMesaContext c = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, NULL);
@@ -221,6 +278,7 @@ int main(void)
     glPixelZoom(1, 1);
     show_packed("zoomed");
     show_textures();
+    show_float_depths();
     OSMesaDestroyContext(c);
     return 0;
 }

@@ -453,9 +453,10 @@ static void texture_3d_call(void) {
 /* GL 1.3's cube maps, GL 1.4's depth textures and shadow comparison, point sprites: face
  * targets, depth and colour formats mixed, depth parameters with any value, sprites drawn. */
 static const GLenum cube_internals[] = {GL_RGB, GL_DEPTH_COMPONENT, GL_DEPTH_COMPONENT16, GL_DEPTH_COMPONENT32,
-    GL_DEPTH24_STENCIL8, 0x1234};
+    GL_DEPTH24_STENCIL8, GL_DEPTH_COMPONENT32F, GL_DEPTH32F_STENCIL8, 0x1234};
 static const GLenum cube_formats[] = {GL_RGB, GL_DEPTH_COMPONENT, GL_DEPTH_STENCIL, GL_STENCIL_INDEX};
-static const GLenum cube_types[] = {GL_UNSIGNED_BYTE, GL_FLOAT, GL_UNSIGNED_INT_24_8, GL_UNSIGNED_SHORT};
+static const GLenum cube_types[] = {GL_UNSIGNED_BYTE, GL_FLOAT, GL_UNSIGNED_INT_24_8, GL_UNSIGNED_SHORT,
+    GL_FLOAT_32_UNSIGNED_INT_24_8_REV};
 static const GLenum depth_pnames[] = {GL_DEPTH_TEXTURE_MODE, GL_TEXTURE_COMPARE_MODE, GL_TEXTURE_COMPARE_FUNC};
 static const GLenum depth_values[] = {GL_LUMINANCE, GL_INTENSITY, GL_ALPHA, GL_RED, GL_RGBA, GL_NONE,
     GL_COMPARE_R_TO_TEXTURE, GL_LEQUAL, GL_NEVER, GL_ALWAYS, 0x1234};
@@ -477,7 +478,8 @@ static void cube_depth_sprite_call(void) {
             break;
     case 2: glTexParameteri(pick(3) ? GL_TEXTURE_2D : pick(2) ? GL_TEXTURE_CUBE_MAP : GL_TEXTURE_RECTANGLE,
                             ANY(depth_pnames), ANY(depth_values));
-            glGetTexImage(target, ANY(small) % 3, pick(2) ? GL_DEPTH_COMPONENT : GL_RGBA, GL_FLOAT, buf); break;
+            glGetTexImage(target, ANY(small) % 3, pick(2) ? GL_DEPTH_COMPONENT : GL_RGBA, GL_FLOAT, buf);
+            glGetTexImage(target, 0, GL_DEPTH_STENCIL, ANY(cube_types), buf); break;
     case 3: if (!pick(8)) glCopyTexImage2D(target, 0, pick(2) ? GL_DEPTH_COMPONENT : GL_RGB, 0, 0, w, h, 0);
             glTexGeni(GL_S + pick(3), GL_TEXTURE_GEN_MODE, pick(2) ? GL_REFLECTION_MAP : GL_NORMAL_MAP); break;
     default: glTexEnvi(GL_POINT_SPRITE, pick(4) ? GL_COORD_REPLACE : GL_TEXTURE_ENV_MODE, pick(4));
@@ -538,8 +540,8 @@ static void pixel_call(void) {
             glCopyTexImage1D(GL_TEXTURE_1D, 0, GL_RGBA, x, y, w, 0); glCopyTexSubImage1D(GL_TEXTURE_1D, 0, x, x, y, w);
             glTexSubImage1D(GL_TEXTURE_1D, 0, x, w, GL_RGBA, GL_UNSIGNED_BYTE, pick(6) ? (void *)buf : NULL); break;
     case 6: if (!pick(16)) imaging_call();
-            if (!pick(8)) glReadPixels(x, y, w, h, ANY(read_formats), pick(2) ? GL_FLOAT : GL_UNSIGNED_INT_24_8, pick(6) ? buf : NULL);
-            if (!pick(8)) glDrawPixels(w, h, ANY(read_formats), pick(2) ? GL_UNSIGNED_INT_24_8 : GL_FLOAT, pick(6) ? buf : NULL);
+            if (!pick(8)) glReadPixels(x, y, w, h, ANY(read_formats), ANY(cube_types), pick(6) ? buf : NULL);
+            if (!pick(8)) glDrawPixels(w, h, ANY(read_formats), ANY(cube_types), pick(6) ? buf : NULL);
             (void)glAreTexturesResident(w, names, (GLboolean *)dbuf); glPrioritizeTextures(w, names, buf); break;
     default: glIndexf(f()); glIndexfv(fp()); glIndexub((GLubyte)pick(256)); glClearIndex(f()); glIndexMask((GLuint)next()); break;
     }

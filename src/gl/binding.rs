@@ -40,9 +40,10 @@ impl Gl {
             return self.unpacked_bitmap_len(width, height);
         }
         // A packed type is one element a pixel, whatever the format's component count.
-        let (components, size) = match packed(type_) {
-            Some(p) => (format_components(format).map(|_| 1)?, p.size),
-            None => (format_components(format)?, type_size(type_)?),
+        let (components, size) = match (packed(type_), type_ == GL_FLOAT_32_UNSIGNED_INT_24_8_REV) {
+            (Some(p), _) => (format_components(format).map(|_| 1)?, p.size),
+            (None, true) => (format_components(format).map(|_| 1)?, 8),
+            (None, false) => (format_components(format)?, type_size(type_)?),
         };
         if w == 0 || h == 0 {
             return Some(0);

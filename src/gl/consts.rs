@@ -1042,3 +1042,8 @@ pub const GL_TEXTURE_RECTANGLE: GLenum = 0x84F5;
 pub const GL_TEXTURE_BINDING_RECTANGLE: GLenum = 0x84F6;
 pub const GL_PROXY_TEXTURE_RECTANGLE: GLenum = 0x84F7;
 pub const GL_MAX_RECTANGLE_TEXTURE_SIZE: GLenum = 0x84F8;
+
+// GL/glext.h: OpenGL 3.0 (GL_ARB_depth_buffer_float).
+pub const GL_DEPTH_COMPONENT32F: GLenum = 0x8CAC;
+pub const GL_DEPTH32F_STENCIL8: GLenum = 0x8CAD;
+pub const GL_FLOAT_32_UNSIGNED_INT_24_8_REV: GLenum = 0x8DAD;

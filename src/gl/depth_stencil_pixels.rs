@@ -13,6 +13,7 @@
 
 use super::consts::*;
 use super::frame::Frame;
+use super::pixel_packed::depth_stencil_size;
 use super::pixel_zoom::zoomed_pixels;
 use super::types::*;
 use super::window_read::WindowImage;
@@ -30,8 +31,8 @@ impl Gl {
     /// `glReadPixels(x, y, width, height, GL_DEPTH_STENCIL, type, pixels)` into `out`: `window`
     /// draws what was recorded and returns the window's buffers and its stencil buffer (rows
     /// top to bottom). Errors, in Mesa's order: inside `begin`/`end` (`GL_INVALID_OPERATION`),
-    /// a negative size (`GL_INVALID_VALUE`), a type other than `GL_UNSIGNED_INT_24_8`
-    /// (`GL_INVALID_ENUM`), no stencil buffer (`GL_INVALID_OPERATION`), a non-empty `out`
+    /// a negative size (`GL_INVALID_VALUE`), a type other than `GL_UNSIGNED_INT_24_8` and
+    /// `GL_ARB_depth_buffer_float`'s `GL_FLOAT_32_UNSIGNED_INT_24_8_REV` (`GL_INVALID_ENUM`), no stencil buffer (`GL_INVALID_OPERATION`), a non-empty `out`
     /// shorter than [`Gl::packed_image_len`] (`GL_INVALID_VALUE`). Pixels outside the window
     /// are left as they were.
     pub fn read_depth_stencil_pixels(
@@ -48,9 +49,7 @@ impl Gl {
         if width < 0 || height < 0 {
             return self.set_error(GL_INVALID_VALUE);
         }
-        if type_ != GL_UNSIGNED_INT_24_8 {
-            return self.set_error(GL_INVALID_ENUM);
-        }
+        let Some(size) = depth_stencil_size(type_) else { return self.set_error(GL_INVALID_ENUM) };
         if !self.window_has(GL_DEPTH_STENCIL) {
             return self.set_error(GL_INVALID_OPERATION);
         }
@@ -66,28 +65,39 @@ impl Gl {
         let identity = depths.scale == 1.0 && depths.bias == 0.0;
         let store = self.client.pixel_stores.pack;
         let (w, h) = (width as usize, height as usize);
-        let stride = store.row_stride(w, 1, 4);
-        let first = store.first_byte(stride, 4);
+        let stride = store.row_stride(w, 1, size);
+        let first = store.first_byte(stride, size);
         let (ww, wh) = (i64::from(image.width), i64::from(image.height));
         for j in 0..h {
             for i in 0..w {
                 let (wx, wy) = (i64::from(x) + i as i64, i64::from(y) + j as i64);
                 let Some(d) = image.depth_at(wx, wy) else { continue };
                 let Some(&s) = stencil.get(((wh - 1 - wy) * ww + wx) as usize) else { continue };
-                let mut z = depth_24(d);
-                if !identity {
+                let z = depth_24(d);
+                let stencil = u32::from(self.stencil_index_transfer(s));
+                // Words of the element in order, each swapped on its own.
+                let words = if size == 8 {
+                    // The buffer's 24-bit value as a float (measured: 0x3FFFFF reads as
+                    // 0.24999996), through the transfer.
+                    let depth = z as f32 / DEPTH_24_MAX;
+                    let depth = if identity { depth } else { depths.apply(depth) };
+                    [depth.to_bits(), stencil]
+                } else if identity {
+                    [z << 8 | stencil, 0]
+                } else {
                     // Mesa unpacks the 24-bit value to a float, scales and biases it, and
                     // packs it back truncated (measured: 0x400000 at scale 0.5, bias 0.25,
                     // reads 0x5FFFFF).
-                    z = (depths.apply(z as f32 / DEPTH_24_MAX) * DEPTH_24_MAX) as u32;
+                    [((depths.apply(z as f32 / DEPTH_24_MAX) * DEPTH_24_MAX) as u32) << 8 | stencil, 0]
+                };
+                let at = first + j * stride + i * size;
+                for (k, word) in words.iter().take(size / 4).enumerate() {
+                    let mut bytes = word.to_ne_bytes();
+                    if store.swap_bytes {
+                        bytes.reverse();
+                    }
+                    out[at + 4 * k..at + 4 * k + 4].copy_from_slice(&bytes);
                 }
-                let value = z << 8 | u32::from(self.stencil_index_transfer(s));
-                let mut bytes = value.to_ne_bytes();
-                if store.swap_bytes {
-                    bytes.reverse();
-                }
-                let at = first + j * stride + i * 4;
-                out[at..at + 4].copy_from_slice(&bytes);
             }
         }
     }

@@ -90,6 +90,9 @@ fn type_size(type_: GLenum) -> Option<usize> {
 /// The elements per pixel and bytes per element `format` and `type_` are packed in: one
 /// element a pixel for a packed type (GL 1.2 §4.3.2), the format's components otherwise.
 fn pixel_shape(format: GLenum, type_: GLenum) -> Option<(usize, usize)> {
+    if type_ == GL_FLOAT_32_UNSIGNED_INT_24_8_REV {
+        return (format == GL_DEPTH_STENCIL).then_some((1, 8));
+    }
     match packed(type_) {
         Some(p) => (!packed_mismatch(format, type_)).then_some((1, p.size)),
         None => Some((format_size(format)?, element_size(type_)?)),

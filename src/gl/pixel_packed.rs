@@ -40,12 +40,26 @@ pub(crate) fn packed(type_: GLenum) -> Option<Packed> {
     Some(Packed { size, bits, reversed })
 }
 
+/// Bytes a pixel of `GL_DEPTH_STENCIL` takes in `type_`: 4 in `GL_UNSIGNED_INT_24_8`, 8 in
+/// `GL_ARB_depth_buffer_float`'s `GL_FLOAT_32_UNSIGNED_INT_24_8_REV` (a float depth, then a
+/// word whose low 8 bits are the stencil index); `None` for another type.
+pub(crate) fn depth_stencil_size(type_: GLenum) -> Option<usize> {
+    match type_ {
+        GL_UNSIGNED_INT_24_8 => Some(4),
+        GL_FLOAT_32_UNSIGNED_INT_24_8_REV => Some(8),
+        _ => None,
+    }
+}
+
 /// Whether `format` cannot go with the packed `type_`: Mesa 22.3 takes a 3-component type
 /// with `GL_RGB` alone (not `GL_BGR`) and a 4-component one with `GL_RGBA` or `GL_BGRA`, and
 /// gives any other format `GL_INVALID_OPERATION`, an unknown one included (measured with
 /// `glDrawPixels`, `glTexImage2D`, `glReadPixels` and `glGetTexImage`,
 /// `tests/reference/calls/cases/pack_types.calls`).
 pub(crate) fn packed_mismatch(format: GLenum, type_: GLenum) -> bool {
+    if type_ == GL_FLOAT_32_UNSIGNED_INT_24_8_REV {
+        return format != GL_DEPTH_STENCIL;
+    }
     packed(type_).is_some_and(|p| match p.bits.len() {
         2 => format != GL_DEPTH_STENCIL,
         3 => format != GL_RGB,

@@ -10,7 +10,7 @@
 //! unsigned `c / (2^b − 1)`); colour and stencil indices stay integers.
 
 use super::consts::*;
-use super::pixel_packed::{packed, packed_mismatch};
+use super::pixel_packed::{depth_stencil_size, packed, packed_mismatch};
 use super::pixels::PixelStore;
 use super::types::*;
 
@@ -50,13 +50,16 @@ pub(crate) fn element_size(type_: GLenum) -> Option<usize> {
 pub(crate) fn format_and_type_error(format: GLenum, type_: GLenum) -> Option<GLenum> {
     // GL_DEPTH_STENCIL goes with its packed type alone, any other GL_INVALID_ENUM, a packed
     // colour type too (measured, capi/tests/depth_stencil.c).
-    if format == GL_DEPTH_STENCIL && type_ != GL_UNSIGNED_INT_24_8 {
+    if format == GL_DEPTH_STENCIL && depth_stencil_size(type_).is_none() {
         return Some(GL_INVALID_ENUM);
     }
     if packed_mismatch(format, type_) {
         return Some(GL_INVALID_OPERATION);
     }
-    let known_type = type_ == GL_BITMAP || element_size(type_).is_some() || packed(type_).is_some();
+    let known_type = type_ == GL_BITMAP
+        || element_size(type_).is_some()
+        || packed(type_).is_some()
+        || depth_stencil_size(type_).is_some();
     let bitmap_mismatch = type_ == GL_BITMAP && !is_index(format);
     (format_components(format).is_none() || !known_type || bitmap_mismatch).then_some(GL_INVALID_ENUM)
 }
@@ -153,6 +156,9 @@ pub(crate) fn unpack_each(
         bits.into_iter().for_each(|set| emit([f32::from(u8::from(set)), 0.0, 0.0, 1.0]));
         return Some(());
     }
+    if type_ == GL_FLOAT_32_UNSIGNED_INT_24_8_REV {
+        return unpack_float_depth_stencil(store, (w, h), data, emit);
+    }
     // One element a pixel for a packed type, `n` of them otherwise.
     let (packed, size, per_pixel) = match packed(type_) {
         Some(p) => (Some(p), p.size, 1),
@@ -194,6 +200,37 @@ pub(crate) fn unpack_each(
     Some(())
 }
 
+/// [`unpack_each`] of `GL_DEPTH_STENCIL` in `GL_FLOAT_32_UNSIGNED_INT_24_8_REV`: each pixel's
+/// float depth (as it is; the caller clamps where its buffer does) and the low 8 bits of the
+/// word after it, the stencil index. `GL_UNPACK_SWAP_BYTES` swaps each word.
+fn unpack_float_depth_stencil(
+    store: PixelStore,
+    (w, h): (usize, usize),
+    data: &[u8],
+    mut emit: impl FnMut([f32; 4]),
+) -> Option<()> {
+    let stride = store.row_stride(w, 1, 8);
+    let first = store.first_byte(stride, 8);
+    if data.len() < first + (h - 1) * stride + w * 8 {
+        return None;
+    }
+    let word = |b: &[u8]| {
+        let mut b: [u8; 4] = b.try_into().expect("four bytes");
+        if store.swap_bytes {
+            b.reverse();
+        }
+        b
+    };
+    for row in 0..h {
+        for pixel in data[first + row * stride..][..w * 8].chunks_exact(8) {
+            let depth = f32::from_ne_bytes(word(&pixel[..4]));
+            let stencil = u32::from_ne_bytes(word(&pixel[4..])) & 0xFF;
+            emit([depth, stencil as f32, 0.0, 1.0]);
+        }
+    }
+    Some(())
+}
+
 /// Bytes from one image of a 3D texture to the next in client memory for images of `width` ×
 /// `height` pixels of `format` and `type_` (GL 1.2 §3.8.1: rows as a 2D image's, and
 /// `GL_UNPACK_IMAGE_HEIGHT` rows an image, or `height` when it is 0); `None` for a format or
@@ -204,9 +241,10 @@ pub(crate) fn image_stride(
     format: GLenum,
     type_: GLenum,
 ) -> Option<usize> {
-    let (size, per_pixel) = match packed(type_) {
-        Some(p) => (p.size, 1),
-        None => (element_size(type_)?, format_components(format)?),
+    let (size, per_pixel) = match (packed(type_), depth_stencil_size(type_)) {
+        (Some(p), _) => (p.size, 1),
+        (None, Some(size)) => (size, 1),
+        (None, None) => (element_size(type_)?, format_components(format)?),
     };
     Some(store.image_stride(store.row_stride(width, per_pixel, size), height))
 }

@@ -619,12 +619,14 @@ pub(super) fn base_format(internal: GLint) -> Option<GLenum> {
         GL_ALPHA | GL_ALPHA4 | GL_ALPHA8 | GL_ALPHA12 | GL_ALPHA16 => Some(GL_ALPHA),
         GL_INTENSITY | GL_INTENSITY4 | GL_INTENSITY8 | GL_INTENSITY12 | GL_INTENSITY16 => Some(GL_INTENSITY),
         // GL 1.4's depth textures (`texture/depth.rs`).
-        GL_DEPTH_COMPONENT | GL_DEPTH_COMPONENT16 | GL_DEPTH_COMPONENT24 | GL_DEPTH_COMPONENT32 => {
-            Some(GL_DEPTH_COMPONENT)
-        }
+        GL_DEPTH_COMPONENT
+        | GL_DEPTH_COMPONENT16
+        | GL_DEPTH_COMPONENT24
+        | GL_DEPTH_COMPONENT32
+        | GL_DEPTH_COMPONENT32F => Some(GL_DEPTH_COMPONENT),
         // GL 3.0's depth and stencil formats, as Mesa takes them in a compatibility context:
         // gleval keeps their depths only (no stencil texturing before GL 4.3).
-        GL_DEPTH_STENCIL | GL_DEPTH24_STENCIL8 => Some(GL_DEPTH_COMPONENT),
+        GL_DEPTH_STENCIL | GL_DEPTH24_STENCIL8 | GL_DEPTH32F_STENCIL8 => Some(GL_DEPTH_COMPONENT),
         // GL 1.3's generic compressed formats, kept uncompressed (`texture/compressed.rs`).
         other => compressed::generic_base(other),
     }

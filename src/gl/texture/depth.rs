@@ -50,7 +50,9 @@ pub fn texel_depth(texel: [u8; 4]) -> f32 {
 pub(super) fn depth_bits(internal: GLint) -> u32 {
     match internal as GLenum {
         GL_DEPTH_COMPONENT16 => 16,
-        GL_DEPTH_COMPONENT32 => 32,
+        // GL 3.0's float formats (GL_ARB_depth_buffer_float) keep floats, clamped to [0, 1]
+        // (measured: 1.5 reads back as 1).
+        GL_DEPTH_COMPONENT32 | GL_DEPTH_COMPONENT32F | GL_DEPTH32F_STENCIL8 => 32,
         _ => 24,
     }
 }

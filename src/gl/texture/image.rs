@@ -8,6 +8,7 @@ use super::{base_format, fits_level, image_target_of, max_level, proxy_of, strip
 use super::{ImageTarget, TexLevel};
 use crate::gl::consts::*;
 use crate::gl::lists::ListCommand;
+use crate::gl::pixel_packed::depth_stencil_size;
 use crate::gl::pixel_unpack::{format_and_type_error, image_stride, unpack_each};
 use crate::gl::types::*;
 use crate::gl::Gl;
@@ -25,9 +26,10 @@ pub(in crate::gl) fn depth_of_depth_stencil(format: GLenum, type_: GLenum) -> (G
 }
 
 /// Whether a level of internal format `internal` keeps stencil indices beside its depths
-/// (GL 3.0's `GL_DEPTH_STENCIL` and `GL_DEPTH24_STENCIL8`, `GL_EXT_packed_depth_stencil`'s).
+/// (GL 3.0's `GL_DEPTH_STENCIL` and `GL_DEPTH24_STENCIL8`, `GL_EXT_packed_depth_stencil`'s, and
+/// `GL_ARB_depth_buffer_float`'s `GL_DEPTH32F_STENCIL8`).
 pub(in crate::gl) fn keeps_stencil(internal: GLint) -> bool {
-    matches!(internal as GLenum, GL_DEPTH_STENCIL | GL_DEPTH24_STENCIL8)
+    matches!(internal as GLenum, GL_DEPTH_STENCIL | GL_DEPTH24_STENCIL8 | GL_DEPTH32F_STENCIL8)
 }
 
 /// The most bytes a level's texels may take (4 a texel): llvmpipe's limit, about 1.75 GiB.
@@ -135,7 +137,8 @@ impl Gl {
         {
             return;
         }
-        let packed = (format, type_) == (GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8);
+        let packed = format == GL_DEPTH_STENCIL && depth_stencil_size(type_).is_some();
+        let given_type = type_;
         let (format, type_) = depth_of_depth_stencil(format, type_);
         let (image_target, proxy_slot) = (image_target_of(dims, target), proxy_of(dims, target));
         let proxy = proxy_slot.is_some();
@@ -204,7 +207,8 @@ impl Gl {
         let (texels, stencil) = if !keeps_stencil(internalformat) {
             (texels, Vec::new())
         } else if packed && !bytes.is_empty() {
-            let Some((texels, stencil)) = self.unpack_depth_stencil([w, h, d], bytes, internalformat) else {
+            let Some((texels, stencil)) = self.unpack_depth_stencil([w, h, d], (bytes, given_type), internalformat)
+            else {
                 return self.set_error(GL_INVALID_VALUE);
             };
             let stencil = stencil.into_iter().map(|s| [s, 0, 0, 0]).collect();
@@ -320,7 +324,8 @@ impl Gl {
         bytes: &[u8],
     ) {
         let Some(t) = image_target_of(dims, target) else { return self.set_error(GL_INVALID_ENUM) };
-        let packed = (format, type_) == (GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8);
+        let packed = format == GL_DEPTH_STENCIL && depth_stencil_size(type_).is_some();
+        let given_type = type_;
         let (format, type_) = depth_of_depth_stencil(format, type_);
         let Some(region) = self.sub_image_box(t, level, offset, size) else { return };
         let base = self.bound_object(t.slot).face(t.face).formats[level as usize];
@@ -334,7 +339,7 @@ impl Gl {
         // Depths alone leave a depth-and-stencil level's stencil as it was (Mesa's
         // `_mesa_texstore_z24_s8` keeps it).
         if packed && keeps_stencil(internal) {
-            let Some((texels, stencil)) = self.unpack_depth_stencil(region.size, bytes, internal) else {
+            let Some((texels, stencil)) = self.unpack_depth_stencil(region.size, (bytes, given_type), internal) else {
                 return self.set_error(GL_INVALID_VALUE);
             };
             self.replace_stencil(t, level as usize, region, &stencil);
@@ -351,13 +356,16 @@ impl Gl {
     fn unpack_depth_stencil(
         &self,
         [w, h, d]: [usize; 3],
-        bytes: &[u8],
+        (bytes, type_): (&[u8], GLenum),
         internal: GLint,
     ) -> Option<(Vec<[u8; 4]>, Vec<u8>)> {
         let (mut texels, mut stencil) = (Vec::with_capacity(w * h * d), Vec::with_capacity(w * h * d));
         let size = (w as GLsizei, (h * d) as GLsizei);
-        unpack_each(self.unpack_store(), size, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, bytes, |c| {
-            texels.push(super::depth::copied_depth_texel(c[0], internal));
+        // A 24-bit depth is stored as it is; a float one as a float image's depth (measured:
+        // 0.125 in a GL_DEPTH24_STENCIL8 level reads back as 0x1FFFFF).
+        let texel = if type_ == GL_UNSIGNED_INT_24_8 { super::depth::copied_depth_texel } else { super::depth_texel };
+        unpack_each(self.unpack_store(), size, GL_DEPTH_STENCIL, type_, bytes, |c| {
+            texels.push(texel(c[0], internal));
             stencil.push(c[1] as u8);
         })?;
         Some((texels, stencil))
@@ -454,7 +462,7 @@ impl Gl {
         internal: GLint,
     ) -> Option<Vec<[u8; 4]>> {
         let transfer = self.color_transfer();
-        let depth = (format == GL_DEPTH_COMPONENT).then(|| self.depth_transfer());
+        let depth = matches!(format, GL_DEPTH_COMPONENT | GL_DEPTH_STENCIL).then(|| self.depth_transfer());
         // Halfway products round to even, as Mesa's float-to-unorm8 texel store does (measured:
         // 2.5/255 stores 2, 3.5/255 stores 4; `unpack_widening.calls`).
         let byte = |x: f32| (x.clamp(0.0, 1.0) * 255.0).round_ties_even() as u8;

@@ -301,11 +301,7 @@ impl Gl {
             // GL 3.0's depth-and-stencil formats have llvmpipe's 8 stencil bits (piglit's
             // sized-texture-format-channels); gleval keeps the depths only, since nothing of
             // GL 1.5 reads a texture's stencil back.
-            GL_TEXTURE_STENCIL_SIZE
-                if defined.is_some() && matches!(internal as GLenum, GL_DEPTH_STENCIL | GL_DEPTH24_STENCIL8) =>
-            {
-                8
-            }
+            GL_TEXTURE_STENCIL_SIZE if defined.is_some() && super::image::keeps_stencil(internal) => 8,
             // Colour textures have neither; Mesa answers both names (ARB_depth_texture, and
             // GL 3.0's stencil size, unguarded in `get_tex_level_parameter_image`).
             GL_TEXTURE_DEPTH_SIZE | GL_TEXTURE_STENCIL_SIZE => 0,
@@ -390,11 +386,12 @@ impl Gl {
         type_: GLenum,
         pixels: &mut [u8],
     ) {
-        if type_ != GL_UNSIGNED_INT_24_8 {
+        let Some(size) = crate::gl::pixel_packed::depth_stencil_size(type_) else {
             return self.set_error(GL_INVALID_ENUM);
-        }
+        };
         let images = self.bound_object(t.slot).face(t.face);
-        if !super::image::keeps_stencil(images.level_format(level).0) {
+        let internal = images.level_format(level).0;
+        if !super::image::keeps_stencil(internal) {
             return self.set_error(GL_INVALID_OPERATION);
         }
         let Some(needed) = self.tex_image_len(target, level as GLint, GL_DEPTH_STENCIL, type_) else { return };
@@ -408,18 +405,27 @@ impl Gl {
         let Some(l) = images.level(level) else { return };
         let store = self.client.pixel_stores.pack;
         let w = l.width as usize;
-        let stride = store.row_stride(w, 1, 4);
-        let first = store.first_byte(stride, 4);
+        let stride = store.row_stride(w, 1, size);
+        let first = store.first_byte(stride, size);
+        // A 24-bit level's depth is k / (2²⁴ − 1) exactly (`depth.rs`): k again, rounded; a
+        // float level's is truncated to 24 bits (measured: 0.5 reads as 0x7FFFFF).
+        let to_integer = if super::depth::depth_bits(internal) == 32 { f64::trunc } else { f64::round };
         for (i, &texel) in l.texels.iter().enumerate() {
-            // A depth level's 24-bit depth is k / (2²⁴ − 1) exactly (`depth.rs`): k again.
-            let z = (f64::from(super::texel_depth(texel)) * 16_777_215.0).round() as u32;
-            let value = z << 8 | u32::from(l.stencil.get(i).copied().unwrap_or(0));
-            let mut bytes = value.to_ne_bytes();
-            if store.swap_bytes {
-                bytes.reverse();
+            let depth = super::texel_depth(texel);
+            let stencil = u32::from(l.stencil.get(i).copied().unwrap_or(0));
+            let words = if size == 8 {
+                [depth.to_bits(), stencil]
+            } else {
+                [(to_integer(f64::from(depth) * 16_777_215.0) as u32) << 8 | stencil, 0]
+            };
+            let at = first + (i / w.max(1)) * stride + (i % w.max(1)) * size;
+            for (k, word) in words.iter().take(size / 4).enumerate() {
+                let mut bytes = word.to_ne_bytes();
+                if store.swap_bytes {
+                    bytes.reverse();
+                }
+                pixels[at + 4 * k..at + 4 * k + 4].copy_from_slice(&bytes);
             }
-            let at = first + (i / w.max(1)) * stride + (i % w.max(1)) * 4;
-            pixels[at..at + 4].copy_from_slice(&bytes);
         }
     }
 
