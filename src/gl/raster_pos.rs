@@ -5,8 +5,10 @@
 //! position outside the clip volume makes the raster position invalid, and bitmaps and pixels
 //! then draw nothing), then the viewport and depth range give window coordinates. The raster
 //! colour is the current one at that moment; the texture coordinates are the current ones
-//! generated (`glTexGen`) and through the texture matrix, as a vertex's. One difference: with
-//! `GL_LIGHTING` on, GL lights the raster colour; gleval keeps the current colour.
+//! generated (`glTexGen`) and through the texture matrix, as a vertex's. With `GL_LIGHTING` on,
+//! the raster colour is the position lit as a vertex is, by the front material only (Mesa's
+//! `shade_rastpos`; measured: a normal facing away, two-sided or not, gets the front's ambient
+//! terms; with `GL_SEPARATE_SPECULAR_COLOR` the specular terms are left out).
 
 use super::consts::*;
 use super::lists::ListCommand;
@@ -118,8 +120,19 @@ impl Gl {
         };
         let tex_coord = through(self, 0);
         let unit_tex_coords = std::array::from_fn(|u| through(self, u + 1));
-        let color = self.server.current.color;
+        let color = self.raster_color(p);
         self.server.raster_pos = RasterPos { window, valid: true, color, tex_coord, unit_tex_coords, distance };
+    }
+
+    /// The raster colour of a position at object point `p`: the current colour, or lit by the
+    /// vertex stage's lighting (front face) when `GL_LIGHTING` is on.
+    fn raster_color(&self, p: [f32; 4]) -> [f32; 4] {
+        if !self.capability(GL_LIGHTING) {
+            return self.server.current.color;
+        }
+        let state = self.snapshot(None);
+        let vertex = self.current_vertex(p);
+        super::shade::Shader::new(&state).shade(&vertex).front.to_array()
     }
 
     /// The active unit's raster texture coordinates.
@@ -263,6 +276,34 @@ mod tests {
         gl.get_floatv(GL_CURRENT_RASTER_POSITION, &mut p);
         gl.get_integerv(GL_CURRENT_RASTER_POSITION_VALID, &mut valid);
         (p, valid[0] == 1)
+    }
+
+    #[test]
+    fn a_lit_raster_colour_is_the_front_materials_as_on_mesa() {
+        let mut gl = Gl::new(16, 16);
+        gl.color4f(0.2, 0.4, 0.6, 0.8);
+        gl.enable(GL_LIGHTING);
+        gl.enable(GL_LIGHT0);
+        gl.light_fv(GL_LIGHT0, GL_POSITION, &[1.0, 1.0, 1.0, 0.0]);
+        gl.light_fv(GL_LIGHT0, GL_DIFFUSE, &[0.5, 0.25, 1.0, 1.0]);
+        gl.material_fv(GL_FRONT, GL_AMBIENT, &[0.1, 0.1, 0.1, 1.0]);
+        gl.material_fv(GL_FRONT, GL_SPECULAR, &[1.0; 4]);
+        gl.material_f(GL_FRONT, GL_SHININESS, 10.0);
+        let raster = |gl: &mut Gl, normal: [f32; 3]| {
+            gl.normal3f(normal[0], normal[1], normal[2]);
+            gl.raster_pos2f(0.0, 0.0);
+            let mut c = [0.0f32; 4];
+            gl.get_floatv(GL_CURRENT_RASTER_COLOR, &mut c);
+            c
+        };
+        // Mesa 22.3's answers to the same calls (printed to 6 places).
+        let close = |a: [f32; 4], b: [f32; 4]| a.iter().zip(b).all(|(x, y)| (x - y).abs() < 2e-6);
+        assert!(close(raster(&mut gl, [0.0, 0.0, 1.0]), [0.556_075, 0.440_604, 0.787_015, 1.0]));
+        gl.light_model_i(GL_LIGHT_MODEL_TWO_SIDE, 1);
+        assert!(close(raster(&mut gl, [0.0, 0.0, -1.0]), [0.02, 0.02, 0.02, 1.0]), "the front's, facing away");
+        gl.light_model_i(GL_LIGHT_MODEL_TWO_SIDE, 0);
+        gl.light_model_i(GL_LIGHT_MODEL_COLOR_CONTROL, GL_SEPARATE_SPECULAR_COLOR as GLint);
+        assert!(close(raster(&mut gl, [0.6, 0.0, 0.8]), [0.343_316, 0.181_658, 0.666_632, 1.0]));
     }
 
     #[test]
