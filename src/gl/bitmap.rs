@@ -207,7 +207,10 @@ impl Gl {
         // The fragments are textured with the raster position's coordinates (GL 1.1 §3.6.4,
         // §3.6.3: "the texture coordinates of the current raster position"), which the raster
         // position already took through the texture matrix: identity here, no texgen. Fog is
-        // not applied to them (left out; blending and the alpha test are kept).
+        // not applied to them, as Mesa 22.3 on llvmpipe fogs neither `glDrawPixels` nor
+        // `glBitmap` fragments (measured: white pixels and a red bitmap at eye distances 4 and
+        // 8 under linear fog from 0 to 10 stay white and red, with the fog coordinate source
+        // too); blending and the alpha test are kept.
         let texture = self.bound_texture().map(|mut t| {
             t.matrix = Mat4::IDENTITY;
             t.generate = None;
