@@ -3,7 +3,8 @@
  * limit and initial parameters, the errors of what a rectangle texture does not take (levels
  * above 0, borders, repeating wraps, mipmap filters, a base level above 0), its proxy, and a
  * 3 x 2 texture drawn with unnormalised coordinates (texel centres at s = 0.5, 1.5, 2.5), over
- * a 2D texture enabled at once (the rectangle comes first). */
+ * a 2D texture enabled at once (the rectangle comes first); and GL_ARB_texture_non_power_of_two's
+ * 2D textures of any size: a 5 x 3 image's generated mipmaps (2 x 1, then 1 x 1). */
 #define GL_GLEXT_PROTOTYPES
 #include <GL/osmesa.h>
 #include <GL/gl.h>
@@ -126,6 +127,22 @@ int main(void)
     glEnd();
     glFinish();
     printf("2D alone: %02x%02x%02x err=0x%04x\n", buf[0], buf[1], buf[2], glGetError());
+
+    unsigned char npot[5 * 3 * 4], level[64];
+    for (int i = 0; i < 5 * 3 * 4; i++) npot[i] = (unsigned char)(i * 17);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glTexParameteri(GL_TEXTURE_2D, GL_GENERATE_MIPMAP, GL_TRUE);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 5, 3, 0, GL_RGBA, GL_UNSIGNED_BYTE, npot);
+    for (int l = 1; l < 3; l++) {
+        GLint lw = 0, lh = 0;
+        glGetTexLevelParameteriv(GL_TEXTURE_2D, l, GL_TEXTURE_WIDTH, &lw);
+        glGetTexLevelParameteriv(GL_TEXTURE_2D, l, GL_TEXTURE_HEIGHT, &lh);
+        glGetTexImage(GL_TEXTURE_2D, l, GL_RGBA, GL_UNSIGNED_BYTE, level);
+        printf("npot level %d, %d x %d:", l, lw, lh);
+        for (int i = 0; i < lw * lh * 4; i++) printf(" %d", level[i]);
+        printf(" err=0x%04x\n", glGetError());
+    }
     OSMesaDestroyContext(c);
     return 0;
 }
